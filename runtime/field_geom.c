@@ -1,0 +1,44 @@
+/*
+ * field_geom.c — see field_geom.h.
+ */
+#include "field_geom.h"
+
+#include <math.h>
+
+int hfs_field_bilinear(const hfs_field *f, double gx, double gy, double *z)
+{
+    const int w = f->width, h = f->height;
+    if (!(gx >= 0.0 && gy >= 0.0 && gx <= (double)(w - 1) && gy <= (double)(h - 1)))
+        return 0;
+    int i = (int)gx, j = (int)gy;
+    if (i > w - 2)
+        i = w - 2;
+    if (j > h - 2)
+        j = h - 2;
+    const double fx = gx - i, fy = gy - j;
+    const double z00 = hfs_field_z(f, i, j), z10 = hfs_field_z(f, i + 1, j);
+    const double z01 = hfs_field_z(f, i, j + 1), z11 = hfs_field_z(f, i + 1, j + 1);
+    *z = (z00 * (1.0 - fx) + z10 * fx) * (1.0 - fy) + (z01 * (1.0 - fx) + z11 * fx) * fy;
+    return 1;
+}
+
+void hfs_field_normal(const hfs_field *f, int i, int j, double n[3])
+{
+    const int w = f->width, h = f->height;
+    const int i0 = i > 0 ? i - 1 : i, i1 = i < w - 1 ? i + 1 : i;
+    const int j0 = j > 0 ? j - 1 : j, j1 = j < h - 1 ? j + 1 : j;
+    const double dzdx = (hfs_field_z(f, i1, j) - hfs_field_z(f, i0, j)) / ((i1 - i0) * f->dx);
+    const double dzdy = (hfs_field_z(f, i, j1) - hfs_field_z(f, i, j0)) / ((j1 - j0) * f->dx);
+    const double len = sqrt(dzdx * dzdx + dzdy * dzdy + 1.0);
+    n[0] = -dzdx / len;
+    n[1] = -dzdy / len;
+    n[2] = 1.0 / len;
+}
+
+void hfs_dir(double phi, double e, double s[3])
+{
+    const double ce = cos(e);
+    s[0] = cos(phi) * ce;
+    s[1] = sin(phi) * ce;
+    s[2] = sin(e);
+}

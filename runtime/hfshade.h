@@ -1,0 +1,186 @@
+/*
+ * hfshade.h — public interface of libhfshade.
+ *
+ * hfshade computes the exit radiance of a Lambertian height field lit by an
+ * SH environment, distant disk ("key") lights and local spherical lights, with
+ * soft shadows, exactly as ../shared/SPEC.md defines it.  Three backends
+ * compute the same quantity:
+ *   HFS_BACKEND_GLES  the product: OpenGL ES 3.0 + fp16 textures (issue 3);
+ *   HFS_BACKEND_CPU   the reference: the same algorithm in double precision;
+ *   HFS_BACKEND_TRUTH brute force (exact horizons, ray casting), the oracle.
+ *
+ * Conventions (SPEC.md is the authority):
+ *   - heights H[j][i], i = column (x), j = row (y); world z = zscale * H.
+ *   - directions: azimuth phi from +x toward +y, elevation from the plane.
+ *   - angles in this API are RADIANS (the command line speaks degrees).
+ *   - output: linear RGB exit radiance Lo per grid point, row j = 0 first.
+ *
+ * Ownership: every *_create returns an object the caller frees with the
+ * matching *_destroy; destroy(NULL) is a no-op.  Inputs passed by pointer are
+ * only read during the call and never retained.
+ *
+ * Errors: functions return 0 (HFS_OK) or a negative hfs_status and, when the
+ * caller passes an hfs_error, fill it with a one-line message.  The library
+ * never prints.  No NaN or Inf is ever written to an output.
+ *
+ * Threads: objects are not internally locked; use one object per thread.
+ * There is no global mutable state, so independent objects may be used from
+ * different threads at once.
+ */
+#ifndef HFSHADE_H
+#define HFSHADE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(HFS_BUILDING_LIBRARY) && defined(__GNUC__)
+#define HFS_API __attribute__((visibility("default")))
+#else
+#define HFS_API
+#endif
+
+/* ---- status and errors ------------------------------------------------ */
+
+typedef enum hfs_status {
+    HFS_OK = 0,
+    HFS_E_INVALID = -1,     /* an argument or scene value is out of range  */
+    HFS_E_NOMEM = -2,       /* allocation failed                           */
+    HFS_E_IO = -3,          /* a file could not be read or written         */
+    HFS_E_FORMAT = -4,      /* a file is malformed, truncated or absurd    */
+    HFS_E_UNSUPPORTED = -5, /* valid, but this backend/driver cannot do it */
+    HFS_E_CONTEXT = -6,     /* no GL context could be made                 */
+    HFS_E_GL = -7           /* the GL driver reported an error             */
+} hfs_status;
+
+/* A one-line, user-facing message ("FILE: problem").  Always NUL-terminated. */
+typedef struct hfs_error {
+    char msg[512];
+} hfs_error;
+
+/* Formats into err (if non-NULL) and returns code, so callers can write
+ * `return hfs_fail(err, HFS_E_FORMAT, "%s: short data", path);`. */
+HFS_API int hfs_fail(hfs_error *err, int code, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* Stable name of a status code ("invalid", "format", ...). */
+HFS_API const char *hfs_status_name(int code);
+
+/* ---- height field -------------------------------------------------------- */
+
+/* A height grid as loaded; holes are already filled (see hfs_io.h).
+ * Immutable view: the caller owns z. */
+typedef struct hfs_field {
+    int width;        /* W >= 2 (columns, x)                                */
+    int height;       /* Hh >= 2 (rows, y)                                  */
+    const float *z;   /* W*Hh finite heights, row-major, row j = 0 first    */
+    double dx;        /* world units per texel (> 0)                        */
+    double zscale;    /* world z = zscale * z (>= 0)                        */
+} hfs_field;
+
+/* ---- lights -------------------------------------------------------------- */
+
+#define HFS_SH_COEFFS 16
+#define HFS_MAX_KEY_LIGHTS 8
+#define HFS_MAX_LOCAL_LIGHTS 16
+
+/* Distant disk light: direction (phi, elev), angular radius alpha, uniform
+ * radiance over the disk. */
+typedef struct hfs_key_light {
+    double phi, elev, alpha; /* radians; alpha in (0, pi/2)                 */
+    float radiance[3];       /* linear RGB, >= 0                            */
+    int disabled;            /* non-zero: ignored (costs nothing)           */
+} hfs_key_light;
+
+/* Local spherical light: centre in world units, radius, uniform radiance
+ * over the cap it subtends.  Occluded only between receiver and light. */
+typedef struct hfs_local_light {
+    double pos[3];
+    double radius;           /* world units, >= 0                            */
+    float radiance[3];
+    int disabled;
+} hfs_local_light;
+
+typedef struct hfs_lighting {
+    /* Environment: 16 SH coefficients per channel (SPEC basis), rotated about
+     * +z by env_rotate before use.  has_env = 0 means no environment. */
+    int has_env;
+    double env_sh[3][HFS_SH_COEFFS];
+    double env_rotate;       /* radians */
+
+    int n_key;
+    hfs_key_light key[HFS_MAX_KEY_LIGHTS];
+    int n_local;
+    hfs_local_light local[HFS_MAX_LOCAL_LIGHTS];
+
+    double albedo;           /* Lambertian albedo rho, default 1 */
+} hfs_lighting;
+
+/* ---- quality settings ----------------------------------------------------- */
+
+typedef enum hfs_backend {
+    HFS_BACKEND_DEFAULT = 0, /* = GLES once it exists, CPU until then */
+    HFS_BACKEND_GLES,
+    HFS_BACKEND_CPU,
+    HFS_BACKEND_TRUTH
+} hfs_backend;
+
+typedef enum hfs_visibility_path {
+    HFS_VIS_DEFAULT = 0,     /* = HFS_VIS_LEGENDRE                          */
+    HFS_VIS_LEGENDRE,        /* NS09: Legendre occlusion vector + M_lin     */
+    HFS_VIS_WEDGE_TABLE      /* SN08: 2D/1D tabulated visibility wedges     */
+} hfs_visibility_path;
+
+typedef enum hfs_precision {
+    HFS_PRECISION_DEFAULT = 0, /* = FP16 */
+    HFS_PRECISION_FP16,
+    HFS_PRECISION_FP32
+} hfs_precision;
+
+/* Zero means "default" for every field; hfs_quality_defaults() fills them.
+ * Defaults are those of SN08/NS09: k=4, offset=2, 32 env / 3 key directions. */
+typedef struct hfs_quality {
+    int k;                   /* pyramid level step (levels per octave), 4   */
+    int offset;              /* level offset o (levels biased by k*o), 2    */
+    int nphi_env;            /* azimuth samples, environment (full swath) 32 */
+    int nphi_key;            /* azimuth samples per key light swath, 3      */
+    int nphi_local;          /* azimuth samples per local light, 16         */
+    int subsample;           /* visibility grid step 1|2|4 (GLES path), 2   */
+    hfs_precision precision; /* texture precision of the GLES path          */
+    hfs_visibility_path visibility;
+    int threads;             /* CPU/truth worker threads; 0 = all cores     */
+
+    /* Ground truth only. */
+    int truth_azimuths;      /* exact horizons at this many azimuths, 720   */
+    int truth_elev_order;    /* Gauss-Legendre points per elevation span, 16 */
+    int truth_light_samples; /* stratified samples per key/local light, 256  */
+} hfs_quality;
+
+HFS_API void hfs_quality_defaults(hfs_quality *q);
+HFS_API void hfs_lighting_defaults(hfs_lighting *l);
+
+/* Progress callback for long renders (truth): fraction in [0, 1].  Called
+ * from the rendering thread only; may be NULL. */
+typedef void (*hfs_progress_fn)(void *user, double fraction);
+
+/* ---- output -------------------------------------------------------------- */
+
+/* Linear RGB exit radiance, width*height*3 floats, row j = 0 first. */
+typedef struct hfs_image {
+    int width, height;
+    float *rgb;
+} hfs_image;
+
+HFS_API int hfs_image_alloc(hfs_image *img, int width, int height, hfs_error *err);
+HFS_API void hfs_image_free(hfs_image *img);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* HFSHADE_H */

@@ -1,0 +1,66 @@
+/*
+ * lights.c — see lights.h.
+ */
+#include "lights.h"
+
+#include <math.h>
+
+double hfs_cap_irradiance(double cos_beta, double alpha)
+{
+    const double pi = 3.14159265358979323846;
+    if (cos_beta > 1.0)
+        cos_beta = 1.0;
+    if (cos_beta < -1.0)
+        cos_beta = -1.0;
+    if (alpha <= 0.0)
+        return 0.0;
+    if (alpha >= pi)
+        return pi;
+    const double beta = acos(cos_beta);
+    if (alpha > pi / 2) {
+        /* A cap larger than a hemisphere: the whole upper hemisphere (pi)
+         * minus the complementary cap (half-angle pi - alpha, axis -d),
+         * which is itself at most a hemisphere. */
+        return pi - hfs_cap_irradiance(-cos_beta, pi - alpha);
+    }
+    const double s = sin(alpha), s2 = s * s;
+    if (beta + alpha <= pi / 2)
+        return pi * s2 * cos_beta;          /* cap fully above the plane */
+    if (beta - alpha >= pi / 2)
+        return 0.0;                         /* cap fully below the plane */
+    /* Straddling the tangent plane (Snyder 1996). x = cot(alpha). */
+    const double sin_beta = sin(beta);
+    const double x = cos(alpha) / s;
+    double y = -x * cos_beta / sin_beta;
+    if (y > 1.0)
+        y = 1.0;
+    if (y < -1.0)
+        y = -1.0;
+    const double q = sin_beta * sqrt(1.0 - y * y);
+    const double e = (cos_beta * acos(y) - x * q) * s2 + atan2(q, x);
+    return e > 0.0 ? e : 0.0;
+}
+
+int hfs_local_light_cap(const hfs_local_light *l, const double p[3],
+                        double dir[3], double *dist, double *alpha)
+{
+    const double pi = 3.14159265358979323846;
+    const double v[3] = {l->pos[0] - p[0], l->pos[1] - p[1], l->pos[2] - p[2]};
+    const double d = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    *dist = d;
+    if (d > 0.0) {
+        dir[0] = v[0] / d;
+        dir[1] = v[1] / d;
+        dir[2] = v[2] / d;
+    } else {
+        dir[0] = 0.0;
+        dir[1] = 0.0;
+        dir[2] = 1.0;
+    }
+    if (d <= l->radius) {
+        *alpha = pi;
+        return 1;
+    }
+    *alpha = asin(l->radius / d);
+    return 0;
+}

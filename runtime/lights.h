@@ -1,0 +1,24 @@
+/*
+ * lights.h — light geometry shared by every backend: where a light is as
+ * seen from a receiver, and its exact unshadowed irradiance.
+ */
+#ifndef HFS_LIGHTS_H
+#define HFS_LIGHTS_H
+
+#include "hfshade.h"
+
+/* Irradiance integral over a uniform cap of half-angle alpha whose axis makes
+ * angle beta with the normal: E = integral_cap max(0, N.s) ds, exact (closed
+ * form of Snyder 1996 for the straddling case).  cos_beta in [-1, 1],
+ * alpha in [0, pi]; alpha >= pi/2 is handled (alpha = pi: the whole sphere, E = pi).
+ * Multiply by radiance and rho/pi for exit radiance. */
+double hfs_cap_irradiance(double cos_beta, double alpha);
+
+/* A local light seen from receiver point p (world units): unit direction
+ * toward its centre, distance to the centre, and the cap half-angle
+ * asin(r/d) (pi when p is inside or on the sphere, in which case dir is +z
+ * if the centre coincides with p).  Returns 1 if p is inside the sphere. */
+int hfs_local_light_cap(const hfs_local_light *l, const double p[3],
+                        double dir[3], double *dist, double *alpha);
+
+#endif /* HFS_LIGHTS_H */
