@@ -125,25 +125,24 @@ typedef struct hfs_lighting {
 /* ---- quality settings ----------------------------------------------------- */
 
 typedef enum hfs_backend {
-    HFS_BACKEND_DEFAULT = 0, /* = GLES once it exists, CPU until then */
+    HFS_BACKEND_DEFAULT = 0, /* = CPU until the GLES renderer lands (issue 3) */
     HFS_BACKEND_GLES,
     HFS_BACKEND_CPU,
     HFS_BACKEND_TRUTH
 } hfs_backend;
 
 typedef enum hfs_visibility_path {
-    HFS_VIS_DEFAULT = 0,     /* = HFS_VIS_LEGENDRE                          */
-    HFS_VIS_LEGENDRE,        /* NS09: Legendre occlusion vector + M_lin     */
+        HFS_VIS_LEGENDRE = 1,    /* NS09: Legendre occlusion vector + M_lin     */
     HFS_VIS_WEDGE_TABLE      /* SN08: 2D/1D tabulated visibility wedges     */
 } hfs_visibility_path;
 
 typedef enum hfs_precision {
-    HFS_PRECISION_DEFAULT = 0, /* = FP16 */
-    HFS_PRECISION_FP16,
+    HFS_PRECISION_FP16 = 1,
     HFS_PRECISION_FP32
 } hfs_precision;
 
-/* Zero means "default" for every field; hfs_quality_defaults() fills them.
+/* Start from hfs_quality_defaults() (which sets EVERY field) and change what
+ * you need; 0 is then a real value where a field allows it (offset = 0).
  * Defaults are those of SN08/NS09: k=4, offset=2, 32 env / 3 key directions. */
 typedef struct hfs_quality {
     int k;                   /* pyramid level step (levels per octave), 4   */
@@ -162,7 +161,9 @@ typedef struct hfs_quality {
     int truth_light_samples; /* stratified samples per key/local light, 256  */
 } hfs_quality;
 
+/* Overwrite every field with its default. */
 HFS_API void hfs_quality_defaults(hfs_quality *q);
+/* No environment, no lights, albedo 1. */
 HFS_API void hfs_lighting_defaults(hfs_lighting *l);
 
 /* Progress callback for long renders (truth): fraction in [0, 1].  Called
@@ -179,6 +180,62 @@ typedef struct hfs_image {
 
 HFS_API int hfs_image_alloc(hfs_image *img, int width, int height, hfs_error *err);
 HFS_API void hfs_image_free(hfs_image *img);
+
+
+/* ---- the renderer ------------------------------------------------------------ */
+
+/* An opaque renderer bound to one backend.  For the GLES backend it owns the
+ * GL context and every GPU resource; the CPU and truth backends own scratch
+ * memory only.  Create once, render many frames. */
+typedef struct hfs_renderer hfs_renderer;
+
+typedef struct hfs_renderer_desc {
+    hfs_backend backend;     /* HFS_BACKEND_DEFAULT: see hfs_backend         */
+    const char *context;     /* GLES only: "surfaceless" (default), "osmesa",
+                                "auto"; NULL = default                        */
+} hfs_renderer_desc;
+
+HFS_API int hfs_renderer_create(const hfs_renderer_desc *desc, hfs_renderer **out,
+                                hfs_error *err);
+HFS_API void hfs_renderer_destroy(hfs_renderer *r);
+
+/* The backend actually used ("cpu", "truth", "gles") and, for GLES, the
+ * context ("surfaceless", "osmesa"). */
+HFS_API const char *hfs_renderer_backend_name(const hfs_renderer *r);
+
+/* Renders one frame: out must be allocated to the field's size.  Every input
+ * is validated first (one-line error, nothing written on failure). */
+HFS_API int hfs_renderer_render(hfs_renderer *r, const hfs_field *field,
+                                const hfs_lighting *lighting,
+                                const hfs_quality *quality, hfs_image *out,
+                                hfs_progress_fn progress, void *user,
+                                hfs_error *err);
+
+/* Validation used by hfs_renderer_render, exposed for tools and tests. */
+HFS_API int hfs_validate_inputs(const hfs_field *field, const hfs_lighting *lighting,
+                                const hfs_quality *quality, hfs_error *err);
+
+/* Exact unshadowed Lo (V = 1) of the scene, any backend-independent: the
+ * normalizer of SPEC's error metrics. */
+HFS_API int hfs_render_unshadowed(const hfs_field *field, const hfs_lighting *lighting,
+                                  const hfs_quality *quality, hfs_image *out,
+                                  hfs_error *err);
+
+/* ---- error metrics (SPEC) ------------------------------------------------------ */
+
+/* Differences between a result and a reference on the same grid, over every
+ * texel and channel, divided by norm (the largest unshadowed value). */
+typedef struct hfs_metrics {
+    double mean_abs, rmse, p99_abs, max_abs;
+    long nonfinite;          /* non-finite values in the result (must be 0) */
+    double norm;
+} hfs_metrics;
+
+HFS_API int hfs_compare_images(const hfs_image *result, const hfs_image *reference,
+                               double norm, hfs_metrics *m, hfs_error *err);
+
+/* Largest value of an image (e.g. of the unshadowed render). */
+HFS_API double hfs_image_max(const hfs_image *img);
 
 #ifdef __cplusplus
 }

@@ -40,22 +40,25 @@ const char *hfs_status_name(int code)
 
 void hfs_quality_defaults(hfs_quality *q)
 {
-    if (!q->k) q->k = 4;
-    if (!q->offset) q->offset = 2;
-    if (!q->nphi_env) q->nphi_env = 32;
-    if (!q->nphi_key) q->nphi_key = 3;
-    if (!q->nphi_local) q->nphi_local = 16;
-    if (!q->subsample) q->subsample = 2;
-    if (!q->precision) q->precision = HFS_PRECISION_FP16;
-    if (!q->visibility) q->visibility = HFS_VIS_LEGENDRE;
-    if (!q->truth_azimuths) q->truth_azimuths = 720;
-    if (!q->truth_elev_order) q->truth_elev_order = 16;
-    if (!q->truth_light_samples) q->truth_light_samples = 256;
+    memset(q, 0, sizeof *q);
+    q->k = 4;
+    q->offset = 2;
+    q->nphi_env = 32;
+    q->nphi_key = 3;
+    q->nphi_local = 16;
+    q->subsample = 2;
+    q->precision = HFS_PRECISION_FP16;
+    q->visibility = HFS_VIS_LEGENDRE;
+    q->threads = 0;
+    q->truth_azimuths = 720;
+    q->truth_elev_order = 16;
+    q->truth_light_samples = 256;
 }
 
 void hfs_lighting_defaults(hfs_lighting *l)
 {
-    if (l->albedo == 0.0) l->albedo = 1.0;
+    memset(l, 0, sizeof *l);
+    l->albedo = 1.0;
 }
 
 int hfs_image_alloc(hfs_image *img, int width, int height, hfs_error *err)

@@ -1,0 +1,104 @@
+/*
+ * scene.h — a scene as the user describes it: SPEC.md's command-line keys,
+ * from a scene file (INI, parsed by libinih) and/or command-line flags.
+ *
+ * One setter, hfs_scene_set(), applies "key = value" for both sources, so the
+ * scene file and the flags accept exactly the same keys with the same syntax
+ * and ranges (the key is the flag without its leading "--").  Flags are
+ * applied after the file and override it; a repeatable key (key, local) given
+ * on the command line replaces the file's list instead of appending to it.
+ *
+ * Scene file format (docs/SCENE.md has the full reference):
+ *     # comment            ; comment
+ *     height = terrain.png        (relative paths: relative to the file)
+ *     dx = 30
+ *     key = 135,35,4,3            (phi, elevation, alpha in degrees; radiance)
+ *     key = 300,60,10,1           (repeatable)
+ * No sections.  Unknown keys, sections, duplicate single-valued keys and
+ * out-of-range values are errors naming the file and line.
+ *
+ * Angles are degrees here (as on the command line); hfs_scene_lighting()
+ * converts to the library's radians.
+ */
+#ifndef HFS_SCENE_H
+#define HFS_SCENE_H
+
+#include "hfshade.h"
+
+#define HFS_PATH_MAX 4096
+
+typedef enum hfs_scene_source {
+    HFS_SOURCE_FILE = 0,
+    HFS_SOURCE_FLAG = 1
+} hfs_scene_source;
+
+typedef struct hfs_scene {
+    /* Height field. */
+    char height[HFS_PATH_MAX];
+    int raw_width, raw_height;       /* --size WxH for raw float32          */
+    double dx, zscale;               /* 0 = not given (defaults 1, 1)       */
+    int dx_given, zscale_given;
+    int has_nodata;
+    double nodata;
+
+    /* Environment: SH (grey) or a map file, not both. */
+    int has_env_sh;
+    double env_sh[HFS_SH_COEFFS];
+    char env_map[HFS_PATH_MAX];
+    double env_rotate_deg;
+
+    /* Lights, angles in degrees. */
+    int n_key;
+    struct { double phi, elev, alpha, le; } key[HFS_MAX_KEY_LIGHTS];
+    int n_local;
+    struct { double x, y, z, r, le; } local[HFS_MAX_LOCAL_LIGHTS];
+
+    double albedo;                   /* 0 = not given (default 1)           */
+    int albedo_given;
+
+    hfs_quality quality;             /* values of the quality keys given    */
+    hfs_backend backend;
+    char context[64];                /* "" = default (surfaceless)          */
+
+    /* Internal bookkeeping: which single-valued keys were set by which
+     * source, and whether a flag already replaced the file's lights. */
+    unsigned long long set_mask[2];
+    int key_from_flags, local_from_flags;
+} hfs_scene;
+
+/* Zeroes *s (all keys "not given"). */
+void hfs_scene_init(hfs_scene *s);
+
+/* Applies one key.  where names the origin for messages ("scene.ini:12" or
+ * "--k").  base_dir, if non-NULL, resolves relative paths (scene files).
+ * Returns 0 or HFS_E_INVALID with a one-line message. */
+int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
+                  const char *value, const char *where, const char *base_dir,
+                  hfs_error *err);
+
+/* Reads a scene file (INI).  Errors name the file and line. */
+int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err);
+
+/* True if key (without "--") is a scene key; *takes_value set accordingly. */
+int hfs_scene_is_key(const char *key);
+
+/* Checks cross-key consistency (height given, env-sh xor env-map, raw size
+ * given for raw files) after all sources are applied. */
+int hfs_scene_validate(const hfs_scene *s, hfs_error *err);
+
+/* Fills the library's lighting and quality from the scene (radians, RGB).
+ * env_sh: if the scene uses an environment map, the caller passes its SH
+ * projection here (3 x 16), else NULL. */
+void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS],
+                        hfs_lighting *l);
+void hfs_scene_quality(const hfs_scene *s, hfs_quality *q);
+
+/* Prints nothing; returns the static table of keys for help texts. */
+typedef struct hfs_scene_key_info {
+    const char *key;
+    const char *arg;
+    const char *help;
+} hfs_scene_key_info;
+const hfs_scene_key_info *hfs_scene_keys(int *count);
+
+#endif /* HFS_SCENE_H */

@@ -1,0 +1,109 @@
+/*
+ * scene_ini.c — scene files, parsed by libinih (Debian's libinih-dev).
+ *
+ * Debian builds inih without per-key line numbers, but ini_parse_string()
+ * returns the line of the first error; the handler therefore keeps the first
+ * message and the caller prefixes it with "FILE:LINE:".  Files are read whole
+ * (size-guarded) and lines longer than inih's buffer are rejected up front,
+ * because inih would silently split them.
+ */
+#include "scene.h"
+
+#include <ini.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#define SCENE_FILE_MAX (1 << 20)
+#define SCENE_LINE_MAX 190 /* inih's INI_MAX_LINE is 200 including newline */
+
+typedef struct ini_ctx {
+    hfs_scene *scene;
+    const char *path;
+    const char *base_dir;
+    int failed;
+    hfs_error first;
+} ini_ctx;
+
+static int on_key(void *user, const char *section, const char *name, const char *value)
+{
+    ini_ctx *c = user;
+    if (c->failed)
+        return 0;
+    if (section && *section) {
+        c->failed = 1;
+        hfs_fail(&c->first, HFS_E_INVALID, "%s: sections are not used ([%s])", c->path, section);
+        return 0;
+    }
+    if (hfs_scene_set(c->scene, HFS_SOURCE_FILE, name, value, c->path, c->base_dir, &c->first)) {
+        c->failed = 1;
+        return 0;
+    }
+    return 1;
+}
+
+int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err)
+{
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return hfs_fail(err, HFS_E_IO, "%s: cannot open scene file", path);
+    if (!S_ISREG(st.st_mode))
+        return hfs_fail(err, HFS_E_IO, "%s: not a regular file", path);
+    if (st.st_size > SCENE_FILE_MAX)
+        return hfs_fail(err, HFS_E_FORMAT, "%s: scene file larger than %d bytes", path, SCENE_FILE_MAX);
+
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return hfs_fail(err, HFS_E_IO, "%s: cannot open scene file", path);
+    char *text = malloc((size_t)st.st_size + 1);
+    if (!text) {
+        fclose(f);
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", path);
+    }
+    size_t n = fread(text, 1, (size_t)st.st_size, f);
+    fclose(f);
+    text[n] = '\0';
+    if (memchr(text, '\0', n)) {
+        free(text);
+        return hfs_fail(err, HFS_E_FORMAT, "%s: binary data in scene file", path);
+    }
+    int line = 1;
+    for (const char *p = text, *start = text; ; ++p) {
+        if (*p == '\n' || *p == '\0') {
+            if (p - start > SCENE_LINE_MAX) {
+                free(text);
+                return hfs_fail(err, HFS_E_FORMAT, "%s:%d: line longer than %d characters", path,
+                                line, SCENE_LINE_MAX);
+            }
+            if (!*p)
+                break;
+            start = p + 1;
+            ++line;
+        }
+    }
+
+    char base_dir[HFS_PATH_MAX];
+    snprintf(base_dir, sizeof base_dir, "%s", path);
+    char *slash = strrchr(base_dir, '/');
+    if (slash)
+        *slash = '\0';
+    else
+        snprintf(base_dir, sizeof base_dir, ".");
+
+    ini_ctx c = {.scene = s, .path = path, .base_dir = base_dir};
+    const int bad_line = ini_parse_string(text, on_key, &c);
+    free(text);
+    if (bad_line == 0)
+        return HFS_OK;
+    if (bad_line < 0)
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory while parsing", path);
+    if (!c.failed)
+        return hfs_fail(err, HFS_E_INVALID, "%s:%d: syntax error (expected key = value)", path, bad_line);
+    /* The setter wrote "PATH: ..."; make it "PATH:LINE: ...". */
+    const size_t plen = strlen(path);
+    const char *rest = c.first.msg;
+    if (strncmp(rest, path, plen) == 0 && rest[plen] == ':')
+        rest += plen + 1;
+    return hfs_fail(err, HFS_E_INVALID, "%s:%d:%s", path, bad_line, rest);
+}

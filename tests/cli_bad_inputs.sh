@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Bad input to the command line tool: every case must exit non-zero with ONE
+# line on stderr that names the input, must not crash (no signal exit), and
+# must leave no output file.  One good render proves the harness can pass.
+# usage: cli_bad_inputs.sh HFSHADE HFGEN BROKEN_DIR
+set -u
+HFSHADE=$1 HFGEN=$2 BROKEN=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0 cases=0
+
+"$HFGEN" flat --size 16x12 -o "$tmp/flat.pfm" || { echo "FAIL: hfgen"; exit 1; }
+sky="3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0"
+
+# expect_fail NAME NEEDLE ARGS... : NEEDLE must appear in the message.
+expect_fail() {
+    local name=$1 needle=$2; shift 2
+    cases=$((cases + 1))
+    rm -f "$tmp/out.png" "$tmp/out.pfm"
+    "$HFSHADE" "$@" >"$tmp/stdout" 2>"$tmp/stderr"
+    local rc=$? lines
+    lines=$(wc -l <"$tmp/stderr")
+    if [ $rc -eq 0 ] || [ $rc -ge 128 ]; then
+        echo "FAIL [$name]: exit status $rc"; fails=$((fails + 1)); return
+    fi
+    if [ "$lines" -ne 1 ]; then
+        echo "FAIL [$name]: $lines lines on stderr:"; cat "$tmp/stderr"; fails=$((fails + 1)); return
+    fi
+    if ! grep -qF -- "$needle" "$tmp/stderr"; then
+        echo "FAIL [$name]: message lacks '$needle': $(cat "$tmp/stderr")"; fails=$((fails + 1)); return
+    fi
+    if ls "$tmp"/out.* >/dev/null 2>&1 || ls "$tmp"/*.tmp-* >/dev/null 2>&1; then
+        echo "FAIL [$name]: output file left behind"; fails=$((fails + 1)); return
+    fi
+    echo "ok   [$name] $(cat "$tmp/stderr")"
+}
+
+R="render --backend cpu --nphi-env 4 -o $tmp/out.png --pfm $tmp/out.pfm"
+expect_fail missing-height "nope.pfm" $R --height "$tmp/nope.pfm" --env-sh $sky
+expect_fail no-height "no height field" $R --env-sh $sky
+expect_fail unknown-flag "--bogus" $R --height "$tmp/flat.pfm" --bogus 1
+expect_fail bad-k "--k" $R --height "$tmp/flat.pfm" --k 0
+expect_fail bad-dx "--dx" $R --height "$tmp/flat.pfm" --dx -2
+expect_fail bad-key "--key" $R --height "$tmp/flat.pfm" --key 10,100,2,1
+expect_fail bad-env-sh "--env-sh" $R --height "$tmp/flat.pfm" --env-sh 1,2
+expect_fail nan-albedo "--albedo" $R --height "$tmp/flat.pfm" --albedo nan
+expect_fail missing-env-map "nope.exr" $R --height "$tmp/flat.pfm" --env-map "$tmp/nope.exr"
+expect_fail both-envs "both env-sh and env-map" $R --height "$tmp/flat.pfm" --env-sh $sky --env-map "$tmp/x.hdr"
+expect_fail missing-value "--dx" $R --height "$tmp/flat.pfm" --dx
+printf 'height = flat.pfm\nwhat = 3\n' >"$tmp/bad.ini"
+expect_fail ini-unknown-key "bad.ini:2: unknown key 'what'" render "$tmp/bad.ini" -o "$tmp/out.png"
+printf 'height = flat.pfm\nk = 99\n' >"$tmp/bad2.ini"
+expect_fail ini-range "bad2.ini:2: k: 99 is out of range" render "$tmp/bad2.ini" -o "$tmp/out.png"
+expect_fail no-output "no output" render --height "$tmp/flat.pfm" --env-sh $sky
+expect_fail unwritable-output "/nonexistent-dir/" render --backend cpu --height "$tmp/flat.pfm" --env-sh $sky -o /nonexistent-dir/out.png
+
+# Every broken height file in the corpus, through the whole tool.
+for f in "$BROKEN"/height/*; do
+    [ -f "$f" ] || continue
+    expect_fail "height:$(basename "$f")" "$(basename "$f")" $R --height "$f" --env-sh $sky
+done
+for f in "$BROKEN"/env/*; do
+    [ -f "$f" ] || continue
+    expect_fail "env:$(basename "$f")" "$(basename "$f")" $R --height "$tmp/flat.pfm" --env-map "$f"
+done
+
+# The good case: both outputs written, nothing else.
+cases=$((cases + 1))
+if "$HFSHADE" $R --height "$tmp/flat.pfm" --env-sh $sky --quiet && [ -s "$tmp/out.png" ] && [ -s "$tmp/out.pfm" ]; then
+    echo "ok   [good-render]"
+else
+    echo "FAIL [good-render]"; fails=$((fails + 1))
+fi
+echo "$((cases - fails)) passed, $fails failed"
+[ $fails -eq 0 ]

@@ -1,0 +1,117 @@
+/*
+ * test_scene.c — scene keys from files and flags: parsing, ranges, line
+ * numbers in errors, flags overriding the file, repeatable keys.
+ */
+#include "scene.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static int failures;
+
+#define CHECK(cond, ...) do { if (!(cond)) { failures++; printf("FAIL %s:%d: ", __FILE__, __LINE__); \
+    printf(__VA_ARGS__); printf("\n"); } } while (0)
+
+static char dir[] = "/tmp/hfs_test_scene_XXXXXX";
+
+static const char *write_file(const char *name, const char *text)
+{
+    static char path[512];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+    return path;
+}
+
+/* Loads text as a scene file; returns status, message in err. */
+static int load(hfs_scene *s, const char *text, hfs_error *err)
+{
+    hfs_scene_init(s);
+    memset(err, 0, sizeof *err);
+    return hfs_scene_load_file(s, write_file("s.ini", text), err);
+}
+
+int main(void)
+{
+    if (!mkdtemp(dir)) {
+        perror("mkdtemp");
+        return 1;
+    }
+    hfs_scene s;
+    hfs_error err;
+
+    /* A valid file with comments, relative path, repeated key lights. */
+    int rc = load(&s, "# demo\nheight = terrain.png\ndx = 30 ; metres\nzscale=2\n"
+                      "env-sh = 3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0\n"
+                      "key = 135,35,4,3\nkey = 300,60,10,1\nk = 8\noffset = 0\nvisibility = wedge\n",
+                  &err);
+    CHECK(rc == 0, "valid file rejected: %s", err.msg);
+    CHECK(strstr(s.height, "/terrain.png") && strncmp(s.height, dir, strlen(dir)) == 0,
+          "relative path not resolved against the file: %s", s.height);
+    CHECK(s.dx == 30 && s.zscale == 2 && s.n_key == 2 && s.key[1].elev == 60, "values not stored");
+    hfs_quality q;
+    hfs_scene_quality(&s, &q);
+    CHECK(q.k == 8 && q.offset == 0 && q.nphi_env == 32 && q.visibility == HFS_VIS_WEDGE_TABLE,
+          "quality: k=%d offset=%d nphi_env=%d", q.k, q.offset, q.nphi_env);
+    hfs_lighting l;
+    hfs_scene_lighting(&s, NULL, &l);
+    CHECK(l.has_env && l.env_sh[2][0] > 3.5 && l.n_key == 2 && l.albedo == 1.0 &&
+          l.key[0].phi > 2.35 && l.key[0].phi < 2.36, "lighting conversion (degrees -> radians)");
+
+    /* Flags override the file; a flag key replaces the file's key list. */
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "dx", "5", "--dx", NULL, &err);
+    CHECK(rc == 0 && s.dx == 5, "flag did not override dx");
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "key", "10,20,3,1", "--key", NULL, &err);
+    CHECK(rc == 0 && s.n_key == 1 && s.key[0].phi == 10, "flag --key did not replace the file's keys (n=%d)", s.n_key);
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "key", "11,20,3,1", "--key", NULL, &err);
+    CHECK(rc == 0 && s.n_key == 2, "second --key did not append");
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "dx", "6", "--dx", NULL, &err);
+    CHECK(rc != 0 && strstr(err.msg, "twice"), "duplicate flag accepted: %s", err.msg);
+
+    /* Errors carry file:line. */
+    struct { const char *text; const char *expect; } bad[] = {
+        {"height = a.png\nbogus = 1\n", "s.ini:2: unknown key 'bogus'"},
+        {"height = a.png\n\nk = 0\n", "s.ini:3: k: 0 is out of range"},
+        {"dx = -1\n", "s.ini:1: dx: spacing -1 is out of range"},
+        {"dx = 1\ndx = 2\n", "s.ini:2: dx given twice"},
+        {"key = 1,2,3\n", "s.ini:1: key: expected 4 comma-separated values"},
+        {"key = 1,95,3,1\n", "s.ini:1: key: elevation 95 is out of range"},
+        {"subsample = 3\n", "s.ini:1: subsample: 3 is not one of 1, 2, 4"},
+        {"[scene]\nk = 4\n", "s.ini:2: sections are not used"},
+        {"this line has no equals sign\n", "s.ini:1: syntax error"},
+        {"albedo = nan\n", "s.ini:1: albedo: 'nan' is not 1 finite number"},
+        {"env-sh = 1,2,3\n", "s.ini:1: env-sh: expected 16 comma-separated values"},
+        {"backend = vulkan\n", "s.ini:1: backend: 'vulkan' is not gles, cpu or truth"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
+        rc = load(&s, bad[i].text, &err);
+        CHECK(rc != 0 && strstr(err.msg, bad[i].expect) && !strchr(err.msg, '\n'),
+              "case %zu: got rc=%d '%s', want '%s'", i, rc, err.msg, bad[i].expect);
+    }
+    /* A line longer than inih's buffer is an error, not silently split. */
+    char longline[400];
+    memset(longline, 'x', sizeof longline);
+    memcpy(longline, "height = ", 9);
+    longline[sizeof longline - 2] = '\n';
+    longline[sizeof longline - 1] = '\0';
+    rc = load(&s, longline, &err);
+    CHECK(rc != 0 && strstr(err.msg, "s.ini:1: line longer"), "long line: %s", err.msg);
+    /* Missing file, directory. */
+    hfs_scene_init(&s);
+    rc = hfs_scene_load_file(&s, "/nonexistent/scene.ini", &err);
+    CHECK(rc != 0 && strstr(err.msg, "/nonexistent/scene.ini"), "missing file: %s", err.msg);
+    rc = hfs_scene_load_file(&s, dir, &err);
+    CHECK(rc != 0 && strstr(err.msg, "not a regular file"), "directory: %s", err.msg);
+    /* Consistency. */
+    hfs_scene_init(&s);
+    rc = hfs_scene_validate(&s, &err);
+    CHECK(rc != 0 && strstr(err.msg, "no height field"), "missing height accepted");
+
+    unlink(write_file("s.ini", ""));
+    rmdir(dir);
+    printf("%s: %d failure(s)\n", failures ? "FAIL" : "PASS", failures);
+    return failures ? 1 : 0;
+}

@@ -1,0 +1,314 @@
+/*
+ * hfshade — the command-line front end (SPEC.md "Command-line contract").
+ *
+ *   hfshade render  [SCENE.ini] [flags] -o OUT.png [--pfm OUT.pfm]
+ *   hfshade compare [SCENE.ini] [flags] RESULT.pfm REFERENCE.pfm
+ *   hfshade keys                      (lists every scene key / flag)
+ *
+ * Every scene key is also a flag (--KEY VALUE); flags override the file.
+ * Errors: one line on stderr naming the input and the problem, exit 1 (2 for
+ * usage errors); no output file is left behind on failure.
+ */
+#include "hfs_io.h"
+#include "hfshade.h"
+#include "scene.h"
+#include "sh.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#define EXIT_USAGE 2
+
+typedef struct cli {
+    const char *command;
+    const char *scene_file;
+    const char *out_png;
+    const char *out_pfm;
+    const char *positional[2];
+    int n_positional;
+    double exposure;
+    int quiet;
+    hfs_scene scene;
+} cli;
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: hfshade render  [SCENE.ini] [--KEY VALUE ...] -o OUT.png [--pfm OUT.pfm]\n"
+            "       hfshade compare [SCENE.ini] [--KEY VALUE ...] RESULT.pfm REFERENCE.pfm\n"
+            "       hfshade keys\n"
+            "options: --exposure F (PNG only, default 1), --quiet, --help\n"
+            "scene keys (also accepted in SCENE.ini as KEY = VALUE): run 'hfshade keys'\n");
+}
+
+static void print_keys(void)
+{
+    int n;
+    const hfs_scene_key_info *k = hfs_scene_keys(&n);
+    for (int i = 0; i < n; ++i)
+        printf("  --%-15s %-24s %s\n", k[i].key, k[i].arg, k[i].help);
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Progress on a terminal only: a single rewritten line on stderr. */
+static void progress_bar(void *user, double fraction)
+{
+    int *last = user;
+    const int pct = (int)(fraction * 100.0);
+    if (pct == *last)
+        return;
+    *last = pct;
+    fprintf(stderr, "\rrendering %3d%%", pct);
+    if (pct >= 100)
+        fputc('\n', stderr);
+    fflush(stderr);
+}
+
+/* Two passes over argv: the scene file first, then flags, so flags always
+ * override the file whatever their position. */
+static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
+{
+    for (int i = 2; i < argc; ++i) {
+        const char *a = argv[i];
+        if (a[0] == '-' && a[1] != '\0') {
+            const char *name = a[1] == '-' ? a + 2 : a + 1;
+            if (!strcmp(name, "quiet") || !strcmp(name, "help") || !strcmp(name, "h"))
+                continue;
+            ++i; /* every other flag takes a value */
+            continue;
+        }
+        const size_t len = strlen(a);
+        if (!c->scene_file && c->n_positional == 0 && len > 4 && !strcmp(a + len - 4, ".ini")) {
+            c->scene_file = a;
+        } else {
+            if (c->n_positional >= 2)
+                return hfs_fail(err, HFS_E_INVALID, "%s: unexpected argument", a);
+            c->positional[c->n_positional++] = a;
+        }
+    }
+    if (c->scene_file) {
+        int rc = hfs_scene_load_file(&c->scene, c->scene_file, err);
+        if (rc)
+            return rc;
+    }
+    for (int i = 2; i < argc; ++i) {
+        const char *a = argv[i];
+        if (!(a[0] == '-' && a[1] != '\0'))
+            continue;
+        const char *name = a[1] == '-' ? a + 2 : a + 1;
+        if (!strcmp(name, "quiet")) {
+            c->quiet = 1;
+            continue;
+        }
+        if (!strcmp(name, "help") || !strcmp(name, "h")) {
+            usage(stdout);
+            exit(0);
+        }
+        if (i + 1 >= argc)
+            return hfs_fail(err, HFS_E_INVALID, "%s: missing value", a);
+        const char *v = argv[++i];
+        if (!strcmp(name, "o")) {
+            c->out_png = v;
+        } else if (!strcmp(name, "pfm")) {
+            c->out_pfm = v;
+        } else if (!strcmp(name, "exposure")) {
+            char *end;
+            c->exposure = strtod(v, &end);
+            if (end == v || *end || !(c->exposure > 0.0) || !isfinite(c->exposure))
+                return hfs_fail(err, HFS_E_INVALID, "--exposure: '%s' is not a positive number", v);
+        } else {
+            if (!hfs_scene_is_key(name))
+                return hfs_fail(err, HFS_E_INVALID, "%s: unknown flag (see 'hfshade keys')", a);
+            char where[80];
+            snprintf(where, sizeof where, "--%s", name);
+            int rc = hfs_scene_set(&c->scene, HFS_SOURCE_FLAG, name, v, where, NULL, err);
+            if (rc)
+                return rc;
+        }
+    }
+    return HFS_OK;
+}
+
+/* Everything a render needs, loaded and validated; freed by scene_inputs_free. */
+typedef struct scene_inputs {
+    hfs_heightmap hm;
+    hfs_field field;
+    hfs_lighting lighting;
+    hfs_quality quality;
+} scene_inputs;
+
+static void scene_inputs_free(scene_inputs *in)
+{
+    hfs_heightmap_free(&in->hm);
+}
+
+static int load_inputs(const cli *c, scene_inputs *in, hfs_error *err)
+{
+    memset(in, 0, sizeof *in);
+    const hfs_scene *s = &c->scene;
+    int rc = hfs_scene_validate(s, err);
+    if (rc)
+        return rc;
+
+    hfs_height_load_opts opts = {0};
+    opts.has_nodata = s->has_nodata;
+    opts.nodata = (float)s->nodata;
+    opts.raw_width = s->raw_width;
+    opts.raw_height = s->raw_height;
+    rc = hfs_height_load(s->height, &opts, &in->hm, err);
+    if (rc)
+        return rc;
+    if (in->hm.holes > 0 && !c->quiet)
+        fprintf(stderr, "%s: filled %ld hole%s (nodata)\n", s->height, in->hm.holes,
+                in->hm.holes == 1 ? "" : "s");
+
+    in->field.width = in->hm.width;
+    in->field.height = in->hm.height;
+    in->field.z = in->hm.z;
+    in->field.dx = s->dx_given ? s->dx : (in->hm.cellsize > 0.0 ? in->hm.cellsize : 1.0);
+    in->field.zscale = s->zscale_given ? s->zscale : 1.0;
+
+    if (s->env_map[0]) {
+        hfs_envmap env;
+        rc = hfs_envmap_load(s->env_map, &env, err);
+        if (rc)
+            return rc;
+        double sh[3][HFS_SH_N];
+        hfs_sh_project_equirect(env.rgb, env.width, env.height, sh);
+        hfs_envmap_free(&env);
+        hfs_scene_lighting(s, (const double(*)[HFS_SH_COEFFS])sh, &in->lighting);
+    } else {
+        hfs_scene_lighting(s, NULL, &in->lighting);
+    }
+    hfs_scene_quality(s, &in->quality);
+    return hfs_validate_inputs(&in->field, &in->lighting, &in->quality, err);
+}
+
+static int cmd_render(const cli *c, hfs_error *err)
+{
+    if (!c->out_png && !c->out_pfm)
+        return hfs_fail(err, HFS_E_INVALID, "render: no output (give -o OUT.png and/or --pfm OUT.pfm)");
+    if (c->n_positional)
+        return hfs_fail(err, HFS_E_INVALID, "%s: unexpected argument", c->positional[0]);
+
+    scene_inputs in;
+    hfs_renderer *r = NULL;
+    hfs_image img = {0};
+    int rc = load_inputs(c, &in, err);
+    if (rc)
+        goto out;
+    hfs_renderer_desc desc = {.backend = c->scene.backend,
+                              .context = c->scene.context[0] ? c->scene.context : NULL};
+    if ((rc = hfs_renderer_create(&desc, &r, err)))
+        goto out;
+    if ((rc = hfs_image_alloc(&img, in.field.width, in.field.height, err)))
+        goto out;
+    int last_pct = -1;
+    const int show = !c->quiet && isatty(STDERR_FILENO);
+    const double t0 = now_seconds();
+    rc = hfs_renderer_render(r, &in.field, &in.lighting, &in.quality, &img,
+                             show ? progress_bar : NULL, &last_pct, err);
+    const double t1 = now_seconds();
+    if (rc)
+        goto out;
+    if (c->out_pfm && (rc = hfs_pfm_write(c->out_pfm, &img, 0, err)))
+        goto out;
+    if (c->out_png) {
+        hfs_png_opts po = {0};
+        po.exposure = c->exposure; /* 0 = default 1 */
+        if ((rc = hfs_png_write(c->out_png, &img, &po, err))) {
+            if (c->out_pfm)
+                remove(c->out_pfm); /* no partial output */
+            goto out;
+        }
+    }
+    if (!c->quiet)
+        fprintf(stderr, "%s: %dx%d, backend %s, %.3f s\n", c->out_png ? c->out_png : c->out_pfm,
+                in.field.width, in.field.height, hfs_renderer_backend_name(r), t1 - t0);
+out:
+    hfs_image_free(&img);
+    hfs_renderer_destroy(r);
+    scene_inputs_free(&in);
+    return rc;
+}
+
+static int cmd_compare(const cli *c, hfs_error *err)
+{
+    if (c->n_positional != 2)
+        return hfs_fail(err, HFS_E_INVALID, "compare: give RESULT.pfm and REFERENCE.pfm");
+    scene_inputs in;
+    hfs_image res = {0}, ref = {0}, unsh = {0};
+    int rc = load_inputs(c, &in, err);
+    if (rc)
+        goto out;
+    if ((rc = hfs_pfm_read_image(c->positional[0], &res, err)) ||
+        (rc = hfs_pfm_read_image(c->positional[1], &ref, err)))
+        goto out;
+    if (res.width != in.field.width || res.height != in.field.height) {
+        rc = hfs_fail(err, HFS_E_INVALID, "%s: %dx%d does not match the scene's %dx%d",
+                      c->positional[0], res.width, res.height, in.field.width, in.field.height);
+        goto out;
+    }
+    if ((rc = hfs_image_alloc(&unsh, in.field.width, in.field.height, err)) ||
+        (rc = hfs_render_unshadowed(&in.field, &in.lighting, &in.quality, &unsh, err)))
+        goto out;
+    const double norm = hfs_image_max(&unsh);
+    hfs_metrics m;
+    if ((rc = hfs_compare_images(&res, &ref, norm, &m, err)))
+        goto out;
+    printf("mean_abs %.3e rmse %.3e p99_abs %.3e max_abs %.3e nonfinite %ld norm %.6g\n",
+           m.mean_abs, m.rmse, m.p99_abs, m.max_abs, m.nonfinite, m.norm);
+out:
+    hfs_image_free(&res);
+    hfs_image_free(&ref);
+    hfs_image_free(&unsh);
+    scene_inputs_free(&in);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return EXIT_USAGE;
+    }
+    cli c;
+    memset(&c, 0, sizeof c);
+    hfs_scene_init(&c.scene);
+    c.command = argv[1];
+    if (!strcmp(c.command, "--help") || !strcmp(c.command, "-h") || !strcmp(c.command, "help")) {
+        usage(stdout);
+        return 0;
+    }
+    if (!strcmp(c.command, "keys")) {
+        print_keys();
+        return 0;
+    }
+    if (strcmp(c.command, "render") && strcmp(c.command, "compare")) {
+        fprintf(stderr, "hfshade: unknown command '%s'\n", c.command);
+        usage(stderr);
+        return EXIT_USAGE;
+    }
+    hfs_error err = {{0}};
+    int rc = parse_args(&c, argc, argv, &err);
+    if (rc) {
+        fprintf(stderr, "hfshade: %s\n", err.msg);
+        return EXIT_USAGE;
+    }
+    rc = !strcmp(c.command, "render") ? cmd_render(&c, &err) : cmd_compare(&c, &err);
+    if (rc) {
+        fprintf(stderr, "hfshade: %s\n", err.msg);
+        return 1;
+    }
+    return 0;
+}
