@@ -1,0 +1,33 @@
+# board.cmake — hfs_board: headless GL context backends (gl_context.h).
+#   surfaceless  EGL (pkg-config egl), always built
+#   osmesa       OSMesa (pkg-config osmesa) when HFS_WITH_OSMESA is ON and the
+#                library is found; otherwise the backend answers "not built".
+# GL itself is not linked: the renderer loads GL entry points from the context
+# (runtime/gl_api.h), because OSMesa is not behind libglvnd's libGLESv2.
+
+pkg_check_modules(HFS_EGL REQUIRED IMPORTED_TARGET egl)
+
+add_library(hfs_board STATIC
+  ${CMAKE_CURRENT_LIST_DIR}/gl_context.c
+  ${CMAKE_CURRENT_LIST_DIR}/egl_surfaceless.c
+  ${CMAKE_CURRENT_LIST_DIR}/osmesa.c)
+target_include_directories(hfs_board PUBLIC ${CMAKE_CURRENT_LIST_DIR})
+target_compile_definitions(hfs_board PRIVATE HFS_BUILDING_LIBRARY)
+target_link_libraries(hfs_board PUBLIC hfs_base PRIVATE PkgConfig::HFS_EGL)
+
+set(HFS_HAVE_OSMESA OFF)
+if(HFS_WITH_OSMESA)
+  pkg_check_modules(HFS_OSMESA IMPORTED_TARGET osmesa)
+  if(HFS_OSMESA_FOUND)
+    set(HFS_HAVE_OSMESA ON)
+    target_compile_definitions(hfs_board PRIVATE HFS_HAVE_OSMESA=1)
+    target_link_libraries(hfs_board PRIVATE PkgConfig::HFS_OSMESA)
+  else()
+    message(STATUS "hfshade: OSMesa not found (libosmesa6-dev); context \"osmesa\" will report \"not built\"")
+  endif()
+endif()
+if(HFS_HAVE_OSMESA)
+  message(STATUS "hfshade: GL contexts: surfaceless, osmesa")
+else()
+  message(STATUS "hfshade: GL contexts: surfaceless (osmesa not built)")
+endif()

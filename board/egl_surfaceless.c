@@ -1,0 +1,220 @@
+/*
+ * egl_surfaceless.c — "surfaceless" context: EGL_MESA_platform_surfaceless,
+ * OpenGL ES 3.x, bound with EGL_NO_SURFACE (EGL_KHR_surfaceless_context).
+ * There is no default framebuffer: the renderer draws into FBOs.
+ *
+ * Invariants: everything this backend makes lives in its object; the only
+ * shared thing is the EGLDisplay, which EGL keys on (platform, native display)
+ * and so hands the same handle to every user in the process.  Terminating it
+ * would destroy other contexts (ours or the application's), so we terminate
+ * only with EGL_KHR_display_reference, where eglInitialize/eglTerminate are
+ * reference counted; without it the display lives until exit (Mesa frees it
+ * from its atexit handler).
+ *
+ * Limits: needs libEGL with EGL_EXT_platform_base + EGL_MESA_platform_surfaceless
+ * (Mesa >= 17; libglvnd forwards them) and a display with
+ * EGL_KHR_surfaceless_context.  GL function pointers come from
+ * eglGetProcAddress (EGL_KHR_get_all_proc_addresses / EGL 1.5).
+ */
+#include "gl_context_backend.h"
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct surfaceless_context {
+    hfs_gl_context base;
+    EGLDisplay display;
+    EGLContext context;
+    int terminate_display; /* EGL_KHR_display_reference: ours to release */
+} surfaceless_context;
+
+static const char *egl_error_name(EGLint code)
+{
+    switch (code) {
+    case EGL_SUCCESS: return "EGL_SUCCESS";
+    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
+    case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
+    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
+    case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
+    case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
+    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
+    case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
+    case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
+    default: return "unknown EGL error";
+    }
+}
+
+/* Whole-word match in a space-separated extension string. */
+static int has_word(const char *list, const char *word)
+{
+    size_t n = strlen(word);
+    for (const char *p = list; p && (p = strstr(p, word)) != NULL; p += n) {
+        int starts = p == list || p[-1] == ' ';
+        int ends = p[n] == '\0' || p[n] == ' ';
+        if (starts && ends)
+            return 1;
+    }
+    return 0;
+}
+
+static int egl_fail(hfs_error *err, const char *what)
+{
+    EGLint code = eglGetError();
+    return hfs_fail(err, HFS_E_CONTEXT, "%s failed (%s)", what, egl_error_name(code));
+}
+
+static void surfaceless_destroy(hfs_gl_context *base)
+{
+    surfaceless_context *c = (surfaceless_context *)base;
+    if (c->context != EGL_NO_CONTEXT) {
+        if (eglGetCurrentContext() == c->context)
+            eglMakeCurrent(c->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        eglDestroyContext(c->display, c->context);
+    }
+    if (c->terminate_display)
+        eglTerminate(c->display);
+    free(c);
+}
+
+static int surfaceless_create(hfs_gl_context **out, hfs_error *err)
+{
+    int rc;
+    surfaceless_context *c = calloc(1, sizeof *c);
+    if (!c)
+        return hfs_fail(err, HFS_E_NOMEM, "out of memory");
+    c->base.backend = &hfs_gl_backend_surfaceless;
+    c->display = EGL_NO_DISPLAY;
+    c->context = EGL_NO_CONTEXT;
+
+    /* Client extensions: NULL (EGL_BAD_DISPLAY) means EGL_EXT_client_extensions
+     * is missing, so no platform extension can be present either. */
+    const char *client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (!client || !has_word(client, "EGL_EXT_platform_base") ||
+        !has_word(client, "EGL_MESA_platform_surfaceless")) {
+        rc = hfs_fail(err, HFS_E_CONTEXT,
+                      "EGL_MESA_platform_surfaceless not offered by this libEGL");
+        goto err_free;
+    }
+    PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display =
+        (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
+    if (!get_platform_display) {
+        rc = hfs_fail(err, HFS_E_CONTEXT, "eglGetPlatformDisplayEXT not found");
+        goto err_free;
+    }
+    const EGLint track[] = { EGL_TRACK_REFERENCES_KHR, EGL_TRUE, EGL_NONE };
+    c->terminate_display = has_word(client, "EGL_KHR_display_reference");
+    c->display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
+                                      c->terminate_display ? track : NULL);
+    if (c->display == EGL_NO_DISPLAY) {
+        c->terminate_display = 0;
+        rc = egl_fail(err, "eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA)");
+        goto err_free;
+    }
+    EGLint major = 0, minor = 0;
+    if (!eglInitialize(c->display, &major, &minor)) {
+        c->terminate_display = 0;
+        rc = egl_fail(err, "eglInitialize");
+        goto err_free;
+    }
+
+    const char *exts = eglQueryString(c->display, EGL_EXTENSIONS);
+    if (!has_word(exts, "EGL_KHR_surfaceless_context")) {
+        rc = hfs_fail(err, HFS_E_CONTEXT, "EGL_KHR_surfaceless_context missing (EGL %d.%d)",
+                      major, minor);
+        goto err_terminate;
+    }
+    /* ES 3 needs EGL_OPENGL_ES3_BIT and EGL_CONTEXT_MAJOR_VERSION: EGL 1.5 or
+     * EGL_KHR_create_context. */
+    if (!(major > 1 || minor >= 5) && !has_word(exts, "EGL_KHR_create_context")) {
+        rc = hfs_fail(err, HFS_E_CONTEXT, "EGL %d.%d without EGL_KHR_create_context "
+                      "cannot make an ES 3 context", major, minor);
+        goto err_terminate;
+    }
+    if (!eglBindAPI(EGL_OPENGL_ES_API)) {
+        rc = egl_fail(err, "eglBindAPI(EGL_OPENGL_ES_API)");
+        goto err_terminate;
+    }
+
+    /* Any ES3-renderable config: no surface will ever be made from it. */
+    const EGLint config_attribs[] = {
+        EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT,
+        EGL_SURFACE_TYPE, 0,
+        EGL_NONE
+    };
+    EGLConfig config = EGL_NO_CONFIG_KHR;
+    EGLint n_configs = 0;
+    if (!eglChooseConfig(c->display, config_attribs, &config, 1, &n_configs)) {
+        rc = egl_fail(err, "eglChooseConfig");
+        goto err_terminate;
+    }
+    if (n_configs < 1) {
+        if (!has_word(exts, "EGL_KHR_no_config_context")) {
+            rc = hfs_fail(err, HFS_E_CONTEXT, "no EGL config with EGL_OPENGL_ES3_BIT");
+            goto err_terminate;
+        }
+        config = EGL_NO_CONFIG_KHR;
+    }
+
+    /* Asking for 3.0 gets the highest compatible version (3.2 on Mesa). */
+    const EGLint context_attribs[] = {
+        EGL_CONTEXT_MAJOR_VERSION, 3,
+        EGL_CONTEXT_MINOR_VERSION, 0,
+        EGL_NONE
+    };
+    c->context = eglCreateContext(c->display, config, EGL_NO_CONTEXT, context_attribs);
+    if (c->context == EGL_NO_CONTEXT) {
+        rc = egl_fail(err, "eglCreateContext(OpenGL ES 3.0)");
+        goto err_terminate;
+    }
+    if (!eglMakeCurrent(c->display, EGL_NO_SURFACE, EGL_NO_SURFACE, c->context)) {
+        rc = egl_fail(err, "eglMakeCurrent(EGL_NO_SURFACE)");
+        goto err_context;
+    }
+    *out = &c->base;
+    return HFS_OK;
+
+err_context:
+    eglDestroyContext(c->display, c->context);
+err_terminate:
+    if (c->terminate_display)
+        eglTerminate(c->display);
+err_free:
+    free(c);
+    return rc;
+}
+
+static void *surfaceless_proc(const hfs_gl_context *base, const char *name)
+{
+    (void)base; /* eglGetProcAddress is context-independent */
+    /* POSIX lets function pointers round-trip through void * (dlsym). */
+    return (void *)eglGetProcAddress(name);
+}
+
+static int surfaceless_make_current(hfs_gl_context *base, hfs_error *err)
+{
+    surfaceless_context *c = (surfaceless_context *)base;
+    /* The bound API is per thread: a new thread starts with EGL_OPENGL_ES_API
+     * but the application may have changed it. */
+    if (!eglBindAPI(EGL_OPENGL_ES_API))
+        return egl_fail(err, "eglBindAPI(EGL_OPENGL_ES_API)");
+    if (!eglMakeCurrent(c->display, EGL_NO_SURFACE, EGL_NO_SURFACE, c->context))
+        return egl_fail(err, "eglMakeCurrent(EGL_NO_SURFACE)");
+    return HFS_OK;
+}
+
+const struct hfs_gl_context_backend hfs_gl_backend_surfaceless = {
+    .name = "surfaceless",
+    .create = surfaceless_create,
+    .destroy = surfaceless_destroy,
+    .proc = surfaceless_proc,
+    .make_current = surfaceless_make_current,
+};
