@@ -1,0 +1,11 @@
+# hfs_cpu: the CPU reference renderer (DESIGN.md in double precision):
+# height pyramid, multi-scale horizons, swaths and visibility, shading.
+# Included from runtime/CMakeLists.txt after sh.cmake (needs hfs_sh).
+add_library(hfs_cpu STATIC
+  ${CMAKE_CURRENT_SOURCE_DIR}/cpu_pyramid.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/cpu_horizon.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/cpu_visibility.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/cpu_render.c)
+target_compile_definitions(hfs_cpu PRIVATE HFS_BUILDING_LIBRARY)
+target_include_directories(hfs_cpu PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(hfs_cpu PUBLIC hfs_base hfs_sh)

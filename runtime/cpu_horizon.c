@@ -1,0 +1,256 @@
+/*
+ * cpu_horizon.c — see cpu_horizon.h.
+ */
+#include "cpu_horizon.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+
+#define HALF_PI 1.57079632679489661923
+
+struct hfs_horizon_plan {
+    const hfs_cpu_pyramid *p;
+    int n_dirs, n_levels, w, h;
+    size_t stride;
+    double *cs;                 /* n_dirs x (cos, sin), snapped */
+    hfs_horizon_tap *taps;      /* n_dirs x n_levels */
+};
+
+/* Snaps a direction component that is zero in exact arithmetic. */
+static double snap_unit(double c)
+{
+    return fabs(c) < 1e-12 ? 0.0 : c;
+}
+
+/* Splits an offset into integer part and fraction, snapping to an integer
+ * when within 1e-9 texel of it. */
+static void split_offset(double o, int *io, double *fo)
+{
+    const double r = nearbyint(o);
+    if (fabs(o - r) < 1e-9)
+        o = r;
+    const double f = floor(o);
+    *io = (int)f;
+    *fo = o - f;
+}
+
+int hfs_horizon_plan_create(const hfs_cpu_pyramid *p, double dx, double zscale,
+                            int offset, const double *phi, int n_dirs,
+                            hfs_horizon_plan **out, hfs_error *err)
+{
+    *out = NULL;
+    if (!p || n_dirs < 0 || (n_dirs > 0 && !phi))
+        return hfs_fail(err, HFS_E_INVALID, "horizon plan: invalid arguments");
+    if (!(dx > 0.0) || !(zscale >= 0.0) || !isfinite(dx) || !isfinite(zscale))
+        return hfs_fail(err, HFS_E_INVALID, "horizon plan: dx=%g zscale=%g out of range", dx, zscale);
+    if (offset < 0)
+        return hfs_fail(err, HFS_E_INVALID, "horizon plan: level offset %d < 0", offset);
+    const int n = hfs_cpu_pyramid_count(p), k = hfs_cpu_pyramid_k(p);
+    if (hfs_pyramid_read_level(n, k, offset, 0) < hfs_cpu_pyramid_first_full(p))
+        return hfs_fail(err, HFS_E_INVALID, "horizon plan: pyramid lacks the levels offset %d reads", offset);
+
+    hfs_horizon_plan *hp = calloc(1, sizeof *hp);
+    if (!hp)
+        return hfs_fail(err, HFS_E_NOMEM, "horizon plan: out of memory");
+    hp->p = p;
+    hp->n_dirs = n_dirs;
+    hp->n_levels = n;
+    hp->w = hfs_cpu_pyramid_width(p);
+    hp->h = hfs_cpu_pyramid_height(p);
+    hp->stride = (size_t)hfs_cpu_pyramid_stride(p);
+    hp->cs = malloc(((size_t)n_dirs * 2 + 1) * sizeof *hp->cs);
+    hp->taps = malloc(((size_t)n_dirs * (size_t)n + 1) * sizeof *hp->taps);
+    if (!hp->cs || !hp->taps) {
+        hfs_horizon_plan_destroy(hp);
+        return hfs_fail(err, HFS_E_NOMEM, "horizon plan: out of memory");
+    }
+    for (int d = 0; d < n_dirs; ++d) {
+        const double c = snap_unit(cos(phi[d])), s = snap_unit(sin(phi[d]));
+        hp->cs[2 * d] = c;
+        hp->cs[2 * d + 1] = s;
+        for (int i = 0; i < n; ++i) {
+            hfs_horizon_tap *t = &hp->taps[(size_t)d * (size_t)n + (size_t)i];
+            const double dist = hfs_cpu_pyramid_spacing(p, i);
+            t->read = hfs_pyramid_read_level(n, k, offset, i);
+            split_offset(dist * c, &t->ix, &t->fx);
+            split_offset(dist * s, &t->iy, &t->fy);
+            t->inv_run = zscale / (dist * dx);
+        }
+    }
+    *out = hp;
+    return HFS_OK;
+}
+
+void hfs_horizon_plan_destroy(hfs_horizon_plan *hp)
+{
+    if (!hp)
+        return;
+    free(hp->taps);
+    free(hp->cs);
+    free(hp);
+}
+
+int hfs_horizon_plan_dirs(const hfs_horizon_plan *hp) { return hp->n_dirs; }
+int hfs_horizon_plan_levels(const hfs_horizon_plan *hp) { return hp->n_levels; }
+
+void hfs_horizon_plan_dir(const hfs_horizon_plan *hp, int dir, double *c, double *s)
+{
+    *c = hp->cs[2 * dir];
+    *s = hp->cs[2 * dir + 1];
+}
+
+const hfs_horizon_tap *hfs_horizon_plan_taps(const hfs_horizon_plan *hp, int dir)
+{
+    return hp->taps + (size_t)dir * (size_t)hp->n_levels;
+}
+
+double hfs_horizon_floor(const double n[3], double c, double s)
+{
+    double a = n[0] * c + n[1] * s;
+    a = a > 1.0 ? 1.0 : (a < -1.0 ? -1.0 : a);
+    return -asin(a);
+}
+
+/* ---- in-grid ranges and the bilinear read ----------------------------------- */
+
+/* Receivers x in [*lo, *hi] whose sample x + io + fo lies in [0, n-1]. */
+static void ingrid_range(int io, double fo, int n, int *lo, int *hi)
+{
+    const int last = fo == 0.0 ? n - 1 : n - 2; /* largest allowed x + io */
+    *lo = io < 0 ? -io : 0;
+    const long h = (long)last - io;
+    *hi = h > n - 1 ? n - 1 : (int)h;
+}
+
+/* Bilinear read at (x + fx, y + fy) of a padded level, given the address of
+ * (x, y): the right/lower neighbours always exist thanks to the padding. */
+static inline double tap_read(const double *r, size_t stride, double fx, double fy)
+{
+    const double top = r[0] + fx * (r[1] - r[0]);
+    const double bot = r[stride] + fx * (r[stride + 1] - r[stride]);
+    return top + fy * (bot - top);
+}
+
+/* ---- evaluation --------------------------------------------------------------- */
+
+void hfs_horizon_point(const hfs_horizon_plan *hp, int dir, int i, int j,
+                       double floor, double *env, double *key,
+                       double *omega_levels)
+{
+    const hfs_horizon_tap *taps = hfs_horizon_plan_taps(hp, dir);
+    const int n = hp->n_levels;
+    double maxd = -DBL_MAX;
+    double local[128];
+    double *omega = omega_levels ? omega_levels : (n <= 128 ? local : NULL);
+    for (int s = 0; s < n; ++s) {
+        const hfs_horizon_tap *t = &taps[s];
+        int xlo, xhi, ylo, yhi;
+        ingrid_range(t->ix, t->fx, hp->w, &xlo, &xhi);
+        ingrid_range(t->iy, t->fy, hp->h, &ylo, &yhi);
+        const int in = i >= xlo && i <= xhi && j >= ylo && j <= yhi;
+        double o = floor;
+        if (in) {
+            const double *r = hfs_cpu_pyramid_full(hp->p, t->read);
+            const double v = tap_read(r + (size_t)(j + t->iy) * hp->stride + (size_t)(i + t->ix),
+                                      hp->stride, t->fx, t->fy);
+            const double d = (v - r[(size_t)j * hp->stride + (size_t)i]) * t->inv_run;
+            if (d > maxd)
+                maxd = d;
+            o = atan(d);
+        }
+        if (omega)
+            omega[s] = o;
+    }
+    if (env)
+        *env = hfs_horizon_env_from_maxd(maxd, floor);
+    if (key) {
+        if (omega) {
+            *key = hfs_horizon_bspline_max(omega, n, 1, floor);
+        } else {
+            double *tmp = malloc((size_t)n * sizeof *tmp);
+            if (!tmp) { /* only for absurd N > 128 without a caller buffer */
+                *key = floor;
+                return;
+            }
+            hfs_horizon_point(hp, dir, i, j, floor, NULL, key, tmp);
+            free(tmp);
+        }
+    }
+}
+
+void hfs_horizon_row(const hfs_horizon_plan *hp, int dir, int j,
+                     const double *floor, double *maxd, double *omega)
+{
+    const hfs_horizon_tap *taps = hfs_horizon_plan_taps(hp, dir);
+    const int n = hp->n_levels, w = hp->w;
+    const size_t stride = hp->stride;
+    if (maxd)
+        for (int x = 0; x < w; ++x)
+            maxd[x] = -DBL_MAX;
+    if (omega)
+        for (int s = 0; s < n; ++s)
+            for (int x = 0; x < w; ++x)
+                omega[(size_t)s * (size_t)w + (size_t)x] = floor[x];
+
+    for (int s = 0; s < n; ++s) {
+        const hfs_horizon_tap *t = &taps[s];
+        int xlo, xhi, ylo, yhi;
+        ingrid_range(t->iy, t->fy, hp->h, &ylo, &yhi);
+        if (j < ylo || j > yhi)
+            continue;
+        ingrid_range(t->ix, t->fx, w, &xlo, &xhi);
+        if (xlo > xhi)
+            continue;
+        const double *r = hfs_cpu_pyramid_full(hp->p, t->read);
+        const double *recv = r + (size_t)j * stride;
+        const double *samp = r + (size_t)(j + t->iy) * stride;
+        const double fx = t->fx, fy = t->fy, inv = t->inv_run;
+        if (maxd) {
+            for (int x = xlo; x <= xhi; ++x) {
+                const double v = tap_read(samp + (x + t->ix), stride, fx, fy);
+                const double d = (v - recv[x]) * inv;
+                maxd[x] = d > maxd[x] ? d : maxd[x];
+            }
+        }
+        if (omega) {
+            double *o = omega + (size_t)s * (size_t)w;
+            for (int x = xlo; x <= xhi; ++x) {
+                const double v = tap_read(samp + (x + t->ix), stride, fx, fy);
+                o[x] = atan((v - recv[x]) * inv);
+            }
+        }
+    }
+}
+
+double hfs_horizon_env_from_maxd(double maxd, double floor)
+{
+    const double a = atan(maxd); /* atan(-DBL_MAX) = -pi/2 <= floor */
+    double o = a > floor ? a : floor;
+    return o > HALF_PI ? HALF_PI : (o < -HALF_PI ? -HALF_PI : o);
+}
+
+double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,
+                               double floor)
+{
+    /* Weighted sums in difference form around one sample (exact for constant
+     * input): knot t:      w_t + (w_{t-1} - w_t + w_{t+1} - w_t)/6
+     *             midpoint: w_t + (w_{t-1} - w_t + 23(w_{t+1} - w_t)
+     *                             + w_{t+2} - w_t)/48, indices clamped. */
+    double best = floor;
+    for (int t = 0; t < n; ++t) {
+        const double wm = omega[(size_t)(t > 0 ? t - 1 : 0) * stride];
+        const double w0 = omega[(size_t)t * stride];
+        const double w1 = omega[(size_t)(t + 1 < n ? t + 1 : n - 1) * stride];
+        const double knot = w0 + ((wm - w0) + (w1 - w0)) / 6.0;
+        if (knot > best)
+            best = knot;
+        if (t + 1 < n) {
+            const double w2 = omega[(size_t)(t + 2 < n ? t + 2 : n - 1) * stride];
+            const double mid = w0 + ((wm - w0) + 23.0 * (w1 - w0) + (w2 - w0)) / 48.0;
+            if (mid > best)
+                best = mid;
+        }
+    }
+    return best > HALF_PI ? HALF_PI : (best < -HALF_PI ? -HALF_PI : best);
+}

@@ -1,0 +1,102 @@
+/*
+ * cpu_horizon.h — multi-scale directional-derivative horizons (DESIGN.md
+ * "Horizons"), CPU reference in double precision.
+ *
+ * For receiver grid point x = (i, j), azimuth phi and scale i_s = 0..N-1:
+ *   d      = s_{i_s} texels (hfs_pyramid_spacing; SN08's l = 1),
+ *   p      = x + d (cos phi, sin phi)                 (grid coordinates),
+ *   L      = min(i_s + k*o, N-1)                      (hfs_pyramid_read_level),
+ *   D      = (R_L(p) - R_L(x)) * zscale / (d * dx)    (tangent of blocking angle),
+ *   omega  = atan(D); an off-grid p (outside [0,W-1] x [0,H-1]) never occludes
+ *            and contributes the floor instead.
+ *   floor  = -asin(N . (cos phi, sin phi, 0))         (receiver tangent plane).
+ * Environment (fast path): max(floor, atan(max_i D_i)) over in-grid scales.
+ * Key lights (B-spline max over scale): the uniform cubic B-spline of the
+ * omega_i over the scale index, evaluated at every knot (1/6, 2/3, 1/6) and
+ * every midpoint (1/48, 23/48, 23/48, 1/48), indices clamped at both ends;
+ * max(floor, max of those).  Every horizon lies in [-pi/2, pi/2].
+ *
+ * Sample positions.  Everything about a sample that does not depend on the
+ * receiver is precomputed per (direction, scale) in a plan: the offset
+ * d (cos phi, sin phi) split into integer part (ix, iy) and fraction
+ * (fx, fy) in [0, 1), the level read and zscale/(d dx).  Since receivers sit
+ * on grid points, the bilinear weights of a sample are the same for every
+ * receiver.  Offsets are snapped so that exact geometry stays exact: a
+ * direction component |cos| or |sin| < 1e-12 becomes 0 (cos(pi/2) is 6e-17 in
+ * double, which would otherwise push the samples of a receiver in the last
+ * column off the grid), and an offset within 1e-9 texel of an integer becomes
+ * that integer.  A sample is in-grid iff 0 <= x + ix + fx <= W-1 (and the same
+ * in y), decided exactly on (ix, fx).  The GLES renderer must apply the same
+ * rule (with a float tolerance) at the grid border.
+ *
+ * Two evaluation forms, bit-identical by construction (they share the read):
+ *   hfs_horizon_point  one receiver, the readable definition;
+ *   hfs_horizon_row    a whole receiver row for one direction, streaming each
+ *                      (direction, scale) over contiguous memory (the fast
+ *                      path the renderer uses).
+ *
+ * Ownership: a plan reads the pyramid it was made from, which must outlive it;
+ * destroy(NULL) is a no-op.  A plan is immutable after create: any number of
+ * threads may evaluate horizons from one plan at once.
+ */
+#ifndef HFS_CPU_HORIZON_H
+#define HFS_CPU_HORIZON_H
+
+#include "cpu_pyramid.h"
+#include "hfshade.h"
+
+#include <stddef.h>
+
+/* One (direction, scale) sample, receiver-independent. */
+typedef struct hfs_horizon_tap {
+    int read;          /* L: full-resolution level read                     */
+    int ix, iy;        /* floor of the offset, texels                       */
+    double fx, fy;     /* offset - floor, in [0, 1)                          */
+    double inv_run;    /* zscale / (d * dx): height difference -> tangent    */
+} hfs_horizon_tap;
+
+typedef struct hfs_horizon_plan hfs_horizon_plan;
+
+/* Plans n_dirs azimuths phi[0..n_dirs-1] (radians) over pyramid p, whose
+ * levels min(k*offset, N-1)..N-1 must be reconstructed.  dx > 0, zscale >= 0,
+ * offset >= 0.  Returns HFS_OK, HFS_E_INVALID or HFS_E_NOMEM. */
+int hfs_horizon_plan_create(const hfs_cpu_pyramid *p, double dx, double zscale,
+                            int offset, const double *phi, int n_dirs,
+                            hfs_horizon_plan **out, hfs_error *err);
+void hfs_horizon_plan_destroy(hfs_horizon_plan *hp);
+
+int hfs_horizon_plan_dirs(const hfs_horizon_plan *hp);
+int hfs_horizon_plan_levels(const hfs_horizon_plan *hp);   /* N */
+/* Snapped (cos phi, sin phi) of direction dir, as used for offsets and floor. */
+void hfs_horizon_plan_dir(const hfs_horizon_plan *hp, int dir, double *c, double *s);
+/* The N taps of direction dir, indexed by scale. */
+const hfs_horizon_tap *hfs_horizon_plan_taps(const hfs_horizon_plan *hp, int dir);
+
+/* Floor -asin(N . (c, s, 0)) for unit normal n, argument clamped to [-1, 1]. */
+double hfs_horizon_floor(const double n[3], double c, double s);
+
+/* Horizons of receiver (i, j) along direction dir with the given floor.
+ * env (fast path) and key (B-spline max) may each be NULL; omega_levels, if
+ * non-NULL, receives the N per-scale angles (floor where off-grid). */
+void hfs_horizon_point(const hfs_horizon_plan *hp, int dir, int i, int j,
+                       double floor, double *env, double *key,
+                       double *omega_levels);
+
+/* Row form for receivers (0..W-1, j) along direction dir:
+ *   maxd[x]  (if non-NULL): max_i D_i over in-grid scales, -DBL_MAX if none;
+ *   omega[s*W + x] (if non-NULL; needs floor): per-scale angle, atan(D) or
+ *            floor[x] off-grid.
+ * Finish with hfs_horizon_env_from_maxd / hfs_horizon_bspline_max. */
+void hfs_horizon_row(const hfs_horizon_plan *hp, int dir, int j,
+                     const double *floor, double *maxd, double *omega);
+
+/* Environment horizon from the row form: max(floor, atan(maxd)). */
+double hfs_horizon_env_from_maxd(double maxd, double floor);
+
+/* Key-light horizon: max(floor, max over knots and midpoints of the cubic
+ * B-spline of omega[0], omega[stride], ..., omega[(n-1)*stride]), clamped to
+ * [-pi/2, pi/2]. */
+double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,
+                               double floor);
+
+#endif /* HFS_CPU_HORIZON_H */
