@@ -57,6 +57,10 @@ int hfs_local_light_cap(const hfs_local_light *l, const double p[3],
         dir[1] = 0.0;
         dir[2] = 1.0;
     }
+    if (!(l->radius > 0.0)) {
+        *alpha = 0.0; /* a point light: zero solid angle, never "inside" */
+        return 0;
+    }
     if (d <= l->radius) {
         *alpha = pi;
         return 1;

@@ -17,7 +17,8 @@ double hfs_cap_irradiance(double cos_beta, double alpha);
 /* A local light seen from receiver point p (world units): unit direction
  * toward its centre, distance to the centre, and the cap half-angle
  * asin(r/d) (pi when p is inside or on the sphere, in which case dir is +z
- * if the centre coincides with p).  Returns 1 if p is inside the sphere. */
+ * if the centre coincides with p).  Returns 1 if p is inside the sphere.
+ * A light of radius 0 is a point: alpha = 0 and never inside (even at d = 0). */
 int hfs_local_light_cap(const hfs_local_light *l, const double p[3],
                         double dir[3], double *dist, double *alpha);
 

@@ -1,0 +1,85 @@
+/*
+ * truth_raycast.h — exact visibility queries against SPEC.md's bilinear
+ * height field, for the ground truth (truth.c) and its tests.
+ *
+ * Geometry: grid point (i, j) sits at grid coordinate (i, j) = world
+ * (i*dx, j*dx); heights are world z = zscale*H, bilinear inside each cell
+ * [i, i+1] x [j, j+1]; outside [0, W-1] x [0, H-1] there is no terrain.
+ *
+ * Acceleration: a max-height quadtree ("max mip") over the cells.  Level 0
+ * holds, per cell, the maximum of its four corner heights, which bounds the
+ * bilinear patch (a convex combination of its corners); level l+1 holds the
+ * max of 2x2 nodes of level l.  Stored as float rounded UP, and every test
+ * adds a small margin (rounding), so skipping is conservative: the
+ * accelerated queries return exactly what the plain ones would (the tests
+ * check this bit for bit).
+ *
+ * Immutable after hfs_truth_grid_init; safe to share between threads.
+ */
+#ifndef HFS_TRUTH_RAYCAST_H
+#define HFS_TRUTH_RAYCAST_H
+
+#include "hfshade.h"
+
+#define HFS_TRUTH_MAX_LEVELS 32
+
+typedef struct hfs_truth_grid {
+    const hfs_field *f;            /* not owned; must outlive the grid       */
+    int w, h;                      /* field size (grid points)                */
+    int n_levels;                  /* levels 0 (cells) .. n_levels-1 (1x1)    */
+    int lw[HFS_TRUTH_MAX_LEVELS];  /* nodes per row at each level            */
+    int lh[HFS_TRUTH_MAX_LEVELS];
+    float *zmax[HFS_TRUTH_MAX_LEVELS]; /* node maxima, world units, owned   */
+    double margin;                 /* added to every node max (rounding)      */
+    double z_lo, z_hi;             /* min / max world height over the field   */
+} hfs_truth_grid;
+
+/* Builds the max mip.  Returns HFS_OK or HFS_E_NOMEM (grid left empty). */
+int hfs_truth_grid_init(hfs_truth_grid *g, const hfs_field *f);
+void hfs_truth_grid_free(hfs_truth_grid *g);
+
+/* ---- environment horizons ------------------------------------------------- */
+
+/* hfs_truth_horizon_plain: tangent of the horizon seen from grid point
+ * (i, j) at world height z0 (the lifted receiver) along the horizontal
+ * direction (c, s) (unit, grid axes): the maximum over march samples
+ * k = 1, 2, ... of
+ *     (z(p_k) - z0) / (t_k * dx),   t_k = k * step (texels),
+ *     p_k = (i + t_k c, j + t_k s),
+ * z the bilinear height (hfs_field_bilinear), stopping at the first sample
+ * outside the grid.  -INFINITY when no sample lies in the grid.  Visits every
+ * sample: the definition, kept for tests. */
+double hfs_truth_horizon_plain(const hfs_field *f, int i, int j, double z0,
+                               double c, double s, double step);
+
+/* The same maximum, accelerated (quadtree skipping, early exit), for callers
+ * that do not care about slopes at or below `cutoff` (e.g. the tangent of the
+ * tangent-plane elevation, rounded down; -INFINITY for none): returns exactly
+ * hfs_truth_horizon_plain's value when that exceeds cutoff, else -INFINITY.
+ * hint (may be NULL): in, a sample index to evaluate first (e.g. the argmax of
+ * the neighbouring azimuth; any value is safe, out-of-range ones are ignored);
+ * out, the index of the maximizing sample (0 if none exceeds cutoff).  The
+ * hint changes only the speed, never the result. */
+double hfs_truth_horizon(const hfs_truth_grid *g, int i, int j, double z0,
+                         double c, double s, double step, double cutoff,
+                         long *hint);
+
+/* ---- exact rays ----------------------------------------------------------------- */
+
+/* Does the ray from o (o[0], o[1] in grid coordinates, inside the grid;
+ * o[2] world z) along the world unit direction d hit the bilinear surface at
+ * a world distance t in [0, tmax] (tmax may be INFINITY)?  "Hit" means the
+ * ray is at or below the surface somewhere on that segment inside the grid;
+ * the ray stops testing where its xy projection leaves the grid.  Exact:
+ * per crossed cell (2D DDA, vertical rays and rays along grid lines
+ * included), the ray height minus the bilinear height is a quadratic in t
+ * whose minimum over the cell's segment is evaluated in closed form.
+ * Uses the quadtree to skip nodes the ray passes above.  Returns 1 or 0. */
+int hfs_truth_ray_hits(const hfs_truth_grid *g, const double o[3],
+                       const double d[3], double tmax);
+
+/* The same without the quadtree (every crossed cell is solved): for tests. */
+int hfs_truth_ray_hits_plain(const hfs_truth_grid *g, const double o[3],
+                             const double d[3], double tmax);
+
+#endif /* HFS_TRUTH_RAYCAST_H */

@@ -1,0 +1,372 @@
+/*
+ * test_truth_geom.c — the ground truth's geometric kernels against
+ * independent brute force:
+ *   cap_irradiance     hfs_cap_irradiance vs 2D midpoint quadrature over the cap
+ *   ray_vs_march       exact ray / bilinear-surface test vs a dense march
+ *   ray_tree_vs_plain  quadtree-accelerated rays == plain DDA, bit for bit
+ *   horizon_fast       accelerated horizon march == plain march, bit for bit
+ *   horizon_analytic   horizons of a plane and of a wall vs closed forms
+ * Exit 0 on success, 1 on failure (file:line and values printed; a failing
+ * check returns from its test at once, leaking that test's buffers).
+ */
+#include "field_geom.h"
+#include "lights.h"
+#include "truth_raycast.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#define PI 3.14159265358979323846
+
+static int failures;
+
+#define CHECK(cond, ...)                                                   \
+    do {                                                                   \
+        if (!(cond)) {                                                     \
+            fprintf(stderr, "%s:%d: FAIL %s: ", __FILE__, __LINE__, #cond); \
+            fprintf(stderr, __VA_ARGS__);                                  \
+            fprintf(stderr, "\n");                                         \
+            ++failures;                                                    \
+            return;                                                        \
+        }                                                                  \
+    } while (0)
+
+/* Small deterministic RNG for test inputs. */
+static uint64_t rng_state = 0x1234567887654321ULL;
+static double urand(void)
+{
+    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static float *random_heights(int w, int h, double amp)
+{
+    float *z = malloc((size_t)w * h * sizeof *z);
+    for (int k = 0; k < w * h; ++k)
+        z[k] = (float)(amp * urand());
+    return z;
+}
+
+/* ---- cap irradiance ------------------------------------------------------- */
+
+/* integral over the cap (half-angle alpha, axis at angle beta from N) of
+ * max(0, N.s): midpoint rule in (theta, psi) around the cap axis. */
+static double cap_brute(double beta, double alpha, int n)
+{
+    double sum = 0.0;
+    const double dt = alpha / n, dp = 2.0 * PI / n;
+    for (int a = 0; a < n; ++a) {
+        const double th = (a + 0.5) * dt;
+        const double ct = cos(th), st = sin(th);
+        double row = 0.0;
+        for (int b = 0; b < n; ++b) {
+            const double ns = cos(beta) * ct + sin(beta) * st * cos((b + 0.5) * dp);
+            if (ns > 0.0)
+                row += ns;
+        }
+        sum += row * st;
+    }
+    return sum * dt * dp;
+}
+
+static void test_cap_irradiance(void)
+{
+    const double betas[] = {0.0, 0.3, 0.8, 1.2, 1.45, PI / 2, 1.7, 2.0, 2.6, PI};
+    const double alphas[] = {0.01, 0.1, 0.4, 0.9, 1.3, PI / 2, 1.8, 2.4, 3.0, PI};
+    /* Midpoint rule, n = 600 per axis: O(h^2) with a first-derivative kink
+     * where N.s = 0; the observed worst error is ~1e-5 (absolute, E <= pi).
+     * Tolerance 1e-4 absolute + 1e-4 relative. */
+    const double tol_abs = 1e-4, tol_rel = 1e-4;
+    double worst = 0.0;
+    int straddling = 0;
+    for (size_t ib = 0; ib < sizeof betas / sizeof *betas; ++ib)
+        for (size_t ia = 0; ia < sizeof alphas / sizeof *alphas; ++ia) {
+            const double b = betas[ib], a = alphas[ia];
+            const double ref = cap_brute(b, a, 600);
+            const double got = hfs_cap_irradiance(cos(b), a);
+            const double e = fabs(got - ref);
+            if (b - a < PI / 2 && b + a > PI / 2)
+                ++straddling;
+            worst = e > worst ? e : worst;
+            CHECK(isfinite(got) && e <= tol_abs + tol_rel * fabs(ref),
+                  "beta %.4f alpha %.4f: formula %.9f brute %.9f", b, a, got, ref);
+        }
+    CHECK(straddling >= 20, "only %d straddling cases", straddling);
+    /* Limits: the whole sphere, an empty cap, clamped cos(beta). */
+    CHECK(fabs(hfs_cap_irradiance(0.3, PI) - PI) < 1e-15, "alpha = pi");
+    CHECK(hfs_cap_irradiance(1.0, 0.0) == 0.0, "alpha = 0");
+    CHECK(fabs(hfs_cap_irradiance(1.0 + 1e-12, 0.5) - PI * sin(0.5) * sin(0.5)) < 1e-12,
+          "cos_beta > 1");
+    printf("cap_irradiance: 100 cases (%d straddling), worst |formula - brute| %.2e\n",
+           straddling, worst);
+}
+
+/* ---- rays -------------------------------------------------------------------- */
+
+/* Dense march along the ray (world step h) over the whole segment, recording
+ * the largest depth of the ray below the surface (negative: the closest
+ * clearance above it).  Hit iff depth >= 0. */
+static double ray_march_depth(const hfs_field *f, const double o[3], const double d[3],
+                              double tmax, double h, double zlo, double zhi)
+{
+    double depth = -INFINITY;
+    for (long k = 0;; ++k) {
+        const double t = k * h;
+        if (t > tmax)
+            break;
+        const double gx = o[0] + t * d[0] / f->dx, gy = o[1] + t * d[1] / f->dx;
+        const double zr = o[2] + t * d[2];
+        double zs;
+        if (!hfs_field_bilinear(f, gx, gy, &zs))
+            break;
+        if (zs - zr > depth)
+            depth = zs - zr;
+        if ((d[2] >= 0.0 && zr > zhi) || zr < zlo - 1.0)
+            break; /* above everything, or surely and deeply below */
+    }
+    return depth;
+}
+
+static void random_dir(double d[3], int kind)
+{
+    switch (kind) {
+    case 0: d[0] = 0; d[1] = 0; d[2] = 1; return;            /* vertical up */
+    case 1: d[0] = 1; d[1] = 0; d[2] = 0.15; break;          /* along a grid line */
+    case 2: d[0] = 0; d[1] = -1; d[2] = 0.3; break;          /* along a grid line */
+    case 3: d[0] = -1; d[1] = 1; d[2] = 0.2; break;          /* through cell corners */
+    case 4: d[0] = 0; d[1] = 0; d[2] = -1; return;           /* vertical down */
+    default: {
+        /* uniform over the sphere, biased toward low elevations */
+        const double phi = 2 * PI * urand();
+        const double e = asin(2 * urand() - 1) * 0.5;
+        d[0] = cos(phi) * cos(e);
+        d[1] = sin(phi) * cos(e);
+        d[2] = sin(e);
+        return;
+    }
+    }
+    const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (int k = 0; k < 3; ++k)
+        d[k] /= len;
+}
+
+static void test_ray_vs_march(void)
+{
+    int n_rays = 0, n_hit = 0, n_miss = 0, n_grazing = 0;
+    for (int field = 0; field < 6; ++field) {
+        const int w = 6 + (int)(urand() * 14), h = 5 + (int)(urand() * 14);
+        float *z = random_heights(w, h, 1.0);
+        const hfs_field f = {w, h, z, 0.5 + 2.0 * urand(), 0.2 + 3.0 * urand()};
+        hfs_truth_grid g;
+        CHECK(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        /* Ambiguity band for grazing rays: a dense march with world step h
+         * can miss a dip below the surface only if the dip is shallower than
+         * h times the largest slope difference between ray and surface. */
+        const double step = 1e-3 * f.dx;
+        const double eps = 2.0 * step * (1.0 + 2.0 * (g.z_hi - g.z_lo) / f.dx);
+        for (int r = 0; r < 400; ++r) {
+            const int i = (int)(urand() * w), j = (int)(urand() * h);
+            double d[3];
+            random_dir(d, r < 20 ? r % 5 : 5);
+            const double o[3] = {i, j, hfs_field_z(&f, i, j) + 1e-4 * f.dx};
+            const double tmax = (r % 3 == 0) ? (0.5 + 4.0 * urand()) * f.dx : INFINITY;
+            const int got = hfs_truth_ray_hits(&g, o, d, tmax);
+            const double depth = ray_march_depth(&f, o, d, tmax, step, g.z_lo, g.z_hi);
+            const int ref = depth >= 0.0;
+            ++n_rays;
+            if (got != ref && fabs(depth) < eps) {
+                ++n_grazing; /* within the march's own resolution */
+                continue;
+            }
+            CHECK(got == ref,
+                  "field %d %dx%d ray %d from (%d,%d) d=(%.4f,%.4f,%.4f) tmax %g: exact %d march %d "
+                  "(depth %.3g, eps %.3g)",
+                  field, w, h, r, i, j, d[0], d[1], d[2], tmax, got, ref, depth, eps);
+            n_hit += got;
+            n_miss += !got;
+        }
+        hfs_truth_grid_free(&g);
+        free(z);
+    }
+    /* Meaningful only if both outcomes occur often and grazing is rare. */
+    CHECK(n_hit > n_rays / 10 && n_miss > n_rays / 10 && n_grazing < n_rays / 50,
+          "hits %d misses %d grazing %d of %d", n_hit, n_miss, n_grazing, n_rays);
+    printf("ray_vs_march: %d rays, %d hit, %d clear, %d grazing (skipped)\n", n_rays, n_hit,
+           n_miss, n_grazing);
+}
+
+static void test_ray_tree_vs_plain(void)
+{
+    int n = 0, n_hit = 0;
+    for (int field = 0; field < 4; ++field) {
+        const int w = 20 + (int)(urand() * 90), h = 20 + (int)(urand() * 90);
+        /* Smooth-ish hills plus noise, so nodes are skipped and descended. */
+        float *z = malloc((size_t)w * h * sizeof *z);
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i)
+                z[j * w + i] = (float)(10.0 * sin(0.13 * i) * cos(0.07 * j + field) +
+                                       urand() * 2.0 + (field == 1 ? 3000.0 : 0.0));
+        const hfs_field f = {w, h, z, field == 1 ? 0.02 : 1.0, 0.3 + urand()};
+        hfs_truth_grid g;
+        CHECK(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        int bad = 0;
+        for (int r = 0; r < 20000 && !bad; ++r) {
+            const int i = (int)(urand() * w), j = (int)(urand() * h);
+            double d[3];
+            random_dir(d, r < 50 ? r % 5 : 5);
+            const double o[3] = {i, j, hfs_field_z(&f, i, j) + 1e-4 * f.dx};
+            const double tmax = (r % 4 == 0) ? 30.0 * urand() : INFINITY;
+            const int a = hfs_truth_ray_hits(&g, o, d, tmax);
+            const int b = hfs_truth_ray_hits_plain(&g, o, d, tmax);
+            bad = a != b;
+            n_hit += a;
+            ++n;
+        }
+        hfs_truth_grid_free(&g);
+        free(z);
+        CHECK(!bad, "field %d: accelerated and plain ray tests differ", field);
+    }
+    CHECK(n_hit > n / 10 && n_hit < n - n / 10, "hits %d of %d", n_hit, n);
+    printf("ray_tree_vs_plain: %d rays identical (%d hit)\n", n, n_hit);
+}
+
+/* ---- horizons ------------------------------------------------------------------ */
+
+static void test_horizon_fast(void)
+{
+    long n = 0, n_cut = 0;
+    for (int field = 0; field < 5; ++field) {
+        const int w = 8 + (int)(urand() * 50), h = 8 + (int)(urand() * 50);
+        float *z = malloc((size_t)w * h * sizeof *z);
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i)
+                z[j * w + i] = (float)(field == 4 ? 3.0 /* flat */ :
+                                       5.0 * sin(0.2 * i + field) * sin(0.17 * j) + urand() +
+                                       (field == 2 ? 4000.0 : 0.0));
+        /* field 2: high terrain, fine dx (rounding vs the tree's margin) */
+        const hfs_field f = {w, h, z, field == 2 ? 0.01 : 0.5 + urand(),
+                             field == 3 ? 0.0 : 0.5 + urand()};
+        hfs_truth_grid g;
+        CHECK(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        int bad = 0;
+        for (int r = 0; r < 3000 && !bad; ++r) {
+            const int i = (int)(urand() * w), j = (int)(urand() * h);
+            /* some exact axis / diagonal directions, the rest random */
+            const double phi = r < 16 ? r * PI / 8 : 2 * PI * urand();
+            const double c = cos(phi), s = sin(phi);
+            const double z0 = hfs_field_z(&f, i, j) + 1e-4 * f.dx;
+            const double plain = hfs_truth_horizon_plain(&f, i, j, z0, c, s, 0.25);
+            long hint = 0;
+            const double fast = hfs_truth_horizon(&g, i, j, z0, c, s, 0.25, -INFINITY, &hint);
+            /* the argmax it reports must be a sample with the plain maximum */
+            long hint2 = hint;
+            const double again = hfs_truth_horizon(&g, i, j, z0, c, s, 0.25, fast - 1e-9, &hint2);
+            const double cut = (urand() - 0.5) * 2.0;
+            long rnd_hint = (long)(urand() * 300) - 20; /* any hint, even out of range */
+            const double fast_cut = hfs_truth_horizon(&g, i, j, z0, c, s, 0.25, cut,
+                                                      r % 2 ? &rnd_hint : NULL);
+            if (plain > -INFINITY && (again != plain || hint2 != hint || hint < 1)) {
+                fprintf(stderr, "argmax hint %ld: re-run gives %.17g (hint %ld)\n", hint, again,
+                        hint2);
+                bad = 1;
+            }
+            const double want_cut = plain > cut ? plain : -INFINITY;
+            if (fast != plain || fast_cut != want_cut) {
+                fprintf(stderr, "field %d (%d,%d) phi %.17g: plain %.17g fast %.17g "
+                        "cut %.17g fast_cut %.17g\n", field, i, j, phi, plain, fast, cut, fast_cut);
+                bad = 1;
+            }
+            n_cut += plain <= cut;
+            ++n;
+        }
+        hfs_truth_grid_free(&g);
+        free(z);
+        CHECK(!bad, "field %d: accelerated horizon differs from the plain march", field);
+    }
+    CHECK(n_cut > n / 10 && n_cut < n - n / 10, "cutoff cases %ld of %ld", n_cut, n);
+    printf("horizon_fast: %ld horizons identical to the plain march (%ld under the cutoff)\n",
+           n, n_cut);
+}
+
+static void test_horizon_analytic(void)
+{
+    /* (a) a tilted plane z = zs*(a x + b y): along azimuth phi every sample
+     * lies on the plane, so the march maximum is at the last in-grid sample
+     * t_K: slope = zs (a cos phi + b sin phi) - lift/t_K, exactly. */
+    {
+        const int w = 41, h = 29;
+        const double a = 0.75, b = -0.375, zs = 1.5, dx = 2.0;
+        float *z = malloc((size_t)w * h * sizeof *z);
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i)
+                z[j * w + i] = (float)(a * i + b * j); /* dyadic: exact in float */
+        const hfs_field f = {w, h, z, dx, zs};
+        hfs_truth_grid g;
+        CHECK(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        double worst = 0.0;
+        for (int r = 0; r < 200; ++r) {
+            const int i = 3 + r % 30, j = 2 + (r * 7) % 24;
+            const double phi = 2 * PI * (r + 0.5) / 200;
+            const double c = cos(phi), s = sin(phi);
+            const double z0 = hfs_field_z(&f, i, j) + 1e-4 * dx;
+            const double m = hfs_truth_horizon(&g, i, j, z0, c, s, 0.25, -INFINITY, NULL);
+            /* last in-grid sample */
+            double tk = 0.0, zdummy;
+            while (hfs_field_bilinear(&f, i + (tk + 0.25) * c, j + (tk + 0.25) * s, &zdummy))
+                tk += 0.25;
+            const double want = zs * (a * c + b * s) / dx - 1e-4 / tk;
+            const double e = fabs(atan(m) - atan(want));
+            worst = e > worst ? e : worst;
+            CHECK(e < 1e-9, "plane (%d,%d) phi %.4f: horizon %.12f want %.12f", i, j, phi,
+                  atan(m), atan(want));
+        }
+        hfs_truth_grid_free(&g);
+        free(z);
+        printf("horizon_analytic: tilted plane, 200 azimuths, worst error %.2e rad\n", worst);
+    }
+    /* (b) a wall: column x = X of height hw on flat ground.  Bilinear makes it
+     * a tent from X-1 to X+1; seen from (i, j) with i < X-1 along +x the
+     * steepest sample is the crest: atan((zs*hw - lift) / ((X - i) dx)). */
+    {
+        const int w = 40, h = 9, X = 30;
+        const double hw = 7.0, zs = 2.0, dx = 0.5;
+        float *z = calloc((size_t)w * h, sizeof *z);
+        for (int j = 0; j < h; ++j)
+            z[j * w + X] = (float)hw;
+        const hfs_field f = {w, h, z, dx, zs};
+        hfs_truth_grid g;
+        CHECK(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        for (int i = 0; i < X - 1; ++i) {
+            const double z0 = 1e-4 * dx;
+            const double m = hfs_truth_horizon(&g, i, 4, z0, 1.0, 0.0, 0.25, -INFINITY, NULL);
+            const double want = atan((zs * hw - z0) / ((X - i) * dx));
+            CHECK(fabs(atan(m) - want) < 1e-12, "wall from i=%d: %.15f want %.15f", i,
+                  atan(m), want);
+            /* looking away (-x): flat ground only, below the lifted receiver */
+            const double back = hfs_truth_horizon(&g, i, 4, z0, -1.0, 0.0, 0.25, -INFINITY,
+                                                  NULL);
+            CHECK(i == 0 ? back == -INFINITY : back < 0.0, "away from the wall at i=%d: %g",
+                  i, back);
+        }
+        hfs_truth_grid_free(&g);
+        free(z);
+        printf("horizon_analytic: wall crest exact from %d receivers\n", X - 1);
+    }
+}
+
+int main(void)
+{
+    test_cap_irradiance();
+    test_ray_vs_march();
+    test_ray_tree_vs_plain();
+    test_horizon_fast();
+    test_horizon_analytic();
+    if (failures) {
+        fprintf(stderr, "test_truth_geom: %d failure(s)\n", failures);
+        return 1;
+    }
+    printf("test_truth_geom: all passed\n");
+    return 0;
+}

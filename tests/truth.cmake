@@ -1,0 +1,8 @@
+# Ground truth (runtime/truth*.c) and the unshadowed normalizer.
+hfs_add_test(test_truth_geom SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_geom.c
+             LIBS hfs_truth LABEL unit TIMEOUT 120)
+hfs_add_test(test_truth_render SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_render.c
+             LIBS hfs_truth LABEL unit TIMEOUT 300)
+# Timing of the ground truth (not a test): see the header of bench_truth.c.
+add_executable(bench_truth ${CMAKE_CURRENT_SOURCE_DIR}/bench_truth.c)
+target_link_libraries(bench_truth PRIVATE hfs_truth)
