@@ -107,9 +107,12 @@ const hfs_horizon_tap *hfs_horizon_plan_taps(const hfs_horizon_plan *hp, int dir
 
 double hfs_horizon_floor(const double n[3], double c, double s)
 {
-    double a = n[0] * c + n[1] * s;
-    a = a > 1.0 ? 1.0 : (a < -1.0 ? -1.0 : a);
-    return -asin(a);
+    /* Elevation where s(phi, e) leaves the receiver's tangent plane:
+     * N.s = (N.u) cos e + N_z sin e = 0  =>  e = atan2(-N.u, N_z).
+     * (NS09's -asin(N.u) equals this only when N lies in the plane of u and
+     * z; elsewhere it sits slightly above the plane.)  N_z > 0 always. */
+    const double a = n[0] * c + n[1] * s;
+    return atan2(-a, n[2]);
 }
 
 /* ---- in-grid ranges and the bilinear read ----------------------------------- */

@@ -9,7 +9,7 @@
  *   D      = (R_L(p) - R_L(x)) * zscale / (d * dx)    (tangent of blocking angle),
  *   omega  = atan(D); an off-grid p (outside [0,W-1] x [0,H-1]) never occludes
  *            and contributes the floor instead.
- *   floor  = -asin(N . (cos phi, sin phi, 0))         (receiver tangent plane).
+ *   floor  = atan2(-N . (cos phi, sin phi, 0), N_z)   (receiver tangent plane).
  * Environment (fast path): max(floor, atan(max_i D_i)) over in-grid scales.
  * Key lights (B-spline max over scale): the uniform cubic B-spline of the
  * omega_i over the scale index, evaluated at every knot (1/6, 2/3, 1/6) and

@@ -29,10 +29,14 @@ void hfs_field_normal(const hfs_field *f, int i, int j, double n[3])
     const int j0 = j > 0 ? j - 1 : j, j1 = j < h - 1 ? j + 1 : j;
     const double dzdx = (hfs_field_z(f, i1, j) - hfs_field_z(f, i0, j)) / ((i1 - i0) * f->dx);
     const double dzdy = (hfs_field_z(f, i, j1) - hfs_field_z(f, i, j0)) / ((j1 - j0) * f->dx);
-    const double len = sqrt(dzdx * dzdx + dzdy * dzdy + 1.0);
-    n[0] = -dzdx / len;
-    n[1] = -dzdy / len;
-    n[2] = 1.0 / len;
+    /* Scale before squaring so huge slopes (zscale * dH / dx near DBL_MAX)
+     * give a vertical-ish normal instead of Inf/Inf = NaN. */
+    const double m = fmax(1.0, fmax(fabs(dzdx), fabs(dzdy)));
+    const double gx = dzdx / m, gy = dzdy / m, gz = 1.0 / m;
+    const double len = sqrt(gx * gx + gy * gy + gz * gz);
+    n[0] = -gx / len;
+    n[1] = -gy / len;
+    n[2] = gz / len;
 }
 
 void hfs_dir(double phi, double e, double s[3])

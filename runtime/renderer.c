@@ -64,10 +64,12 @@ int hfs_validate_inputs(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
     if (f->width < 2 || f->height < 2)
         return hfs_fail(err, HFS_E_INVALID, "height field: %dx%d is smaller than 2x2", f->width, f->height);
-    if (!(f->dx > 0.0) || !isfinite(f->dx))
-        return hfs_fail(err, HFS_E_INVALID, "dx: %g must be positive and finite", f->dx);
-    if (!(f->zscale >= 0.0) || !isfinite(f->zscale))
-        return hfs_fail(err, HFS_E_INVALID, "zscale: %g must be >= 0 and finite", f->zscale);
+    /* Wide but bounded ranges keep every product of heights, scales and
+     * spacings far from double overflow/underflow. */
+    if (!(f->dx >= 1e-9 && f->dx <= 1e12))
+        return hfs_fail(err, HFS_E_INVALID, "dx: %g is out of range [1e-9, 1e12]", f->dx);
+    if (!(f->zscale >= 0.0 && f->zscale <= 1e12))
+        return hfs_fail(err, HFS_E_INVALID, "zscale: %g is out of range [0, 1e12]", f->zscale);
     const size_t n = (size_t)f->width * (size_t)f->height;
     for (size_t i = 0; i < n; ++i)
         if (!isfinite(f->z[i]))

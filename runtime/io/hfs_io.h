@@ -1,0 +1,231 @@
+/*
+ * hfs_io.h — file formats of hfshade: height fields in, environment maps in,
+ * PFM/PNG images out.  Library `hfshade_io`, separate from the renderer core
+ * (which links only libc/libm/EGL/GLES); it uses libpng, stb_image (Radiance
+ * .hdr) and OpenEXRCore (.exr).
+ *
+ * Conventions (../../shared/SPEC.md is the authority):
+ *   - A height field is H[j][i], i = column (x), j = row (y), stored row-major
+ *     with row j = 0 first.  In every format the FIRST ROW STORED IN THE FILE
+ *     is j = 0: the top row of a PNG/PGM, the first row of a PFM (this is the
+ *     SPEC's rule and differs from the usual bottom-to-top PFM convention),
+ *     the first data row of an ESRI .asc grid (its north row, so +y points
+ *     south in map terms), the first W floats of a raw file.
+ *   - Heights are the stored values, unscaled: an 8/16-bit PNG or PGM sample
+ *     v gives height v (0..65535), not v/maxval.  Scale with the scene's
+ *     zscale.
+ *   - Holes (nodata): NaN, +Inf, -Inf and, when declared, one nodata value
+ *     (from the options, and for .asc also the file's NODATA_value) are holes.
+ *     A grey+alpha PNG texel with alpha 0 is a hole too.  Holes are filled
+ *     (method below) before the loader returns; out->holes says how many.
+ *
+ * Hole filling: push-pull (Gortler et al., "The Lumigraph", 1996).  Push:
+ * build a pyramid by 2x2 averaging of the valid texels only (a coarse texel is
+ * valid if any of its up-to-four children is).  Pull: from the coarsest level
+ * down, every hole takes the bilinear interpolation of the already complete
+ * next-coarser level.  Valid texels are never changed; the result is
+ * deterministic, O(W*H) time and 4/3 W*H extra floats, and every hole gets a
+ * finite value that is a convex combination of valid heights (so it never
+ * leaves their range).  A single hole inside a constant region gets exactly
+ * that constant.  A field with no valid texel is an error.
+ *
+ * Errors: every function returns 0 (HFS_OK) or a negative hfs_status and fills
+ * the optional hfs_error with one line "PATH: problem".  Malformed, truncated
+ * or absurd files are rejected (HFS_E_FORMAT), unreadable ones give HFS_E_IO,
+ * valid but unsupported variants HFS_E_UNSUPPORTED, sizes over the guard
+ * HFS_E_INVALID.  On failure the output struct is left zeroed.  Nothing here
+ * prints, and there is no global state: calls on different objects may run
+ * on different threads at once.
+ *
+ * Writers are atomic: they write "PATH.tmp-XXXXXX" in the same directory and
+ * rename it over PATH only when everything succeeded, so no partial file is
+ * ever left behind.  They refuse images that hold NaN or Inf (SPEC: no
+ * non-finite value reaches an output).
+ */
+#ifndef HFS_IO_H
+#define HFS_IO_H
+
+#include "hfshade.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- height fields --------------------------------------------------------- */
+
+/* Default size guard of hfs_height_load (also the largest GLES texture side
+ * we plan for).  16384 * 16384 = 2^28 texels = 1 GiB of float heights. */
+#define HFS_HEIGHT_MAX_DIM 16384
+#define HFS_HEIGHT_MAX_TEXELS (1LL << 28)
+
+typedef enum hfs_height_format {
+    HFS_HEIGHT_AUTO = 0,  /* not a format: "unknown" in outputs            */
+    HFS_HEIGHT_PNG,       /* 1/2/4/8/16-bit grey or grey+alpha PNG          */
+    HFS_HEIGHT_PGM,       /* P5 (binary) or P2 (ASCII), maxval 1..65535     */
+    HFS_HEIGHT_PFM,       /* "Pf" greyscale float32                         */
+    HFS_HEIGHT_ASC,       /* ESRI ASCII grid                                */
+    HFS_HEIGHT_RAW_F32    /* little-endian float32, size from the options   */
+} hfs_height_format;
+
+/* Zero means default for every field; a NULL opts pointer is all defaults. */
+typedef struct hfs_height_load_opts {
+    int has_nodata;       /* non-zero: `nodata` marks holes                 */
+    float nodata;         /* compared after conversion to float             */
+    int raw_width;        /* raw float32 only (--size WxH); both or neither */
+    int raw_height;
+    int max_width;        /* guard; 0 = HFS_HEIGHT_MAX_DIM                  */
+    int max_height;       /* guard; 0 = HFS_HEIGHT_MAX_DIM                  */
+    long long max_texels; /* guard; 0 = HFS_HEIGHT_MAX_TEXELS               */
+} hfs_height_load_opts;
+
+/* A loaded height field.  The caller owns z and frees it with
+ * hfs_heightmap_free(). */
+typedef struct hfs_heightmap {
+    int width, height;    /* >= 2 each                                      */
+    float *z;             /* width*height finite heights, row j = 0 first   */
+    long holes;           /* texels that were nodata and have been filled   */
+    double cellsize;      /* .asc cellsize (suggested dx); 0 = not given    */
+    hfs_height_format format;
+} hfs_heightmap;
+
+/*
+ * Loads a height field.  The format comes from the file name's extension
+ * (.png .pgm .pfm .asc .raw .f32 .r32 .bin, case-insensitive) and is checked
+ * against the content's signature; with any other extension it comes from the
+ * content alone, and a file whose content matches no signature is read as raw
+ * float32 when opts gives raw_width/raw_height.  Raw sizes given for a file
+ * that is not raw are an error (HFS_E_INVALID), so a wrong --size never goes
+ * unnoticed.
+ *
+ * Format details and limits:
+ *   PNG  grey 1..16 bit (16-bit big-endian per PNG), or grey+alpha where
+ *        alpha = 0 marks a hole and other alpha is ignored.  Palette and RGB
+ *        PNGs are rejected (convert to greyscale first).  tRNS, gAMA, sBIT
+ *        are ignored.  The file must be complete up to IEND.
+ *   PGM  P5 (8-bit if maxval < 256, else 16-bit big-endian) or P2 (ASCII);
+ *        maxval 1..65535; samples above maxval are errors; one image per file
+ *        (no bytes after a P5 image; only whitespace after a P2 image).
+ *   PFM  "Pf" only (colour "PF" is rejected: a height field has one
+ *        channel); the scale's sign gives the byte order (negative = little
+ *        endian), its magnitude is ignored; the file size must match exactly.
+ *   ASC  keys ncols, nrows, xllcorner|xllcenter, yllcorner|yllcenter,
+ *        cellsize (all required, any order, case-insensitive, each once) and
+ *        optional NODATA_value; then exactly nrows*ncols decimal numbers
+ *        (no "nan"/"inf" tokens; values beyond float range are errors).
+ *        Non-square cells (dx/dy keys) are rejected.
+ *   RAW  width*height little-endian IEEE float32, file size exactly
+ *        4*width*height bytes.
+ *
+ * On success returns 0 and fills *out; on failure returns < 0, fills err and
+ * leaves *out zeroed.
+ */
+HFS_API int hfs_height_load(const char *path, const hfs_height_load_opts *opts,
+                            hfs_heightmap *out, hfs_error *err);
+
+/* Frees out->z and zeroes *out.  NULL-safe. */
+HFS_API void hfs_heightmap_free(hfs_heightmap *hm);
+
+/*
+ * Fills holes in place by push-pull (see the top of this file).  Holes are
+ * NaN, +-Inf and, if has_nodata, texels equal to nodata.  *holes (optional)
+ * receives the count.  Errors: sizes < 1 (HFS_E_INVALID), no valid texel
+ * (HFS_E_FORMAT, message "no valid heights ..." without a path: callers with
+ * a file name prefix it), out of memory.  z is unchanged on error.
+ */
+HFS_API int hfs_height_fill_holes(float *z, int width, int height,
+                                  int has_nodata, float nodata, long *holes,
+                                  hfs_error *err);
+
+/* ---- environment maps ------------------------------------------------------- */
+
+/* Size guard of hfs_envmap_load: 16384 per side and 2^27 texels (1.5 GiB of
+ * float RGB, e.g. 16384 x 8192). */
+#define HFS_ENVMAP_MAX_DIM 16384
+#define HFS_ENVMAP_MAX_TEXELS (1LL << 27)
+
+/* An equirectangular environment map (SPEC: column u -> phi = 2 pi u, top
+ * row = zenith), linear RGB.  The caller frees it with hfs_envmap_free(). */
+typedef struct hfs_envmap {
+    int width, height;
+    float *rgb;           /* width*height*3 finite floats, top row first    */
+} hfs_envmap;
+
+/*
+ * Loads an environment map, chosen by content (".hdr"/".exr" extensions are
+ * checked against it):
+ *   Radiance .hdr  "#?RADIANCE" or "#?RGBE", FORMAT=32-bit_rle_rgbe,
+ *                  resolution "-Y H +X W" (the standard orientation; others
+ *                  are rejected), flat or RLE scanlines, decoded by stb_image.
+ *                  A file that ends before the last pixel is an error.
+ *   OpenEXR        first part only, scanline or tiled (level 0 of mip/rip
+ *                  maps), any compression OpenEXRCore decodes; channels R,G,B
+ *                  (any of half/float/uint; others such as A are ignored) or,
+ *                  failing those, a single Y channel used as grey.  Deep
+ *                  parts, sub-sampled channels, cube-face envmaps and partial
+ *                  RGB sets are rejected.  The data window is the image.
+ * Non-finite pixels (NaN/Inf, possible only in EXR) are an error, not
+ * clamped: a sun stored as +Inf has no meaningful finite stand-in.  Negative
+ * values are kept.  Maps must be at least 1x1 and within the guard above.
+ */
+HFS_API int hfs_envmap_load(const char *path, hfs_envmap *out, hfs_error *err);
+
+/* Frees m->rgb and zeroes *m.  NULL-safe. */
+HFS_API void hfs_envmap_free(hfs_envmap *m);
+
+/* ---- writers ------------------------------------------------------------------ */
+
+/*
+ * PFM, little-endian (scale -1.0), first row written = row j = 0 (SPEC).
+ * grey != 0 writes "Pf" with the Rec. 709 luminance 0.2126 R + 0.7152 G +
+ * 0.0722 B computed in double (exactly R when R = G = B); grey == 0 writes
+ * "PF" RGB.
+ */
+HFS_API int hfs_pfm_write(const char *path, const hfs_image *img, int grey,
+                          hfs_error *err);
+
+/* "Pf" from a single-channel width*height array (e.g. a height field). */
+HFS_API int hfs_pfm_write_grey(const char *path, int width, int height,
+                               const float *v, hfs_error *err);
+
+/*
+ * Reads a PFM dump back into an RGB image (the inverse of hfs_pfm_write, for
+ * comparisons against references): "PF" as is, "Pf" with R = G = B; either
+ * byte order; first row in the file = row j = 0 (SPEC).  Values are returned
+ * AS STORED, NaN and Inf included, because a result under test may hold them
+ * and hfs_compare_images() must count them.  At least 1x1, at most
+ * HFS_HEIGHT_MAX_DIM per side and HFS_HEIGHT_MAX_TEXELS texels.  The caller
+ * frees out with hfs_image_free(); out is zeroed on failure.
+ */
+HFS_API int hfs_pfm_read_image(const char *path, hfs_image *out, hfs_error *err);
+
+typedef enum hfs_tonemap {
+    HFS_TONEMAP_CLAMP = 0, /* default: min(max(x, 0), 1)                   */
+    HFS_TONEMAP_REINHARD   /* x / (1 + x) for x >= 0, else 0               */
+} hfs_tonemap;
+
+/* Zero means default; NULL opts is all defaults. */
+typedef struct hfs_png_opts {
+    double exposure;       /* linear multiplier applied first; 0 = 1, > 0   */
+    hfs_tonemap tonemap;
+} hfs_png_opts;
+
+/*
+ * 8-bit sRGB RGB PNG for display: per channel x -> tonemap(exposure * x) ->
+ * sRGB OETF (12.92 x below 0.0031308, else 1.055 x^(1/2.4) - 0.055) ->
+ * round(255 * y).  Carries an sRGB chunk.  Top row = row j = 0.
+ */
+HFS_API int hfs_png_write(const char *path, const hfs_image *img,
+                          const hfs_png_opts *opts, hfs_error *err);
+
+/*
+ * 16-bit grey PNG of a height field (the inverse of the PNG loader): each
+ * value is rounded to the nearest integer and must lie in [0, 65535]; values
+ * outside, NaN or Inf are an error (HFS_E_INVALID) rather than clamped.
+ */
+HFS_API int hfs_png16_write_grey(const char *path, int width, int height,
+                                 const float *v, hfs_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* HFS_IO_H */

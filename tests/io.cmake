@@ -1,0 +1,27 @@
+# Tests of hfshade_io (label "io"): loaders against independently written
+# files, writers, hole filling, damaged inputs and the broken-file corpus.
+if(TARGET hfshade_io)
+  hfs_add_test(test_io_height LABEL io TIMEOUT 300 SOURCES test_io_height.c
+               LIBS hfshade_io PkgConfig::HFS_PNG)
+  hfs_add_test(test_io_fill LABEL io TIMEOUT 300 SOURCES test_io_fill.c LIBS hfshade_io m)
+  hfs_add_test(test_io_write LABEL io TIMEOUT 300 SOURCES test_io_write.c
+               LIBS hfshade_io PkgConfig::HFS_PNG m)
+  if(TARGET PkgConfig::HFS_STB)
+    # stb_image_write (the HDR fixture writer) comes from libstb.so.
+    hfs_add_test(test_io_envmap LABEL io TIMEOUT 300 SOURCES test_io_envmap.c
+                 LIBS hfshade_io hfs_openexrcore PkgConfig::HFS_STB m)
+  endif()
+  hfs_add_test(test_io_mutate LABEL io TIMEOUT 300 SOURCES test_io_mutate.c LIBS hfshade_io m)
+  hfs_add_test(test_io_corpus LABEL io TIMEOUT 300 SOURCES test_io_corpus.c LIBS hfshade_io
+               ARGS ${CMAKE_CURRENT_SOURCE_DIR}/data/broken)
+  hfs_add_test(test_io_fixtures LABEL io TIMEOUT 300 SOURCES test_io_fixtures.c LIBS hfshade_io m
+               ARGS ${CMAKE_CURRENT_SOURCE_DIR}/data/io)
+endif()
+
+# libFuzzer target for the loaders (not a test): -DHFS_FUZZ=ON with clang.
+if(HFS_FUZZ AND TARGET hfshade_io AND CMAKE_C_COMPILER_ID MATCHES "Clang")
+  add_executable(fuzz_io_load test_io_fuzz.c)
+  target_compile_options(fuzz_io_load PRIVATE -fsanitize=fuzzer,address,undefined)
+  target_link_options(fuzz_io_load PRIVATE -fsanitize=fuzzer,address,undefined)
+  target_link_libraries(fuzz_io_load PRIVATE hfshade_io m)
+endif()

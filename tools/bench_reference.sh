@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# CPU reference against ground truth (SPEC's four error metrics) on cones,
+# fractal terrain and the real DEM, at the default settings and heavier ones,
+# with the wall time of each backend.  Prints a Markdown table (BENCHMARKS.md).
+#
+# usage: tools/bench_reference.sh [BUILD_DIR] [SIZE]     (defaults: build 128)
+# Truth renders are cached in $BUILD_DIR/bench-cache by scene and settings.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+B=${1:-build}
+N=${2:-128}
+HFS=$B/tools/hfshade
+GEN=$B/tools/hfgen
+C=$B/bench-cache
+mkdir -p "$C"
+
+# Scenes: name, height file, extra scene flags.
+"$GEN" cones --size ${N}x${N} -o "$C/cones$N.pfm"
+"$GEN" fractal --size ${N}x${N} --relief 0.25 -o "$C/fractal$N.pfm"
+"$GEN" crop data/jacksboro.png --rect 140,100,$N,$N -o "$C/dem$N.pfm"
+scenes=("cones|$C/cones$N.pfm|--dx 1"
+        "fractal|$C/fractal$N.pfm|--dx 1"
+        "dem|$C/dem$N.pfm|--dx 83 --zscale 2")
+# Lighting: the demo's environment plus one key light low in the east-south-east.
+LIGHT="--env-map data/sunrise.exr --key 300,20,3,250"
+
+# Quality settings: label and flags (k, offset, directions, visibility path).
+settings=("default k4 o2 32/3|--k 4 --offset 2 --nphi-env 32 --nphi-key 3"
+          "default, wedge tables|--k 4 --offset 2 --nphi-env 32 --nphi-key 3 --visibility wedge"
+          "k8 o4 64/8|--k 8 --offset 4 --nphi-env 64 --nphi-key 8"
+          "k16 o8 128/16|--k 16 --offset 8 --nphi-env 128 --nphi-key 16")
+
+seconds() { sed -n 's/.*, \([0-9.]*\) s$/\1/p' "$1" | tail -n 1; }
+
+echo "| scene (${N}x${N}) | settings | mean abs | RMSE | p99 abs | max abs | non-finite | cpu s | truth s |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for sc in "${scenes[@]}"; do
+    IFS='|' read -r name hf extra <<<"$sc"
+    truth=$C/truth-$name$N.pfm
+    tlog=$C/truth-$name$N.log
+    if [ ! -s "$truth" ]; then
+        "$HFS" render --height "$hf" $extra $LIGHT --backend truth --truth-samples 1024 \
+            --pfm "$truth" 2>"$tlog"
+    fi
+    tsec=$(seconds "$tlog")
+    for st in "${settings[@]}"; do
+        IFS='|' read -r label flags <<<"$st"
+        out=$C/cpu-$name$N.pfm
+        "$HFS" render --height "$hf" $extra $LIGHT --backend cpu $flags --pfm "$out" 2>"$C/cpu.log"
+        csec=$(seconds "$C/cpu.log")
+        m=$("$HFS" compare --height "$hf" $extra $LIGHT "$out" "$truth")
+        read -r _ mean _ rmse _ p99 _ mx _ nf _ <<<"$m"
+        echo "| $name | $label | $mean | $rmse | $p99 | $mx | $nf | $csec | $tsec |"
+    done
+done
