@@ -21,8 +21,8 @@ mkdir -p "$C"
 scenes=("cones|$C/cones$N.pfm|--dx 1"
         "fractal|$C/fractal$N.pfm|--dx 1"
         "dem|$C/dem$N.pfm|--dx 83 --zscale 2")
-# Lighting: the demo's environment plus one key light low in the east-south-east.
-LIGHT="--env-map data/sunrise.exr --key 300,20,3,250"
+# Lighting: the demo scene's sky and low sun.
+LIGHT="--env-map data/courtyard.exr --key 336,15,2,1500"
 
 # Quality settings: label and flags (k, offset, directions, visibility path).
 settings=("default k4 o2 32/3|--k 4 --offset 2 --nphi-env 32 --nphi-key 3"
