@@ -253,7 +253,8 @@ static void build_visibility(void *ctx, int row, int worker)
 
 static int same_swath(const hfs_swath *a, const hfs_swath *b)
 {
-    return a->n == b->n && a->full == b->full && a->phi0 == b->phi0 && a->dphi == b->dphi;
+    return a->n == b->n && a->full == b->full && a->phi0 == b->phi0 && a->dphi == b->dphi &&
+           a->elev_lo == b->elev_lo && a->elev_hi == b->elev_hi;
 }
 
 static void free_scratch(worker_scratch *s)

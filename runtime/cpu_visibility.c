@@ -21,21 +21,26 @@ void hfs_swath_full(int n, hfs_swath *s)
     s->full = 1;
     s->phi0 = 0.0;
     s->dphi = 2.0 * PI / s->n;
+    s->elev_lo = -HALF_PI;
+    s->elev_hi = HALF_PI;
 }
 
 void hfs_swath_key(double phi, double elev, double alpha, int nphi_key,
                    int nphi_env, hfs_swath *s)
 {
     const double ratio = sin(alpha) / cos(elev); /* cos(elev) >= 0; /0 -> inf */
+    const double lo = elev - alpha, hi = elev + alpha;
     if (fabs(elev) + alpha >= HALF_PI || !(ratio < 1.0)) {
         hfs_swath_full(nphi_key > nphi_env ? nphi_key : nphi_env, s);
-        return;
+    } else {
+        const double h = asin(ratio);
+        s->n = nphi_key < 1 ? 1 : nphi_key;
+        s->full = 0;
+        s->dphi = 2.0 * h / s->n;
+        s->phi0 = phi - h + 0.5 * s->dphi;
     }
-    const double h = asin(ratio);
-    s->n = nphi_key < 1 ? 1 : nphi_key;
-    s->full = 0;
-    s->dphi = 2.0 * h / s->n;
-    s->phi0 = phi - h + 0.5 * s->dphi;
+    s->elev_lo = lo < -HALF_PI ? -HALF_PI : lo;
+    s->elev_hi = hi > HALF_PI ? HALF_PI : hi;
 }
 
 double hfs_swath_phi(const hfs_swath *s, int j)
@@ -155,8 +160,8 @@ int hfs_visibility_create(const hfs_swath *s, hfs_visibility_path path,
         goto err_nomem;
     for (int w = 0; w < v->n_wedges; ++w)
         hfs_swath_get_wedge(s, w, &v->wedges[w]);
-    /* visible_band(omega, pi/2) = occlusion(pi/2) - occlusion(omega) */
-    hfs_nlp_occlusion(HALF_PI, v->occ_top);
+    /* visible_band(omega, hi) = occlusion(hi) - occlusion(omega) */
+    hfs_nlp_occlusion(s->elev_hi, v->occ_top);
 
     if (v->path == HFS_VIS_LEGENDRE) {
         hfs_wedge_mlin(s->dphi, v->m_int);
@@ -229,9 +234,15 @@ const double *hfs_visibility_sample_matrix(const hfs_visibility *v, int j)
     return v->c + (size_t)j * HFS_SH_N * HFS_NLP_N;
 }
 
-/* NLP vector of the visible band (omega, pi/2]. */
+/* NLP vector of the visible band (max(omega, elev_lo), elev_hi]. */
 static inline void visible_nlp(const hfs_visibility *v, double omega, double out[HFS_NLP_N])
 {
+    if (omega < v->swath.elev_lo)
+        omega = v->swath.elev_lo;
+    if (omega >= v->swath.elev_hi) {
+        out[0] = out[1] = out[2] = out[3] = 0.0;
+        return;
+    }
     double occ[HFS_NLP_N];
     hfs_nlp_occlusion(omega, occ);
     for (int l = 0; l < HFS_NLP_N; ++l)
@@ -285,10 +296,11 @@ void hfs_visibility_eval_reference(const hfs_visibility *v, const double *omega,
         double angle = wd->start;
         if (v->path == HFS_VIS_LEGENDRE) {
             double x[2 * HFS_NLP_N] = {0};
+            const double lo = v->swath.elev_lo, hi = v->swath.elev_hi;
             if (wd->a >= 0)
-                hfs_nlp_visible_band(omega[wd->a], HALF_PI, x);
+                hfs_nlp_visible_band(fmax(omega[wd->a], lo), hi, x);
             if (wd->b >= 0)
-                hfs_nlp_visible_band(omega[wd->b], HALF_PI, x + HFS_NLP_N);
+                hfs_nlp_visible_band(fmax(omega[wd->b], lo), hi, x + HFS_NLP_N);
             const double *m = (wd->a < 0 || wd->b < 0) ? v->m_bnd : v->m_int;
             for (int r = 0; r < HFS_SH_N; ++r) {
                 double s = 0.0;

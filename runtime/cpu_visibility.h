@@ -59,6 +59,11 @@ typedef struct hfs_swath {
     int full;      /* 1: complete circle; 0: partial with boundary wedges      */
     double phi0;   /* azimuth of sample 0                                      */
     double dphi;   /* sample spacing (wedge extent; boundary wedges dphi/2)    */
+    /* Elevation window of the light (NS09 section 6): the Legendre path counts
+     * only the visible band (max(omega, elev_lo), elev_hi].  [-pi/2, pi/2] for
+     * the environment; the light's [e - alpha, e + alpha] for a key light.  The
+     * wedge-table path cannot restrict elevation and ignores it (SN08). */
+    double elev_lo, elev_hi;
 } hfs_swath;
 
 typedef struct hfs_swath_wedge {

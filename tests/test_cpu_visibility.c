@@ -94,10 +94,12 @@ static void brute(const hfs_swath *s, hfs_visibility_path path, const double *om
             }
         } else {
             double va[HFS_NLP_N] = {0}, vb[HFS_NLP_N] = {0};
+            /* The Legendre path's function: the visible band clipped to the
+             * light's elevation window (NS09 section 6). */
             if (wh.a >= 0)
-                hfs_nlp_visible_band(omega[wh.a], HALF_PI, va);
+                hfs_nlp_visible_band(fmax(omega[wh.a], s->elev_lo), s->elev_hi, va);
             if (wh.b >= 0)
-                hfs_nlp_visible_band(omega[wh.b], HALF_PI, vb);
+                hfs_nlp_visible_band(fmax(omega[wh.b], s->elev_lo), s->elev_hi, vb);
             for (int q = 0; q < NE; ++q) {     /* e in [-pi/2, pi/2] */
                 const double e = HALF_PI * gx[q];
                 double pl[HFS_NLP_N], y[HFS_SH_N];
@@ -275,13 +277,15 @@ static void test_window(void)
             const double t = -h + 2 * h * (p + 0.5) / nphi, dphi = 2 * h / nphi;
             const double edge = fmin(t + h, h - t); /* distance to the swath edge */
             const double ramp = edge >= b ? 1.0 : edge / b;
-            /* Legendre: visible-band profile faded by ramp; tables: horizon
-             * at (1 - ramp) * pi/2. */
-            const double lo = path == HFS_VIS_LEGENDRE ? 0.0 : (1.0 - ramp) * HALF_PI;
+            /* Legendre: the visible band, clipped to the light's elevation
+             * window [el - alpha, el + alpha], faded by ramp; tables: horizon
+             * at (1 - ramp) * pi/2, no elevation window. */
+            const double lo = path == HFS_VIS_LEGENDRE ? fmax(0.0, el - alpha) : (1.0 - ramp) * HALF_PI;
+            const double hi = path == HFS_VIS_LEGENDRE ? el + alpha : HALF_PI;
             const double scale = path == HFS_VIS_LEGENDRE ? ramp : 1.0;
             for (int q = 0; q < NE; ++q) {
-                const double e = lo + (HALF_PI - lo) * 0.5 * (gx[q] + 1.0);
-                const double wt = scale * dphi * (HALF_PI - lo) * 0.5 * gw[q] * cos(e);
+                const double e = lo + (hi - lo) * 0.5 * (gx[q] + 1.0);
+                const double wt = scale * dphi * (hi - lo) * 0.5 * gw[q] * cos(e);
                 double y[HFS_SH_N];
                 hfs_sh_eval_dir(phil + t, e, y);
                 for (int k = 0; k < HFS_SH_N; ++k)
