@@ -47,6 +47,7 @@ expect_fail nan-albedo "--albedo" $R --height "$tmp/flat.pfm" --albedo nan
 expect_fail missing-env-map "nope.exr" $R --height "$tmp/flat.pfm" --env-map "$tmp/nope.exr"
 expect_fail both-envs "both env-sh and env-map" $R --height "$tmp/flat.pfm" --env-sh $sky --env-map "$tmp/x.hdr"
 expect_fail missing-value "--dx" $R --height "$tmp/flat.pfm" --dx
+expect_fail bad-colormap "--colormap" $R --height "$tmp/flat.pfm" --env-sh $sky --colormap rainbow
 printf 'height = flat.pfm\nwhat = 3\n' >"$tmp/bad.ini"
 expect_fail ini-unknown-key "bad.ini:2: unknown key 'what'" render "$tmp/bad.ini" -o "$tmp/out.png"
 printf 'height = flat.pfm\nk = 99\n' >"$tmp/bad2.ini"
@@ -66,7 +67,7 @@ done
 
 # The good case: both outputs written, nothing else.
 cases=$((cases + 1))
-if "$HFSHADE" $R --height "$tmp/flat.pfm" --env-sh $sky --quiet && [ -s "$tmp/out.png" ] && [ -s "$tmp/out.pfm" ]; then
+if "$HFSHADE" $R --height "$tmp/flat.pfm" --env-sh $sky --colormap terrain --quiet && [ -s "$tmp/out.png" ] && [ -s "$tmp/out.pfm" ]; then
     echo "ok   [good-render]"
 else
     echo "FAIL [good-render]"; fails=$((fails + 1))

@@ -31,6 +31,7 @@ typedef struct cli {
     const char *positional[2];
     int n_positional;
     double exposure;
+    int colormap; /* 0 none, 1 terrain */
     int quiet;
     hfs_scene scene;
 } cli;
@@ -41,7 +42,8 @@ static void usage(FILE *f)
             "usage: hfshade render  [SCENE.ini] [--KEY VALUE ...] -o OUT.png [--pfm OUT.pfm]\n"
             "       hfshade compare [SCENE.ini] [--KEY VALUE ...] RESULT.pfm REFERENCE.pfm\n"
             "       hfshade keys\n"
-            "options: --exposure F (PNG only, default 1), --quiet, --help\n"
+            "options: --exposure F (PNG only, default 1), --colormap none|terrain (PNG only),\n"
+            "         --quiet, --help\n"
             "scene keys (also accepted in SCENE.ini as KEY = VALUE): run 'hfshade keys'\n");
 }
 
@@ -121,6 +123,13 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
             c->out_png = v;
         } else if (!strcmp(name, "pfm")) {
             c->out_pfm = v;
+        } else if (!strcmp(name, "colormap")) {
+            if (!strcmp(v, "terrain"))
+                c->colormap = 1;
+            else if (!strcmp(v, "none"))
+                c->colormap = 0;
+            else
+                return hfs_fail(err, HFS_E_INVALID, "--colormap: '%s' is not none or terrain", v);
         } else if (!strcmp(name, "exposure")) {
             char *end;
             c->exposure = strtod(v, &end);
@@ -194,6 +203,33 @@ static int load_inputs(const cli *c, scene_inputs *in, hfs_error *err)
     return hfs_validate_inputs(&in->field, &in->lighting, &in->quality, err);
 }
 
+/* Display option: multiplies the (linear) output by a colour of the
+ * normalized height — lowland green, hills tan, summits grey-white — like a
+ * hypsometric map.  Only the PNG sees it; the PFM keeps SPEC's Lo. */
+static void apply_terrain_colormap(hfs_image *img, const hfs_heightmap *hm)
+{
+    static const double stops[][4] = {/* t, r, g, b */
+                                      {0.00, 0.28, 0.50, 0.24}, {0.30, 0.55, 0.62, 0.32},
+                                      {0.60, 0.62, 0.52, 0.38}, {0.85, 0.78, 0.76, 0.72},
+                                      {1.00, 0.97, 0.97, 0.97}};
+    const size_t n = (size_t)hm->width * (size_t)hm->height;
+    float lo = hm->z[0], hi = hm->z[0];
+    for (size_t k = 1; k < n; ++k) {
+        lo = hm->z[k] < lo ? hm->z[k] : lo;
+        hi = hm->z[k] > hi ? hm->z[k] : hi;
+    }
+    const double span = hi > lo ? (double)hi - (double)lo : 1.0;
+    for (size_t k = 0; k < n; ++k) {
+        const double t = ((double)hm->z[k] - lo) / span;
+        int s = 0;
+        while (s < 3 && t > stops[s + 1][0])
+            ++s;
+        const double u = (t - stops[s][0]) / (stops[s + 1][0] - stops[s][0]);
+        for (int ch = 0; ch < 3; ++ch)
+            img->rgb[3 * k + ch] *= (float)(stops[s][1 + ch] + u * (stops[s + 1][1 + ch] - stops[s][1 + ch]));
+    }
+}
+
 static int cmd_render(const cli *c, hfs_error *err)
 {
     if (!c->out_png && !c->out_pfm)
@@ -226,6 +262,8 @@ static int cmd_render(const cli *c, hfs_error *err)
     if (c->out_png) {
         hfs_png_opts po = {0};
         po.exposure = c->exposure; /* 0 = default 1 */
+        if (c->colormap)
+            apply_terrain_colormap(&img, &in.hm); /* after the PFM: display only */
         if ((rc = hfs_png_write(c->out_png, &img, &po, err))) {
             if (c->out_pfm)
                 remove(c->out_pfm); /* no partial output */
