@@ -52,6 +52,7 @@ printf 'height = flat.pfm\nwhat = 3\n' >"$tmp/bad.ini"
 expect_fail ini-unknown-key "bad.ini:2: unknown key 'what'" render "$tmp/bad.ini" -o "$tmp/out.png"
 printf 'height = flat.pfm\nk = 99\n' >"$tmp/bad2.ini"
 expect_fail ini-range "bad2.ini:2: k: 99 is out of range" render "$tmp/bad2.ini" -o "$tmp/out.png"
+expect_fail bad-context "vulkan" info --context vulkan
 expect_fail no-output "no output" render --height "$tmp/flat.pfm" --env-sh $sky
 expect_fail unwritable-output "/nonexistent-dir/" render --backend cpu --height "$tmp/flat.pfm" --env-sh $sky -o /nonexistent-dir/out.png
 

@@ -4,11 +4,13 @@
  *   hfshade render  [SCENE.ini] [flags] -o OUT.png [--pfm OUT.pfm]
  *   hfshade compare [SCENE.ini] [flags] RESULT.pfm REFERENCE.pfm
  *   hfshade keys                      (lists every scene key / flag)
+ *   hfshade info [--context NAME]     (makes a GL context and describes it)
  *
  * Every scene key is also a flag (--KEY VALUE); flags override the file.
  * Errors: one line on stderr naming the input and the problem, exit 1 (2 for
  * usage errors); no output file is left behind on failure.
  */
+#include "gl_context.h"
 #include "hfs_io.h"
 #include "hfshade.h"
 #include "scene.h"
@@ -42,6 +44,7 @@ static void usage(FILE *f)
             "usage: hfshade render  [SCENE.ini] [--KEY VALUE ...] -o OUT.png [--pfm OUT.pfm]\n"
             "       hfshade compare [SCENE.ini] [--KEY VALUE ...] RESULT.pfm REFERENCE.pfm\n"
             "       hfshade keys\n"
+            "       hfshade info [--context surfaceless|osmesa|auto]\n"
             "options: --exposure F (PNG only, default 1), --colormap none|terrain (PNG only),\n"
             "         --quiet, --help\n"
             "scene keys (also accepted in SCENE.ini as KEY = VALUE): run 'hfshade keys'\n");
@@ -330,6 +333,27 @@ int main(int argc, char **argv)
     }
     if (!strcmp(c.command, "keys")) {
         print_keys();
+        return 0;
+    }
+    if (!strcmp(c.command, "info")) {
+        /* Proves --context end to end until the GLES backend uses it. */
+        const char *name = NULL;
+        for (int i = 2; i < argc; ++i) {
+            if (!strcmp(argv[i], "--context") && i + 1 < argc)
+                name = argv[++i];
+            else {
+                fprintf(stderr, "hfshade: info: unexpected argument '%s'\n", argv[i]);
+                return EXIT_USAGE;
+            }
+        }
+        hfs_error e = {{0}};
+        hfs_gl_context *ctx = NULL;
+        if (hfs_gl_context_create(name, &ctx, &e)) {
+            fprintf(stderr, "hfshade: %s\n", e.msg);
+            return 1;
+        }
+        printf("%s\n", hfs_gl_context_describe(ctx));
+        hfs_gl_context_destroy(ctx);
         return 0;
     }
     if (strcmp(c.command, "render") && strcmp(c.command, "compare")) {
