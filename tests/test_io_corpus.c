@@ -13,22 +13,13 @@
  * added by the test itself (height/ also holds a directory, dir.png).
  */
 #include "hfs_io.h"
+#include "test_util.h"
 
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-
-static int failures;
-
-#define CHECK(cond)                                                                     \
-    do {                                                                                \
-        if (!(cond)) {                                                                  \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);    \
-            ++failures;                                                                 \
-        }                                                                               \
-    } while (0)
 
 static int is_tool_file(const char *name)
 {
@@ -165,10 +156,5 @@ int main(int argc, char **argv)
     try_both(argv[1], "(the corpus directory)", NULL);
 
     free(readme);
-    if (failures) {
-        fprintf(stderr, "test_io_corpus: %d check(s) failed\n", failures);
-        return 1;
-    }
-    printf("test_io_corpus: all checks passed\n");
-    return 0;
+    return finish_checks("test_io_corpus");
 }

@@ -9,81 +9,16 @@
  *   every proper prefix rejected.
  */
 #include "hfs_io.h"
+#include "test_util.h"
 
-#include <dirent.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include <openexr.h>
 #include <stb_image_write.h>
-
-static int failures;
-
-#define CHECK(cond)                                                                     \
-    do {                                                                                \
-        if (!(cond)) {                                                                  \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);    \
-            ++failures;                                                                 \
-        }                                                                               \
-    } while (0)
-
-static char tmpdir[256];
-
-static const char *tpath(const char *name)
-{
-    static char buf[4][512];
-    static int k;
-    k = (k + 1) % 4;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tmpdir, name);
-    return buf[k];
-}
-
-static void rm_tmpdir(void)
-{
-    DIR *d = opendir(tmpdir);
-    struct dirent *e;
-    if (!d)
-        return;
-    while ((e = readdir(d)))
-        if (strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
-            unlink(tpath(e->d_name));
-    closedir(d);
-    rmdir(tmpdir);
-}
-
-static unsigned char *read_all(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    unsigned char *b = NULL;
-    long len;
-    if (!f)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    b = malloc((size_t)len + 1);
-    if (b && fread(b, 1, (size_t)len, f) != (size_t)len) {
-        free(b);
-        b = NULL;
-    }
-    fclose(f);
-    *n = (size_t)len;
-    return b;
-}
-
-static void write_bytes(const char *path, const void *data, size_t n)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f || (n && fwrite(data, 1, n, f) != n)) {
-        fprintf(stderr, "cannot write %s\n", path);
-        exit(1);
-    }
-    fclose(f);
-}
 
 static int load_fails_cleanly(const char *path)
 {
@@ -375,22 +310,11 @@ static void test_exr_refusals(void)
 
 int main(void)
 {
-    /* tmpfs when there is one: these tests rewrite thousands of small
-     * files, and truncating files on a journaling disk is slow. */
-    snprintf(tmpdir, sizeof tmpdir, "%s/io_envmap_XXXXXX",
-             access("/dev/shm", W_OK) == 0 ? "/dev/shm" : ".");
-    if (!mkdtemp(tmpdir)) {
-        perror("mkdtemp");
+    if (make_tmpdir("io_envmap") != 0)
         return 1;
-    }
     test_hdr();
     test_exr_roundtrips();
     test_exr_refusals();
     rm_tmpdir();
-    if (failures) {
-        fprintf(stderr, "test_io_envmap: %d check(s) failed\n", failures);
-        return 1;
-    }
-    printf("test_io_envmap: all checks passed\n");
-    return 0;
+    return finish_checks("test_io_envmap");
 }

@@ -6,22 +6,13 @@
  * all-holes error, and that z is untouched on error.
  */
 #include "hfs_io.h"
+#include "test_util.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int failures;
-
-#define CHECK(cond)                                                                     \
-    do {                                                                                \
-        if (!(cond)) {                                                                  \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);    \
-            ++failures;                                                                 \
-        }                                                                               \
-    } while (0)
 
 static uint32_t rng(uint32_t *s)
 {
@@ -159,10 +150,5 @@ int main(void)
     test_two_values();
     test_random();
     test_errors();
-    if (failures) {
-        fprintf(stderr, "test_io_fill: %d check(s) failed\n", failures);
-        return 1;
-    }
-    printf("test_io_fill: all checks passed\n");
-    return 0;
+    return finish_checks("test_io_fill");
 }

@@ -7,19 +7,10 @@
  * an offset data window) and Radiance (flat and RLE scanlines).
  */
 #include "hfs_io.h"
+#include "test_util.h"
 
 #include <stdio.h>
 #include <string.h>
-
-static int failures;
-
-#define CHECK(cond)                                                                     \
-    do {                                                                                \
-        if (!(cond)) {                                                                  \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);    \
-            ++failures;                                                                 \
-        }                                                                               \
-    } while (0)
 
 static const char *dir;
 
@@ -95,10 +86,5 @@ int main(int argc, char **argv)
         }
     }
 
-    if (failures) {
-        fprintf(stderr, "test_io_fixtures: %d check(s) failed\n", failures);
-        return 1;
-    }
-    printf("test_io_fixtures: all checks passed\n");
-    return 0;
+    return finish_checks("test_io_fixtures");
 }

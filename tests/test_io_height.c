@@ -4,12 +4,13 @@
  * row order (first row in the file = j = 0), nodata/holes through each
  * loader, format detection and the size guard.
  *
- * Files go to a private temporary directory under the working directory,
- * removed at the end.  Exit 0 = pass, 1 = fail.
+ * Files go to a private temporary directory (make_tmpdir in test_util.h:
+ * /dev/shm when writable, else the working directory), removed at the end.
+ * Exit 0 = pass, 1 = fail.
  */
 #include "hfs_io.h"
+#include "test_util.h"
 
-#include <dirent.h>
 #include <locale.h>
 #include <math.h>
 #include <png.h>
@@ -17,51 +18,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-
-static int failures;
-
-#define CHECK(cond)                                                                     \
-    do {                                                                                \
-        if (!(cond)) {                                                                  \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);    \
-            ++failures;                                                                 \
-        }                                                                               \
-    } while (0)
-
-static char tmpdir[256];
-
-static const char *tpath(const char *name)
-{
-    static char buf[4][512];
-    static int k;
-    k = (k + 1) % 4;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tmpdir, name);
-    return buf[k];
-}
-
-static void write_bytes(const char *path, const void *data, size_t n)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f || fwrite(data, 1, n, f) != n) {
-        fprintf(stderr, "cannot write %s\n", path);
-        exit(1);
-    }
-    fclose(f);
-}
-
-static void rm_tmpdir(void)
-{
-    DIR *d = opendir(tmpdir);
-    struct dirent *e;
-    if (!d)
-        return;
-    while ((e = readdir(d)))
-        if (strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
-            unlink(tpath(e->d_name));
-    closedir(d);
-    rmdir(tmpdir);
-}
 
 static void put_le32(unsigned char *b, float f)
 {
@@ -504,14 +460,8 @@ static void test_detection(void)
 
 int main(void)
 {
-    /* tmpfs when there is one: these tests rewrite thousands of small
-     * files, and truncating files on a journaling disk is slow. */
-    snprintf(tmpdir, sizeof tmpdir, "%s/io_height_XXXXXX",
-             access("/dev/shm", W_OK) == 0 ? "/dev/shm" : ".");
-    if (!mkdtemp(tmpdir)) {
-        perror("mkdtemp");
+    if (make_tmpdir("io_height") != 0)
         return 1;
-    }
     test_pgm();
     test_pfm();
     test_png();
@@ -520,10 +470,5 @@ int main(void)
     test_nodata();
     test_detection();
     rm_tmpdir();
-    if (failures) {
-        fprintf(stderr, "test_io_height: %d check(s) failed\n", failures);
-        return 1;
-    }
-    printf("test_io_height: all checks passed\n");
-    return 0;
+    return finish_checks("test_io_height");
 }

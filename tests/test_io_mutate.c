@@ -6,78 +6,13 @@
  * a failure a clean one-line message).  Meant to run under ASan/UBSan too.
  */
 #include "hfs_io.h"
+#include "test_util.h"
 
-#include <dirent.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-
-static int failures;
-
-#define CHECK(cond)                                                                     \
-    do {                                                                                \
-        if (!(cond)) {                                                                  \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);    \
-            ++failures;                                                                 \
-        }                                                                               \
-    } while (0)
-
-static char tmpdir[256];
-
-static const char *tpath(const char *name)
-{
-    static char buf[4][512];
-    static int k;
-    k = (k + 1) % 4;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tmpdir, name);
-    return buf[k];
-}
-
-static void rm_tmpdir(void)
-{
-    DIR *d = opendir(tmpdir);
-    struct dirent *e;
-    if (!d)
-        return;
-    while ((e = readdir(d)))
-        if (strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
-            unlink(tpath(e->d_name));
-    closedir(d);
-    rmdir(tmpdir);
-}
-
-static void write_bytes(const char *path, const void *data, size_t n)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f || (n && fwrite(data, 1, n, f) != n)) {
-        fprintf(stderr, "cannot write %s\n", path);
-        exit(1);
-    }
-    fclose(f);
-}
-
-static unsigned char *read_all(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    unsigned char *b;
-    long len;
-    if (!f)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    b = malloc((size_t)len + 1);
-    if (b && fread(b, 1, (size_t)len, f) != (size_t)len) {
-        free(b);
-        b = NULL;
-    }
-    fclose(f);
-    *n = (size_t)len;
-    return b;
-}
 
 /* 1 = loaded a sane field, 0 = failed cleanly, -1 = anything else. */
 static int try_load(const char *path, const hfs_height_load_opts *o)
@@ -153,14 +88,8 @@ int main(void)
     unsigned char buf[512];
     int n;
 
-    /* tmpfs when there is one: these tests rewrite thousands of small
-     * files, and truncating files on a journaling disk is slow. */
-    snprintf(tmpdir, sizeof tmpdir, "%s/io_mutate_XXXXXX",
-             access("/dev/shm", W_OK) == 0 ? "/dev/shm" : ".");
-    if (!mkdtemp(tmpdir)) {
-        perror("mkdtemp");
+    if (make_tmpdir("io_mutate") != 0)
         return 1;
-    }
     for (int k = 0; k < 30; ++k)
         v[k] = (float)(k * 1000 + 7);
 
@@ -196,10 +125,5 @@ int main(void)
     mutate("a.raw", &raw, 0);
 
     rm_tmpdir();
-    if (failures) {
-        fprintf(stderr, "test_io_mutate: %d check(s) failed\n", failures);
-        return 1;
-    }
-    printf("test_io_mutate: all checks passed\n");
-    return 0;
+    return finish_checks("test_io_mutate");
 }

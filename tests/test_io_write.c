@@ -6,6 +6,7 @@
  * partial file nor a temporary, and never damages an existing file.
  */
 #include "hfs_io.h"
+#include "test_util.h"
 
 #include <dirent.h>
 #include <math.h>
@@ -16,47 +17,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-static int failures;
-
-#define CHECK(cond)                                                                     \
-    do {                                                                                \
-        if (!(cond)) {                                                                  \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);    \
-            ++failures;                                                                 \
-        }                                                                               \
-    } while (0)
-
-static char tmpdir[256];
-
-static const char *tpath(const char *name)
-{
-    static char buf[4][512];
-    static int k;
-    k = (k + 1) % 4;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tmpdir, name);
-    return buf[k];
-}
-
-static unsigned char *read_all(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    unsigned char *b;
-    long len;
-    if (!f)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    b = malloc((size_t)len + 1);
-    if (b && fread(b, 1, (size_t)len, f) != (size_t)len) {
-        free(b);
-        b = NULL;
-    }
-    fclose(f);
-    *n = (size_t)len;
-    return b;
-}
 
 static float get_le32(const unsigned char *b)
 {
@@ -79,22 +39,6 @@ static int count_temporaries(void)
             ++n;
     closedir(d);
     return n;
-}
-
-static void rm_tmpdir(void)
-{
-    DIR *d = opendir(tmpdir);
-    struct dirent *e;
-    if (!d)
-        return;
-    while ((e = readdir(d))) {
-        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
-            continue;
-        if (unlink(tpath(e->d_name)) != 0)
-            rmdir(tpath(e->d_name));
-    }
-    closedir(d);
-    rmdir(tmpdir);
 }
 
 static void test_pfm(void)
@@ -356,23 +300,12 @@ static void test_atomic(void)
 
 int main(void)
 {
-    /* tmpfs when there is one: these tests rewrite thousands of small
-     * files, and truncating files on a journaling disk is slow. */
-    snprintf(tmpdir, sizeof tmpdir, "%s/io_write_XXXXXX",
-             access("/dev/shm", W_OK) == 0 ? "/dev/shm" : ".");
-    if (!mkdtemp(tmpdir)) {
-        perror("mkdtemp");
+    if (make_tmpdir("io_write") != 0)
         return 1;
-    }
     test_pfm();
     test_png();
     test_pfm_read();
     test_atomic();
     rm_tmpdir();
-    if (failures) {
-        fprintf(stderr, "test_io_write: %d check(s) failed\n", failures);
-        return 1;
-    }
-    printf("test_io_write: all checks passed\n");
-    return 0;
+    return finish_checks("test_io_write");
 }

@@ -11,6 +11,7 @@
  */
 #include "field_geom.h"
 #include "lights.h"
+#include "test_util.h"
 #include "truth_raycast.h"
 
 #include <math.h>
@@ -19,19 +20,6 @@
 #include <stdlib.h>
 
 #define PI 3.14159265358979323846
-
-static int failures;
-
-#define CHECK(cond, ...)                                                   \
-    do {                                                                   \
-        if (!(cond)) {                                                     \
-            fprintf(stderr, "%s:%d: FAIL %s: ", __FILE__, __LINE__, #cond); \
-            fprintf(stderr, __VA_ARGS__);                                  \
-            fprintf(stderr, "\n");                                         \
-            ++failures;                                                    \
-            return;                                                        \
-        }                                                                  \
-    } while (0)
 
 /* Small deterministic RNG for test inputs. */
 static uint64_t rng_state = 0x1234567887654321ULL;
@@ -90,15 +78,15 @@ static void test_cap_irradiance(void)
             if (b - a < PI / 2 && b + a > PI / 2)
                 ++straddling;
             worst = e > worst ? e : worst;
-            CHECK(isfinite(got) && e <= tol_abs + tol_rel * fabs(ref),
-                  "beta %.4f alpha %.4f: formula %.9f brute %.9f", b, a, got, ref);
+            REQUIRE(isfinite(got) && e <= tol_abs + tol_rel * fabs(ref),
+                    "beta %.4f alpha %.4f: formula %.9f brute %.9f", b, a, got, ref);
         }
-    CHECK(straddling >= 20, "only %d straddling cases", straddling);
+    REQUIRE(straddling >= 20, "only %d straddling cases", straddling);
     /* Limits: the whole sphere, an empty cap, clamped cos(beta). */
-    CHECK(fabs(hfs_cap_irradiance(0.3, PI) - PI) < 1e-15, "alpha = pi");
-    CHECK(hfs_cap_irradiance(1.0, 0.0) == 0.0, "alpha = 0");
-    CHECK(fabs(hfs_cap_irradiance(1.0 + 1e-12, 0.5) - PI * sin(0.5) * sin(0.5)) < 1e-12,
-          "cos_beta > 1");
+    REQUIRE(fabs(hfs_cap_irradiance(0.3, PI) - PI) < 1e-15, "alpha = pi");
+    REQUIRE(hfs_cap_irradiance(1.0, 0.0) == 0.0, "alpha = 0");
+    REQUIRE(fabs(hfs_cap_irradiance(1.0 + 1e-12, 0.5) - PI * sin(0.5) * sin(0.5)) < 1e-12,
+            "cos_beta > 1");
     printf("cap_irradiance: 100 cases (%d straddling), worst |formula - brute| %.2e\n",
            straddling, worst);
 }
@@ -160,7 +148,7 @@ static void test_ray_vs_march(void)
         float *z = random_heights(w, h, 1.0);
         const hfs_field f = {w, h, z, 0.5 + 2.0 * urand(), 0.2 + 3.0 * urand()};
         hfs_truth_grid g;
-        CHECK(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        REQUIRE(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
         /* Ambiguity band for grazing rays: a dense march with world step h
          * can miss a dip below the surface only if the dip is shallower than
          * h times the largest slope difference between ray and surface. */
@@ -180,10 +168,10 @@ static void test_ray_vs_march(void)
                 ++n_grazing; /* within the march's own resolution */
                 continue;
             }
-            CHECK(got == ref,
-                  "field %d %dx%d ray %d from (%d,%d) d=(%.4f,%.4f,%.4f) tmax %g: exact %d march %d "
-                  "(depth %.3g, eps %.3g)",
-                  field, w, h, r, i, j, d[0], d[1], d[2], tmax, got, ref, depth, eps);
+            REQUIRE(got == ref,
+                    "field %d %dx%d ray %d from (%d,%d) d=(%.4f,%.4f,%.4f) tmax %g: exact %d march %d "
+                    "(depth %.3g, eps %.3g)",
+                    field, w, h, r, i, j, d[0], d[1], d[2], tmax, got, ref, depth, eps);
             n_hit += got;
             n_miss += !got;
         }
@@ -191,8 +179,8 @@ static void test_ray_vs_march(void)
         free(z);
     }
     /* Meaningful only if both outcomes occur often and grazing is rare. */
-    CHECK(n_hit > n_rays / 10 && n_miss > n_rays / 10 && n_grazing < n_rays / 50,
-          "hits %d misses %d grazing %d of %d", n_hit, n_miss, n_grazing, n_rays);
+    REQUIRE(n_hit > n_rays / 10 && n_miss > n_rays / 10 && n_grazing < n_rays / 50,
+            "hits %d misses %d grazing %d of %d", n_hit, n_miss, n_grazing, n_rays);
     printf("ray_vs_march: %d rays, %d hit, %d clear, %d grazing (skipped)\n", n_rays, n_hit,
            n_miss, n_grazing);
 }
@@ -210,7 +198,7 @@ static void test_ray_tree_vs_plain(void)
                                        urand() * 2.0 + (field == 1 ? 3000.0 : 0.0));
         const hfs_field f = {w, h, z, field == 1 ? 0.02 : 1.0, 0.3 + urand()};
         hfs_truth_grid g;
-        CHECK(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        REQUIRE(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
         int bad = 0;
         for (int r = 0; r < 20000 && !bad; ++r) {
             const int i = (int)(urand() * w), j = (int)(urand() * h);
@@ -226,9 +214,9 @@ static void test_ray_tree_vs_plain(void)
         }
         hfs_truth_grid_free(&g);
         free(z);
-        CHECK(!bad, "field %d: accelerated and plain ray tests differ", field);
+        REQUIRE(!bad, "field %d: accelerated and plain ray tests differ", field);
     }
-    CHECK(n_hit > n / 10 && n_hit < n - n / 10, "hits %d of %d", n_hit, n);
+    REQUIRE(n_hit > n / 10 && n_hit < n - n / 10, "hits %d of %d", n_hit, n);
     printf("ray_tree_vs_plain: %d rays identical (%d hit)\n", n, n_hit);
 }
 
@@ -249,7 +237,7 @@ static void test_horizon_fast(void)
         const hfs_field f = {w, h, z, field == 2 ? 0.01 : 0.5 + urand(),
                              field == 3 ? 0.0 : 0.5 + urand()};
         hfs_truth_grid g;
-        CHECK(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        REQUIRE(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
         int bad = 0;
         for (int r = 0; r < 3000 && !bad; ++r) {
             const int i = (int)(urand() * w), j = (int)(urand() * h);
@@ -283,9 +271,9 @@ static void test_horizon_fast(void)
         }
         hfs_truth_grid_free(&g);
         free(z);
-        CHECK(!bad, "field %d: accelerated horizon differs from the plain march", field);
+        REQUIRE(!bad, "field %d: accelerated horizon differs from the plain march", field);
     }
-    CHECK(n_cut > n / 10 && n_cut < n - n / 10, "cutoff cases %ld of %ld", n_cut, n);
+    REQUIRE(n_cut > n / 10 && n_cut < n - n / 10, "cutoff cases %ld of %ld", n_cut, n);
     printf("horizon_fast: %ld horizons identical to the plain march (%ld under the cutoff)\n",
            n, n_cut);
 }
@@ -304,7 +292,7 @@ static void test_horizon_analytic(void)
                 z[j * w + i] = (float)(a * i + b * j); /* dyadic: exact in float */
         const hfs_field f = {w, h, z, dx, zs};
         hfs_truth_grid g;
-        CHECK(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        REQUIRE(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
         double worst = 0.0;
         for (int r = 0; r < 200; ++r) {
             const int i = 3 + r % 30, j = 2 + (r * 7) % 24;
@@ -319,8 +307,8 @@ static void test_horizon_analytic(void)
             const double want = zs * (a * c + b * s) / dx - 1e-4 / tk;
             const double e = fabs(atan(m) - atan(want));
             worst = e > worst ? e : worst;
-            CHECK(e < 1e-9, "plane (%d,%d) phi %.4f: horizon %.12f want %.12f", i, j, phi,
-                  atan(m), atan(want));
+            REQUIRE(e < 1e-9, "plane (%d,%d) phi %.4f: horizon %.12f want %.12f", i, j, phi,
+                    atan(m), atan(want));
         }
         hfs_truth_grid_free(&g);
         free(z);
@@ -337,18 +325,18 @@ static void test_horizon_analytic(void)
             z[j * w + X] = (float)hw;
         const hfs_field f = {w, h, z, dx, zs};
         hfs_truth_grid g;
-        CHECK(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        REQUIRE(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
         for (int i = 0; i < X - 1; ++i) {
             const double z0 = 1e-4 * dx;
             const double m = hfs_truth_horizon(&g, i, 4, z0, 1.0, 0.0, 0.25, -INFINITY, NULL);
             const double want = atan((zs * hw - z0) / ((X - i) * dx));
-            CHECK(fabs(atan(m) - want) < 1e-12, "wall from i=%d: %.15f want %.15f", i,
-                  atan(m), want);
+            REQUIRE(fabs(atan(m) - want) < 1e-12, "wall from i=%d: %.15f want %.15f", i,
+                    atan(m), want);
             /* looking away (-x): flat ground only, below the lifted receiver */
             const double back = hfs_truth_horizon(&g, i, 4, z0, -1.0, 0.0, 0.25, -INFINITY,
                                                   NULL);
-            CHECK(i == 0 ? back == -INFINITY : back < 0.0, "away from the wall at i=%d: %g",
-                  i, back);
+            REQUIRE(i == 0 ? back == -INFINITY : back < 0.0, "away from the wall at i=%d: %g",
+                    i, back);
         }
         hfs_truth_grid_free(&g);
         free(z);
@@ -363,10 +351,5 @@ int main(void)
     test_ray_tree_vs_plain();
     test_horizon_fast();
     test_horizon_analytic();
-    if (failures) {
-        fprintf(stderr, "test_truth_geom: %d failure(s)\n", failures);
-        return 1;
-    }
-    printf("test_truth_geom: all passed\n");
-    return 0;
+    return finish_checks("test_truth_geom");
 }

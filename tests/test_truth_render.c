@@ -16,6 +16,7 @@
 #include "backends.h"
 #include "lights.h"
 #include "sh.h"
+#include "test_util.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -24,19 +25,6 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
-
-static int failures;
-
-#define CHECK(cond, ...)                                                   \
-    do {                                                                   \
-        if (!(cond)) {                                                     \
-            fprintf(stderr, "%s:%d: FAIL %s: ", __FILE__, __LINE__, #cond); \
-            fprintf(stderr, __VA_ARGS__);                                  \
-            fprintf(stderr, "\n");                                         \
-            ++failures;                                                    \
-            return;                                                        \
-        }                                                                  \
-    } while (0)
 
 static uint64_t rng_state = 0x9e3779b97f4a7c15ULL;
 static double urand(void)
@@ -120,13 +108,13 @@ static void test_flat_uniform_sky(void)
         uniform_sky(&l, 1.0);
         const hfs_quality q = default_quality(0);
         hfs_image t = {0}, u = {0};
-        CHECK(render_both(&f, &l, &q, &t, &u) == 0, "render case %zu", c);
+        REQUIRE(render_both(&f, &l, &q, &t, &u) == 0, "render case %zu", c);
         for (int k = 0; k < w * h * 3; ++k) {
             const double et = fabs(t.rgb[k] - 1.0), eu = fabs(u.rgb[k] - 1.0);
             worst_t = et > worst_t ? et : worst_t;
             worst_u = eu > worst_u ? eu : worst_u;
-            CHECK(et <= 1e-4 && eu <= 1e-6, "case %zu texel (%d,%d): truth %.8f unshadowed %.8f",
-                  c, (k / 3) % w, (k / 3) / w, t.rgb[k], u.rgb[k]);
+            REQUIRE(et <= 1e-4 && eu <= 1e-6, "case %zu texel (%d,%d): truth %.8f unshadowed %.8f",
+                    c, (k / 3) % w, (k / 3) / w, t.rgb[k], u.rgb[k]);
         }
         hfs_image_free(&t);
         hfs_image_free(&u);
@@ -166,15 +154,15 @@ static void test_env_flat_vs_unshadowed(void)
         }
         const hfs_quality q = default_quality(0);
         hfs_image t = {0}, u = {0};
-        CHECK(render_both(&f, &l, &q, &t, &u) == 0, "render case %zu", c);
+        REQUIRE(render_both(&f, &l, &q, &t, &u) == 0, "render case %zu", c);
         double umax = 0.0;
         for (int k = 0; k < w * h * 3; ++k)
             umax = fabs(u.rgb[k]) > umax ? fabs(u.rgb[k]) : umax;
         for (int k = 0; k < w * h * 3; ++k) {
             const double e = fabs(t.rgb[k] - u.rgb[k]) / umax;
             worst = e > worst ? e : worst;
-            CHECK(e <= 1e-5, "case %zu texel %d ch %d: truth %.8f unshadowed %.8f", c, k / 3,
-                  k % 3, t.rgb[k], u.rgb[k]);
+            REQUIRE(e <= 1e-5, "case %zu texel %d ch %d: truth %.8f unshadowed %.8f", c, k / 3,
+                    k % 3, t.rgb[k], u.rgb[k]);
         }
         hfs_image_free(&t);
         hfs_image_free(&u);
@@ -210,7 +198,7 @@ static void test_key_flat(void)
                                    .radiance = {9.0f, 9.0f, 9.0f}, .disabled = 1};
         const hfs_quality q = default_quality(0);
         hfs_image t = {0}, u = {0};
-        CHECK(render_both(&f, &l, &q, &t, &u) == 0, "render case %d", c);
+        REQUIRE(render_both(&f, &l, &q, &t, &u) == 0, "render case %d", c);
         const double e_cap = hfs_cap_irradiance(sin(elevs[c]), alphas[c]);
         const double e_full = PI * sin(alphas[c]) * sin(alphas[c]);
         const int straddles = elevs[c] < alphas[c];
@@ -221,15 +209,15 @@ static void test_key_flat(void)
                 const double err = fabs(t.rgb[3 * k + ch] - want);
                 if (straddles) {
                     worst_s = err / full > worst_s ? err / full : worst_s;
-                    CHECK(err <= 5e-3 * full, "elev %.2f texel %d: truth %.8g want %.8g (full %.8g)",
-                          elevs[c], k, t.rgb[3 * k + ch], want, full);
+                    REQUIRE(err <= 5e-3 * full, "elev %.2f texel %d: truth %.8g want %.8g (full %.8g)",
+                            elevs[c], k, t.rgb[3 * k + ch], want, full);
                 } else {
                     worst = err / want > worst ? err / want : worst;
-                    CHECK(err <= 1e-3 * want, "elev %.2f texel %d: truth %.8g want %.8g", elevs[c],
-                          k, t.rgb[3 * k + ch], want);
+                    REQUIRE(err <= 1e-3 * want, "elev %.2f texel %d: truth %.8g want %.8g", elevs[c],
+                            k, t.rgb[3 * k + ch], want);
                 }
-                CHECK(fabs(u.rgb[3 * k + ch] - want) <= 1e-6 * want, "unshadowed %.8g want %.8g",
-                      u.rgb[3 * k + ch], want);
+                REQUIRE(fabs(u.rgb[3 * k + ch] - want) <= 1e-6 * want, "unshadowed %.8g want %.8g",
+                        u.rgb[3 * k + ch], want);
             }
         hfs_image_free(&t);
         hfs_image_free(&u);
@@ -260,20 +248,20 @@ static void test_key_wall(void)
                                .radiance = {1.0f, 1.0f, 1.0f}};
     const hfs_quality q = default_quality(0);
     hfs_image t = {0}, u = {0};
-    CHECK(render_both(&f, &l, &q, &t, &u) == 0, "render");
+    REQUIRE(render_both(&f, &l, &q, &t, &u) == 0, "render");
     const double full = 1.0 / PI * hfs_cap_irradiance(sin(PI / 6), 0.05);
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
             const double v = t.rgb[3 * (j * w + i)];
             if (i >= 22 && i <= 30 && j >= 2 && j <= h - 3)
-                CHECK(v == 0.0, "behind the wall (%d,%d): %g", i, j, v);
+                REQUIRE(v == 0.0, "behind the wall (%d,%d): %g", i, j, v);
             if (i >= 22 && (j == 0 || j == h - 1))
-                CHECK(fabs(v - 0.5 * full) <= 0.02 * full, "border behind the wall (%d,%d): %g, "
-                      "want about half of %g", i, j, v, full);
+                REQUIRE(fabs(v - 0.5 * full) <= 0.02 * full, "border behind the wall (%d,%d): %g, "
+                        "want about half of %g", i, j, v, full);
             if (i <= 18)
-                CHECK(fabs(v - full) <= 1e-3 * full, "in front (%d,%d): %g want %g", i, j, v, full);
-            CHECK(v <= u.rgb[3 * (j * w + i)] * (1 + 1e-3) + 1e-12, "above unshadowed at (%d,%d)",
-                  i, j);
+                REQUIRE(fabs(v - full) <= 1e-3 * full, "in front (%d,%d): %g want %g", i, j, v, full);
+            REQUIRE(v <= u.rgb[3 * (j * w + i)] * (1 + 1e-3) + 1e-12, "above unshadowed at (%d,%d)",
+                    i, j);
         }
     hfs_image_free(&t);
     hfs_image_free(&u);
@@ -316,7 +304,7 @@ static void test_local_flat(void)
         hfs_quality q = default_quality(0);
         q.truth_light_samples = samples[c];
         hfs_image t = {0}, u = {0};
-        CHECK(render_both(&f, &l, &q, &t, &u) == 0, "render");
+        REQUIRE(render_both(&f, &l, &q, &t, &u) == 0, "render");
         double umax = 0.0;
         for (int k = 0; k < w * h * 3; ++k)
             umax = u.rgb[k] > umax ? u.rgb[k] : umax;
@@ -331,22 +319,22 @@ static void test_local_flat(void)
                     /* unshadowed, independently (only light 0 is lit) */
                     const double want = 0.9 / PI * l.local[0].radiance[ch] *
                                         hfs_cap_irradiance(d[2], alpha);
-                    CHECK(fabs(u.rgb[k] - want) <= 1e-6 * umax, "unshadowed (%d,%d): %g want %g",
-                          i, j, u.rgb[k], want);
+                    REQUIRE(fabs(u.rgb[k] - want) <= 1e-6 * umax, "unshadowed (%d,%d): %g want %g",
+                            i, j, u.rgb[k], want);
                     if (in)
-                        CHECK(fabs(t.rgb[k] - 0.9 * l.local[0].radiance[ch]) <= 1e-6 * umax,
-                              "inside the sphere (%d,%d): truth %g want %g", i, j, t.rgb[k],
-                              0.9 * l.local[0].radiance[ch]);
+                        REQUIRE(fabs(t.rgb[k] - 0.9 * l.local[0].radiance[ch]) <= 1e-6 * umax,
+                                "inside the sphere (%d,%d): truth %g want %g", i, j, t.rgb[k],
+                                0.9 * l.local[0].radiance[ch]);
                     const double e = fabs(t.rgb[k] - u.rgb[k]) / umax;
                     worst[c] = e > worst[c] ? e : worst[c];
-                    CHECK(e <= tols[c], "light set %d (%d,%d) ch %d: truth %.8g unshadowed %.8g",
-                          c, i, j, ch, t.rgb[k], u.rgb[k]);
+                    REQUIRE(e <= tols[c], "light set %d (%d,%d) ch %d: truth %.8g unshadowed %.8g",
+                            c, i, j, ch, t.rgb[k], u.rgb[k]);
                 }
             }
         hfs_image_free(&t);
         hfs_image_free(&u);
     }
-    CHECK(inside >= 20, "only %d receivers inside the sphere", inside);
+    REQUIRE(inside >= 20, "only %d receivers inside the sphere", inside);
     free(z);
     printf("local_flat: worst |truth-unshadowed|/max %.2e (above the plane), %.2e (on the "
            "plane, 4096 samples; %d receivers inside: exact)\n", worst[0], worst[1], inside);
@@ -373,7 +361,7 @@ static void test_local_wall(void)
                                    .radiance = {1.0f, 1.0f, 1.0f}};
     const hfs_quality q = default_quality(0);
     hfs_image t = {0}, u = {0};
-    CHECK(render_both(&f, &l, &q, &t, &u) == 0, "render");
+    REQUIRE(render_both(&f, &l, &q, &t, &u) == 0, "render");
     double worst = 0.0;
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
@@ -381,12 +369,12 @@ static void test_local_wall(void)
             if (i <= 8) {
                 const double e = fabs(v - un) / un;
                 worst = e > worst ? e : worst;
-                CHECK(e <= 1e-3, "in front of the light (%d,%d): truth %g unshadowed %g", i, j,
-                      v, un);
+                REQUIRE(e <= 1e-3, "in front of the light (%d,%d): truth %g unshadowed %g", i, j,
+                        v, un);
             }
             if (i >= 23 && j >= 5 && j <= 10)
-                CHECK(v == 0.0 && un > 0.0, "behind the wall (%d,%d): truth %g (unshadowed %g)",
-                      i, j, v, un);
+                REQUIRE(v == 0.0 && un > 0.0, "behind the wall (%d,%d): truth %g (unshadowed %g)",
+                        i, j, v, un);
         }
     hfs_image_free(&t);
     hfs_image_free(&u);
@@ -422,7 +410,7 @@ static void test_env_wall(void)
     uniform_sky(&l, 1.0);
     const hfs_quality q = default_quality(0);
     hfs_image t = {0}, u = {0};
-    CHECK(render_both(&f, &l, &q, &t, &u) == 0, "render");
+    REQUIRE(render_both(&f, &l, &q, &t, &u) == 0, "render");
     double worst = 0.0, min_lo = 1.0;
     const int is[] = {1, 8, 15, 22, 27, 28};
     const int js[] = {20, 3, 37, 20, 0, 40};
@@ -448,9 +436,9 @@ static void test_env_wall(void)
         const double e = fabs(got - want);
         worst = e > worst ? e : worst;
         min_lo = want < min_lo ? want : min_lo;
-        CHECK(e <= 2e-6, "receiver (%d,%d): truth %.8f closed form %.8f", i, j, got, want);
+        REQUIRE(e <= 2e-6, "receiver (%d,%d): truth %.8f closed form %.8f", i, j, got, want);
     }
-    CHECK(min_lo < 0.8, "the plateau hardly shadows (min Lo %g): test too weak", min_lo);
+    REQUIRE(min_lo < 0.8, "the plateau hardly shadows (min Lo %g): test too weak", min_lo);
     hfs_image_free(&t);
     hfs_image_free(&u);
     free(z);
@@ -498,25 +486,25 @@ static void test_determinism(void)
     for (int r = 0; r < 4; ++r) {
         const hfs_quality q = default_quality(threads[r]);
         progress_log pl = {0, 0.0, 1};
-        CHECK(hfs_image_alloc(&img[r], w, h, &err) == HFS_OK, "alloc");
-        CHECK(hfs_truth_render(&f, &l, &q, &img[r], on_progress, &pl, &err) == HFS_OK, "%s",
-              err.msg);
-        CHECK(pl.calls >= 2 && pl.monotone && pl.last == 1.0, "progress: %d calls, last %g",
-              pl.calls, pl.last);
-        CHECK(all_finite(&img[r]), "non-finite output");
+        REQUIRE(hfs_image_alloc(&img[r], w, h, &err) == HFS_OK, "alloc");
+        REQUIRE(hfs_truth_render(&f, &l, &q, &img[r], on_progress, &pl, &err) == HFS_OK, "%s",
+                err.msg);
+        REQUIRE(pl.calls >= 2 && pl.monotone && pl.last == 1.0, "progress: %d calls, last %g",
+                pl.calls, pl.last);
+        REQUIRE(all_finite(&img[r]), "non-finite output");
     }
     for (int r = 1; r < 4; ++r)
-        CHECK(memcmp(img[0].rgb, img[r].rgb, sizeof(float) * 3 * w * h) == 0,
-              "run %d (%d threads) differs from run 0 (1 thread)", r, threads[r]);
+        REQUIRE(memcmp(img[0].rgb, img[r].rgb, sizeof(float) * 3 * w * h) == 0,
+                "run %d (%d threads) differs from run 0 (1 thread)", r, threads[r]);
     /* Shadows are present, so this compares something non-trivial. */
     hfs_image u;
-    CHECK(hfs_image_alloc(&u, w, h, &err) == HFS_OK, "alloc");
+    REQUIRE(hfs_image_alloc(&u, w, h, &err) == HFS_OK, "alloc");
     const hfs_quality q = default_quality(1);
-    CHECK(hfs_unshadowed_render(&f, &l, &q, &u, &err) == HFS_OK, "%s", err.msg);
+    REQUIRE(hfs_unshadowed_render(&f, &l, &q, &u, &err) == HFS_OK, "%s", err.msg);
     int shadowed = 0;
     for (int k = 0; k < w * h * 3; ++k)
         shadowed += img[0].rgb[k] < 0.9 * u.rgb[k];
-    CHECK(shadowed > w * h / 10, "only %d shadowed values", shadowed);
+    REQUIRE(shadowed > w * h / 10, "only %d shadowed values", shadowed);
     for (int r = 0; r < 4; ++r)
         hfs_image_free(&img[r]);
     hfs_image_free(&u);
@@ -553,11 +541,11 @@ static void test_degenerate(void)
                                        .disabled = 1};
         const hfs_quality q = default_quality(0);
         hfs_image t = {0}, u = {0};
-        CHECK(render_both(&f, &l, &q, &t, &u) == 0, "render 2x2 zscale %g", zscales[c]);
-        CHECK(all_finite(&t) && all_finite(&u), "non-finite output (zscale %g)", zscales[c]);
+        REQUIRE(render_both(&f, &l, &q, &t, &u) == 0, "render 2x2 zscale %g", zscales[c]);
+        REQUIRE(all_finite(&t) && all_finite(&u), "non-finite output (zscale %g)", zscales[c]);
         for (int k = 0; k < 12; ++k)
-            CHECK(t.rgb[k] >= 0.0f && t.rgb[k] <= u.rgb[k] * 1.01f + 1e-6f,
-                  "value %d: truth %g unshadowed %g", k, t.rgb[k], u.rgb[k]);
+            REQUIRE(t.rgb[k] >= 0.0f && t.rgb[k] <= u.rgb[k] * 1.01f + 1e-6f,
+                    "value %d: truth %g unshadowed %g", k, t.rgb[k], u.rgb[k]);
         if (zscales[c] == 0.0) {
             /* flat: sky 1 + horizon key light (half its cap) + zenith key +
              * local light 1 (inside at (1,1) only); radius 0 adds nothing. */
@@ -566,10 +554,10 @@ static void test_degenerate(void)
             hfs_image t2 = {0}, u2 = {0};
             l2.n_key = 0;
             l2.has_env = 0;
-            CHECK(render_both(&f, &l2, &q, &t2, &u2) == 0, "render");
+            REQUIRE(render_both(&f, &l2, &q, &t2, &u2) == 0, "render");
             for (int k = 0; k < 12; ++k)
-                CHECK(t2.rgb[k] == 0.0f && u2.rgb[k] == 0.0f, "radius-0 light gave %g / %g",
-                      t2.rgb[k], u2.rgb[k]);
+                REQUIRE(t2.rgb[k] == 0.0f && u2.rgb[k] == 0.0f, "radius-0 light gave %g / %g",
+                        t2.rgb[k], u2.rgb[k]);
             hfs_image_free(&t2);
             hfs_image_free(&u2);
         }
@@ -583,11 +571,11 @@ static void test_degenerate(void)
         const hfs_quality q = default_quality(0);
         hfs_image t = {0};
         progress_log pl = {0, 0.0, 1};
-        CHECK(hfs_image_alloc(&t, 2, 2, &err) == HFS_OK, "alloc");
-        CHECK(hfs_truth_render(&f, &l, &q, &t, on_progress, &pl, &err) == HFS_OK, "%s", err.msg);
+        REQUIRE(hfs_image_alloc(&t, 2, 2, &err) == HFS_OK, "alloc");
+        REQUIRE(hfs_truth_render(&f, &l, &q, &t, on_progress, &pl, &err) == HFS_OK, "%s", err.msg);
         for (int k = 0; k < 12; ++k)
-            CHECK(t.rgb[k] == 0.0f, "no lights gave %g", t.rgb[k]);
-        CHECK(pl.last == 1.0, "progress did not finish");
+            REQUIRE(t.rgb[k] == 0.0f, "no lights gave %g", t.rgb[k]);
+        REQUIRE(pl.last == 1.0, "progress did not finish");
         hfs_image_free(&t);
     }
     /* Out-of-range ground-truth settings are refused, not crashed on. */
@@ -597,9 +585,9 @@ static void test_degenerate(void)
         hfs_quality q = default_quality(0);
         q.truth_elev_order = 100;
         hfs_image t = {0};
-        CHECK(hfs_image_alloc(&t, 2, 2, &err) == HFS_OK, "alloc");
-        CHECK(hfs_truth_render(&f, &l, &q, &t, NULL, NULL, &err) == HFS_E_INVALID,
-              "elev order 100 accepted");
+        REQUIRE(hfs_image_alloc(&t, 2, 2, &err) == HFS_OK, "alloc");
+        REQUIRE(hfs_truth_render(&f, &l, &q, &t, NULL, NULL, &err) == HFS_E_INVALID,
+                "elev order 100 accepted");
         hfs_image_free(&t);
     }
     printf("degenerate: 2x2 fields, zscale 0, horizon/zenith/below lights, radius 0: finite\n");
@@ -616,10 +604,5 @@ int main(void)
     test_env_wall();
     test_determinism();
     test_degenerate();
-    if (failures) {
-        fprintf(stderr, "test_truth_render: %d failure(s)\n", failures);
-        return 1;
-    }
-    printf("test_truth_render: all passed\n");
-    return 0;
+    return finish_checks("test_truth_render");
 }
