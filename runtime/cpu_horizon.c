@@ -257,3 +257,94 @@ double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,
     }
     return best > HALF_PI ? HALF_PI : (best < -HALF_PI ? -HALF_PI : best);
 }
+
+/* ---- per-receiver directions (local lights, issue 4; additive) ------------------ */
+
+struct hfs_horizon_scales {
+    const hfs_cpu_pyramid *p;
+    int n, w, h;
+    size_t stride;
+    double *dist;      /* d_s, texels */
+    double *inv_run;   /* zscale / (d_s dx) */
+    int *read;         /* level read */
+};
+
+int hfs_horizon_scales_create(const hfs_cpu_pyramid *p, double dx, double zscale,
+                              int offset, hfs_horizon_scales **out, hfs_error *err)
+{
+    *out = NULL;
+    if (!p)
+        return hfs_fail(err, HFS_E_INVALID, "horizon scales: invalid arguments");
+    if (!(dx > 0.0) || !(zscale >= 0.0) || !isfinite(dx) || !isfinite(zscale))
+        return hfs_fail(err, HFS_E_INVALID, "horizon scales: dx=%g zscale=%g out of range", dx, zscale);
+    if (offset < 0)
+        return hfs_fail(err, HFS_E_INVALID, "horizon scales: level offset %d < 0", offset);
+    const int n = hfs_cpu_pyramid_count(p), k = hfs_cpu_pyramid_k(p);
+    if (hfs_pyramid_read_level(n, k, offset, 0) < hfs_cpu_pyramid_first_full(p))
+        return hfs_fail(err, HFS_E_INVALID, "horizon scales: pyramid lacks the levels offset %d reads", offset);
+    hfs_horizon_scales *hs = calloc(1, sizeof *hs);
+    if (!hs)
+        return hfs_fail(err, HFS_E_NOMEM, "horizon scales: out of memory");
+    hs->p = p;
+    hs->n = n;
+    hs->w = hfs_cpu_pyramid_width(p);
+    hs->h = hfs_cpu_pyramid_height(p);
+    hs->stride = (size_t)hfs_cpu_pyramid_stride(p);
+    hs->dist = malloc((size_t)n * sizeof *hs->dist);
+    hs->inv_run = malloc((size_t)n * sizeof *hs->inv_run);
+    hs->read = malloc((size_t)n * sizeof *hs->read);
+    if (!hs->dist || !hs->inv_run || !hs->read) {
+        hfs_horizon_scales_destroy(hs);
+        return hfs_fail(err, HFS_E_NOMEM, "horizon scales: out of memory");
+    }
+    for (int i = 0; i < n; ++i) {
+        const double dist = hfs_cpu_pyramid_spacing(p, i);
+        hs->dist[i] = dist;
+        hs->read[i] = hfs_pyramid_read_level(n, k, offset, i);
+        hs->inv_run[i] = zscale / (dist * dx); /* the expression plans use */
+    }
+    *out = hs;
+    return HFS_OK;
+}
+
+void hfs_horizon_scales_destroy(hfs_horizon_scales *hs)
+{
+    if (!hs)
+        return;
+    free(hs->dist);
+    free(hs->inv_run);
+    free(hs->read);
+    free(hs);
+}
+
+int hfs_horizon_scales_count(const hfs_horizon_scales *hs) { return hs->n; }
+double hfs_horizon_scales_dist(const hfs_horizon_scales *hs, int scale) { return hs->dist[scale]; }
+
+void hfs_horizon_snap_dir(double phi, double *c, double *s)
+{
+    *c = snap_unit(cos(phi));
+    *s = snap_unit(sin(phi));
+}
+
+void hfs_horizon_point_slopes(const hfs_horizon_scales *hs, int i, int j, double c,
+                              double s, int s_lo, double *slope, unsigned char *in_grid)
+{
+    const size_t stride = hs->stride;
+    for (int t = s_lo < 0 ? 0 : s_lo; t < hs->n; ++t) {
+        int ix, iy, xlo, xhi, ylo, yhi;
+        double fx, fy;
+        split_offset(hs->dist[t] * c, &ix, &fx);
+        split_offset(hs->dist[t] * s, &iy, &fy);
+        ingrid_range(ix, fx, hs->w, &xlo, &xhi);
+        ingrid_range(iy, fy, hs->h, &ylo, &yhi);
+        if (i < xlo || i > xhi || j < ylo || j > yhi) {
+            in_grid[t] = 0;
+            slope[t] = 0.0;
+            continue;
+        }
+        const double *r = hfs_cpu_pyramid_full(hs->p, hs->read[t]);
+        const double v = tap_read(r + (size_t)(j + iy) * stride + (size_t)(i + ix), stride, fx, fy);
+        slope[t] = (v - r[(size_t)j * stride + (size_t)i]) * hs->inv_run[t];
+        in_grid[t] = 1;
+    }
+}

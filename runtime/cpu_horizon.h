@@ -99,4 +99,33 @@ double hfs_horizon_env_from_maxd(double maxd, double floor);
 double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,
                                double floor);
 
+
+/* ---- per-receiver directions (local lights, issue 4; additive) ----------------
+ * Local lights sample azimuths that depend on the receiver (a partial swath
+ * centred on the light as seen from it), so no per-direction plan can be made
+ * ahead.  The receiver-independent part is per scale only: distance d_s
+ * (texels), level read, zscale/(d_s dx).  A sample is then exactly what a plan
+ * made for the same azimuth would compute (same snapping, same in-grid rule,
+ * same bilinear read): hfs_horizon_point_slopes for (c, s) from
+ * hfs_horizon_snap_dir(phi) gives bit for bit the tan(omega) that
+ * hfs_horizon_point computes for a plan containing phi. */
+typedef struct hfs_horizon_scales hfs_horizon_scales;
+
+/* Same preconditions and errors as hfs_horizon_plan_create. */
+int hfs_horizon_scales_create(const hfs_cpu_pyramid *p, double dx, double zscale,
+                              int offset, hfs_horizon_scales **out, hfs_error *err);
+void hfs_horizon_scales_destroy(hfs_horizon_scales *hs);
+int hfs_horizon_scales_count(const hfs_horizon_scales *hs);            /* N */
+double hfs_horizon_scales_dist(const hfs_horizon_scales *hs, int scale); /* d_s, texels */
+
+/* The snapped unit direction of azimuth phi, as plans use it. */
+void hfs_horizon_snap_dir(double phi, double *c, double *s);
+
+/* Receiver (i, j), snapped direction (c, s), scales s_lo..N-1 (0 <= s_lo <= N):
+ * in_grid[t] = 1 and slope[t] = D_t = (R_L(p_t) - R_L(x)) zscale/(d_t dx) when
+ * the sample lies on the grid, else in_grid[t] = 0 and slope[t] = 0.
+ * Entries below s_lo are not touched. */
+void hfs_horizon_point_slopes(const hfs_horizon_scales *hs, int i, int j, double c,
+                              double s, int s_lo, double *slope, unsigned char *in_grid);
+
 #endif /* HFS_CPU_HORIZON_H */

@@ -40,10 +40,17 @@
  *     (E_cap = 0) skips the visibility work: its contribution is exactly 0.
  *   - quality.subsample and quality.precision belong to the GLES path; the
  *     reference always works at full resolution in double.
- *   - local lights (issue 4) are refused with HFS_E_UNSUPPORTED.
+ *
+ * Local lights (issue 4) live in cpu_local.c (DESIGN.md "Local lights"); this
+ * file only hooks them in, marked "local lights (issue 4)": the module is
+ * created after the pyramid, fills a per-worker row of their exit radiance
+ * right after the row's normals (hfs_cpu_local_row), and each texel adds it
+ * last.  hfs_cpu_render_with (cpu_local.h) takes the local-light options;
+ * hfs_cpu_render uses the defaults.
  */
 #include "backends.h"
 #include "cpu_horizon.h"
+#include "cpu_local.h"
 #include "cpu_pyramid.h"
 #include "cpu_visibility.h"
 #include "field_geom.h"
@@ -82,6 +89,7 @@ typedef struct worker_scratch {
     double *omega;             /* per job: n_j x W, consecutive */
     double *floors;            /* per key job: n_j x W (V_open) */
     double *om, *fl;           /* gathered per texel: max n */
+    double *local_lo;          /* local lights (issue 4): W x 3, or NULL */
 } worker_scratch;
 
 typedef struct render_ctx {
@@ -97,6 +105,7 @@ typedef struct render_ctx {
     int env_shared;            /* some key light shares the environment pass */
     size_t *omega_at;          /* offset of job j in worker omega/floors */
     worker_scratch *scratch;
+    const hfs_cpu_local *local; /* local lights (issue 4), NULL if none */
 } render_ctx;
 
 static int any_positive3f(const float v[3])
@@ -186,6 +195,8 @@ static void render_row(void *ctx, int j, int worker)
     for (int i = 0; i < w; ++i)
         hfs_field_normal(c->f, i, j, s->normals + 3 * i);
     trace_row(c, s, j);
+    if (c->local) /* local lights (issue 4) */
+        hfs_cpu_local_row(c->local, worker, j, s->normals, s->local_lo);
 
     float *dst = c->out->rgb + (size_t)j * (size_t)w * 3;
     for (int i = 0; i < w; ++i) {
@@ -229,6 +240,9 @@ static void render_row(void *ctx, int j, int worker)
             for (int ch = 0; ch < 3; ++ch)
                 lo[ch] += c->rho_pi * job->le[ch] * e_cap * ratio;
         }
+        if (c->local) /* local lights (issue 4) */
+            for (int ch = 0; ch < 3; ++ch)
+                lo[ch] += s->local_lo[3 * i + ch];
         for (int ch = 0; ch < 3; ++ch)
             dst[3 * i + ch] = to_output(lo[ch]);
     }
@@ -267,20 +281,26 @@ static void free_scratch(worker_scratch *s)
     free(s->floors);
     free(s->om);
     free(s->fl);
+    free(s->local_lo);
 }
 
 int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
                    const hfs_quality *q, hfs_image *out,
                    hfs_progress_fn progress, void *user, hfs_error *err)
 {
+    hfs_cpu_local_options lo;
+    hfs_cpu_local_options_default(&lo);
+    lo.swath = q->local_full_swath ? HFS_LOCAL_SWATH_FULL : HFS_LOCAL_SWATH_PARTIAL;
+    return hfs_cpu_render_with(f, l, q, &lo, out, progress, user, err);
+}
+
+int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                        const hfs_cpu_local_options *local_opt, hfs_image *out,
+                        hfs_progress_fn progress, void *user, hfs_error *err)
+{
     if (!f || !l || !q || !out || !out->rgb || !f->z || f->width < 2 || f->height < 2 ||
         out->width != f->width || out->height != f->height)
         return hfs_fail(err, HFS_E_INVALID, "backend cpu: invalid field, lighting or output");
-    for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
-        if (!l->local[i].disabled && any_positive3f(l->local[i].radiance))
-            return hfs_fail(err, HFS_E_UNSUPPORTED,
-                            "backend cpu: local lights are not supported yet (issue 4); "
-                            "disable local light %d or use --backend truth", i + 1);
     if (q->k < 1 || q->offset < 0 || q->nphi_env < 1 || q->nphi_key < 1)
         return hfs_fail(err, HFS_E_INVALID, "backend cpu: quality k=%d offset=%d nphi_env=%d "
                         "nphi_key=%d out of range", q->k, q->offset, q->nphi_env, q->nphi_key);
@@ -311,7 +331,10 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
     int n_key = 0;
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i)
         n_key += key_contributes(&l->key[i], l->albedo);
-    if ((!has_env && n_key == 0) || !(l->albedo > 0.0)) {
+    int n_local = 0; /* local lights (issue 4) */
+    for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
+        n_local += hfs_cpu_local_contributes(&l->local[i]);
+    if ((!has_env && n_key == 0 && n_local == 0) || !(l->albedo > 0.0)) {
         memset(out->rgb, 0, (size_t)w * (size_t)h * 3 * sizeof *out->rgb);
         if (progress)
             progress(user, 1.0);
@@ -319,7 +342,8 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
     }
 
     c.has_env = has_env;
-    c.jobs = calloc((size_t)(has_env + n_key), sizeof *c.jobs);
+    /* + 1: a frame may have local lights only (no swath job). */
+    c.jobs = calloc((size_t)(has_env + n_key) + 1, sizeof *c.jobs);
     c.omega_at = calloc((size_t)(has_env + n_key) + 1, sizeof *c.omega_at);
     if (!c.jobs || !c.omega_at) {
         rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
@@ -385,8 +409,8 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
      * parallel "row". */
     vis_build vb = {.jobs = c.jobs, .path = q->visibility};
     const size_t n_jobs = (size_t)(has_env + n_key); /* == c.n_jobs */
-    vb.rc = calloc(n_jobs, sizeof *vb.rc);
-    vb.err = calloc(n_jobs, sizeof *vb.err);
+    vb.rc = calloc(n_jobs + 1, sizeof *vb.rc);
+    vb.err = calloc(n_jobs + 1, sizeof *vb.err);
     if (!vb.rc || !vb.err) {
         free(vb.rc);
         free(vb.err);
@@ -413,6 +437,15 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
     if (rc)
         goto done;
 
+    /* Local lights (issue 4): NULL when none contributes. */
+    hfs_cpu_local *local = NULL;
+    if (n_local > 0) {
+        rc = hfs_cpu_local_create(f, l, q, local_opt, pyr, threads, &local, err);
+        if (rc)
+            goto done;
+        c.local = local;
+    }
+
     /* Per-worker scratch. */
     c.scratch = calloc((size_t)threads, sizeof *c.scratch);
     if (!c.scratch) {
@@ -426,12 +459,14 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
         s->floor_row = malloc((size_t)w * sizeof(double));
         s->maxd = malloc((size_t)w * sizeof(double));
         s->levels = malloc((size_t)n_levels * (size_t)w * sizeof(double));
-        s->omega = malloc(total * sizeof(double));
-        s->floors = malloc(total * sizeof(double));
+        s->omega = malloc((total + 1) * sizeof(double));
+        s->floors = malloc((total + 1) * sizeof(double));
         s->om = malloc((size_t)max_n * sizeof(double));
         s->fl = malloc((size_t)max_n * sizeof(double));
+        if (local) /* local lights (issue 4) */
+            s->local_lo = malloc((size_t)w * 3 * sizeof(double));
         if (!s->normals || !s->floor_row || !s->maxd || !s->levels || !s->omega ||
-            !s->floors || !s->om || !s->fl) {
+            !s->floors || !s->om || !s->fl || (local && !s->local_lo)) {
             rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for %d workers", threads);
             goto done;
         }
@@ -440,6 +475,7 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
     hfs_parallel_rows(h, threads, render_row, &c, progress, user);
 
 done:
+    hfs_cpu_local_destroy((hfs_cpu_local *)c.local); /* local lights (issue 4) */
     if (c.scratch)
         for (int t = 0; t < threads; ++t)
             free_scratch(&c.scratch[t]);

@@ -149,7 +149,10 @@ typedef struct hfs_quality {
     int offset;              /* level offset o (levels biased by k*o), 2    */
     int nphi_env;            /* azimuth samples, environment (full swath) 32 */
     int nphi_key;            /* azimuth samples per key light swath, 3      */
-    int nphi_local;          /* azimuth samples per local light, 16         */
+    int nphi_local;          /* azimuth samples per local light's full swath, 16 */
+    int local_full_swath;    /* 0: per-receiver partial swath where the light
+                                does not surround the receiver (default);
+                                1: always the full swath (the thesis)        */
     int subsample;           /* visibility grid step 1|2|4 (GLES path), 2   */
     hfs_precision precision; /* texture precision of the GLES path          */
     hfs_visibility_path visibility;

@@ -110,6 +110,8 @@ int hfs_validate_inputs(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         return hfs_fail(err, HFS_E_INVALID, "subsample: %d is not 1, 2 or 4", q->subsample);
     if (q->precision != HFS_PRECISION_FP16 && q->precision != HFS_PRECISION_FP32)
         return hfs_fail(err, HFS_E_INVALID, "precision: unknown value %d", (int)q->precision);
+    if (q->local_full_swath != 0 && q->local_full_swath != 1)
+        return hfs_fail(err, HFS_E_INVALID, "local-swath: unknown value %d", q->local_full_swath);
     if (q->visibility != HFS_VIS_LEGENDRE && q->visibility != HFS_VIS_WEDGE_TABLE)
         return hfs_fail(err, HFS_E_INVALID, "visibility: unknown value %d", (int)q->visibility);
     if (q->threads < 0 || q->truth_azimuths < 1 || q->truth_elev_order < 1 ||

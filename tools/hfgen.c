@@ -4,6 +4,7 @@
  *   hfgen flat    --size WxH -o OUT.pfm
  *   hfgen cones   --size WxH -o OUT.pfm     (SN08 figs. 3-10 style cones)
  *   hfgen fractal --size WxH -o OUT.pfm [--seed N] [--relief R]
+ *   hfgen panel   --size WxH -o OUT.pfm     (grooved, embossed control panel)
  *   hfgen crop    IN --rect X,Y,W,H -o OUT.pfm   (any loadable height file)
  *
  * Heights are in texel units (use dx = 1, zscale = 1 to keep proportions);
@@ -20,7 +21,7 @@
 
 static void usage(void)
 {
-    fprintf(stderr, "usage: hfgen flat|cones|fractal --size WxH -o OUT.pfm [--seed N] [--relief R]\n"
+    fprintf(stderr, "usage: hfgen flat|cones|fractal|panel --size WxH -o OUT.pfm [--seed N] [--relief R]\n"
                     "       hfgen crop IN --rect X,Y,W,H -o OUT.pfm\n");
 }
 
@@ -44,6 +45,39 @@ static void gen_cones(float *z, int w, int h)
                     v = cone;
             }
             z[(size_t)j * w + i] = (float)v;
+        }
+}
+
+static double clamp01(double x)
+{
+    return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x);
+}
+
+/* A control panel for small local lights close to a surface (issue 4), in
+ * units of 1/128 of the short side: a plate at height 2 cut by a grid of
+ * grooves (2 deep, 2-unit flat bottom, 1-unit walls) every 32 units at
+ * 16 + 32k, and on every grid node between them an embossed feature: square
+ * buttons (3 high, 14 wide, 2-unit bevel) and, in checkerboard, round knobs
+ * (5 high, radius 6, 1.5-unit bevel).  Heights scale with the size too. */
+static void gen_panel(float *z, int w, int h)
+{
+    const double s = (w < h ? w : h) / 128.0;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const double x = i / s, y = j / s;
+            const double gx = fabs(fmod(x, 32.0) - 16.0), gy = fabs(fmod(y, 32.0) - 16.0);
+            const double groove = 2.0 * fmax(clamp01(2.0 - gx), clamp01(2.0 - gy));
+            double v = 2.0 - groove;
+            const double kx = floor(x / 32.0 + 0.5), ky = floor(y / 32.0 + 0.5);
+            const double bx = fabs(x - 32.0 * kx), by = fabs(y - 32.0 * ky);
+            double feature;
+            if (((long)kx + (long)ky) % 2 == 0)
+                feature = 3.0 * clamp01((9.0 - fmax(bx, by)) / 2.0);   /* button */
+            else
+                feature = 5.0 * clamp01((7.5 - hypot(bx, by)) / 1.5);  /* knob   */
+            if (feature > 0.0)
+                v = fmax(v, 2.0 + feature);
+            z[(size_t)j * w + i] = (float)(v * s);
         }
 }
 
@@ -185,6 +219,8 @@ int main(int argc, char **argv)
                 gen_cones(z, w, h);
             else if (!strcmp(kind, "fractal"))
                 gen_fractal(z, w, h, seed, relief);
+            else if (!strcmp(kind, "panel"))
+                gen_panel(z, w, h);
             else {
                 fprintf(stderr, "hfgen: unknown kind '%s'\n", kind);
                 free(z);

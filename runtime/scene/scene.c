@@ -17,7 +17,7 @@ typedef enum key_id {
     K_HEIGHT, K_SIZE, K_DX, K_ZSCALE, K_NODATA, K_ENV_SH, K_ENV_MAP,
     K_ENV_ROTATE, K_KEY, K_LOCAL, K_ALBEDO, K_K, K_OFFSET, K_NPHI_ENV,
     K_NPHI_KEY, K_NPHI_LOCAL, K_SUBSAMPLE, K_PRECISION, K_BACKEND, K_CONTEXT,
-    K_VISIBILITY, K_THREADS, K_TRUTH_AZIMUTHS, K_TRUTH_SAMPLES, K_COUNT
+    K_VISIBILITY, K_THREADS, K_TRUTH_AZIMUTHS, K_TRUTH_SAMPLES, K_LOCAL_SWATH, K_COUNT
 } key_id;
 
 static const hfs_scene_key_info key_table[K_COUNT] = {
@@ -45,6 +45,7 @@ static const hfs_scene_key_info key_table[K_COUNT] = {
     [K_THREADS] = {"threads", "N", "CPU/truth worker threads (default: all cores)"},
     [K_TRUTH_AZIMUTHS] = {"truth-azimuths", "N", "ground truth: horizon azimuths (default 720)"},
     [K_TRUTH_SAMPLES] = {"truth-samples", "N", "ground truth: samples per light (default 256)"},
+    [K_LOCAL_SWATH] = {"local-swath", "partial|full", "local lights: per-receiver partial swath (default) or full"},
 };
 
 const hfs_scene_key_info *hfs_scene_keys(int *count)
@@ -296,6 +297,14 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
         return parse_int(value, 720, 100000, &q->truth_azimuths, where, key, err);
     case K_TRUTH_SAMPLES:
         return parse_int(value, 1, 1 << 20, &q->truth_light_samples, where, key, err);
+    case K_LOCAL_SWATH:
+        if (strcmp(value, "partial") == 0)
+            q->local_full_swath = 0;
+        else if (strcmp(value, "full") == 0)
+            q->local_full_swath = 1;
+        else
+            return hfs_fail(err, HFS_E_INVALID, "%s: local-swath: '%s' is not partial or full", where, value);
+        return HFS_OK;
     case K_COUNT:
         break;
     }
@@ -364,5 +373,6 @@ void hfs_scene_quality(const hfs_scene *s, hfs_quality *q)
     TAKE(K_THREADS, threads);
     TAKE(K_TRUTH_AZIMUTHS, truth_azimuths);
     TAKE(K_TRUTH_SAMPLES, truth_light_samples);
+    TAKE(K_LOCAL_SWATH, local_full_swath);
 #undef TAKE
 }

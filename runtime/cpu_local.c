@@ -1,0 +1,710 @@
+/*
+ * cpu_local.c — see cpu_local.h and DESIGN.md "Local lights".
+ *
+ * Work per row (one worker):
+ *   full mode (HFS_LOCAL_SWATH_FULL, or the wedge-table path): the per-scale
+ *     horizons of the row in the nphi_local fixed azimuths, once for all local
+ *     lights (hfs_horizon_row), with cos/sin of every angle for the distance
+ *     test;
+ *   partial mode: nothing shared but the normal and H(N); each (receiver,
+ *     light, sample) reads only the scales that can lie in front of the light
+ *     (d_s dx <= u + g, the far end of the sphere's section by the sample's
+ *     half-plane) and skips the entry test where it cannot fail
+ *     (d_s dx < u - g).
+ * Per receiver: H(N) once; per light the view, E_cap, m = H * L, the swath, and
+ * per sample: window, floor, horizons with the distance test, B-spline max,
+ * then (Legendre) the NLP bands contracted against g_k = sum_r m_r A_k[r] E[r]
+ * (so num and den cost 4 MACs each per sample and V is never formed), or
+ * (wedge tables) V and V_open from the full swath's table object.
+ */
+#include "cpu_local.h"
+
+#include "cpu_horizon.h"
+#include "cpu_visibility.h"
+#include "field_geom.h"
+#include "lights.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define HALF_PI 1.57079632679489661923
+#define LIFT 1e-4 /* receiver lift, units of dx (SPEC; truth.c, unshadowed.c) */
+
+/* ---- options ------------------------------------------------------------------ */
+
+void hfs_cpu_local_options_default(hfs_cpu_local_options *o)
+{
+    o->swath = HFS_LOCAL_SWATH_PARTIAL;
+}
+
+int hfs_cpu_local_contributes(const hfs_local_light *l)
+{
+    if (l->disabled || !(l->radius > 0.0))
+        return 0;
+    return l->radiance[0] > 0.0f || l->radiance[1] > 0.0f || l->radiance[2] > 0.0f;
+}
+
+/* ---- geometry ------------------------------------------------------------------- */
+
+void hfs_local_view_make(const hfs_local_light *l, const double p[3], hfs_local_view *lv)
+{
+    memset(lv, 0, sizeof *lv);
+    for (int k = 0; k < 3; ++k)
+        lv->v[k] = l->pos[k] - p[k];
+    const double d = sqrt(lv->v[0] * lv->v[0] + lv->v[1] * lv->v[1] + lv->v[2] * lv->v[2]);
+    const double r = l->radius;
+    lv->d = d;
+    lv->r = r;
+    if (d > 0.0) {
+        for (int k = 0; k < 3; ++k)
+            lv->dir[k] = lv->v[k] / d;
+    } else {
+        lv->dir[2] = 1.0;
+    }
+    lv->rho_h = hypot(lv->v[0], lv->v[1]);
+    lv->phi_l = atan2(lv->v[1], lv->v[0]);
+    lv->elev_l = atan2(lv->v[2], lv->rho_h);
+    lv->surround = r >= lv->rho_h;
+    if (r > 0.0 && d <= r) {
+        lv->inside = 1;
+        lv->alpha = PI;
+        return;
+    }
+    /* Outside (d > r >= 0, so d > 0). */
+    lv->c_tan = (d - r) * (d + r);
+    lv->sin_a = r / d;
+    lv->cos_a = sqrt(lv->c_tan) / d;
+    lv->alpha = atan2(lv->sin_a, lv->cos_a);
+}
+
+int hfs_local_cap_window(const hfs_local_view *lv, double c, double s, double *lo, double *hi)
+{
+    /* Points of the vertical great circle of azimuth u = (c, s, 0):
+     * t(e) = cos e u + sin e z, angle to the axis: cos = R cos(e - psi) with
+     * (A, B) = (dir.u, dir_z) = R (cos psi, sin psi).  The cap is cos >= cos a,
+     * so e in psi +- half, cos half = cos a / R, sin half * R =
+     * sqrt(sin^2 a - w^2), w = dir . (-s, c, 0) (1 - R^2 = w^2: stable form). */
+    const double a = lv->dir[0] * c + lv->dir[1] * s, b = lv->dir[2];
+    const double w = -lv->dir[0] * s + lv->dir[1] * c;
+    const double q = lv->sin_a * lv->sin_a - w * w;
+    if (!(q > 0.0) || !(lv->cos_a >= 0.0)) {
+        *lo = *hi = 0.0;
+        return 0;
+    }
+    const double psi = atan2(b, a), half = atan2(sqrt(q), lv->cos_a);
+    double l = psi - half, h = psi + half;
+    /* psi in (-pi, pi], half < pi/2: the arc never wraps into this half-plane
+     * from the other side; clipping is enough. */
+    l = l < -HALF_PI ? -HALF_PI : l;
+    h = h > HALF_PI ? HALF_PI : h;
+    if (!(l < h)) {
+        *lo = *hi = 0.0;
+        return 0;
+    }
+    *lo = l;
+    *hi = h;
+    return 1;
+}
+
+double hfs_local_entry_distance(const hfs_local_view *lv, double c, double s, double ce,
+                                double se)
+{
+    const double b = ce * (c * lv->v[0] + s * lv->v[1]) + se * lv->v[2]; /* ray . v */
+    const double disc = b * b - lv->c_tan;
+    double t;
+    if (b > 0.0 && disc >= 0.0)
+        t = lv->c_tan / (b + sqrt(disc)); /* = b - sqrt(disc), without cancellation */
+    else
+        t = b > 0.0 ? b : 0.0;            /* misses: closest approach */
+    const double th = t * ce;
+    return th > 0.0 ? th : 0.0;
+}
+
+/* ---- swath and Legendre visibility --------------------------------------------------- */
+
+void hfs_local_swath_make(const hfs_local_view *lv, int nphi_local,
+                          hfs_local_swath_mode mode, hfs_visibility_path path,
+                          hfs_local_swath *sw)
+{
+    const int nfull = nphi_local < 1 ? 1 : nphi_local;
+    if (path == HFS_VIS_WEDGE_TABLE || mode == HFS_LOCAL_SWATH_FULL || lv->surround ||
+        !(lv->r < lv->rho_h)) {
+        sw->n = nfull;
+        sw->full = 1;
+        sw->phi0 = 0.0;
+        sw->dphi = 2.0 * PI / nfull;
+        return;
+    }
+    const double h = asin(lv->r / lv->rho_h);
+    int n = (int)ceil(nfull * h / PI);
+    n = n < HFS_LOCAL_PARTIAL_MIN ? HFS_LOCAL_PARTIAL_MIN : n;
+    n = n > nfull ? nfull : n;
+    sw->n = n;
+    sw->full = 0;
+    sw->dphi = 2.0 * h / n;
+    sw->phi0 = lv->phi_l - h + 0.5 * sw->dphi;
+}
+
+/* The same 32-node rule as sh_wedge.c's elevation_moments, so that the
+ * closed-form fold below matches hfs_wedge_mlin to rounding. */
+void hfs_local_elevation_moments(double E[HFS_SH_N * HFS_NLP_N])
+{
+    enum { NODES = 32 };
+    double x[NODES], w[NODES];
+    hfs_gauss_legendre(NODES, x, w);
+    for (int i = 0; i < HFS_SH_N * HFS_NLP_N; ++i)
+        E[i] = 0.0;
+    for (int i = 0; i < NODES; ++i) {
+        const double e = 0.5 * PI * x[i];
+        const double z = sin(e), rho = cos(e);
+        const double wt = 0.5 * PI * w[i] * rho;
+        double el[HFS_SH_N], p[HFS_NLP_N];
+        hfs_sh_eval_elev(z, rho, el);
+        hfs_nlp_eval(z, p);
+        for (int r = 0; r < HFS_SH_N; ++r)
+            for (int c = 0; c < HFS_NLP_N; ++c)
+                E[r * HFS_NLP_N + c] += wt * el[r] * p[c];
+    }
+}
+
+/* integral_0^w (1 - u/w) cos(m u) du = 2 sin^2(m w/2) / (m^2 w). */
+static double tri_cos(double w, int m)
+{
+    if (!(w > 0.0))
+        return 0.0;
+    if (m == 0)
+        return 0.5 * w;
+    const double x = m * w, hs = sin(0.5 * x);
+    return 2.0 * hs * hs / (m * x);
+}
+
+/* integral_0^w (1 - u/w) sin(m u) du = (x - sin x) / (m x), x = m w. */
+static double tri_sin(double w, int m)
+{
+    if (!(w > 0.0) || m == 0)
+        return 0.0;
+    const double x = m * w;
+    if (x < 0.1) {
+        const double x2 = x * x;
+        return x2 * (1.0 / 6.0 - x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0 - x2 / 362880.0))) / m;
+    }
+    return (x - sin(x)) / (m * x);
+}
+
+/* Moments of a hat of half-widths wl (left), wr (right) centred at 0:
+ * gc[m] = integral hat cos(m u) du, gs[m] = integral hat sin(m u) du. */
+typedef struct hat_moments {
+    double gc[4], gs[4];
+} hat_moments;
+
+static void hat_make(double wl, double wr, hat_moments *hm)
+{
+    for (int m = 0; m < 4; ++m) {
+        hm->gc[m] = tri_cos(wl, m) + tri_cos(wr, m);
+        hm->gs[m] = tri_sin(wr, m) - tri_sin(wl, m);
+    }
+}
+
+/* The three hats of a swath: first sample, interior, last sample. */
+static void swath_hats(const hfs_local_swath *sw, hat_moments hats[3])
+{
+    const double d = sw->dphi, b = sw->full ? d : 0.5 * d;
+    hat_make(b, sw->n == 1 ? b : d, &hats[0]);
+    hat_make(d, d, &hats[1]);
+    hat_make(sw->n == 1 ? b : d, b, &hats[2]);
+}
+
+static const hat_moments *sample_hat(const hfs_local_swath *sw, const hat_moments hats[3], int k)
+{
+    return k == 0 ? &hats[0] : (k == sw->n - 1 ? &hats[2] : &hats[1]);
+}
+
+/* A[r] of the hat hm centred at the azimuth (cos, sin) = (c, s). */
+static void weights_at(double c, double s, const hat_moments *hm, double A[HFS_SH_N])
+{
+    const double *gc = hm->gc, *gs = hm->gs;
+    double cm[4], sm[4];
+    cm[0] = 1.0;
+    sm[0] = 0.0;
+    cm[1] = c;
+    sm[1] = s;
+    for (int m = 2; m < 4; ++m) { /* angle addition */
+        cm[m] = cm[m - 1] * cm[1] - sm[m - 1] * sm[1];
+        sm[m] = sm[m - 1] * cm[1] + cm[m - 1] * sm[1];
+    }
+    for (int r = 0; r < HFS_SH_N; ++r) {
+        const int m = hfs_sh_order(r);
+        if (m == 0)
+            A[r] = gc[0];
+        else if (m > 0)
+            A[r] = cm[m] * gc[m] - sm[m] * gs[m];
+        else
+            A[r] = sm[-m] * gc[-m] + cm[-m] * gs[-m];
+    }
+}
+
+void hfs_local_sample_weights(const hfs_local_swath *sw, int k, double A[HFS_SH_N])
+{
+    hat_moments hats[3];
+    swath_hats(sw, hats);
+    weights_at(cos(sw->phi0 + k * sw->dphi), sin(sw->phi0 + k * sw->dphi),
+                   sample_hat(sw, hats, k), A);
+}
+
+void hfs_local_legendre_eval(const hfs_local_swath *sw, const double *E, const double *nlp,
+                             double V[HFS_SH_N])
+{
+    for (int r = 0; r < HFS_SH_N; ++r)
+        V[r] = 0.0;
+    hat_moments hats[3];
+    swath_hats(sw, hats);
+    for (int k = 0; k < sw->n; ++k) {
+        double A[HFS_SH_N];
+        weights_at(cos(sw->phi0 + k * sw->dphi), sin(sw->phi0 + k * sw->dphi),
+                   sample_hat(sw, hats, k), A);
+        const double *x = nlp + (size_t)k * HFS_NLP_N;
+        for (int r = 0; r < HFS_SH_N; ++r) {
+            const double *e = E + r * HFS_NLP_N;
+            V[r] += A[r] * (e[0] * x[0] + e[1] * x[1] + e[2] * x[2] + e[3] * x[3]);
+        }
+    }
+}
+
+/* ---- renderer ---------------------------------------------------------------------------- */
+
+typedef struct local_src {
+    hfs_local_light light;
+    double le[3];
+} local_src;
+
+typedef struct local_scratch {
+    /* full mode: per direction d, scale s, receiver x at [(d*N + s)*W + x] */
+    double *om, *co, *si;
+    double *floors;            /* full mode: nphi x W */
+    /* per sample */
+    double *slope;             /* N */
+    unsigned char *in_grid;    /* N */
+    double *lv_omega;          /* N */
+    double *om_k, *fl_k;       /* nphi: per-sample horizons / floors (tables) */
+} local_scratch;
+
+struct hfs_cpu_local {
+    const hfs_field *f;
+    int w, h, n_levels, nphi, threads;
+    hfs_local_swath_mode mode;
+    hfs_visibility_path path;
+    int row_pass;              /* full mode: horizons of the fixed directions per row */
+    double rho;                /* albedo */
+    double h_zonal[HFS_ZH_N];
+    double E[HFS_SH_N * HFS_NLP_N];
+    int n_src;
+    local_src src[HFS_MAX_LOCAL_LIGHTS];
+    hfs_horizon_scales *scales;
+    double *dist_world;        /* N: d_s dx */
+    hfs_local_swath full;      /* the full swath */
+    double *full_cs;           /* nphi x (c, s), snapped */
+    double *full_A;            /* nphi x 16 */
+    hfs_horizon_plan *plan;    /* row pass */
+    hfs_visibility *tables;    /* wedge-table path */
+    local_scratch *scratch;
+};
+
+static void free_scratch(local_scratch *s)
+{
+    free(s->om);
+    free(s->co);
+    free(s->si);
+    free(s->floors);
+    free(s->slope);
+    free(s->in_grid);
+    free(s->lv_omega);
+    free(s->om_k);
+    free(s->fl_k);
+}
+
+void hfs_cpu_local_destroy(hfs_cpu_local *lc)
+{
+    if (!lc)
+        return;
+    if (lc->scratch)
+        for (int t = 0; t < lc->threads; ++t)
+            free_scratch(&lc->scratch[t]);
+    free(lc->scratch);
+    hfs_horizon_scales_destroy(lc->scales);
+    hfs_horizon_plan_destroy(lc->plan);
+    hfs_visibility_destroy(lc->tables);
+    free(lc->dist_world);
+    free(lc->full_cs);
+    free(lc->full_A);
+    free(lc);
+}
+
+int hfs_cpu_local_create(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                         const hfs_cpu_local_options *opt, const hfs_cpu_pyramid *p,
+                         int threads, hfs_cpu_local **out, hfs_error *err)
+{
+    *out = NULL;
+    hfs_cpu_local_options o;
+    hfs_cpu_local_options_default(&o);
+    if (opt)
+        o = *opt;
+    int n_src = 0;
+    for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
+        n_src += hfs_cpu_local_contributes(&l->local[i]);
+    if (n_src == 0 || !(l->albedo > 0.0))
+        return HFS_OK;
+    if (q->nphi_local < 1 || threads < 1)
+        return hfs_fail(err, HFS_E_INVALID, "backend cpu: nphi_local=%d out of range", q->nphi_local);
+
+    hfs_cpu_local *lc = calloc(1, sizeof *lc);
+    if (!lc)
+        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
+    int rc = HFS_OK;
+    lc->f = f;
+    lc->w = f->width;
+    lc->h = f->height;
+    lc->nphi = q->nphi_local;
+    lc->threads = threads;
+    lc->mode = o.swath == HFS_LOCAL_SWATH_FULL ? HFS_LOCAL_SWATH_FULL : HFS_LOCAL_SWATH_PARTIAL;
+    lc->path = q->visibility == HFS_VIS_WEDGE_TABLE ? HFS_VIS_WEDGE_TABLE : HFS_VIS_LEGENDRE;
+    lc->row_pass = lc->mode == HFS_LOCAL_SWATH_FULL || lc->path == HFS_VIS_WEDGE_TABLE;
+    lc->rho = l->albedo;
+    hfs_zh_clamped_cosine(lc->h_zonal);
+    hfs_local_elevation_moments(lc->E);
+    for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i) {
+        if (!hfs_cpu_local_contributes(&l->local[i]))
+            continue;
+        local_src *s = &lc->src[lc->n_src++];
+        s->light = l->local[i];
+        for (int ch = 0; ch < 3; ++ch)
+            s->le[ch] = l->local[i].radiance[ch];
+    }
+
+    if ((rc = hfs_horizon_scales_create(p, f->dx, f->zscale, q->offset, &lc->scales, err)))
+        goto fail;
+    const int n = hfs_horizon_scales_count(lc->scales);
+    lc->n_levels = n;
+    lc->dist_world = malloc((size_t)n * sizeof *lc->dist_world);
+    const int nphi = lc->nphi;
+    lc->full.n = nphi;
+    lc->full.full = 1;
+    lc->full.phi0 = 0.0;
+    lc->full.dphi = 2.0 * PI / nphi;
+    lc->full_cs = malloc((size_t)nphi * 2 * sizeof *lc->full_cs);
+    lc->full_A = malloc((size_t)nphi * HFS_SH_N * sizeof *lc->full_A);
+    double *phi = malloc((size_t)nphi * sizeof *phi);
+    if (!lc->dist_world || !lc->full_cs || !lc->full_A || !phi) {
+        free(phi);
+        rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
+        goto fail;
+    }
+    for (int s = 0; s < n; ++s)
+        lc->dist_world[s] = hfs_horizon_scales_dist(lc->scales, s) * f->dx;
+    for (int k = 0; k < nphi; ++k) {
+        phi[k] = lc->full.phi0 + k * lc->full.dphi;
+        hfs_horizon_snap_dir(phi[k], &lc->full_cs[2 * k], &lc->full_cs[2 * k + 1]);
+        hfs_local_sample_weights(&lc->full, k, lc->full_A + (size_t)k * HFS_SH_N);
+    }
+    if (lc->row_pass)
+        rc = hfs_horizon_plan_create(p, f->dx, f->zscale, q->offset, phi, nphi, &lc->plan, err);
+    free(phi);
+    if (rc)
+        goto fail;
+    if (lc->path == HFS_VIS_WEDGE_TABLE) {
+        hfs_swath sw;
+        hfs_swath_full(nphi, &sw);
+        if ((rc = hfs_visibility_create(&sw, HFS_VIS_WEDGE_TABLE, &lc->tables, err)))
+            goto fail;
+    }
+
+    lc->scratch = calloc((size_t)threads, sizeof *lc->scratch);
+    if (!lc->scratch) {
+        rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
+        goto fail;
+    }
+    const size_t w = (size_t)lc->w, nn = (size_t)n, np = (size_t)nphi;
+    for (int t = 0; t < threads; ++t) {
+        local_scratch *s = &lc->scratch[t];
+        if (lc->row_pass) {
+            s->om = malloc(np * nn * w * sizeof *s->om);
+            s->co = malloc(np * nn * w * sizeof *s->co);
+            s->si = malloc(np * nn * w * sizeof *s->si);
+            s->floors = malloc(np * w * sizeof *s->floors);
+            if (!s->om || !s->co || !s->si || !s->floors) {
+                rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for local-light "
+                              "horizons (%d workers)", threads);
+                goto fail;
+            }
+        }
+        s->slope = malloc(nn * sizeof *s->slope);
+        s->in_grid = malloc(nn * sizeof *s->in_grid);
+        s->lv_omega = malloc(nn * sizeof *s->lv_omega);
+        s->om_k = malloc(np * sizeof *s->om_k);
+        s->fl_k = malloc(np * sizeof *s->fl_k);
+        if (!s->slope || !s->in_grid || !s->lv_omega || !s->om_k || !s->fl_k) {
+            rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
+            goto fail;
+        }
+    }
+    *out = lc;
+    return HFS_OK;
+
+fail:
+    hfs_cpu_local_destroy(lc);
+    return rc;
+}
+
+/* Full mode: per-scale horizons of row j in the fixed directions, with the
+ * cos/sin of each angle (shared by every light). */
+static void row_pass(const hfs_cpu_local *lc, local_scratch *s, int j, const double *normals)
+{
+    const size_t w = (size_t)lc->w, n = (size_t)lc->n_levels;
+    for (int d = 0; d < lc->nphi; ++d) {
+        const double c = lc->full_cs[2 * d], sn = lc->full_cs[2 * d + 1];
+        double *fl = s->floors + (size_t)d * w;
+        for (size_t x = 0; x < w; ++x)
+            fl[x] = hfs_horizon_floor(normals + 3 * x, c, sn);
+        double *om = s->om + (size_t)d * n * w;
+        hfs_horizon_row(lc->plan, d, j, fl, NULL, om);
+        double *co = s->co + (size_t)d * n * w, *si = s->si + (size_t)d * n * w;
+        for (size_t k = 0; k < n * w; ++k) {
+            co[k] = cos(om[k]);
+            si[k] = sin(om[k]);
+        }
+    }
+}
+
+/* Elevation clamped into [lo, hi] as (cos, sin): the ray whose entry distance
+ * decides whether a scale lies in front of the light. */
+typedef struct clamp_trig {
+    double lo, hi;
+    int have_lo, have_hi;
+    double clo, slo, chi, shi;
+} clamp_trig;
+
+static void clamp_dir(clamp_trig *ct, double om, double ce_om, double se_om, double *ce,
+                      double *se)
+{
+    if (om < ct->lo) {
+        if (!ct->have_lo) {
+            ct->clo = cos(ct->lo);
+            ct->slo = sin(ct->lo);
+            ct->have_lo = 1;
+        }
+        *ce = ct->clo;
+        *se = ct->slo;
+    } else if (om > ct->hi) {
+        if (!ct->have_hi) {
+            ct->chi = cos(ct->hi);
+            ct->shi = sin(ct->hi);
+            ct->have_hi = 1;
+        }
+        *ce = ct->chi;
+        *se = ct->shi;
+    } else {
+        *ce = ce_om;
+        *se = se_om;
+    }
+}
+
+/* NLP vector of the visible band (max(omega, lo), hi]. */
+static void band(double omega, double lo, double hi, double out[HFS_NLP_N])
+{
+    hfs_nlp_visible_band(omega > lo ? omega : lo, hi, out);
+}
+
+/* One light at one receiver: adds to lo[3]. */
+static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *src, int i,
+                  int j, const double p[3], const double n[3], const double hn[HFS_SH_N],
+                  double lo[3])
+{
+    hfs_local_view lv;
+    hfs_local_view_make(&src->light, p, &lv);
+    if (lv.inside) {
+        /* E = pi over the whole sphere, nothing in between (SPEC). */
+        for (int ch = 0; ch < 3; ++ch)
+            lo[ch] += lc->rho * src->le[ch];
+        return;
+    }
+    const double cos_beta = n[0] * lv.dir[0] + n[1] * lv.dir[1] + n[2] * lv.dir[2];
+    const double e_cap = hfs_cap_irradiance(cos_beta, lv.alpha);
+    if (!(e_cap > 0.0))
+        return;
+
+    double zh[HFS_ZH_N], l_sh[HFS_SH_N], m[HFS_SH_N];
+    hfs_zh_cap(lv.alpha, zh);
+    hfs_sh_rotate_zonal(zh, lv.dir[0], lv.dir[1], lv.dir[2], l_sh);
+    hfs_sh_product(hn, l_sh, m);
+
+    hfs_local_swath sw;
+    hfs_local_swath_make(&lv, lc->nphi, lc->mode, lc->path, &sw);
+    const int use_rows = sw.full && lc->row_pass;
+    /* Every sample meets the cap when the swath is partial or the light covers
+     * every azimuth: exact per-sample windows.  Otherwise the key-light
+     * window (a full swath around a light that does not surround). */
+    const int exact_window = !sw.full || lv.surround;
+    double glo = lv.elev_l - lv.alpha, ghi = lv.elev_l + lv.alpha;
+    glo = glo < -HALF_PI ? -HALF_PI : glo;
+    ghi = ghi > HALF_PI ? HALF_PI : ghi;
+    /* Farthest horizontal distance that can lie in front of the light: an
+     * entry point (on the sphere: <= rho_h + r) or a closest approach (<= d). */
+    const double reach = exact_window ? fmin(lv.d, lv.rho_h + lv.r) : lv.d;
+    const int nl = lc->n_levels;
+    int s_lo = 0; /* first scale within reach (distances fall with the index) */
+    while (s_lo < nl && lc->dist_world[s_lo] > reach)
+        ++s_lo;
+
+    hat_moments hats[3];
+    if (!sw.full)
+        swath_hats(&sw, hats);
+    double num = 0.0, den = 0.0, den_scale = 0.0;
+    for (int k = 0; k < sw.n; ++k) {
+        double c, sn;
+        const double phi = sw.phi0 + k * sw.dphi;
+        if (sw.full) {
+            c = lc->full_cs[2 * k];
+            sn = lc->full_cs[2 * k + 1];
+        } else {
+            hfs_horizon_snap_dir(phi, &c, &sn);
+        }
+        clamp_trig ct = {0};
+        int has_window = 1;
+        if (exact_window)
+            has_window = hfs_local_cap_window(&lv, c, sn, &ct.lo, &ct.hi);
+        else
+            ct.lo = glo, ct.hi = ghi;
+        const int tables = lc->path == HFS_VIS_WEDGE_TABLE;
+        if (!has_window) {
+            if (!tables)
+                continue; /* empty band: contributes 0 to num and den */
+            ct.lo = glo;  /* tables have no window; it only orients the */
+            ct.hi = ghi;  /* distance test below                          */
+        }
+        const double floor = use_rows ? s->floors[(size_t)k * lc->w + i]
+                                      : hfs_horizon_floor(n, c, sn);
+        /* With an exact window every ray tested enters the sphere, at a
+         * point of the sphere's section by this azimuth's half-plane, whose
+         * horizontal extent is [u - g, u + g]: scales nearer than u - g
+         * certainly count, scales beyond u + g certainly do not (the same
+         * decisions as the entry test, made without it). */
+        double t_near = -1.0;
+        int k_lo = s_lo;
+        if (exact_window) {
+            const double u = c * lv.v[0] + sn * lv.v[1], wp = -sn * lv.v[0] + c * lv.v[1];
+            const double g = sqrt(fmax(0.0, lv.r * lv.r - wp * wp));
+            t_near = u - g;
+            while (k_lo < nl && lc->dist_world[k_lo] > u + g)
+                ++k_lo;
+        }
+        /* Per-scale angles, cut at the light. */
+        double *om = s->lv_omega;
+        if (use_rows) {
+            const size_t base = (size_t)k * nl * lc->w + (size_t)i;
+            for (int t = 0; t < nl; ++t) {
+                const size_t at = base + (size_t)t * lc->w;
+                const double o = s->om[at];
+                double ce, se;
+                if (t < k_lo) {
+                    om[t] = floor;
+                    continue;
+                }
+                if (lc->dist_world[t] < t_near) {
+                    om[t] = o;
+                    continue;
+                }
+                clamp_dir(&ct, o, s->co[at], s->si[at], &ce, &se);
+                om[t] = lc->dist_world[t] <= hfs_local_entry_distance(&lv, c, sn, ce, se) ? o
+                                                                                         : floor;
+            }
+        } else {
+            for (int t = 0; t < k_lo; ++t)
+                om[t] = floor;
+            hfs_horizon_point_slopes(lc->scales, i, j, c, sn, k_lo, s->slope, s->in_grid);
+            for (int t = k_lo; t < nl; ++t) {
+                if (!s->in_grid[t]) {
+                    om[t] = floor;
+                    continue;
+                }
+                const double dd = s->slope[t], o = atan(dd);
+                if (lc->dist_world[t] < t_near) {
+                    om[t] = o;
+                    continue;
+                }
+                const double ce_o = 1.0 / sqrt(1.0 + dd * dd), se_o = dd * ce_o;
+                double ce, se;
+                clamp_dir(&ct, o, ce_o, se_o, &ce, &se);
+                om[t] = lc->dist_world[t] <= hfs_local_entry_distance(&lv, c, sn, ce, se) ? o
+                                                                                         : floor;
+            }
+        }
+        const double omega = hfs_horizon_bspline_max(om, nl, 1, floor);
+        if (tables) {
+            s->om_k[k] = omega;
+            s->fl_k[k] = floor;
+            continue;
+        }
+        /* Legendre: g = sum_r m_r A_k[r] E[r], then 4-dots with the bands. */
+        double a_loc[HFS_SH_N];
+        const double *A = a_loc;
+        if (sw.full)
+            A = lc->full_A + (size_t)k * HFS_SH_N;
+        else
+            weights_at(c, sn, sample_hat(&sw, hats, k), a_loc); /* snapped: < 1e-12 off */
+        double g[HFS_NLP_N] = {0.0, 0.0, 0.0, 0.0};
+        for (int r = 0; r < HFS_SH_N; ++r) {
+            const double wr = m[r] * A[r];
+            const double *e = lc->E + r * HFS_NLP_N;
+            g[0] += wr * e[0];
+            g[1] += wr * e[1];
+            g[2] += wr * e[2];
+            g[3] += wr * e[3];
+        }
+        double vb[HFS_NLP_N], ob[HFS_NLP_N];
+        band(omega, ct.lo, ct.hi, vb);
+        band(floor, ct.lo, ct.hi, ob);
+        for (int q = 0; q < HFS_NLP_N; ++q) {
+            num += g[q] * vb[q];
+            den += g[q] * ob[q];
+            den_scale += fabs(g[q] * ob[q]);
+        }
+    }
+    if (lc->path == HFS_VIS_WEDGE_TABLE) {
+        double vk[HFS_SH_N], vo[HFS_SH_N];
+        hfs_visibility_eval(lc->tables, s->om_k, vk);
+        hfs_visibility_eval(lc->tables, s->fl_k, vo);
+        num = hfs_sh_dot(vk, m);
+        den = hfs_sh_dot(vo, m);
+        den_scale = sqrt(hfs_sh_dot(m, m) * hfs_sh_dot(vo, vo));
+    }
+    double ratio;
+    if (num == den)
+        ratio = 1.0; /* no horizon above its floor: the unshadowed value */
+    else if (den > 1e-12 * den_scale)
+        ratio = fmin(1.0, fmax(0.0, num / den));
+    else
+        ratio = 0.0;
+    const double scale = lc->rho / PI * e_cap * ratio;
+    for (int ch = 0; ch < 3; ++ch)
+        lo[ch] += scale * src->le[ch];
+}
+
+void hfs_cpu_local_row(const hfs_cpu_local *lc, int worker, int j, const double *normals,
+                       double *lo_row)
+{
+    local_scratch *s = &lc->scratch[worker];
+    const hfs_field *f = lc->f;
+    for (int x = 0; x < 3 * lc->w; ++x)
+        lo_row[x] = 0.0;
+    if (lc->row_pass)
+        row_pass(lc, s, j, normals);
+    for (int i = 0; i < lc->w; ++i) {
+        const double *n = normals + 3 * i;
+        const double p[3] = {i * f->dx, j * f->dx, hfs_field_z(f, i, j) + LIFT * f->dx};
+        double hn[HFS_SH_N];
+        hfs_sh_rotate_zonal(lc->h_zonal, n[0], n[1], n[2], hn);
+        for (int q = 0; q < lc->n_src; ++q)
+            shade(lc, s, &lc->src[q], i, j, p, n, hn, lo_row + 3 * i);
+    }
+}

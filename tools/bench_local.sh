@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Local lights (issue 4): CPU reference (partial = default, and full swath)
+# against ground truth, cones and panel at 128x128, 1/3/8 lights.
+# usage: bench_local.sh BUILD_DIR [QUALITY FLAGS...]   (run from the repo root)
+set -euo pipefail
+B=$1; shift
+Q="$*"
+C=$B/bench-local; mkdir -p $C
+CONES=(64,64,12,2,100 20,20,6,1.5,60 100,110,25,3,150 50,110,4,1,40 110,60,8,1,50 70,15,3,1,30 30,70,15,2,80 90,80,30,4,200)
+PANEL=(48,48,7,1.5,50 80,20,6,1,40 20,80,9,2,60 112,100,3,0.8,30 60,90,8,1,50 16,16,6,1,40 100,48,10,2,80 40,110,5,1,40)
+$B/tools/hfgen cones --size 128x128 -o $C/cones.pfm
+$B/tools/hfgen panel --size 128x128 -o $C/panel.pfm
+echo "| scene | lights | swath | mean abs | RMSE | p99 abs | max abs | non-finite | rel. mean | cpu s (median of 5) | truth s |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
+for sc in cones panel; do
+  for n in 1 3 8; do
+    L=""; for ((i=0;i<n;i++)); do if [ $sc = cones ]; then L+=" --local ${CONES[$i]}"; else L+=" --local ${PANEL[$i]}"; fi; done
+    truth=$C/truth-$sc-$n.pfm
+    [ -s $truth ] || $B/tools/hfshade render --height $C/$sc.pfm $L --backend truth --truth-samples 1024 --pfm $truth 2> $C/truth-$sc-$n.log
+    tsec=$(sed -n 's/.*, \([0-9.]*\) s$/\1/p' $C/truth-$sc-$n.log)
+    for mode in partial full; do
+      out=$C/cpu-$sc-$n-$mode.pfm
+      $B/tests/bench_cpu_local --height $C/$sc.pfm $L $Q --swath $mode --repeat 5 --pfm $out 2> $C/cpu.log
+      csec=$(sed -n 's/.*median \([0-9.]*\) s.*/\1/p' $C/cpu.log)
+      read -r _ mean _ rmse _ p99 _ mx _ nf _ <<<"$($B/tools/hfshade compare --height $C/$sc.pfm $L $out $truth)"
+      rel=$(python3 - "$out" "$truth" <<'PY'
+import sys, array
+def rd(p):
+    f = open(p, 'rb'); t = f.readline().strip(); w, h = map(int, f.readline().split()); s = float(f.readline())
+    a = array.array('f'); a.frombytes(f.read())
+    if s > 0: a.byteswap()
+    return a
+a, b = rd(sys.argv[1]), rd(sys.argv[2])
+print('%.3e' % (sum(abs(x - y) for x, y in zip(a, b)) / sum(b)))
+PY
+)
+      echo "| $sc | $n | $mode | $mean | $rmse | $p99 | $mx | $nf | $rel | $csec | $tsec |"
+    done
+  done
+done
