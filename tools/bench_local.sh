@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Local lights (issue 4): CPU reference (partial = default, and full swath)
 # against ground truth, cones and panel at 128x128, 1/3/8 lights.
-# usage: bench_local.sh BUILD_DIR [QUALITY FLAGS...]   (run from the repo root)
+# usage: tools/bench_local.sh BUILD_DIR [QUALITY FLAGS...]
 set -euo pipefail
+cd "$(dirname "$0")/.."
 B=$1; shift
 Q="$*"
 C=$B/bench-local; mkdir -p $C
