@@ -22,6 +22,38 @@ int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
                      const hfs_quality *q, hfs_image *out,
                      hfs_progress_fn progress, void *user, hfs_error *err);
 
+/* GLES renderer (gles_*.c): the product, DESIGN.md "GLES path".  The object
+ * owns a GL context (made current on the creating thread and again at each
+ * render), every GPU resource and results cached between frames. */
+typedef struct hfs_gles hfs_gles;
+
+/* context: gl_context.h name (NULL = surfaceless); profile: gl_caps.h name
+ * or NULL (by precision).  HFS_E_CONTEXT/UNSUPPORTED/INVALID with one line. */
+int hfs_gles_create(const char *context, const char *profile, hfs_gles **out,
+                    hfs_error *err);
+void hfs_gles_destroy(hfs_gles *g);
+/* "surfaceless" or "osmesa"; hfs_gl_context_describe() of the context. */
+const char *hfs_gles_context_name(const hfs_gles *g);
+const char *hfs_gles_describe(const hfs_gles *g);
+int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
+                    const hfs_quality *q, hfs_image *out, hfs_error *err);
+void hfs_gles_set_timing(hfs_gles *g, int level);
+void hfs_gles_get_timings(const hfs_gles *g, hfs_timings *t);
+void hfs_gles_invalidate(hfs_gles *g);
+
+/* Facts about the last GLES frame, for tests and tools. */
+typedef struct hfs_gles_stats {
+    double height_split_err;   /* max |hi + lo - v| of the upload (normalized) */
+    double height_scale;       /* hscale: normalized units -> height units     */
+    long offset_mismatches;    /* (dir, scale) samples whose float offset
+                                  classification differs from the CPU's       */
+    int terrain_recomputed;    /* pyramid/normals ran this frame              */
+    int env_recomputed;        /* env pass ran this frame                     */
+    char profile[16];
+    int fp32;
+} hfs_gles_stats;
+void hfs_gles_get_stats(const hfs_gles *g, hfs_gles_stats *s);
+
 /* Exact unshadowed Lo (V = 1 everywhere) of the same scene: the normalizer of
  * SPEC's error metrics.  Environment exactly through SH (band-limited), key and
  * local lights by the exact cap-irradiance formula. */

@@ -66,3 +66,6 @@ target_include_directories(hfs_gl PUBLIC ${HFS_GL_DIR} ${HFS_GLES3_INCLUDE_DIR})
 target_compile_definitions(hfs_gl PRIVATE HFS_BUILDING_LIBRARY
                            PUBLIC GL_GLES_PROTOTYPES=0)
 target_link_libraries(hfs_gl PUBLIC hfs_base)
+
+# The GLES renderer backend built on this library (issue 3).
+include(${HFS_GL_DIR}/gles.cmake)

@@ -196,6 +196,11 @@ typedef struct hfs_renderer_desc {
     hfs_backend backend;     /* HFS_BACKEND_DEFAULT: see hfs_backend         */
     const char *context;     /* GLES only: "surfaceless" (default), "osmesa",
                                 "auto"; NULL = default                        */
+    const char *gl_profile;  /* GLES only: target profile the renderer keeps
+                                to whatever the driver offers: "es30-half"
+                                (the product), "es30-float", "es32"; NULL =
+                                by precision (fp16: es30-half, fp32:
+                                es30-float).  See runtime/gl_caps.h.          */
 } hfs_renderer_desc;
 
 HFS_API int hfs_renderer_create(const hfs_renderer_desc *desc, hfs_renderer **out,
@@ -213,6 +218,48 @@ HFS_API int hfs_renderer_render(hfs_renderer *r, const hfs_field *field,
                                 const hfs_quality *quality, hfs_image *out,
                                 hfs_progress_fn progress, void *user,
                                 hfs_error *err);
+
+/* ---- measurement ------------------------------------------------------------ */
+
+#define HFS_MAX_PASSES 16
+
+/* One pass of the last frame.  GLES passes, in order: "upload" (heights to
+ * the GPU), "normals", "decimate" (pyramid, fine to coarse), "reconstruct"
+ * (B-spline to full resolution), "env" (environment horizons + SH
+ * visibility), "key" (key-light horizons), "shade", "readback".  The CPU and
+ * truth backends report one pass, "render". */
+typedef struct hfs_pass_time {
+    char name[16];
+    double ms;          /* GPU time of the pass (see hfs_timings.method)       */
+    double fetches;     /* texture fetches: counted for env/key at timing level
+                           2, otherwise the pass's fixed count (env/key: -1)  */
+    int cached;         /* 1: not run, its result from an earlier frame was
+                           still valid (same terrain and settings)            */
+} hfs_pass_time;
+
+typedef struct hfs_timings {
+    int n_passes;
+    hfs_pass_time pass[HFS_MAX_PASSES];
+    double gpu_ms;            /* sum of the passes                            */
+    double frame_ms;          /* wall time of hfs_renderer_render             */
+    size_t texture_bytes;     /* GPU texture memory the renderer holds        */
+    char method[24];          /* "timer-query" (GL timestamps around each
+                                 pass), "finish-clock" (glFinish + monotonic
+                                 clock) or "wall" (CPU backends)             */
+    char device[160];         /* GL context/renderer, or "cpu"                */
+} hfs_timings;
+
+/* level 0: off (default); 1: per-pass times; 2: also count the texture
+ * fetches of the horizon passes (re-runs them with counting shaders after
+ * the frame: slower, and the next frame recomputes the environment).
+ * Timing adds synchronization, so timed frames are a little slower. */
+HFS_API int hfs_renderer_set_timing(hfs_renderer *r, int level);
+/* Timings of the last frame rendered with timing on (zeroed if none). */
+HFS_API int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out);
+/* Forget results cached from earlier frames (GLES: the pyramid, normals and
+ * environment visibility are reused while the terrain and settings do not
+ * change); the next frame recomputes everything.  For benchmarks. */
+HFS_API void hfs_renderer_invalidate(hfs_renderer *r);
 
 /* Validation used by hfs_renderer_render, exposed for tools and tests. */
 HFS_API int hfs_validate_inputs(const hfs_field *field, const hfs_lighting *lighting,

@@ -5,12 +5,24 @@
 #include "backends.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 struct hfs_renderer {
     hfs_backend backend;
+    hfs_gles *gles;          /* HFS_BACKEND_GLES only */
+    int timing;
+    hfs_timings timings;     /* CPU backends: the last timed frame */
 };
+
+static double wall_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
 
 static const char *backend_name(hfs_backend b)
 {
@@ -28,27 +40,62 @@ int hfs_renderer_create(const hfs_renderer_desc *desc, hfs_renderer **out, hfs_e
     hfs_backend b = desc ? desc->backend : HFS_BACKEND_DEFAULT;
     if (b == HFS_BACKEND_DEFAULT)
         b = HFS_BACKEND_CPU;
-    if (b == HFS_BACKEND_GLES)
-        return hfs_fail(err, HFS_E_UNSUPPORTED,
-                        "backend gles: the GLES renderer is not built yet (use --backend cpu)");
-    if (b != HFS_BACKEND_CPU && b != HFS_BACKEND_TRUTH)
+    if (b != HFS_BACKEND_CPU && b != HFS_BACKEND_TRUTH && b != HFS_BACKEND_GLES)
         return hfs_fail(err, HFS_E_INVALID, "backend %d: unknown", (int)b);
     hfs_renderer *r = calloc(1, sizeof *r);
     if (!r)
         return hfs_fail(err, HFS_E_NOMEM, "renderer: out of memory");
     r->backend = b;
+    if (b == HFS_BACKEND_GLES) {
+        int rc = hfs_gles_create(desc ? desc->context : NULL, desc ? desc->gl_profile : NULL,
+                                 &r->gles, err);
+        if (rc) {
+            free(r);
+            return rc;
+        }
+    }
     *out = r;
     return HFS_OK;
 }
 
 void hfs_renderer_destroy(hfs_renderer *r)
 {
+    if (!r)
+        return;
+    hfs_gles_destroy(r->gles);
     free(r);
 }
 
 const char *hfs_renderer_backend_name(const hfs_renderer *r)
 {
     return backend_name(r->backend);
+}
+
+int hfs_renderer_set_timing(hfs_renderer *r, int level)
+{
+    if (!r || level < 0 || level > 2)
+        return HFS_E_INVALID;
+    r->timing = level;
+    if (r->gles)
+        hfs_gles_set_timing(r->gles, level);
+    return HFS_OK;
+}
+
+int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out)
+{
+    if (!r || !out)
+        return HFS_E_INVALID;
+    if (r->gles)
+        hfs_gles_get_timings(r->gles, out);
+    else
+        *out = r->timings;
+    return HFS_OK;
+}
+
+void hfs_renderer_invalidate(hfs_renderer *r)
+{
+    if (r && r->gles)
+        hfs_gles_invalidate(r->gles);
 }
 
 static int finite3(const float v[3])
@@ -139,6 +186,7 @@ int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
         return rc;
     if (!out || !out->rgb || out->width != f->width || out->height != f->height)
         return hfs_fail(err, HFS_E_INVALID, "render: output image is not %dx%d", f->width, f->height);
+    const double t0 = wall_ms();
     switch (r->backend) {
     case HFS_BACKEND_CPU:
         rc = hfs_cpu_render(f, l, q, out, progress, user, err);
@@ -146,11 +194,26 @@ int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
     case HFS_BACKEND_TRUTH:
         rc = hfs_truth_render(f, l, q, out, progress, user, err);
         break;
+    case HFS_BACKEND_GLES:
+        rc = hfs_gles_render(r->gles, f, l, q, out, err);
+        if (!rc && progress)
+            progress(user, 1.0);
+        break;
     default:
         return hfs_fail(err, HFS_E_UNSUPPORTED, "backend %s: not available", backend_name(r->backend));
     }
     if (rc)
         return rc;
+    if (r->timing && !r->gles) {
+        hfs_timings *t = &r->timings;
+        memset(t, 0, sizeof *t);
+        t->n_passes = 1;
+        snprintf(t->pass[0].name, sizeof t->pass[0].name, "render");
+        t->pass[0].ms = t->gpu_ms = t->frame_ms = wall_ms() - t0;
+        t->pass[0].fetches = -1.0;
+        snprintf(t->method, sizeof t->method, "wall");
+        snprintf(t->device, sizeof t->device, "%s", backend_name(r->backend));
+    }
     return check_output(out, backend_name(r->backend), err);
 }
 

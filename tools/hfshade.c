@@ -33,6 +33,7 @@ typedef struct cli {
     const char *positional[2];
     int n_positional;
     double exposure;
+    int time_frames; /* --time N: timed frames after one warm-up, 0 = off */
     int colormap; /* 0 none, 1 terrain */
     int quiet;
     hfs_scene scene;
@@ -46,6 +47,7 @@ static void usage(FILE *f)
             "       hfshade keys\n"
             "       hfshade info [--context surfaceless|osmesa|auto]\n"
             "options: --exposure F (PNG only, default 1), --colormap none|terrain (PNG only),\n"
+            "         --time N (render N full frames after a warm-up; print per-pass medians),\n"
             "         --quiet, --help\n"
             "scene keys (also accepted in SCENE.ini as KEY = VALUE): run 'hfshade keys'\n");
 }
@@ -126,6 +128,12 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
             c->out_png = v;
         } else if (!strcmp(name, "pfm")) {
             c->out_pfm = v;
+        } else if (!strcmp(name, "time")) {
+            char *end;
+            long n = strtol(v, &end, 10);
+            if (end == v || *end || n < 1 || n > 10000)
+                return hfs_fail(err, HFS_E_INVALID, "--time: '%s' is not a frame count in [1, 10000]", v);
+            c->time_frames = (int)n;
         } else if (!strcmp(name, "colormap")) {
             if (!strcmp(v, "terrain"))
                 c->colormap = 1;
@@ -233,6 +241,55 @@ static void apply_terrain_colormap(hfs_image *img, const hfs_heightmap *hm)
     }
 }
 
+static int cmp_dbl(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median_of(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_dbl);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* --time N: one warm-up frame, then N full frames (caches invalidated so every
+ * pass runs), per-pass medians on stdout.  The image of the last frame is
+ * what gets written. */
+static int time_frames(const cli *c, hfs_renderer *r, const scene_inputs *in, hfs_image *img,
+                       hfs_error *err)
+{
+    const int n = c->time_frames;
+    double *ms = calloc((size_t)n * (HFS_MAX_PASSES + 2), sizeof *ms);
+    if (!ms)
+        return hfs_fail(err, HFS_E_NOMEM, "--time: out of memory");
+    hfs_timings t = {0};
+    int rc = hfs_renderer_set_timing(r, 1);
+    for (int f = -1; f < n && !rc; ++f) {
+        hfs_renderer_invalidate(r);
+        rc = hfs_renderer_render(r, &in->field, &in->lighting, &in->quality, img, NULL, NULL, err);
+        if (rc || f < 0)
+            continue;
+        hfs_renderer_timings(r, &t);
+        for (int p = 0; p < t.n_passes; ++p)
+            ms[(size_t)p * n + f] = t.pass[p].ms;
+        ms[(size_t)HFS_MAX_PASSES * n + f] = t.gpu_ms;
+        ms[(size_t)(HFS_MAX_PASSES + 1) * n + f] = t.frame_ms;
+    }
+    if (!rc) {
+        printf("timing: %s, %dx%d, %d frames after 1 warm-up, method %s\n", t.device,
+               in->field.width, in->field.height, n, t.method);
+        printf("%-12s %10s\n", "pass", "median ms");
+        for (int p = 0; p < t.n_passes; ++p)
+            printf("%-12s %10.3f\n", t.pass[p].name, median_of(ms + (size_t)p * n, n));
+        printf("%-12s %10.3f\n", "passes", median_of(ms + (size_t)HFS_MAX_PASSES * n, n));
+        printf("%-12s %10.3f\n", "frame", median_of(ms + (size_t)(HFS_MAX_PASSES + 1) * n, n));
+        printf("texture memory: %.2f MiB (%zu bytes)\n", t.texture_bytes / 1048576.0, t.texture_bytes);
+    }
+    free(ms);
+    return rc;
+}
+
 static int cmd_render(const cli *c, hfs_error *err)
 {
     if (!c->out_png && !c->out_pfm)
@@ -255,8 +312,11 @@ static int cmd_render(const cli *c, hfs_error *err)
     int last_pct = -1;
     const int show = !c->quiet && isatty(STDERR_FILENO);
     const double t0 = now_seconds();
-    rc = hfs_renderer_render(r, &in.field, &in.lighting, &in.quality, &img,
-                             show ? progress_bar : NULL, &last_pct, err);
+    if (c->time_frames)
+        rc = time_frames(c, r, &in, &img, err);
+    else
+        rc = hfs_renderer_render(r, &in.field, &in.lighting, &in.quality, &img,
+                                 show ? progress_bar : NULL, &last_pct, err);
     const double t1 = now_seconds();
     if (rc)
         goto out;
@@ -273,7 +333,7 @@ static int cmd_render(const cli *c, hfs_error *err)
             goto out;
         }
     }
-    if (!c->quiet)
+    if (!c->quiet && !c->time_frames)
         fprintf(stderr, "%s: %dx%d, backend %s, %.3f s\n", c->out_png ? c->out_png : c->out_pfm,
                 in.field.width, in.field.height, hfs_renderer_backend_name(r), t1 - t0);
 out:

@@ -1,0 +1,191 @@
+/*
+ * gl_caps.c — see gl_caps.h.
+ */
+#include "gl_caps.h"
+
+#include <stdio.h>
+#include <string.h>
+
+/* ES 3.0 minimum maximums (OpenGL ES 3.0.6, table 6.28ff): what every
+ * conformant ES 3.0 device guarantees, hence the es30 profiles' caps. */
+#define ES30_MAX_TEXTURE_SIZE 2048
+#define ES30_MAX_ARRAY_TEXTURE_LAYERS 256
+#define ES30_MAX_DRAW_BUFFERS 4
+#define ES30_MAX_UNIFORM_BLOCK_SIZE 16384
+#define ES30_MAX_FRAGMENT_UNIFORM_BLOCKS 12
+#define ES30_MAX_UNIFORM_BUFFER_BINDINGS 24
+#define ES30_MAX_TEXTURE_IMAGE_UNITS 16
+#define ES30_UNIFORM_BUFFER_OFFSET_ALIGNMENT 256 /* the largest allowed value */
+
+static int geti(const hfs_gl *gl, GLenum pname)
+{
+    GLint v = 0;
+    gl->GetIntegerv(pname, &v);
+    return (int)v;
+}
+
+void hfs_gl_caps_query(const hfs_gl *gl, hfs_gl_driver *d)
+{
+    memset(d, 0, sizeof *d);
+    d->is_es = gl->is_es;
+    d->major = gl->major;
+    d->minor = gl->minor;
+    if (gl->is_es) {
+        const int es32 = gl->major > 3 || (gl->major == 3 && gl->minor >= 2);
+        d->color_buffer_float = es32 || hfs_gl_has_extension(gl, "GL_EXT_color_buffer_float");
+        d->color_buffer_half_float =
+            d->color_buffer_float || hfs_gl_has_extension(gl, "GL_EXT_color_buffer_half_float");
+        d->texture_float_linear = hfs_gl_has_extension(gl, "GL_OES_texture_float_linear");
+        d->float_blend = hfs_gl_has_extension(gl, "GL_EXT_float_blend");
+    } else {
+        /* Desktop >= 3.3 core: float formats renderable and filterable. */
+        d->color_buffer_float = d->color_buffer_half_float = d->texture_float_linear = 1;
+        d->float_blend = 1;
+    }
+    d->timer_query = gl->timer_query;
+    d->max_texture_size = geti(gl, GL_MAX_TEXTURE_SIZE);
+    d->max_array_texture_layers = geti(gl, GL_MAX_ARRAY_TEXTURE_LAYERS);
+    const int db = geti(gl, GL_MAX_DRAW_BUFFERS), ca = geti(gl, GL_MAX_COLOR_ATTACHMENTS);
+    d->max_draw_buffers = db < ca ? db : ca;
+    d->max_uniform_block_size = geti(gl, GL_MAX_UNIFORM_BLOCK_SIZE);
+    d->max_fragment_uniform_blocks = geti(gl, GL_MAX_FRAGMENT_UNIFORM_BLOCKS);
+    d->max_uniform_buffer_bindings = geti(gl, GL_MAX_UNIFORM_BUFFER_BINDINGS);
+    d->max_texture_image_units = geti(gl, GL_MAX_TEXTURE_IMAGE_UNITS);
+    d->uniform_buffer_offset_alignment = geti(gl, GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT);
+    for (int i = 0; i < 16 && gl->GetError() != GL_NO_ERROR; ++i)
+        ; /* an unknown pname on an odd driver must not leak an error */
+}
+
+const char *hfs_gl_profile_names(void)
+{
+    return "es30-half, es30-float, es32";
+}
+
+static int cap(int driver, int profile)
+{
+    return profile > 0 && driver > profile ? profile : driver;
+}
+
+int hfs_gl_caps_select(const hfs_gl_driver *d, const char *profile, int want_fp32,
+                       hfs_gl_caps *c, hfs_error *err)
+{
+    if (!profile)
+        profile = want_fp32 ? "es30-float" : "es30-half";
+    int float_profile, es30;
+    if (!strcmp(profile, "es30-half"))
+        float_profile = 0, es30 = 1;
+    else if (!strcmp(profile, "es30-float"))
+        float_profile = 1, es30 = 1;
+    else if (!strcmp(profile, "es32"))
+        float_profile = 0, es30 = 0;
+    else
+        return hfs_fail(err, HFS_E_INVALID, "profile \"%.40s\": unknown (known: %s)", profile,
+                        hfs_gl_profile_names());
+    if (want_fp32 && es30 && !float_profile)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "profile es30-half: precision fp32 needs float "
+                        "render targets (profile es30-float or es32)");
+    const int fp32 = float_profile || want_fp32; /* features the profile must have */
+
+    if (d->is_es && (d->major < 3))
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "profile %s: OpenGL ES %d.%d, need 3.0", profile,
+                        d->major, d->minor);
+    if (!es30 && d->is_es && d->major == 3 && d->minor < 2)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "profile es32: this driver offers OpenGL ES "
+                        "%d.%d only", d->major, d->minor);
+    if (!d->color_buffer_half_float)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "profile %s: GL_EXT_color_buffer_half_float "
+                        "is not offered by this driver (fp16 render targets)", profile);
+    if (!es30 && d->is_es && !d->color_buffer_float)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "profile es32: float render targets (core in "
+                        "ES 3.2) are not offered by this driver");
+    if (fp32 && !d->color_buffer_float)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "profile %s: GL_EXT_color_buffer_float is not "
+                        "offered by this driver (fp32 render targets)", profile);
+    if (fp32 && !d->texture_float_linear)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "profile %s: GL_OES_texture_float_linear is "
+                        "not offered by this driver (fp32 filtering)", profile);
+
+    hfs_gl_caps out;
+    memset(&out, 0, sizeof out);
+    snprintf(out.profile, sizeof out.profile, "%s", profile);
+    out.driver = *d;
+    out.fp32 = want_fp32 != 0;
+    out.fmt_r = out.fp32 ? GL_R32F : GL_R16F;
+    out.fmt_rg = out.fp32 ? GL_RG32F : GL_RG16F;
+    out.fmt_rgba = out.fp32 ? GL_RGBA32F : GL_RGBA16F;
+    out.type_upload = out.fp32 ? GL_FLOAT : GL_HALF_FLOAT;
+    out.bytes_r = out.fp32 ? 4 : 2;
+    out.bytes_rg = out.fp32 ? 8 : 4;
+    out.bytes_rgba = out.fp32 ? 16 : 8;
+    out.max_texture_size = cap(d->max_texture_size, es30 ? ES30_MAX_TEXTURE_SIZE : 0);
+    out.max_array_texture_layers =
+        cap(d->max_array_texture_layers, es30 ? ES30_MAX_ARRAY_TEXTURE_LAYERS : 0);
+    out.max_draw_buffers = cap(d->max_draw_buffers, es30 ? ES30_MAX_DRAW_BUFFERS : 0);
+    out.max_uniform_block_size =
+        cap(d->max_uniform_block_size, es30 ? ES30_MAX_UNIFORM_BLOCK_SIZE : 0);
+    out.max_fragment_uniform_blocks =
+        cap(d->max_fragment_uniform_blocks, es30 ? ES30_MAX_FRAGMENT_UNIFORM_BLOCKS : 0);
+    out.max_uniform_buffer_bindings =
+        cap(d->max_uniform_buffer_bindings, es30 ? ES30_MAX_UNIFORM_BUFFER_BINDINGS : 0);
+    out.max_texture_image_units =
+        cap(d->max_texture_image_units, es30 ? ES30_MAX_TEXTURE_IMAGE_UNITS : 0);
+    /* Alignment is a minimum the application must honour: the larger of
+     * the two is the safe one. */
+    out.uniform_buffer_offset_alignment = d->uniform_buffer_offset_alignment;
+    if (es30 && out.uniform_buffer_offset_alignment < ES30_UNIFORM_BUFFER_OFFSET_ALIGNMENT)
+        out.uniform_buffer_offset_alignment = ES30_UNIFORM_BUFFER_OFFSET_ALIGNMENT;
+    if (out.uniform_buffer_offset_alignment < 1)
+        out.uniform_buffer_offset_alignment = 1;
+    out.timer_query = d->timer_query;
+    if (out.max_texture_size < 1 || out.max_array_texture_layers < 1 || out.max_draw_buffers < 1 ||
+        out.max_uniform_block_size < 1 || out.max_texture_image_units < 1)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "profile %s: the driver reports no usable "
+                        "limits (texture %d, layers %d, draw buffers %d, uniform block %d)",
+                        profile, out.max_texture_size, out.max_array_texture_layers,
+                        out.max_draw_buffers, out.max_uniform_block_size);
+    *c = out;
+    return HFS_OK;
+}
+
+int hfs_gl_caps_check_texture(const hfs_gl_caps *c, int w, int h, int layers,
+                              const char *what, hfs_error *err)
+{
+    if (w > c->max_texture_size || h > c->max_texture_size)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: %dx%d texture exceeds the %s limit %d "
+                        "(GL_MAX_TEXTURE_SIZE; driver %d)", what, w, h, c->profile,
+                        c->max_texture_size, c->driver.max_texture_size);
+    if (layers > c->max_array_texture_layers)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: %d array layers exceed the %s limit %d "
+                        "(GL_MAX_ARRAY_TEXTURE_LAYERS; driver %d)", what, layers, c->profile,
+                        c->max_array_texture_layers, c->driver.max_array_texture_layers);
+    return HFS_OK;
+}
+
+int hfs_gl_caps_check_uniform_block(const hfs_gl_caps *c, size_t bytes, const char *what,
+                                    hfs_error *err)
+{
+    if (bytes > (size_t)c->max_uniform_block_size)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: needs a %zu-byte uniform block, the %s "
+                        "limit is %d (GL_MAX_UNIFORM_BLOCK_SIZE; driver %d)", what, bytes,
+                        c->profile, c->max_uniform_block_size, c->driver.max_uniform_block_size);
+    return HFS_OK;
+}
+
+int hfs_gl_caps_check_draw_buffers(const hfs_gl_caps *c, int n, const char *what,
+                                   hfs_error *err)
+{
+    if (n > c->max_draw_buffers)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: needs %d draw buffers, the %s limit is %d "
+                        "(GL_MAX_DRAW_BUFFERS; driver %d)", what, n, c->profile,
+                        c->max_draw_buffers, c->driver.max_draw_buffers);
+    return HFS_OK;
+}
+
+int hfs_gl_caps_check_samplers(const hfs_gl_caps *c, int n, const char *what, hfs_error *err)
+{
+    if (n > c->max_texture_image_units)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: needs %d texture units, the %s limit is %d "
+                        "(GL_MAX_TEXTURE_IMAGE_UNITS; driver %d)", what, n, c->profile,
+                        c->max_texture_image_units, c->driver.max_texture_image_units);
+    return HFS_OK;
+}

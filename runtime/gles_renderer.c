@@ -1,0 +1,1380 @@
+/*
+ * gles_renderer.c — the GLES renderer backend (backends.h), DESIGN.md "GLES
+ * path": the algorithm of the CPU reference (cpu_*.c) on OpenGL ES 3.0 with
+ * fp16 textures.
+ *
+ * A frame, pass by pass (each a small shader of shaders_es/, drawn as one
+ * fullscreen triangle into a framebuffer object):
+ *   upload       normalized heights as fp16 hi+lo pairs (gles_setup.c) into
+ *                the input texture and the last layer of the level array;
+ *   normals      full resolution, RGBA (nx hi/lo, ny hi/lo);
+ *   decimate     levels N-2 .. lmin, each from the next finer (bilinear);
+ *   reconstruct  levels lmin .. N-2 to the full grid (B-spline, 4 fetches),
+ *                layers of one RG 2D array texture;
+ *   env          horizons + SH visibility on the visibility grid, 4 RGBA MRT;
+ *   key          per key light, horizon excess per swath direction;
+ *   shade        full resolution: H(N), products, lights -> RGB;
+ *   readback     RGBA -> hfs_image (the power-of-two output scale divided out).
+ * upload..env depend only on the terrain and the settings: they are skipped
+ * while those do not change (the heights are compared with a kept copy).
+ *
+ * Every format/limit decision goes through gl_caps.h; every GL call through
+ * the hfs_gl table of the renderer's own context, which is made current at
+ * each call.  Nothing is printed; nothing is global.
+ */
+#include "backends.h"
+#include "cpu_visibility.h"
+#include "field_geom.h"
+#include "gl_caps.h"
+#include "gl_context.h"
+#include "gl_shaders.h"
+#include "gl_util.h"
+#include "gles_setup.h"
+#include "lights.h"
+#include "sh.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+/* The generated GLSL SH product (runtime/gles.cmake embeds
+ * sh_product.glsl.inc), NUL-terminated. */
+extern const char hfs_gles_sh_product_src[];
+
+#define PI 3.14159265358979323846
+#define MAX_PROGRAMS 64
+#define MAX_TABLE_CACHE 12
+#define TABLE_N HFS_VIS_TABLE_SIZE
+#define MAX_KEYS HFS_MAX_KEY_LIGHTS
+#define DIRS_PER_KEY_PASS 8 /* 4 RGBA targets (ES 3.0's minimum) x 2 (hi, lo) pairs */
+
+enum pass_id { P_UPLOAD, P_NORMALS, P_DECIMATE, P_RECON, P_ENV, P_KEY, P_SHADE, P_READBACK,
+               P_COUNT };
+static const char *const pass_names[P_COUNT] = {"upload", "normals", "decimate", "reconstruct",
+                                                "env", "key", "shade", "readback"};
+
+/* Texture units and uniform-block bindings shared by all passes. */
+enum { U_LEVELS = 0, U_NORMALS = 1, U_TAB = 2, U_V0 = 2, U_KEYHZ = 6, U_KTAB = 7, U_KTABB = 8,
+       U_SRC = 0, U_VSRC = 4 };
+#define RECON_MRT 4 /* levels per y pass: ES 3.0's minimum draw buffers */
+enum { B_SCALES = 0, B_SWATH = 1, B_SHADE = 2, B_KEYS = 3 };
+enum { UBO_SCALES, UBO_ENV, UBO_KEYSWATH, UBO_SHADE, UBO_KEYS, UBO_COUNT };
+
+typedef struct program {
+    char key[224];
+    GLuint id;
+} program;
+
+typedef struct table_entry {
+    double dphi;
+    hfs_wedge_tables *t;
+    unsigned long used;
+} table_entry;
+
+/* GPU resources for one configuration (field size, levels, grid, precision). */
+typedef struct resources {
+    int valid;
+    int w, h, n_levels, lmin, n_layers, vw, vh, fp32;
+    GLuint input;
+    GLuint lev[HFS_GLES_MAX_LEVELS], lev_fbo[HFS_GLES_MAX_LEVELS];
+    GLuint half[HFS_GLES_MAX_LEVELS], half_fbo[HFS_GLES_MAX_LEVELS]; /* W x lh */
+    GLuint arr, arr_fbo[HFS_GLES_MAX_LEVELS];
+    GLuint arr_mrt_fbo[HFS_GLES_MAX_LEVELS]; /* layers 4g..4g+3 as 4 targets */
+    GLuint normals, normals_fbo;
+    GLuint venv[4], venv_fbo;
+    GLuint keyhz, keyhz_fbo;
+    int keyhz_layers;
+    GLuint out[2], out_fbo; /* RGB hi, lo: drawn together */
+    GLuint out_lo_fbo;      /* lo alone as attachment 0, for the readback */
+    size_t bytes, keyhz_bytes;
+} resources;
+
+/* One key light of the frame. */
+typedef struct frame_key {
+    hfs_gles_key k;
+    hfs_visibility *vis;
+    size_t swath_off;  /* bytes into UBO_KEYSWATH */
+    size_t swath_size; /* bytes */
+    int rec_off;       /* vec4 into HfsKeys */
+} frame_key;
+
+struct hfs_gles {
+    hfs_gl_context *ctx;
+    hfs_gl gl;
+    hfs_gl_driver driver;
+    hfs_gl_caps caps;
+    char profile[16]; /* "" = by precision */
+    GLuint vao;
+    GLuint ubo[UBO_COUNT];
+    GLuint queries[2 * P_COUNT];
+    int have_queries;
+    program progs[MAX_PROGRAMS];
+    int n_progs;
+    resources r;
+
+    /* Terrain cache: what upload..reconstruct were computed from. */
+    int terrain_valid;
+    float *terrain_z;
+    size_t terrain_cap;
+    int t_w, t_h, t_k, t_offset, t_fp32;
+    double t_dx, t_zscale;
+
+    /* Environment cache: what the env pass was computed from. */
+    int env_valid;
+    int e_n, e_path, e_sub;
+    hfs_visibility *env_vis;
+    int env_vis_n;
+
+    /* Wedge tables (CPU, cached by dphi) and their textures. */
+    table_entry tables[MAX_TABLE_CACHE];
+    unsigned long table_clock;
+    GLuint env_tab;
+    double env_tab_dphi;
+    GLuint ktab, ktabb;
+    int ktab_sets;
+    double ktab_dphi[MAX_KEYS];
+    size_t table_bytes;
+    int tab_fp32;          /* format of env_tab/ktab/ktabb */
+
+    /* Timing. */
+    int timing;
+    double pass_ms[P_COUNT], pass_fetch[P_COUNT];
+    int pass_ran[P_COUNT], pass_cached[P_COUNT];
+    double pass_t0[P_COUNT];
+    hfs_timings last;
+    hfs_gles_stats stats;
+    char *scratch;
+    size_t scratch_cap;
+};
+
+/* ---- small helpers ------------------------------------------------------------ */
+
+static double now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+static void *scratch(hfs_gles *g, size_t bytes)
+{
+    if (bytes > g->scratch_cap) {
+        char *p = realloc(g->scratch, bytes);
+        if (!p)
+            return NULL;
+        g->scratch = p;
+        g->scratch_cap = bytes;
+    }
+    return g->scratch;
+}
+
+static int any_positive3f(const float v[3])
+{
+    return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f;
+}
+
+/* cpu_render.c key_contributes: the same lights contribute on both paths. */
+static int key_contributes(const hfs_key_light *k, double albedo)
+{
+    if (k->disabled || !any_positive3f(k->radiance))
+        return 0;
+    const double le = fmax(k->radiance[0], fmax(k->radiance[1], k->radiance[2]));
+    return albedo / PI * le * hfs_cap_irradiance(1.0, k->alpha) > 0.0;
+}
+
+/* ---- timing --------------------------------------------------------------------- */
+
+static int use_queries(const hfs_gles *g)
+{
+    return g->have_queries && g->caps.timer_query;
+}
+
+static void pass_begin(hfs_gles *g, int p)
+{
+    g->pass_ran[p] = 1;
+    if (!g->timing)
+        return;
+    if (use_queries(g)) {
+        g->gl.QueryCounter(g->queries[2 * p], GL_TIMESTAMP_EXT);
+    } else {
+        g->gl.Finish();
+        g->pass_t0[p] = now_ms();
+    }
+}
+
+static void pass_end(hfs_gles *g, int p)
+{
+    if (!g->timing)
+        return;
+    if (use_queries(g)) {
+        g->gl.QueryCounter(g->queries[2 * p + 1], GL_TIMESTAMP_EXT);
+    } else {
+        g->gl.Finish();
+        g->pass_ms[p] += now_ms() - g->pass_t0[p];
+    }
+}
+
+static void collect_queries(hfs_gles *g)
+{
+    if (!g->timing || !use_queries(g))
+        return;
+    const hfs_gl *gl = &g->gl;
+    for (int p = 0; p < P_COUNT; ++p) {
+        if (!g->pass_ran[p])
+            continue;
+        GLuint64 t0 = 0, t1 = 0;
+        gl->GetQueryObjectui64v(g->queries[2 * p], GL_QUERY_RESULT, &t0);
+        gl->GetQueryObjectui64v(g->queries[2 * p + 1], GL_QUERY_RESULT, &t1);
+        g->pass_ms[p] = t1 > t0 ? (double)(t1 - t0) * 1e-6 : 0.0;
+    }
+    if (g->gl.is_es) {
+        GLint disjoint = 0;
+        gl->GetIntegerv(GL_GPU_DISJOINT_EXT, &disjoint);
+        if (disjoint)
+            for (int p = 0; p < P_COUNT; ++p)
+                g->pass_ms[p] = -1.0; /* unreliable: the GPU was disjoint */
+    }
+    for (int i = 0; i < 8 && gl->GetError() != GL_NO_ERROR; ++i)
+        ;
+}
+
+/* ---- programs --------------------------------------------------------------------- */
+
+/* Builds "gles_lib + [product] + pass" and links it with fullscreen.vert. */
+static int program_get(hfs_gles *g, const char *frag, const char *const *defines,
+                       GLuint *out, hfs_error *err)
+{
+    char key[224];
+    size_t used = (size_t)snprintf(key, sizeof key, "%s", frag);
+    for (const char *const *d = defines; d && *d && used < sizeof key; ++d)
+        used += (size_t)snprintf(key + used, sizeof key - used, "|%s", *d);
+    if (used >= sizeof key)
+        return hfs_fail(err, HFS_E_INVALID, "backend gles: program key too long (%s)", frag);
+    for (int i = 0; i < g->n_progs; ++i)
+        if (!strcmp(g->progs[i].key, key)) {
+            *out = g->progs[i].id;
+            return HFS_OK;
+        }
+    if (g->n_progs == MAX_PROGRAMS) { /* a pathological sequence of settings */
+        for (int i = 0; i < g->n_progs; ++i)
+            g->gl.DeleteProgram(g->progs[i].id);
+        g->n_progs = 0;
+    }
+
+    const char *lib = hfs_shader_source("gles_lib.frag");
+    const char *pass = hfs_shader_source(frag);
+    const char *vert = hfs_shader_source("fullscreen.vert");
+    if (!lib || !pass || !vert)
+        return hfs_fail(err, HFS_E_INVALID, "backend gles: shader %s not embedded", frag);
+    const int with_product = !strcmp(frag, "gles_shade.frag");
+    const char *prod = with_product ? hfs_gles_sh_product_src : "";
+    const size_t size = strlen(lib) + strlen(prod) + strlen(pass) + 64;
+    char *src = malloc(size);
+    if (!src)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+    snprintf(src, size, "#line 1 1\n%s\n#line 1 2\n%s\n#line 1 0\n%s", lib, prod, pass);
+    /* The generated product carries UTF-8 in a comment; GLSL ES 3.00 knows
+     * ASCII only. */
+    for (char *c = src; *c; ++c)
+        if ((unsigned char)*c >= 0x80)
+            *c = ' ';
+    GLuint id = 0;
+    int rc = hfs_gl_program_from_sources(&g->gl, "fullscreen.vert", vert, frag, src, defines,
+                                         &id, err);
+    free(src);
+    if (rc)
+        return rc;
+
+    /* Fixed sampler units and block bindings (names absent from a program
+     * are simply not found). */
+    const hfs_gl *gl = &g->gl;
+    gl->UseProgram(id);
+    static const struct { const char *name; int unit; } samplers[] = {
+        {"u_levels", U_LEVELS}, {"u_normals", U_NORMALS}, {"u_tab", U_TAB},
+        {"u_src", U_SRC}, {"u_height", U_SRC}, {"u_v0", U_V0}, {"u_v1", U_V0 + 1},
+        {"u_v2", U_V0 + 2}, {"u_v3", U_V0 + 3}, {"u_keyhz", U_KEYHZ}, {"u_ktab", U_KTAB},
+        {"u_ktabb", U_KTABB}, {"u_vsrc[0]", U_VSRC}, {"u_vsrc[1]", U_VSRC + 1},
+        {"u_vsrc[2]", U_VSRC + 2}, {"u_vsrc[3]", U_VSRC + 3}};
+    for (size_t i = 0; i < sizeof samplers / sizeof samplers[0]; ++i) {
+        GLint loc = gl->GetUniformLocation(id, samplers[i].name);
+        if (loc >= 0)
+            gl->Uniform1i(loc, samplers[i].unit);
+    }
+    static const struct { const char *name; GLuint binding; } blocks[] = {
+        {"HfsScales", B_SCALES}, {"HfsSwath", B_SWATH}, {"HfsShade", B_SHADE},
+        {"HfsKeys", B_KEYS}};
+    for (size_t i = 0; i < sizeof blocks / sizeof blocks[0]; ++i) {
+        GLuint idx = gl->GetUniformBlockIndex(id, blocks[i].name);
+        if (idx != GL_INVALID_INDEX)
+            gl->UniformBlockBinding(id, idx, blocks[i].binding);
+    }
+    gl->UseProgram(0);
+    rc = hfs_gl_check(gl, frag, err);
+    if (rc) {
+        gl->DeleteProgram(id);
+        return rc;
+    }
+    snprintf(g->progs[g->n_progs].key, sizeof g->progs[g->n_progs].key, "%s", key);
+    g->progs[g->n_progs++].id = id;
+    *out = id;
+    return HFS_OK;
+}
+
+static void set_i2(const hfs_gl *gl, GLuint p, const char *name, int a, int b)
+{
+    GLint loc = gl->GetUniformLocation(p, name);
+    if (loc >= 0)
+        gl->Uniform2i(loc, a, b);
+}
+
+static void set_i1(const hfs_gl *gl, GLuint p, const char *name, int a)
+{
+    GLint loc = gl->GetUniformLocation(p, name);
+    if (loc >= 0)
+        gl->Uniform1i(loc, a);
+}
+
+static void set_f1(const hfs_gl *gl, GLuint p, const char *name, float a)
+{
+    GLint loc = gl->GetUniformLocation(p, name);
+    if (loc >= 0)
+        gl->Uniform1f(loc, a);
+}
+
+/* ---- textures and framebuffers ------------------------------------------------------ */
+
+static GLuint tex_new(const hfs_gl *gl, GLenum target, GLenum fmt, int w, int h, int layers,
+                      int linear)
+{
+    GLuint t = 0;
+    gl->GenTextures(1, &t);
+    gl->BindTexture(target, t);
+    if (target == GL_TEXTURE_2D_ARRAY)
+        gl->TexStorage3D(target, 1, fmt, w, h, layers);
+    else
+        gl->TexStorage2D(target, 1, fmt, w, h);
+    const GLint f = linear ? GL_LINEAR : GL_NEAREST;
+    gl->TexParameteri(target, GL_TEXTURE_MIN_FILTER, f);
+    gl->TexParameteri(target, GL_TEXTURE_MAG_FILTER, f);
+    gl->TexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->TexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl->BindTexture(target, 0);
+    return t;
+}
+
+/* A framebuffer with n colour attachments: 2D textures (layer < 0) or
+ * layers of array textures. */
+static int fbo_new(const hfs_gl *gl, GLuint *fbo, int n, const GLuint *tex, const int *layer,
+                   const char *what, hfs_error *err)
+{
+    gl->GenFramebuffers(1, fbo);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, *fbo);
+    GLenum bufs[4];
+    for (int i = 0; i < n; ++i) {
+        if (layer && layer[i] >= 0)
+            gl->FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)i, tex[i],
+                                        0, layer[i]);
+        else
+            gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)i,
+                                     GL_TEXTURE_2D, tex[i], 0);
+        bufs[i] = GL_COLOR_ATTACHMENT0 + (GLenum)i;
+    }
+    gl->DrawBuffers(n, bufs);
+    GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: %s framebuffer incomplete "
+                        "(0x%x)", what, (unsigned)status);
+    return hfs_gl_check(gl, what, err);
+}
+
+static void del_tex(const hfs_gl *gl, GLuint *t)
+{
+    if (*t)
+        gl->DeleteTextures(1, t);
+    *t = 0;
+}
+
+static void del_fbo(const hfs_gl *gl, GLuint *f)
+{
+    if (*f)
+        gl->DeleteFramebuffers(1, f);
+    *f = 0;
+}
+
+static void grid_free(hfs_gles *g)
+{
+    const hfs_gl *gl = &g->gl;
+    resources *r = &g->r;
+    for (int i = 0; i < 4; ++i)
+        del_tex(gl, &r->venv[i]);
+    del_fbo(gl, &r->venv_fbo);
+    del_tex(gl, &r->keyhz);
+    r->keyhz_layers = 0;
+    r->keyhz_bytes = 0;
+    r->vw = r->vh = 0;
+    g->env_valid = 0;
+}
+
+static void resources_free(hfs_gles *g)
+{
+    const hfs_gl *gl = &g->gl;
+    resources *r = &g->r;
+    grid_free(g);
+    del_tex(gl, &r->input);
+    for (int i = 0; i < HFS_GLES_MAX_LEVELS; ++i) {
+        del_tex(gl, &r->lev[i]);
+        del_fbo(gl, &r->lev_fbo[i]);
+        del_tex(gl, &r->half[i]);
+        del_fbo(gl, &r->half_fbo[i]);
+        del_fbo(gl, &r->arr_fbo[i]);
+        del_fbo(gl, &r->arr_mrt_fbo[i]);
+    }
+    del_tex(gl, &r->arr);
+    del_tex(gl, &r->normals);
+    del_fbo(gl, &r->normals_fbo);
+    del_tex(gl, &r->out[0]);
+    del_tex(gl, &r->out[1]);
+    del_fbo(gl, &r->out_fbo);
+    del_fbo(gl, &r->out_lo_fbo);
+    del_fbo(gl, &r->keyhz_fbo);
+    memset(r, 0, sizeof *r);
+    g->terrain_valid = 0;
+    g->env_valid = 0;
+}
+
+/* Terrain-sized resources (levels, normals, output) follow the field size,
+ * level layout and precision; grid-sized ones (visibility, key horizons)
+ * also follow the sub-sampling, without touching the terrain's. */
+static int resources_ensure(hfs_gles *g, const hfs_gles_layout *L, int key_layers,
+                            hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    const hfs_gl_caps *c = &g->caps;
+    resources *r = &g->r;
+    int rc;
+    if (key_layers < 1)
+        key_layers = 1;
+    if (!(r->valid && r->w == L->w && r->h == L->h && r->n_levels == L->n_levels &&
+          r->lmin == L->lmin && r->fp32 == c->fp32)) {
+        resources_free(g);
+        rc = hfs_gl_check(gl, "backend gles: pending error", err);
+        if (rc)
+            return rc;
+        r->w = L->w, r->h = L->h, r->n_levels = L->n_levels, r->lmin = L->lmin;
+        r->n_layers = L->n_layers, r->fp32 = c->fp32;
+        const int w = L->w, h = L->h;
+        r->input = tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, w, h, 1, 1);
+        r->bytes += (size_t)w * h * c->bytes_rg;
+        for (int l = L->lmin; l < L->n_levels - 1; ++l) {
+            r->lev[l] = tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, L->lw[l], L->lh[l], 1, 1);
+            r->bytes += (size_t)L->lw[l] * L->lh[l] * c->bytes_rg;
+            if ((rc = fbo_new(gl, &r->lev_fbo[l], 1, &r->lev[l], NULL, "level", err)))
+                return rc;
+            /* The separable reconstruction's intermediate, its own size so
+             * that CLAMP_TO_EDGE clamps at the level's last row. */
+            r->half[l] = tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, w, L->lh[l], 1, 1);
+            r->bytes += (size_t)w * L->lh[l] * c->bytes_rg;
+            if ((rc = fbo_new(gl, &r->half_fbo[l], 1, &r->half[l], NULL, "level", err)))
+                return rc;
+        }
+        r->arr = tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rg, w, h, L->n_layers, 1);
+        r->bytes += (size_t)w * h * L->n_layers * c->bytes_rg;
+        for (int i = 0; i < L->n_layers - 1; ++i)
+            if ((rc = fbo_new(gl, &r->arr_fbo[i], 1, &r->arr, &i, "level layer", err)))
+                return rc;
+        for (int i = 0; i < L->n_layers - 1; i += RECON_MRT) {
+            const int n = L->n_layers - 1 - i < RECON_MRT ? L->n_layers - 1 - i : RECON_MRT;
+            const GLuint att[RECON_MRT] = {r->arr, r->arr, r->arr, r->arr};
+            const int lay[RECON_MRT] = {i, i + 1, i + 2, i + 3};
+            if ((rc = fbo_new(gl, &r->arr_mrt_fbo[i / RECON_MRT], n, att, lay, "level layers",
+                              err)))
+                return rc;
+        }
+        r->normals = tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
+        r->bytes += (size_t)w * h * c->bytes_rgba;
+        if ((rc = fbo_new(gl, &r->normals_fbo, 1, &r->normals, NULL, "normals", err)))
+            return rc;
+        r->out[0] = tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
+        r->out[1] = tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
+        r->bytes += (size_t)2 * w * h * c->bytes_rgba;
+        if ((rc = fbo_new(gl, &r->out_fbo, 2, r->out, NULL, "output", err)) ||
+            (rc = fbo_new(gl, &r->out_lo_fbo, 1, &r->out[1], NULL, "output", err)))
+            return rc;
+        gl->GenFramebuffers(1, &r->keyhz_fbo);
+        r->valid = 1;
+    }
+    if (r->vw != L->vw || r->vh != L->vh || !r->venv_fbo) {
+        grid_free(g);
+        r->vw = L->vw, r->vh = L->vh;
+        for (int i = 0; i < 4; ++i)
+            r->venv[i] = tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->vw, L->vh, 1, 1);
+        if ((rc = fbo_new(gl, &r->venv_fbo, 4, r->venv, NULL, "visibility", err)))
+            return rc;
+    }
+    if (r->keyhz_layers < key_layers) {
+        del_tex(gl, &r->keyhz);
+        r->keyhz = tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh, key_layers, 1);
+        r->keyhz_layers = key_layers;
+        r->keyhz_bytes = (size_t)L->vw * L->vh * key_layers * c->bytes_rgba;
+    }
+    return hfs_gl_check(gl, "backend gles: allocating textures", err);
+}
+
+static size_t resources_bytes(const hfs_gles *g)
+{
+    const resources *r = &g->r;
+    return r->bytes + (size_t)4 * r->vw * r->vh * g->caps.bytes_rgba + r->keyhz_bytes;
+}
+
+static void bind_tex(const hfs_gl *gl, int unit, GLenum target, GLuint t)
+{
+    gl->ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+    gl->BindTexture(target, t);
+}
+
+static void draw(const hfs_gl *gl, GLuint fbo, int w, int h)
+{
+    gl->BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl->Viewport(0, 0, w, h);
+    gl->DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+static void ubo_upload(const hfs_gl *gl, GLuint ubo, const void *data, size_t bytes)
+{
+    gl->BindBuffer(GL_UNIFORM_BUFFER, ubo);
+    gl->BufferData(GL_UNIFORM_BUFFER, (GLsizeiptr)(bytes ? bytes : 16), data, GL_DYNAMIC_DRAW);
+    gl->BindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+/* ---- wedge tables --------------------------------------------------------------------- */
+
+/* Tables of extent dphi (boundary dphi/2), cached (cpu_visibility.c builds
+ * exactly these: hfs_wedge_tables_create_ext(dphi, dphi/2, 257)). */
+static hfs_wedge_tables *tables_get(hfs_gles *g, double dphi, hfs_error *err)
+{
+    ++g->table_clock;
+    int victim = 0;
+    for (int i = 0; i < MAX_TABLE_CACHE; ++i) {
+        if (g->tables[i].t && g->tables[i].dphi == dphi) {
+            g->tables[i].used = g->table_clock;
+            return g->tables[i].t;
+        }
+        if (!g->tables[i].t || g->tables[i].used < g->tables[victim].used)
+            victim = i;
+        if (!g->tables[i].t)
+            break;
+    }
+    hfs_wedge_tables *t = hfs_wedge_tables_create_ext(dphi, 0.5 * dphi, TABLE_N);
+    if (!t) {
+        hfs_fail(err, HFS_E_NOMEM, "backend gles: cannot build wedge tables for dphi = %g", dphi);
+        return NULL;
+    }
+    hfs_wedge_tables_destroy(g->tables[victim].t);
+    g->tables[victim].t = t;
+    g->tables[victim].dphi = dphi;
+    g->tables[victim].used = g->table_clock;
+    return t;
+}
+
+/* Uploads interior (and boundary) tables as set `set` of 4 layers
+ * (coefficients 4g..4g+3 in layer 4*set + g). */
+static int tables_upload(hfs_gles *g, const hfs_wedge_tables *t, GLuint tab, GLuint tabb, int set,
+                         hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    const int n = hfs_wedge_tables_size(t), fp32 = g->caps.fp32;
+    const size_t esz = fp32 ? sizeof(float) : sizeof(uint16_t);
+    void *buf = scratch(g, (size_t)n * n * 4 * esz);
+    if (!buf)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for wedge tables");
+    for (int pass = 0; pass < 2; ++pass) {
+        GLuint tex = pass ? tabb : tab;
+        if (!tex)
+            continue;
+        const double *src = pass ? hfs_wedge_boundary_data(t) : hfs_wedge_interior_data(t);
+        const size_t rows = pass ? 1 : (size_t)n;
+        for (int grp = 0; grp < 4; ++grp) {
+            for (size_t e = 0; e < rows * (size_t)n; ++e)
+                for (int c = 0; c < 4; ++c) {
+                    const double v = src[e * 16 + (size_t)(4 * grp + c)];
+                    if (fp32)
+                        ((float *)buf)[e * 4 + (size_t)c] = (float)v;
+                    else
+                        ((uint16_t *)buf)[e * 4 + (size_t)c] = hfs_float_to_half((float)v);
+                }
+            gl->BindTexture(GL_TEXTURE_2D_ARRAY, tex);
+            gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            gl->TexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 4 * set + grp, n, (GLsizei)rows, 1,
+                              GL_RGBA, g->caps.type_upload, buf);
+            gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        }
+    }
+    gl->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    return hfs_gl_check(gl, "backend gles: wedge table upload", err);
+}
+
+/* ---- object ------------------------------------------------------------------------------ */
+
+int hfs_gles_create(const char *context, const char *profile, hfs_gles **out, hfs_error *err)
+{
+    *out = NULL;
+    hfs_gles *g = calloc(1, sizeof *g);
+    if (!g)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+    int rc = hfs_gl_context_create(context, &g->ctx, err);
+    if (rc)
+        goto fail;
+    if ((rc = hfs_gl_load(&g->gl, hfs_gl_context_loader, g->ctx, err)))
+        goto fail;
+    hfs_gl_caps_query(&g->gl, &g->driver);
+    if (profile) {
+        /* Refuse a bad name or an impossible profile now, not at the first
+         * frame. */
+        hfs_gl_caps c;
+        if ((rc = hfs_gl_caps_select(&g->driver, profile, !strcmp(profile, "es30-float"), &c,
+                                     err)))
+            goto fail;
+        snprintf(g->profile, sizeof g->profile, "%s", profile);
+    }
+    const hfs_gl *gl = &g->gl;
+    gl->GenVertexArrays(1, &g->vao);
+    gl->BindVertexArray(g->vao);
+    gl->GenBuffers(UBO_COUNT, g->ubo);
+    if (g->driver.timer_query) {
+        gl->GenQueries(2 * P_COUNT, g->queries);
+        g->have_queries = 1;
+    }
+    gl->Disable(GL_BLEND);
+    gl->Disable(GL_DEPTH_TEST);
+    gl->Disable(GL_SCISSOR_TEST);
+    if ((rc = hfs_gl_check(gl, "backend gles: setup", err)))
+        goto fail;
+    *out = g;
+    return HFS_OK;
+
+fail:
+    hfs_gles_destroy(g);
+    return rc;
+}
+
+void hfs_gles_destroy(hfs_gles *g)
+{
+    if (!g)
+        return;
+    if (g->ctx && g->gl.GetError && !hfs_gl_context_make_current(g->ctx, NULL)) {
+        const hfs_gl *gl = &g->gl;
+        resources_free(g);
+        for (int i = 0; i < g->n_progs; ++i)
+            gl->DeleteProgram(g->progs[i].id);
+        if (g->vao)
+            gl->DeleteVertexArrays(1, &g->vao);
+        gl->DeleteBuffers(UBO_COUNT, g->ubo);
+        if (g->have_queries)
+            gl->DeleteQueries(2 * P_COUNT, g->queries);
+        del_tex(gl, &g->env_tab);
+        del_tex(gl, &g->ktab);
+        del_tex(gl, &g->ktabb);
+    }
+    for (int i = 0; i < MAX_TABLE_CACHE; ++i)
+        hfs_wedge_tables_destroy(g->tables[i].t);
+    hfs_visibility_destroy(g->env_vis);
+    hfs_gl_context_destroy(g->ctx);
+    free(g->terrain_z);
+    free(g->scratch);
+    free(g);
+}
+
+const char *hfs_gles_context_name(const hfs_gles *g)
+{
+    return hfs_gl_context_name(g->ctx);
+}
+
+const char *hfs_gles_describe(const hfs_gles *g)
+{
+    return hfs_gl_context_describe(g->ctx);
+}
+
+void hfs_gles_set_timing(hfs_gles *g, int level)
+{
+    g->timing = level < 0 ? 0 : (level > 2 ? 2 : level);
+}
+
+void hfs_gles_get_timings(const hfs_gles *g, hfs_timings *t)
+{
+    *t = g->last;
+}
+
+void hfs_gles_invalidate(hfs_gles *g)
+{
+    g->terrain_valid = 0;
+    g->env_valid = 0;
+}
+
+void hfs_gles_get_stats(const hfs_gles *g, hfs_gles_stats *s)
+{
+    *s = g->stats;
+}
+
+/* ---- passes --------------------------------------------------------------------------------- */
+
+static int terrain_same(const hfs_gles *g, const hfs_field *f, const hfs_quality *q)
+{
+    const size_t n = (size_t)f->width * (size_t)f->height;
+    return g->terrain_valid && g->t_w == f->width && g->t_h == f->height && g->t_k == q->k &&
+           g->t_offset == q->offset && g->t_fp32 == g->caps.fp32 && g->t_dx == f->dx &&
+           g->t_zscale == f->zscale && !memcmp(g->terrain_z, f->z, n * sizeof *f->z);
+}
+
+static int terrain_remember(hfs_gles *g, const hfs_field *f, const hfs_quality *q)
+{
+    const size_t n = (size_t)f->width * (size_t)f->height;
+    if (n > g->terrain_cap) {
+        float *z = realloc(g->terrain_z, n * sizeof *z);
+        if (!z)
+            return 0;
+        g->terrain_z = z;
+        g->terrain_cap = n;
+    }
+    memcpy(g->terrain_z, f->z, n * sizeof *f->z);
+    g->t_w = f->width, g->t_h = f->height, g->t_k = q->k, g->t_offset = q->offset;
+    g->t_fp32 = g->caps.fp32, g->t_dx = f->dx, g->t_zscale = f->zscale;
+    return 1;
+}
+
+/* upload, normals, decimate, reconstruct. */
+static int run_terrain(hfs_gles *g, const hfs_field *f, const hfs_gles_layout *L, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    resources *r = &g->r;
+    const int fp32 = g->caps.fp32, w = L->w, h = L->h;
+    const char *fpdef = fp32 ? "HFS_FP32 1" : NULL;
+    int rc;
+
+    pass_begin(g, P_UPLOAD);
+    void *buf = scratch(g, (size_t)w * h * 2 * (fp32 ? 4 : 2));
+    if (!buf)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for a %dx%d upload", w, h);
+    g->stats.height_split_err = hfs_gles_split_heights(L, f, fp32, buf);
+    g->stats.height_scale = L->hscale;
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    gl->BindTexture(GL_TEXTURE_2D, r->input);
+    gl->TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RG, g->caps.type_upload, buf);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    gl->BindTexture(GL_TEXTURE_2D_ARRAY, r->arr);
+    gl->TexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, L->n_layers - 1, w, h, 1, GL_RG,
+                      g->caps.type_upload, buf);
+    gl->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    pass_end(g, P_UPLOAD);
+    if ((rc = hfs_gl_check(gl, "backend gles: upload", err)))
+        return rc;
+
+    const char *defs[2] = {fpdef, NULL};
+    GLuint prog;
+    if ((rc = program_get(g, "gles_normals.frag", defs, &prog, err)))
+        return rc;
+    pass_begin(g, P_NORMALS);
+    gl->UseProgram(prog);
+    bind_tex(gl, U_SRC, GL_TEXTURE_2D, r->input);
+    set_i2(gl, prog, "u_size", w, h);
+    double zf = L->hscale * L->zscale / L->dx;
+    set_f1(gl, prog, "u_zfactor", (float)(zf < 1e30 ? zf : 1e30));
+    draw(gl, r->normals_fbo, w, h);
+    pass_end(g, P_NORMALS);
+    g->pass_fetch[P_NORMALS] += 4.0 * w * h;
+
+    if ((rc = program_get(g, "gles_decimate.frag", defs, &prog, err)))
+        return rc;
+    pass_begin(g, P_DECIMATE);
+    gl->UseProgram(prog);
+    for (int l = L->n_levels - 2; l >= L->lmin; --l) {
+        bind_tex(gl, U_SRC, GL_TEXTURE_2D, l == L->n_levels - 2 ? r->input : r->lev[l + 1]);
+        set_i2(gl, prog, "u_dsize", L->lw[l], L->lh[l]);
+        draw(gl, r->lev_fbo[l], L->lw[l], L->lh[l]);
+        g->pass_fetch[P_DECIMATE] += (double)L->lw[l] * L->lh[l];
+    }
+    pass_end(g, P_DECIMATE);
+
+    if ((rc = program_get(g, "gles_reconstruct.frag", defs, &prog, err)))
+        return rc;
+    pass_begin(g, P_RECON);
+    gl->UseProgram(prog);
+    /* x passes, one per level (the results differ in height)... */
+    set_i1(gl, prog, "u_axis", 0);
+    for (int l = L->lmin; l < L->n_levels - 1; ++l) {
+        bind_tex(gl, U_SRC, GL_TEXTURE_2D, r->lev[l]);
+        set_i2(gl, prog, "u_src_size", L->lw[l], L->lh[l]);
+        set_i2(gl, prog, "u_dst_size", w, L->lh[l]);
+        draw(gl, r->half_fbo[l], w, L->lh[l]);
+        g->pass_fetch[P_RECON] += 2.0 * w * L->lh[l] + 2.0 * w * h;
+    }
+    /* ... then the y passes, RECON_MRT levels per draw. */
+    for (int i = 0; i < L->n_layers - 1; i += RECON_MRT) {
+        const int n = L->n_layers - 1 - i < RECON_MRT ? L->n_layers - 1 - i : RECON_MRT;
+        char vdef[24];
+        snprintf(vdef, sizeof vdef, "HFS_RECON_V %d", n);
+        const char *vdefs[3] = {vdef, fpdef, NULL};
+        GLuint vprog;
+        if ((rc = program_get(g, "gles_reconstruct.frag", vdefs, &vprog, err)))
+            return rc;
+        gl->UseProgram(vprog);
+        set_i2(gl, vprog, "u_dst_size", w, h);
+        for (int k = 0; k < n; ++k) {
+            const int l = L->lmin + i + k;
+            char name[16];
+            bind_tex(gl, U_VSRC + k, GL_TEXTURE_2D, r->half[l]);
+            snprintf(name, sizeof name, "u_vsize[%d]", k);
+            set_i2(gl, vprog, name, w, L->lh[l]);
+        }
+        draw(gl, r->arr_mrt_fbo[i / RECON_MRT], w, h);
+    }
+    pass_end(g, P_RECON);
+    gl->UseProgram(0);
+    return hfs_gl_check(gl, "backend gles: pyramid", err);
+}
+
+static void level_defines(const hfs_gles_layout *L, char *nlev, char *nlay, size_t size)
+{
+    snprintf(nlev, size, "HFS_NLEV %d", L->n_levels);
+    snprintf(nlay, size, "HFS_NLAYERS %d", L->n_layers);
+}
+
+
+/* The env pass (or its counting twin) into the V targets. */
+static int run_env(hfs_gles *g, const hfs_gles_layout *L, int tables, int count, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    resources *r = &g->r;
+    char nlev[32], nlay[32], ndir[32], tabn[32];
+    level_defines(L, nlev, nlay, sizeof nlev);
+    snprintf(ndir, sizeof ndir, "HFS_NDIR %d", g->env_vis_n);
+    snprintf(tabn, sizeof tabn, "HFS_TABLE_N %d", TABLE_N);
+    const char *defs[9];
+    int nd = 0;
+    defs[nd++] = nlev;
+    defs[nd++] = nlay;
+    defs[nd++] = ndir;
+    if (tables) {
+        defs[nd++] = "HFS_TABLES 1";
+        defs[nd++] = tabn;
+    }
+    if (g->caps.fp32)
+        defs[nd++] = "HFS_FP32 1";
+    if (count)
+        defs[nd++] = "HFS_COUNT 1";
+    defs[nd] = NULL;
+    GLuint prog;
+    int rc = program_get(g, "gles_env.frag", defs, &prog, err);
+    if (rc)
+        return rc;
+    gl->UseProgram(prog);
+    bind_tex(gl, U_LEVELS, GL_TEXTURE_2D_ARRAY, r->arr);
+    bind_tex(gl, U_NORMALS, GL_TEXTURE_2D, r->normals);
+    if (tables)
+        bind_tex(gl, U_TAB, GL_TEXTURE_2D_ARRAY, g->env_tab);
+    set_i2(gl, prog, "u_size", L->w, L->h);
+    set_i1(gl, prog, "u_sub", L->sub);
+    /* A hair above the largest height: rounding in the pyramid's hi+lo
+     * pairs and the bilinear filter must never make the bound too tight. */
+    set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, B_SCALES, g->ubo[UBO_SCALES]);
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, B_SWATH, g->ubo[UBO_ENV]);
+    draw(gl, r->venv_fbo, L->vw, L->vh);
+    gl->UseProgram(0);
+    return hfs_gl_check(gl, "backend gles: env pass", err);
+}
+
+/* Key-light passes (or their counting twins) into the horizon excess array. */
+static int run_keys(hfs_gles *g, const hfs_gles_layout *L, const frame_key *keys, int n_keys,
+                    int count, double *fetch_sum, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    resources *r = &g->r;
+    char nlev[32], nlay[32], ndir[32], nout[32];
+    level_defines(L, nlev, nlay, sizeof nlev);
+    int rc;
+    for (int q = 0; q < n_keys; ++q) {
+        const int n = keys[q].k.swath.n;
+        for (int d0 = 0; d0 < n; d0 += DIRS_PER_KEY_PASS) {
+            const int cnt = n - d0 < DIRS_PER_KEY_PASS ? n - d0 : DIRS_PER_KEY_PASS;
+            const int outs = (cnt + 1) / 2;
+            snprintf(ndir, sizeof ndir, "HFS_NDIR %d", n);
+            snprintf(nout, sizeof nout, "HFS_NOUT %d", outs);
+            const char *defs[7] = {nlev, nlay, ndir, nout, NULL, NULL, NULL};
+            int nd = 4;
+            if (g->caps.fp32)
+                defs[nd++] = "HFS_FP32 1";
+            if (count)
+                defs[nd++] = "HFS_COUNT 1";
+            GLuint prog;
+            if ((rc = program_get(g, "gles_key.frag", defs, &prog, err)))
+                return rc;
+            gl->UseProgram(prog);
+            bind_tex(gl, U_LEVELS, GL_TEXTURE_2D_ARRAY, r->arr);
+            bind_tex(gl, U_NORMALS, GL_TEXTURE_2D, r->normals);
+            set_i2(gl, prog, "u_size", L->w, L->h);
+            set_i1(gl, prog, "u_sub", L->sub);
+            set_i1(gl, prog, "u_dir0", d0);
+            set_i1(gl, prog, "u_ndir", cnt);
+            gl->BindBufferBase(GL_UNIFORM_BUFFER, B_SCALES, g->ubo[UBO_SCALES]);
+            gl->BindBufferRange(GL_UNIFORM_BUFFER, B_SWATH, g->ubo[UBO_KEYSWATH],
+                                (GLintptr)keys[q].swath_off, (GLsizeiptr)keys[q].swath_size);
+            gl->BindFramebuffer(GL_FRAMEBUFFER, r->keyhz_fbo);
+            GLenum bufs[4];
+            for (int o = 0; o < 4; ++o) {
+                gl->FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)o,
+                                            o < outs ? r->keyhz : 0, 0,
+                                            o < outs ? keys[q].k.hz_layer + d0 / 2 + o : 0);
+                bufs[o] = GL_COLOR_ATTACHMENT0 + (GLenum)o;
+            }
+            gl->DrawBuffers(outs, bufs);
+            GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+            if (status != GL_FRAMEBUFFER_COMPLETE)
+                return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: key framebuffer "
+                                "incomplete (0x%x)", (unsigned)status);
+            draw(gl, r->keyhz_fbo, L->vw, L->vh);
+            if (count && fetch_sum) {
+                /* Read the counts of this pass back (first target). */
+                float *px = scratch(g, (size_t)L->vw * L->vh * 4 * sizeof(float));
+                if (!px)
+                    return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+                if ((rc = hfs_gl_read_rgba(gl, r->keyhz_fbo, 0, 0, L->vw, L->vh,
+                                           HFS_GL_READ_AUTO, px, NULL, err)))
+                    return rc;
+                for (size_t i = 0; i < (size_t)L->vw * L->vh; ++i)
+                    *fetch_sum += px[4 * i] + 1024.0 * px[4 * i + 1];
+            }
+            if ((rc = hfs_gl_check(gl, "backend gles: key pass", err)))
+                return rc;
+        }
+    }
+    gl->UseProgram(0);
+    return HFS_OK;
+}
+
+/* ---- frame ------------------------------------------------------------------------------------ */
+
+typedef struct frame {
+    int has_env, n_keys;
+    frame_key keys[MAX_KEYS];
+    double l_env[3][HFS_SH_N];
+    double rho_pi;
+    int key_layers;
+} frame;
+
+static void frame_free(frame *fr)
+{
+    for (int q = 0; q < fr->n_keys; ++q)
+        hfs_visibility_destroy(fr->keys[q].vis);
+    fr->n_keys = 0;
+}
+
+static size_t align_up(size_t v, size_t a)
+{
+    return (v + a - 1) / a * a;
+}
+
+static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, hfs_image *out, frame *fr, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    int rc;
+    const int fp32 = q->precision == HFS_PRECISION_FP32;
+    if ((rc = hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL, fp32, &g->caps,
+                                 err)))
+        return rc;
+    const hfs_gl_caps *caps = &g->caps;
+    hfs_gles_layout L;
+    if ((rc = hfs_gles_layout_init(&L, f, q, err)))
+        return rc;
+    const int tables = q->visibility == HFS_VIS_WEDGE_TABLE;
+
+    /* Limits, all through the caps layer. */
+    if ((rc = hfs_gl_caps_check_texture(caps, L.w, L.h, L.n_layers, "height levels", err)) ||
+        (rc = hfs_gl_caps_check_texture(caps, TABLE_N, TABLE_N, 4 * (MAX_KEYS + 1),
+                                        "wedge tables", err)) ||
+        (rc = hfs_gl_caps_check_draw_buffers(caps, 4, "SH visibility (16 coefficients)", err)) ||
+        (rc = hfs_gl_caps_check_samplers(caps, 9, "shading pass", err)) ||
+        (rc = hfs_gl_caps_check_uniform_block(caps, hfs_gles_scales_vec4(&L) * 16,
+                                              "per-scale constants", err)))
+        return rc;
+    if (fr->has_env &&
+        (rc = hfs_gl_caps_check_uniform_block(caps, hfs_gles_swath_vec4(q->nphi_env) * 16,
+                                              "environment swath (--nphi-env)", err)))
+        return rc;
+
+    /* Key lights: swaths, visibility objects, records. */
+    size_t keyswath_bytes = 0;
+    int rec = 0;
+    const size_t align = (size_t)caps->uniform_buffer_offset_alignment;
+    for (int i = 0; i < fr->n_keys; ++i) {
+        frame_key *k = &fr->keys[i];
+        k->k.hz_layer = fr->key_layers;
+        fr->key_layers += (k->k.swath.n + 1) / 2;
+        if ((rc = hfs_visibility_create(&k->k.swath, HFS_VIS_LEGENDRE, &k->vis, err)))
+            return rc;
+        k->swath_off = keyswath_bytes;
+        k->swath_size = hfs_gles_swath_vec4(k->k.swath.n) * 16;
+        keyswath_bytes = align_up(keyswath_bytes + k->swath_size, align);
+        k->rec_off = rec;
+        rec += (int)hfs_gles_key_vec4(k->k.swath.n);
+        if ((rc = hfs_gl_caps_check_uniform_block(caps, k->swath_size, "key-light swath", err)))
+            return rc;
+    }
+    if ((rc = hfs_gl_caps_check_uniform_block(caps, (size_t)(rec > 0 ? rec : 1) * 16,
+                                              "key-light records (shading)", err)) ||
+        (rc = hfs_gl_caps_check_texture(caps, L.vw, L.vh, fr->key_layers,
+                                        "key-light horizons", err)))
+        return rc;
+    if ((rc = resources_ensure(g, &L, fr->key_layers, err)))
+        return rc;
+
+    /* Terrain: upload, normals, pyramid (cached). */
+    if (!terrain_same(g, f, q)) {
+        g->terrain_valid = 0;
+        g->env_valid = 0;
+        float *sc = scratch(g, hfs_gles_scales_vec4(&L) * 16);
+        if (!sc)
+            return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+        hfs_gles_pack_scales(&L, sc);
+        ubo_upload(gl, g->ubo[UBO_SCALES], sc, hfs_gles_scales_vec4(&L) * 16);
+        if ((rc = run_terrain(g, f, &L, err)))
+            return rc;
+        g->terrain_valid = terrain_remember(g, f, q);
+        g->stats.terrain_recomputed = 1;
+    } else {
+        for (int p = P_UPLOAD; p <= P_RECON; ++p)
+            g->pass_cached[p] = 1;
+    }
+
+    /* Table textures follow the precision. */
+    if ((g->env_tab || g->ktab) && g->tab_fp32 != caps->fp32) {
+        del_tex(gl, &g->env_tab);
+        del_tex(gl, &g->ktab);
+        del_tex(gl, &g->ktabb);
+        g->ktab_sets = 0;
+        g->table_bytes = 0;
+        g->env_valid = 0;
+    }
+    g->tab_fp32 = caps->fp32;
+
+    /* Environment (cached with the terrain). */
+    long mismatches = 0;
+    if (fr->has_env) {
+        if (!g->env_vis || g->env_vis_n != q->nphi_env) {
+            hfs_visibility_destroy(g->env_vis);
+            g->env_vis = NULL;
+            hfs_swath s;
+            hfs_swath_full(q->nphi_env, &s);
+            if ((rc = hfs_visibility_create(&s, HFS_VIS_LEGENDRE, &g->env_vis, err)))
+                return rc;
+            g->env_vis_n = q->nphi_env;
+            g->env_valid = 0;
+        }
+        mismatches += hfs_gles_offset_mismatches(&L, hfs_visibility_swath(g->env_vis));
+        if (!(g->env_valid && g->e_n == q->nphi_env && g->e_path == (int)q->visibility &&
+              g->e_sub == q->subsample)) {
+            const size_t bytes = hfs_gles_swath_vec4(q->nphi_env) * 16;
+            float *sw = scratch(g, bytes);
+            if (!sw)
+                return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+            hfs_gles_pack_swath(&L, g->env_vis, sw);
+            ubo_upload(gl, g->ubo[UBO_ENV], sw, bytes);
+            if (tables) {
+                const double dphi = hfs_visibility_swath(g->env_vis)->dphi;
+                if (!g->env_tab || g->env_tab_dphi != dphi) {
+                    hfs_wedge_tables *t = tables_get(g, dphi, err);
+                    if (!t)
+                        return HFS_E_NOMEM;
+                    if (!g->env_tab) {
+                        g->env_tab = tex_new(gl, GL_TEXTURE_2D_ARRAY, caps->fmt_rgba, TABLE_N,
+                                             TABLE_N, 4, 1);
+                        g->table_bytes += (size_t)TABLE_N * TABLE_N * 4 * caps->bytes_rgba;
+                    }
+                    if ((rc = tables_upload(g, t, g->env_tab, 0, 0, err)))
+                        return rc;
+                    g->env_tab_dphi = dphi;
+                }
+            }
+            pass_begin(g, P_ENV);
+            if ((rc = run_env(g, &L, tables, 0, err)))
+                return rc;
+            pass_end(g, P_ENV);
+            g->env_valid = 1;
+            g->e_n = q->nphi_env;
+            g->e_path = (int)q->visibility;
+            g->e_sub = q->subsample;
+            g->stats.env_recomputed = 1;
+        } else {
+            g->pass_cached[P_ENV] = 1;
+        }
+    }
+
+    /* Key lights: uniform data, tables, horizon passes. */
+    float *keys_rec = NULL;
+    if (fr->n_keys > 0) {
+        float *ks = scratch(g, keyswath_bytes + (size_t)rec * 16);
+        if (!ks)
+            return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+        memset(ks, 0, keyswath_bytes);
+        keys_rec = ks + keyswath_bytes / sizeof(float);
+        int n_sets = 0;
+        double set_dphi[MAX_KEYS];
+        for (int i = 0; i < fr->n_keys; ++i) {
+            frame_key *k = &fr->keys[i];
+            mismatches += hfs_gles_offset_mismatches(&L, &k->k.swath);
+            hfs_gles_pack_swath(&L, k->vis, ks + k->swath_off / sizeof(float));
+            k->k.table_set = 0;
+            if (tables) {
+                int s = 0;
+                while (s < n_sets && set_dphi[s] != k->k.swath.dphi)
+                    ++s;
+                if (s == n_sets)
+                    set_dphi[n_sets++] = k->k.swath.dphi;
+                k->k.table_set = s;
+            }
+            hfs_gles_pack_key(&L, &k->k, k->vis, keys_rec + (size_t)k->rec_off * 4);
+        }
+        ubo_upload(gl, g->ubo[UBO_KEYSWATH], ks, keyswath_bytes);
+        ubo_upload(gl, g->ubo[UBO_KEYS], keys_rec, (size_t)rec * 16);
+        if (tables) {
+            int same = g->ktab && g->ktab_sets >= n_sets;
+            for (int s = 0; s < n_sets && same; ++s)
+                same = g->ktab_dphi[s] == set_dphi[s];
+            if (!same) {
+                if (g->ktab_sets < n_sets) {
+                    if (g->ktab)
+                        g->table_bytes -= (size_t)TABLE_N * (TABLE_N + 1) * 4 * g->ktab_sets *
+                                          caps->bytes_rgba;
+                    del_tex(gl, &g->ktab);
+                    del_tex(gl, &g->ktabb);
+                    g->ktab = tex_new(gl, GL_TEXTURE_2D_ARRAY, caps->fmt_rgba, TABLE_N, TABLE_N,
+                                      4 * n_sets, 1);
+                    g->ktabb = tex_new(gl, GL_TEXTURE_2D_ARRAY, caps->fmt_rgba, TABLE_N, 1,
+                                       4 * n_sets, 1);
+                    g->ktab_sets = n_sets;
+                    g->table_bytes += (size_t)TABLE_N * (TABLE_N + 1) * 4 * n_sets *
+                                      caps->bytes_rgba;
+                }
+                for (int s = 0; s < n_sets; ++s) {
+                    hfs_wedge_tables *t = tables_get(g, set_dphi[s], err);
+                    if (!t)
+                        return HFS_E_NOMEM;
+                    if ((rc = tables_upload(g, t, g->ktab, g->ktabb, s, err)))
+                        return rc;
+                    g->ktab_dphi[s] = set_dphi[s];
+                }
+            }
+        }
+        pass_begin(g, P_KEY);
+        if ((rc = run_keys(g, &L, fr->keys, fr->n_keys, 0, NULL, err)))
+            return rc;
+        pass_end(g, P_KEY);
+    }
+    g->stats.offset_mismatches = mismatches;
+
+    /* Shading. */
+    double bound = 0.0;
+    float shade[13 * 4];
+    memset(shade, 0, sizeof shade);
+    if (fr->has_env) {
+        double m = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            double s = 0.0;
+            for (int k = 0; k < HFS_SH_N; ++k) {
+                shade[c * 16 + k] = (float)fr->l_env[c][k];
+                s += fabs(fr->l_env[c][k]);
+            }
+            m = s > m ? s : m;
+        }
+        bound += 4.0 * m;
+    }
+    for (int i = 0; i < fr->n_keys; ++i)
+        bound += fmax(fr->keys[i].k.le[0], fmax(fr->keys[i].k.le[1], fr->keys[i].k.le[2]));
+    bound *= fr->rho_pi * PI;
+    const double out_scale = caps->fp32 ? 1.0 : hfs_gles_output_scale(bound);
+    shade[48] = (float)fr->rho_pi;
+    shade[49] = (float)out_scale;
+    shade[50] = fr->has_env ? 1.0f : 0.0f;
+    ubo_upload(gl, g->ubo[UBO_SHADE], shade, sizeof shade);
+    if (fr->n_keys == 0)
+        ubo_upload(gl, g->ubo[UBO_KEYS], shade, 16);
+
+    char kvec[32], tabn[32];
+    snprintf(kvec, sizeof kvec, "HFS_KEY_VEC4 %d", rec > 0 ? rec : 1);
+    snprintf(tabn, sizeof tabn, "HFS_TABLE_N %d", TABLE_N);
+    const char *defs[6] = {kvec, NULL, NULL, NULL, NULL, NULL};
+    int nd = 1;
+    if (tables && fr->n_keys > 0) {
+        defs[nd++] = "HFS_TABLES 1";
+        defs[nd++] = tabn;
+    }
+    if (caps->fp32)
+        defs[nd++] = "HFS_FP32 1";
+    GLuint prog;
+    if ((rc = program_get(g, "gles_shade.frag", defs, &prog, err)))
+        return rc;
+    resources *r = &g->r;
+    pass_begin(g, P_SHADE);
+    gl->UseProgram(prog);
+    bind_tex(gl, U_NORMALS, GL_TEXTURE_2D, r->normals);
+    for (int i = 0; i < 4; ++i)
+        bind_tex(gl, U_V0 + i, GL_TEXTURE_2D, r->venv[i]);
+    bind_tex(gl, U_KEYHZ, GL_TEXTURE_2D_ARRAY, r->keyhz);
+    if (tables && fr->n_keys > 0) {
+        bind_tex(gl, U_KTAB, GL_TEXTURE_2D_ARRAY, g->ktab);
+        bind_tex(gl, U_KTABB, GL_TEXTURE_2D_ARRAY, g->ktabb);
+    }
+    set_i2(gl, prog, "u_size", L.w, L.h);
+    set_i2(gl, prog, "u_vsize", L.vw, L.vh);
+    set_i1(gl, prog, "u_sub", L.sub);
+    set_i1(gl, prog, "u_nkeys", fr->n_keys);
+    GLint offs[MAX_KEYS] = {0};
+    for (int i = 0; i < fr->n_keys; ++i)
+        offs[i] = fr->keys[i].rec_off;
+    GLint loc = gl->GetUniformLocation(prog, "u_koff");
+    if (loc >= 0)
+        gl->Uniform1iv(loc, MAX_KEYS, offs);
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, B_SHADE, g->ubo[UBO_SHADE]);
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, B_KEYS, g->ubo[UBO_KEYS]);
+    draw(gl, r->out_fbo, L.w, L.h);
+    gl->UseProgram(0);
+    pass_end(g, P_SHADE);
+    g->pass_fetch[P_SHADE] = (double)L.w * L.h * (1 + 4 * fr->has_env);
+    for (int i = 0; i < fr->n_keys; ++i)
+        g->pass_fetch[P_SHADE] += (double)L.w * L.h * ((fr->keys[i].k.swath.n + 1) / 2);
+    if ((rc = hfs_gl_check(gl, "backend gles: shading pass", err)))
+        return rc;
+
+    /* Readback. */
+    pass_begin(g, P_READBACK);
+    const size_t npx = (size_t)L.w * L.h;
+    float *px = scratch(g, npx * 8 * sizeof(float));
+    if (!px)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the readback");
+    float *lo = px + npx * 4;
+    if ((rc = hfs_gl_read_rgba(gl, r->out_fbo, 0, 0, L.w, L.h, HFS_GL_READ_AUTO, px, NULL, err)) ||
+        (rc = hfs_gl_read_rgba(gl, r->out_lo_fbo, 0, 0, L.w, L.h, HFS_GL_READ_AUTO, lo, NULL,
+                               err)))
+        return rc;
+    const double inv = 1.0 / out_scale;
+    for (size_t i = 0; i < npx; ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double v = ((double)px[4 * i + (size_t)c] + lo[4 * i + (size_t)c]) * inv;
+            out->rgb[3 * i + (size_t)c] = isfinite(v) ? (float)v : 0.0f;
+        }
+    pass_end(g, P_READBACK);
+
+    /* Counting twins of the horizon passes (timing level 2). */
+    if (g->timing >= 2) {
+        g->pass_fetch[P_ENV] = 0.0;
+        g->pass_fetch[P_KEY] = 0.0;
+        if (fr->has_env) {
+            if ((rc = run_env(g, &L, tables, 1, err)))
+                return rc;
+            g->env_valid = 0; /* the targets now hold counts */
+            float *cnt = scratch(g, (size_t)L.vw * L.vh * 4 * sizeof(float));
+            if (!cnt)
+                return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+            if ((rc = hfs_gl_read_rgba(gl, r->venv_fbo, 0, 0, L.vw, L.vh, HFS_GL_READ_AUTO, cnt,
+                                       NULL, err)))
+                return rc;
+            for (size_t i = 0; i < (size_t)L.vw * L.vh; ++i)
+                g->pass_fetch[P_ENV] += cnt[4 * i] + 1024.0 * cnt[4 * i + 1];
+        }
+        if (fr->n_keys > 0 &&
+            (rc = run_keys(g, &L, fr->keys, fr->n_keys, 1, &g->pass_fetch[P_KEY], err)))
+            return rc;
+    } else {
+        g->pass_fetch[P_ENV] = -1.0;
+        g->pass_fetch[P_KEY] = -1.0;
+    }
+    return HFS_OK;
+}
+
+int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
+                    const hfs_quality *q, hfs_image *out, hfs_error *err)
+{
+    const double t_start = now_ms();
+    for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
+        if (!l->local[i].disabled && any_positive3f(l->local[i].radiance))
+            return hfs_fail(err, HFS_E_UNSUPPORTED,
+                            "backend gles: local lights are not supported yet (issue 4); "
+                            "disable local light %d or use --backend truth", i + 1);
+    int rc = hfs_gl_context_make_current(g->ctx, err);
+    if (rc)
+        return rc;
+    memset(g->pass_ms, 0, sizeof g->pass_ms);
+    memset(g->pass_fetch, 0, sizeof g->pass_fetch);
+    memset(g->pass_ran, 0, sizeof g->pass_ran);
+    memset(g->pass_cached, 0, sizeof g->pass_cached);
+    memset(&g->last, 0, sizeof g->last);
+    g->stats.terrain_recomputed = 0;
+    g->stats.env_recomputed = 0;
+
+    /* Which lights contribute (exactly as cpu_render.c). */
+    frame fr;
+    memset(&fr, 0, sizeof fr);
+    if (l->has_env)
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < HFS_SH_COEFFS; ++k)
+                fr.has_env |= l->env_sh[c][k] != 0.0;
+    for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i) {
+        const hfs_key_light *k = &l->key[i];
+        if (!key_contributes(k, l->albedo))
+            continue;
+        frame_key *fk = &fr.keys[fr.n_keys++];
+        hfs_swath_key(k->phi, k->elev, k->alpha, q->nphi_key, q->nphi_env, &fk->k.swath);
+        hfs_dir(k->phi, k->elev, fk->k.dir);
+        fk->k.alpha = k->alpha;
+        for (int c = 0; c < 3; ++c)
+            fk->k.le[c] = k->radiance[c];
+        double zh[HFS_ZH_N];
+        hfs_zh_cap(k->alpha, zh);
+        hfs_sh_rotate_zonal(zh, fk->k.dir[0], fk->k.dir[1], fk->k.dir[2], fk->k.l_sh);
+        fk->k.l_norm = sqrt(hfs_sh_dot(fk->k.l_sh, fk->k.l_sh));
+    }
+    fr.rho_pi = l->albedo / PI;
+    if ((!fr.has_env && fr.n_keys == 0) || !(l->albedo > 0.0)) {
+        memset(out->rgb, 0, (size_t)out->width * out->height * 3 * sizeof *out->rgb);
+        return HFS_OK;
+    }
+    if (fr.has_env)
+        for (int c = 0; c < 3; ++c)
+            hfs_sh_rotate_z(l->env_sh[c], l->env_rotate, fr.l_env[c]);
+
+    rc = render_frame(g, f, q, out, &fr, err);
+    frame_free(&fr);
+    if (rc) {
+        /* A failed frame may have left partial results: recompute next time. */
+        g->terrain_valid = 0;
+        g->env_valid = 0;
+        for (int i = 0; i < 16 && g->gl.GetError() != GL_NO_ERROR; ++i)
+            ;
+        return rc;
+    }
+    collect_queries(g);
+    snprintf(g->stats.profile, sizeof g->stats.profile, "%s", g->caps.profile);
+    g->stats.fp32 = g->caps.fp32;
+
+    if (g->timing) {
+        hfs_timings *t = &g->last;
+        for (int p = 0; p < P_COUNT; ++p) {
+            if (!g->pass_ran[p] && !g->pass_cached[p])
+                continue;
+            hfs_pass_time *pt = &t->pass[t->n_passes++];
+            snprintf(pt->name, sizeof pt->name, "%s", pass_names[p]);
+            pt->ms = g->pass_ran[p] ? g->pass_ms[p] : 0.0;
+            pt->fetches = g->pass_ran[p] ? g->pass_fetch[p] : 0.0;
+            pt->cached = !g->pass_ran[p];
+            t->gpu_ms += pt->ms > 0.0 ? pt->ms : 0.0;
+        }
+        t->texture_bytes = resources_bytes(g) + g->table_bytes;
+        snprintf(t->method, sizeof t->method, "%s", use_queries(g) ? "timer-query" : "finish-clock");
+        snprintf(t->device, sizeof t->device, "%s (%s)", hfs_gl_context_describe(g->ctx),
+                 g->caps.profile);
+        t->frame_ms = now_ms() - t_start;
+    }
+    return HFS_OK;
+}

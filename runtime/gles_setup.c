@@ -1,0 +1,318 @@
+/*
+ * gles_setup.c — see gles_setup.h.
+ */
+#include "gles_setup.h"
+
+#include "cpu_pyramid.h"
+#include "gl_util.h"
+#include "sh.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+int hfs_gles_grid_size(int n, int sub)
+{
+    if (sub < 1)
+        sub = 1;
+    return (n - 1 + sub - 1) / sub + 1;
+}
+
+int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quality *q,
+                         hfs_error *err)
+{
+    memset(L, 0, sizeof *L);
+    L->w = f->width;
+    L->h = f->height;
+    L->k = q->k;
+    L->offset = q->offset;
+    L->dx = f->dx;
+    L->zscale = f->zscale;
+    L->n_levels = hfs_pyramid_level_count(L->w, L->h, q->k);
+    if (L->n_levels > HFS_GLES_MAX_LEVELS)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: %d pyramid levels (k=%d, %dx%d) "
+                        "exceed %d", L->n_levels, q->k, L->w, L->h, HFS_GLES_MAX_LEVELS);
+    L->lmin = hfs_pyramid_read_level(L->n_levels, q->k, q->offset, 0);
+    L->n_layers = L->n_levels - L->lmin;
+    L->sub = q->subsample < 1 ? 1 : q->subsample;
+    L->vw = hfs_gles_grid_size(L->w, L->sub);
+    L->vh = hfs_gles_grid_size(L->h, L->sub);
+    for (int i = 0; i < L->n_levels; ++i) {
+        hfs_pyramid_level_size(L->w, L->h, q->k, i, &L->lw[i], &L->lh[i]);
+        L->spacing[i] = hfs_pyramid_spacing(L->n_levels, q->k, i);
+        L->read_layer[i] = hfs_pyramid_read_level(L->n_levels, q->k, q->offset, i) - L->lmin;
+    }
+    double lo = DBL_MAX, hi = -DBL_MAX;
+    const size_t n = (size_t)L->w * (size_t)L->h;
+    for (size_t i = 0; i < n; ++i) {
+        const double z = f->z[i];
+        lo = z < lo ? z : lo;
+        hi = z > hi ? z : hi;
+    }
+    L->base = 0.5 * lo + 0.5 * hi; /* no overflow for any float range */
+    L->hscale = 0.5 * hi - 0.5 * lo;
+    L->vmax = 1.0;
+    if (!(L->hscale > 0.0)) {
+        L->hscale = 1.0; /* flat: every v is 0 */
+        L->vmax = 0.0;
+    }
+    return HFS_OK;
+}
+
+double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int fp32,
+                              void *dst)
+{
+    const size_t n = (size_t)L->w * (size_t)L->h;
+    double worst = 0.0;
+    if (fp32) {
+        float *out = dst;
+        for (size_t i = 0; i < n; ++i) {
+            out[2 * i] = (float)(((double)f->z[i] - L->base) / L->hscale);
+            out[2 * i + 1] = 0.0f;
+        }
+        return 0.0;
+    }
+    uint16_t *out = dst;
+    for (size_t i = 0; i < n; ++i) {
+        const double v = ((double)f->z[i] - L->base) / L->hscale;
+        const uint16_t hi = hfs_float_to_half((float)v);
+        const double hv = hfs_half_to_float(hi);
+        const uint16_t lo = hfs_float_to_half((float)(v - hv));
+        out[2 * i] = hi;
+        out[2 * i + 1] = lo;
+        const double e = fabs(hv + (double)hfs_half_to_float(lo) - v);
+        worst = e > worst ? e : worst;
+    }
+    return worst;
+}
+
+/* ---- blocks -------------------------------------------------------------------- */
+
+size_t hfs_gles_scales_vec4(const hfs_gles_layout *L)
+{
+    return (size_t)L->n_levels;
+}
+
+void hfs_gles_pack_scales(const hfs_gles_layout *L, float *dst)
+{
+    for (int i = 0; i < L->n_levels; ++i) {
+        const double d = L->spacing[i];
+        double inv = L->hscale * L->zscale / (d * L->dx);
+        if (!(inv < 1e30))
+            inv = 1e30;
+        dst[4 * i + 0] = (float)d;
+        dst[4 * i + 1] = (float)inv;
+        dst[4 * i + 2] = (float)L->read_layer[i];
+        dst[4 * i + 3] = 0.0f;
+    }
+}
+
+static double snap_unit(double c)
+{
+    return fabs(c) < 1e-12 ? 0.0 : c; /* cpu_horizon.c */
+}
+
+void hfs_gles_swath_dir(const hfs_swath *s, int j, double *c, double *sn)
+{
+    const double phi = hfs_swath_phi(s, j);
+    *c = snap_unit(cos(phi));
+    *sn = snap_unit(sin(phi));
+}
+
+size_t hfs_gles_swath_vec4(int n)
+{
+    return 2 + 17 * (size_t)n + 2 * ((size_t)n + 1);
+}
+
+void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, float *dst)
+{
+    const hfs_swath *s = hfs_visibility_swath(v);
+    const int n = s->n;
+    memset(dst, 0, hfs_gles_swath_vec4(n) * 4 * sizeof *dst);
+    dst[0] = (float)s->elev_lo;
+    dst[1] = (float)s->elev_hi;
+    dst[2] = (float)n;
+    dst[3] = (float)s->full;
+    double occ[HFS_NLP_N];
+    hfs_nlp_occlusion(s->elev_hi, occ);
+    for (int c = 0; c < 4; ++c)
+        dst[4 + c] = (float)occ[c];
+    float *dirs = dst + 4 * 2;
+    float *cm = dst + 4 * (2 + (size_t)n);
+    float *rot = dst + 4 * (2 + 17 * (size_t)n);
+    for (int j = 0; j < n; ++j) {
+        float cs[2];
+        const hfs_swath one = {.n = 1, .full = s->full, .phi0 = hfs_swath_phi(s, j), .dphi = s->dphi};
+        hfs_gles_swath_float_dirs(L, &one, cs);
+        dirs[4 * j] = cs[0];
+        dirs[4 * j + 1] = cs[1];
+        const double *m = hfs_visibility_sample_matrix(v, j);
+        double frob = 0.0;
+        if (m)
+            for (int r = 0; r < HFS_SH_N; ++r)
+                for (int q = 0; q < HFS_NLP_N; ++q) {
+                    cm[(16 * (size_t)j + (size_t)r) * 4 + (size_t)q] = (float)m[r * HFS_NLP_N + q];
+                    frob += m[r * HFS_NLP_N + q] * m[r * HFS_NLP_N + q];
+                }
+        dirs[4 * j + 2] = (float)sqrt(frob);
+    }
+    const int n_wedges = hfs_swath_wedge_count(s);
+    for (int w = 0; w < n_wedges; ++w) {
+        hfs_swath_wedge wd;
+        hfs_swath_get_wedge(s, w, &wd);
+        /* cpu_visibility.c table_placement: a start boundary wedge is the
+         * mirrored table wedge rotated to its inner end. */
+        const int mirror = wd.a < 0;
+        const double a = mirror ? wd.start + wd.extent : wd.start;
+        float *r = rot + 8 * (size_t)w;
+        for (int m = 1; m <= 3; ++m) {
+            r[m - 1] = (float)cos(m * a);
+            r[4 + m - 1] = (float)sin(m * a);
+        }
+        r[3] = (float)mirror;
+    }
+}
+
+/* ---- offsets -------------------------------------------------------------------- */
+
+/* cpu_horizon.c split_offset. */
+static void split_double(double o, int *io, int *frac_zero)
+{
+    const double r = nearbyint(o);
+    if (fabs(o - r) < 1e-9)
+        o = r;
+    const double f = floor(o);
+    *io = (int)f;
+    *frac_zero = (o - f) == 0.0;
+}
+
+/* The shader's rule for one component, in float (volatile keeps the
+ * compiler from contracting or widening).  Returns 0 when the sample lies
+ * near the snapping threshold (within a factor 2 of the tolerance), where a
+ * GPU whose float multiply or fused multiply-add differs by an ulp could
+ * decide otherwise; else 1 with the class in *io, *frac_zero. */
+static int split_float(float d, float u, int *io, int *frac_zero)
+{
+    volatile float o = d * u;
+    const float r = floorf(o + 0.5f);
+    volatile float tol = fabsf(o) * HFS_GLES_SNAP_REL;
+    tol = tol + HFS_GLES_SNAP_ABS;
+    const float dist = fabsf(o - r);
+    if (dist > 0.5f * tol && dist < 2.0f * tol)
+        return 0;
+    const float sn = dist <= tol ? r : o;
+    const float f = floorf(sn);
+    *io = (int)f;
+    *frac_zero = (sn - f) == 0.0f;
+    return 1;
+}
+
+/* 1 if the float component uf classifies every scale like the CPU's u. */
+static int component_ok(const hfs_gles_layout *L, double u, float uf)
+{
+    for (int i = 0; i < L->n_levels; ++i) {
+        const double d = L->spacing[i];
+        int io_d, fz_d, io_f, fz_f;
+        split_double(d * u, &io_d, &fz_d);
+        if (!split_float((float)d, uf, &io_f, &fz_f) || io_d != io_f || fz_d != fz_f)
+            return 0;
+    }
+    return 1;
+}
+
+/* The float nearest to u, or a neighbour a few ulps away that component_ok
+ * accepts (the direction moves by < 1e-5 relative: nothing a texture
+ * coordinate can see).  *ok = 0 if none within 64 ulps does. */
+static float float_component(const hfs_gles_layout *L, double u, int *ok)
+{
+    const float base = (float)u;
+    *ok = 1;
+    if (component_ok(L, u, base))
+        return base;
+    for (int k = 1; k <= 64; ++k) {
+        float up = base, dn = base;
+        for (int i = 0; i < k; ++i) {
+            up = nextafterf(up, INFINITY);
+            dn = nextafterf(dn, -INFINITY);
+        }
+        if (component_ok(L, u, up))
+            return up;
+        if (component_ok(L, u, dn))
+            return dn;
+    }
+    *ok = 0;
+    return base;
+}
+
+long hfs_gles_swath_float_dirs(const hfs_gles_layout *L, const hfs_swath *s, float *cs)
+{
+    long bad = 0;
+    for (int j = 0; j < s->n; ++j) {
+        double c, sn;
+        hfs_gles_swath_dir(s, j, &c, &sn);
+        int ok_c, ok_s;
+        cs[2 * j] = float_component(L, c, &ok_c);
+        cs[2 * j + 1] = float_component(L, sn, &ok_s);
+        bad += !ok_c + !ok_s;
+    }
+    return bad;
+}
+
+long hfs_gles_offset_mismatches(const hfs_gles_layout *L, const hfs_swath *s)
+{
+    long bad = 0;
+    for (int j = 0; j < s->n; ++j) {
+        double c, sn;
+        hfs_gles_swath_dir(s, j, &c, &sn);
+        int ok_c, ok_s;
+        const float fc = float_component(L, c, &ok_c), fs = float_component(L, sn, &ok_s);
+        for (int i = 0; i < L->n_levels; ++i) {
+            const double d = L->spacing[i];
+            for (int comp = 0; comp < 2; ++comp) {
+                int io_d, fz_d, io_f = 0, fz_f = 0;
+                split_double(d * (comp ? sn : c), &io_d, &fz_d);
+                const int sure = split_float((float)d, comp ? fs : fc, &io_f, &fz_f);
+                bad += !sure || io_d != io_f || fz_d != fz_f;
+            }
+        }
+    }
+    return bad;
+}
+
+/* ---- key lights ------------------------------------------------------------------- */
+
+size_t hfs_gles_key_vec4(int n)
+{
+    return 7 + hfs_gles_swath_vec4(n);
+}
+
+void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hfs_visibility *v,
+                       float *dst)
+{
+    const hfs_swath *s = hfs_visibility_swath(v);
+    memset(dst, 0, 7 * 4 * sizeof *dst);
+    dst[0] = (float)s->n;
+    dst[1] = (float)s->full;
+    dst[2] = (float)k->hz_layer;
+    dst[3] = (float)k->table_set;
+    for (int c = 0; c < 3; ++c) {
+        dst[4 + c] = (float)k->dir[c];
+        dst[8 + c] = (float)k->le[c];
+    }
+    dst[7] = (float)k->alpha;
+    dst[11] = (float)k->l_norm;
+    for (int c = 0; c < 16; ++c)
+        dst[12 + c] = (float)k->l_sh[c];
+    hfs_gles_pack_swath(L, v, dst + 7 * 4);
+}
+
+double hfs_gles_output_scale(double bound)
+{
+    if (!(bound > 0.0) || !isfinite(bound))
+        return 1.0;
+    int e = (int)floor(log2(16384.0 / bound));
+    e = e < -100 ? -100 : (e > 100 ? 100 : e);
+    return ldexp(1.0, e);
+}

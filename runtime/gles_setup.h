@@ -1,0 +1,141 @@
+/*
+ * gles_setup.h — the CPU side of the GLES renderer: everything a frame needs
+ * that does not touch GL, as pure functions (unit-tested without a driver).
+ *
+ *   layout        level count/sizes/spacings exactly as the CPU reference
+ *                 (hfs_pyramid_* of cpu_pyramid.h), the reconstructed range,
+ *                 the sub-sampled visibility grid, the height normalization;
+ *   heights       the field as fp16 hi+lo pairs (or fp32) of normalized
+ *                 heights v = (z - base) / hscale in [-1, 1];
+ *   uniform data  std140 blocks: per-scale constants, per-swath directions,
+ *                 folded Legendre matrices (hfs_visibility_sample_matrix of
+ *                 the CPU reference) or wedge placements, key-light records;
+ *   offsets       the shader's float form of the sample offsets and a check
+ *                 that it classifies every (direction, scale) sample as the
+ *                 CPU reference's double form does (DESIGN.md, "GLES path").
+ *
+ * Layout of the std140 blocks (vec4 units) is documented at each packer and
+ * mirrored by the `layout(std140) uniform` declarations in shaders_es/.
+ */
+#ifndef HFS_GLES_SETUP_H
+#define HFS_GLES_SETUP_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cpu_visibility.h"
+#include "hfshade.h"
+
+#define HFS_GLES_MAX_LEVELS 256
+
+typedef struct hfs_gles_layout {
+    int w, h;                 /* field size                                   */
+    int k, offset;            /* quality                                      */
+    int n_levels;             /* N = hfs_pyramid_level_count                  */
+    int lmin;                 /* lowest level read: min(k*o, N-1)             */
+    int n_layers;             /* reconstructed layers N - lmin (input incl.)  */
+    int sub, vw, vh;          /* visibility grid: step, size                  */
+    int lw[HFS_GLES_MAX_LEVELS], lh[HFS_GLES_MAX_LEVELS];
+    double spacing[HFS_GLES_MAX_LEVELS];   /* s_i = d_i                       */
+    int read_layer[HFS_GLES_MAX_LEVELS];   /* read level of scale i, - lmin   */
+    double base, hscale;      /* v = (z - base) / hscale, v in [-1, 1]        */
+    double vmax;              /* max v (1, or 0 for a flat field)            */
+    double dx, zscale;
+} hfs_gles_layout;
+
+/* Fills L for field f and quality q (validated inputs).  HFS_E_UNSUPPORTED
+ * when the level count exceeds HFS_GLES_MAX_LEVELS. */
+int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quality *q,
+                         hfs_error *err);
+
+/* Visibility grid: receiver a of the sub-sampled grid sits on full-resolution
+ * grid point min(a*sub, W-1) (same in y); vw = ceil((W-1)/sub) + 1. */
+int hfs_gles_grid_size(int n, int sub);
+
+/* Normalized heights, row-major W x H, two components per texel:
+ *   fp32 = 0: uint16_t pairs (hi, lo): hi = half(v), lo = half(v - hi);
+ *   fp32 = 1: float pairs (v, 0).
+ * dst holds W*H*2 elements of the chosen type.  Returns the max absolute
+ * representation error |hi + lo - v| in normalized units (0 for fp32). */
+double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int fp32,
+                              void *dst);
+
+/* ---- std140 blocks ---------------------------------------------------------- */
+
+/* HfsScales: N vec4, scale i: (d_i, inv_run_i, read layer, 0) with
+ * inv_run_i = hscale * zscale / (d_i * dx) (clamped to 1e30). */
+size_t hfs_gles_scales_vec4(const hfs_gles_layout *L);
+void hfs_gles_pack_scales(const hfs_gles_layout *L, float *dst);
+
+/* HfsSwath for a swath of n samples (visibility object v):
+ *   [0]            (elev_lo, elev_hi, n, full)
+ *   [1]            NLP occlusion vector of elev_hi (visible band top)
+ *   [2 .. 2+n)     (cos phi_j, sin phi_j, |C_j|_F, 0): the direction as
+ *                  hfs_gles_swath_float_dirs gives it, the Frobenius norm
+ *                  of C_j (0 for the table path)
+ *   [2+n .. 2+17n) Legendre: C_j as 4 column-major mat4 (16 vec4, row r of
+ *                  C_j at vec4 16j + r); zeros for the table path
+ *   [2+17n ..)     n + 1 wedge placements, 2 vec4 each:
+ *                  (cos a, cos 2a, cos 3a, mirror), (sin a, sin 2a, sin 3a, 0)
+ *                  with a the wedge's placement angle (table path)
+ * Total 2 + 17n + 2(n+1) vec4. */
+size_t hfs_gles_swath_vec4(int n);
+void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, float *dst);
+
+/* The direction (cos, sin) used for sample j, in double, snapped exactly as
+ * cpu_horizon.c does (|c| < 1e-12 -> 0). */
+void hfs_gles_swath_dir(const hfs_swath *s, int j, double *c, double *sn);
+
+/* ---- sample offsets ---------------------------------------------------------- */
+
+/* The shader computes sample offsets in float: o = float(d_i) * c_j per
+ * component, snapped to round(o) when |o - round(o)| <= |o| * SNAP_REL +
+ * SNAP_ABS (3 ulps of the product cover the rounding of d, c and the
+ * product when the CPU's double offset is an integer), and decides in-grid
+ * on floor and fraction exactly as cpu_horizon.c does.  A double offset that
+ * merely lies within a few ulps of an integer (2^(31/4) cos(3 pi/32) =
+ * 103.0000253...) would be snapped by the GPU and not by the CPU, so the
+ * direction floats are chosen here: the nearest float to the CPU's snapped
+ * (cos, sin), or a neighbour a few ulps away with which every scale is
+ * classified like the CPU AND lies at least a factor 2 from the snapping
+ * threshold (robust to a GPU that rounds the product differently by an
+ * ulp).  cs receives 2n floats; returns the number of components for which
+ * no such float exists within 64 ulps (0 in every configuration tested). */
+#define HFS_GLES_SNAP_REL 4.8e-7f
+#define HFS_GLES_SNAP_ABS 1e-9f
+long hfs_gles_swath_float_dirs(const hfs_gles_layout *L, const hfs_swath *s, float *cs);
+
+/* (direction, scale, component) samples the float rule, with the floats of
+ * hfs_gles_swath_float_dirs, classifies differently from the CPU (or not
+ * robustly); 0 means the GPU's in-grid decisions equal the CPU's for every
+ * receiver. */
+long hfs_gles_offset_mismatches(const hfs_gles_layout *L, const hfs_swath *s);
+
+/* ---- key lights (shading pass block HfsKeys) ---------------------------------- */
+
+/* A key light as the shading pass sees it: record offsets in vec4 units. */
+typedef struct hfs_gles_key {
+    hfs_swath swath;
+    double dir[3], alpha, le[3];
+    double l_sh[16], l_norm;  /* SH of the unit-radiance disk and its norm    */
+    int hz_layer;             /* first layer of its horizon excess texture    */
+    int table_set;            /* wedge table set (table path)                 */
+} hfs_gles_key;
+
+/* Record of key light q in HfsKeys (vec4 units, relative to its start):
+ *   [0] (n, full, hz_layer, table_set)
+ *   [1] (dir.xyz, alpha)
+ *   [2] (Le.rgb, l_norm)
+ *   [3..7) l_sh (16 floats)
+ *   [7 ..) the light's HfsSwath block (hfs_gles_pack_swath)
+ * Total 7 + hfs_gles_swath_vec4(n). */
+size_t hfs_gles_key_vec4(int n);
+void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hfs_visibility *v,
+                       float *dst);
+
+/* fp16 <-> float are in gl_util.h.  Power-of-two output scale that keeps
+ * the frame's largest possible exit radiance (bound) in fp16's range:
+ * 2^e with bound * 2^e <= 16384, e in [-100, 100]. */
+double hfs_gles_output_scale(double bound);
+
+#endif /* HFS_GLES_SETUP_H */

@@ -1,0 +1,31 @@
+/*
+ * gles_decimate.frag - one pyramid level from the next finer one (DESIGN.md
+ * "Height pyramid"): level i samples level i+1 bilinearly at its own texel
+ * centres, clamped to the edge (runtime/cpu_pyramid.c decimate).  The
+ * target is the level's own RG texture; heights are normalized hi+lo pairs,
+ * and bilinear filtering is linear, so filtering hi and lo separately and
+ * adding them filters v.
+ *
+ * Uniforms: u_src (level i+1, LINEAR, CLAMP_TO_EDGE), u_dsize (level i size).
+ */
+// hfs-variant: HFS_FP32 1
+
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+
+vec2 hfs_split(float v);
+float hfs_h(vec2 t);
+
+uniform highp sampler2D u_src;
+uniform ivec2 u_dsize;
+
+layout(location = 0) out vec4 o_h;
+
+void main()
+{
+    /* gl_FragCoord.xy = (t + 0.5, r + 0.5): the level's texel centre in
+     * normalized coordinates is the same point of the finer level. */
+    vec2 t = texture(u_src, gl_FragCoord.xy / vec2(u_dsize)).xy;
+    o_h = vec4(hfs_split(hfs_h(t)), 0.0, 0.0);
+}

@@ -1,0 +1,184 @@
+/*
+ * gles_env.frag - environment visibility on the full swath (DESIGN.md
+ * "Horizons", "Visibility to SH", "GLES path").  One fragment per receiver
+ * of the visibility grid (grid point min(a*sub, W-1)); writes the 16 SH
+ * coefficients of V_env to four RGBA targets.
+ *
+ * Horizons (fast path): per direction, omega = max(floor, atan(max_i D_i))
+ * over in-grid scales, D_i = (R_L(p_i) - R_L(x)) * inv_run_i.  Fetches are
+ * cut three ways, none of which changes the result:
+ *   - R_L(x), the receiver's own height per level, does not depend on the
+ *     direction: fetched once per level before the direction loop;
+ *   - scales run fine to coarse (growing distance) and stop at the first
+ *     off-grid sample: the grid is convex, so all farther ones are off too;
+ *   - a sample whose best case (the field's largest height, u_vmax) cannot
+ *     beat the running max (started at tan(floor)) is skipped without a
+ *     fetch.  (A local max-mip bound was measured and rejected: even per
+ *     direction it skips only ~12% of the samples on the test terrains,
+ *     less than the bound fetches cost; DESIGN.md "GLES path".)
+ * Visibility: Legendre + folded M_lin (V += C_j v_j, hfs_visibility_sample_
+ * matrix), or with HFS_TABLES the SN08 wedge tables (2D table per wedge,
+ * placed by a z-rotation).  Written: V_env minus the hemisphere above the
+ * receiver's tangent plane (hfs_sh_hemisphere), which the shading pass adds
+ * back at each texel's own normal: on a sub-sampled grid the part of V that
+ * only follows the normal is then exact at every texel, and only the
+ * terrain's occlusion is interpolated.
+ *
+ * HFS_COUNT: instead of V, write the number of texture fetches made
+ * (o_v0 = (count mod 1024, floor(count / 1024), 0, 0)), for measurement.
+ */
+// hfs-variant: HFS_TABLES 1
+// hfs-variant: HFS_FP32 1, HFS_COUNT 1
+
+#ifndef HFS_NLEV
+#define HFS_NLEV 33
+#endif
+#ifndef HFS_NLAYERS
+#define HFS_NLAYERS 25
+#endif
+#ifndef HFS_NDIR
+#define HFS_NDIR 32
+#endif
+#ifndef HFS_TABLE_N
+#define HFS_TABLE_N 257
+#endif
+
+#ifndef HFS_HALF_PI
+#define HFS_HALF_PI 1.5707963267948966
+#endif
+
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+precision highp sampler2DArray;
+
+float hfs_h(vec2 t);
+float hfs_hdiff(vec2 a, vec2 b);
+vec3 hfs_normal(vec4 t);
+vec2 hfs_snap(vec2 o);
+vec4 hfs_nlp_occ_tan(float t);
+vec4 hfs_f16v(vec4 v);
+void hfs_sh_hemisphere(vec3 n, out vec4 h[4]);
+void hfs_sh_rotz(inout vec4 t[4], vec3 c, vec3 s);
+void hfs_sh_mirror_y(inout vec4 t[4]);
+float hfs_table_coord(float omega, float n);
+
+uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
+uniform highp sampler2D u_normals;       /* full resolution, texelFetch */
+#ifdef HFS_TABLES
+uniform highp sampler2DArray u_tab;      /* interior table, 4 layers (k/4) */
+#endif
+uniform ivec2 u_size;                    /* W, H */
+uniform int u_sub;                       /* visibility grid step */
+uniform float u_vmax;                    /* largest normalized height, a hair up */
+
+layout(std140) uniform HfsScales {
+    vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
+};
+layout(std140) uniform HfsSwath {
+    vec4 u_win;                          /* (elev_lo, elev_hi, n, full) */
+    vec4 u_occtop;
+    vec4 u_dir[HFS_NDIR];                /* (cos, sin, 0, 0) */
+    mat4 u_C[HFS_NDIR * 4];              /* folded M_lin, rows as columns */
+    vec4 u_rot[2 * HFS_NDIR + 2];        /* per wedge (cos ma, mirror), (sin ma) */
+};
+
+layout(location = 0) out vec4 o_v0;
+layout(location = 1) out vec4 o_v1;
+layout(location = 2) out vec4 o_v2;
+layout(location = 3) out vec4 o_v3;
+
+#ifdef HFS_TABLES
+/* V += placement of the interior wedge table(a, b). */
+void add_wedge(inout vec4 V[4], float a, float b, int w)
+{
+    float n = float(HFS_TABLE_N);
+    vec2 uv = vec2(hfs_table_coord(a, n), hfs_table_coord(b, n));
+    vec4 t[4];
+    for (int g = 0; g < 4; ++g)
+        t[g] = texture(u_tab, vec3(uv, float(g)));
+    hfs_sh_rotz(t, u_rot[2 * w].xyz, u_rot[2 * w + 1].xyz);
+    for (int g = 0; g < 4; ++g)
+        V[g] += t[g];
+}
+#endif
+
+void main()
+{
+    ivec2 g = min(ivec2(gl_FragCoord.xy) * u_sub, u_size - 1);
+    vec3 n = hfs_normal(texelFetch(u_normals, g, 0));
+    int fetches = 1;
+
+    vec2 hx[HFS_NLAYERS];
+    for (int l = 0; l < HFS_NLAYERS; ++l)
+        hx[l] = texelFetch(u_levels, ivec3(g, l), 0).xy;
+    fetches += HFS_NLAYERS;
+
+    vec2 inv_size = 1.0 / vec2(u_size);
+    vec2 gc = vec2(g) + 0.5;
+    ivec2 last = u_size - 1;
+    vec4 V[4];
+    for (int q = 0; q < 4; ++q)
+        V[q] = vec4(0.0);
+#ifdef HFS_TABLES
+    float om_first = 0.0, om_prev = 0.0;
+#endif
+    for (int j = 0; j < HFS_NDIR; ++j) {
+        vec2 cs = u_dir[j].xy;
+        /* Start at tan(floor): a slope below the tangent plane never wins. */
+        float best = -(n.x * cs.x + n.y * cs.y) / n.z;
+        for (int i = HFS_NLEV - 1; i >= 0; --i) {
+            vec4 sc = u_scale[i];
+            vec2 o = hfs_snap(sc.x * cs);
+            vec2 io = floor(o);
+            ivec2 p = g + ivec2(io);
+            ivec2 lim = last - ivec2(notEqual(o, io)); /* a fraction needs p+1 */
+            if (any(lessThan(p, ivec2(0))) || any(greaterThan(p, lim)))
+                break;
+            vec2 h = hx[int(sc.z)];
+            if ((u_vmax - hfs_h(h)) * sc.y <= best)
+                continue;
+            vec2 t = texture(u_levels, vec3((gc + o) * inv_size, sc.z)).xy;
+            best = max(best, hfs_hdiff(t, h) * sc.y);
+            ++fetches;
+        }
+#ifdef HFS_TABLES
+        float om = clamp(atan(best), -HFS_HALF_PI, HFS_HALF_PI);
+        if (j == 0) {
+            om_first = om;
+        } else {
+            add_wedge(V, om_prev, om, j - 1);
+            fetches += 4;
+        }
+        om_prev = om;
+#else
+        /* The environment's window is the whole [-pi/2, pi/2]: the visible
+         * band is (omega, pi/2], and its NLP vector needs only sin(omega)
+         * and cos^2(omega), both rational in tan(omega) = best. */
+        vec4 v = u_occtop - hfs_nlp_occ_tan(best);
+        V[0] += v * u_C[4 * j];
+        V[1] += v * u_C[4 * j + 1];
+        V[2] += v * u_C[4 * j + 2];
+        V[3] += v * u_C[4 * j + 3];
+#endif
+    }
+#ifdef HFS_TABLES
+    add_wedge(V, om_prev, om_first, HFS_NDIR - 1);
+    fetches += 4;
+#endif
+#ifdef HFS_COUNT
+    o_v0 = vec4(float(fetches % 1024), float(fetches / 1024), 0.0, 0.0);
+    o_v1 = vec4(0.0);
+    o_v2 = vec4(0.0);
+    o_v3 = vec4(0.0);
+#else
+    vec4 hemi[4];
+    hfs_sh_hemisphere(n, hemi);
+    for (int q = 0; q < 4; ++q)
+        V[q] -= hemi[q];
+    o_v0 = hfs_f16v(V[0]);
+    o_v1 = hfs_f16v(V[1]);
+    o_v2 = hfs_f16v(V[2]);
+    o_v3 = hfs_f16v(V[3]);
+#endif
+}

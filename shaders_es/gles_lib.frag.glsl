@@ -1,0 +1,243 @@
+/*
+ * gles_lib.frag - functions shared by the GLES renderer's passes.  At
+ * program creation (runtime/gles_renderer.c) every pass is compiled as
+ *     "#version 300 es" + variant defines + gles_lib.frag
+ *     + sh_product.glsl.inc (generated) + the pass shader,
+ * with #line markers so driver messages name the right part (source string
+ * 1 = this file, 2 = the SH product, 0 = the pass).  Passes declare the
+ * prototypes they use, so each file also compiles alone (build-time check).
+ *
+ * Precision (DESIGN.md "GLES path"): everything here is highp.  Heights are
+ * differenced as hi+lo pairs, angles and SH sums need fp32; nothing in this
+ * renderer is safe at fp16 arithmetic except colour output.
+ *
+ * Variant defines: HFS_FP32 (textures are 32F: heights stored as (v, 0)).
+ */
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+precision highp sampler2DArray;
+
+#define HFS_PI 3.14159265358979
+#define HFS_HALF_PI 1.5707963267948966
+
+/* ---- heights: normalized v stored as (hi, lo), v = hi + lo -------------- */
+
+float hfs_h(vec2 t)
+{
+    return t.x + t.y;
+}
+
+/* a - b, differencing the halves first (exact for equal his). */
+float hfs_hdiff(vec2 a, vec2 b)
+{
+    return (a.x - b.x) + (a.y - b.y);
+}
+
+/* lerp of two hi+lo values in difference form: exact for a == b. */
+float hfs_hlerp(vec2 a, vec2 b, float t)
+{
+    return hfs_h(a) + t * hfs_hdiff(b, a);
+}
+
+/* The fp16 value nearest to v (HFS_FP32: v itself).  Render targets may
+ * convert float to half by truncation (llvmpipe does: a bias of half an
+ * ulp, 2^-12 relative, in every stored value), and packHalf2x16's rounding
+ * is implementation-defined, so the neighbours of whatever it returns are
+ * compared explicitly; the value written is then exactly representable and
+ * stored unchanged. */
+float hfs_f16(float v)
+{
+#ifdef HFS_FP32
+    return v;
+#else
+    uint b = packHalf2x16(vec2(v, 0.0));
+    float h = unpackHalf2x16(b).x;
+    float up = unpackHalf2x16(b + 1u).x;    /* next magnitude (inf/NaN at the ends) */
+    float dn = unpackHalf2x16(b - 1u).x;    /* previous magnitude (NaN below 0) */
+    float best = h;
+    if (abs(up - v) < abs(best - v))
+        best = up;
+    if (abs(dn - v) < abs(best - v))
+        best = dn;
+    return best;
+#endif
+}
+
+vec4 hfs_f16v(vec4 v)
+{
+    return vec4(hfs_f16(v.x), hfs_f16(v.y), hfs_f16(v.z), hfs_f16(v.w));
+}
+
+/* v -> (hi, lo) with hi exactly representable in fp16, so that storing the
+ * pair in an RG16F target keeps v to ~2^-21 relative.  hi need not be the
+ * nearest half (any representable one near v will do: lo holds the rest),
+ * and lo's own rounding in the target (truncation on llvmpipe) costs at most
+ * an ulp of lo, 2^-21 of v: one pack/unpack is enough. */
+vec2 hfs_split(float v)
+{
+#ifdef HFS_FP32
+    return vec2(v, 0.0);
+#else
+    float hi = unpackHalf2x16(packHalf2x16(vec2(v, 0.0))).x;
+    return vec2(hi, v - hi);
+#endif
+}
+
+/* Unit normal from an RGBA texel (nx hi, nx lo, ny hi, ny lo); nz > 0. */
+vec3 hfs_normal(vec4 t)
+{
+    float nx = t.x + t.y, ny = t.z + t.w;
+    return vec3(nx, ny, sqrt(max(1.0 - nx * nx - ny * ny, 1e-30)));
+}
+
+/* ---- sample offsets (DESIGN.md "Horizons", float-sized snapping) --------- */
+
+/* Snaps each component within a float tolerance of an integer to it
+ * (gles_setup.h: HFS_GLES_SNAP_REL, HFS_GLES_SNAP_ABS). */
+vec2 hfs_snap(vec2 o)
+{
+    vec2 r = floor(o + 0.5);
+    vec2 tol = abs(o) * 4.8e-7 + 1e-9;
+    return mix(o, r, lessThanEqual(abs(o - r), tol));
+}
+
+/* ---- Legendre (NS09 section 4) ---------------------------------------------- */
+
+/* Occlusion vector of the step "blocked below elevation sigma"
+ * (runtime/sh_legendre.c hfs_nlp_occlusion). */
+vec4 hfs_nlp_occ(float sigma)
+{
+    sigma = clamp(sigma, -HFS_HALF_PI, HFS_HALF_PI);
+    float s = sin(sigma), c = cos(sigma), c2 = c * c;
+    return vec4((s + 1.0) * 0.7071067811865476,
+                -3.0 * c2 * 0.20412414523193154,
+                -5.0 * s * c2 * 0.15811388300841897,
+                7.0 * c2 * (5.0 * c2 - 4.0) * 0.03340765523905305);
+}
+
+/* hfs_nlp_occ of the angle atan(t), from t alone: sin = t / sqrt(1 + t^2),
+ * cos^2 = 1 / (1 + t^2) (t clamped to +-1e18 so that t^2 stays finite). */
+vec4 hfs_nlp_occ_tan(float t)
+{
+    t = clamp(t, -1e18, 1e18);
+    float r = inversesqrt(1.0 + t * t);
+    float s = t * r, c2 = r * r;
+    return vec4((s + 1.0) * 0.7071067811865476,
+                -3.0 * c2 * 0.20412414523193154,
+                -5.0 * s * c2 * 0.15811388300841897,
+                7.0 * c2 * (5.0 * c2 - 4.0) * 0.03340765523905305);
+}
+
+/* NLP vector of the visible band (max(omega, win.x), win.y]; occ_top is
+ * hfs_nlp_occ(win.y) (cpu_visibility.c visible_nlp). */
+vec4 hfs_visible(float omega, vec4 win, vec4 occ_top)
+{
+    float o = max(omega, win.x);
+    return o >= win.y ? vec4(0.0) : occ_top - hfs_nlp_occ(o);
+}
+
+/* ---- SH: coefficient k lives in v[k / 4][k % 4] ---------------------------- */
+
+/* The clamped cosine about unit n as SH (hfs_sh_rotate_zonal of
+ * hfs_zh_clamped_cosine): band factors sqrt(4pi/(2l+1)) zh_l = pi, 2pi/3,
+ * pi/4, 0 times y_k(n). */
+void hfs_sh_cosine(vec3 n, out vec4 h[4])
+{
+    float x = n.x, y = n.y, z = n.z;
+    float a0 = 3.14159265358979 * 0.28209479177387814;
+    float a1 = 2.0943951023931953 * 0.4886025119029199;
+    float a2 = 0.7853981633974483;
+    h[0] = vec4(a0, a1 * y, a1 * z, a1 * x);
+    h[1] = vec4(a2 * 1.0925484305920792 * x * y, a2 * 1.0925484305920792 * y * z,
+                a2 * 0.31539156525252005 * (3.0 * z * z - 1.0),
+                a2 * 1.0925484305920792 * x * z);
+    h[2] = vec4(a2 * 0.5462742152960396 * (x * x - y * y), 0.0, 0.0, 0.0);
+    h[3] = vec4(0.0);
+}
+
+/* The hemisphere above the plane of unit normal n as SH (hfs_sh_rotate_zonal
+ * of hfs_zh_cap(pi/2)): band factors 2pi, pi, 0, -pi/4 times y_k(n).  The
+ * visibility grid stores V_env minus this at each receiver and the shading
+ * pass adds it back at each texel's own normal (DESIGN.md "GLES path"). */
+void hfs_sh_hemisphere(vec3 n, out vec4 h[4])
+{
+    float x = n.x, y = n.y, z = n.z;
+    float b1 = 3.14159265358979 * 0.4886025119029199;
+    float b3 = -0.7853981633974483;
+    h[0] = vec4(6.283185307179586 * 0.28209479177387814, b1 * y, b1 * z, b1 * x);
+    h[1] = vec4(0.0);
+    h[2] = vec4(0.0, b3 * 0.5900435899266435 * y * (3.0 * x * x - y * y),
+                b3 * 2.890611442640554 * x * y * z,
+                b3 * 0.4570457994644658 * y * (5.0 * z * z - 1.0));
+    h[3] = vec4(b3 * 0.3731763325901154 * z * (5.0 * z * z - 3.0),
+                b3 * 0.4570457994644658 * x * (5.0 * z * z - 1.0),
+                b3 * 1.445305721320277 * z * (x * x - y * y),
+                b3 * 0.5900435899266435 * x * (x * x - 3.0 * y * y));
+}
+
+float hfs_sh_dot(vec4 a[4], vec4 b[4])
+{
+    return dot(a[0], b[0]) + dot(a[1], b[1]) + dot(a[2], b[2]) + dot(a[3], b[3]);
+}
+
+/* Rotation about +z by angle a given (cos ma), (sin ma), m = 1..3
+ * (runtime/sh.h hfs_sh_rotate_z): per band l and m > 0,
+ *   out[l(l+1)+m] = c in[l(l+1)+m] - s in[l(l+1)-m]
+ *   out[l(l+1)-m] = s in[l(l+1)+m] + c in[l(l+1)-m]. */
+void hfs_sh_rotz(inout vec4 t[4], vec3 c, vec3 s)
+{
+    float p, q;
+    p = t[0].w; q = t[0].y;            /* l=1, m=1: k 3, 1 */
+    t[0].w = c.x * p - s.x * q; t[0].y = s.x * p + c.x * q;
+    p = t[1].w; q = t[1].y;            /* l=2, m=1: k 7, 5 */
+    t[1].w = c.x * p - s.x * q; t[1].y = s.x * p + c.x * q;
+    p = t[2].x; q = t[1].x;            /* l=2, m=2: k 8, 4 */
+    t[2].x = c.y * p - s.y * q; t[1].x = s.y * p + c.y * q;
+    p = t[3].y; q = t[2].w;            /* l=3, m=1: k 13, 11 */
+    t[3].y = c.x * p - s.x * q; t[2].w = s.x * p + c.x * q;
+    p = t[3].z; q = t[2].z;            /* l=3, m=2: k 14, 10 */
+    t[3].z = c.y * p - s.y * q; t[2].z = s.y * p + c.y * q;
+    p = t[3].w; q = t[2].y;            /* l=3, m=3: k 15, 9 */
+    t[3].w = c.z * p - s.z * q; t[2].y = s.z * p + c.z * q;
+}
+
+/* Reflection y -> -y: negates the m < 0 coefficients (k 1, 4, 5, 9, 10, 11). */
+void hfs_sh_mirror_y(inout vec4 t[4])
+{
+    t[0].y = -t[0].y;
+    t[1].x = -t[1].x;
+    t[1].y = -t[1].y;
+    t[2].yzw = -t[2].yzw;
+}
+
+/* Texture coordinate of horizon omega in a wedge table of n entries over
+ * [-pi/2, pi/2] (runtime/sh_wedge_table.c table_cell). */
+float hfs_table_coord(float omega, float n)
+{
+    float u = clamp((omega + HFS_HALF_PI) * ((n - 1.0) / HFS_PI), 0.0, n - 1.0);
+    return (u + 0.5) / n;
+}
+
+/* ---- lights ------------------------------------------------------------------ */
+
+/* Irradiance of a uniform cap of half-angle alpha (< pi/2) whose axis makes
+ * angle acos(cos_beta) with the normal (runtime/lights.c). */
+float hfs_cap_irradiance(float cos_beta, float alpha)
+{
+    cos_beta = clamp(cos_beta, -1.0, 1.0);
+    if (!(alpha > 0.0))
+        return 0.0;
+    float beta = acos(cos_beta);
+    float s = sin(alpha), s2 = s * s;
+    if (beta + alpha <= HFS_HALF_PI)
+        return HFS_PI * s2 * cos_beta;
+    if (beta - alpha >= HFS_HALF_PI)
+        return 0.0;
+    float sin_beta = sin(beta);
+    float x = cos(alpha) / s;
+    float y = clamp(-x * cos_beta / sin_beta, -1.0, 1.0);
+    float q = sin_beta * sqrt(max(1.0 - y * y, 0.0));
+    float e = (cos_beta * acos(y) - x * q) * s2 + atan(q, x);
+    return max(e, 0.0);
+}
