@@ -125,7 +125,7 @@ typedef struct hfs_lighting {
 /* ---- quality settings ----------------------------------------------------- */
 
 typedef enum hfs_backend {
-    HFS_BACKEND_DEFAULT = 0, /* = CPU until the GLES renderer lands (issue 3) */
+    HFS_BACKEND_DEFAULT = 0, /* = GLES, the product                         */
     HFS_BACKEND_GLES,
     HFS_BACKEND_CPU,
     HFS_BACKEND_TRUTH

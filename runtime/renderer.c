@@ -39,7 +39,7 @@ int hfs_renderer_create(const hfs_renderer_desc *desc, hfs_renderer **out, hfs_e
     *out = NULL;
     hfs_backend b = desc ? desc->backend : HFS_BACKEND_DEFAULT;
     if (b == HFS_BACKEND_DEFAULT)
-        b = HFS_BACKEND_CPU;
+        b = HFS_BACKEND_GLES; /* the product */
     if (b != HFS_BACKEND_CPU && b != HFS_BACKEND_TRUTH && b != HFS_BACKEND_GLES)
         return hfs_fail(err, HFS_E_INVALID, "backend %d: unknown", (int)b);
     hfs_renderer *r = calloc(1, sizeof *r);
