@@ -18,7 +18,7 @@
 #                 measured envelope per scene, ~1.5x the measurement)
 add_library(hfs_test_gles_scenes STATIC ${CMAKE_CURRENT_LIST_DIR}/test_gles_scenes.c)
 target_include_directories(hfs_test_gles_scenes PUBLIC ${CMAKE_CURRENT_LIST_DIR})
-target_link_libraries(hfs_test_gles_scenes PUBLIC hfshade_lib hfshade_io m)
+target_link_libraries(hfs_test_gles_scenes PUBLIC hfshade_lib hfshade_io hfs_terrain_gen m)
 
 add_executable(test_gles_render ${CMAKE_CURRENT_LIST_DIR}/test_gles_render.c)
 target_link_libraries(test_gles_render PRIVATE hfs_test_gles_scenes)

@@ -1,9 +1,11 @@
 /*
- * test_gles_scenes.c — see test_gles_scenes.h.
+ * test_gles_scenes.c — see test_gles_scenes.h.  Terrains come from
+ * tools/terrain_gen.c, the generators hfgen uses.
  */
 #include "test_gles_scenes.h"
 
 #include "hfs_io.h"
+#include "terrain_gen.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -12,79 +14,6 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
-
-/* ---- terrains (tools/hfgen.c) ---------------------------------------------------- */
-
-static void gen_cones(float *z, int w, int h)
-{
-    static const double cones[][3] = {{0.30, 0.35, 0.16}, {0.70, 0.30, 0.10}, {0.55, 0.70, 0.20},
-                                      {0.20, 0.78, 0.07}, {0.85, 0.75, 0.06}};
-    const double side = w < h ? w : h;
-    for (int j = 0; j < h; ++j)
-        for (int i = 0; i < w; ++i) {
-            double v = 0.0;
-            for (size_t c = 0; c < sizeof cones / sizeof cones[0]; ++c) {
-                const double cx = cones[c][0] * (w - 1), cy = cones[c][1] * (h - 1);
-                const double r = cones[c][2] * side;
-                const double cone = 0.8 * (r - hypot(i - cx, j - cy));
-                if (cone > v)
-                    v = cone;
-            }
-            z[(size_t)j * w + i] = (float)v;
-        }
-}
-
-static uint32_t hash3(uint32_t x, uint32_t y, uint32_t s)
-{
-    uint32_t v = x * 0x8da6b343u ^ y * 0xd8163841u ^ s * 0xcb1ab31fu;
-    v ^= v >> 16;
-    v *= 0x7feb352du;
-    v ^= v >> 15;
-    v *= 0x846ca68bu;
-    v ^= v >> 16;
-    return v;
-}
-
-static double lattice(int x, int y, uint32_t seed)
-{
-    return (double)hash3((uint32_t)x, (uint32_t)y, seed) / 4294967295.0 * 2.0 - 1.0;
-}
-
-static double value_noise(double x, double y, uint32_t seed)
-{
-    const int xi = (int)floor(x), yi = (int)floor(y);
-    const double fx = x - xi, fy = y - yi;
-    const double ux = fx * fx * fx * (fx * (fx * 6 - 15) + 10);
-    const double uy = fy * fy * fy * (fy * (fy * 6 - 15) + 10);
-    const double a = lattice(xi, yi, seed), b = lattice(xi + 1, yi, seed);
-    const double c = lattice(xi, yi + 1, seed), d = lattice(xi + 1, yi + 1, seed);
-    return (a + (b - a) * ux) * (1 - uy) + (c + (d - c) * ux) * uy;
-}
-
-static void gen_fractal(float *z, int w, int h, uint32_t seed, double relief)
-{
-    const double side = w < h ? w : h;
-    double lo = INFINITY, hi = -INFINITY;
-    double *tmp = malloc((size_t)w * h * sizeof *tmp);
-    if (!tmp)
-        return;
-    for (int j = 0; j < h; ++j)
-        for (int i = 0; i < w; ++i) {
-            double v = 0.0, amp = 1.0, freq = 2.0 / side;
-            for (int o = 0; o < 8; ++o) {
-                v += amp * value_noise(i * freq, j * freq, seed + (uint32_t)o * 101u);
-                amp *= 0.5;
-                freq *= 2.0;
-            }
-            tmp[(size_t)j * w + i] = v;
-            lo = fmin(lo, v);
-            hi = fmax(hi, v);
-        }
-    const double scale = hi > lo ? relief * side / (hi - lo) : 0.0;
-    for (size_t k = 0; k < (size_t)w * h; ++k)
-        z[k] = (float)((tmp[k] - lo) * scale);
-    free(tmp);
-}
 
 int scene_make(const char *name, int n, const char *data_dir, scene *s)
 {
@@ -97,11 +26,13 @@ int scene_make(const char *name, int n, const char *data_dir, scene *s)
     s->f.dx = 1.0;
     s->f.zscale = 1.0;
     if (!strcmp(name, "cones")) {
-        gen_cones(s->z, n, n);
-    } else if (!strcmp(name, "fractal")) {
-        gen_fractal(s->z, n, n, 1, 1.0);
-    } else if (!strcmp(name, "fractal25")) {
-        gen_fractal(s->z, n, n, 1, 0.25);
+        hfs_terrain_cones(s->z, n, n);
+    } else if (!strcmp(name, "fractal") || !strcmp(name, "fractal25")) {
+        if (hfs_terrain_fractal(s->z, n, n, 1, !strcmp(name, "fractal") ? 1.0 : 0.25)) {
+            fprintf(stderr, "scene %s: out of memory\n", name);
+            scene_free(s);
+            return -1;
+        }
     } else if (!strcmp(name, "flat")) {
         memset(s->z, 0, (size_t)n * n * sizeof *s->z);
     } else if (!strcmp(name, "dem")) {

@@ -2,6 +2,10 @@
 add_executable(hfshade ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.c)
 target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfs_sh hfs_board)
 
-# Deterministic procedural height fields for tests and benchmarks.
+# Deterministic procedural height fields for tests and benchmarks: the
+# generators (one definition for hfgen, tests and benchmarks) and the tool.
+add_library(hfs_terrain_gen STATIC ${CMAKE_CURRENT_SOURCE_DIR}/terrain_gen.c)
+target_include_directories(hfs_terrain_gen PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(hfs_terrain_gen PUBLIC m)
 add_executable(hfgen ${CMAKE_CURRENT_SOURCE_DIR}/hfgen.c)
-target_link_libraries(hfgen PRIVATE hfshade_io m)
+target_link_libraries(hfgen PRIVATE hfshade_io hfs_terrain_gen m)

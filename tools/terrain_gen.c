@@ -1,0 +1,120 @@
+/*
+ * terrain_gen.c — see terrain_gen.h.
+ */
+#include "terrain_gen.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+/* Cones of slope ~0.8 (38.7 degrees) on a flat base: a few sizes, some
+ * overlapping, placed relative to the field so every size looks alike. */
+void hfs_terrain_cones(float *z, int w, int h)
+{
+    static const double cones[][3] = {/* centre x, y (fraction), radius (fraction of min side) */
+                                      {0.30, 0.35, 0.16}, {0.70, 0.30, 0.10}, {0.55, 0.70, 0.20},
+                                      {0.20, 0.78, 0.07}, {0.85, 0.75, 0.06}};
+    const double side = w < h ? w : h;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            double v = 0.0;
+            for (size_t c = 0; c < sizeof cones / sizeof cones[0]; ++c) {
+                const double cx = cones[c][0] * (w - 1), cy = cones[c][1] * (h - 1);
+                const double r = cones[c][2] * side;
+                const double d = hypot(i - cx, j - cy);
+                const double cone = 0.8 * (r - d);
+                if (cone > v)
+                    v = cone;
+            }
+            z[(size_t)j * w + i] = (float)v;
+        }
+}
+
+static double clamp01(double x)
+{
+    return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x);
+}
+
+/* A control panel for small local lights close to a surface (issue 4), in
+ * units of 1/128 of the short side: a plate at height 2 cut by a grid of
+ * grooves (2 deep, 2-unit flat bottom, 1-unit walls) every 32 units at
+ * 16 + 32k, and on every grid node between them an embossed feature: square
+ * buttons (3 high, 14 wide, 2-unit bevel) and, in checkerboard, round knobs
+ * (5 high, radius 6, 1.5-unit bevel).  Heights scale with the size too. */
+void hfs_terrain_panel(float *z, int w, int h)
+{
+    const double s = (w < h ? w : h) / 128.0;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const double x = i / s, y = j / s;
+            const double gx = fabs(fmod(x, 32.0) - 16.0), gy = fabs(fmod(y, 32.0) - 16.0);
+            const double groove = 2.0 * fmax(clamp01(2.0 - gx), clamp01(2.0 - gy));
+            double v = 2.0 - groove;
+            const double kx = floor(x / 32.0 + 0.5), ky = floor(y / 32.0 + 0.5);
+            const double bx = fabs(x - 32.0 * kx), by = fabs(y - 32.0 * ky);
+            double feature;
+            if (((long)kx + (long)ky) % 2 == 0)
+                feature = 3.0 * clamp01((9.0 - fmax(bx, by)) / 2.0);   /* button */
+            else
+                feature = 5.0 * clamp01((7.5 - hypot(bx, by)) / 1.5);  /* knob   */
+            if (feature > 0.0)
+                v = fmax(v, 2.0 + feature);
+            z[(size_t)j * w + i] = (float)(v * s);
+        }
+}
+
+static uint32_t hash3(uint32_t x, uint32_t y, uint32_t s)
+{
+    uint32_t v = x * 0x8da6b343u ^ y * 0xd8163841u ^ s * 0xcb1ab31fu;
+    v ^= v >> 16;
+    v *= 0x7feb352du;
+    v ^= v >> 15;
+    v *= 0x846ca68bu;
+    v ^= v >> 16;
+    return v;
+}
+
+static double lattice(int x, int y, uint32_t seed)
+{
+    return (double)hash3((uint32_t)x, (uint32_t)y, seed) / 4294967295.0 * 2.0 - 1.0;
+}
+
+/* Value noise with quintic fade: C2, so normals are smooth. */
+static double value_noise(double x, double y, uint32_t seed)
+{
+    const int xi = (int)floor(x), yi = (int)floor(y);
+    const double fx = x - xi, fy = y - yi;
+    const double ux = fx * fx * fx * (fx * (fx * 6 - 15) + 10);
+    const double uy = fy * fy * fy * (fy * (fy * 6 - 15) + 10);
+    const double a = lattice(xi, yi, seed), b = lattice(xi + 1, yi, seed);
+    const double c = lattice(xi, yi + 1, seed), d = lattice(xi + 1, yi + 1, seed);
+    return (a + (b - a) * ux) * (1 - uy) + (c + (d - c) * ux) * uy;
+}
+
+/* fBm, 8 octaves, gain 0.5, base period = the field's smaller side / 2;
+ * rescaled so heights span [0, relief * side]. */
+int hfs_terrain_fractal(float *z, int w, int h, uint32_t seed, double relief)
+{
+    const double side = w < h ? w : h;
+    double lo = INFINITY, hi = -INFINITY;
+    double *tmp = malloc((size_t)w * h * sizeof *tmp);
+    if (!tmp)
+        return -1;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            double v = 0.0, amp = 1.0, freq = 2.0 / side;
+            for (int o = 0; o < 8; ++o) {
+                v += amp * value_noise(i * freq, j * freq, seed + (uint32_t)o * 101u);
+                amp *= 0.5;
+                freq *= 2.0;
+            }
+            tmp[(size_t)j * w + i] = v;
+            lo = fmin(lo, v);
+            hi = fmax(hi, v);
+        }
+    const double scale = hi > lo ? relief * side / (hi - lo) : 0.0;
+    for (size_t k = 0; k < (size_t)w * h; ++k)
+        z[k] = (float)((tmp[k] - lo) * scale);
+    free(tmp);
+    return 0;
+}
