@@ -131,11 +131,15 @@ typedef enum hfs_backend {
     HFS_BACKEND_TRUTH
 } hfs_backend;
 
+/* How horizons become SH visibility (docs/DESIGN.md). */
 typedef enum hfs_visibility_path {
-        HFS_VIS_LEGENDRE = 1,    /* NS09: Legendre occlusion vector + M_lin     */
+    HFS_VIS_LEGENDRE = 1,    /* NS09: Legendre occlusion vector + M_lin,
+                                with the light's elevation window (default) */
     HFS_VIS_WEDGE_TABLE      /* SN08: 2D/1D tabulated visibility wedges     */
 } hfs_visibility_path;
 
+/* Texture precision of the GLES path: fp16 is the product (profile
+ * es30-half); fp32 is for comparison and needs EXT_color_buffer_float. */
 typedef enum hfs_precision {
     HFS_PRECISION_FP16 = 1,
     HFS_PRECISION_FP32
@@ -169,8 +173,8 @@ HFS_API void hfs_quality_defaults(hfs_quality *q);
 /* No environment, no lights, albedo 1. */
 HFS_API void hfs_lighting_defaults(hfs_lighting *l);
 
-/* Progress callback for long renders (truth): fraction in [0, 1].  Called
- * from the rendering thread only; may be NULL. */
+/* Progress callback for long renders (cpu, truth): fraction in [0, 1].
+ * Called from the rendering thread only; may be NULL. */
 typedef void (*hfs_progress_fn)(void *user, double fraction);
 
 /* ---- output -------------------------------------------------------------- */
@@ -183,7 +187,6 @@ typedef struct hfs_image {
 
 HFS_API int hfs_image_alloc(hfs_image *img, int width, int height, hfs_error *err);
 HFS_API void hfs_image_free(hfs_image *img);
-
 
 /* ---- the renderer ------------------------------------------------------------ */
 
