@@ -13,7 +13,9 @@
  *                layers of one RG 2D array texture;
  *   env          horizons + SH visibility on the visibility grid, 4 RGBA MRT;
  *   key          per key light, horizon excess per swath direction;
- *   shade        full resolution: H(N), products, lights -> RGB;
+ *   shade        full resolution: H(N), products, lights -> RGB; local
+ *                lights (issue 4) entirely in this pass, per texel
+ *                (HFS_LOCAL, uniform block HfsLocal, local_upload);
  *   readback     RGBA -> hfs_image (the power-of-two output scale divided out).
  * upload..env depend only on the terrain and the settings: they are skipped
  * while those do not change (the heights are compared with a kept copy).
@@ -23,6 +25,7 @@
  * each call.  Nothing is printed; nothing is global.
  */
 #include "backends.h"
+#include "cpu_local.h"
 #include "cpu_visibility.h"
 #include "field_geom.h"
 #include "gl_caps.h"
@@ -59,8 +62,8 @@ static const char *const pass_names[P_COUNT] = {"upload", "normals", "decimate",
 enum { U_LEVELS = 0, U_NORMALS = 1, U_TAB = 2, U_V0 = 2, U_KEYHZ = 6, U_KTAB = 7, U_KTABB = 8,
        U_SRC = 0, U_VSRC = 4 };
 #define RECON_MRT 4 /* levels per y pass: ES 3.0's minimum draw buffers */
-enum { B_SCALES = 0, B_SWATH = 1, B_SHADE = 2, B_KEYS = 3 };
-enum { UBO_SCALES, UBO_ENV, UBO_KEYSWATH, UBO_SHADE, UBO_KEYS, UBO_COUNT };
+enum { B_SCALES = 0, B_SWATH = 1, B_SHADE = 2, B_KEYS = 3, B_LOCAL = 4 };
+enum { UBO_SCALES, UBO_ENV, UBO_KEYSWATH, UBO_SHADE, UBO_KEYS, UBO_LOCAL, UBO_COUNT };
 
 typedef struct program {
     char key[224];
@@ -304,7 +307,7 @@ static int program_get(hfs_gles *g, const char *frag, const char *const *defines
     }
     static const struct { const char *name; GLuint binding; } blocks[] = {
         {"HfsScales", B_SCALES}, {"HfsSwath", B_SWATH}, {"HfsShade", B_SHADE},
-        {"HfsKeys", B_KEYS}};
+        {"HfsKeys", B_KEYS}, {"HfsLocal", B_LOCAL}};
     for (size_t i = 0; i < sizeof blocks / sizeof blocks[0]; ++i) {
         GLuint idx = gl->GetUniformBlockIndex(id, blocks[i].name);
         if (idx != GL_INVALID_INDEX)
@@ -962,6 +965,8 @@ typedef struct frame {
     double l_env[3][HFS_SH_N];
     double rho_pi;
     int key_layers;
+    int n_local;                          /* contributing local lights (issue 4) */
+    hfs_local_light local[HFS_MAX_LOCAL_LIGHTS];
 } frame;
 
 static void frame_free(frame *fr)
@@ -974,6 +979,56 @@ static void frame_free(frame *fr)
 static size_t align_up(size_t v, size_t a)
 {
     return (v + a - 1) / a * a;
+}
+
+/* HfsLocal (gles_shade.frag, HFS_LOCAL): elevation moments E (16 vec4),
+ * (dx, base, hscale, zscale), (nphi_local, forced full swath, 0, 0), two vec4
+ * per light ((centre, radius), (Le, 0)), then the full swath's directions
+ * (the robust floats of hfs_gles_swath_float_dirs), one vec4 each. */
+static int local_upload(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality *q,
+                        const frame *fr, hfs_error *err)
+{
+    const int nphi = q->nphi_local;
+    const size_t n4 = 16 + 2 + 2 * HFS_MAX_LOCAL_LIGHTS + (size_t)nphi;
+    int rc;
+    if ((rc = hfs_gl_caps_check_uniform_block(&g->caps, n4 * 16,
+                                              "local lights (--nphi-local)", err)))
+        return rc;
+    float *u = scratch(g, n4 * 16 + (size_t)nphi * 2 * sizeof(float));
+    if (!u)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+    memset(u, 0, n4 * 16);
+    double E[HFS_SH_N * HFS_NLP_N];
+    hfs_local_elevation_moments(E);
+    for (int i = 0; i < HFS_SH_N * HFS_NLP_N; ++i)
+        u[i] = (float)E[i];
+    float *gq = u + 64;
+    gq[0] = (float)L->dx;
+    gq[1] = (float)L->base;
+    gq[2] = (float)L->hscale;
+    gq[3] = (float)L->zscale;
+    gq[4] = (float)nphi;
+    gq[5] = q->local_full_swath ? 1.0f : 0.0f;
+    float *lt = u + 72;
+    for (int i = 0; i < fr->n_local; ++i) {
+        for (int c = 0; c < 3; ++c) {
+            lt[8 * i + c] = (float)fr->local[i].pos[c];
+            lt[8 * i + 4 + c] = fr->local[i].radiance[c];
+        }
+        lt[8 * i + 3] = (float)fr->local[i].radius;
+    }
+    hfs_swath sw;
+    hfs_swath_full(nphi, &sw);
+    float *cs = u + n4 * 4;
+    hfs_gles_swath_float_dirs(L, &sw, cs);
+    float *dirs = u + 72 + 8 * HFS_MAX_LOCAL_LIGHTS;
+    for (int k = 0; k < nphi; ++k) {
+        dirs[4 * k] = cs[2 * k];
+        dirs[4 * k + 1] = cs[2 * k + 1];
+    }
+    ubo_upload(&g->gl, g->ubo[UBO_LOCAL], u, n4 * 16);
+    g->stats.offset_mismatches += hfs_gles_offset_mismatches(L, &sw);
+    return HFS_OK;
 }
 
 static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, hfs_image *out, frame *fr, hfs_error *err)
@@ -1192,6 +1247,9 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     }
     for (int i = 0; i < fr->n_keys; ++i)
         bound += fmax(fr->keys[i].k.le[0], fmax(fr->keys[i].k.le[1], fr->keys[i].k.le[2]));
+    for (int i = 0; i < fr->n_local; ++i) /* E <= pi (inside the sphere) */
+        bound += fmax(fr->local[i].radiance[0],
+                      fmax(fr->local[i].radiance[1], fr->local[i].radiance[2]));
     bound *= fr->rho_pi * PI;
     const double out_scale = caps->fp32 ? 1.0 : hfs_gles_output_scale(bound);
     shade[48] = (float)fr->rho_pi;
@@ -1204,8 +1262,19 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     char kvec[32], tabn[32];
     snprintf(kvec, sizeof kvec, "HFS_KEY_VEC4 %d", rec > 0 ? rec : 1);
     snprintf(tabn, sizeof tabn, "HFS_TABLE_N %d", TABLE_N);
-    const char *defs[6] = {kvec, NULL, NULL, NULL, NULL, NULL};
+    const char *defs[10] = {kvec, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
     int nd = 1;
+    char nlev[32], nlay[32], ldirs[40];
+    if (fr->n_local > 0) {
+        if ((rc = local_upload(g, &L, q, fr, err)))
+            return rc;
+        level_defines(&L, nlev, nlay, sizeof nlev);
+        snprintf(ldirs, sizeof ldirs, "HFS_LOCAL_DIRS %d", q->nphi_local);
+        defs[nd++] = "HFS_LOCAL 1";
+        defs[nd++] = nlev;
+        defs[nd++] = nlay;
+        defs[nd++] = ldirs;
+    }
     if (tables && fr->n_keys > 0) {
         defs[nd++] = "HFS_TABLES 1";
         defs[nd++] = tabn;
@@ -1222,6 +1291,12 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     for (int i = 0; i < 4; ++i)
         bind_tex(gl, U_V0 + i, GL_TEXTURE_2D, r->venv[i]);
     bind_tex(gl, U_KEYHZ, GL_TEXTURE_2D_ARRAY, r->keyhz);
+    if (fr->n_local > 0) {
+        bind_tex(gl, U_LEVELS, GL_TEXTURE_2D_ARRAY, r->arr);
+        set_i1(gl, prog, "u_nlocal", fr->n_local);
+        gl->BindBufferBase(GL_UNIFORM_BUFFER, B_SCALES, g->ubo[UBO_SCALES]);
+        gl->BindBufferBase(GL_UNIFORM_BUFFER, B_LOCAL, g->ubo[UBO_LOCAL]);
+    }
     if (tables && fr->n_keys > 0) {
         bind_tex(gl, U_KTAB, GL_TEXTURE_2D_ARRAY, g->ktab);
         bind_tex(gl, U_KTABB, GL_TEXTURE_2D_ARRAY, g->ktabb);
@@ -1298,10 +1373,10 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
 {
     const double t_start = now_ms();
     for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
-        if (!l->local[i].disabled && any_positive3f(l->local[i].radiance))
+        if (hfs_cpu_local_contributes(&l->local[i]) && q->visibility == HFS_VIS_WEDGE_TABLE)
             return hfs_fail(err, HFS_E_UNSUPPORTED,
-                            "backend gles: local lights are not supported yet (issue 4); "
-                            "disable local light %d or use --backend truth", i + 1);
+                            "backend gles: local lights on the wedge-table path are not "
+                            "supported yet (issue 4); use --visibility legendre or --backend cpu");
     int rc = hfs_gl_context_make_current(g->ctx, err);
     if (rc)
         return rc;
@@ -1335,8 +1410,11 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
         hfs_sh_rotate_zonal(zh, fk->k.dir[0], fk->k.dir[1], fk->k.dir[2], fk->k.l_sh);
         fk->k.l_norm = sqrt(hfs_sh_dot(fk->k.l_sh, fk->k.l_sh));
     }
+    for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
+        if (hfs_cpu_local_contributes(&l->local[i]))
+            fr.local[fr.n_local++] = l->local[i];
     fr.rho_pi = l->albedo / PI;
-    if ((!fr.has_env && fr.n_keys == 0) || !(l->albedo > 0.0)) {
+    if ((!fr.has_env && fr.n_keys == 0 && fr.n_local == 0) || !(l->albedo > 0.0)) {
         memset(out->rgb, 0, (size_t)out->width * out->height * 3 * sizeof *out->rgb);
         return HFS_OK;
     }

@@ -25,8 +25,9 @@
  *       light with 9 directions (two key passes), a pole-covering key light
  *       (full swath), three key lights at once, env only, key only, albedo,
  *       env rotation, both visibility paths.
- *   errors        refusals: local lights, an unknown profile, fp32 under
- *       es30-half, nphi-env beyond the es30 uniform-block limit.
+ *   errors        refusals: local lights on the wedge-table path, an unknown
+ *       profile, fp32 under es30-half, nphi-env beyond the es30 uniform-block
+ *       limit.
  *
  * Lighting: a non-uniform, coloured SH environment (sky brighter towards
  * +z and +x) and one key light (azimuth 336, elevation 15, radius 2
@@ -463,10 +464,12 @@ static int mode_errors(void)
     l.local[0].pos[2] = 20.0;
     l.local[0].radius = 1.0;
     l.local[0].radiance[0] = l.local[0].radiance[1] = l.local[0].radiance[2] = 1.0f;
+    q.visibility = HFS_VIS_WEDGE_TABLE; /* local lights: Legendre only (test_gles_local.c) */
     int rc = hfs_renderer_render(r, &s.f, &l, &q, &img, NULL, NULL, &err);
     printf("local light: %s\n", err.msg);
     CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "local"), "local light: %d %s", rc, err.msg);
     l.n_local = 0;
+    q.visibility = HFS_VIS_LEGENDRE;
 
     q.nphi_env = 128; /* 2 + 17*128 + 258 vec4 = 39 KB > 16 KB (es30) */
     rc = hfs_renderer_render(r, &s.f, &l, &q, &img, NULL, NULL, &err);

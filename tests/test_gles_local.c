@@ -1,0 +1,417 @@
+/*
+ * test_gles_local.c — local spherical lights on the GLES path (issue 4,
+ * DESIGN.md "Local lights", "GLES path") against the CPU reference
+ * (label "gl").  One executable, one mode per ctest entry:
+ *
+ *   equal SCENE N SWATH SUB PREC MEAN MAX
+ *       SCENE = cones | panel (128x128, tools/hfgen.c's formulas, made
+ *       in-test), the first N (1..8) lights of tools/bench_local.sh's sets,
+ *       local lights only, SWATH = partial (default) | full
+ *       (q.local_full_swath), subsample SUB, PREC = fp16 | fp32, Legendre
+ *       path, otherwise default quality.  SPEC metrics (|gles - cpu| over
+ *       the max unshadowed value); fails if mean > MEAN or max > MAX or any
+ *       output is non-finite.
+ *   dem      the 96x96 DEM crop (dx 83, zscale 2: world units far from 1),
+ *       three lights placed from the crop's height range, fp16, vs the CPU
+ *       (the equal bound 1e-3 / 1e-2).
+ *   mixed    cones, 3 local lights + the test sky + the key light
+ *       (scene_lighting), fp16, subsample 1 and 2 against the CPU.
+ *   flat     a flat plane: one light high above (the whole cap above the
+ *       horizon, E = pi sin^2(alpha) cos(beta), nothing occludes) equals the
+ *       analytic value within the fp16 bound (relative 1e-4 of the max); a
+ *       light sunk into the plane gives rho Le exactly at the receivers
+ *       inside the sphere.
+ *   sub      local lights are evaluated at full resolution (as the CPU
+ *       reference does whatever the sub-sampling): with local lights only,
+ *       subsample 2 and 4 give bit for bit the image of subsample 1; a light
+ *       moved on the cached terrain renders as in a fresh renderer.
+ *   errors   the wedge-table path with a local light is refused with one
+ *       line naming local lights and the wedge-table path.
+ *
+ * No GLES context here: exit 77.
+ */
+#include "backends.h"
+#include "terrain_gen.h"
+#include "test_gles_scenes.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define SKIP 77
+#define SIZE 128
+
+#ifndef HFS_DATA_DIR
+#define HFS_DATA_DIR "data"
+#endif
+
+static int failures;
+
+#define CHECK(cond, ...)                                                        \
+    do {                                                                        \
+        if (!(cond)) {                                                          \
+            fprintf(stderr, "%s:%d: FAIL: ", __FILE__, __LINE__);               \
+            fprintf(stderr, __VA_ARGS__);                                       \
+            fputc('\n', stderr);                                                \
+            failures++;                                                         \
+        }                                                                       \
+    } while (0)
+
+/* tools/bench_local.sh: x, y, z, radius, radiance (grey). */
+static const double CONES_L[8][5] = {
+    {64, 64, 12, 2, 100}, {20, 20, 6, 1.5, 60}, {100, 110, 25, 3, 150}, {50, 110, 4, 1, 40},
+    {110, 60, 8, 1, 50},  {70, 15, 3, 1, 30},   {30, 70, 15, 2, 80},    {90, 80, 30, 4, 200}};
+static const double PANEL_L[8][5] = {
+    {48, 48, 7, 1.5, 50}, {80, 20, 6, 1, 40},  {20, 80, 9, 2, 60},  {112, 100, 3, 0.8, 30},
+    {60, 90, 8, 1, 50},   {16, 16, 6, 1, 40},  {100, 48, 10, 2, 80}, {40, 110, 5, 1, 40}};
+
+typedef struct field_buf {
+    hfs_field f;
+    float *z;
+} field_buf;
+
+static int field_make(const char *name, int n, field_buf *b)
+{
+    memset(b, 0, sizeof *b);
+    b->z = calloc((size_t)n * n, sizeof *b->z);
+    if (!b->z)
+        return -1;
+    if (!strcmp(name, "cones"))
+        hfs_terrain_cones(b->z, n, n);
+    else if (!strcmp(name, "panel"))
+        hfs_terrain_panel(b->z, n, n);
+    else if (strcmp(name, "flat")) {
+        fprintf(stderr, "unknown scene %s\n", name);
+        free(b->z);
+        return -1;
+    }
+    b->f.width = n;
+    b->f.height = n;
+    b->f.z = b->z;
+    b->f.dx = 1.0;
+    b->f.zscale = 1.0;
+    return 0;
+}
+
+static void local_set(hfs_lighting *l, const double (*set)[5], int n)
+{
+    l->n_local = n;
+    for (int i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c)
+            l->local[i].pos[c] = set[i][c];
+        l->local[i].radius = set[i][3];
+        for (int c = 0; c < 3; ++c)
+            l->local[i].radiance[c] = (float)set[i][4];
+        l->local[i].disabled = 0;
+    }
+}
+
+static hfs_lighting lighting_local_only(void)
+{
+    hfs_lighting l;
+    memset(&l, 0, sizeof l);
+    l.albedo = 0.8;
+    return l;
+}
+
+static hfs_quality quality(const char *prec, int sub, int full)
+{
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    q.precision = prec && !strcmp(prec, "fp32") ? HFS_PRECISION_FP32 : HFS_PRECISION_FP16;
+    q.visibility = HFS_VIS_LEGENDRE;
+    q.subsample = sub;
+    q.local_full_swath = full;
+    return q;
+}
+
+static hfs_renderer *gles_or_skip(void)
+{
+    hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES};
+    hfs_renderer *r = NULL;
+    hfs_error err;
+    int rc = hfs_renderer_create(&d, &r, &err);
+    if (rc) {
+        printf("SKIP: no GLES renderer here: %s\n", err.msg);
+        exit(SKIP);
+    }
+    return r;
+}
+
+static int render_with(hfs_backend backend, hfs_renderer *r, const hfs_field *f,
+                       const hfs_lighting *l, const hfs_quality *q, hfs_image *img)
+{
+    hfs_error err;
+    if (!img->rgb && hfs_image_alloc(img, f->width, f->height, &err)) {
+        CHECK(0, "alloc: %s", err.msg);
+        return -1;
+    }
+    hfs_renderer *own = NULL;
+    if (!r) {
+        hfs_renderer_desc d = {.backend = backend};
+        if (hfs_renderer_create(&d, &own, &err)) {
+            CHECK(0, "create: %s", err.msg);
+            return -1;
+        }
+        r = own;
+    }
+    int rc = hfs_renderer_render(r, f, l, q, img, NULL, NULL, &err);
+    CHECK(rc == 0, "render: %s", err.msg);
+    hfs_renderer_destroy(own);
+    return rc;
+}
+
+static hfs_metrics compare(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                           const hfs_image *a, const hfs_image *b)
+{
+    hfs_metrics m;
+    memset(&m, 0, sizeof m);
+    hfs_image un = {0};
+    hfs_error err;
+    if (hfs_image_alloc(&un, f->width, f->height, &err) ||
+        hfs_render_unshadowed(f, l, q, &un, &err) ||
+        hfs_compare_images(a, b, hfs_image_max(&un), &m, &err))
+        CHECK(0, "compare: %s", err.msg);
+    hfs_image_free(&un);
+    return m;
+}
+
+static int bitequal(const hfs_image *a, const hfs_image *b)
+{
+    return a->width == b->width && a->height == b->height &&
+           !memcmp(a->rgb, b->rgb, (size_t)a->width * a->height * 3 * sizeof(float));
+}
+
+/* ---- modes ---------------------------------------------------------------------------- */
+
+static int mode_equal(const char *name, int n, const char *swath, int sub, const char *prec,
+                      double bmean, double bmax)
+{
+    field_buf fb;
+    if (field_make(name, SIZE, &fb))
+        return 1;
+    hfs_renderer *r = gles_or_skip();
+    hfs_lighting l = lighting_local_only();
+    local_set(&l, !strcmp(name, "panel") ? PANEL_L : CONES_L, n < 1 ? 1 : (n > 8 ? 8 : n));
+    hfs_quality q = quality(prec, sub, !strcmp(swath, "full"));
+    hfs_image g = {0}, c = {0};
+    if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &g) &&
+        !render_with(HFS_BACKEND_CPU, NULL, &fb.f, &l, &q, &c)) {
+        hfs_metrics m = compare(&fb.f, &l, &q, &g, &c);
+        printf("%s %d lights %s sub %d %s: mean %.3e max %.3e (bounds %.1e %.1e), norm %.4g\n",
+               name, n, swath, sub, prec, m.mean_abs, m.max_abs, bmean, bmax, m.norm);
+        CHECK(m.nonfinite == 0, "non-finite outputs: %ld", m.nonfinite);
+        CHECK(m.mean_abs <= bmean, "mean %.3e > %.3e", m.mean_abs, bmean);
+        CHECK(m.max_abs <= bmax, "max %.3e > %.3e", m.max_abs, bmax);
+    }
+    hfs_image_free(&g);
+    hfs_image_free(&c);
+    hfs_renderer_destroy(r);
+    free(fb.z);
+    return failures ? 1 : 0;
+}
+
+static int mode_dem(void)
+{
+    scene s;
+    if (scene_make("dem", 96, HFS_DATA_DIR, &s))
+        return 1;
+    hfs_renderer *r = gles_or_skip();
+    double zlo = 1e300, zhi = -1e300;
+    for (int i = 0; i < s.f.width * s.f.height; ++i) {
+        zlo = fmin(zlo, s.f.zscale * s.f.z[i]);
+        zhi = fmax(zhi, s.f.zscale * s.f.z[i]);
+    }
+    const double zm = 0.5 * (zlo + zhi);
+    const double set[3][5] = {{4000, 4000, zhi + 400, 250, 100},
+                              {1500, 6000, zm + 150, 120, 80},
+                              {6500, 2000, zm + 60, 60, 60}};
+    hfs_lighting l = lighting_local_only();
+    local_set(&l, set, 3);
+    hfs_quality q = quality("fp16", 1, 0);
+    hfs_image g = {0}, c = {0};
+    if (!render_with(HFS_BACKEND_GLES, r, &s.f, &l, &q, &g) &&
+        !render_with(HFS_BACKEND_CPU, NULL, &s.f, &l, &q, &c)) {
+        hfs_metrics m = compare(&s.f, &l, &q, &g, &c);
+        printf("dem, 3 lights (z %.0f..%.0f): mean %.3e max %.3e (bounds 1e-3 1e-2)\n", zlo, zhi,
+               m.mean_abs, m.max_abs);
+        CHECK(m.nonfinite == 0 && m.mean_abs <= 1e-3 && m.max_abs <= 1e-2, "dem out of bounds");
+    }
+    hfs_image_free(&g);
+    hfs_image_free(&c);
+    hfs_renderer_destroy(r);
+    scene_free(&s);
+    return failures ? 1 : 0;
+}
+
+static int mode_mixed(void)
+{
+    scene s;
+    if (scene_make("cones", 64, ".", &s))
+        return 1;
+    hfs_renderer *r = gles_or_skip();
+    hfs_lighting l = scene_lighting(1, 1);
+    static const double set[3][5] = {{32, 32, 8, 1.5, 100}, {10, 12, 4, 1, 60}, {50, 55, 15, 2, 150}};
+    local_set(&l, set, 3);
+    for (int sub = 1; sub <= 2; ++sub) {
+        hfs_quality q = quality("fp16", sub, 0);
+        hfs_image g = {0}, c = {0};
+        if (!render_with(HFS_BACKEND_GLES, r, &s.f, &l, &q, &g) &&
+            !render_with(HFS_BACKEND_CPU, NULL, &s.f, &l, &q, &c)) {
+            hfs_metrics m = compare(&s.f, &l, &q, &g, &c);
+            /* sub 1: the fp16 bound of the other GLES tests; sub 2: the
+             * env/key sub-sampling envelope of cones (tests/gles.cmake). */
+            const double bmean = sub == 1 ? 1e-4 : 2e-3, bmax = sub == 1 ? 1e-3 : 0.2;
+            printf("mixed sub %d: mean %.3e max %.3e (bounds %.1e %.1e)\n", sub, m.mean_abs,
+                   m.max_abs, bmean, bmax);
+            CHECK(m.nonfinite == 0, "non-finite outputs");
+            CHECK(m.mean_abs <= bmean && m.max_abs <= bmax, "mixed sub %d out of bounds", sub);
+        }
+        hfs_image_free(&g);
+        hfs_image_free(&c);
+    }
+    hfs_renderer_destroy(r);
+    scene_free(&s);
+    return failures ? 1 : 0;
+}
+
+static int mode_flat(void)
+{
+    const int n = 32;
+    field_buf fb;
+    if (field_make("flat", n, &fb))
+        return 1;
+    hfs_renderer *r = gles_or_skip();
+    hfs_lighting l = lighting_local_only();
+    const double rho = l.albedo;
+    /* High light: beta <= atan(16 sqrt 2 / 20) = 48.5 deg, alpha = 5.7 deg. */
+    static const double high[1][5] = {{16, 16, 20, 2, 100}};
+    local_set(&l, high, 1);
+    hfs_quality q = quality("fp16", 1, 0);
+    hfs_image g = {0};
+    if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &g)) {
+        double worst = 0.0, vmax = 0.0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double v[3] = {16.0 - i, 16.0 - j, 20.0 - 1e-4};
+                const double d = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                const double sa = 2.0 / d, cb = v[2] / d;
+                const double want = rho / PI * 100.0 * PI * sa * sa * cb;
+                vmax = fmax(vmax, want);
+                for (int c = 0; c < 3; ++c)
+                    worst = fmax(worst, fabs(g.rgb[3 * ((size_t)j * n + i) + c] - want));
+            }
+        printf("flat, light above: max |gles - analytic| %.3e of max %.4g (bound 1e-4 rel)\n",
+               worst, vmax);
+        CHECK(worst <= 1e-4 * vmax, "flat: %.3e > 1e-4 * %.4g", worst, vmax);
+    }
+    /* Sunk light: receivers within the sphere get rho Le (E = pi). */
+    static const double sunk[1][5] = {{8, 8, 0, 3, 10}};
+    local_set(&l, sunk, 1);
+    int inside = 0, bad = 0;
+    hfs_image c = {0};
+    if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &g) &&
+        !render_with(HFS_BACKEND_CPU, NULL, &fb.f, &l, &q, &c)) {
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double dx = 8.0 - i, dy = 8.0 - j, dz = -1e-4;
+                if (dx * dx + dy * dy + dz * dz > 8.5) /* clear of the surface (r^2 = 9) */
+                    continue;
+                ++inside;
+                for (int ch = 0; ch < 3; ++ch)
+                    bad += fabs(g.rgb[3 * ((size_t)j * n + i) + ch] - rho * 10.0) > 1e-4 * rho * 10.0;
+            }
+        hfs_metrics m = compare(&fb.f, &l, &q, &g, &c);
+        printf("flat, sunk light: %d receivers inside, %d channels off rho Le; vs cpu mean %.3e "
+               "max %.3e\n", inside, bad, m.mean_abs, m.max_abs);
+        CHECK(inside > 0 && bad == 0, "sunk light: %d of %d", bad, inside);
+        CHECK(m.mean_abs <= 1e-4 && m.max_abs <= 1e-3, "sunk light vs cpu");
+    }
+    hfs_image_free(&c);
+    hfs_image_free(&g);
+    hfs_renderer_destroy(r);
+    free(fb.z);
+    return failures ? 1 : 0;
+}
+
+static int mode_sub(void)
+{
+    field_buf fb;
+    if (field_make("panel", 64, &fb))
+        return 1;
+    hfs_renderer *r = gles_or_skip();
+    hfs_lighting l = lighting_local_only();
+    static const double set[2][5] = {{24, 24, 5, 1.5, 50}, {40, 10, 4, 1, 40}};
+    local_set(&l, set, 2);
+    hfs_image a = {0}, b = {0};
+    hfs_quality q = quality("fp16", 1, 0);
+    if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &a))
+        for (int sub = 2; sub <= 4; sub *= 2) {
+            q.subsample = sub;
+            if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &b))
+                CHECK(bitequal(&a, &b), "subsample %d differs from subsample 1", sub);
+        }
+    /* Cache: moving a light on a cached terrain equals a fresh renderer. */
+    l.local[0].pos[0] = 30.0;
+    l.local[0].radius = 2.5;
+    q.subsample = 1;
+    hfs_image fresh = {0};
+    if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &a) &&
+        !render_with(HFS_BACKEND_GLES, NULL, &fb.f, &l, &q, &fresh))
+        CHECK(bitequal(&a, &fresh), "moved light on the cached terrain differs from a fresh renderer");
+    hfs_image_free(&fresh);
+    printf("sub: local lights at subsample 2, 4 equal subsample 1 bit for bit; cache ok\n");
+    hfs_image_free(&a);
+    hfs_image_free(&b);
+    hfs_renderer_destroy(r);
+    free(fb.z);
+    return failures ? 1 : 0;
+}
+
+static int mode_errors(void)
+{
+    field_buf fb;
+    if (field_make("cones", 32, &fb))
+        return 1;
+    hfs_renderer *r = gles_or_skip();
+    hfs_lighting l = lighting_local_only();
+    static const double one[1][5] = {{16, 16, 20, 1, 1}};
+    local_set(&l, one, 1);
+    hfs_quality q = quality("fp16", 1, 0);
+    q.visibility = HFS_VIS_WEDGE_TABLE;
+    hfs_image img = {0};
+    hfs_error err;
+    if (hfs_image_alloc(&img, 32, 32, &err))
+        return 1;
+    int rc = hfs_renderer_render(r, &fb.f, &l, &q, &img, NULL, NULL, &err);
+    printf("wedge tables + local light: %s\n", err.msg);
+    CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "local") && strstr(err.msg, "wedge") &&
+              !strchr(err.msg, '\n'),
+          "wedge + local: %d %s", rc, err.msg);
+    hfs_image_free(&img);
+    hfs_renderer_destroy(r);
+    free(fb.z);
+    return failures ? 1 : 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc >= 9 && !strcmp(argv[1], "equal"))
+        return mode_equal(argv[2], atoi(argv[3]), argv[4], atoi(argv[5]), argv[6],
+                          atof(argv[7]), atof(argv[8]));
+    if (argc >= 2 && !strcmp(argv[1], "dem"))
+        return mode_dem();
+    if (argc >= 2 && !strcmp(argv[1], "mixed"))
+        return mode_mixed();
+    if (argc >= 2 && !strcmp(argv[1], "flat"))
+        return mode_flat();
+    if (argc >= 2 && !strcmp(argv[1], "sub"))
+        return mode_sub();
+    if (argc >= 2 && !strcmp(argv[1], "errors"))
+        return mode_errors();
+    fprintf(stderr, "usage: test_gles_local equal SCENE N partial|full SUB fp16|fp32 MEAN MAX\n"
+                    "       test_gles_local dem|mixed|flat|sub|errors\n");
+    return 2;
+}
