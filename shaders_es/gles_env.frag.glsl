@@ -53,9 +53,11 @@ precision highp sampler2D;
 precision highp sampler2DArray;
 
 float hfs_h(vec2 t);
-float hfs_hdiff(vec2 a, vec2 b);
 vec3 hfs_normal(vec4 t);
-vec2 hfs_snap(vec2 o);
+ivec2 hfs_receiver(ivec2 size, int sub);
+void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
+bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
+float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
 vec4 hfs_nlp_occ_tan(float t);
 vec4 hfs_f16v(vec4 v);
 void hfs_sh_hemisphere(vec3 n, out vec4 h[4]);
@@ -105,18 +107,12 @@ void add_wedge(inout vec4 V[4], float a, float b, int w)
 
 void main()
 {
-    ivec2 g = min(ivec2(gl_FragCoord.xy) * u_sub, u_size - 1);
+    ivec2 g = hfs_receiver(u_size, u_sub);
     vec3 n = hfs_normal(texelFetch(u_normals, g, 0));
-    int fetches = 1;
-
     vec2 hx[HFS_NLAYERS];
-    for (int l = 0; l < HFS_NLAYERS; ++l)
-        hx[l] = texelFetch(u_levels, ivec3(g, l), 0).xy;
-    fetches += HFS_NLAYERS;
+    hfs_receiver_heights(u_levels, g, hx);
+    int fetches = 1 + HFS_NLAYERS;
 
-    vec2 inv_size = 1.0 / vec2(u_size);
-    vec2 gc = vec2(g) + 0.5;
-    ivec2 last = u_size - 1;
     vec4 V[4];
     for (int q = 0; q < 4; ++q)
         V[q] = vec4(0.0);
@@ -129,17 +125,13 @@ void main()
         float best = -(n.x * cs.x + n.y * cs.y) / n.z;
         for (int i = HFS_NLEV - 1; i >= 0; --i) {
             vec4 sc = u_scale[i];
-            vec2 o = hfs_snap(sc.x * cs);
-            vec2 io = floor(o);
-            ivec2 p = g + ivec2(io);
-            ivec2 lim = last - ivec2(notEqual(o, io)); /* a fraction needs p+1 */
-            if (any(lessThan(p, ivec2(0))) || any(greaterThan(p, lim)))
+            vec2 o;
+            if (!hfs_scale_offset(g, u_size, sc.x, cs, o))
                 break;
             vec2 h = hx[int(sc.z)];
             if ((u_vmax - hfs_h(h)) * sc.y <= best)
                 continue;
-            vec2 t = texture(u_levels, vec3((gc + o) * inv_size, sc.z)).xy;
-            best = max(best, hfs_hdiff(t, h) * sc.y);
+            best = max(best, hfs_scale_slope(u_levels, g, u_size, o, sc, h));
             ++fetches;
         }
 #ifdef HFS_TABLES

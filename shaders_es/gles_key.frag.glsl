@@ -42,11 +42,15 @@ precision highp int;
 precision highp sampler2D;
 precision highp sampler2DArray;
 
-float hfs_h(vec2 t);
-float hfs_hdiff(vec2 a, vec2 b);
 vec3 hfs_normal(vec4 t);
-vec2 hfs_snap(vec2 o);
 vec2 hfs_split(float v);
+ivec2 hfs_receiver(ivec2 size, int sub);
+void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
+float hfs_floor(vec3 n, vec2 cs);
+bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
+float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
+void hfs_bspline_push(inout float best, inout vec4 w, float a, int i);
+float hfs_bspline_close(float best, vec4 w);
 
 uniform highp sampler2DArray u_levels;
 uniform highp sampler2D u_normals;
@@ -77,72 +81,44 @@ layout(location = 3) out vec4 o_h3;
 
 void main()
 {
-    ivec2 g = min(ivec2(gl_FragCoord.xy) * u_sub, u_size - 1);
+    ivec2 g = hfs_receiver(u_size, u_sub);
     vec3 n = hfs_normal(texelFetch(u_normals, g, 0));
-    int fetches = 1;
-
     vec2 hx[HFS_NLAYERS];
-    for (int l = 0; l < HFS_NLAYERS; ++l)
-        hx[l] = texelFetch(u_levels, ivec3(g, l), 0).xy;
-    fetches += HFS_NLAYERS;
+    hfs_receiver_heights(u_levels, g, hx);
+    int fetches = 1 + HFS_NLAYERS;
 
-    vec2 inv_size = 1.0 / vec2(u_size);
-    vec2 gc = vec2(g) + 0.5;
-    ivec2 last = u_size - 1;
     float ex[2 * HFS_NOUT];
     for (int q = 0; q < 2 * HFS_NOUT; ++q)
         ex[q] = 0.0;
 
     for (int q = 0; q < u_ndir; ++q) {
         vec2 cs = u_dir[u_dir0 + q].xy;
-        float fl = atan(-(n.x * cs.x + n.y * cs.y), n.z);
-        /* Per-scale angles from fine (i = N-1) to coarse, and on the fly the
-         * B-spline over the scale index at every knot and midpoint, indices
-         * clamped (runtime/cpu_horizon.c hfs_horizon_bspline_max, same
-         * expressions): after om[i] arrives, w0..w3 = om[i..i+3] and knot
-         * i+1 and midpoint i+1 are complete.  Past the grid every angle is
-         * the floor: three more steps flush the window, then nothing can
-         * exceed the floor any more. */
-        float best = fl, w0 = fl, w1 = fl, w2 = fl, w3 = fl;
+        float fl = hfs_floor(n, cs);
+        /* Per-scale angles from fine to coarse into the B-spline max.  Past
+         * the grid every angle is the floor: three more steps flush the
+         * window, then nothing can exceed the floor any more. */
+        float best = fl;
+        vec4 w = vec4(fl);
         int tail = 3;
         int i = HFS_NLEV - 1;
         for (; i >= 0; --i) {
             float a = fl;
             if (tail == 3) {
                 vec4 sc = u_scale[i];
-                vec2 o = hfs_snap(sc.x * cs);
-                vec2 io = floor(o);
-                ivec2 p = g + ivec2(io);
-                ivec2 lim = last - ivec2(notEqual(o, io));
-                if (any(lessThan(p, ivec2(0))) || any(greaterThan(p, lim))) {
+                vec2 o;
+                if (!hfs_scale_offset(g, u_size, sc.x, cs, o)) {
                     --tail;
                 } else {
-                    vec2 h = hx[int(sc.z)];
-                    vec2 t = texture(u_levels, vec3((gc + o) * inv_size, sc.z)).xy;
-                    a = atan(hfs_hdiff(t, h) * sc.y);
+                    a = atan(hfs_scale_slope(u_levels, g, u_size, o, sc, hx[int(sc.z)]));
                     ++fetches;
                 }
             } else if (--tail < 0) {
                 break;
             }
-            if (i == HFS_NLEV - 1) {
-                w0 = w1 = w2 = w3 = a;
-                continue;
-            }
-            w3 = w2;
-            w2 = w1;
-            w1 = w0;
-            w0 = a;
-            best = max(best, w1 + ((w0 - w1) + (w2 - w1)) / 6.0);                 /* knot i+1 */
-            if (i + 2 < HFS_NLEV)
-                best = max(best, w1 + ((w0 - w1) + 23.0 * (w2 - w1) + (w3 - w1)) / 48.0);
+            hfs_bspline_push(best, w, a, i);
         }
-        if (i < 0) {
-            /* Knot 0 and midpoint 0 (om[-1] clamps to om[0]). */
-            best = max(best, w0 + ((w0 - w0) + (w1 - w0)) / 6.0);
-            if (HFS_NLEV > 1)
-                best = max(best, w0 + ((w0 - w0) + 23.0 * (w1 - w0) + (w2 - w0)) / 48.0);
-        }
+        if (i < 0)
+            best = hfs_bspline_close(best, w);
         best = clamp(best, -HFS_HALF_PI, HFS_HALF_PI);
         ex[q] = max(best - fl, 0.0);
     }

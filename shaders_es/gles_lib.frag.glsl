@@ -241,3 +241,79 @@ float hfs_cap_irradiance(float cos_beta, float alpha)
     float e = (cos_beta * acos(y) - x * q) * s2 + atan(q, x);
     return max(e, 0.0);
 }
+
+/* ---- horizon sampling on the visibility grid (gles_env, gles_key, ------ */
+/* ---- gles_shade's local lights; DESIGN.md "Horizons") ------------------- */
+
+#ifndef HFS_NLEV
+#define HFS_NLEV 33
+#endif
+#ifndef HFS_NLAYERS
+#define HFS_NLAYERS 25
+#endif
+
+/* This fragment's receiver: grid point min(a * sub, size - 1). */
+ivec2 hfs_receiver(ivec2 size, int sub)
+{
+    return min(ivec2(gl_FragCoord.xy) * sub, size - 1);
+}
+
+/* R_L(x) of receiver g at every level (layer l of the R_L array), fetched
+ * once: it does not depend on the direction. */
+void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS])
+{
+    for (int l = 0; l < HFS_NLAYERS; ++l)
+        hx[l] = texelFetch(levels, ivec3(g, l), 0).xy;
+}
+
+/* Floor of direction cs: the elevation of the receiver's tangent plane. */
+float hfs_floor(vec3 n, vec2 cs)
+{
+    return atan(-(n.x * cs.x + n.y * cs.y), n.z);
+}
+
+/* Texel offset o = snap(d * cs) of a scale sample from receiver g; false
+ * when it falls off the size grid (a fractional offset also needs p + 1). */
+bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o)
+{
+    o = hfs_snap(d * cs);
+    vec2 io = floor(o);
+    ivec2 p = g + ivec2(io);
+    ivec2 lim = size - 1 - ivec2(notEqual(o, io));
+    return !(any(lessThan(p, ivec2(0))) || any(greaterThan(p, lim)));
+}
+
+/* Slope D = (R_L(g + o) - R_L(g)) * inv_run of scale sc = (d, inv_run,
+ * layer, 0), h = R_L(g); the sample is bilinear (the array is LINEAR). */
+float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h)
+{
+    vec2 inv_size = 1.0 / vec2(size);
+    vec2 gc = vec2(g) + 0.5;
+    vec2 t = texture(levels, vec3((gc + o) * inv_size, sc.z)).xy;
+    return hfs_hdiff(t, h) * sc.y;
+}
+
+/* B-spline max over the scale index on the fly, fed per-scale angles from
+ * fine (i = HFS_NLEV - 1) to coarse, indices clamped (runtime/cpu_horizon.c
+ * hfs_horizon_bspline_max, same expressions): after om[i] = a arrives,
+ * w = om[i..i+3] and knot i+1 and midpoint i+1 are complete. */
+void hfs_bspline_push(inout float best, inout vec4 w, float a, int i)
+{
+    if (i == HFS_NLEV - 1) {
+        w = vec4(a);
+        return;
+    }
+    w = vec4(a, w.xyz);
+    best = max(best, w.y + ((w.x - w.y) + (w.z - w.y)) / 6.0);               /* knot i+1 */
+    if (i + 2 < HFS_NLEV)
+        best = max(best, w.y + ((w.x - w.y) + 23.0 * (w.z - w.y) + (w.w - w.y)) / 48.0);
+}
+
+/* Knot 0 and midpoint 0 (om[-1] clamps to om[0]), once every scale came in. */
+float hfs_bspline_close(float best, vec4 w)
+{
+    best = max(best, w.x + ((w.x - w.x) + (w.y - w.x)) / 6.0);
+    if (HFS_NLEV > 1)
+        best = max(best, w.x + ((w.x - w.x) + 23.0 * (w.y - w.x) + (w.z - w.x)) / 48.0);
+    return best;
+}

@@ -227,9 +227,13 @@ vec3 key_light(int b, vec3 n, vec4 H[4], vec2 uv)
 #endif
 
 float hfs_h(vec2 t);
-float hfs_hdiff(vec2 a, vec2 b);
-vec2 hfs_snap(vec2 o);
 vec4 hfs_nlp_occ(float sigma);
+void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
+float hfs_floor(vec3 n, vec2 cs);
+bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
+float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
+void hfs_bspline_push(inout float best, inout vec4 w, float a, int i);
+float hfs_bspline_close(float best, vec4 w);
 
 uniform highp sampler2DArray u_levels;
 uniform int u_nlocal;
@@ -325,14 +329,10 @@ float local_entry(vec3 v, float c_tan, vec2 cs, float ce, float se)
 vec3 local_lights(ivec2 p, vec3 n, vec4 H[4])
 {
     vec2 hx[HFS_NLAYERS];
-    for (int l = 0; l < HFS_NLAYERS; ++l)
-        hx[l] = texelFetch(u_levels, ivec3(p, l), 0).xy;
+    hfs_receiver_heights(u_levels, p, hx);
     float dx = u_lg.x;
     float z = u_lg.w * (u_lg.y + u_lg.z * hfs_h(hx[HFS_NLAYERS - 1]));
     vec3 pw = vec3(vec2(p) * dx, z + 1e-4 * dx);
-    vec2 inv_size = 1.0 / vec2(u_size);
-    vec2 gc = vec2(p) + 0.5;
-    ivec2 last = u_size - 1;
     int nphi = int(u_lq.x);
     vec3 sum = vec3(0.0);
     for (int q = 0; q < u_nlocal; ++q) {
@@ -406,7 +406,7 @@ vec3 local_lights(ivec2 p, vec3 n, vec4 H[4])
                 if (!(lo < hi))
                     continue;
             }
-            float fl = atan(-(n.x * cs.x + n.y * cs.y), n.z);
+            float fl = hfs_floor(n, cs);
             float t_near = -1.0, cut = reach;
             if (exact) {
                 float u = dot(cs, v.xy), wp = -cs.y * v.x + cs.x * v.y;
@@ -416,9 +416,10 @@ vec3 local_lights(ivec2 p, vec3 n, vec4 H[4])
             }
             float clo = cos(lo), slo = sin(lo), chi = cos(hi), shi = sin(hi);
             /* Per-scale angles fine to coarse with the B-spline max on the
-             * fly (gles_key.frag); a scale beyond the cut or off the grid,
+             * fly (hfs_bspline_push); a scale beyond the cut or off the grid,
              * and every coarser one, is the floor. */
-            float best = fl, w0 = fl, w1 = fl, w2 = fl, w3 = fl;
+            float best = fl;
+            vec4 w = vec4(fl);
             int tail = 3;
             int i = HFS_NLEV - 1;
             for (; i >= 0; --i) {
@@ -426,17 +427,11 @@ vec3 local_lights(ivec2 p, vec3 n, vec4 H[4])
                 if (tail == 3) {
                     vec4 sc = u_scale[i];
                     float dist = sc.x * dx;
-                    vec2 o = hfs_snap(sc.x * cs);
-                    vec2 io = floor(o);
-                    ivec2 pp = p + ivec2(io);
-                    ivec2 lim = last - ivec2(notEqual(o, io));
-                    if (dist > cut || any(lessThan(pp, ivec2(0))) ||
-                        any(greaterThan(pp, lim))) {
+                    vec2 o;
+                    if (!hfs_scale_offset(p, u_size, sc.x, cs, o) || dist > cut) {
                         --tail;
                     } else {
-                        vec2 hr = hx[int(sc.z)];
-                        vec2 t = texture(u_levels, vec3((gc + o) * inv_size, sc.z)).xy;
-                        float D = hfs_hdiff(t, hr) * sc.y;
+                        float D = hfs_scale_slope(u_levels, p, u_size, o, sc, hx[int(sc.z)]);
                         float om = atan(D);
                         if (dist < t_near) {
                             a = om;
@@ -455,23 +450,10 @@ vec3 local_lights(ivec2 p, vec3 n, vec4 H[4])
                 } else if (--tail < 0) {
                     break;
                 }
-                if (i == HFS_NLEV - 1) {
-                    w0 = w1 = w2 = w3 = a;
-                    continue;
-                }
-                w3 = w2;
-                w2 = w1;
-                w1 = w0;
-                w0 = a;
-                best = max(best, w1 + ((w0 - w1) + (w2 - w1)) / 6.0);
-                if (i + 2 < HFS_NLEV)
-                    best = max(best, w1 + ((w0 - w1) + 23.0 * (w2 - w1) + (w3 - w1)) / 48.0);
+                hfs_bspline_push(best, w, a, i);
             }
-            if (i < 0) {
-                best = max(best, w0 + ((w0 - w0) + (w1 - w0)) / 6.0);
-                if (HFS_NLEV > 1)
-                    best = max(best, w0 + ((w0 - w0) + 23.0 * (w1 - w0) + (w2 - w0)) / 48.0);
-            }
+            if (i < 0)
+                best = hfs_bspline_close(best, w);
             float omega = clamp(best, -HFS_HALF_PI, HFS_HALF_PI);
 
             /* g = sum_r m_r A_k[r] E[r]; hat half-widths (left, right). */

@@ -145,7 +145,7 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
         return hfs_fail(err, HFS_E_INVALID, "%s: %s given twice", where, key);
     s->set_mask[src] |= bit;
 
-    double d[5];
+    double d[5] = {0}; /* parse_doubles fills it on success */
     int rc = HFS_OK;
     hfs_quality *q = &s->quality;
     switch ((key_id)id) {
