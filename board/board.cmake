@@ -1,7 +1,8 @@
 # board.cmake — hfs_board: headless GL context backends (gl_context.h).
 #   surfaceless  EGL (pkg-config egl), always built
-#   osmesa       OSMesa (pkg-config osmesa) when HFS_WITH_OSMESA is ON and the
-#                library is found; otherwise the backend answers "not built".
+#   osmesa       OSMesa (pkg-config osmesa, headers) when HFS_WITH_OSMESA is ON
+#                and found, loaded at run time with dlopen (never linked);
+#                otherwise the backend answers "not built".
 # GL itself is not linked: the renderer loads GL entry points from the context
 # (runtime/gl_api.h), because OSMesa is not behind libglvnd's libGLESv2.
 
@@ -21,7 +22,10 @@ if(HFS_WITH_OSMESA)
   if(HFS_OSMESA_FOUND)
     set(HFS_HAVE_OSMESA ON)
     target_compile_definitions(hfs_board PRIVATE HFS_HAVE_OSMESA=1)
-    target_link_libraries(hfs_board PRIVATE PkgConfig::HFS_OSMESA)
+    # Headers only: libOSMesa is dlopen'ed by osmesa.c, so neither
+    # libhfshade nor the tools link it.
+    target_include_directories(hfs_board PRIVATE ${HFS_OSMESA_INCLUDE_DIRS})
+    target_link_libraries(hfs_board PRIVATE ${CMAKE_DL_LIBS})
   else()
     message(STATUS "hfshade: OSMesa not found (libosmesa6-dev); context \"osmesa\" will report \"not built\"")
   endif()

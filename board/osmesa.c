@@ -12,8 +12,11 @@
  * 1x1 RGBA8 buffer inside the object (the renderer draws into FBOs, never
  * into it).  Nothing is shared between objects.
  *
- * Built without OSMesa (HFS_HAVE_OSMESA undefined), create() reports
- * "not built" with HFS_E_UNSUPPORTED.
+ * libOSMesa is loaded at run time (dlopen), not linked: the renderer core
+ * links only EGL (and libc/libm), and a machine without libOSMesa still runs
+ * every other backend; "osmesa" then reports which library could not be
+ * loaded.  Built without the OSMesa headers (HFS_HAVE_OSMESA undefined),
+ * create() reports "not built" with HFS_E_UNSUPPORTED.
  */
 #include "gl_context_backend.h"
 
@@ -22,16 +25,53 @@
 #ifdef HFS_HAVE_OSMESA
 
 #include <GL/osmesa.h>
+#include <dlfcn.h>
+
+/* Debian 12's libosmesa6 soname; the unversioned name only exists with -dev. */
+#define OSMESA_LIBRARY "libOSMesa.so.8"
+
+/* The entry points we use, resolved per context object (no global state). */
+typedef struct osmesa_api {
+    void *lib;
+    OSMesaContext (*CreateContextAttribs)(const int *, OSMesaContext);
+    GLboolean (*MakeCurrent)(OSMesaContext, void *, GLenum, GLsizei, GLsizei);
+    OSMesaContext (*GetCurrentContext)(void);
+    void (*DestroyContext)(OSMesaContext);
+    OSMESAproc (*GetProcAddress)(const char *);
+} osmesa_api;
 
 typedef struct osmesa_context {
     hfs_gl_context base;
+    osmesa_api api;
     OSMesaContext context;
     unsigned char pixel[4]; /* the 1x1 colour buffer OSMesa insists on */
 } osmesa_context;
 
+static int api_load(osmesa_api *a, hfs_error *err)
+{
+    a->lib = dlopen(OSMESA_LIBRARY, RTLD_NOW | RTLD_LOCAL);
+    if (!a->lib)
+        return hfs_fail(err, HFS_E_CONTEXT, "cannot load %s (%s)", OSMESA_LIBRARY, dlerror());
+    /* POSIX: dlsym's void * converts to a function pointer. */
+#define RESOLVE(field, sym)                                                             \
+    do {                                                                                \
+        *(void **)&a->field = dlsym(a->lib, sym);                                       \
+        if (!a->field) {                                                                \
+            return hfs_fail(err, HFS_E_CONTEXT, "%s lacks %s", OSMESA_LIBRARY, sym);    \
+        }                                                                               \
+    } while (0)
+    RESOLVE(CreateContextAttribs, "OSMesaCreateContextAttribs");
+    RESOLVE(MakeCurrent, "OSMesaMakeCurrent");
+    RESOLVE(GetCurrentContext, "OSMesaGetCurrentContext");
+    RESOLVE(DestroyContext, "OSMesaDestroyContext");
+    RESOLVE(GetProcAddress, "OSMesaGetProcAddress");
+#undef RESOLVE
+    return HFS_OK;
+}
+
 static int bind(osmesa_context *c, hfs_error *err)
 {
-    if (!OSMesaMakeCurrent(c->context, c->pixel, GL_UNSIGNED_BYTE, 1, 1))
+    if (!c->api.MakeCurrent(c->context, c->pixel, GL_UNSIGNED_BYTE, 1, 1))
         return hfs_fail(err, HFS_E_CONTEXT, "OSMesaMakeCurrent failed");
     return HFS_OK;
 }
@@ -40,10 +80,14 @@ static void osmesa_destroy(hfs_gl_context *base)
 {
     osmesa_context *c = (osmesa_context *)base;
     if (c->context) {
-        if (OSMesaGetCurrentContext() == c->context)
-            OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
-        OSMesaDestroyContext(c->context);
+        if (c->api.GetCurrentContext() == c->context)
+            c->api.MakeCurrent(NULL, NULL, 0, 0, 0);
+        c->api.DestroyContext(c->context);
     }
+    /* The library handle is deliberately not dlclose'd: Mesa keeps threads
+     * and atexit handlers in it, and leak checkers could no longer name its
+     * frames (tests/lsan.supp matches libOSMesa).  dlopen reference-counts,
+     * so every context shares the one mapping. */
     free(c);
 }
 
@@ -54,6 +98,9 @@ static int osmesa_create(hfs_gl_context **out, hfs_error *err)
     if (!c)
         return hfs_fail(err, HFS_E_NOMEM, "out of memory");
     c->base.backend = &hfs_gl_backend_osmesa;
+    rc = api_load(&c->api, err);
+    if (rc)
+        goto err_free;
 
     const int attribs[] = {
         OSMESA_FORMAT, OSMESA_RGBA,
@@ -65,7 +112,7 @@ static int osmesa_create(hfs_gl_context **out, hfs_error *err)
         OSMESA_CONTEXT_MINOR_VERSION, 3,
         0
     };
-    c->context = OSMesaCreateContextAttribs(attribs, NULL);
+    c->context = c->api.CreateContextAttribs(attribs, NULL);
     if (!c->context) {
         /* OSMesa gives no reason; the usual one is a classic (non-gallium)
          * OSMesa, which has no core profile. */
@@ -80,7 +127,7 @@ static int osmesa_create(hfs_gl_context **out, hfs_error *err)
     return HFS_OK;
 
 err_context:
-    OSMesaDestroyContext(c->context);
+    c->api.DestroyContext(c->context);
 err_free:
     free(c);
     return rc;
@@ -88,9 +135,9 @@ err_free:
 
 static void *osmesa_proc(const hfs_gl_context *base, const char *name)
 {
-    (void)base; /* OSMesaGetProcAddress is context-independent */
+    const osmesa_context *c = (const osmesa_context *)base;
     /* POSIX lets function pointers round-trip through void * (dlsym). */
-    return (void *)OSMesaGetProcAddress(name);
+    return (void *)c->api.GetProcAddress(name);
 }
 
 static int osmesa_make_current(hfs_gl_context *base, hfs_error *err)
