@@ -18,6 +18,7 @@
 # embedded compilers reject other bytes even inside comments.
 
 cmake_minimum_required(VERSION 3.20)
+include(${CMAKE_CURRENT_LIST_DIR}/shader_variants.cmake)
 
 function(check_source path text)
   if(text MATCHES "(^|\n)[ \t]*#[ \t]*version")
@@ -38,26 +39,16 @@ if(MODE STREQUAL "validate")
   get_filename_component(name "${INPUT}" NAME)
 
   # One variant without defines, then one per "// hfs-variant:" line.
-  set(variants "<none>")
-  string(REGEX MATCHALL "//[ \t]*hfs-variant:[^\n]*" lines "${text}")
-  foreach(line IN LISTS lines)
-    string(REGEX REPLACE "^//[ \t]*hfs-variant:[ \t]*" "" line "${line}")
-    string(REPLACE ";" "," line "${line}") # keep it one list element
-    list(APPEND variants "${line}")
-  endforeach()
+  hfs_shader_variants("${text}" variants define_blocks)
 
   get_filename_component(stamp_dir "${STAMP}" DIRECTORY)
   set(index 0)
   foreach(variant IN LISTS variants)
+    list(GET define_blocks ${index} defines)
+    string(STRIP "${defines}" defines)
     set(prefix "#version 300 es\n")
-    if(NOT variant STREQUAL "<none>")
-      string(REPLACE "," ";" defines "${variant}")
-      foreach(def IN LISTS defines)
-        string(STRIP "${def}" def)
-        if(def)
-          string(APPEND prefix "#define ${def}\n")
-        endif()
-      endforeach()
+    if(defines)
+      string(APPEND prefix "${defines}\n")
     endif()
     string(APPEND prefix "#line 1\n")
     set(tmp "${stamp_dir}/${name}.${index}.${STAGE}")
