@@ -47,17 +47,7 @@
 #define HFS_DATA_DIR "data"
 #endif
 
-static int failures;
-
-#define CHECK(cond, ...)                                                        \
-    do {                                                                        \
-        if (!(cond)) {                                                          \
-            fprintf(stderr, "%s:%d: FAIL: ", __FILE__, __LINE__);               \
-            fprintf(stderr, __VA_ARGS__);                                       \
-            fputc('\n', stderr);                                                \
-            failures++;                                                         \
-        }                                                                       \
-    } while (0)
+#include "check.h"
 
 /* tools/bench_local.sh: x, y, z, radius, radiance (grey). */
 static const double CONES_L[8][5] = {
