@@ -82,9 +82,9 @@ add_custom_command(
 
 set(HFS_GLES_STAMPS "")
 if(HFS_GLSLANG_VALIDATOR)
-  foreach(pass gles_decimate gles_reconstruct gles_normals gles_env gles_key gles_shade)
+  foreach(pass gles_decimate gles_reconstruct gles_normals gles_env gles_key gles_local gles_shade)
     set(product "")
-    if(pass STREQUAL "gles_shade")
+    if(pass STREQUAL "gles_shade" OR pass STREQUAL "gles_local")
       set(product ${HFS_SH_GLSL_PRODUCT})
     endif()
     set(stamp ${HFS_GLES_GEN}/${pass}.composed.ok)

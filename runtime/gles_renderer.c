@@ -13,9 +13,11 @@
  *                layers of one RG 2D array texture;
  *   env          horizons + SH visibility on the visibility grid, 4 RGBA MRT;
  *   key          per key light, horizon excess per swath direction;
- *   shade        full resolution: H(N), products, lights -> RGB; local
- *                lights (issue 4) entirely in this pass, per texel
- *                (HFS_LOCAL, uniform block HfsLocal, local_upload);
+ *   local        local lights' visibility ratios on the visibility grid,
+ *                up to 8 lights per draw (uniform block HfsLocal,
+ *                local_upload);
+ *   shade        full resolution: H(N), products, lights -> RGB (local
+ *                lights: E_cap per texel times the interpolated ratio);
  *   readback     RGBA -> hfs_image (the power-of-two output scale divided out).
  * upload..env depend only on the terrain and the settings: they are skipped
  * while those do not change (the heights are compared with a kept copy).
@@ -53,14 +55,16 @@ extern const char hfs_gles_sh_product_src[];
 #define MAX_KEYS HFS_MAX_KEY_LIGHTS
 #define DIRS_PER_KEY_PASS 8 /* 4 RGBA targets (ES 3.0's minimum) x 2 (hi, lo) pairs */
 
-enum pass_id { P_UPLOAD, P_NORMALS, P_DECIMATE, P_RECON, P_ENV, P_KEY, P_SHADE, P_READBACK,
-               P_COUNT };
+#define LIGHTS_PER_LOCAL_PASS 8 /* 4 RGBA targets x 2 (hi, lo) ratio pairs */
+
+enum pass_id { P_UPLOAD, P_NORMALS, P_DECIMATE, P_RECON, P_ENV, P_KEY, P_LOCAL, P_SHADE,
+               P_READBACK, P_COUNT };
 static const char *const pass_names[P_COUNT] = {"upload", "normals", "decimate", "reconstruct",
-                                                "env", "key", "shade", "readback"};
+                                                "env", "key", "local", "shade", "readback"};
 
 /* Texture units and uniform-block bindings shared by all passes. */
 enum { U_LEVELS = 0, U_NORMALS = 1, U_TAB = 2, U_V0 = 2, U_KEYHZ = 6, U_KTAB = 7, U_KTABB = 8,
-       U_SRC = 0, U_VSRC = 4 };
+       U_LOCALV = 9, U_SRC = 0, U_VSRC = 4 };
 #define RECON_MRT 4 /* levels per y pass: ES 3.0's minimum draw buffers */
 enum { B_SCALES = 0, B_SWATH = 1, B_SHADE = 2, B_KEYS = 3, B_LOCAL = 4 };
 enum { UBO_SCALES, UBO_ENV, UBO_KEYSWATH, UBO_SHADE, UBO_KEYS, UBO_LOCAL, UBO_COUNT };
@@ -89,9 +93,11 @@ typedef struct resources {
     GLuint venv[4], venv_fbo;
     GLuint keyhz, keyhz_fbo;
     int keyhz_layers;
+    GLuint localv, localv_fbo; /* local-light ratios, 2 lights per layer */
+    int localv_layers;
     GLuint out[2], out_fbo; /* RGB hi, lo: drawn together */
     GLuint out_lo_fbo;      /* lo alone as attachment 0, for the readback */
-    size_t bytes, keyhz_bytes;
+    size_t bytes, keyhz_bytes, localv_bytes;
 } resources;
 
 /* One key light of the frame. */
@@ -271,7 +277,7 @@ static int program_get(hfs_gles *g, const char *frag, const char *const *defines
     const char *vert = hfs_shader_source("fullscreen.vert");
     if (!lib || !pass || !vert)
         return hfs_fail(err, HFS_E_INVALID, "backend gles: shader %s not embedded", frag);
-    const int with_product = !strcmp(frag, "gles_shade.frag");
+    const int with_product = !strcmp(frag, "gles_shade.frag") || !strcmp(frag, "gles_local.frag");
     const char *prod = with_product ? hfs_gles_sh_product_src : "";
     const size_t size = strlen(lib) + strlen(prod) + strlen(pass) + 64;
     char *src = malloc(size);
@@ -298,7 +304,7 @@ static int program_get(hfs_gles *g, const char *frag, const char *const *defines
         {"u_levels", U_LEVELS}, {"u_normals", U_NORMALS}, {"u_tab", U_TAB},
         {"u_src", U_SRC}, {"u_height", U_SRC}, {"u_v0", U_V0}, {"u_v1", U_V0 + 1},
         {"u_v2", U_V0 + 2}, {"u_v3", U_V0 + 3}, {"u_keyhz", U_KEYHZ}, {"u_ktab", U_KTAB},
-        {"u_ktabb", U_KTABB}, {"u_vsrc[0]", U_VSRC}, {"u_vsrc[1]", U_VSRC + 1},
+        {"u_ktabb", U_KTABB}, {"u_localv", U_LOCALV}, {"u_vsrc[0]", U_VSRC}, {"u_vsrc[1]", U_VSRC + 1},
         {"u_vsrc[2]", U_VSRC + 2}, {"u_vsrc[3]", U_VSRC + 3}};
     for (size_t i = 0; i < sizeof samplers / sizeof samplers[0]; ++i) {
         GLint loc = gl->GetUniformLocation(id, samplers[i].name);
@@ -417,6 +423,9 @@ static void grid_free(hfs_gles *g)
     del_tex(gl, &r->keyhz);
     r->keyhz_layers = 0;
     r->keyhz_bytes = 0;
+    del_tex(gl, &r->localv);
+    r->localv_layers = 0;
+    r->localv_bytes = 0;
     r->vw = r->vh = 0;
     g->env_valid = 0;
 }
@@ -443,6 +452,7 @@ static void resources_free(hfs_gles *g)
     del_fbo(gl, &r->out_fbo);
     del_fbo(gl, &r->out_lo_fbo);
     del_fbo(gl, &r->keyhz_fbo);
+    del_fbo(gl, &r->localv_fbo);
     memset(r, 0, sizeof *r);
     g->terrain_valid = 0;
     g->env_valid = 0;
@@ -452,7 +462,7 @@ static void resources_free(hfs_gles *g)
  * level layout and precision; grid-sized ones (visibility, key horizons)
  * also follow the sub-sampling, without touching the terrain's. */
 static int resources_ensure(hfs_gles *g, const hfs_gles_layout *L, int key_layers,
-                            hfs_error *err)
+                            int local_layers, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const hfs_gl_caps *c = &g->caps;
@@ -507,6 +517,7 @@ static int resources_ensure(hfs_gles *g, const hfs_gles_layout *L, int key_layer
             (rc = fbo_new(gl, &r->out_lo_fbo, 1, &r->out[1], NULL, "output", err)))
             return rc;
         gl->GenFramebuffers(1, &r->keyhz_fbo);
+        gl->GenFramebuffers(1, &r->localv_fbo);
         r->valid = 1;
     }
     if (r->vw != L->vw || r->vh != L->vh || !r->venv_fbo) {
@@ -523,13 +534,20 @@ static int resources_ensure(hfs_gles *g, const hfs_gles_layout *L, int key_layer
         r->keyhz_layers = key_layers;
         r->keyhz_bytes = (size_t)L->vw * L->vh * key_layers * c->bytes_rgba;
     }
+    if (local_layers > 0 && r->localv_layers < local_layers) {
+        del_tex(gl, &r->localv);
+        r->localv = tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh, local_layers, 1);
+        r->localv_layers = local_layers;
+        r->localv_bytes = (size_t)L->vw * L->vh * local_layers * c->bytes_rgba;
+    }
     return hfs_gl_check(gl, "backend gles: allocating textures", err);
 }
 
 static size_t resources_bytes(const hfs_gles *g)
 {
     const resources *r = &g->r;
-    return r->bytes + (size_t)4 * r->vw * r->vh * g->caps.bytes_rgba + r->keyhz_bytes;
+    return r->bytes + (size_t)4 * r->vw * r->vh * g->caps.bytes_rgba + r->keyhz_bytes +
+           r->localv_bytes;
 }
 
 static void bind_tex(const hfs_gl *gl, int unit, GLenum target, GLuint t)
@@ -889,69 +907,125 @@ static int run_env(hfs_gles *g, const hfs_gles_layout *L, int tables, int count,
     return hfs_gl_check(gl, "backend gles: env pass", err);
 }
 
+/* Draws the bound program over the visibility grid into `outs` consecutive
+ * layers of the array texture `tex` from `layer0` (through `fbo`); with
+ * fetch_sum, adds the fetch counts the HFS_COUNT twin wrote to target 0. */
+static int draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, GLuint tex,
+                            int layer0, int outs, const char *what, double *fetch_sum,
+                            hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    gl->BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    GLenum bufs[4];
+    for (int o = 0; o < 4; ++o) {
+        gl->FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)o,
+                                    o < outs ? tex : 0, 0, o < outs ? layer0 + o : 0);
+        bufs[o] = GL_COLOR_ATTACHMENT0 + (GLenum)o;
+    }
+    gl->DrawBuffers(outs, bufs);
+    GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: %s framebuffer incomplete (0x%x)",
+                        what, (unsigned)status);
+    draw(gl, fbo, L->vw, L->vh);
+    if (fetch_sum) {
+        float *px = scratch(g, (size_t)L->vw * L->vh * 4 * sizeof(float));
+        if (!px)
+            return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+        int rc = hfs_gl_read_rgba(gl, fbo, 0, 0, L->vw, L->vh, HFS_GL_READ_AUTO, px, NULL, err);
+        if (rc)
+            return rc;
+        for (size_t i = 0; i < (size_t)L->vw * L->vh; ++i)
+            *fetch_sum += px[4 * i] + 1024.0 * px[4 * i + 1];
+    }
+    return HFS_OK;
+}
+
+/* Program `frag` of a grid pass with `outs` targets (HFS_NOUT), the level
+ * defines, `extra` (one more define) and the precision/count variants, made
+ * current with the pyramid, normals, grid size and per-scale constants bound. */
+static int grid_program(hfs_gles *g, const hfs_gles_layout *L, const char *frag,
+                        const char *extra, int outs, int count, GLuint *prog, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    char nlev[32], nlay[32], nout[32];
+    level_defines(L, nlev, nlay, sizeof nlev);
+    snprintf(nout, sizeof nout, "HFS_NOUT %d", outs);
+    const char *defs[7] = {nlev, nlay, extra, nout, NULL, NULL, NULL};
+    int nd = 4;
+    if (g->caps.fp32)
+        defs[nd++] = "HFS_FP32 1";
+    if (count)
+        defs[nd++] = "HFS_COUNT 1";
+    int rc = program_get(g, frag, defs, prog, err);
+    if (rc)
+        return rc;
+    gl->UseProgram(*prog);
+    bind_tex(gl, U_LEVELS, GL_TEXTURE_2D_ARRAY, g->r.arr);
+    bind_tex(gl, U_NORMALS, GL_TEXTURE_2D, g->r.normals);
+    set_i2(gl, *prog, "u_size", L->w, L->h);
+    set_i1(gl, *prog, "u_sub", L->sub);
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, B_SCALES, g->ubo[UBO_SCALES]);
+    return HFS_OK;
+}
+
 /* Key-light passes (or their counting twins) into the horizon excess array. */
 static int run_keys(hfs_gles *g, const hfs_gles_layout *L, const frame_key *keys, int n_keys,
                     int count, double *fetch_sum, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     resources *r = &g->r;
-    char nlev[32], nlay[32], ndir[32], nout[32];
-    level_defines(L, nlev, nlay, sizeof nlev);
+    char ndir[32];
     int rc;
     for (int q = 0; q < n_keys; ++q) {
         const int n = keys[q].k.swath.n;
+        snprintf(ndir, sizeof ndir, "HFS_NDIR %d", n);
         for (int d0 = 0; d0 < n; d0 += DIRS_PER_KEY_PASS) {
             const int cnt = n - d0 < DIRS_PER_KEY_PASS ? n - d0 : DIRS_PER_KEY_PASS;
             const int outs = (cnt + 1) / 2;
-            snprintf(ndir, sizeof ndir, "HFS_NDIR %d", n);
-            snprintf(nout, sizeof nout, "HFS_NOUT %d", outs);
-            const char *defs[7] = {nlev, nlay, ndir, nout, NULL, NULL, NULL};
-            int nd = 4;
-            if (g->caps.fp32)
-                defs[nd++] = "HFS_FP32 1";
-            if (count)
-                defs[nd++] = "HFS_COUNT 1";
             GLuint prog;
-            if ((rc = program_get(g, "gles_key.frag", defs, &prog, err)))
+            if ((rc = grid_program(g, L, "gles_key.frag", ndir, outs, count, &prog, err)))
                 return rc;
-            gl->UseProgram(prog);
-            bind_tex(gl, U_LEVELS, GL_TEXTURE_2D_ARRAY, r->arr);
-            bind_tex(gl, U_NORMALS, GL_TEXTURE_2D, r->normals);
-            set_i2(gl, prog, "u_size", L->w, L->h);
-            set_i1(gl, prog, "u_sub", L->sub);
             set_i1(gl, prog, "u_dir0", d0);
             set_i1(gl, prog, "u_ndir", cnt);
-            gl->BindBufferBase(GL_UNIFORM_BUFFER, B_SCALES, g->ubo[UBO_SCALES]);
             gl->BindBufferRange(GL_UNIFORM_BUFFER, B_SWATH, g->ubo[UBO_KEYSWATH],
                                 (GLintptr)keys[q].swath_off, (GLsizeiptr)keys[q].swath_size);
-            gl->BindFramebuffer(GL_FRAMEBUFFER, r->keyhz_fbo);
-            GLenum bufs[4];
-            for (int o = 0; o < 4; ++o) {
-                gl->FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)o,
-                                            o < outs ? r->keyhz : 0, 0,
-                                            o < outs ? keys[q].k.hz_layer + d0 / 2 + o : 0);
-                bufs[o] = GL_COLOR_ATTACHMENT0 + (GLenum)o;
-            }
-            gl->DrawBuffers(outs, bufs);
-            GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
-            if (status != GL_FRAMEBUFFER_COMPLETE)
-                return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: key framebuffer "
-                                "incomplete (0x%x)", (unsigned)status);
-            draw(gl, r->keyhz_fbo, L->vw, L->vh);
-            if (count && fetch_sum) {
-                /* Read the counts of this pass back (first target). */
-                float *px = scratch(g, (size_t)L->vw * L->vh * 4 * sizeof(float));
-                if (!px)
-                    return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
-                if ((rc = hfs_gl_read_rgba(gl, r->keyhz_fbo, 0, 0, L->vw, L->vh,
-                                           HFS_GL_READ_AUTO, px, NULL, err)))
-                    return rc;
-                for (size_t i = 0; i < (size_t)L->vw * L->vh; ++i)
-                    *fetch_sum += px[4 * i] + 1024.0 * px[4 * i + 1];
-            }
+            if ((rc = draw_grid_layers(g, L, r->keyhz_fbo, r->keyhz, keys[q].k.hz_layer + d0 / 2,
+                                       outs, "key", count ? fetch_sum : NULL, err)))
+                return rc;
             if ((rc = hfs_gl_check(gl, "backend gles: key pass", err)))
                 return rc;
         }
+    }
+    gl->UseProgram(0);
+    return HFS_OK;
+}
+
+/* Local-light passes (or their counting twins) into the ratio array: lights
+ * [l0, l0 + 8) per draw, light i in layer i / 2.  HfsLocal must be uploaded. */
+static int run_local(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality *q, int n_local,
+                     int count, double *fetch_sum, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    resources *r = &g->r;
+    char ldirs[40];
+    snprintf(ldirs, sizeof ldirs, "HFS_LOCAL_DIRS %d", q->nphi_local);
+    int rc;
+    for (int l0 = 0; l0 < n_local; l0 += LIGHTS_PER_LOCAL_PASS) {
+        const int cnt = n_local - l0 < LIGHTS_PER_LOCAL_PASS ? n_local - l0
+                                                              : LIGHTS_PER_LOCAL_PASS;
+        GLuint prog;
+        if ((rc = grid_program(g, L, "gles_local.frag", ldirs, (cnt + 1) / 2, count, &prog,
+                               err)))
+            return rc;
+        set_i1(gl, prog, "u_light0", l0);
+        set_i1(gl, prog, "u_nl", cnt);
+        gl->BindBufferBase(GL_UNIFORM_BUFFER, B_LOCAL, g->ubo[UBO_LOCAL]);
+        if ((rc = draw_grid_layers(g, L, r->localv_fbo, r->localv, l0 / 2, (cnt + 1) / 2,
+                                   "local-light", count ? fetch_sum : NULL, err)))
+            return rc;
+        if ((rc = hfs_gl_check(gl, "backend gles: local-light pass", err)))
+            return rc;
     }
     gl->UseProgram(0);
     return HFS_OK;
@@ -1050,7 +1124,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         (rc = hfs_gl_caps_check_texture(caps, TABLE_N, TABLE_N, 4 * (MAX_KEYS + 1),
                                         "wedge tables", err)) ||
         (rc = hfs_gl_caps_check_draw_buffers(caps, 4, "SH visibility (16 coefficients)", err)) ||
-        (rc = hfs_gl_caps_check_samplers(caps, 9, "shading pass", err)) ||
+        (rc = hfs_gl_caps_check_samplers(caps, 10, "shading pass", err)) ||
         (rc = hfs_gl_caps_check_uniform_block(caps, hfs_gles_scales_vec4(&L) * 16,
                                               "per-scale constants", err)))
         return rc;
@@ -1082,7 +1156,10 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         (rc = hfs_gl_caps_check_texture(caps, L.vw, L.vh, fr->key_layers,
                                         "key-light horizons", err)))
         return rc;
-    if ((rc = resources_ensure(g, &L, fr->key_layers, err)))
+    const int local_layers = (fr->n_local + 1) / 2;
+    if ((rc = hfs_gl_caps_check_texture(caps, L.vw, L.vh, local_layers > 0 ? local_layers : 1,
+                                        "local-light visibility", err)) ||
+        (rc = resources_ensure(g, &L, fr->key_layers, local_layers, err)))
         return rc;
 
     /* Terrain: upload, normals, pyramid (cached). */
@@ -1229,6 +1306,16 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     }
     g->stats.offset_mismatches = mismatches;
 
+    /* Local lights: visibility ratios on the grid. */
+    if (fr->n_local > 0) {
+        if ((rc = local_upload(g, &L, q, fr, err)))
+            return rc;
+        pass_begin(g, P_LOCAL);
+        if ((rc = run_local(g, &L, q, fr->n_local, 0, NULL, err)))
+            return rc;
+        pass_end(g, P_LOCAL);
+    }
+
     /* Shading. */
     double bound = 0.0;
     float shade[13 * 4];
@@ -1266,12 +1353,9 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     int nd = 1;
     char nlev[32], nlay[32], ldirs[40];
     if (fr->n_local > 0) {
-        if ((rc = local_upload(g, &L, q, fr, err)))
-            return rc;
         level_defines(&L, nlev, nlay, sizeof nlev);
         snprintf(ldirs, sizeof ldirs, "HFS_LOCAL_DIRS %d", q->nphi_local);
         defs[nd++] = "HFS_LOCAL 1";
-        defs[nd++] = nlev;
         defs[nd++] = nlay;
         defs[nd++] = ldirs;
     }
@@ -1293,8 +1377,8 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     bind_tex(gl, U_KEYHZ, GL_TEXTURE_2D_ARRAY, r->keyhz);
     if (fr->n_local > 0) {
         bind_tex(gl, U_LEVELS, GL_TEXTURE_2D_ARRAY, r->arr);
+        bind_tex(gl, U_LOCALV, GL_TEXTURE_2D_ARRAY, r->localv);
         set_i1(gl, prog, "u_nlocal", fr->n_local);
-        gl->BindBufferBase(GL_UNIFORM_BUFFER, B_SCALES, g->ubo[UBO_SCALES]);
         gl->BindBufferBase(GL_UNIFORM_BUFFER, B_LOCAL, g->ubo[UBO_LOCAL]);
     }
     if (tables && fr->n_keys > 0) {
@@ -1319,6 +1403,8 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     g->pass_fetch[P_SHADE] = (double)L.w * L.h * (1 + 4 * fr->has_env);
     for (int i = 0; i < fr->n_keys; ++i)
         g->pass_fetch[P_SHADE] += (double)L.w * L.h * ((fr->keys[i].k.swath.n + 1) / 2);
+    if (fr->n_local > 0) /* the texel's height, one ratio layer per two lights */
+        g->pass_fetch[P_SHADE] += (double)L.w * L.h * (1 + (fr->n_local + 1) / 2);
     if ((rc = hfs_gl_check(gl, "backend gles: shading pass", err)))
         return rc;
 
@@ -1345,6 +1431,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     if (g->timing >= 2) {
         g->pass_fetch[P_ENV] = 0.0;
         g->pass_fetch[P_KEY] = 0.0;
+        g->pass_fetch[P_LOCAL] = 0.0;
         if (fr->has_env) {
             if ((rc = run_env(g, &L, tables, 1, err)))
                 return rc;
@@ -1361,9 +1448,13 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         if (fr->n_keys > 0 &&
             (rc = run_keys(g, &L, fr->keys, fr->n_keys, 1, &g->pass_fetch[P_KEY], err)))
             return rc;
+        if (fr->n_local > 0 &&
+            (rc = run_local(g, &L, q, fr->n_local, 1, &g->pass_fetch[P_LOCAL], err)))
+            return rc;
     } else {
         g->pass_fetch[P_ENV] = -1.0;
         g->pass_fetch[P_KEY] = -1.0;
+        g->pass_fetch[P_LOCAL] = -1.0;
     }
     return HFS_OK;
 }

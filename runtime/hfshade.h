@@ -157,7 +157,8 @@ typedef struct hfs_quality {
     int local_full_swath;    /* 0: per-receiver partial swath where the light
                                 does not surround the receiver (default);
                                 1: always the full swath (the thesis)        */
-    int subsample;           /* visibility grid step 1|2|4 (GLES path), 2   */
+    int subsample;           /* visibility grid step 1|2|4 (GLES path: env,
+                                key and local-light visibility), 2          */
     hfs_precision precision; /* texture precision of the GLES path          */
     hfs_visibility_path visibility;
     int threads;             /* CPU/truth worker threads; 0 = all cores     */
@@ -229,13 +230,15 @@ HFS_API int hfs_renderer_render(hfs_renderer *r, const hfs_field *field,
 /* One pass of the last frame.  GLES passes, in order: "upload" (heights to
  * the GPU), "normals", "decimate" (pyramid, fine to coarse), "reconstruct"
  * (B-spline to full resolution), "env" (environment horizons + SH
- * visibility), "key" (key-light horizons), "shade", "readback".  The CPU and
+ * visibility), "key" (key-light horizons), "local" (local-light visibility
+ * ratios), "shade", "readback".  The CPU and
  * truth backends report one pass, "render". */
 typedef struct hfs_pass_time {
     char name[16];
     double ms;          /* GPU time of the pass (see hfs_timings.method)       */
-    double fetches;     /* texture fetches: counted for env/key at timing level
-                           2, otherwise the pass's fixed count (env/key: -1)  */
+    double fetches;     /* texture fetches: counted for env/key/local at timing
+                           level 2, otherwise the pass's fixed count
+                           (env/key/local: -1)                                */
     int cached;         /* 1: not run, its result from an earlier frame was
                            still valid (same terrain and settings)            */
 } hfs_pass_time;

@@ -21,10 +21,12 @@
  *       analytic value within the fp16 bound (relative 1e-4 of the max); a
  *       light sunk into the plane gives rho Le exactly at the receivers
  *       inside the sphere.
- *   sub      local lights are evaluated at full resolution (as the CPU
- *       reference does whatever the sub-sampling): with local lights only,
- *       subsample 2 and 4 give bit for bit the image of subsample 1; a light
- *       moved on the cached terrain renders as in a fresh renderer.
+ *   sub      local-light visibility is sub-sampled like the environment's:
+ *       at subsample 2 and 4 the local pass fetches ~1/sub^2 of subsample
+ *       1's (timing level 2), texels on grid points equal subsample 1 bit
+ *       for bit (ratio of the same receiver, E_cap per texel) and others
+ *       change; a light moved on the cached terrain renders as in a fresh
+ *       renderer.
  *   errors   the wedge-table path with a local light is refused with one
  *       line naming local lights and the wedge-table path.
  *
@@ -326,33 +328,81 @@ static int mode_flat(void)
     return failures ? 1 : 0;
 }
 
+/* Fetches of the local-light pass in the last frame (timing level 2). */
+static double local_fetches(hfs_renderer *r)
+{
+    hfs_timings t;
+    if (hfs_renderer_timings(r, &t))
+        return -1.0;
+    for (int i = 0; i < t.n_passes; ++i)
+        if (!strcmp(t.pass[i].name, "local"))
+            return t.pass[i].fetches;
+    return -1.0;
+}
+
+/* Texel x lies on the visibility grid of sub-sampling sub (min(a sub, W-1)). */
+static int on_grid(int x, int w, int sub)
+{
+    return x % sub == 0 || x == w - 1;
+}
+
 static int mode_sub(void)
 {
+    const int n = 64;
     field_buf fb;
-    if (field_make("panel", 64, &fb))
+    if (field_make("panel", n, &fb))
         return 1;
     hfs_renderer *r = gles_or_skip();
+    hfs_renderer_set_timing(r, 2);
     hfs_lighting l = lighting_local_only();
-    static const double set[2][5] = {{24, 24, 5, 1.5, 50}, {40, 10, 4, 1, 40}};
-    local_set(&l, set, 2);
+    static const double set[3][5] = {{24, 24, 5, 1.5, 50}, {40, 10, 4, 1, 40}, {10, 50, 3, 1, 30}};
+    local_set(&l, set, 3);
     hfs_image a = {0}, b = {0};
     hfs_quality q = quality("fp16", 1, 0);
+    double f1 = -1.0;
     if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &a))
-        for (int sub = 2; sub <= 4; sub *= 2) {
-            q.subsample = sub;
-            if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &b))
-                CHECK(bitequal(&a, &b), "subsample %d differs from subsample 1", sub);
-        }
+        f1 = local_fetches(r);
+    CHECK(f1 > 0.0, "no fetch count for the local pass at subsample 1");
+    for (int sub = 2; sub <= 4 && f1 > 0.0; sub *= 2) {
+        q.subsample = sub;
+        if (render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &b))
+            continue;
+        /* The visibility is sub-sampled: the grid has ceil((n-1)/sub) + 1
+         * receivers per side (the last one clamped to n - 1). */
+        const double fs = local_fetches(r), gw = (n + sub - 2) / sub + 1;
+        const double want = gw * gw / ((double)n * n);
+        printf("sub %d: local pass %.0f fetches = %.3f of subsample 1 (receivers %.3f)\n", sub, fs,
+               fs / f1, want);
+        CHECK(fs > 0.0 && fs / f1 <= 1.1 * want, "sub %d: %.0f fetches vs %.0f", sub, fs, f1);
+        /* On the grid points the ratio is the full-resolution one and
+         * E_cap is per texel: those texels equal subsample 1 bit for bit;
+         * between them only the interpolated ratio differs. */
+        long same = 0, grid = 0, differ = 0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const size_t at = 3 * ((size_t)j * n + i);
+                const int eq = !memcmp(&a.rgb[at], &b.rgb[at], 3 * sizeof(float));
+                if (on_grid(i, n, sub) && on_grid(j, n, sub)) {
+                    ++grid;
+                    same += eq;
+                } else {
+                    differ += !eq;
+                }
+            }
+        printf("sub %d: %ld of %ld grid texels equal subsample 1; %ld others differ\n", sub, same,
+               grid, differ);
+        CHECK(same == grid, "sub %d: %ld of %ld grid texels differ", sub, grid - same, grid);
+        CHECK(differ > 0, "sub %d: no texel between grid points changed (not sub-sampled?)", sub);
+    }
     /* Cache: moving a light on a cached terrain equals a fresh renderer. */
     l.local[0].pos[0] = 30.0;
     l.local[0].radius = 2.5;
-    q.subsample = 1;
+    q.subsample = 2;
     hfs_image fresh = {0};
     if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &a) &&
         !render_with(HFS_BACKEND_GLES, NULL, &fb.f, &l, &q, &fresh))
         CHECK(bitequal(&a, &fresh), "moved light on the cached terrain differs from a fresh renderer");
     hfs_image_free(&fresh);
-    printf("sub: local lights at subsample 2, 4 equal subsample 1 bit for bit; cache ok\n");
     hfs_image_free(&a);
     hfs_image_free(&b);
     hfs_renderer_destroy(r);

@@ -24,17 +24,7 @@ for sc in cones panel; do
       $B/tests/bench_cpu_local --height $C/$sc.pfm $L $Q --swath $mode --repeat 5 --pfm $out 2> $C/cpu.log
       csec=$(sed -n 's/.*median \([0-9.]*\) s.*/\1/p' $C/cpu.log)
       read -r _ mean _ rmse _ p99 _ mx _ nf _ <<<"$($B/tools/hfshade compare --height $C/$sc.pfm $L $out $truth)"
-      rel=$(python3 - "$out" "$truth" <<'PY'
-import sys, array
-def rd(p):
-    f = open(p, 'rb'); t = f.readline().strip(); w, h = map(int, f.readline().split()); s = float(f.readline())
-    a = array.array('f'); a.frombytes(f.read())
-    if s > 0: a.byteswap()
-    return a
-a, b = rd(sys.argv[1]), rd(sys.argv[2])
-print('%.3e' % (sum(abs(x - y) for x, y in zip(a, b)) / sum(b)))
-PY
-)
+      rel=$(tools/pfm_rel_mean.py "$out" "$truth")
       echo "| $sc | $n | $mode | $mean | $rmse | $p99 | $mx | $nf | $rel | $csec | $tsec |"
     done
   done

@@ -1,0 +1,384 @@
+/*
+ * gles_local.frag - local spherical lights' visibility on the visibility
+ * grid (DESIGN.md "Local lights", "GLES path"; mirrors runtime/cpu_local.c
+ * shade() for the Legendre path).  One fragment per receiver of the grid
+ * (grid point min(a*sub, W-1)), lights [u_light0, u_light0 + u_nl) of the
+ * frame, two per RGBA target as fp16 (hi, lo) pairs, up to HFS_NOUT targets
+ * (8 lights per draw at ES 3.0's four draw buffers).  Per light it writes the
+ * visibility RATIO num/den in [0, 1]: the cosine-weighted visible part of
+ * the light's cap over the part above the receiver's tangent plane.  The
+ * shading pass multiplies it, read bilinearly, by rho/pi Le E_cap computed
+ * at each full-resolution texel's own position and normal: like the
+ * environment's, only the terrain's occlusion is interpolated, and a
+ * texel on a grid point gets exactly the ratio of the full-resolution path.
+ *
+ * Per receiver (lifted by 1e-4 dx) and light: the partial swath around the
+ * light's azimuth (or the full swath of nphi_local when the light surrounds
+ * the receiver or u_lq.y forces it), exact per-sample cap windows, per-scale
+ * horizons cut at the light's entry distance, the B-spline max over scale
+ * (as gles_key.frag), closed-form hat weights A_k and the constant elevation
+ * moments E, num/den as 4-dots with the NLP bands.  A receiver inside the
+ * sphere writes 1 (the shading pass gives it rho Le); one whose tangent
+ * plane hides the whole cap writes the ratio for the plane facing the light
+ * (see local_ratio), so that interpolation toward it stays meaningful.
+ *
+ * HFS_COUNT: writes the fetch count to o_r0 instead (see gles_env.frag).
+ */
+// hfs-variant: HFS_NOUT 4
+// hfs-variant: HFS_FP32 1, HFS_COUNT 1
+
+#ifndef HFS_NLEV
+#define HFS_NLEV 33
+#endif
+#ifndef HFS_NLAYERS
+#define HFS_NLAYERS 25
+#endif
+#ifndef HFS_LOCAL_DIRS
+#define HFS_LOCAL_DIRS 16
+#endif
+#ifndef HFS_LOCAL_MAX
+#define HFS_LOCAL_MAX 16
+#endif
+#ifndef HFS_NOUT
+#define HFS_NOUT 1
+#endif
+#ifndef HFS_HALF_PI
+#define HFS_HALF_PI 1.5707963267948966
+#endif
+#ifndef HFS_PI
+#define HFS_PI 3.14159265358979
+#endif
+
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+precision highp sampler2DArray;
+
+float hfs_h(vec2 t);
+vec2 hfs_split(float v);
+vec3 hfs_normal(vec4 t);
+ivec2 hfs_receiver(ivec2 size, int sub);
+vec4 hfs_nlp_occ(float sigma);
+vec4 hfs_visible(float omega, vec4 win, vec4 occ_top);
+void hfs_sh_cosine(vec3 n, out vec4 h[4]);
+float hfs_cap_irradiance(float cos_beta, float alpha);
+void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
+void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
+float hfs_floor(vec3 n, vec2 cs);
+bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
+float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
+void hfs_bspline_push(inout float best, inout vec4 w, float a, int i);
+float hfs_bspline_close(float best, vec4 w);
+
+uniform highp sampler2DArray u_levels;
+uniform highp sampler2D u_normals;
+uniform ivec2 u_size;
+uniform int u_sub;
+uniform int u_light0;                    /* first light of this draw */
+uniform int u_nl;                        /* lights in this draw, <= 2 * HFS_NOUT */
+
+layout(std140) uniform HfsScales {
+    vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, read layer, 0) */
+};
+layout(std140) uniform HfsLocal {
+    vec4 u_lE[16];                       /* elevation moments, row r = E[r][0..3] */
+    vec4 u_lg;                           /* (dx, base, hscale, zscale) */
+    vec4 u_lq;                           /* (nphi_local, forced full swath, 0, 0) */
+    vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (Le.rgb, 0) */
+    vec4 u_ldir[HFS_LOCAL_DIRS];         /* full swath: (cos, sin) of 2 pi k/n */
+};
+
+layout(location = 0) out vec4 o_r0;
+#if HFS_NOUT > 1
+layout(location = 1) out vec4 o_r1;
+#endif
+#if HFS_NOUT > 2
+layout(location = 2) out vec4 o_r2;
+#endif
+#if HFS_NOUT > 3
+layout(location = 3) out vec4 o_r3;
+#endif
+
+vec2 g_hx[HFS_NLAYERS];                  /* the receiver's heights per layer */
+int g_fetches;
+
+/* integral_0^w (1 - u/w) cos(m u) du and ... sin(m u) du for m = 0..3
+ * (cpu_local.c tri_cos / tri_sin; the sin series up to x = 0.5 in float). */
+vec4 local_tri_cos(float w)
+{
+    if (!(w > 0.0))
+        return vec4(0.0);
+    vec4 m = vec4(1.0, 1.0, 2.0, 3.0);
+    vec4 x = m * w, hs = sin(0.5 * x);
+    vec4 r = 2.0 * hs * hs / (m * x);
+    r.x = 0.5 * w;
+    return r;
+}
+
+vec4 local_tri_sin(float w)
+{
+    if (!(w > 0.0))
+        return vec4(0.0);
+    vec4 m = vec4(1.0, 1.0, 2.0, 3.0);
+    vec4 x = m * w, x2 = x * x;
+    vec4 ser = x2 * (1.0 / 6.0 - x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0 - x2 / 362880.0))) / m;
+    vec4 r = mix((x - sin(x)) / (m * x), ser, lessThan(x, vec4(0.5)));
+    r.x = 0.0;
+    return r;
+}
+
+/* A[r] of a hat (moments gc, gs) centred at azimuth (c, s), SH order of r:
+ * 0: gc0; m > 0: cos(m phi) gc_m - sin(m phi) gs_m; m < 0: sin gc + cos gs. */
+void local_weights(vec2 cs, vec4 gc, vec4 gs, out vec4 A[4])
+{
+    vec4 cm, sm;
+    cm.x = 1.0;
+    sm.x = 0.0;
+    cm.y = cs.x;
+    sm.y = cs.y;
+    cm.z = cm.y * cs.x - sm.y * cs.y;
+    sm.z = sm.y * cs.x + cm.y * cs.y;
+    cm.w = cm.z * cs.x - sm.z * cs.y;
+    sm.w = sm.z * cs.x + cm.z * cs.y;
+    vec4 ap = cm * gc - sm * gs, an = sm * gc + cm * gs;
+    A[0] = vec4(gc.x, an.y, gc.x, ap.y);
+    A[1] = vec4(an.z, an.y, gc.x, ap.y);
+    A[2] = vec4(ap.z, an.w, an.z, an.y);
+    A[3] = vec4(gc.x, ap.y, ap.z, ap.w);
+}
+
+/* SH of a uniform cap of half-angle alpha about unit d (hfs_zh_cap rotated:
+ * band factors 4 pi sin^2(a/2), pi s^2, pi c s^2, pi/4 s^2 (5c^2 - 1)). */
+void local_cap_sh(float alpha, vec3 d, out vec4 L[4])
+{
+    float c = cos(alpha), s = sin(alpha), s2 = s * s, h = sin(0.5 * alpha);
+    float f0 = 12.566370614359172 * h * h, f1 = 3.141592653589793 * s2;
+    float f2 = f1 * c, f3 = 0.7853981633974483 * s2 * (5.0 * c * c - 1.0);
+    float x = d.x, y = d.y, z = d.z;
+    float a1 = f1 * 0.4886025119029199;
+    L[0] = vec4(f0 * 0.28209479177387814, a1 * y, a1 * z, a1 * x);
+    L[1] = vec4(f2 * 1.0925484305920792 * x * y, f2 * 1.0925484305920792 * y * z,
+                f2 * 0.31539156525252005 * (3.0 * z * z - 1.0), f2 * 1.0925484305920792 * x * z);
+    L[2] = vec4(f2 * 0.5462742152960396 * (x * x - y * y),
+                f3 * 0.5900435899266435 * y * (3.0 * x * x - y * y),
+                f3 * 2.890611442640554 * x * y * z,
+                f3 * 0.4570457994644658 * y * (5.0 * z * z - 1.0));
+    L[3] = vec4(f3 * 0.3731763325901154 * z * (5.0 * z * z - 3.0),
+                f3 * 0.4570457994644658 * x * (5.0 * z * z - 1.0),
+                f3 * 1.445305721320277 * z * (x * x - y * y),
+                f3 * 0.5900435899266435 * x * (x * x - 3.0 * y * y));
+}
+
+/* Horizontal distance at which the ray (azimuth cs, elevation (ce, se))
+ * enters the sphere; its closest approach where it misses. */
+float local_entry(vec3 v, float c_tan, vec2 cs, float ce, float se)
+{
+    float b = ce * dot(cs, v.xy) + se * v.z;
+    float disc = b * b - c_tan;
+    float t = (b > 0.0 && disc >= 0.0) ? c_tan / (b + sqrt(disc)) : max(b, 0.0);
+    return max(t * ce, 0.0);
+}
+
+/* Visibility ratio of light q at receiver p (normal n, lifted point pw). */
+float local_ratio(ivec2 p, vec3 n, vec3 pw, int q)
+{
+    float dx = u_lg.x;
+    int nphi = int(u_lq.x);
+    vec4 l0 = u_lights[2 * q];
+    vec3 v = l0.xyz - pw;
+    float r = l0.w;
+    /* (d - r)(d + r) as (rho_h^2 - r^2) + v_z^2: a receiver on the
+     * sphere's horizontal great circle (integer centre and radius) is
+     * decided by the 1e-4 dx lift alone, which d in float cannot see. */
+    float rho2 = dot(v.xy, v.xy);
+    float c_tan = (rho2 - r * r) + v.z * v.z;
+    if (!(c_tan > 0.0))              /* inside: E = pi, nothing in between */
+        return 1.0;
+    float d = length(v);
+    vec3 dir = v / d;
+    float rho_h = sqrt(rho2);
+    float sin_a = r / d, cos_a = sqrt(c_tan) / d;
+    float alpha = atan(sin_a, cos_a);
+    /* The cap wholly below this receiver's tangent plane: no ratio of
+     * its own, but texels between it and lit grid points need one, so
+     * give the visible fraction of the cap over the terrain alone: the
+     * receiver's plane replaced by the one facing the light (tilted up to
+     * at least 0.05 in z, so that its floors stay below a light that is
+     * lower than the receiver). */
+    if (!(hfs_cap_irradiance(dot(n, dir), alpha) > 0.0)) {
+        vec3 nf = vec3(dir.xy, max(dir.z, 0.05));
+        n = nf / length(nf);
+    }
+    vec4 H[4], L[4], M[4];
+    hfs_sh_cosine(n, H);
+    local_cap_sh(alpha, dir, L);
+    hfs_sh_product(H, L, M);
+
+    bool surround = r >= rho_h;
+    bool full = u_lq.y > 0.5 || surround;
+    bool exact = !full || surround;
+    int ns;
+    float dphi, phi0, bw;
+    if (full) {
+        ns = nphi;
+        dphi = 2.0 * HFS_PI / float(nphi);
+        phi0 = 0.0;
+        bw = dphi;
+    } else {
+        float h = asin(r / rho_h);
+        ns = min(max(int(ceil(float(nphi) * h / HFS_PI)), 3), nphi);
+        dphi = 2.0 * h / float(ns);
+        phi0 = atan(v.y, v.x) - h + 0.5 * dphi;
+        bw = 0.5 * dphi;
+    }
+    float elev_l = atan(v.z, rho_h);
+    float glo = max(elev_l - alpha, -HFS_HALF_PI), ghi = min(elev_l + alpha, HFS_HALF_PI);
+    float reach = exact ? min(d, rho_h + r) : d;
+    float w_in = ns == 1 ? bw : dphi;
+    vec4 tc_b = local_tri_cos(bw), ts_b = local_tri_sin(bw);
+    vec4 tc_d = local_tri_cos(dphi), ts_d = local_tri_sin(dphi);
+    vec4 tc_i = local_tri_cos(w_in), ts_i = local_tri_sin(w_in);
+    float num = 0.0, den = 0.0, den_scale = 0.0;
+    for (int k = 0; k < ns; ++k) {
+        vec2 cs;
+        if (full) {
+            cs = u_ldir[k].xy;
+        } else {
+            float phi = phi0 + float(k) * dphi;
+            cs = vec2(cos(phi), sin(phi));
+            cs = mix(cs, vec2(0.0), lessThan(abs(cs), vec2(1e-12)));
+        }
+        float lo = glo, hi = ghi;
+        if (exact) {
+            float a = dot(dir.xy, cs), w = -dir.x * cs.y + dir.y * cs.x;
+            float qq = sin_a * sin_a - w * w;
+            if (!(qq > 0.0) || !(cos_a >= 0.0))
+                continue;
+            float psi = atan(dir.z, a), half_w = atan(sqrt(qq), cos_a);
+            lo = max(psi - half_w, -HFS_HALF_PI);
+            hi = min(psi + half_w, HFS_HALF_PI);
+            if (!(lo < hi))
+                continue;
+        }
+        float fl = hfs_floor(n, cs);
+        float t_near = -1.0, cut = reach;
+        if (exact) {
+            float u = dot(cs, v.xy), wp = -cs.y * v.x + cs.x * v.y;
+            float g = sqrt(max(0.0, r * r - wp * wp));
+            t_near = u - g;
+            cut = min(reach, u + g);
+        }
+        float clo = cos(lo), slo = sin(lo), chi = cos(hi), shi = sin(hi);
+        /* Per-scale angles fine to coarse with the B-spline max on the
+         * fly (hfs_bspline_push); a scale beyond the cut or off the grid,
+         * and every coarser one, is the floor. */
+        float best = fl;
+        vec4 w = vec4(fl);
+        int tail = 3;
+        int i = HFS_NLEV - 1;
+        for (; i >= 0; --i) {
+            float a = fl;
+            if (tail == 3) {
+                vec4 sc = u_scale[i];
+                float dist = sc.x * dx;
+                vec2 o;
+                if (!hfs_scale_offset(p, u_size, sc.x, cs, o) || dist > cut) {
+                    --tail;
+                } else {
+                    float D = hfs_scale_slope(u_levels, p, u_size, o, sc, g_hx[int(sc.z)]);
+                    ++g_fetches;
+                    float om = atan(D);
+                    if (dist < t_near) {
+                        a = om;
+                    } else {
+                        float ce = inversesqrt(1.0 + D * D), se = D * ce;
+                        if (om < lo) {
+                            ce = clo;
+                            se = slo;
+                        } else if (om > hi) {
+                            ce = chi;
+                            se = shi;
+                        }
+                        a = dist <= local_entry(v, c_tan, cs, ce, se) ? om : fl;
+                    }
+                }
+            } else if (--tail < 0) {
+                break;
+            }
+            hfs_bspline_push(best, w, a, i);
+        }
+        if (i < 0)
+            best = hfs_bspline_close(best, w);
+        float omega = clamp(best, -HFS_HALF_PI, HFS_HALF_PI);
+
+        /* g = sum_r m_r A_k[r] E[r]; hat half-widths (left, right). */
+        vec4 gcm, gsm;
+        if (k == 0) {
+            gcm = tc_b + tc_i;
+            gsm = ts_i - ts_b;
+        } else if (k == ns - 1) {
+            gcm = tc_i + tc_b;
+            gsm = ts_b - ts_i;
+        } else {
+            gcm = 2.0 * tc_d;
+            gsm = vec4(0.0);
+        }
+        if (full) {
+            gcm = 2.0 * tc_d;
+            gsm = vec4(0.0);
+        }
+        vec4 A[4];
+        local_weights(cs, gcm, gsm, A);
+        vec4 g4 = vec4(0.0);
+        for (int gi = 0; gi < 4; ++gi) {
+            vec4 mw = M[gi] * A[gi];
+            g4 += mw.x * u_lE[4 * gi] + mw.y * u_lE[4 * gi + 1] + mw.z * u_lE[4 * gi + 2] +
+                  mw.w * u_lE[4 * gi + 3];
+        }
+        vec4 win = vec4(lo, hi, 0.0, 0.0), top = hfs_nlp_occ(hi);
+        vec4 vb = hfs_visible(omega, win, top), ob = hfs_visible(fl, win, top);
+        num += dot(g4, vb);
+        den += dot(g4, ob);
+        den_scale += dot(abs(g4 * ob), vec4(1.0));
+    }
+    if (num == den)
+        return 1.0;                      /* nothing above the floors */
+    return den > 1e-12 * den_scale ? clamp(num / den, 0.0, 1.0) : 0.0;
+}
+
+void main()
+{
+    ivec2 p = hfs_receiver(u_size, u_sub);
+    vec3 n = hfs_normal(texelFetch(u_normals, p, 0));
+    hfs_receiver_heights(u_levels, p, g_hx);
+    g_fetches = 1 + HFS_NLAYERS;
+    float z = u_lg.w * (u_lg.y + u_lg.z * hfs_h(g_hx[HFS_NLAYERS - 1]));
+    vec3 pw = vec3(vec2(p) * u_lg.x, z + 1e-4 * u_lg.x);
+
+    float ratio[2 * HFS_NOUT];
+    for (int q = 0; q < 2 * HFS_NOUT; ++q)
+        ratio[q] = q < u_nl ? local_ratio(p, n, pw, u_light0 + q) : 0.0;
+#ifdef HFS_COUNT
+    o_r0 = vec4(float(g_fetches % 1024), float(g_fetches / 1024), 0.0, 0.0);
+#if HFS_NOUT > 1
+    o_r1 = vec4(0.0);
+#endif
+#if HFS_NOUT > 2
+    o_r2 = vec4(0.0);
+#endif
+#if HFS_NOUT > 3
+    o_r3 = vec4(0.0);
+#endif
+#else
+    o_r0 = vec4(hfs_split(ratio[0]), hfs_split(ratio[1]));
+#if HFS_NOUT > 1
+    o_r1 = vec4(hfs_split(ratio[2]), hfs_split(ratio[3]));
+#endif
+#if HFS_NOUT > 2
+    o_r2 = vec4(hfs_split(ratio[4]), hfs_split(ratio[5]));
+#endif
+#if HFS_NOUT > 3
+    o_r3 = vec4(hfs_split(ratio[6]), hfs_split(ratio[7]));
+#endif
+#endif
+}
