@@ -1,10 +1,11 @@
 /*
- * hfgen — deterministic procedural height fields for tests and benchmarks.
+ * hfgen — deterministic procedural height fields for tests and benchmarks
+ * (tools/terrain_gen.h describes each kind).
  *
- *   hfgen flat    --size WxH -o OUT.pfm
- *   hfgen cones   --size WxH -o OUT.pfm     (SN08 figs. 3-10 style cones)
- *   hfgen fractal --size WxH -o OUT.pfm [--seed N] [--relief R]
- *   hfgen panel   --size WxH -o OUT.pfm     (grooved, embossed control panel)
+ *   hfgen KIND    --size WxH -o OUT.pfm [--seed N] [--relief R]
+ *       KIND = flat | cones (SN08 figs. 3-10 style) | sine (grating) |
+ *              eggtray | city (blocks, vertical walls) | spike (one texel) |
+ *              cliff | fractal (--seed, --relief) | panel (grooved, embossed)
  *   hfgen crop    IN --rect X,Y,W,H -o OUT.pfm   (any loadable height file)
  *
  * Heights are in texel units (use dx = 1, zscale = 1 to keep proportions);
@@ -22,8 +23,8 @@
 
 static void usage(void)
 {
-    fprintf(stderr, "usage: hfgen flat|cones|fractal|panel --size WxH -o OUT.pfm [--seed N] [--relief R]\n"
-                    "       hfgen crop IN --rect X,Y,W,H -o OUT.pfm\n");
+    fprintf(stderr, "usage: hfgen %s --size WxH -o OUT.pfm [--seed N] [--relief R]\n"
+                    "       hfgen crop IN --rect X,Y,W,H -o OUT.pfm\n", hfs_terrain_names());
 }
 
 int main(int argc, char **argv)
@@ -103,23 +104,16 @@ int main(int argc, char **argv)
         }
         z = calloc((size_t)w * h, sizeof *z);
         if (z) {
-            if (!strcmp(kind, "flat"))
-                ;
-            else if (!strcmp(kind, "cones"))
-                hfs_terrain_cones(z, w, h);
-            else if (!strcmp(kind, "fractal")) {
-                if (hfs_terrain_fractal(z, w, h, seed, relief)) {
-                    free(z);
-                    z = NULL;
-                }
-            }
-            else if (!strcmp(kind, "panel"))
-                hfs_terrain_panel(z, w, h);
-            else {
+            const int rc = hfs_terrain_make(kind, z, w, h, seed, relief);
+            if (rc == -1) {
                 fprintf(stderr, "hfgen: unknown kind '%s'\n", kind);
                 free(z);
                 usage();
                 return 2;
+            }
+            if (rc) {
+                free(z);
+                z = NULL;
             }
         }
     }

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* Cones of slope ~0.8 (38.7 degrees) on a flat base: a few sizes, some
  * overlapping, placed relative to the field so every size looks alike. */
@@ -117,4 +118,89 @@ int hfs_terrain_fractal(float *z, int w, int h, uint32_t seed, double relief)
         z[k] = (float)((tmp[k] - lo) * scale);
     free(tmp);
     return 0;
+}
+
+#define TWO_PI 6.283185307179586
+
+static double min_side(int w, int h)
+{
+    return w < h ? w : h;
+}
+
+void hfs_terrain_sine(float *z, int w, int h)
+{
+    const double period = min_side(w, h) / 8.0, a = period / TWO_PI;
+    const double cx = cos(TWO_PI / 12.0), sy = sin(TWO_PI / 12.0);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            z[(size_t)j * w + i] = (float)(a * (1.0 + sin(TWO_PI * (i * cx + j * sy) / period)));
+}
+
+void hfs_terrain_eggtray(float *z, int w, int h)
+{
+    const double period = min_side(w, h) / 8.0, a = period / TWO_PI;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            z[(size_t)j * w + i] =
+                (float)(a * (1.0 + sin(TWO_PI * i / period) * sin(TWO_PI * j / period)));
+}
+
+void hfs_terrain_city(float *z, int w, int h, uint32_t seed)
+{
+    const double block = min_side(w, h) / 8.0, street = block / 4.0;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const int bx = (int)floor(i / block), by = (int)floor(j / block);
+            const double fx = i - bx * block, fy = j - by * block;
+            double v = 0.0;
+            if (fx >= street && fy >= street) {
+                const double u = (double)hash3((uint32_t)bx, (uint32_t)by, seed) / 4294967295.0;
+                v = (0.1 + 0.5 * u) * block;
+            }
+            z[(size_t)j * w + i] = (float)v;
+        }
+}
+
+void hfs_terrain_spike(float *z, int w, int h)
+{
+    memset(z, 0, (size_t)w * h * sizeof *z);
+    z[(size_t)(h / 2) * w + w / 2] = (float)(min_side(w, h) / 4.0);
+}
+
+void hfs_terrain_cliff(float *z, int w, int h)
+{
+    const double top = min_side(w, h) / 4.0;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            z[(size_t)j * w + i] = i > 0.5 * (w - 1) + 0.2 * (j - 0.5 * (h - 1)) ? (float)top : 0.0f;
+}
+
+int hfs_terrain_make(const char *name, float *z, int w, int h, uint32_t seed, double relief)
+{
+    if (!strcmp(name, "flat"))
+        memset(z, 0, (size_t)w * h * sizeof *z);
+    else if (!strcmp(name, "cones"))
+        hfs_terrain_cones(z, w, h);
+    else if (!strcmp(name, "sine"))
+        hfs_terrain_sine(z, w, h);
+    else if (!strcmp(name, "eggtray"))
+        hfs_terrain_eggtray(z, w, h);
+    else if (!strcmp(name, "city"))
+        hfs_terrain_city(z, w, h, seed);
+    else if (!strcmp(name, "spike"))
+        hfs_terrain_spike(z, w, h);
+    else if (!strcmp(name, "cliff"))
+        hfs_terrain_cliff(z, w, h);
+    else if (!strcmp(name, "panel"))
+        hfs_terrain_panel(z, w, h);
+    else if (!strcmp(name, "fractal"))
+        return hfs_terrain_fractal(z, w, h, seed, relief) ? -2 : 0;
+    else
+        return -1;
+    return 0;
+}
+
+const char *hfs_terrain_names(void)
+{
+    return "flat|cones|sine|eggtray|city|spike|cliff|fractal|panel";
 }
