@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# hfbench end to end on a 32x32 cones field, CPU backend only (no GL
+# needed): the CSV has one row per (scene, setting), errors are finite, a
+# second run takes the truth from the cache, and plots appear when gnuplot
+# is installed.  A bad grid key is a one-line error.
+set -euo pipefail
+HB=$1
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+"$HB" -o "$T/a.csv" --scenes cones,sine --size 32 --grid "backend=cpu k=2,4" \
+      --cache "$T/cache" --frames 1 --truth-samples 64 --quiet > "$T/out.md" 2> "$T/err"
+rows=$(($(wc -l < "$T/a.csv") - 1))
+[ "$rows" -eq 4 ] || { echo "expected 4 rows, got $rows"; cat "$T/a.csv"; exit 1; }
+awk -F, 'NR > 1 && !($22 + 0 >= 0 && $22 + 0 < 1) { bad = 1 } END { exit bad }' "$T/a.csv" ||
+  { echo "mean_abs out of [0, 1)"; cat "$T/a.csv"; exit 1; }
+ls "$T"/cache/truth-*.pfm > /dev/null
+"$HB" -o "$T/b.csv" --scenes cones --size 32 --grid "backend=cpu" --cache "$T/cache" \
+      --frames 1 --truth-samples 64 2> "$T/err2" > /dev/null
+grep -q "truth from the cache" "$T/err2" || { echo "truth not cached"; cat "$T/err2"; exit 1; }
+if command -v gnuplot > /dev/null; then
+  "$HB" -o "$T/c.csv" --plots "$T/plots" --scenes cones --size 32 --grid "backend=cpu" \
+        --cache "$T/cache" --frames 1 --truth-samples 64 --quiet > /dev/null
+  [ -s "$T/plots/cones.png" ] && [ -s "$T/plots/cones.svg" ] || { echo "no plots"; exit 1; }
+fi
+if "$HB" -o "$T/d.csv" --grid "bogus=1" --quiet 2> "$T/err3"; then
+  echo "bad grid accepted"; exit 1
+fi
+[ "$(wc -l < "$T/err3")" -eq 1 ] && grep -q "bogus" "$T/err3" || { cat "$T/err3"; exit 1; }
+[ ! -e "$T/d.csv" ] || { echo "partial output left"; exit 1; }
+echo "hfbench smoke: ok"

@@ -1,0 +1,90 @@
+/*
+ * test_bench_front.c — hfbench's decisions (tools/bench_front.h) on made-up
+ * measurements with known answers: the per-scene Pareto front (ties and
+ * dominated points), the all-scenes front over each setting's worst case,
+ * a setting that failed on one scene never counts, and each use's pick
+ * (the CPU backend never picked).
+ */
+#include "bench_front.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int failures;
+#define CHECK(cond, ...)                                                                        \
+    do {                                                                                        \
+        if (!(cond)) {                                                                          \
+            ++failures;                                                                         \
+            printf("FAIL %s:%d: ", __FILE__, __LINE__);                                         \
+            printf(__VA_ARGS__);                                                                \
+            printf("\n");                                                                       \
+        }                                                                                       \
+    } while (0)
+
+static bench_result R(int scene, int point, double ms, double err, int ok)
+{
+    bench_result r;
+    memset(&r, 0, sizeof r);
+    r.scene = scene, r.point = point, r.frame_ms = ms, r.mean_abs = err, r.ok = ok;
+    r.p99_abs = 10 * err;
+    return r;
+}
+
+int main(void)
+{
+    /* Points: 0 fast/bad, 1 mid, 2 slow/good, 3 dominated, 4 cpu (best
+     * everywhere), 5 failed on scene 1. */
+    bench_point pts[6];
+    memset(pts, 0, sizeof pts);
+    for (int p = 0; p < 6; ++p)
+        pts[p].backend = HFS_BACKEND_GLES;
+    pts[4].backend = HFS_BACKEND_CPU;
+    bench_result res[] = {
+        R(0, 0, 10, 0.05, 1), R(0, 1, 50, 0.02, 1), R(0, 2, 400, 0.008, 1), R(0, 3, 60, 0.03, 1),
+        R(0, 4, 5, 0.001, 1), R(0, 5, 1, 0.0001, 1),
+        R(1, 0, 12, 0.04, 1), R(1, 1, 90, 0.025, 1), R(1, 2, 600, 0.01, 1), R(1, 3, 95, 0.03, 1),
+        R(1, 4, 5, 0.001, 1), R(1, 5, 1, 0.0001, 0)};
+    const int n = (int)(sizeof res / sizeof res[0]);
+    bench_mark_fronts(res, n, 2);
+    /* Scene 0: 5 dominates everything (failed points excluded only where
+     * they failed); scene 1: 5 failed, 4 dominates the rest. */
+    CHECK(res[5].pareto && !res[0].pareto && !res[4].pareto, "scene 0 front");
+    CHECK(!res[11].pareto && res[10].pareto && !res[6].pareto, "scene 1 front");
+
+    /* Without the cpu point and the half-failed one, the fronts are 0-1-2. */
+    bench_result res2[8];
+    int m = 0;
+    for (int i = 0; i < n; ++i)
+        if (res[i].point < 4)
+            res2[m++] = res[i];
+    bench_mark_fronts(res2, m, 2);
+    CHECK(res2[0].pareto && res2[1].pareto && res2[2].pareto && !res2[3].pareto,
+          "scene 0: 0 1 2 on the front, 3 dominated by 1");
+
+    bench_budget b = {.kiosk_ms = 100, .panel_ms = 500, .headless_err = 0.045};
+    bench_picks pk;
+    CHECK(bench_pick(res, n, 2, pts, 6, &b, &pk) == 0, "pick");
+    /* Worst cases: 0 (12, 0.05), 1 (90, 0.025), 2 (600, 0.01), 3 (95, 0.03,
+     * dominated), 4 cpu, 5 not on every scene. */
+    CHECK(pk.front[0] && pk.front[1] && pk.front[2] && !pk.front[3] && !pk.front[5],
+          "all-scenes front %d%d%d%d%d", pk.front[0], pk.front[1], pk.front[2], pk.front[3],
+          pk.front[5]);
+    CHECK(pk.point[USE_KIOSK] == 1, "kiosk picks %d (want 1: 90 ms <= 100)", pk.point[USE_KIOSK]);
+    CHECK(pk.point[USE_PANEL] == 1, "panel picks %d (want 1: 2 takes 600 ms > 500)",
+          pk.point[USE_PANEL]);
+    CHECK(pk.point[USE_HEADLESS] == 1, "headless picks %d (want 1: 0 has 0.05 > 0.045)",
+          pk.point[USE_HEADLESS]);
+    CHECK(pk.worst_ms[USE_KIOSK] == 90 && pk.worst_mean[USE_KIOSK] == 0.025 &&
+              pk.worst_p99[USE_KIOSK] == 0.25, "kiosk worst case");
+    free(pk.front);
+
+    b.panel_ms = 1000;
+    b.kiosk_ms = 5;
+    CHECK(bench_pick(res, n, 2, pts, 6, &b, &pk) == 0, "pick");
+    CHECK(pk.point[USE_PANEL] == 2 && pk.point[USE_KIOSK] == -1, "panel %d kiosk %d",
+          pk.point[USE_PANEL], pk.point[USE_KIOSK]);
+    free(pk.front);
+    printf("bench front: %s\n", failures ? "FAILED" : "ok");
+    return failures ? 1 : 0;
+}

@@ -1,0 +1,68 @@
+/*
+ * bench_front.h — what hfbench makes of its measurements: the Pareto front
+ * of error against time per scene, the same over all scenes together (a
+ * setting's worst time and worst error over the scenes), the settings picked
+ * from that front for each use, and the outputs (CSV, gnuplot plots).
+ *
+ * Uses (each a rule over the all-scenes front, GLES settings only: the
+ * uses run the product; budgets are options):
+ *   kiosk     the most accurate setting whose worst full frame fits the
+ *             kiosk budget (default 100 ms: 10 frames/s while the terrain
+ *             changes; light-only frames cost far less);
+ *   panel     the most accurate setting within the panel budget (default
+ *             500 ms: a preview looked at closely, updated on demand);
+ *   headless  the fastest setting whose worst mean error is at most the
+ *             headless bound (default 0.03 of the unshadowed maximum).
+ */
+#ifndef HFS_BENCH_FRONT_H
+#define HFS_BENCH_FRONT_H
+
+#include "bench_sweep.h"
+
+#include <stddef.h>
+
+typedef struct bench_result {
+    int scene, point;        /* indices into the run's scenes and points */
+    int ok;                  /* 0: the point failed (message in note)    */
+    double frame_ms, gpu_ms; /* medians over the timed frames            */
+    double pyramid_ms, env_ms, key_ms, local_ms, shade_ms;
+    size_t texture_bytes;
+    double mean_abs, rmse, p99_abs, max_abs;
+    long nonfinite;
+    int pareto;              /* on its scene's front                     */
+    char note[160];
+} bench_result;
+
+typedef struct bench_budget {
+    double kiosk_ms, panel_ms, headless_err;
+} bench_budget;
+
+enum { USE_KIOSK, USE_PANEL, USE_HEADLESS, USE_COUNT };
+
+typedef struct bench_picks {
+    int point[USE_COUNT];    /* -1: no setting meets the rule            */
+    double worst_ms[USE_COUNT], worst_mean[USE_COUNT], worst_p99[USE_COUNT];
+    int *front;              /* per point: on the all-scenes front (GLES
+                                settings measured on every scene)        */
+} bench_picks;
+
+extern const char *const bench_use_names[USE_COUNT];
+
+/* Marks results[i].pareto per scene (on frame_ms, mean_abs). */
+void bench_mark_fronts(bench_result *res, int n_res, int n_scenes);
+
+/* The all-scenes front and the picks; picks->front allocated (free it). */
+int bench_pick(const bench_result *res, int n_res, int n_scenes, const bench_point *pts,
+               int n_points, const bench_budget *b, bench_picks *picks);
+
+/* CSV, one row per result (header first). */
+int bench_write_csv(const char *path, const bench_result *res, int n_res,
+                    const char *const *scene_names, const char *lights, int size,
+                    const bench_point *pts, const bench_picks *picks, hfs_error *err);
+
+/* One plot per scene, DIR/<scene>.png and .svg, through gnuplot. */
+int bench_plot(const char *dir, const bench_result *res, int n_res,
+               const char *const *scene_names, int n_scenes, const char *lights, int size,
+               const bench_point *pts, const bench_picks *picks, hfs_error *err);
+
+#endif /* HFS_BENCH_FRONT_H */

@@ -1,0 +1,429 @@
+/*
+ * hfbench — run time against error (issue 5): sweeps quality settings over
+ * scenes, and for each (scene, setting) measures the median full-frame time
+ * (GPU passes and total), texture memory, and SPEC's four error metrics
+ * against the ground truth (cached on disk by scene hash, bench_truth.h).
+ * Writes a CSV, optional plots (error against time per scene with the
+ * Pareto front, the library's defaults and the settings picked per use,
+ * through gnuplot), and prints the picks (bench_front.h says how each use
+ * picks from the all-scenes front).
+ *
+ *   hfbench -o OUT.csv [--plots DIR] [--scenes cones,fractal,dem] [--size 256]
+ *           [--lights sky+sun|sky|sun|local] [--grid "key=v1,v2 ..."]...
+ *           [--frames 3] [--cache DIR] [--data DIR] [--truth-samples 1024]
+ *           [--kiosk-ms 100] [--panel-ms 500] [--headless-err 0.03] [--quiet]
+ *
+ * Without --grid the default sweep (DEFAULT_GRIDS below) is measured.  A
+ * frame is a full frame: the renderer's caches are invalidated before each,
+ * so every pass runs; one warm-up frame (whose image is the one compared)
+ * precedes the timed ones.  A progress bar goes to a terminal's stderr.
+ */
+#include "bench_front.h"
+#include "bench_scene.h"
+#include "bench_sweep.h"
+#include "bench_truth.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#ifndef HFS_DATA_DIR
+#define HFS_DATA_DIR "data"
+#endif
+
+#define MAX_SCENES 16
+
+/* The default sweep: the settings that move time and error most, on a grid
+ * around the library's defaults, plus the precision and the visibility path
+ * at the defaults. */
+static const char *const DEFAULT_GRIDS[] = {
+    "k=2,4,8 offset=1,2,3 nphi-env=16,32,48 nphi-key=3,5 subsample=1,2,4",
+    "precision=fp32", "visibility=wedge", NULL};
+
+typedef struct options {
+    const char *out_csv, *plots, *lights, *cache, *data;
+    char scenes[MAX_SCENES][32];
+    int n_scenes, size, frames, truth_samples, quiet;
+    const char *grids[32];
+    int n_grids;
+    bench_budget budget;
+} options;
+
+static void usage(void)
+{
+    fprintf(stderr,
+            "usage: hfbench -o OUT.csv [--plots DIR] [--scenes a,b,c] [--size N] [--lights "
+            "sky+sun|sky|sun|local]\n"
+            "               [--grid \"key=v1,v2 ...\"]... [--frames N] [--cache DIR] [--data DIR]\n"
+            "               [--truth-samples N] [--kiosk-ms MS] [--panel-ms MS] "
+            "[--headless-err E] [--quiet]\n");
+}
+
+static int parse_number(const char *flag, const char *v, double lo, double hi, double *out)
+{
+    char *end;
+    const double x = strtod(v, &end);
+    if (end == v || *end || !(x >= lo && x <= hi)) {
+        fprintf(stderr, "hfbench: %s: '%s' is not a number in [%g, %g]\n", flag, v, lo, hi);
+        return -1;
+    }
+    *out = x;
+    return 0;
+}
+
+static int parse_args(int argc, char **argv, options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->lights = "sky+sun";
+    o->cache = "bench-cache";
+    o->data = HFS_DATA_DIR;
+    o->size = 256;
+    o->frames = 3;
+    o->truth_samples = 1024;
+    o->budget = (bench_budget){.kiosk_ms = 100.0, .panel_ms = 500.0, .headless_err = 0.03};
+    const char *scenes = "cones,fractal,dem";
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        double x = 0.0;
+        if (!strcmp(a, "--quiet")) {
+            o->quiet = 1;
+            continue;
+        }
+        if (!v) {
+            fprintf(stderr, "hfbench: %s: unknown flag or missing value\n", a);
+            usage();
+            return -1;
+        }
+        ++i;
+        if (!strcmp(a, "-o"))
+            o->out_csv = v;
+        else if (!strcmp(a, "--plots"))
+            o->plots = v;
+        else if (!strcmp(a, "--scenes"))
+            scenes = v;
+        else if (!strcmp(a, "--lights"))
+            o->lights = v;
+        else if (!strcmp(a, "--cache"))
+            o->cache = v;
+        else if (!strcmp(a, "--data"))
+            o->data = v;
+        else if (!strcmp(a, "--grid")) {
+            if (o->n_grids == 31) {
+                fprintf(stderr, "hfbench: --grid: at most 31\n");
+                return -1;
+            }
+            o->grids[o->n_grids++] = v;
+        } else if (!strcmp(a, "--size")) {
+            if (parse_number(a, v, 2, 16384, &x))
+                return -1;
+            o->size = (int)x;
+        } else if (!strcmp(a, "--frames")) {
+            if (parse_number(a, v, 1, 1000, &x))
+                return -1;
+            o->frames = (int)x;
+        } else if (!strcmp(a, "--truth-samples")) {
+            if (parse_number(a, v, 1, 1 << 20, &x))
+                return -1;
+            o->truth_samples = (int)x;
+        } else if (!strcmp(a, "--kiosk-ms")) {
+            if (parse_number(a, v, 0, 1e9, &o->budget.kiosk_ms))
+                return -1;
+        } else if (!strcmp(a, "--panel-ms")) {
+            if (parse_number(a, v, 0, 1e9, &o->budget.panel_ms))
+                return -1;
+        } else if (!strcmp(a, "--headless-err")) {
+            if (parse_number(a, v, 0, 1e9, &o->budget.headless_err))
+                return -1;
+        } else {
+            fprintf(stderr, "hfbench: %s: unknown flag\n", a);
+            usage();
+            return -1;
+        }
+    }
+    if (!o->out_csv) {
+        usage();
+        return -1;
+    }
+    char buf[1024];
+    snprintf(buf, sizeof buf, "%s", scenes);
+    char *save = NULL;
+    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        if (o->n_scenes == MAX_SCENES || strlen(t) >= sizeof o->scenes[0]) {
+            fprintf(stderr, "hfbench: --scenes: too many or too long names\n");
+            return -1;
+        }
+        snprintf(o->scenes[o->n_scenes++], sizeof o->scenes[0], "%s", t);
+    }
+    if (!o->n_grids)
+        for (int g = 0; DEFAULT_GRIDS[g]; ++g)
+            o->grids[o->n_grids++] = DEFAULT_GRIDS[g];
+    return 0;
+}
+
+static void progress(const options *o, int done, int total, const char *what)
+{
+    if (o->quiet || !isatty(STDERR_FILENO))
+        return;
+    const int width = 30, fill = total ? done * width / total : width;
+    fprintf(stderr, "\r%4d/%d [%.*s%.*s] %-60.60s", done, total, fill,
+            "##############################", width - fill, "..............................",
+            what);
+    if (done == total)
+        fputc('\n', stderr);
+    fflush(stderr);
+}
+
+static int cmp_dbl(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_dbl);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+enum { T_FRAME, T_GPU, T_PYRAMID, T_ENV, T_KEY, T_LOCAL, T_SHADE, T_COUNT };
+
+/* Warm-up frame into img, then `frames` full frames; medians into r. */
+static int measure(hfs_renderer *rd, const bench_scene *sc, const hfs_quality *q, int frames,
+                   hfs_image *img, bench_result *r, hfs_error *err)
+{
+    double *v = calloc((size_t)T_COUNT * frames, sizeof *v);
+    if (!v)
+        return hfs_fail(err, HFS_E_NOMEM, "out of memory");
+    int rc = hfs_renderer_set_timing(rd, 1);
+    for (int f = -1; f < frames && !rc; ++f) {
+        hfs_renderer_invalidate(rd);
+        rc = hfs_renderer_render(rd, &sc->field, &sc->lighting, q, img, NULL, NULL, err);
+        if (rc || f < 0)
+            continue;
+        hfs_timings t;
+        hfs_renderer_timings(rd, &t);
+        double *row = v + (size_t)f;
+        row[T_FRAME * frames] = t.frame_ms;
+        row[T_GPU * frames] = t.gpu_ms;
+        for (int p = 0; p < t.n_passes; ++p) {
+            const char *n = t.pass[p].name;
+            const double ms = t.pass[p].ms > 0.0 ? t.pass[p].ms : 0.0;
+            if (!strcmp(n, "decimate") || !strcmp(n, "reconstruct"))
+                row[T_PYRAMID * frames] += ms;
+            else if (!strcmp(n, "env"))
+                row[T_ENV * frames] += ms;
+            else if (!strcmp(n, "key"))
+                row[T_KEY * frames] += ms;
+            else if (!strcmp(n, "local"))
+                row[T_LOCAL * frames] += ms;
+            else if (!strcmp(n, "shade"))
+                row[T_SHADE * frames] += ms;
+        }
+        r->texture_bytes = t.texture_bytes;
+    }
+    if (!rc) {
+        r->frame_ms = median(v + (size_t)T_FRAME * frames, frames);
+        r->gpu_ms = median(v + (size_t)T_GPU * frames, frames);
+        r->pyramid_ms = median(v + (size_t)T_PYRAMID * frames, frames);
+        r->env_ms = median(v + (size_t)T_ENV * frames, frames);
+        r->key_ms = median(v + (size_t)T_KEY * frames, frames);
+        r->local_ms = median(v + (size_t)T_LOCAL * frames, frames);
+        r->shade_ms = median(v + (size_t)T_SHADE * frames, frames);
+    }
+    free(v);
+    return rc;
+}
+
+typedef struct run {
+    options o;
+    bench_sweep sweep;
+    bench_scene scenes[MAX_SCENES];
+    hfs_image truth[MAX_SCENES];
+    double norm[MAX_SCENES];
+    hfs_renderer *gles, *cpu;
+    bench_result *res;
+    int n_res;
+} run;
+
+static int prepare_scene(run *R, int s, hfs_error *err)
+{
+    const options *o = &R->o;
+    int rc = bench_scene_make(o->scenes[s], o->size, o->lights, o->data, &R->scenes[s], err);
+    if (rc)
+        return rc;
+    const bench_scene *sc = &R->scenes[s];
+    hfs_quality tq;
+    hfs_quality_defaults(&tq);
+    tq.truth_light_samples = o->truth_samples;
+    char what[96];
+    snprintf(what, sizeof what, "%s: ground truth", sc->name);
+    progress(o, 0, R->sweep.n * o->n_scenes, what);
+    int cached = 0;
+    double secs = 0.0;
+    if ((rc = bench_truth_get(o->cache, &sc->field, &sc->lighting, &tq, &R->truth[s], &cached,
+                              &secs, err)))
+        return rc;
+    if (!o->quiet)
+        fprintf(stderr, "%s%s %dx%d %s: truth %s (%.1f s)\n",
+                isatty(STDERR_FILENO) ? "\r" : "", sc->name, o->size, o->size, o->lights,
+                cached ? "from the cache" : "rendered", secs);
+    hfs_image un = {0};
+    if ((rc = hfs_image_alloc(&un, o->size, o->size, err)) ||
+        (rc = hfs_render_unshadowed(&sc->field, &sc->lighting, &tq, &un, err))) {
+        hfs_image_free(&un);
+        return rc;
+    }
+    R->norm[s] = hfs_image_max(&un);
+    hfs_image_free(&un);
+    return HFS_OK;
+}
+
+static hfs_renderer *renderer_for(run *R, hfs_backend b, hfs_error *err)
+{
+    hfs_renderer **slot = b == HFS_BACKEND_CPU ? &R->cpu : &R->gles;
+    if (!*slot) {
+        hfs_renderer_desc d = {.backend = b};
+        if (hfs_renderer_create(&d, slot, err))
+            return NULL;
+    }
+    return *slot;
+}
+
+static void measure_all(run *R)
+{
+    const options *o = &R->o;
+    const int total = R->sweep.n * o->n_scenes;
+    hfs_image img = {0};
+    for (int s = 0; s < o->n_scenes; ++s)
+        for (int p = 0; p < R->sweep.n; ++p) {
+            const bench_point *pt = &R->sweep.pts[p];
+            bench_result *r = &R->res[R->n_res++];
+            memset(r, 0, sizeof *r);
+            r->scene = s;
+            r->point = p;
+            char what[256];
+            snprintf(what, sizeof what, "%s %s", o->scenes[s], pt->label);
+            progress(o, R->n_res - 1, total, what);
+            hfs_error err = {{0}};
+            hfs_renderer *rd = renderer_for(R, pt->backend, &err);
+            int rc = rd ? HFS_OK : HFS_E_CONTEXT;
+            if (!rc && !img.rgb)
+                rc = hfs_image_alloc(&img, o->size, o->size, &err);
+            if (!rc)
+                rc = measure(rd, &R->scenes[s], &pt->q, o->frames, &img, r, &err);
+            hfs_metrics m;
+            if (!rc)
+                rc = hfs_compare_images(&img, &R->truth[s], R->norm[s], &m, &err);
+            if (rc) {
+                snprintf(r->note, sizeof r->note, "%.159s", err.msg);
+                for (char *c = r->note; *c; ++c)
+                    *c = *c == ',' || *c == '\n' ? ';' : *c;
+                if (!o->quiet)
+                    fprintf(stderr, "\n%s: %s\n", what, err.msg);
+                continue;
+            }
+            r->ok = 1;
+            r->mean_abs = m.mean_abs;
+            r->rmse = m.rmse;
+            r->p99_abs = m.p99_abs;
+            r->max_abs = m.max_abs;
+            r->nonfinite = m.nonfinite;
+        }
+    progress(o, total, total, "done");
+    hfs_image_free(&img);
+}
+
+static void print_summary(const run *R, const bench_picks *pk)
+{
+    const options *o = &R->o;
+    printf("| use | rule | setting | worst frame ms | worst mean abs | worst p99 abs |\n");
+    printf("|---|---|---|---|---|---|\n");
+    const char *rules[USE_COUNT] = {"most accurate, frame <= %g ms", "most accurate, frame <= %g ms",
+                                    "fastest, mean <= %g"};
+    const double lim[USE_COUNT] = {o->budget.kiosk_ms, o->budget.panel_ms, o->budget.headless_err};
+    for (int u = 0; u < USE_COUNT; ++u) {
+        char rule[64];
+        snprintf(rule, sizeof rule, rules[u], lim[u]);
+        if (pk->point[u] < 0)
+            printf("| %s | %s | (none meets the rule) | | | |\n", bench_use_names[u], rule);
+        else
+            printf("| %s | %s | %s | %.1f | %.3e | %.3e |\n", bench_use_names[u], rule,
+                   R->sweep.pts[pk->point[u]].label, pk->worst_ms[u], pk->worst_mean[u],
+                   pk->worst_p99[u]);
+    }
+    printf("\n| scene | setting | frame ms | GPU ms | texture MiB | mean abs | RMSE | p99 abs | "
+           "max abs | front |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    for (int i = 0; i < R->n_res; ++i) {
+        const bench_result *r = &R->res[i];
+        const bench_point *p = &R->sweep.pts[r->point];
+        int picked = 0;
+        for (int u = 0; u < USE_COUNT; ++u)
+            picked |= pk->point[u] == r->point;
+        if (!r->ok || !(p->is_default || picked))
+            continue;
+        printf("| %s | %s%s | %.1f | %.1f | %.2f | %.3e | %.3e | %.3e | %.3e | %s |\n",
+               o->scenes[r->scene], p->label, p->is_default ? " (defaults)" : "", r->frame_ms,
+               r->gpu_ms, r->texture_bytes / 1048576.0, r->mean_abs, r->rmse, r->p99_abs,
+               r->max_abs, r->pareto ? "yes" : "no");
+    }
+}
+
+int main(int argc, char **argv)
+{
+    run R;
+    memset(&R, 0, sizeof R);
+    if (parse_args(argc, argv, &R.o))
+        return 2;
+    const options *o = &R.o;
+    hfs_error err = {{0}};
+    int rc = HFS_OK;
+    for (int g = 0; g < o->n_grids && !rc; ++g)
+        rc = bench_sweep_add_grid(&R.sweep, o->grids[g], &err);
+    for (int s = 0; s < o->n_scenes && !rc; ++s)
+        rc = prepare_scene(&R, s, &err);
+    if (!rc && !(R.res = calloc((size_t)R.sweep.n * o->n_scenes, sizeof *R.res)))
+        rc = hfs_fail(&err, HFS_E_NOMEM, "out of memory");
+    bench_picks pk = {0};
+    if (!rc) {
+        if (!o->quiet)
+            fprintf(stderr, "%d settings x %d scenes, %d timed frames each\n", R.sweep.n,
+                    o->n_scenes, o->frames);
+        measure_all(&R);
+        bench_mark_fronts(R.res, R.n_res, o->n_scenes);
+        if (bench_pick(R.res, R.n_res, o->n_scenes, R.sweep.pts, R.sweep.n, &o->budget, &pk))
+            rc = hfs_fail(&err, HFS_E_NOMEM, "out of memory");
+    }
+    const char *names[MAX_SCENES];
+    for (int s = 0; s < o->n_scenes; ++s)
+        names[s] = o->scenes[s];
+    if (!rc)
+        rc = bench_write_csv(o->out_csv, R.res, R.n_res, names, o->lights, o->size,
+                             R.sweep.pts, &pk, &err);
+    if (!rc && o->plots)
+        rc = bench_plot(o->plots, R.res, R.n_res, names, o->n_scenes, o->lights, o->size,
+                        R.sweep.pts, &pk, &err);
+    if (!rc)
+        print_summary(&R, &pk);
+    int failed = 0;
+    for (int i = 0; i < R.n_res; ++i)
+        failed += !R.res[i].ok;
+    free(pk.front);
+    free(R.res);
+    hfs_renderer_destroy(R.gles);
+    hfs_renderer_destroy(R.cpu);
+    for (int s = 0; s < MAX_SCENES; ++s) {
+        bench_scene_free(&R.scenes[s]);
+        hfs_image_free(&R.truth[s]);
+    }
+    bench_sweep_free(&R.sweep);
+    if (rc) {
+        fprintf(stderr, "hfbench: %s\n", err.msg);
+        return 1;
+    }
+    if (failed)
+        fprintf(stderr, "hfbench: %d of %d points failed (see the CSV's note column)\n", failed,
+                R.n_res);
+    return failed ? 1 : 0;
+}
