@@ -18,10 +18,4 @@ if(TARGET hfshade_io)
                ARGS ${CMAKE_CURRENT_SOURCE_DIR}/data/io)
 endif()
 
-# libFuzzer target for the loaders (not a test): -DHFS_FUZZ=ON with clang.
-if(HFS_FUZZ AND TARGET hfshade_io AND CMAKE_C_COMPILER_ID MATCHES "Clang")
-  add_executable(fuzz_io_load test_io_fuzz.c)
-  target_compile_options(fuzz_io_load PRIVATE -fsanitize=fuzzer,address,undefined)
-  target_link_options(fuzz_io_load PRIVATE -fsanitize=fuzzer,address,undefined)
-  target_link_libraries(fuzz_io_load PRIVATE hfshade_io m)
-endif()
+# Fuzz targets and the replay of their seeds and former crashes: fuzz.cmake.

@@ -5,7 +5,8 @@
  * Radiance: we parse the header ourselves first (signature line, FORMAT,
  * resolution line) so that errors are specific and the size guard applies
  * before stb allocates anything; stb then decodes from our reader through
- * callbacks.  stb reads 0 at end of file instead of failing, so the callbacks
+ * callbacks.  Headers with a NUL byte are refused, so that stb's reading of
+ * the header (C strings) cannot differ from ours.  stb reads 0 at end of file instead of failing, so the callbacks
  * record any request it makes past the end ("overrun"): a file that ends
  * before its last pixel is reported as truncated rather than decoded black.
  * stb refills its buffer with requests of a fixed size (its first request
@@ -155,6 +156,12 @@ static int hdr_check_header(hfs_rd *rd, int *w, int *h, hfs_error *err)
                         rd->path);
     if (!next_line(hd, n, &pos, &st, &len))
         return hdr_header_short(rd, n, err);
+    /* stb reads header lines as C strings: for it a NUL ends a line, and a
+     * line that starts with one ends the header, so it could take another
+     * line than ours for the resolution and allocate for that, past our
+     * guard.  Radiance headers are text. */
+    if (memchr(hd, '\0', pos))
+        return hfs_fail(err, HFS_E_FORMAT, "%s: malformed Radiance HDR header (NUL byte)", rd->path);
     if (len >= sizeof res)
         return hfs_fail(err, HFS_E_FORMAT, "%s: malformed Radiance HDR resolution line", rd->path);
     memcpy(res, hd + st, len);

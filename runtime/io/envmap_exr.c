@@ -13,8 +13,10 @@
  * size so the library can validate offsets) and an error handler that
  * records the library's first message instead of printing it; chunk
  * reconstruction is disabled, so a damaged offset table is an error, not a
- * guess; every chunk's rectangle is checked against the image before the
- * library is told to write into it.
+ * guess.  Nothing large is allocated on a header's word alone: every chunk
+ * is checked first (its rectangle against the image, its decoded size
+ * against what its stored bytes can expand to) before the image is
+ * allocated and decoded.
  */
 #include "io_internal.h"
 
@@ -95,8 +97,10 @@ typedef struct exr_job {
     int dec_live;
     int grey;               /* decode Y into component 0 only */
     int w, h;               /* data window size */
-    float *rgb;
+    exr_compression_t compression;
+    float *rgb;             /* NULL while the chunks are only checked */
 } exr_job;
+
 
 static int component_of(const char *name, int grey)
 {
@@ -108,15 +112,46 @@ static int component_of(const char *name, int grey)
     return -1;
 }
 
-/* Decodes one chunk whose top-left pixel is (x0, y0) in data-window space. */
-static int decode_chunk(exr_job *j, const exr_chunk_info_t *ci, int x0, int y0, hfs_error *err)
+/* The most a codec can expand a chunk's stored bytes, with a margin:
+ * deflate (ZIP, ZIPS; PXR24 also widens 24-bit floats to 32) 1032:1, PIZ's
+ * Huffman run codes about 410:1, RLE 64:1, B44 about 11:1.  DWA, which this
+ * OpenEXRCore cannot decode, and later codecs get a loose bound. */
+static uint64_t max_expansion(exr_compression_t c)
 {
-    exr_result_t rv;
+    switch (c) {
+    case EXR_COMPRESSION_NONE: return 1;
+    case EXR_COMPRESSION_RLE: return 128;
+    case EXR_COMPRESSION_ZIPS:
+    case EXR_COMPRESSION_ZIP:
+    case EXR_COMPRESSION_PIZ:
+    case EXR_COMPRESSION_PXR24:
+    case EXR_COMPRESSION_B44:
+    case EXR_COMPRESSION_B44A: return 2048;
+    default: return 1u << 16;
+    }
+}
 
+/* Checks one chunk whose top-left pixel is (x0, y0) in data-window space:
+ * inside the image, and no larger decoded than its stored bytes allow (the
+ * library allocates the decoded size before it decompresses). */
+static int check_chunk(exr_job *j, const exr_chunk_info_t *ci, int x0, int y0, hfs_error *err)
+{
     if (x0 < 0 || y0 < 0 || ci->width < 1 || ci->height < 1 || ci->width > j->w - x0 ||
         ci->height > j->h - y0)
         return hfs_fail(err, HFS_E_FORMAT, "%s: OpenEXR chunk %d (%dx%d at %d,%d) lies outside the "
                         "%dx%d image", j->path, ci->idx, ci->width, ci->height, x0, y0, j->w, j->h);
+    if (ci->unpacked_size / max_expansion(j->compression) > ci->packed_size)
+        return hfs_fail(err, HFS_E_FORMAT, "%s: corrupt OpenEXR chunk %d (%llu stored bytes cannot "
+                        "decode to %llu)", j->path, ci->idx, (unsigned long long)ci->packed_size,
+                        (unsigned long long)ci->unpacked_size);
+    return HFS_OK;
+}
+
+/* Decodes one chunk that check_chunk() accepted. */
+static int decode_chunk(exr_job *j, const exr_chunk_info_t *ci, int x0, int y0, hfs_error *err)
+{
+    exr_result_t rv;
+
     if (!j->dec_live) {
         rv = exr_decoding_initialize(j->ctxt, 0, ci, &j->dec);
         if (rv)
@@ -156,6 +191,15 @@ static int decode_chunk(exr_job *j, const exr_chunk_info_t *ci, int x0, int y0, 
     return HFS_OK;
 }
 
+/* Checks (while j->rgb is NULL) or decodes one chunk. */
+static int visit_chunk(exr_job *j, const exr_chunk_info_t *ci, int x0, int y0, hfs_error *err)
+{
+    int rc = check_chunk(j, ci, x0, y0, err);
+    if (rc || !j->rgb)
+        return rc;
+    return decode_chunk(j, ci, x0, y0, err);
+}
+
 static int read_scanlines(exr_job *j, const exr_attr_box2i_t *dw, hfs_error *err)
 {
     int32_t lpc = 0;
@@ -172,7 +216,7 @@ static int read_scanlines(exr_job *j, const exr_attr_box2i_t *dw, hfs_error *err
         if (ci.start_x != dw->min.x || ci.width != j->w)
             return hfs_fail(err, HFS_E_FORMAT, "%s: OpenEXR scanline chunk %d does not span the "
                             "data window", j->path, ci.idx);
-        rc = decode_chunk(j, &ci, 0, (int)((int64_t)ci.start_y - dw->min.y), err);
+        rc = visit_chunk(j, &ci, 0, (int)((int64_t)ci.start_y - dw->min.y), err);
         if (rc)
             return rc;
     }
@@ -202,7 +246,7 @@ static int read_tiles(exr_job *j, hfs_error *err)
             rv = exr_read_tile_chunk_info(j->ctxt, 0, (int)tx, (int)ty, 0, 0, &ci);
             if (rv)
                 return exr_fail(j->path, j->src, rv, "reading a tile", err);
-            rc = decode_chunk(j, &ci, (int)(tx * tw), (int)(ty * th), err);
+            rc = visit_chunk(j, &ci, (int)(tx * tw), (int)(ty * th), err);
             if (rc)
                 return rc;
         }
@@ -280,6 +324,16 @@ static int load_part0(exr_job *j, hfs_error *err)
     j->w = (int)w;
     j->h = (int)h;
     if ((rc = choose_channels(j, err)))
+        return rc;
+    rv = exr_get_compression(j->ctxt, 0, &j->compression);
+    if (rv)
+        return exr_fail(j->path, j->src, rv, "compression query", err);
+    /* Every chunk is checked before the image is allocated, so that a
+     * header's claim costs memory only when the data to fill it is there
+     * (reading the first chunk also checks that the offset table fits in
+     * the file). */
+    rc = storage == EXR_STORAGE_SCANLINE ? read_scanlines(j, &dw, err) : read_tiles(j, err);
+    if (rc)
         return rc;
     j->rgb = calloc((size_t)j->w * (size_t)j->h * 3, sizeof *j->rgb);
     if (!j->rgb)

@@ -6,9 +6,12 @@
  * sub-byte samples are unpacked without scaling, so a 4-bit 15 is 15).
  * Alpha 0 marks a hole; other alpha values are ignored.  PALETTE, RGB and RGBA
  * are refused: their greys are an accident of the colour map and would make
- * silent, wrong heights.  No gamma, sBIT or tRNS transform is applied.  The
+ * silent, wrong heights.  No gamma, sBIT or tRNS transform is applied, and
+ * ancillary chunks are skipped without being parsed.  The
  * file must be complete through IEND (png_read_end), which also verifies the
- * remaining chunk CRCs.
+ * remaining chunk CRCs.  The size in IHDR is checked against the guard and,
+ * for a file of known size, against what its bytes can decompress to
+ * before anything of that size is allocated.
  *
  * Invariants: libpng errors longjmp back into png_run() only, never past a
  * frame that owns memory: everything allocated lives in the png_state owned
@@ -22,6 +25,9 @@
 #include <setjmp.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* Deflate's largest expansion: a 258-byte match in two 1-bit codes. */
+#define PNG_DEFLATE_MAX_RATIO 1032LL
 
 typedef struct png_state {
     hfs_rd *rd;
@@ -91,6 +97,11 @@ static int png_run(png_state *s, const hfs_io_hopts *o, hfs_heightmap *out)
      * that ours, below, decides and explains; nothing large is allocated
      * before our check. */
     png_set_user_limits(s->png, 0x7fffffffu, 0x7fffffffu);
+    /* Ancillary chunks (text, ICC profile, gamma, ...) hold nothing a height
+     * field uses.  Skipped unparsed, they cannot make libpng allocate and
+     * clear a buffer of whatever length they claim (up to 2 GiB from a
+     * 200-byte file); tRNS is still read, and ignored. */
+    png_set_keep_unknown_chunks(s->png, PNG_HANDLE_CHUNK_NEVER, NULL, -1);
     png_read_info(s->png, s->info);
     png_get_IHDR(s->png, s->info, &w, &h, &depth, &ctype, &interlace, NULL, NULL);
 
@@ -104,6 +115,17 @@ static int png_run(png_state *s, const hfs_io_hopts *o, hfs_heightmap *out)
     if (rc)
         return rc;
     channels = ctype == PNG_COLOR_TYPE_GRAY_ALPHA ? 2 : 1;
+    /* A 60-byte file may claim 16384 x 16384; its image data must follow,
+     * and deflate expands at most 1032:1.  A known-size file that cannot
+     * hold the claimed samples is refused before the big allocations. */
+    if (s->rd->file_size >= 0 && s->rd->file_size < (1LL << 40)) {
+        long long bytes = (long long)w * h * depth * channels / 8;
+        if (bytes > PNG_DEFLATE_MAX_RATIO * (s->rd->file_size + 1))
+            return hfs_fail(s->err, HFS_E_FORMAT,
+                            "%s: truncated PNG image data (%lld bytes cannot hold %ux%u "
+                            "%d-bit samples, even at deflate's maximum ratio)", s->rd->path,
+                            s->rd->file_size, (unsigned)w, (unsigned)h, depth);
+    }
     if (depth < 8)
         png_set_packing(s->png); /* one byte per sample, values unscaled */
     passes = png_set_interlace_handling(s->png);

@@ -101,7 +101,9 @@ typedef struct hfs_heightmap {
  *   PNG  grey 1..16 bit (16-bit big-endian per PNG), or grey+alpha where
  *        alpha = 0 marks a hole and other alpha is ignored.  Palette and RGB
  *        PNGs are rejected (convert to greyscale first).  tRNS, gAMA, sBIT
- *        are ignored.  The file must be complete up to IEND.
+ *        are ignored (ancillary chunks are skipped unparsed).  The file must
+ *        be complete up to IEND, and big enough for its claimed size at
+ *        deflate's maximum ratio (checked before anything is allocated).
  *   PGM  P5 (8-bit if maxval < 256, else 16-bit big-endian) or P2 (ASCII);
  *        maxval 1..65535; samples above maxval are errors; one image per file
  *        (no bytes after a P5 image; only whitespace after a P2 image).
@@ -156,13 +158,17 @@ typedef struct hfs_envmap {
  *   Radiance .hdr  "#?RADIANCE" or "#?RGBE", FORMAT=32-bit_rle_rgbe,
  *                  resolution "-Y H +X W" (the standard orientation; others
  *                  are rejected), flat or RLE scanlines, decoded by stb_image.
- *                  A file that ends before the last pixel is an error.
+ *                  A file that ends before the last pixel is an error, and
+ *                  so is a NUL byte in the header.
  *   OpenEXR        first part only, scanline or tiled (level 0 of mip/rip
  *                  maps), any compression OpenEXRCore decodes; channels R,G,B
  *                  (any of half/float/uint; others such as A are ignored) or,
  *                  failing those, a single Y channel used as grey.  Deep
  *                  parts, sub-sampled channels, cube-face envmaps and partial
  *                  RGB sets are rejected.  The data window is the image.
+ *                  A chunk claiming more decoded bytes than its stored bytes
+ *                  can expand to is corrupt (checked for every chunk before
+ *                  the image is allocated).
  * Non-finite pixels (NaN/Inf, possible only in EXR) are an error, not
  * clamped: a sun stored as +Inf has no meaningful finite stand-in.  Negative
  * values are kept.  Maps must be at least 1x1 and within the guard above.

@@ -37,7 +37,8 @@ target_link_libraries(hfshade_io PUBLIC hfs_base
                       PRIVATE PkgConfig::HFS_PNG hfs_openexrcore m)
 
 # Compiling stb's decoder ourselves also puts it under the sanitizers and the
-# fuzzer's coverage, which a prebuilt libstb.so is not.
+# fuzzer's coverage, which a prebuilt libstb.so is not (tools/fuzz.sh does;
+# tests/fuzz.cmake instruments this library when HFS_FUZZ is on).
 option(HFS_IO_STB_HEADER_ONLY
        "Compile stb_image's Radiance decoder into hfshade_io instead of linking libstb" OFF)
 if(TARGET PkgConfig::HFS_STB AND NOT HFS_IO_STB_HEADER_ONLY)
@@ -52,7 +53,3 @@ else()
   set_source_files_properties(${HFS_IO_DIR}/stb_hdr_impl.c PROPERTIES COMPILE_OPTIONS "-w")
 endif()
 
-if(HFS_FUZZ AND CMAKE_C_COMPILER_ID MATCHES "Clang")
-  # Coverage feedback for tests/test_io_fuzz.c (fuzz_io_load).
-  target_compile_options(hfshade_io PRIVATE -fsanitize=fuzzer-no-link,address,undefined)
-endif()

@@ -94,6 +94,33 @@ static int parse_doubles(const char *v, double *out, int n, const char *where,
     return HFS_OK;
 }
 
+/* "WxH", decimal digits only (sscanf's %d would skip blanks, take signs and,
+ * worse, wrap 4294967298 to 2).  0 and the sides, -1 if not WxH, -2 if a
+ * side exceeds max. */
+static int parse_size(const char *v, long max, long *w, long *h)
+{
+    long side[2] = {0, 0};
+    int big = 0;
+    for (int i = 0; i < 2; ++i) {
+        const char *start = v;
+        for (; *v >= '0' && *v <= '9'; ++v) {
+            if (side[i] > max)
+                big = 1; /* keep scanning: "99999999999x2y" is not WxH */
+            else
+                side[i] = side[i] * 10 + (*v - '0');
+        }
+        if (v == start || *v != (i == 0 ? 'x' : '\0'))
+            return -1;
+        if (i == 0)
+            ++v;
+    }
+    if (big || side[0] > max || side[1] > max)
+        return -2;
+    *w = side[0];
+    *h = side[1];
+    return 0;
+}
+
 static int parse_int(const char *v, int lo, int hi, int *out, const char *where,
                      const char *key, hfs_error *err)
 {
@@ -152,13 +179,15 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
     case K_HEIGHT:
         return set_path(s->height, value, base_dir, where, key, err);
     case K_SIZE: {
-        int w = 0, h = 0, used = 0;
-        if (sscanf(value, "%dx%d%n", &w, &h, &used) != 2 || value[used] != '\0')
+        long w = 0, h = 0;
+        const int r = parse_size(value, 65536, &w, &h);
+        if (r == -1)
             return hfs_fail(err, HFS_E_INVALID, "%s: size: '%s' is not WxH", where, value);
-        if (w < 2 || h < 2 || w > 65536 || h > 65536)
-            return hfs_fail(err, HFS_E_INVALID, "%s: size: %dx%d is out of range [2, 65536]", where, w, h);
-        s->raw_width = w;
-        s->raw_height = h;
+        if (r == -2 || w < 2 || h < 2)
+            return hfs_fail(err, HFS_E_INVALID, "%s: size: '%s' is out of range [2, 65536]", where,
+                            value);
+        s->raw_width = (int)w;
+        s->raw_height = (int)h;
         return HFS_OK;
     }
     case K_DX:
