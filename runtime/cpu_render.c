@@ -99,6 +99,7 @@ typedef struct render_ctx {
     double rho_pi;             /* albedo / pi */
     double h_zonal[HFS_ZH_N];  /* clamped cosine */
     double l_env[3][HFS_SH_N]; /* rotated environment */
+    double env_neg[3];         /* rho * hfs_sh_negative_bound(l_env[c]) */
     int n_jobs;
     swath_job *jobs;           /* jobs[0] is the environment when has_env */
     int has_env;
@@ -123,6 +124,19 @@ static int key_contributes(const hfs_key_light *k, double albedo)
         return 0;
     const double le = fmax(k->radiance[0], fmax(k->radiance[1], k->radiance[2]));
     return albedo / PI * le * hfs_cap_irradiance(1.0, k->alpha) > 0.0;
+}
+
+/* The environment's exit radiance lies in [-neg, open + neg]: open = rho/pi
+ * H.L is the unshadowed value and neg = rho * (negative part of L), 0 for a
+ * non-negative sky; visibility in [0, 1] can only remove light (or negative
+ * light).  Order-4 truncation of the product, and on the GLES path
+ * sub-sampling and fp16 storage, can step outside (a uniform sky of 1 gave
+ * 1.02 on 1e4 slopes at subsample 2); clamping into an interval that holds
+ * the exact value never moves a result away from it. */
+static double env_clamp(double v, double open, double neg)
+{
+    const double lo = -neg, hi = open + neg;
+    return v < lo ? lo : (v > hi ? hi : v);
 }
 
 /* Converts a radiance to the output type; finite for any finite input. */
@@ -215,7 +229,8 @@ static void render_row(void *ctx, int j, int worker)
                 hfs_visibility_eval(job->vis, s->om, v);
                 hfs_sh_product(hn, v, t);
                 for (int ch = 0; ch < 3; ++ch)
-                    lo[ch] += c->rho_pi * hfs_sh_dot(t, c->l_env[ch]);
+                    lo[ch] += env_clamp(c->rho_pi * hfs_sh_dot(t, c->l_env[ch]),
+                                        c->rho_pi * hfs_sh_dot(hn, c->l_env[ch]), c->env_neg[ch]);
                 continue;
             }
             const double cos_beta = n[0] * job->dir[0] + n[1] * job->dir[1] + n[2] * job->dir[2];
@@ -354,8 +369,10 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         job->vis_of = -1;
         job->is_env = 1;
         hfs_swath_full(q->nphi_env, &job->swath);
-        for (int ch = 0; ch < 3; ++ch)
+        for (int ch = 0; ch < 3; ++ch) {
             hfs_sh_rotate_z(l->env_sh[ch], l->env_rotate, c.l_env[ch]);
+            c.env_neg[ch] = l->albedo * hfs_sh_negative_bound(c.l_env[ch]);
+        }
     }
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i) {
         const hfs_key_light *k = &l->key[i];

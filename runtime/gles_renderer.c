@@ -7,7 +7,7 @@
  * fullscreen triangle into a framebuffer object):
  *   upload       normalized heights as fp16 hi+lo pairs (gles_setup.c) into
  *                the input texture and the last layer of the level array;
- *   normals      full resolution, RGBA (nx hi/lo, ny hi/lo);
+ *   normals      full resolution, RGBA (px hi/lo, py hi/lo): octahedral;
  *   decimate     levels N-2 .. lmin, each from the next finer (bilinear);
  *   reconstruct  levels lmin .. N-2 to the full grid (B-spline, 4 fetches),
  *                layers of one RG 2D array texture;
@@ -56,6 +56,9 @@ extern const char hfs_gles_sh_product_src[];
 #define DIRS_PER_KEY_PASS 8 /* 4 RGBA targets (ES 3.0's minimum) x 2 (hi, lo) pairs */
 
 #define LIGHTS_PER_LOCAL_PASS 8 /* 4 RGBA targets x 2 (hi, lo) ratio pairs */
+/* Smallest key-light radius the visibility sees (hfs_gles_render): 30 float
+ * ulps of pi/2, so that e - alpha < e + alpha at every elevation. */
+#define GLES_MIN_KEY_ALPHA 1e-6
 
 enum pass_id { P_UPLOAD, P_NORMALS, P_DECIMATE, P_RECON, P_ENV, P_KEY, P_LOCAL, P_SHADE,
                P_READBACK, P_COUNT };
@@ -143,6 +146,8 @@ struct hfs_gles {
     double env_tab_dphi;
     GLuint ktab, ktabb;
     int ktab_sets;
+    GLuint loc_tab;        /* local lights' interior table (full local swath) */
+    double loc_tab_dphi;
     double ktab_dphi[MAX_KEYS];
     size_t table_bytes;
     int tab_fp32;          /* format of env_tab/ktab/ktabb */
@@ -698,6 +703,7 @@ void hfs_gles_destroy(hfs_gles *g)
         del_tex(gl, &g->env_tab);
         del_tex(gl, &g->ktab);
         del_tex(gl, &g->ktabb);
+        del_tex(gl, &g->loc_tab);
     }
     for (int i = 0; i < MAX_TABLE_CACHE; ++i)
         hfs_wedge_tables_destroy(g->tables[i].t);
@@ -942,17 +948,21 @@ static int draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, G
 }
 
 /* Program `frag` of a grid pass with `outs` targets (HFS_NOUT), the level
- * defines, `extra` (one more define) and the precision/count variants, made
- * current with the pyramid, normals, grid size and per-scale constants bound. */
+ * defines, up to three more (`extra`, NULL-terminated) and the precision/count
+ * variants, made current with the pyramid, normals, grid size and per-scale
+ * constants bound. */
 static int grid_program(hfs_gles *g, const hfs_gles_layout *L, const char *frag,
-                        const char *extra, int outs, int count, GLuint *prog, hfs_error *err)
+                        const char *const *extra, int outs, int count, GLuint *prog,
+                        hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     char nlev[32], nlay[32], nout[32];
     level_defines(L, nlev, nlay, sizeof nlev);
     snprintf(nout, sizeof nout, "HFS_NOUT %d", outs);
-    const char *defs[7] = {nlev, nlay, extra, nout, NULL, NULL, NULL};
-    int nd = 4;
+    const char *defs[9] = {nlev, nlay, nout, NULL, NULL, NULL, NULL, NULL, NULL};
+    int nd = 3;
+    for (int i = 0; i < 3 && extra[i]; ++i)
+        defs[nd++] = extra[i];
     if (g->caps.fp32)
         defs[nd++] = "HFS_FP32 1";
     if (count)
@@ -984,7 +994,8 @@ static int run_keys(hfs_gles *g, const hfs_gles_layout *L, const frame_key *keys
             const int cnt = n - d0 < DIRS_PER_KEY_PASS ? n - d0 : DIRS_PER_KEY_PASS;
             const int outs = (cnt + 1) / 2;
             GLuint prog;
-            if ((rc = grid_program(g, L, "gles_key.frag", ndir, outs, count, &prog, err)))
+            const char *extra[2] = {ndir, NULL};
+            if ((rc = grid_program(g, L, "gles_key.frag", extra, outs, count, &prog, err)))
                 return rc;
             set_i1(gl, prog, "u_dir0", d0);
             set_i1(gl, prog, "u_ndir", cnt);
@@ -1008,18 +1019,23 @@ static int run_local(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality *q
 {
     const hfs_gl *gl = &g->gl;
     resources *r = &g->r;
-    char ldirs[40];
+    const int tables = q->visibility == HFS_VIS_WEDGE_TABLE;
+    char ldirs[40], tabn[32];
     snprintf(ldirs, sizeof ldirs, "HFS_LOCAL_DIRS %d", q->nphi_local);
+    snprintf(tabn, sizeof tabn, "HFS_TABLE_N %d", TABLE_N);
+    const char *extra[4] = {ldirs, tables ? "HFS_TABLES 1" : NULL, tabn, NULL};
     int rc;
     for (int l0 = 0; l0 < n_local; l0 += LIGHTS_PER_LOCAL_PASS) {
         const int cnt = n_local - l0 < LIGHTS_PER_LOCAL_PASS ? n_local - l0
                                                               : LIGHTS_PER_LOCAL_PASS;
         GLuint prog;
-        if ((rc = grid_program(g, L, "gles_local.frag", ldirs, (cnt + 1) / 2, count, &prog,
+        if ((rc = grid_program(g, L, "gles_local.frag", extra, (cnt + 1) / 2, count, &prog,
                                err)))
             return rc;
         set_i1(gl, prog, "u_light0", l0);
         set_i1(gl, prog, "u_nl", cnt);
+        if (tables)
+            bind_tex(gl, U_TAB, GL_TEXTURE_2D_ARRAY, g->loc_tab);
         gl->BindBufferBase(GL_UNIFORM_BUFFER, B_LOCAL, g->ubo[UBO_LOCAL]);
         if ((rc = draw_grid_layers(g, L, r->localv_fbo, r->localv, l0 / 2, (cnt + 1) / 2,
                                    "local-light", count ? fetch_sum : NULL, err)))
@@ -1055,15 +1071,17 @@ static size_t align_up(size_t v, size_t a)
     return (v + a - 1) / a * a;
 }
 
-/* HfsLocal (gles_shade.frag, HFS_LOCAL): elevation moments E (16 vec4),
- * (dx, base, hscale, zscale), (nphi_local, forced full swath, 0, 0), two vec4
- * per light ((centre, radius), (Le, 0)), then the full swath's directions
- * (the robust floats of hfs_gles_swath_float_dirs), one vec4 each. */
+/* HfsLocal (gles_local.frag; gles_shade.frag reads a prefix): elevation
+ * moments E (16 vec4), (dx, base, hscale, zscale), (nphi_local, forced full
+ * swath, 0, 0), two vec4 per light ((centre, radius), (Le, 0)), the full
+ * swath's directions (the robust floats of hfs_gles_swath_float_dirs), one
+ * vec4 each, then per wedge of the full swath its z-rotation for the wedge
+ * tables, (cos m a), (sin m a) for m = 1..3 (as hfs_gles_pack_swath). */
 static int local_upload(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality *q,
                         const frame *fr, hfs_error *err)
 {
     const int nphi = q->nphi_local;
-    const size_t n4 = 16 + 2 + 2 * HFS_MAX_LOCAL_LIGHTS + (size_t)nphi;
+    const size_t n4 = 16 + 2 + 2 * HFS_MAX_LOCAL_LIGHTS + 3 * (size_t)nphi;
     int rc;
     if ((rc = hfs_gl_caps_check_uniform_block(&g->caps, n4 * 16,
                                               "local lights (--nphi-local)", err)))
@@ -1099,6 +1117,15 @@ static int local_upload(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality
     for (int k = 0; k < nphi; ++k) {
         dirs[4 * k] = cs[2 * k];
         dirs[4 * k + 1] = cs[2 * k + 1];
+    }
+    float *rot = dirs + 4 * (size_t)nphi;
+    for (int w = 0; w < hfs_swath_wedge_count(&sw) && w < nphi; ++w) {
+        hfs_swath_wedge wd;
+        hfs_swath_get_wedge(&sw, w, &wd); /* interior wedges: no mirror */
+        for (int m = 1; m <= 3; ++m) {
+            rot[8 * w + m - 1] = (float)cos(m * wd.start);
+            rot[8 * w + 4 + m - 1] = (float)sin(m * wd.start);
+        }
     }
     ubo_upload(&g->gl, g->ubo[UBO_LOCAL], u, n4 * 16);
     g->stats.offset_mismatches += hfs_gles_offset_mismatches(L, &sw);
@@ -1181,10 +1208,11 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     }
 
     /* Table textures follow the precision. */
-    if ((g->env_tab || g->ktab) && g->tab_fp32 != caps->fp32) {
+    if ((g->env_tab || g->ktab || g->loc_tab) && g->tab_fp32 != caps->fp32) {
         del_tex(gl, &g->env_tab);
         del_tex(gl, &g->ktab);
         del_tex(gl, &g->ktabb);
+        del_tex(gl, &g->loc_tab);
         g->ktab_sets = 0;
         g->table_bytes = 0;
         g->env_valid = 0;
@@ -1310,6 +1338,20 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     if (fr->n_local > 0) {
         if ((rc = local_upload(g, &L, q, fr, err)))
             return rc;
+        const double dphi = 2.0 * PI / q->nphi_local;
+        if (tables && (!g->loc_tab || g->loc_tab_dphi != dphi)) {
+            hfs_wedge_tables *t = tables_get(g, dphi, err);
+            if (!t)
+                return HFS_E_NOMEM;
+            if (!g->loc_tab) {
+                g->loc_tab = tex_new(gl, GL_TEXTURE_2D_ARRAY, caps->fmt_rgba, TABLE_N, TABLE_N,
+                                     4, 1);
+                g->table_bytes += (size_t)TABLE_N * TABLE_N * 4 * caps->bytes_rgba;
+            }
+            if ((rc = tables_upload(g, t, g->loc_tab, 0, 0, err)))
+                return rc;
+            g->loc_tab_dphi = dphi;
+        }
         pass_begin(g, P_LOCAL);
         if ((rc = run_local(g, &L, q, fr->n_local, 0, NULL, err)))
             return rc;
@@ -1318,7 +1360,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
 
     /* Shading. */
     double bound = 0.0;
-    float shade[13 * 4];
+    float shade[14 * 4]; /* HfsShade: u_env[12], u_misc, u_env_neg */
     memset(shade, 0, sizeof shade);
     if (fr->has_env) {
         double m = 0.0;
@@ -1332,16 +1374,28 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         }
         bound += 4.0 * m;
     }
-    for (int i = 0; i < fr->n_keys; ++i)
-        bound += fmax(fr->keys[i].k.le[0], fmax(fr->keys[i].k.le[1], fr->keys[i].k.le[2]));
-    for (int i = 0; i < fr->n_local; ++i) /* E <= pi (inside the sphere) */
+    bound *= PI;
+    /* Lights by the irradiance they can actually give (not pi): a bound
+     * loose by Le * pi / E_max pushes the frame's values into fp16's
+     * subnormals, where hi + lo keep only ~3e-8 of the scale (a 1e-5 rad sun
+     * of radiance 3e9 lost 0.7% that way). */
+    for (int i = 0; i < fr->n_keys; ++i) /* pi sin^2 alpha, at normal incidence */
+        bound += fmax(fr->keys[i].k.le[0], fmax(fr->keys[i].k.le[1], fr->keys[i].k.le[2])) *
+                 hfs_cap_irradiance(1.0, fr->keys[i].k.alpha);
+    for (int i = 0; i < fr->n_local; ++i)
         bound += fmax(fr->local[i].radiance[0],
-                      fmax(fr->local[i].radiance[1], fr->local[i].radiance[2]));
-    bound *= fr->rho_pi * PI;
-    const double out_scale = caps->fp32 ? 1.0 : hfs_gles_output_scale(bound);
+                      fmax(fr->local[i].radiance[1], fr->local[i].radiance[2])) *
+                 hfs_gles_local_max_irradiance(&L, &fr->local[i]);
+    bound *= fr->rho_pi;
+    /* fp32 too: the shader clamps to fp16's range (65504) on either path,
+     * and a power of two is exact both ways, so fp32 gets the same scale
+     * (unscaled, a sky of radiance 1e6 read back as 65504 there). */
+    const double out_scale = hfs_gles_output_scale(bound);
     shade[48] = (float)fr->rho_pi;
     shade[49] = (float)out_scale;
     shade[50] = fr->has_env ? 1.0f : 0.0f;
+    for (int c = 0; c < 3 && fr->has_env; ++c) /* cpu_render.c env_clamp */
+        shade[52 + c] = (float)(fr->rho_pi * PI * hfs_sh_negative_bound(fr->l_env[c]));
     ubo_upload(gl, g->ubo[UBO_SHADE], shade, sizeof shade);
     if (fr->n_keys == 0)
         ubo_upload(gl, g->ubo[UBO_KEYS], shade, 16);
@@ -1463,11 +1517,6 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                     const hfs_quality *q, hfs_image *out, hfs_error *err)
 {
     const double t_start = now_ms();
-    for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
-        if (hfs_cpu_local_contributes(&l->local[i]) && q->visibility == HFS_VIS_WEDGE_TABLE)
-            return hfs_fail(err, HFS_E_UNSUPPORTED,
-                            "backend gles: local lights on the wedge-table path are not "
-                            "supported yet (issue 4); use --visibility legendre or --backend cpu");
     int rc = hfs_gl_context_make_current(g->ctx, err);
     if (rc)
         return rc;
@@ -1491,13 +1540,20 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
         if (!key_contributes(k, l->albedo))
             continue;
         frame_key *fk = &fr.keys[fr.n_keys++];
-        hfs_swath_key(k->phi, k->elev, k->alpha, q->nphi_key, q->nphi_env, &fk->k.swath);
+        /* The visible fraction comes from the swath's elevation window
+         * e +- alpha and its half-width, angles the shaders difference in
+         * float: below ~1e-7 rad they collapse (a 1e-8 rad sun came out
+         * black on an open plane).  A disk that small is a point at any
+         * terrain scale: its fraction is taken from a disk of
+         * GLES_MIN_KEY_ALPHA about the same centre; E_cap keeps alpha. */
+        const double a_vis = fmax(k->alpha, GLES_MIN_KEY_ALPHA);
+        hfs_swath_key(k->phi, k->elev, a_vis, q->nphi_key, q->nphi_env, &fk->k.swath);
         hfs_dir(k->phi, k->elev, fk->k.dir);
         fk->k.alpha = k->alpha;
         for (int c = 0; c < 3; ++c)
             fk->k.le[c] = k->radiance[c];
         double zh[HFS_ZH_N];
-        hfs_zh_cap(k->alpha, zh);
+        hfs_zh_cap(a_vis, zh);
         hfs_sh_rotate_zonal(zh, fk->k.dir[0], fk->k.dir[1], fk->k.dir[2], fk->k.l_sh);
         fk->k.l_norm = sqrt(hfs_sh_dot(fk->k.l_sh, fk->k.l_sh));
     }

@@ -308,6 +308,20 @@ void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hf
     hfs_gles_pack_swath(L, v, dst + 7 * 4);
 }
 
+double hfs_gles_local_max_irradiance(const hfs_gles_layout *L, const hfs_local_light *l)
+{
+    const double lo[3] = {0.0, 0.0, L->zscale * (L->base - L->hscale)};
+    const double hi[3] = {(L->w - 1) * L->dx, (L->h - 1) * L->dx,
+                          L->zscale * (L->base + L->hscale) + 1e-4 * L->dx};
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double c = l->pos[k], e = c < lo[k] ? lo[k] - c : (c > hi[k] ? c - hi[k] : 0.0);
+        d2 += e * e;
+    }
+    const double r2 = l->radius * l->radius;
+    return d2 <= r2 ? PI : PI * r2 / d2;
+}
+
 double hfs_gles_output_scale(double bound)
 {
     if (!(bound > 0.0) || !isfinite(bound))

@@ -133,6 +133,13 @@ size_t hfs_gles_key_vec4(int n);
 void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hfs_visibility *v,
                        float *dst);
 
+/* The largest irradiance E (exit radiance rho/pi Le E) local light l can
+ * give any receiver of the field: pi when the sphere reaches the field's
+ * bounding box (receivers lifted by 1e-4 dx), else pi (r / d_min)^2 with
+ * d_min the distance from the centre to the box (a cap of half-angle alpha
+ * gives at most pi sin^2 alpha).  Bounds the output scale below. */
+double hfs_gles_local_max_irradiance(const hfs_gles_layout *L, const hfs_local_light *l);
+
 /* fp16 <-> float are in gl_util.h.  Power-of-two output scale that keeps
  * the frame's largest possible exit radiance (bound) in fp16's range:
  * 2^e with bound * 2^e <= 16384, e in [-100, 100]. */

@@ -187,6 +187,20 @@ void hfs_sh_project_equirect(const float *rgb, int w, int h,
     }
 }
 
+double hfs_sh_negative_bound(const double c[HFS_SH_N])
+{
+    /* sqrt((2l + 1) / (4 pi)), l = 0..3 */
+    static const double w[HFS_ZH_N] = {0.28209479177387814, 0.4886025119029199,
+                                       0.6307831305050401, 0.7463526651802308};
+    double band[HFS_ZH_N] = {0.0, 0.0, 0.0, 0.0};
+    for (int k = 1; k < HFS_SH_N; ++k)
+        band[hfs_sh_band(k)] += c[k] * c[k];
+    double b = -w[0] * c[0];
+    for (int l = 1; l < HFS_ZH_N; ++l)
+        b += w[l] * sqrt(band[l]);
+    return b > 0.0 ? b : 0.0;
+}
+
 /* Per band, the (m, -m) pair is a 2D rotation of (cos m phi, sin m phi)
  * coefficients by m*angle (derivation: f(phi - a) expanded with the angle
  * sum identities).  Chebyshev recurrence: one sin/cos pair for m = 1..3. */

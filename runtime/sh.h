@@ -63,6 +63,18 @@ int hfs_gauss_legendre(int n, double *x, double *w);
 void hfs_sh_project_equirect(const float *rgb, int w, int h,
                              double out[3][HFS_SH_N]);
 
+/* ---- bounds ------------------------------------------------------------------ */
+
+/* An upper bound on the negative part max(0, -min_s f(s)) of the function
+ * f = sum_k c_k y_k, in closed form: by the addition theorem the band-l
+ * basis functions satisfy sum_m y_lm(s)^2 = (2l+1)/(4 pi) for every s, so by
+ * Cauchy-Schwarz per band f(s) >= c_0/sqrt(4 pi) - sum_{l >= 1}
+ * sqrt((2l+1)/(4 pi)) |c_l|_2.  Rotation invariant; exact for a constant
+ * plus band 1; 0 for any sky whose constant term dominates (then every
+ * shadowed exit radiance lies in [0, unshadowed]); conservative otherwise
+ * (a single hot pixel: 0.88 x its peak, where the true ringing is 0.25 x). */
+double hfs_sh_negative_bound(const double c[HFS_SH_N]);
+
 /* ---- rotation --------------------------------------------------------------- */
 
 /* out = coefficients of f(R_z(-angle) s), i.e. the function rotated by +angle

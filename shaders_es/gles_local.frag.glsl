@@ -22,9 +22,17 @@
  * plane hides the whole cap writes the ratio for the plane facing the light
  * (see local_ratio), so that interpolation toward it stays meaningful.
  *
+ * HFS_TABLES: the SN08 wedge-table path of the CPU reference (cpu_local.c
+ * with HFS_VIS_WEDGE_TABLE): always the full swath of nphi_local, per sample
+ * the omega and the floor as above (the exact window, or the key-light
+ * window, only orients the entry test), V_k and V_open summed from the
+ * interior table of dphi = 2 pi / nphi_local (u_tab) placed per wedge by a
+ * z-rotation (u_lrot), num = V_k . M, den = V_open . M.
+ *
  * HFS_COUNT: writes the fetch count to o_r0 instead (see gles_env.frag).
  */
 // hfs-variant: HFS_NOUT 4
+// hfs-variant: HFS_TABLES 1
 // hfs-variant: HFS_FP32 1, HFS_COUNT 1
 
 #ifndef HFS_NLEV
@@ -48,6 +56,9 @@
 #ifndef HFS_PI
 #define HFS_PI 3.14159265358979
 #endif
+#ifndef HFS_TABLE_N
+#define HFS_TABLE_N 257
+#endif
 
 precision highp float;
 precision highp int;
@@ -69,6 +80,9 @@ bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
 void hfs_bspline_push(inout float best, inout vec4 w, float a, int i);
 float hfs_bspline_close(float best, vec4 w);
+float hfs_sh_dot(vec4 a[4], vec4 b[4]);
+void hfs_sh_rotz(inout vec4 t[4], vec3 c, vec3 s);
+float hfs_table_coord(float omega, float n);
 
 uniform highp sampler2DArray u_levels;
 uniform highp sampler2D u_normals;
@@ -86,7 +100,24 @@ layout(std140) uniform HfsLocal {
     vec4 u_lq;                           /* (nphi_local, forced full swath, 0, 0) */
     vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (Le.rgb, 0) */
     vec4 u_ldir[HFS_LOCAL_DIRS];         /* full swath: (cos, sin) of 2 pi k/n */
+    vec4 u_lrot[2 * HFS_LOCAL_DIRS];     /* per wedge (cos ma), (sin ma), m = 1..3 */
 };
+#ifdef HFS_TABLES
+uniform highp sampler2DArray u_tab;      /* interior wedge table, 4 layers */
+
+/* V += the interior table(a, b) placed at wedge w of the full swath. */
+void local_wedge(inout vec4 V[4], float a, float b, int w)
+{
+    float n = float(HFS_TABLE_N);
+    vec2 uv = vec2(hfs_table_coord(a, n), hfs_table_coord(b, n));
+    vec4 t[4];
+    for (int g = 0; g < 4; ++g)
+        t[g] = texture(u_tab, vec3(uv, float(g)));
+    hfs_sh_rotz(t, u_lrot[2 * w].xyz, u_lrot[2 * w + 1].xyz);
+    for (int g = 0; g < 4; ++g)
+        V[g] += t[g];
+}
+#endif
 
 layout(location = 0) out vec4 o_r0;
 #if HFS_NOUT > 1
@@ -215,7 +246,17 @@ float local_ratio(ivec2 p, vec3 n, vec3 pw, int q)
     hfs_sh_product(H, L, M);
 
     bool surround = r >= rho_h;
+#ifdef HFS_TABLES
+    bool full = true;
+    vec4 Vk[4], Vo[4];
+    for (int g = 0; g < 4; ++g) {
+        Vk[g] = vec4(0.0);
+        Vo[g] = vec4(0.0);
+    }
+    float om_first = 0.0, fl_first = 0.0, om_prev = 0.0, fl_prev = 0.0;
+#else
     bool full = u_lq.y > 0.5 || surround;
+#endif
     bool exact = !full || surround;
     int ns;
     float dphi, phi0, bw;
@@ -252,13 +293,21 @@ float local_ratio(ivec2 p, vec3 n, vec3 pw, int q)
         if (exact) {
             float a = dot(dir.xy, cs), w = -dir.x * cs.y + dir.y * cs.x;
             float qq = sin_a * sin_a - w * w;
-            if (!(qq > 0.0) || !(cos_a >= 0.0))
-                continue;
-            float psi = atan(dir.z, a), half_w = atan(sqrt(qq), cos_a);
-            lo = max(psi - half_w, -HFS_HALF_PI);
-            hi = min(psi + half_w, HFS_HALF_PI);
-            if (!(lo < hi))
-                continue;
+            bool window = qq > 0.0 && cos_a >= 0.0;
+            if (window) {
+                float psi = atan(dir.z, a), half_w = atan(sqrt(qq), cos_a);
+                lo = max(psi - half_w, -HFS_HALF_PI);
+                hi = min(psi + half_w, HFS_HALF_PI);
+                window = lo < hi;
+            }
+            if (!window) {
+#ifdef HFS_TABLES
+                lo = glo;                /* tables have no window: it only */
+                hi = ghi;                /* orients the entry test          */
+#else
+                continue;                /* an empty band adds 0 to num and den */
+#endif
+            }
         }
         float fl = hfs_floor(n, cs);
         float t_near = -1.0, cut = reach;
@@ -310,7 +359,18 @@ float local_ratio(ivec2 p, vec3 n, vec3 pw, int q)
         if (i < 0)
             best = hfs_bspline_close(best, w);
         float omega = clamp(best, -HFS_HALF_PI, HFS_HALF_PI);
-
+#ifdef HFS_TABLES
+        if (k == 0) {
+            om_first = omega;
+            fl_first = fl;
+        } else {
+            local_wedge(Vk, om_prev, omega, k - 1);
+            local_wedge(Vo, fl_prev, fl, k - 1);
+            g_fetches += 8;
+        }
+        om_prev = omega;
+        fl_prev = fl;
+#else
         /* g = sum_r m_r A_k[r] E[r]; hat half-widths (left, right). */
         vec4 gcm, gsm;
         if (k == 0) {
@@ -340,7 +400,16 @@ float local_ratio(ivec2 p, vec3 n, vec3 pw, int q)
         num += dot(g4, vb);
         den += dot(g4, ob);
         den_scale += dot(abs(g4 * ob), vec4(1.0));
+#endif
     }
+#ifdef HFS_TABLES
+    local_wedge(Vk, om_prev, om_first, ns - 1);
+    local_wedge(Vo, fl_prev, fl_first, ns - 1);
+    g_fetches += 8;
+    num = hfs_sh_dot(Vk, M);
+    den = hfs_sh_dot(Vo, M);
+    den_scale = sqrt(hfs_sh_dot(M, M) * hfs_sh_dot(Vo, Vo));
+#endif
     if (num == den)
         return 1.0;                      /* nothing above the floors */
     return den > 1e-12 * den_scale ? clamp(num / den, 0.0, 1.0) : 0.0;

@@ -4,7 +4,8 @@
  * cosine H(N) as SH;
  *   environment  Lo += rho/pi * (H * V_env) . L_env per channel, V_env =
  *                hemisphere(N) + the grid's V_env - hemisphere(N_receiver)
- *                read bilinearly (exact at grid points);
+ *                read bilinearly (exact at grid points), clamped into
+ *                [-neg, rho/pi H . L_env + neg] (u_env_neg);
  *   key light    Lo += rho/pi * Le * E_cap(N.d, alpha) * clamp(num/den, 0, 1),
  *                num = V_key . (H * L_key), den = V_open . (H * L_key); the
  *                horizons are floor_j(N) + excess_j, the excess read
@@ -14,9 +15,10 @@
  *                the texel, the ratio read bilinearly from the grid of
  *                gles_local.frag (local_lights below).
  * The products use the generated SH product (sh_product.glsl.inc).
- * Output: linear RGB times a power-of-two scale (u_misc.y) that keeps the
- * frame inside fp16's range, as an fp16 hi + lo pair in two targets (the
- * readback adds them and divides the scale out exactly).
+ * Output: linear RGB times a power-of-two scale (u_misc.y, on both
+ * precisions) that keeps the frame inside fp16's range, as an fp16 hi + lo
+ * pair in two targets (the readback adds them and divides the scale out
+ * exactly).
  *
  * HfsKeys holds one record per key light (runtime/gles_setup.h
  * hfs_gles_pack_key), starting at vec4 u_koff[q].
@@ -53,6 +55,7 @@ void hfs_sh_rotz(inout vec4 t[4], vec3 c, vec3 s);
 void hfs_sh_mirror_y(inout vec4 t[4]);
 float hfs_table_coord(float omega, float n);
 float hfs_cap_irradiance(float cos_beta, float alpha);
+float hfs_cap_irradiance_sc(float cos_beta, float s, float c);
 vec4 hfs_f16v(vec4 v);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 
@@ -75,6 +78,7 @@ uniform int u_koff[8];
 layout(std140) uniform HfsShade {
     vec4 u_env[12];                      /* L_env, 4 vec4 per channel */
     vec4 u_misc;                         /* (rho/pi, out scale, has env, 0) */
+    vec4 u_env_neg;                      /* rho * negative part of L_env per channel */
 };
 layout(std140) uniform HfsKeys {
     vec4 u_k[HFS_KEY_VEC4];
@@ -254,8 +258,7 @@ vec3 local_lights(ivec2 p, vec3 n, vec2 uv)
             continue;
         }
         float d = length(v);
-        float alpha = atan(r / d, sqrt(c_tan) / d);
-        float e_cap = hfs_cap_irradiance(dot(n, v / d), alpha);
+        float e_cap = hfs_cap_irradiance_sc(dot(n, v / d), r / d, sqrt(c_tan) / d);
         if (!(e_cap > 0.0))
             continue;
         float ratio = clamp(q % 2 == 0 ? rv.x + rv.y : rv.z + rv.w, 0.0, 1.0);
@@ -289,7 +292,11 @@ void main()
         for (int c = 0; c < 3; ++c) {
             for (int g = 0; g < 4; ++g)
                 L[g] = u_env[4 * c + g];
-            lo[c] += u_misc.x * hfs_sh_dot(T, L);
+            /* Into [-neg, unshadowed + neg], as cpu_render.c env_clamp: the
+             * interval holds the exact value, and sub-sampling (V of other
+             * normals) or fp16 storage can step outside it. */
+            float open = u_misc.x * hfs_sh_dot(H, L);
+            lo[c] += clamp(u_misc.x * hfs_sh_dot(T, L), -u_env_neg[c], open + u_env_neg[c]);
         }
     }
     for (int q = 0; q < u_nkeys; ++q)

@@ -43,6 +43,10 @@ foreach(variant "" es30 sse41)
   list(APPEND names test_gles_local_equal_cones_3_full${sfx})
   # Sub-sampled visibility (issue 4): measured 1.5e-4 / 1.9e-2 (cones) and
   # 2.7e-4 / 2.3e-2 (panel), 8 lights at subsample 2 (DESIGN.md).
+  # The wedge-table path (fp16 tables: bounds as the Legendre ones).
+  hfs_gles_local_test(test_gles_local_equal_cones_3_wedge${sfx}
+                      equal cones 3 partial 1 fp16 1e-3 1e-2 wedge)
+  list(APPEND names test_gles_local_equal_cones_3_wedge${sfx})
   foreach(scene cones panel)
     hfs_gles_local_test(test_gles_local_equal_${scene}_8_sub2${sfx}
                         equal ${scene} 8 partial 2 fp16 1e-3 0.1)

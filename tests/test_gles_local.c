@@ -27,8 +27,10 @@
  *       for bit (ratio of the same receiver, E_cap per texel) and others
  *       change; a light moved on the cached terrain renders as in a fresh
  *       renderer.
- *   errors   the wedge-table path with a local light is refused with one
- *       line naming local lights and the wedge-table path.
+ *   errors   a local swath too large for ES 3.0's uniform blocks is refused
+ *       with one line naming --nphi-local, and the renderer still works.
+ *   equal ... wedge  (optional 9th argument) the same on the SN08 wedge-table
+ *       path (full local swath, the interior table of 2 pi / nphi_local).
  *
  * No GLES context here: exit 77.
  */
@@ -113,7 +115,7 @@ static hfs_quality quality(const char *prec, int sub, int full)
     hfs_quality q;
     hfs_quality_defaults(&q);
     q.precision = prec && !strcmp(prec, "fp32") ? HFS_PRECISION_FP32 : HFS_PRECISION_FP16;
-    q.visibility = HFS_VIS_LEGENDRE;
+    q.visibility = HFS_VIS_LEGENDRE; /* mode_equal's VIS argument may change it */
     q.subsample = sub;
     q.local_full_swath = full;
     return q;
@@ -179,7 +181,7 @@ static int bitequal(const hfs_image *a, const hfs_image *b)
 /* ---- modes ---------------------------------------------------------------------------- */
 
 static int mode_equal(const char *name, int n, const char *swath, int sub, const char *prec,
-                      double bmean, double bmax)
+                      double bmean, double bmax, const char *vis)
 {
     field_buf fb;
     if (field_make(name, SIZE, &fb))
@@ -188,12 +190,14 @@ static int mode_equal(const char *name, int n, const char *swath, int sub, const
     hfs_lighting l = lighting_local_only();
     local_set(&l, !strcmp(name, "panel") ? PANEL_L : CONES_L, n < 1 ? 1 : (n > 8 ? 8 : n));
     hfs_quality q = quality(prec, sub, !strcmp(swath, "full"));
+    if (!strcmp(vis, "wedge"))
+        q.visibility = HFS_VIS_WEDGE_TABLE;
     hfs_image g = {0}, c = {0};
     if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &g) &&
         !render_with(HFS_BACKEND_CPU, NULL, &fb.f, &l, &q, &c)) {
         hfs_metrics m = compare(&fb.f, &l, &q, &g, &c);
-        printf("%s %d lights %s sub %d %s: mean %.3e max %.3e (bounds %.1e %.1e), norm %.4g\n",
-               name, n, swath, sub, prec, m.mean_abs, m.max_abs, bmean, bmax, m.norm);
+        printf("%s %d lights %s sub %d %s %s: mean %.3e max %.3e (bounds %.1e %.1e), norm %.4g\n",
+               name, n, swath, sub, prec, vis, m.mean_abs, m.max_abs, bmean, bmax, m.norm);
         CHECK(m.nonfinite == 0, "non-finite outputs: %ld", m.nonfinite);
         CHECK(m.mean_abs <= bmean, "mean %.3e > %.3e", m.mean_abs, bmean);
         CHECK(m.max_abs <= bmax, "max %.3e > %.3e", m.max_abs, bmax);
@@ -420,16 +424,19 @@ static int mode_errors(void)
     static const double one[1][5] = {{16, 16, 20, 1, 1}};
     local_set(&l, one, 1);
     hfs_quality q = quality("fp16", 1, 0);
-    q.visibility = HFS_VIS_WEDGE_TABLE;
+    q.nphi_local = 1024; /* valid, but its swath overflows ES 3.0's 16 KiB uniform block */
     hfs_image img = {0};
     hfs_error err;
     if (hfs_image_alloc(&img, 32, 32, &err))
         return 1;
     int rc = hfs_renderer_render(r, &fb.f, &l, &q, &img, NULL, NULL, &err);
-    printf("wedge tables + local light: %s\n", err.msg);
-    CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "local") && strstr(err.msg, "wedge") &&
-              !strchr(err.msg, '\n'),
-          "wedge + local: %d %s", rc, err.msg);
+    printf("nphi_local 1024: %s\n", err.msg);
+    CHECK(rc != 0 && strstr(err.msg, "nphi-local") && !strchr(err.msg, '\n'),
+          "nphi_local 1024: %d %s", rc, err.msg);
+    /* The renderer stays usable after the refusal. */
+    q.nphi_local = 16;
+    CHECK(hfs_renderer_render(r, &fb.f, &l, &q, &img, NULL, NULL, &err) == 0, "after: %s",
+          err.msg);
     hfs_image_free(&img);
     hfs_renderer_destroy(r);
     free(fb.z);
@@ -440,7 +447,7 @@ int main(int argc, char **argv)
 {
     if (argc >= 9 && !strcmp(argv[1], "equal"))
         return mode_equal(argv[2], atoi(argv[3]), argv[4], atoi(argv[5]), argv[6],
-                          atof(argv[7]), atof(argv[8]));
+                          atof(argv[7]), atof(argv[8]), argc >= 10 ? argv[9] : "legendre");
     if (argc >= 2 && !strcmp(argv[1], "dem"))
         return mode_dem();
     if (argc >= 2 && !strcmp(argv[1], "mixed"))
@@ -451,7 +458,8 @@ int main(int argc, char **argv)
         return mode_sub();
     if (argc >= 2 && !strcmp(argv[1], "errors"))
         return mode_errors();
-    fprintf(stderr, "usage: test_gles_local equal SCENE N partial|full SUB fp16|fp32 MEAN MAX\n"
+    fprintf(stderr, "usage: test_gles_local equal SCENE N partial|full SUB fp16|fp32 MEAN MAX "
+                    "[legendre|wedge]\n"
                     "       test_gles_local dem|mixed|flat|sub|errors\n");
     return 2;
 }

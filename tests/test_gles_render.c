@@ -449,20 +449,8 @@ static int mode_errors(void)
     if (hfs_image_alloc(&img, 32, 32, &err))
         return 1;
 
-    l.n_local = 1;
-    l.local[0].pos[0] = l.local[0].pos[1] = 16.0;
-    l.local[0].pos[2] = 20.0;
-    l.local[0].radius = 1.0;
-    l.local[0].radiance[0] = l.local[0].radiance[1] = l.local[0].radiance[2] = 1.0f;
-    q.visibility = HFS_VIS_WEDGE_TABLE; /* local lights: Legendre only (test_gles_local.c) */
-    int rc = hfs_renderer_render(r, &s.f, &l, &q, &img, NULL, NULL, &err);
-    printf("local light: %s\n", err.msg);
-    CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "local"), "local light: %d %s", rc, err.msg);
-    l.n_local = 0;
-    q.visibility = HFS_VIS_LEGENDRE;
-
     q.nphi_env = 128; /* 2 + 17*128 + 258 vec4 = 39 KB > 16 KB (es30) */
-    rc = hfs_renderer_render(r, &s.f, &l, &q, &img, NULL, NULL, &err);
+    int rc = hfs_renderer_render(r, &s.f, &l, &q, &img, NULL, NULL, &err);
     printf("nphi-env 128: %s\n", err.msg);
     CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "GL_MAX_UNIFORM_BLOCK_SIZE"),
           "nphi-env 128 under es30-half: %d %s", rc, err.msg);

@@ -347,6 +347,14 @@ static void test_blocks(void)
                   sc[4 * i + 2] == (float)L.read_layer[i], "scale %d", i);
     CHECK(hfs_gles_output_scale(1.0) == 16384.0 && hfs_gles_output_scale(1e6) == 1.0 / 64.0 &&
               hfs_gles_output_scale(0.0) == 1.0, "output scale");
+    /* A local light's largest irradiance over the field's box [0, 2]^2 x
+     * [0, 9 + 2e-4]: pi (r/d_min)^2 outside, pi once it reaches the box. */
+    const hfs_local_light far = {.pos = {1.0, 1.0, 19.0002}, .radius = 1.0};
+    const hfs_local_light in = {.pos = {1.0, 1.0, 5.0}, .radius = 0.1};
+    const hfs_local_light touch = {.pos = {5.0, 1.0, 4.0}, .radius = 3.0};
+    CHECK(fabs(hfs_gles_local_max_irradiance(&L, &far) - PI / 100.0) < 1e-12 &&
+              hfs_gles_local_max_irradiance(&L, &in) == PI &&
+              hfs_gles_local_max_irradiance(&L, &touch) == PI, "local max irradiance");
 }
 
 int main(void)

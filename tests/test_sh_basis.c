@@ -143,6 +143,37 @@ int main(void)
         ref_check(&fails, "hfs_gauss_legendre exact for degree <= 2n-1", e, 1e-14);
     }
 
+    /* hfs_sh_negative_bound >= the true negative part (a dense grid's
+     * minimum), equal to it for constant + band 1, 0 for a dominant c_0. */
+    {
+        double e = 0.0;
+        for (int t = 0; t < 40; ++t) {
+            double c[16];
+            for (int k = 0; k < 16; ++k)
+                c[k] = ref_uniform(&rng, -1, 1);
+            c[0] = ref_uniform(&rng, -2, 8);
+            double fmin = INFINITY;
+            for (int r = 0; r <= 90; ++r)
+                for (int a = 0; a < 180; ++a) {
+                    double y[16];
+                    const double el = T_PI / 2 - T_PI * r / 90.0, ph = 2 * T_PI * a / 180.0;
+                    ref_y(cos(ph) * cos(el), sin(ph) * cos(el), sin(el), y);
+                    double f = 0.0;
+                    for (int k = 0; k < 16; ++k)
+                        f += c[k] * y[k];
+                    fmin = f < fmin ? f : fmin;
+                }
+            const double neg = fmin < 0 ? -fmin : 0.0, b = hfs_sh_negative_bound(c);
+            e += b < neg - 1e-12 ? 1 : 0;
+        }
+        /* c_0 = 1, c_2 = 0.6 (f = 0.2821 + 0.2932 z): min -0.0111 at the nadir. */
+        const double band1[16] = {1, 0, 0.6};
+        e += fabs(hfs_sh_negative_bound(band1) - (0.6 * 0.4886025119029199 - 0.28209479177387814));
+        const double sky[16] = {3.5449, 0.1, 0.4, 0.3};
+        e += hfs_sh_negative_bound(sky);
+        ref_check(&fails, "hfs_sh_negative_bound: a bound, exact for bands 0 + 1", e, 1e-12);
+    }
+
     printf("%s\n", fails ? "FAILED" : "PASSED");
     return fails ? 1 : 0;
 }

@@ -82,6 +82,21 @@ static void test_cap_irradiance(void)
                     "beta %.4f alpha %.4f: formula %.9f brute %.9f", b, a, got, ref);
         }
     REQUIRE(straddling >= 20, "only %d straddling cases", straddling);
+    /* Small caps across the tangent plane, beta = pi/2 + f alpha: a flat
+     * disk of radius alpha in the limit, E = alpha^3 g(f) with
+     * g(f) = 2/3 (1 - f^2)^(3/2) - f (acos f - f sqrt(1 - f^2)), to
+     * O(alpha^2) relative.  The textbook straddling formula cancels two
+     * O(alpha) terms here (it returned 0 at alpha = 1e-8). */
+    static const double small[] = {1e-3, 1e-5, 1e-8};
+    static const double fs[] = {-0.9, -0.5, 0.0, 0.5, 0.9};
+    for (size_t ia = 0; ia < sizeof small / sizeof *small; ++ia)
+        for (size_t jf = 0; jf < sizeof fs / sizeof *fs; ++jf) {
+            const double a = small[ia], f = fs[jf], r = sqrt(1.0 - f * f);
+            const double g = 2.0 / 3.0 * r * r * r - f * (acos(f) - f * r);
+            const double got = hfs_cap_irradiance(-sin(f * a), a);
+            REQUIRE(fabs(got / (a * a * a * g) - 1.0) < 1e-5, "alpha %g f %.1f: %.9g vs %.9g", a,
+                    f, got, a * a * a * g);
+        }
     /* Limits: the whole sphere, an empty cap, clamped cos(beta). */
     REQUIRE(fabs(hfs_cap_irradiance(0.3, PI) - PI) < 1e-15, "alpha = pi");
     REQUIRE(hfs_cap_irradiance(1.0, 0.0) == 0.0, "alpha = 0");

@@ -1,0 +1,22 @@
+# hfstress — numerical stability under extremes (issue 5, docs/STRESS.md):
+# a table of extreme cases run on every backend with bound, invariance and
+# fp16-vs-fp32 checks.  `hfstress` runs all of it; `hfstress --fast` is the
+# CI subset, registered here as the ctest label "stress":
+#   stress_fast_cpu   CPU reference and ground truth (always runs)
+#   stress_fast_gles  GLES fp16 and fp32 (exit 77 = skipped without a context)
+add_executable(hfstress
+  ${CMAKE_CURRENT_SOURCE_DIR}/hfstress.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/hfstress_backends.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/hfstress_cases.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/hfstress_checks.c)
+target_link_libraries(hfstress PRIVATE hfshade_lib hfshade_io hfs_terrain_gen hfs_sh m)
+
+add_test(NAME stress_fast_cpu COMMAND hfstress --fast --backend cpu,truth)
+add_test(NAME stress_fast_gles COMMAND hfstress --fast --backend gles)
+set_tests_properties(stress_fast_cpu stress_fast_gles PROPERTIES
+                     LABELS stress TIMEOUT 600 SKIP_RETURN_CODE 77)
+if(HFS_SANITIZE)
+  # Mesa/LLVM allocations LSan reports at exit (tests/lsan.supp, as tests/gles.cmake).
+  set_property(TEST stress_fast_gles APPEND PROPERTY ENVIRONMENT
+               "LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
+endif()
