@@ -1072,7 +1072,7 @@ static size_t align_up(size_t v, size_t a)
 }
 
 /* HfsLocal (gles_local.frag; gles_shade.frag reads a prefix): elevation
- * moments E (16 vec4), (dx, base, hscale, zscale), (nphi_local, forced full
+ * moments E (16 vec4), (1, base, hscale, zscale/dx), (nphi_local, forced full
  * swath, 0, 0), two vec4 per light ((centre, radius), (Le, 0)), the full
  * swath's directions (the robust floats of hfs_gles_swath_float_dirs), one
  * vec4 each, then per wedge of the full swath its z-rotation for the wedge
@@ -1095,19 +1095,24 @@ static int local_upload(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality
     for (int i = 0; i < HFS_SH_N * HFS_NLP_N; ++i)
         u[i] = (float)E[i];
     float *gq = u + 64;
-    gq[0] = (float)L->dx;
+    /* Lengths in texel units (dx = 1): the shaders' float arithmetic is then
+     * the same for a scene scaled as a whole (dx, zscale and the lights
+     * together), so knife-edge decisions (a scale exactly at a light's
+     * entry distance) fall the same way at every scale. */
+    const double inv_dx = 1.0 / L->dx;
+    gq[0] = 1.0f;
     gq[1] = (float)L->base;
     gq[2] = (float)L->hscale;
-    gq[3] = (float)L->zscale;
+    gq[3] = (float)(L->zscale * inv_dx);
     gq[4] = (float)nphi;
     gq[5] = q->local_full_swath ? 1.0f : 0.0f;
     float *lt = u + 72;
     for (int i = 0; i < fr->n_local; ++i) {
         for (int c = 0; c < 3; ++c) {
-            lt[8 * i + c] = (float)fr->local[i].pos[c];
+            lt[8 * i + c] = (float)(fr->local[i].pos[c] * inv_dx);
             lt[8 * i + 4 + c] = fr->local[i].radiance[c];
         }
-        lt[8 * i + 3] = (float)fr->local[i].radius;
+        lt[8 * i + 3] = (float)(fr->local[i].radius * inv_dx);
     }
     hfs_swath sw;
     hfs_swath_full(nphi, &sw);

@@ -147,11 +147,14 @@ typedef enum hfs_precision {
 
 /* Start from hfs_quality_defaults() (which sets EVERY field) and change what
  * you need; 0 is then a real value where a field allows it (offset = 0).
- * Defaults are those of SN08/NS09: k=4, offset=2, 32 env / 3 key directions. */
+ * The defaults are the "kiosk" preset (hfs_quality_preset), picked from the
+ * measured error/time front: k=2, offset=3, 16 env / 3 key directions,
+ * subsample 2 (SN08/NS09 used k=4, offset=2, 32 directions: dominated on
+ * every benchmark scene, BENCHMARKS.md "Run time against error"). */
 typedef struct hfs_quality {
-    int k;                   /* pyramid level step (levels per octave), 4   */
-    int offset;              /* level offset o (levels biased by k*o), 2    */
-    int nphi_env;            /* azimuth samples, environment (full swath) 32 */
+    int k;                   /* pyramid level step (levels per octave), 2   */
+    int offset;              /* level offset o (levels biased by k*o), 3    */
+    int nphi_env;            /* azimuth samples, environment (full swath) 16 */
     int nphi_key;            /* azimuth samples per key light swath, 3      */
     int nphi_local;          /* azimuth samples per local light's full swath, 16 */
     int local_full_swath;    /* 0: per-receiver partial swath where the light
@@ -169,8 +172,21 @@ typedef struct hfs_quality {
     int truth_light_samples; /* stratified samples per key/local light, 256  */
 } hfs_quality;
 
-/* Overwrite every field with its default. */
+/* Overwrite every field with its default (= the "kiosk" preset). */
 HFS_API void hfs_quality_defaults(hfs_quality *q);
+
+/* Settings per use, picked from the measured front of error against
+ * full-frame time over cones, fractal terrain and the real DEM at 256^2
+ * under the demo lighting (BENCHMARKS.md "Run time against error",
+ * tools/bench_pareto.sh; tools/bench_front.h states the rules):
+ *   "kiosk"     the most accurate setting whose worst full frame fits
+ *               100 ms on the reference device (the defaults);
+ *   "panel"     the most accurate setting within 500 ms;
+ *   "headless"  the fastest setting whose worst mean error is <= 3% of
+ *               the unshadowed maximum (CI and batch checks).
+ * Fields a preset does not set keep hfs_quality_defaults().  Returns 0, or
+ * HFS_E_INVALID for an unknown use (q then holds the defaults). */
+HFS_API int hfs_quality_preset(hfs_quality *q, const char *use);
 /* No environment, no lights, albedo 1. */
 HFS_API void hfs_lighting_defaults(hfs_lighting *l);
 

@@ -38,23 +38,6 @@ const char *hfs_status_name(int code)
     }
 }
 
-void hfs_quality_defaults(hfs_quality *q)
-{
-    memset(q, 0, sizeof *q);
-    q->k = 4;
-    q->offset = 2;
-    q->nphi_env = 32;
-    q->nphi_key = 3;
-    q->nphi_local = 16;
-    q->subsample = 2;
-    q->precision = HFS_PRECISION_FP16;
-    q->visibility = HFS_VIS_LEGENDRE;
-    q->threads = 0;
-    q->truth_azimuths = 720;
-    q->truth_elev_order = 16;
-    q->truth_light_samples = 256;
-}
-
 void hfs_lighting_defaults(hfs_lighting *l)
 {
     memset(l, 0, sizeof *l);

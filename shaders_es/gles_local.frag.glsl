@@ -96,7 +96,7 @@ layout(std140) uniform HfsScales {
 };
 layout(std140) uniform HfsLocal {
     vec4 u_lE[16];                       /* elevation moments, row r = E[r][0..3] */
-    vec4 u_lg;                           /* (dx, base, hscale, zscale) */
+    vec4 u_lg;                           /* (1, base, hscale, zscale/dx): texel units */
     vec4 u_lq;                           /* (nphi_local, forced full swath, 0, 0) */
     vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (Le.rgb, 0) */
     vec4 u_ldir[HFS_LOCAL_DIRS];         /* full swath: (cos, sin) of 2 pi k/n */

@@ -231,7 +231,7 @@ uniform int u_nlocal;
 
 layout(std140) uniform HfsLocal {
     vec4 u_lE[16];
-    vec4 u_lg;                           /* (dx, base, hscale, zscale) */
+    vec4 u_lg;                           /* (1, base, hscale, zscale/dx): texel units */
     vec4 u_lq;
     vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (Le.rgb, 0) */
     vec4 u_ldir[HFS_LOCAL_DIRS];

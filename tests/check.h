@@ -1,5 +1,5 @@
 /*
- * check.h — the message-carrying check of the GL tests: CHECK(cond, fmt, ...)
+ * check.h — the message-carrying check of the tests: CHECK(cond, fmt, ...)
  * reports "file:line: FAIL: message" on stderr, counts the failure in
  * `failures` and carries on (one test binary checks many things per run).
  * Include once per test program.

@@ -54,7 +54,9 @@ int main(void)
     CHECK(s.dx == 30 && s.zscale == 2 && s.n_key == 2 && s.key[1].elev == 60, "values not stored");
     hfs_quality q;
     hfs_scene_quality(&s, &q);
-    CHECK(q.k == 8 && q.offset == 0 && q.nphi_env == 32 && q.visibility == HFS_VIS_WEDGE_TABLE,
+    hfs_quality dq;
+    hfs_quality_defaults(&dq);
+    CHECK(q.k == 8 && q.offset == 0 && q.nphi_env == dq.nphi_env && q.visibility == HFS_VIS_WEDGE_TABLE,
           "quality: k=%d offset=%d nphi_env=%d", q.k, q.offset, q.nphi_env);
     hfs_lighting l;
     hfs_scene_lighting(&s, NULL, &l);

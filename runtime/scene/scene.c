@@ -17,7 +17,7 @@ typedef enum key_id {
     K_HEIGHT, K_SIZE, K_DX, K_ZSCALE, K_NODATA, K_ENV_SH, K_ENV_MAP,
     K_ENV_ROTATE, K_KEY, K_LOCAL, K_ALBEDO, K_K, K_OFFSET, K_NPHI_ENV,
     K_NPHI_KEY, K_NPHI_LOCAL, K_SUBSAMPLE, K_PRECISION, K_BACKEND, K_CONTEXT,
-    K_VISIBILITY, K_THREADS, K_TRUTH_AZIMUTHS, K_TRUTH_SAMPLES, K_LOCAL_SWATH, K_COUNT
+    K_VISIBILITY, K_THREADS, K_TRUTH_AZIMUTHS, K_TRUTH_SAMPLES, K_LOCAL_SWATH, K_PRESET, K_COUNT
 } key_id;
 
 static const hfs_scene_key_info key_table[K_COUNT] = {
@@ -32,9 +32,9 @@ static const hfs_scene_key_info key_table[K_COUNT] = {
     [K_KEY] = {"key", "PHI,ELEV,ALPHA,LE", "key (disk) light, degrees; repeatable"},
     [K_LOCAL] = {"local", "X,Y,Z,R,LE", "local spherical light, world units; repeatable"},
     [K_ALBEDO] = {"albedo", "F", "Lambertian albedo in [0,1] (default 1)"},
-    [K_K] = {"k", "N", "pyramid level step, levels per octave (default 4)"},
-    [K_OFFSET] = {"offset", "N", "pyramid level offset (default 2)"},
-    [K_NPHI_ENV] = {"nphi-env", "N", "azimuth samples for the environment (default 32)"},
+    [K_K] = {"k", "N", "pyramid level step, levels per octave (default 2)"},
+    [K_OFFSET] = {"offset", "N", "pyramid level offset (default 3)"},
+    [K_NPHI_ENV] = {"nphi-env", "N", "azimuth samples for the environment (default 16)"},
     [K_NPHI_KEY] = {"nphi-key", "N", "azimuth samples per key light (default 3)"},
     [K_NPHI_LOCAL] = {"nphi-local", "N", "azimuth samples per local light (default 16)"},
     [K_SUBSAMPLE] = {"subsample", "1|2|4", "visibility sub-sampling of the GLES path (default 2)"},
@@ -46,6 +46,7 @@ static const hfs_scene_key_info key_table[K_COUNT] = {
     [K_TRUTH_AZIMUTHS] = {"truth-azimuths", "N", "ground truth: horizon azimuths (default 720)"},
     [K_TRUTH_SAMPLES] = {"truth-samples", "N", "ground truth: samples per light (default 256)"},
     [K_LOCAL_SWATH] = {"local-swath", "partial|full", "local lights: per-receiver partial swath (default) or full"},
+    [K_PRESET] = {"preset", "kiosk|panel|headless", "quality settings per use (BENCHMARKS.md); other quality keys override it"},
 };
 
 const hfs_scene_key_info *hfs_scene_keys(int *count)
@@ -334,6 +335,14 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
         else
             return hfs_fail(err, HFS_E_INVALID, "%s: local-swath: '%s' is not partial or full", where, value);
         return HFS_OK;
+    case K_PRESET: {
+        hfs_quality probe;
+        if (hfs_quality_preset(&probe, value) != HFS_OK || strlen(value) >= sizeof s->preset)
+            return hfs_fail(err, HFS_E_INVALID, "%s: preset: '%s' is not kiosk, panel or "
+                            "headless", where, value);
+        snprintf(s->preset, sizeof s->preset, "%s", value);
+        return HFS_OK;
+    }
     case K_COUNT:
         break;
     }
@@ -385,11 +394,12 @@ void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS
 
 void hfs_scene_quality(const hfs_scene *s, hfs_quality *q)
 {
-    /* Defaults first, then exactly the keys the user gave (0 can be a real
-     * value, e.g. offset = 0). */
+    /* Defaults (or the preset's), then exactly the keys the user gave (0 can
+     * be a real value, e.g. offset = 0). */
     const unsigned long long given = s->set_mask[0] | s->set_mask[1];
     const hfs_quality *g = &s->quality;
-    hfs_quality_defaults(q);
+    if (!(given & (1ull << K_PRESET)) || hfs_quality_preset(q, s->preset) != HFS_OK)
+        hfs_quality_defaults(q);
 #define TAKE(id, field) do { if (given & (1ull << (id))) q->field = g->field; } while (0)
     TAKE(K_K, k);
     TAKE(K_OFFSET, offset);

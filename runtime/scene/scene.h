@@ -57,6 +57,7 @@ typedef struct hfs_scene {
     int albedo_given;
 
     hfs_quality quality;             /* values of the quality keys given    */
+    char preset[16];                 /* "" or a hfs_quality_preset() use    */
     hfs_backend backend;
     char context[64];                /* "" = default (surfaceless)          */
 
