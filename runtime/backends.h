@@ -40,6 +40,7 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
 void hfs_gles_set_timing(hfs_gles *g, int level);
 void hfs_gles_get_timings(const hfs_gles *g, hfs_timings *t);
 void hfs_gles_invalidate(hfs_gles *g);
+void hfs_gles_frame_report(const hfs_gles *g, hfs_frame_report *out);
 
 /* Facts about the last GLES frame, for tests and tools. */
 typedef struct hfs_gles_stats {

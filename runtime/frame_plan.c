@@ -68,6 +68,12 @@ void hfs_plan_drop_all(hfs_plan *p)
     memset(&p->valid, 0, sizeof p->valid);
 }
 
+void hfs_plan_drop(hfs_plan *p, int product)
+{
+    if (product >= 0 && product < p->n_nodes)
+        p->valid.w[product / 64] &= ~((uint64_t)1 << (product % 64));
+}
+
 static int first_common(const hfs_plan *p, const hfs_plan_set *a, const hfs_plan_set *b)
 {
     for (int n = 0; n < p->n_nodes; ++n)

@@ -90,8 +90,10 @@ void hfs_plan_pass_reads(hfs_plan *p, int pass, const int *reads);
  * the report; the first reason of a frame wins). */
 void hfs_plan_change(hfs_plan *p, int node, const char *reason);
 
-/* Forgets every product (e.g. after a failed frame or a context loss). */
+/* Forgets every product (e.g. after a failed frame or a context loss), or
+ * one product (its storage was overwritten or reallocated). */
 void hfs_plan_drop_all(hfs_plan *p);
+void hfs_plan_drop(hfs_plan *p, int product);
 
 /* Plans the frame: one step per pass, in pass order, into steps[0..n_passes).
  * Returns the number of passes to run.  Clears the changed inputs. */

@@ -5,6 +5,7 @@
 #
 #   gl_caps.c        capability layer: driver x target profile (gl_caps.h)
 #   gles_setup.c     CPU side of a frame: layout, fp16 split, std140 blocks
+#   gles_plan.c      the frame as a frame_plan.h graph: what runs, and why
 #   gles_renderer.c  the backend object, passes, caches, timing
 #   shaders_es/gles_*.frag.glsl  the passes (embedded by gl.cmake)
 #
@@ -105,6 +106,7 @@ add_custom_target(hfs_gles_shaders DEPENDS ${HFS_GLES_GEN}/gles_sh_product.c ${H
 add_library(hfs_gles STATIC
   ${CMAKE_CURRENT_LIST_DIR}/gl_caps.c
   ${CMAKE_CURRENT_LIST_DIR}/gles_setup.c
+  ${CMAKE_CURRENT_LIST_DIR}/gles_plan.c
   ${CMAKE_CURRENT_LIST_DIR}/gles_renderer.c
   ${HFS_GLES_GEN}/gles_sh_product.c)
 add_dependencies(hfs_gles hfs_gles_shaders)

@@ -34,6 +34,7 @@
 #include "gl_context.h"
 #include "gl_shaders.h"
 #include "gl_util.h"
+#include "gles_plan.h"
 #include "gles_setup.h"
 #include "lights.h"
 #include "sh.h"
@@ -101,6 +102,7 @@ typedef struct resources {
     GLuint out[2], out_fbo; /* RGB hi, lo: drawn together */
     GLuint out_lo_fbo;      /* lo alone as attachment 0, for the readback */
     size_t bytes, keyhz_bytes, localv_bytes;
+    unsigned grid_gen, keyhz_gen, localv_gen; /* bumped when reallocated */
 } resources;
 
 /* One key light of the frame. */
@@ -133,9 +135,10 @@ struct hfs_gles {
     int t_w, t_h, t_k, t_offset, t_fp32;
     double t_dx, t_zscale;
 
-    /* Environment cache: what the env pass was computed from. */
-    int env_valid;
-    int e_n, e_path, e_sub;
+    /* The frame planner (gles_plan.h): which passes a frame runs. */
+    hfs_gles_plan plan;
+    float *last_img;                      /* the last image read back, RGB */
+    size_t last_img_cap;
     hfs_visibility *env_vis;
     int env_vis_n;
 
@@ -432,7 +435,6 @@ static void grid_free(hfs_gles *g)
     r->localv_layers = 0;
     r->localv_bytes = 0;
     r->vw = r->vh = 0;
-    g->env_valid = 0;
 }
 
 static void resources_free(hfs_gles *g)
@@ -458,9 +460,10 @@ static void resources_free(hfs_gles *g)
     del_fbo(gl, &r->out_lo_fbo);
     del_fbo(gl, &r->keyhz_fbo);
     del_fbo(gl, &r->localv_fbo);
+    const unsigned gen[3] = {r->grid_gen, r->keyhz_gen, r->localv_gen};
     memset(r, 0, sizeof *r);
+    r->grid_gen = gen[0] + 1, r->keyhz_gen = gen[1] + 1, r->localv_gen = gen[2] + 1;
     g->terrain_valid = 0;
-    g->env_valid = 0;
 }
 
 /* Terrain-sized resources (levels, normals, output) follow the field size,
@@ -528,6 +531,7 @@ static int resources_ensure(hfs_gles *g, const hfs_gles_layout *L, int key_layer
     if (r->vw != L->vw || r->vh != L->vh || !r->venv_fbo) {
         grid_free(g);
         r->vw = L->vw, r->vh = L->vh;
+        ++r->grid_gen, ++r->keyhz_gen, ++r->localv_gen;
         for (int i = 0; i < 4; ++i)
             r->venv[i] = tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->vw, L->vh, 1, 1);
         if ((rc = fbo_new(gl, &r->venv_fbo, 4, r->venv, NULL, "visibility", err)))
@@ -537,12 +541,14 @@ static int resources_ensure(hfs_gles *g, const hfs_gles_layout *L, int key_layer
         del_tex(gl, &r->keyhz);
         r->keyhz = tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh, key_layers, 1);
         r->keyhz_layers = key_layers;
+        ++r->keyhz_gen;
         r->keyhz_bytes = (size_t)L->vw * L->vh * key_layers * c->bytes_rgba;
     }
     if (local_layers > 0 && r->localv_layers < local_layers) {
         del_tex(gl, &r->localv);
         r->localv = tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh, local_layers, 1);
         r->localv_layers = local_layers;
+        ++r->localv_gen;
         r->localv_bytes = (size_t)L->vw * L->vh * local_layers * c->bytes_rgba;
     }
     return hfs_gl_check(gl, "backend gles: allocating textures", err);
@@ -678,6 +684,7 @@ int hfs_gles_create(const char *context, const char *profile, hfs_gles **out, hf
     gl->Disable(GL_SCISSOR_TEST);
     if ((rc = hfs_gl_check(gl, "backend gles: setup", err)))
         goto fail;
+    hfs_gles_plan_init(&g->plan);
     *out = g;
     return HFS_OK;
 
@@ -710,6 +717,7 @@ void hfs_gles_destroy(hfs_gles *g)
     hfs_visibility_destroy(g->env_vis);
     hfs_gl_context_destroy(g->ctx);
     free(g->terrain_z);
+    free(g->last_img);
     free(g->scratch);
     free(g);
 }
@@ -737,7 +745,12 @@ void hfs_gles_get_timings(const hfs_gles *g, hfs_timings *t)
 void hfs_gles_invalidate(hfs_gles *g)
 {
     g->terrain_valid = 0;
-    g->env_valid = 0;
+    hfs_gles_plan_drop_all(&g->plan);
+}
+
+void hfs_gles_frame_report(const hfs_gles *g, hfs_frame_report *out)
+{
+    hfs_gles_plan_report(&g->plan, out);
 }
 
 void hfs_gles_get_stats(const hfs_gles *g, hfs_gles_stats *s)
@@ -747,12 +760,24 @@ void hfs_gles_get_stats(const hfs_gles *g, hfs_gles_stats *s)
 
 /* ---- passes --------------------------------------------------------------------------------- */
 
-static int terrain_same(const hfs_gles *g, const hfs_field *f, const hfs_quality *q)
+/* Why the terrain passes must run again, or NULL when what they computed
+ * still holds (the heights are compared with the kept copy). */
+static const char *terrain_change(const hfs_gles *g, const hfs_field *f, const hfs_quality *q)
 {
     const size_t n = (size_t)f->width * (size_t)f->height;
-    return g->terrain_valid && g->t_w == f->width && g->t_h == f->height && g->t_k == q->k &&
-           g->t_offset == q->offset && g->t_fp32 == g->caps.fp32 && g->t_dx == f->dx &&
-           g->t_zscale == f->zscale && !memcmp(g->terrain_z, f->z, n * sizeof *f->z);
+    if (!g->terrain_valid)
+        return "terrain not computed yet";
+    if (g->t_w != f->width || g->t_h != f->height)
+        return "field size changed";
+    if (g->t_k != q->k || g->t_offset != q->offset)
+        return "pyramid settings (k, offset) changed";
+    if (g->t_fp32 != g->caps.fp32)
+        return "precision changed";
+    if (g->t_dx != f->dx || g->t_zscale != f->zscale)
+        return "dx or zscale changed";
+    if (memcmp(g->terrain_z, f->z, n * sizeof *f->z))
+        return "heights changed";
+    return NULL;
 }
 
 static int terrain_remember(hfs_gles *g, const hfs_field *f, const hfs_quality *q)
@@ -979,15 +1004,18 @@ static int grid_program(hfs_gles *g, const hfs_gles_layout *L, const char *frag,
     return HFS_OK;
 }
 
-/* Key-light passes (or their counting twins) into the horizon excess array. */
+/* Key-light passes (or their counting twins) into the horizon excess array:
+ * the keys q with which[q] set (which = NULL: all). */
 static int run_keys(hfs_gles *g, const hfs_gles_layout *L, const frame_key *keys, int n_keys,
-                    int count, double *fetch_sum, hfs_error *err)
+                    const int *which, int count, double *fetch_sum, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     resources *r = &g->r;
     char ndir[32];
     int rc;
     for (int q = 0; q < n_keys; ++q) {
+        if (which && !which[q])
+            continue;
         const int n = keys[q].k.swath.n;
         snprintf(ndir, sizeof ndir, "HFS_NDIR %d", n);
         for (int d0 = 0; d0 < n; d0 += DIRS_PER_KEY_PASS) {
@@ -1137,6 +1165,37 @@ static int local_upload(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality
     return HFS_OK;
 }
 
+/* What this frame's passes are computed from, for the planner. */
+static void frame_signature(const frame *fr, const hfs_quality *q, const hfs_gles_layout *L,
+                            hfs_gles_frame_sig *s)
+{
+    memset(s, 0, sizeof *s);
+    s->sub = L->sub, s->vw = L->vw, s->vh = L->vh;
+    s->has_env = fr->has_env;
+    s->nphi_env = q->nphi_env;
+    s->vis_path = (int)q->visibility;
+    if (fr->has_env)
+        memcpy(s->l_env, fr->l_env, sizeof s->l_env);
+    s->rho_pi = fr->rho_pi;
+    s->n_keys = fr->n_keys;
+    for (int i = 0; i < fr->n_keys && i < HFS_GLES_PLAN_KEYS; ++i) {
+        const hfs_gles_key *k = &fr->keys[i].k;
+        s->key[i].swath = k->swath;
+        s->key[i].hz_layer = k->hz_layer;
+        memcpy(s->key[i].dir, k->dir, sizeof k->dir);
+        s->key[i].alpha = k->alpha;
+        memcpy(s->key[i].le, k->le, sizeof k->le);
+    }
+    s->n_local = fr->n_local;
+    s->nphi_local = q->nphi_local;
+    s->local_full = q->local_full_swath;
+    for (int i = 0; i < fr->n_local; ++i) {
+        memcpy(s->local[i].pos, fr->local[i].pos, sizeof fr->local[i].pos);
+        s->local[i].radius = fr->local[i].radius;
+        memcpy(s->local[i].le, fr->local[i].radiance, sizeof fr->local[i].radiance);
+    }
+}
+
 static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, hfs_image *out, frame *fr, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
@@ -1190,14 +1249,48 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         return rc;
     const int local_layers = (fr->n_local + 1) / 2;
     if ((rc = hfs_gl_caps_check_texture(caps, L.vw, L.vh, local_layers > 0 ? local_layers : 1,
-                                        "local-light visibility", err)) ||
-        (rc = resources_ensure(g, &L, fr->key_layers, local_layers, err)))
+                                        "local-light visibility", err)))
         return rc;
 
-    /* Terrain: upload, normals, pyramid (cached). */
-    if (!terrain_same(g, f, q)) {
+    /* Plan: which passes this frame needs (gles_plan.h). */
+    hfs_gles_frame_sig sig;
+    frame_signature(fr, q, &L, &sig);
+    const size_t n_img = (size_t)L.w * L.h * 3;
+    const char *terrain_why = terrain_change(g, f, q);
+    if (terrain_why)
         g->terrain_valid = 0;
-        g->env_valid = 0;
+    if (hfs_gles_plan_frame(&g->plan, &sig, terrain_why) == 0 && g->last_img &&
+        g->last_img_cap >= n_img) {
+        /* Nothing changed: no pass, no GL call; the last image again. */
+        memcpy(out->rgb, g->last_img, n_img * sizeof *out->rgb);
+        for (int p = 0; p < P_COUNT; ++p)
+            g->pass_cached[p] = 1;
+        return HFS_OK;
+    }
+    int *run = g->plan.run;
+    if (!run[GP_READBACK] && !(g->last_img && g->last_img_cap >= n_img))
+        run[GP_READBACK] = 1; /* no kept image (first frame after a failure) */
+    const resources *rs = &g->r;
+    const unsigned gens[3] = {rs->grid_gen, rs->keyhz_gen, rs->localv_gen};
+    if ((rc = resources_ensure(g, &L, fr->key_layers, local_layers, err)))
+        return rc;
+    /* Reallocated textures lost what they held: their passes run (and the
+     * shading that reads them). */
+    if (rs->grid_gen != gens[0] || rs->keyhz_gen != gens[1])
+        for (int i = 0; i < fr->n_keys; ++i)
+            run[GP_KEY0 + i] = run[GP_SHADE] = 1;
+    if (rs->grid_gen != gens[0] && fr->has_env)
+        run[GP_ENV] = run[GP_SHADE] = 1;
+    if ((rs->grid_gen != gens[0] || rs->localv_gen != gens[2]) && fr->n_local > 0)
+        run[GP_LOCAL] = run[GP_SHADE] = 1;
+    /* The readback needs this frame's output scale, and a shaded frame is
+     * read back: the two go together. */
+    if (run[GP_SHADE] || run[GP_READBACK])
+        run[GP_SHADE] = run[GP_READBACK] = 1;
+
+    /* Terrain: upload, normals, pyramid. */
+    if (run[GP_TERRAIN]) {
+        g->terrain_valid = 0;
         float *sc = scratch(g, hfs_gles_scales_vec4(&L) * 16);
         if (!sc)
             return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
@@ -1207,6 +1300,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
             return rc;
         g->terrain_valid = terrain_remember(g, f, q);
         g->stats.terrain_recomputed = 1;
+        hfs_gles_plan_done(&g->plan, GP_TERRAIN);
     } else {
         for (int p = P_UPLOAD; p <= P_RECON; ++p)
             g->pass_cached[p] = 1;
@@ -1220,7 +1314,6 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         del_tex(gl, &g->loc_tab);
         g->ktab_sets = 0;
         g->table_bytes = 0;
-        g->env_valid = 0;
     }
     g->tab_fp32 = caps->fp32;
 
@@ -1235,11 +1328,9 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
             if ((rc = hfs_visibility_create(&s, HFS_VIS_LEGENDRE, &g->env_vis, err)))
                 return rc;
             g->env_vis_n = q->nphi_env;
-            g->env_valid = 0;
         }
         mismatches += hfs_gles_offset_mismatches(&L, hfs_visibility_swath(g->env_vis));
-        if (!(g->env_valid && g->e_n == q->nphi_env && g->e_path == (int)q->visibility &&
-              g->e_sub == q->subsample)) {
+        if (run[GP_ENV]) {
             const size_t bytes = hfs_gles_swath_vec4(q->nphi_env) * 16;
             float *sw = scratch(g, bytes);
             if (!sw)
@@ -1266,11 +1357,8 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
             if ((rc = run_env(g, &L, tables, 0, err)))
                 return rc;
             pass_end(g, P_ENV);
-            g->env_valid = 1;
-            g->e_n = q->nphi_env;
-            g->e_path = (int)q->visibility;
-            g->e_sub = q->subsample;
             g->stats.env_recomputed = 1;
+            hfs_gles_plan_done(&g->plan, GP_ENV);
         } else {
             g->pass_cached[P_ENV] = 1;
         }
@@ -1332,17 +1420,30 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
                 }
             }
         }
-        pass_begin(g, P_KEY);
-        if ((rc = run_keys(g, &L, fr->keys, fr->n_keys, 0, NULL, err)))
-            return rc;
-        pass_end(g, P_KEY);
+        int any = 0;
+        for (int i = 0; i < fr->n_keys; ++i)
+            any |= run[GP_KEY0 + i];
+        if (any) {
+            pass_begin(g, P_KEY);
+            if ((rc = run_keys(g, &L, fr->keys, fr->n_keys, run + GP_KEY0, 0, NULL, err)))
+                return rc;
+            pass_end(g, P_KEY);
+            for (int i = 0; i < fr->n_keys; ++i)
+                if (run[GP_KEY0 + i])
+                    hfs_gles_plan_done(&g->plan, GP_KEY0 + i);
+        } else {
+            g->pass_cached[P_KEY] = 1;
+        }
     }
     g->stats.offset_mismatches = mismatches;
 
     /* Local lights: visibility ratios on the grid. */
-    if (fr->n_local > 0) {
-        if ((rc = local_upload(g, &L, q, fr, err)))
-            return rc;
+    if (fr->n_local > 0 && (run[GP_LOCAL] || run[GP_SHADE]) &&
+        (rc = local_upload(g, &L, q, fr, err)))
+        return rc;
+    if (fr->n_local > 0 && !run[GP_LOCAL])
+        g->pass_cached[P_LOCAL] = 1;
+    if (fr->n_local > 0 && run[GP_LOCAL]) {
         const double dphi = 2.0 * PI / q->nphi_local;
         if (tables && (!g->loc_tab || g->loc_tab_dphi != dphi)) {
             hfs_wedge_tables *t = tables_get(g, dphi, err);
@@ -1361,6 +1462,12 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         if ((rc = run_local(g, &L, q, fr->n_local, 0, NULL, err)))
             return rc;
         pass_end(g, P_LOCAL);
+        hfs_gles_plan_done(&g->plan, GP_LOCAL);
+    }
+    if (!run[GP_SHADE] && !run[GP_READBACK]) {
+        memcpy(out->rgb, g->last_img, n_img * sizeof *out->rgb);
+        g->pass_cached[P_SHADE] = g->pass_cached[P_READBACK] = 1;
+        return HFS_OK;
     }
 
     /* Shading. */
@@ -1485,6 +1592,16 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
             out->rgb[3 * i + (size_t)c] = isfinite(v) ? (float)v : 0.0f;
         }
     pass_end(g, P_READBACK);
+    if (g->last_img_cap < n_img) {
+        float *k = realloc(g->last_img, n_img * sizeof *k);
+        if (!k)
+            return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the kept image");
+        g->last_img = k;
+        g->last_img_cap = n_img;
+    }
+    memcpy(g->last_img, out->rgb, n_img * sizeof *out->rgb);
+    hfs_gles_plan_done(&g->plan, GP_SHADE);
+    hfs_gles_plan_done(&g->plan, GP_READBACK);
 
     /* Counting twins of the horizon passes (timing level 2). */
     if (g->timing >= 2) {
@@ -1494,7 +1611,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         if (fr->has_env) {
             if ((rc = run_env(g, &L, tables, 1, err)))
                 return rc;
-            g->env_valid = 0; /* the targets now hold counts */
+            /* the targets now hold counts: hfs_gles_plan_drop_grids below */
             float *cnt = scratch(g, (size_t)L.vw * L.vh * 4 * sizeof(float));
             if (!cnt)
                 return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
@@ -1505,11 +1622,12 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
                 g->pass_fetch[P_ENV] += cnt[4 * i] + 1024.0 * cnt[4 * i + 1];
         }
         if (fr->n_keys > 0 &&
-            (rc = run_keys(g, &L, fr->keys, fr->n_keys, 1, &g->pass_fetch[P_KEY], err)))
+            (rc = run_keys(g, &L, fr->keys, fr->n_keys, NULL, 1, &g->pass_fetch[P_KEY], err)))
             return rc;
         if (fr->n_local > 0 &&
             (rc = run_local(g, &L, q, fr->n_local, 1, &g->pass_fetch[P_LOCAL], err)))
             return rc;
+        hfs_gles_plan_drop_grids(&g->plan); /* their targets now hold counts */
     } else {
         g->pass_fetch[P_ENV] = -1.0;
         g->pass_fetch[P_KEY] = -1.0;
@@ -1567,7 +1685,10 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
             fr.local[fr.n_local++] = l->local[i];
     fr.rho_pi = l->albedo / PI;
     if ((!fr.has_env && fr.n_keys == 0 && fr.n_local == 0) || !(l->albedo > 0.0)) {
+        /* Black without a pass; the planner keeps the last lit frame's state
+         * (its image is still right for that scene). */
         memset(out->rgb, 0, (size_t)out->width * out->height * 3 * sizeof *out->rgb);
+        g->plan.black = 1;
         return HFS_OK;
     }
     if (fr.has_env)
@@ -1579,7 +1700,7 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
     if (rc) {
         /* A failed frame may have left partial results: recompute next time. */
         g->terrain_valid = 0;
-        g->env_valid = 0;
+        hfs_gles_plan_drop_all(&g->plan);
         for (int i = 0; i < 16 && g->gl.GetError() != GL_NO_ERROR; ++i)
             ;
         return rc;

@@ -283,6 +283,24 @@ HFS_API int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out);
  * change); the next frame recomputes everything.  For benchmarks. */
 HFS_API void hfs_renderer_invalidate(hfs_renderer *r);
 
+/* What the last frame ran and what it skipped, and why (the GLES renderer's
+ * frame planner, issue 6: a pass runs only when something it reads changed
+ * or it never ran; "cached: nothing it reads changed", "not needed").  The
+ * CPU and truth backends report one step, "render". */
+#define HFS_REPORT_STEPS 24
+typedef struct hfs_frame_step {
+    char pass[24];
+    int ran;
+    char reason[96];
+} hfs_frame_step;
+
+typedef struct hfs_frame_report {
+    int n_steps, n_ran;
+    hfs_frame_step step[HFS_REPORT_STEPS];
+} hfs_frame_report;
+
+HFS_API int hfs_renderer_frame_report(const hfs_renderer *r, hfs_frame_report *out);
+
 /* Validation used by hfs_renderer_render, exposed for tools and tests. */
 HFS_API int hfs_validate_inputs(const hfs_field *field, const hfs_lighting *lighting,
                                 const hfs_quality *quality, hfs_error *err);

@@ -98,6 +98,23 @@ void hfs_renderer_invalidate(hfs_renderer *r)
         hfs_gles_invalidate(r->gles);
 }
 
+int hfs_renderer_frame_report(const hfs_renderer *r, hfs_frame_report *out)
+{
+    if (!r || !out)
+        return HFS_E_INVALID;
+    if (r->gles) {
+        hfs_gles_frame_report(r->gles, out);
+        return HFS_OK;
+    }
+    memset(out, 0, sizeof *out);
+    out->n_steps = out->n_ran = 1;
+    snprintf(out->step[0].pass, sizeof out->step[0].pass, "render");
+    out->step[0].ran = 1;
+    snprintf(out->step[0].reason, sizeof out->step[0].reason,
+             "%s backend: every frame from scratch", hfs_renderer_backend_name(r));
+    return HFS_OK;
+}
+
 static int finite3(const float v[3])
 {
     return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]) && v[0] >= 0 && v[1] >= 0 && v[2] >= 0;

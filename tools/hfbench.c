@@ -22,6 +22,7 @@
 #include "bench_scene.h"
 #include "bench_sweep.h"
 #include "bench_truth.h"
+#include "median.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -175,17 +176,6 @@ static void progress(const options *o, int done, int total, const char *what)
     fflush(stderr);
 }
 
-static int cmp_dbl(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_dbl);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 enum { T_FRAME, T_GPU, T_PYRAMID, T_ENV, T_KEY, T_LOCAL, T_SHADE, T_COUNT };
 
@@ -224,13 +214,13 @@ static int measure(hfs_renderer *rd, const bench_scene *sc, const hfs_quality *q
         r->texture_bytes = t.texture_bytes;
     }
     if (!rc) {
-        r->frame_ms = median(v + (size_t)T_FRAME * frames, frames);
-        r->gpu_ms = median(v + (size_t)T_GPU * frames, frames);
-        r->pyramid_ms = median(v + (size_t)T_PYRAMID * frames, frames);
-        r->env_ms = median(v + (size_t)T_ENV * frames, frames);
-        r->key_ms = median(v + (size_t)T_KEY * frames, frames);
-        r->local_ms = median(v + (size_t)T_LOCAL * frames, frames);
-        r->shade_ms = median(v + (size_t)T_SHADE * frames, frames);
+        r->frame_ms = hfs_median(v + (size_t)T_FRAME * frames, frames);
+        r->gpu_ms = hfs_median(v + (size_t)T_GPU * frames, frames);
+        r->pyramid_ms = hfs_median(v + (size_t)T_PYRAMID * frames, frames);
+        r->env_ms = hfs_median(v + (size_t)T_ENV * frames, frames);
+        r->key_ms = hfs_median(v + (size_t)T_KEY * frames, frames);
+        r->local_ms = hfs_median(v + (size_t)T_LOCAL * frames, frames);
+        r->shade_ms = hfs_median(v + (size_t)T_SHADE * frames, frames);
     }
     free(v);
     return rc;

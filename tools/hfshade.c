@@ -15,6 +15,7 @@
 #include "hfshade.h"
 #include "scene.h"
 #include "sh.h"
+#include "median.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -241,17 +242,6 @@ static void apply_terrain_colormap(hfs_image *img, const hfs_heightmap *hm)
     }
 }
 
-static int cmp_dbl(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median_of(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_dbl);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* --time N: one warm-up frame, then N full frames (caches invalidated so every
  * pass runs), per-pass medians on stdout.  The image of the last frame is
@@ -281,9 +271,9 @@ static int time_frames(const cli *c, hfs_renderer *r, const scene_inputs *in, hf
                in->field.width, in->field.height, n, t.method);
         printf("%-12s %10s\n", "pass", "median ms");
         for (int p = 0; p < t.n_passes; ++p)
-            printf("%-12s %10.3f\n", t.pass[p].name, median_of(ms + (size_t)p * n, n));
-        printf("%-12s %10.3f\n", "passes", median_of(ms + (size_t)HFS_MAX_PASSES * n, n));
-        printf("%-12s %10.3f\n", "frame", median_of(ms + (size_t)(HFS_MAX_PASSES + 1) * n, n));
+            printf("%-12s %10.3f\n", t.pass[p].name, hfs_median(ms + (size_t)p * n, n));
+        printf("%-12s %10.3f\n", "passes", hfs_median(ms + (size_t)HFS_MAX_PASSES * n, n));
+        printf("%-12s %10.3f\n", "frame", hfs_median(ms + (size_t)(HFS_MAX_PASSES + 1) * n, n));
         printf("texture memory: %.2f MiB (%zu bytes)\n", t.texture_bytes / 1048576.0, t.texture_bytes);
     }
     free(ms);

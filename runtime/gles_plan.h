@@ -1,0 +1,94 @@
+/*
+ * gles_plan.h — the GLES renderer's frame as a frame_plan.h graph (issue 6):
+ * what each pass reads and writes, what a scene edit invalidates, and which
+ * passes a frame runs.
+ *
+ *   inputs   terrain (heights, size, dx, zscale, k, offset, precision),
+ *            grid (subsample), env settings (nphi_env, visibility path),
+ *            env light (rotated SH), albedo, key i geometry (its swath and
+ *            horizon layers), key i light (direction, size, radiance),
+ *            local geometry (the contributing lights' centres and radii,
+ *            nphi_local, swath mode, path), local radiance
+ *   passes   terrain -> env -> key i -> local -> shade -> readback
+ *            terrain  reads terrain                 writes pyramid
+ *            env      reads pyramid, grid, env set  writes env visibility
+ *            key i    reads pyramid, grid, key i geometry   writes key i horizons
+ *            local    reads pyramid, grid, local geometry   writes local ratios
+ *            shade    reads the light set (which kinds, how many lights), what
+ *                     the frame's lights use, env light, albedo, key
+ *                     lights, local radiance        writes the output targets
+ *            readback reads the output targets      writes the image
+ * A key light's horizons depend only on its swath (the sample directions),
+ * so a change of radiance, or of anything but the swath, costs the shading
+ * only; the local ratios do not depend on radiance.  Nothing changed: no
+ * pass, no GL call; the last image is handed out again.
+ */
+#ifndef HFS_GLES_PLAN_H
+#define HFS_GLES_PLAN_H
+
+#include "cpu_visibility.h"
+#include "frame_plan.h"
+#include "hfshade.h"
+
+#define HFS_GLES_PLAN_KEYS HFS_MAX_KEY_LIGHTS
+
+/* What a frame is computed from (besides the heights, compared by the
+ * renderer against its kept copy). */
+typedef struct hfs_gles_frame_sig {
+    int sub, vw, vh;
+    int has_env, nphi_env, vis_path;
+    double l_env[3][HFS_SH_COEFFS];
+    double rho_pi;
+    int n_keys;
+    struct {
+        hfs_swath swath;
+        int hz_layer;
+        double dir[3], alpha, le[3];
+    } key[HFS_GLES_PLAN_KEYS];
+    int n_local, nphi_local, local_full;
+    struct {
+        double pos[3], radius;
+        float le[3];
+    } local[HFS_MAX_LOCAL_LIGHTS];
+} hfs_gles_frame_sig;
+
+enum { GP_TERRAIN, GP_ENV, GP_KEY0, GP_LOCAL = GP_KEY0 + HFS_GLES_PLAN_KEYS, GP_SHADE,
+       GP_READBACK, GP_PASSES };
+
+typedef struct hfs_gles_plan {
+    hfs_plan p;
+    int in_terrain, in_grid, in_env_set, in_env_light, in_albedo, in_local_geom, in_local_rad;
+    int in_light_set;             /* which light kinds / how many lights */
+    int in_key_geom[HFS_GLES_PLAN_KEYS], in_key_light[HFS_GLES_PLAN_KEYS];
+    int pr_pyramid, pr_env, pr_local, pr_targets, pr_image;
+    int pr_key[HFS_GLES_PLAN_KEYS];
+    int pass[GP_PASSES];          /* frame_plan pass id of each GP_* */
+    hfs_gles_frame_sig last;
+    int have_last;
+    hfs_plan_step steps[HFS_PLAN_MAX_PASSES];
+    int run[GP_PASSES];           /* this frame's decisions, by GP_* */
+    int n_run;
+    int black;                    /* the last frame was black: no light, no pass */
+} hfs_gles_plan;
+
+void hfs_gles_plan_init(hfs_gles_plan *gp);
+
+/* Plans a frame: terrain_why is NULL when the terrain is unchanged, else
+ * why it changed; resources_lost names products whose textures were
+ * reallocated (NULL: none).  Fills gp->run[] and returns the number of passes
+ * to run. */
+int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now,
+                        const char *terrain_why);
+
+/* Pass GP_* ran: its products are valid. */
+void hfs_gles_plan_done(hfs_gles_plan *gp, int which);
+
+/* Products that no longer hold their values (a failed frame, counting
+ * twins writing fetch counts into the visibility targets, reallocation). */
+void hfs_gles_plan_drop_all(hfs_gles_plan *gp);
+void hfs_gles_plan_drop_grids(hfs_gles_plan *gp);
+
+/* The last frame's steps as a report (public hfs_frame_report). */
+void hfs_gles_plan_report(const hfs_gles_plan *gp, hfs_frame_report *out);
+
+#endif /* HFS_GLES_PLAN_H */

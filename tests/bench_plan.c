@@ -1,0 +1,215 @@
+/*
+ * bench_plan.c — what the frame planner saves on realistic sequences
+ * (issue 6): each sequence is rendered twice in one run, by a renderer that
+ * plans (keeps what an edit did not invalidate) and by one made to
+ * recompute everything each frame (hfs_renderer_invalidate), alternating
+ * frame by frame so that both see the same machine load.  Prints a Markdown
+ * row per sequence: median frame time with and without the planner, their
+ * ratio, and the passes the planned frames ran.
+ *
+ *   bench_plan [--frames N] [--size N] [--only NAME]      (defaults 30, 512)
+ *
+ * Sequences (N frames each, after one warm-up frame):
+ *   env-rotate   a knob turning the environment at 60 Hz (6 degrees a frame)
+ *                over a still fractal terrain, sky + a key light;
+ *   key-sweep    a key light sweeping across the sky (3 degrees a frame in
+ *                azimuth, elevation rising), sky present;
+ *   local-move   one of four local lights moving over a panel (size/2);
+ *   terrain      an animated height field: a bump moving over the terrain
+ *                every frame (dynamic terrain), sky + key light.
+ * No GLES context: exit 77.
+ */
+#include "hfshade.h"
+#include "terrain_gen.h"
+#include "median.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define PI 3.14159265358979323846
+
+static double now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+
+typedef struct seq {
+    const char *name;
+    int n;               /* field side */
+    float *z, *z0;
+    hfs_field f;
+    hfs_lighting l;
+    hfs_quality q;
+} seq;
+
+static void sky(hfs_lighting *l)
+{
+    l->has_env = 1;
+    for (int c = 0; c < 3; ++c) {
+        l->env_sh[c][0] = 2.5 - 0.2 * c;
+        l->env_sh[c][2] = 1.0;  /* brighter to +z */
+        l->env_sh[c][3] = 0.4;  /* and to +x: rotation shows */
+        l->env_sh[c][8] = 0.2;
+    }
+}
+
+static int setup(seq *s, const char *name, int n)
+{
+    memset(s, 0, sizeof *s);
+    s->name = name;
+    s->n = n;
+    s->z = malloc((size_t)n * n * sizeof *s->z);
+    s->z0 = malloc((size_t)n * n * sizeof *s->z0);
+    if (!s->z || !s->z0)
+        return -1;
+    hfs_lighting_defaults(&s->l);
+    s->l.albedo = 0.8;
+    hfs_quality_defaults(&s->q);
+    if (!strcmp(name, "local-move")) {
+        hfs_terrain_panel(s->z, n, n);
+        const double f = n / 128.0;
+        const double set[4][4] = {{48, 48, 7, 1.5}, {80, 20, 6, 1}, {20, 80, 9, 2}, {100, 100, 8, 1}};
+        s->l.n_local = 4;
+        for (int i = 0; i < 4; ++i)
+            s->l.local[i] = (hfs_local_light){.pos = {set[i][0] * f, set[i][1] * f, set[i][2] * f},
+                                              .radius = set[i][3] * f,
+                                              .radiance = {40, 40, 40}};
+    } else {
+        if (hfs_terrain_fractal(s->z, n, n, 1, 0.25))
+            return -1;
+        sky(&s->l);
+        s->l.n_key = 1;
+        s->l.key[0] = (hfs_key_light){.phi = 5.86, .elev = 0.26, .alpha = 0.035,
+                                      .radiance = {150, 140, 125}};
+    }
+    memcpy(s->z0, s->z, (size_t)n * n * sizeof *s->z);
+    s->f = (hfs_field){.width = n, .height = n, .z = s->z, .dx = 1.0, .zscale = 1.0};
+    return 0;
+}
+
+/* Frame t's edit. */
+static void edit(seq *s, int t)
+{
+    if (!strcmp(s->name, "env-rotate")) {
+        s->l.env_rotate = fmod(t * 6.0, 360.0) * PI / 180.0;
+    } else if (!strcmp(s->name, "key-sweep")) {
+        s->l.key[0].phi = fmod(0.5 + t * 3.0 * PI / 180.0, 2 * PI);
+        s->l.key[0].elev = 0.15 + 0.01 * t;
+    } else if (!strcmp(s->name, "local-move")) {
+        const double f = s->n / 128.0;
+        s->l.local[0].pos[0] = (30 + 2.0 * t) * f;
+        s->l.local[0].pos[1] = (40 + 1.0 * t) * f;
+    } else { /* terrain: a bump moving along the diagonal */
+        memcpy(s->z, s->z0, (size_t)s->n * s->n * sizeof *s->z);
+        const int n = s->n, cx = (t * 7) % n, cy = (t * 5) % n, r = n / 16;
+        for (int j = cy - r; j <= cy + r; ++j)
+            for (int i = cx - r; i <= cx + r; ++i)
+                if (i >= 0 && j >= 0 && i < n && j < n) {
+                    const double d = hypot(i - cx, j - cy) / r;
+                    if (d < 1)
+                        s->z[(size_t)j * n + i] += (float)(0.3 * r * (1 - d * d));
+                }
+    }
+}
+
+int main(int argc, char **argv)
+{
+    int frames = 30, size = 512;
+    const char *only = NULL;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        if (!strcmp(argv[i], "--frames"))
+            frames = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--size"))
+            size = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--only"))
+            only = argv[i + 1];
+    }
+    if (frames < 1 || size < 16 || size > 2048) {
+        fprintf(stderr, "usage: bench_plan [--frames N >= 1] [--size 16..2048] [--only NAME]\n");
+        return 2;
+    }
+    hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES};
+    hfs_renderer *planned = NULL, *full = NULL;
+    hfs_error err;
+    if (hfs_renderer_create(&d, &planned, &err) || hfs_renderer_create(&d, &full, &err)) {
+        printf("SKIP: no GLES renderer here: %s\n", err.msg);
+        return 77;
+    }
+    static const char *const names[] = {"env-rotate", "key-sweep", "local-move", "terrain"};
+    printf("| sequence | field | frames | planned ms (median) | full ms (median) | full / "
+           "planned | passes run per planned frame (total over the frames) |\n");
+    printf("|---|---|---|---|---|---|---|\n");
+    int rc = 0;
+    for (size_t k = 0; k < sizeof names / sizeof names[0] && !rc; ++k) {
+        if (only && strcmp(only, names[k]))
+            continue;
+        seq s;
+        const int n = !strcmp(names[k], "local-move") ? size / 2 : size;
+        if (setup(&s, names[k], n)) {
+            rc = 1;
+            break;
+        }
+        hfs_image img = {0};
+        double *tp = calloc((size_t)frames, sizeof *tp), *tf = calloc((size_t)frames, sizeof *tf);
+        char passes[16][24] = {{0}};
+        int counts[16] = {0}, np = 0;
+        if (!tp || !tf || hfs_image_alloc(&img, n, n, &err)) {
+            rc = 1;
+        } else {
+            for (int t = -1; t < frames && !rc; ++t) {
+                edit(&s, t + 1);
+                double t0 = now_ms();
+                rc |= hfs_renderer_render(planned, &s.f, &s.l, &s.q, &img, NULL, NULL, &err);
+                const double t1 = now_ms();
+                hfs_renderer_invalidate(full);
+                rc |= hfs_renderer_render(full, &s.f, &s.l, &s.q, &img, NULL, NULL, &err);
+                const double t2 = now_ms();
+                if (t < 0)
+                    continue; /* warm-up: programs compiled, caches filled */
+                tp[t] = t1 - t0;
+                tf[t] = t2 - t1;
+                hfs_frame_report rep;
+                hfs_renderer_frame_report(planned, &rep);
+                for (int i = 0; i < rep.n_steps; ++i) {
+                    if (!rep.step[i].ran)
+                        continue;
+                    int j = 0;
+                    while (j < np && strcmp(passes[j], rep.step[i].pass))
+                        ++j;
+                    if (j == np && np < 16)
+                        snprintf(passes[np++], sizeof passes[0], "%s", rep.step[i].pass);
+                    if (j < 16)
+                        ++counts[j];
+                }
+            }
+            if (rc) {
+                fprintf(stderr, "bench_plan: %s: %s\n", names[k], err.msg);
+                break;
+            }
+            const double mp = hfs_median(tp, frames), mf = hfs_median(tf, frames);
+            char ran[256] = "";
+            for (int j = 0; j < np; ++j) {
+                char one[48];
+                snprintf(one, sizeof one, "%s%s %d", j ? ", " : "", passes[j], counts[j]);
+                strncat(ran, one, sizeof ran - strlen(ran) - 1);
+            }
+            printf("| %s | %dx%d | %d | %.2f | %.2f | %.1fx | %s |\n", names[k], n, n, frames, mp,
+                   mf, mf / mp, np ? ran : "none");
+            fflush(stdout);
+        }
+        hfs_image_free(&img);
+        free(tp);
+        free(tf);
+        free(s.z);
+        free(s.z0);
+    }
+    hfs_renderer_destroy(planned);
+    hfs_renderer_destroy(full);
+    return rc ? 1 : 0;
+}

@@ -1,0 +1,138 @@
+/*
+ * test_plan_cases.c — the frame planner's decisions on the cases issue 6
+ * names, through the public report (hfs_renderer_frame_report): which
+ * passes ran after each edit.
+ *   - nothing changed: no pass at all (the image handed out again);
+ *   - environment rotated or re-tinted, a light's radiance, the albedo:
+ *     shading and readback only;
+ *   - a key light moved: its own key pass, shading; the other key's pass
+ *     and the environment are kept;
+ *   - a local light moved: the local pass, shading;
+ *   - a light switched off (or given radiance 0): no pass for it;
+ *   - heights changed: everything.
+ * Each planned image also equals a from-scratch one (test_plan_equal does
+ * that at random).  No GLES context: exit 77.
+ */
+#include "hfshade.h"
+#include "terrain_gen.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+
+#define N 32
+
+static hfs_renderer *planned, *fresh;
+static hfs_image a, b;
+
+static int ran(const hfs_frame_report *r, const char *pass)
+{
+    for (int i = 0; i < r->n_steps; ++i)
+        if (!strcmp(r->step[i].pass, pass))
+            return r->step[i].ran;
+    return 0;
+}
+
+/* Renders, checks against a from-scratch frame, and returns the set of
+ * passes that ran as "name name ...". */
+static const char *frame(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                         hfs_frame_report *rep)
+{
+    static char list[512];
+    hfs_error err;
+    if (hfs_renderer_render(planned, f, l, q, &a, NULL, NULL, &err)) {
+        CHECK(0, "render: %s", err.msg);
+        return "";
+    }
+    hfs_renderer_frame_report(planned, rep);
+    hfs_renderer_invalidate(fresh);
+    if (hfs_renderer_render(fresh, f, l, q, &b, NULL, NULL, &err) == 0)
+        CHECK(!memcmp(a.rgb, b.rgb, (size_t)N * N * 3 * sizeof(float)),
+              "planned image differs from scratch");
+    list[0] = '\0';
+    for (int i = 0; i < rep->n_steps; ++i)
+        if (rep->step[i].ran) {
+            strncat(list, rep->step[i].pass, sizeof list - strlen(list) - 2);
+            strcat(list, " ");
+        }
+    return list;
+}
+
+#define EXPECT(what, want)                                                                     \
+    do {                                                                                       \
+        hfs_frame_report rep;                                                                  \
+        const char *got = frame(&f, &l, &q, &rep);                                             \
+        printf("%-28s ran: %s\n", what, *got ? got : "(nothing)");                           \
+        CHECK(!strcmp(got, want), "%s: ran '%s', want '%s'", what, got, want);                 \
+    } while (0)
+
+int main(void)
+{
+    hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES};
+    hfs_error err;
+    if (hfs_renderer_create(&d, &planned, &err) || hfs_renderer_create(&d, &fresh, &err)) {
+        printf("SKIP: no GLES renderer here: %s\n", err.msg);
+        return 77;
+    }
+    float z[N * N];
+    hfs_terrain_cones(z, N, N);
+    hfs_field f = {.width = N, .height = N, .z = z, .dx = 1.0, .zscale = 1.0};
+    hfs_lighting l;
+    hfs_lighting_defaults(&l);
+    l.has_env = 1;
+    l.albedo = 0.8;
+    for (int c = 0; c < 3; ++c) {
+        l.env_sh[c][0] = 2.0;
+        l.env_sh[c][2] = 0.8;
+    }
+    l.n_key = 2;
+    l.key[0] = (hfs_key_light){.phi = 0.5, .elev = 0.4, .alpha = 0.04, .radiance = {20, 20, 20}};
+    l.key[1] = (hfs_key_light){.phi = 2.5, .elev = 0.7, .alpha = 0.06, .radiance = {10, 9, 8}};
+    l.n_local = 1;
+    l.local[0] = (hfs_local_light){.pos = {16, 16, 10}, .radius = 1.5, .radiance = {30, 30, 30}};
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    if (hfs_image_alloc(&a, N, N, &err) || hfs_image_alloc(&b, N, N, &err))
+        return 1;
+
+    EXPECT("first frame", "terrain env key 0 key 1 local shade readback ");
+    EXPECT("nothing changed", "");
+    l.env_rotate = 0.7;
+    EXPECT("environment rotated", "shade readback ");
+    for (int c = 0; c < 3; ++c)
+        l.env_sh[c][0] *= 1.1;
+    EXPECT("environment re-tinted", "shade readback ");
+    l.key[1].radiance[0] = 14;
+    EXPECT("key radiance", "shade readback ");
+    l.local[0].radiance[2] = 12;
+    EXPECT("local radiance", "shade readback ");
+    l.albedo = 0.5;
+    EXPECT("albedo", "shade readback ");
+    l.key[0].phi += 0.3;
+    EXPECT("key 0 moved", "key 0 shade readback ");
+    l.local[0].pos[0] = 12;
+    EXPECT("local light moved", "local shade readback ");
+    l.key[1].disabled = 1;
+    l.local[0].radiance[0] = l.local[0].radiance[1] = l.local[0].radiance[2] = 0;
+    EXPECT("key 1 off, local dark", "shade readback ");
+    l.key[0].phi += 0.2; /* key 0 is now the only key: its pass runs, no other */
+    EXPECT("key 0 moved again", "key 0 shade readback ");
+    z[5 * N + 7] += 1.0f;
+    EXPECT("heights changed", "terrain env key 0 shade readback ");
+    EXPECT("nothing changed again", "");
+
+    hfs_frame_report rep;
+    hfs_renderer_frame_report(planned, &rep);
+    CHECK(rep.n_ran == 0 && rep.n_steps > 0 && !ran(&rep, "shade") &&
+              strstr(rep.step[rep.n_steps - 1].reason, "cached"),
+          "report of a frame without work");
+    hfs_image_free(&a);
+    hfs_image_free(&b);
+    hfs_renderer_destroy(planned);
+    hfs_renderer_destroy(fresh);
+    printf("plan cases: %s\n", failures ? "FAILED" : "ok");
+    return failures ? 1 : 0;
+}
