@@ -2,7 +2,9 @@
  * test_plan_equal.c — correctness of the frame planner (issue 6): a seeded
  * random sequence of scene edits (heights, dx/zscale, environment rotation
  * and tint, key and local lights moved, resized, re-tinted, switched off and
- * on, added and removed, albedo, quality settings), and after each edit the
+ * on, added and removed, albedo, quality settings including precision and
+ * the visibility path, the timing level: level 2's counting passes
+ * overwrite the visibility targets), and after each edit the
  * frame of a renderer that plans (keeps what the edit did not invalidate)
  * must equal, bit for bit, the frame of a renderer made to recompute
  * everything (hfs_renderer_invalidate before each frame).
@@ -54,7 +56,7 @@ static const char *const kind_names[E_KINDS] = {
     "local count", "albedo", "quality", "nothing"};
 
 typedef struct world {
-    int n;
+    int n, timing;
     float *z;
     hfs_field f;
     hfs_lighting l;
@@ -173,12 +175,19 @@ static int apply_edit(world *w, int kind)
         l->albedo = uni(0.1, 1.0);
         return 1;
     case E_QUALITY:
-        switch (pick(6)) {
+        switch (pick(9)) {
         case 0: w->q.subsample = 1 << pick(3); break;
         case 1: w->q.k = 2 + 2 * pick(2); break;
         case 2: w->q.nphi_env = 8 << pick(2); break;
         case 3: w->q.nphi_key = 2 + pick(3); break;
         case 4: w->q.offset = 1 + pick(3); break;
+        case 5:
+            w->q.precision = pick(2) ? HFS_PRECISION_FP32 : HFS_PRECISION_FP16;
+            break;
+        case 6:
+            w->q.visibility = pick(2) ? HFS_VIS_WEDGE_TABLE : HFS_VIS_LEGENDRE;
+            break;
+        case 7: w->timing = pick(3); break; /* level 2 overwrites the grids with counts */
         default: w->q.local_full_swath = pick(2); break;
         }
         return 1;
@@ -242,6 +251,7 @@ int main(int argc, char **argv)
             while (!apply_edit(&w, kind));
         ++counts[kind];
         hfs_renderer_invalidate(fresh);
+        hfs_renderer_set_timing(planned, w.timing);
         const int ra = hfs_renderer_render(planned, &w.f, &w.l, &w.q, &a, NULL, NULL, &err);
         if (ra) {
             printf("FAIL: edit %d (%s): planned render: %s\n", e, kind_names[kind], err.msg);
