@@ -109,22 +109,6 @@ typedef struct render_ctx {
     const hfs_cpu_local *local; /* local lights (issue 4), NULL if none */
 } render_ctx;
 
-static int any_positive3f(const float v[3])
-{
-    return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f;
-}
-
-/* A key light contributes iff it is enabled and its brightest possible exit
- * radiance (normal incidence, no shadow) is not zero in double.  The second
- * condition only drops disks so small (alpha < ~1e-154) that their swath
- * width would underflow; their output is 0 in any case. */
-static int key_contributes(const hfs_key_light *k, double albedo)
-{
-    if (k->disabled || !any_positive3f(k->radiance))
-        return 0;
-    const double le = fmax(k->radiance[0], fmax(k->radiance[1], k->radiance[2]));
-    return albedo / PI * le * hfs_cap_irradiance(1.0, k->alpha) > 0.0;
-}
 
 /* The environment's exit radiance lies in [-neg, open + neg]: open = rho/pi
  * H.L is the unshadowed value and neg = rho * (negative part of L), 0 for a
@@ -345,7 +329,7 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
                 has_env |= l->env_sh[ch][k] != 0.0;
     int n_key = 0;
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i)
-        n_key += key_contributes(&l->key[i], l->albedo);
+        n_key += hfs_key_light_contributes(&l->key[i], l->albedo);
     int n_local = 0; /* local lights (issue 4) */
     for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
         n_local += hfs_cpu_local_contributes(&l->local[i]);
@@ -376,7 +360,7 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     }
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i) {
         const hfs_key_light *k = &l->key[i];
-        if (!key_contributes(k, l->albedo))
+        if (!hfs_key_light_contributes(k, l->albedo))
             continue;
         swath_job *job = &c.jobs[c.n_jobs++];
         job->vis_of = -1;

@@ -184,16 +184,13 @@ int hfs_gl_program_create(const hfs_gl *gl, const char *vert, const char *frag,
 typedef struct target_format {
     GLenum internal_format;
     const char *name;
-    int needs_float;      /* 0: always renderable, 1: half, 2: float32 */
+    int needs_half;       /* 1: needs GL_EXT_color_buffer_half_float */
 } target_format;
 
 static const target_format target_formats[] = {
     { GL_RGBA16F, "GL_RGBA16F", 1 },
     { GL_RG16F, "GL_RG16F", 1 },
     { GL_R16F, "GL_R16F", 1 },
-    { GL_RGBA32F, "GL_RGBA32F", 2 },
-    { GL_RG32F, "GL_RG32F", 2 },
-    { GL_R32F, "GL_R32F", 2 },
     { GL_RGBA8, "GL_RGBA8", 0 },
 };
 
@@ -215,12 +212,9 @@ int hfs_gl_target_create(const hfs_gl *gl, int width, int height, GLenum interna
         return hfs_fail(err, width < 1 || height < 1 ? HFS_E_INVALID : HFS_E_UNSUPPORTED,
                         "render target: %dx%d outside 1..%d (GL_MAX_TEXTURE_SIZE)",
                         width, height, (int)max_size);
-    if (f->needs_float == 1 && !gl->render_half_float)
+    if (f->needs_half && !gl->render_half_float)
         return hfs_fail(err, HFS_E_UNSUPPORTED, "render target: %s is not colour-renderable "
                         "(needs GL_EXT_color_buffer_half_float)", f->name);
-    if (f->needs_float == 2 && !gl->render_float)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "render target: %s is not colour-renderable "
-                        "(needs GL_EXT_color_buffer_float)", f->name);
     rc = hfs_gl_check(gl, "render target: pending error", err);
     if (rc)
         return rc;

@@ -53,8 +53,9 @@ typedef struct hfs_gl_target {
 } hfs_gl_target;
 
 /* internal_format: GL_RGBA16F, GL_RG16F, GL_R16F (need gl->render_half_float,
- * i.e. GL_EXT_color_buffer_half_float or _float on ES), GL_RGBA32F, GL_RG32F,
- * GL_R32F (need gl->render_float) or GL_RGBA8.  HFS_E_UNSUPPORTED when the
+ * i.e. GL_EXT_color_buffer_half_float or _float on ES) or GL_RGBA8: the
+ * product's formats (fp32 targets exist only in the renderer's es30-float
+ * comparison profile, chosen by gl_caps.c).  HFS_E_UNSUPPORTED when the
  * format is not renderable here (capability missing or framebuffer
  * incomplete).  Leaves the target's framebuffer bound to GL_FRAMEBUFFER and
  * TEXTURE_2D of the active unit unbound.  *t is zeroed on failure and must

@@ -166,6 +166,19 @@ void hfs_gles_plan_drop_grids(hfs_gles_plan *gp)
         hfs_plan_drop(&gp->p, gp->pr_key[i]);
 }
 
+void hfs_gles_plan_lost(hfs_gles_plan *gp, int grid, int key_horizons, int local_ratios)
+{
+    if (grid) {
+        hfs_gles_plan_drop_grids(gp);
+        return;
+    }
+    if (key_horizons)
+        for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i)
+            hfs_plan_drop(&gp->p, gp->pr_key[i]);
+    if (local_ratios)
+        hfs_plan_drop(&gp->p, gp->pr_local);
+}
+
 void hfs_gles_plan_report(const hfs_gles_plan *gp, hfs_frame_report *out)
 {
     memset(out, 0, sizeof *out);

@@ -88,6 +88,12 @@ void hfs_gles_plan_done(hfs_gles_plan *gp, int which);
 void hfs_gles_plan_drop_all(hfs_gles_plan *gp);
 void hfs_gles_plan_drop_grids(hfs_gles_plan *gp);
 
+/* Textures were reallocated: the whole visibility grid (env, keys, local),
+ * the key horizons, or the local ratios lost their contents.  Call before
+ * hfs_gles_plan_frame: the passes that wrote them then run again ("not
+ * computed yet"), and what reads them after. */
+void hfs_gles_plan_lost(hfs_gles_plan *gp, int grid, int key_horizons, int local_ratios);
+
 /* The last frame's steps as a report (public hfs_frame_report). */
 void hfs_gles_plan_report(const hfs_gles_plan *gp, hfs_frame_report *out);
 

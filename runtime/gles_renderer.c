@@ -187,19 +187,6 @@ static void *scratch(hfs_gles *g, size_t bytes)
     return g->scratch;
 }
 
-static int any_positive3f(const float v[3])
-{
-    return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f;
-}
-
-/* cpu_render.c key_contributes: the same lights contribute on both paths. */
-static int key_contributes(const hfs_key_light *k, double albedo)
-{
-    if (k->disabled || !any_positive3f(k->radiance))
-        return 0;
-    const double le = fmax(k->radiance[0], fmax(k->radiance[1], k->radiance[2]));
-    return albedo / PI * le * hfs_cap_irradiance(1.0, k->alpha) > 0.0;
-}
 
 /* ---- timing --------------------------------------------------------------------- */
 
@@ -1252,6 +1239,15 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
                                         "local-light visibility", err)))
         return rc;
 
+    /* Textures follow the frame's sizes; what a reallocated texture held is
+     * lost, and the planner is told so before it plans. */
+    const resources *rs = &g->r;
+    const unsigned gens[3] = {rs->grid_gen, rs->keyhz_gen, rs->localv_gen};
+    if ((rc = resources_ensure(g, &L, fr->key_layers, local_layers, err)))
+        return rc;
+    hfs_gles_plan_lost(&g->plan, rs->grid_gen != gens[0], rs->keyhz_gen != gens[1],
+                       rs->localv_gen != gens[2]);
+
     /* Plan: which passes this frame needs (gles_plan.h). */
     hfs_gles_frame_sig sig;
     frame_signature(fr, q, &L, &sig);
@@ -1261,31 +1257,17 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         g->terrain_valid = 0;
     if (hfs_gles_plan_frame(&g->plan, &sig, terrain_why) == 0 && g->last_img &&
         g->last_img_cap >= n_img) {
-        /* Nothing changed: no pass, no GL call; the last image again. */
+        /* Nothing changed: no pass; the last image again. */
         memcpy(out->rgb, g->last_img, n_img * sizeof *out->rgb);
         for (int p = 0; p < P_COUNT; ++p)
             g->pass_cached[p] = 1;
         return HFS_OK;
     }
     int *run = g->plan.run;
-    if (!run[GP_READBACK] && !(g->last_img && g->last_img_cap >= n_img))
-        run[GP_READBACK] = 1; /* no kept image (first frame after a failure) */
-    const resources *rs = &g->r;
-    const unsigned gens[3] = {rs->grid_gen, rs->keyhz_gen, rs->localv_gen};
-    if ((rc = resources_ensure(g, &L, fr->key_layers, local_layers, err)))
-        return rc;
-    /* Reallocated textures lost what they held: their passes run (and the
-     * shading that reads them). */
-    if (rs->grid_gen != gens[0] || rs->keyhz_gen != gens[1])
-        for (int i = 0; i < fr->n_keys; ++i)
-            run[GP_KEY0 + i] = run[GP_SHADE] = 1;
-    if (rs->grid_gen != gens[0] && fr->has_env)
-        run[GP_ENV] = run[GP_SHADE] = 1;
-    if ((rs->grid_gen != gens[0] || rs->localv_gen != gens[2]) && fr->n_local > 0)
-        run[GP_LOCAL] = run[GP_SHADE] = 1;
     /* The readback needs this frame's output scale, and a shaded frame is
-     * read back: the two go together. */
-    if (run[GP_SHADE] || run[GP_READBACK])
+     * read back: the two go together (as does a frame without a kept
+     * image, e.g. the first after a failure). */
+    if (run[GP_SHADE] || run[GP_READBACK] || !(g->last_img && g->last_img_cap >= n_img))
         run[GP_SHADE] = run[GP_READBACK] = 1;
 
     /* Terrain: upload, normals, pyramid. */
@@ -1660,7 +1642,7 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                 fr.has_env |= l->env_sh[c][k] != 0.0;
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i) {
         const hfs_key_light *k = &l->key[i];
-        if (!key_contributes(k, l->albedo))
+        if (!hfs_key_light_contributes(k, l->albedo))
             continue;
         frame_key *fk = &fr.keys[fr.n_keys++];
         /* The visible fraction comes from the swath's elevation window

@@ -91,3 +91,11 @@ int hfs_local_light_cap(const hfs_local_light *l, const double p[3],
     *alpha = asin(l->radius / d);
     return 0;
 }
+
+int hfs_key_light_contributes(const hfs_key_light *k, double albedo)
+{
+    if (k->disabled || !(k->radiance[0] > 0.0f || k->radiance[1] > 0.0f || k->radiance[2] > 0.0f))
+        return 0;
+    const double le = fmax(k->radiance[0], fmax(k->radiance[1], k->radiance[2]));
+    return albedo / 3.14159265358979323846 * le * hfs_cap_irradiance(1.0, k->alpha) > 0.0;
+}

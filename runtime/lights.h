@@ -14,6 +14,13 @@
  * Multiply by radiance and rho/pi for exit radiance. */
 double hfs_cap_irradiance(double cos_beta, double alpha);
 
+/* A key light contributes iff it is enabled and its brightest possible exit
+ * radiance (normal incidence, no shadow) is not zero in double; every
+ * backend skips exactly the same lights.  The second condition only drops
+ * disks so small (alpha < ~1e-154) that their swath width would underflow;
+ * their output is 0 in any case. */
+int hfs_key_light_contributes(const hfs_key_light *k, double albedo);
+
 /* A local light seen from receiver point p (world units): unit direction
  * toward its centre, distance to the centre, and the cap half-angle
  * asin(r/d) (pi when p is inside or on the sphere, in which case dir is +z

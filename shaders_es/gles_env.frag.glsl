@@ -61,9 +61,9 @@ float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, 
 vec4 hfs_nlp_occ_tan(float t);
 vec4 hfs_f16v(vec4 v);
 void hfs_sh_hemisphere(vec3 n, out vec4 h[4]);
-void hfs_sh_rotz(inout vec4 t[4], vec3 c, vec3 s);
-void hfs_sh_mirror_y(inout vec4 t[4]);
 float hfs_table_coord(float omega, float n);
+void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror, vec3 c,
+                   vec3 s, inout vec4 V[4]);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
 uniform highp sampler2D u_normals;       /* full resolution, texelFetch */
@@ -95,13 +95,8 @@ layout(location = 3) out vec4 o_v3;
 void add_wedge(inout vec4 V[4], float a, float b, int w)
 {
     float n = float(HFS_TABLE_N);
-    vec2 uv = vec2(hfs_table_coord(a, n), hfs_table_coord(b, n));
-    vec4 t[4];
-    for (int g = 0; g < 4; ++g)
-        t[g] = texture(u_tab, vec3(uv, float(g)));
-    hfs_sh_rotz(t, u_rot[2 * w].xyz, u_rot[2 * w + 1].xyz);
-    for (int g = 0; g < 4; ++g)
-        V[g] += t[g];
+    hfs_table_add(u_tab, vec2(hfs_table_coord(a, n), hfs_table_coord(b, n)), 0.0, false,
+                  u_rot[2 * w].xyz, u_rot[2 * w + 1].xyz, V);
 }
 #endif
 

@@ -220,6 +220,24 @@ float hfs_table_coord(float omega, float n)
     return (u + 0.5) / n;
 }
 
+/* V += one wedge's table placed in the sky: the four layers layer0..+3 of
+ * `tab` at uv (the wedge's horizon pair, hfs_table_coord), mirrored in y
+ * when `mirror` (a start boundary wedge), rotated about z by (cos ma),
+ * (sin ma) (runtime/cpu_visibility.c table_placement).  Shared by the
+ * environment, key and local passes' wedge-table paths. */
+void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror, vec3 c,
+                   vec3 s, inout vec4 V[4])
+{
+    vec4 t[4];
+    for (int g = 0; g < 4; ++g)
+        t[g] = texture(tab, vec3(uv, layer0 + float(g)));
+    if (mirror)
+        hfs_sh_mirror_y(t);
+    hfs_sh_rotz(t, c, s);
+    for (int g = 0; g < 4; ++g)
+        V[g] += t[g];
+}
+
 /* ---- lights ------------------------------------------------------------------ */
 
 /* Irradiance of a uniform cap whose half-angle (< pi/2) has sine s and

@@ -81,8 +81,9 @@ float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, 
 void hfs_bspline_push(inout float best, inout vec4 w, float a, int i);
 float hfs_bspline_close(float best, vec4 w);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
-void hfs_sh_rotz(inout vec4 t[4], vec3 c, vec3 s);
 float hfs_table_coord(float omega, float n);
+void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror, vec3 c,
+                   vec3 s, inout vec4 V[4]);
 
 uniform highp sampler2DArray u_levels;
 uniform highp sampler2D u_normals;
@@ -109,13 +110,8 @@ uniform highp sampler2DArray u_tab;      /* interior wedge table, 4 layers */
 void local_wedge(inout vec4 V[4], float a, float b, int w)
 {
     float n = float(HFS_TABLE_N);
-    vec2 uv = vec2(hfs_table_coord(a, n), hfs_table_coord(b, n));
-    vec4 t[4];
-    for (int g = 0; g < 4; ++g)
-        t[g] = texture(u_tab, vec3(uv, float(g)));
-    hfs_sh_rotz(t, u_lrot[2 * w].xyz, u_lrot[2 * w + 1].xyz);
-    for (int g = 0; g < 4; ++g)
-        V[g] += t[g];
+    hfs_table_add(u_tab, vec2(hfs_table_coord(a, n), hfs_table_coord(b, n)), 0.0, false,
+                  u_lrot[2 * w].xyz, u_lrot[2 * w + 1].xyz, V);
 }
 #endif
 
@@ -210,8 +206,9 @@ float local_entry(vec3 v, float c_tan, vec2 cs, float ce, float se)
     return max(t * ce, 0.0);
 }
 
-/* Visibility ratio of light q at receiver p (normal n, lifted point pw). */
-float local_ratio(ivec2 p, vec3 n, vec3 pw, int q)
+/* Visibility ratio of light q at receiver p (normal n, its clamped cosine
+ * Hn as SH, lifted point pw). */
+float local_ratio(ivec2 p, vec3 n, vec4 Hn[4], vec3 pw, int q)
 {
     float dx = u_lg.x;
     int nphi = int(u_lq.x);
@@ -236,12 +233,13 @@ float local_ratio(ivec2 p, vec3 n, vec3 pw, int q)
      * receiver's plane replaced by the one facing the light (tilted up to
      * at least 0.05 in z, so that its floors stay below a light that is
      * lower than the receiver). */
+    vec4 H[4] = Hn;
     if (!(hfs_cap_irradiance(dot(n, dir), alpha) > 0.0)) {
         vec3 nf = vec3(dir.xy, max(dir.z, 0.05));
         n = nf / length(nf);
+        hfs_sh_cosine(n, H);
     }
-    vec4 H[4], L[4], M[4];
-    hfs_sh_cosine(n, H);
+    vec4 L[4], M[4];
     local_cap_sh(alpha, dir, L);
     hfs_sh_product(H, L, M);
 
@@ -424,9 +422,11 @@ void main()
     float z = u_lg.w * (u_lg.y + u_lg.z * hfs_h(g_hx[HFS_NLAYERS - 1]));
     vec3 pw = vec3(vec2(p) * u_lg.x, z + 1e-4 * u_lg.x);
 
+    vec4 H[4];
+    hfs_sh_cosine(n, H); /* shared by the lights that see above the plane */
     float ratio[2 * HFS_NOUT];
     for (int q = 0; q < 2 * HFS_NOUT; ++q)
-        ratio[q] = q < u_nl ? local_ratio(p, n, pw, u_light0 + q) : 0.0;
+        ratio[q] = q < u_nl ? local_ratio(p, n, H, pw, u_light0 + q) : 0.0;
 #ifdef HFS_COUNT
     o_r0 = vec4(float(g_fetches % 1024), float(g_fetches / 1024), 0.0, 0.0);
 #if HFS_NOUT > 1

@@ -51,9 +51,9 @@ vec4 hfs_visible(float omega, vec4 win, vec4 occ_top);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 void hfs_sh_hemisphere(vec3 n, out vec4 h[4]);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
-void hfs_sh_rotz(inout vec4 t[4], vec3 c, vec3 s);
-void hfs_sh_mirror_y(inout vec4 t[4]);
 float hfs_table_coord(float omega, float n);
+void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror, vec3 c,
+                   vec3 s, inout vec4 V[4]);
 float hfs_cap_irradiance(float cos_beta, float alpha);
 float hfs_cap_irradiance_sc(float cos_beta, float s, float c);
 vec4 hfs_f16v(vec4 v);
@@ -101,22 +101,14 @@ vec2 grid_uv(ivec2 p)
 #ifdef HFS_TABLES
 void tab_add(inout vec4 V[4], float a, float b, bool boundary, int rot, float set)
 {
-    vec4 t[4];
     float n = float(HFS_TABLE_N);
-    if (boundary) {
-        vec2 uv = vec2(hfs_table_coord(a, n), 0.5);
-        for (int g = 0; g < 4; ++g)
-            t[g] = texture(u_ktabb, vec3(uv, 4.0 * set + float(g)));
-    } else {
-        vec2 uv = vec2(hfs_table_coord(a, n), hfs_table_coord(b, n));
-        for (int g = 0; g < 4; ++g)
-            t[g] = texture(u_ktab, vec3(uv, 4.0 * set + float(g)));
-    }
-    if (u_k[rot].w > 0.5)
-        hfs_sh_mirror_y(t);
-    hfs_sh_rotz(t, u_k[rot].xyz, u_k[rot + 1].xyz);
-    for (int g = 0; g < 4; ++g)
-        V[g] += t[g];
+    bool mirror = u_k[rot].w > 0.5;
+    if (boundary)
+        hfs_table_add(u_ktabb, vec2(hfs_table_coord(a, n), 0.5), 4.0 * set, mirror,
+                      u_k[rot].xyz, u_k[rot + 1].xyz, V);
+    else
+        hfs_table_add(u_ktab, vec2(hfs_table_coord(a, n), hfs_table_coord(b, n)), 4.0 * set,
+                      mirror, u_k[rot].xyz, u_k[rot + 1].xyz, V);
 }
 #endif
 

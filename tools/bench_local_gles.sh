@@ -13,9 +13,7 @@ F=${2:-5}
 HFS=$B/tools/hfshade
 C=$B/bench-local
 mkdir -p "$C"
-# The same lights as tools/bench_local.sh.
-CONES=(64,64,12,2,100 20,20,6,1.5,60 100,110,25,3,150 50,110,4,1,40 110,60,8,1,50 70,15,3,1,30 30,70,15,2,80 90,80,30,4,200)
-PANEL=(48,48,7,1.5,50 80,20,6,1,40 20,80,9,2,60 112,100,3,0.8,30 60,90,8,1,50 16,16,6,1,40 100,48,10,2,80 40,110,5,1,40)
+. tools/bench_local_lights.sh
 "$B/tools/hfgen" cones --size 128x128 -o "$C/cones.pfm"
 "$B/tools/hfgen" panel --size 128x128 -o "$C/panel.pfm"
 echo "| scene | lights | swath | sub | GLES frame ms (median of $F) | local pass ms | shade pass ms | mean abs vs truth | rel. mean vs truth | mean abs vs cpu |"
