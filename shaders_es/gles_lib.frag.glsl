@@ -140,6 +140,27 @@ vec4 hfs_visible(float omega, vec4 win, vec4 occ_top)
 
 /* ---- SH: coefficient k lives in v[k / 4][k % 4] ---------------------------- */
 
+/* The 16 basis functions y_k(d) of unit d (SPEC's real SH, no
+ * Condon-Shortley phase).  A zonal function rotated to d is its band
+ * factors times these; hfs_sh_cosine and hfs_sh_hemisphere below spell
+ * them out instead because they run per texel and have a zero band whose
+ * products the compiler may not drop (0 * x is not 0 for NaN and -0). */
+void hfs_sh_basis(vec3 d, out vec4 y[4])
+{
+    float x = d.x, yy = d.y, z = d.z;
+    y[0] = vec4(0.28209479177387814, 0.4886025119029199 * yy, 0.4886025119029199 * z,
+                0.4886025119029199 * x);
+    y[1] = vec4(1.0925484305920792 * x * yy, 1.0925484305920792 * yy * z,
+                0.31539156525252005 * (3.0 * z * z - 1.0), 1.0925484305920792 * x * z);
+    y[2] = vec4(0.5462742152960396 * (x * x - yy * yy),
+                0.5900435899266435 * yy * (3.0 * x * x - yy * yy), 2.890611442640554 * x * yy * z,
+                0.4570457994644658 * yy * (5.0 * z * z - 1.0));
+    y[3] = vec4(0.3731763325901154 * z * (5.0 * z * z - 3.0),
+                0.4570457994644658 * x * (5.0 * z * z - 1.0),
+                1.445305721320277 * z * (x * x - yy * yy),
+                0.5900435899266435 * x * (x * x - 3.0 * yy * yy));
+}
+
 /* The clamped cosine about unit n as SH (hfs_sh_rotate_zonal of
  * hfs_zh_clamped_cosine): band factors sqrt(4pi/(2l+1)) zh_l = pi, 2pi/3,
  * pi/4, 0 times y_k(n). */

@@ -82,6 +82,7 @@ void hfs_bspline_push(inout float best, inout vec4 w, float a, int i);
 float hfs_bspline_close(float best, vec4 w);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
 float hfs_table_coord(float omega, float n);
+void hfs_sh_basis(vec3 d, out vec4 y[4]);
 void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror, vec3 c,
                    vec3 s, inout vec4 V[4]);
 
@@ -181,19 +182,12 @@ void local_cap_sh(float alpha, vec3 d, out vec4 L[4])
     float c = cos(alpha), s = sin(alpha), s2 = s * s, h = sin(0.5 * alpha);
     float f0 = 12.566370614359172 * h * h, f1 = 3.141592653589793 * s2;
     float f2 = f1 * c, f3 = 0.7853981633974483 * s2 * (5.0 * c * c - 1.0);
-    float x = d.x, y = d.y, z = d.z;
-    float a1 = f1 * 0.4886025119029199;
-    L[0] = vec4(f0 * 0.28209479177387814, a1 * y, a1 * z, a1 * x);
-    L[1] = vec4(f2 * 1.0925484305920792 * x * y, f2 * 1.0925484305920792 * y * z,
-                f2 * 0.31539156525252005 * (3.0 * z * z - 1.0), f2 * 1.0925484305920792 * x * z);
-    L[2] = vec4(f2 * 0.5462742152960396 * (x * x - y * y),
-                f3 * 0.5900435899266435 * y * (3.0 * x * x - y * y),
-                f3 * 2.890611442640554 * x * y * z,
-                f3 * 0.4570457994644658 * y * (5.0 * z * z - 1.0));
-    L[3] = vec4(f3 * 0.3731763325901154 * z * (5.0 * z * z - 3.0),
-                f3 * 0.4570457994644658 * x * (5.0 * z * z - 1.0),
-                f3 * 1.445305721320277 * z * (x * x - y * y),
-                f3 * 0.5900435899266435 * x * (x * x - 3.0 * y * y));
+    vec4 y[4];
+    hfs_sh_basis(d, y);
+    L[0] = y[0] * vec4(f0, f1, f1, f1);
+    L[1] = y[1] * f2;
+    L[2] = y[2] * vec4(f2, f3, f3, f3);
+    L[3] = y[3] * f3;
 }
 
 /* Horizontal distance at which the ray (azimuth cs, elevation (ce, se))
