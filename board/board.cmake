@@ -11,6 +11,7 @@ pkg_check_modules(HFS_EGL REQUIRED IMPORTED_TARGET egl)
 add_library(hfs_board STATIC
   ${CMAKE_CURRENT_LIST_DIR}/gl_context.c
   ${CMAKE_CURRENT_LIST_DIR}/egl_surfaceless.c
+  ${CMAKE_CURRENT_LIST_DIR}/egl_util.c
   ${CMAKE_CURRENT_LIST_DIR}/osmesa.c)
 target_include_directories(hfs_board PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_compile_definitions(hfs_board PRIVATE HFS_BUILDING_LIBRARY)

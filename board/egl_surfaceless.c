@@ -16,6 +16,7 @@
  * EGL_KHR_surfaceless_context.  GL function pointers come from
  * eglGetProcAddress (EGL_KHR_get_all_proc_addresses / EGL 1.5).
  */
+#include "egl_util.h"
 #include "gl_context_backend.h"
 
 #include <EGL/egl.h>
@@ -31,45 +32,10 @@ typedef struct surfaceless_context {
     int terminate_display; /* EGL_KHR_display_reference: ours to release */
 } surfaceless_context;
 
-static const char *egl_error_name(EGLint code)
-{
-    switch (code) {
-    case EGL_SUCCESS: return "EGL_SUCCESS";
-    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-    case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
-    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-    case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
-    case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
-    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
-    case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
-    default: return "unknown EGL error";
-    }
-}
-
-/* Whole-word match in a space-separated extension string. */
-static int has_word(const char *list, const char *word)
-{
-    size_t n = strlen(word);
-    for (const char *p = list; p && (p = strstr(p, word)) != NULL; p += n) {
-        int starts = p == list || p[-1] == ' ';
-        int ends = p[n] == '\0' || p[n] == ' ';
-        if (starts && ends)
-            return 1;
-    }
-    return 0;
-}
-
 static int egl_fail(hfs_error *err, const char *what)
 {
     EGLint code = eglGetError();
-    return hfs_fail(err, HFS_E_CONTEXT, "%s failed (%s)", what, egl_error_name(code));
+    return hfs_fail(err, HFS_E_CONTEXT, "%s failed (%s)", what, hfs_egl_error_name(code));
 }
 
 static void surfaceless_destroy(hfs_gl_context *base)
@@ -98,8 +64,8 @@ static int surfaceless_create(hfs_gl_context **out, hfs_error *err)
     /* Client extensions: NULL (EGL_BAD_DISPLAY) means EGL_EXT_client_extensions
      * is missing, so no platform extension can be present either. */
     const char *client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (!client || !has_word(client, "EGL_EXT_platform_base") ||
-        !has_word(client, "EGL_MESA_platform_surfaceless")) {
+    if (!client || !hfs_egl_has_word(client, "EGL_EXT_platform_base") ||
+        !hfs_egl_has_word(client, "EGL_MESA_platform_surfaceless")) {
         rc = hfs_fail(err, HFS_E_CONTEXT,
                       "EGL_MESA_platform_surfaceless not offered by this libEGL");
         goto err_free;
@@ -111,7 +77,7 @@ static int surfaceless_create(hfs_gl_context **out, hfs_error *err)
         goto err_free;
     }
     const EGLint track[] = { EGL_TRACK_REFERENCES_KHR, EGL_TRUE, EGL_NONE };
-    c->terminate_display = has_word(client, "EGL_KHR_display_reference");
+    c->terminate_display = hfs_egl_has_word(client, "EGL_KHR_display_reference");
     c->display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
                                       c->terminate_display ? track : NULL);
     if (c->display == EGL_NO_DISPLAY) {
@@ -127,14 +93,14 @@ static int surfaceless_create(hfs_gl_context **out, hfs_error *err)
     }
 
     const char *exts = eglQueryString(c->display, EGL_EXTENSIONS);
-    if (!has_word(exts, "EGL_KHR_surfaceless_context")) {
+    if (!hfs_egl_has_word(exts, "EGL_KHR_surfaceless_context")) {
         rc = hfs_fail(err, HFS_E_CONTEXT, "EGL_KHR_surfaceless_context missing (EGL %d.%d)",
                       major, minor);
         goto err_terminate;
     }
     /* ES 3 needs EGL_OPENGL_ES3_BIT and EGL_CONTEXT_MAJOR_VERSION: EGL 1.5 or
      * EGL_KHR_create_context. */
-    if (!(major > 1 || minor >= 5) && !has_word(exts, "EGL_KHR_create_context")) {
+    if (!(major > 1 || minor >= 5) && !hfs_egl_has_word(exts, "EGL_KHR_create_context")) {
         rc = hfs_fail(err, HFS_E_CONTEXT, "EGL %d.%d without EGL_KHR_create_context "
                       "cannot make an ES 3 context", major, minor);
         goto err_terminate;
@@ -157,7 +123,7 @@ static int surfaceless_create(hfs_gl_context **out, hfs_error *err)
         goto err_terminate;
     }
     if (n_configs < 1) {
-        if (!has_word(exts, "EGL_KHR_no_config_context")) {
+        if (!hfs_egl_has_word(exts, "EGL_KHR_no_config_context")) {
             rc = hfs_fail(err, HFS_E_CONTEXT, "no EGL config with EGL_OPENGL_ES3_BIT");
             goto err_terminate;
         }

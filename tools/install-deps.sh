@@ -5,10 +5,14 @@ set -eu
 # clang, libclang-rt-14-dev (libFuzzer and the sanitizer runtimes of
 # Debian 12's clang 14, only recommended by clang) and llvm (llvm-symbolizer
 # for readable reports) are for tools/fuzz.sh; gnuplot-nox draws hfbench's
-# plots.
+# plots.  libx11-dev, libgbm-dev and libdrm-dev build the x11 and kms
+# displays (board/DISPLAY.md); xvfb and xauth run the window test.
+# libgpiod-dev and libevdev-dev are the input sources (board/DEVICES.md);
+# umockdev emulates an evdev node for their test.
 PKGS="build-essential cmake pkg-config libpng-dev libinih-dev libstb-dev
       libopenexr-dev libegl-dev libgles-dev libosmesa6-dev libegl-mesa0
-      libgl1-mesa-dri glslang-tools clang libclang-rt-14-dev llvm gnuplot-nox"
+      libgl1-mesa-dri glslang-tools clang libclang-rt-14-dev llvm gnuplot-nox
+      libx11-dev libgbm-dev libdrm-dev xvfb xauth libgpiod-dev libevdev-dev umockdev"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"

@@ -224,6 +224,23 @@ HFS_API int hfs_png_write(const char *path, const hfs_image *img,
                           const hfs_png_opts *opts, hfs_error *err);
 
 /*
+ * The per-channel mapping of hfs_png_write, for code that displays frames
+ * (board/frame_image.h) and must produce the same bytes as the PNG:
+ * tonemap(exposure * v) -> sRGB OETF -> round(255 * y).  exposure must be
+ * > 0 and finite (not checked here: 0 is NOT "default" in this function);
+ * v must be finite.
+ */
+HFS_API unsigned char hfs_srgb8_encode(float v, double exposure, hfs_tonemap tonemap);
+
+/*
+ * 8-bit RGBA PNG of pixels that are already display-encoded (sRGB, e.g. a
+ * screen capture): width*height*4 bytes, top row first, written unchanged
+ * with an sRGB chunk.  At most HFS_HEIGHT_MAX_DIM per side.
+ */
+HFS_API int hfs_png_write_rgba8(const char *path, int width, int height,
+                                const uint8_t *rgba, hfs_error *err);
+
+/*
  * 16-bit grey PNG of a height field (the inverse of the PNG loader): each
  * value is rounded to the nearest integer and must lie in [0, 65535]; values
  * outside, NaN or Inf are an error (HFS_E_INVALID) rather than clamped.

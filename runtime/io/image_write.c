@@ -6,7 +6,8 @@
  * "Pf" grey (Rec. 709 luminance in double: exact when R = G = B) or "PF" RGB.
  * PNG 8-bit: x -> tonemap(exposure * x) -> sRGB OETF -> round(255 y), with an
  * sRGB chunk so viewers do not re-apply a gamma.  PNG 16-bit grey: the inverse
- * of the PNG height loader.
+ * of the PNG height loader.  PNG 8-bit RGBA: already display-encoded pixels
+ * (the boards' screen captures), written as they are.
  *
  * Invariants: inputs are validated completely (sizes, NaN/Inf, ranges) before
  * any file is created, so bad input never even leaves a temporary; libpng
@@ -127,6 +128,7 @@ struct png_job {
     unsigned char *row;
     void (*fill)(const png_job *job, int j, unsigned char *row);
     const float *src;
+    const unsigned char *src8; /* fill_rgba8 */
     double exposure;
     hfs_tonemap tonemap;
     char msg[200];
@@ -150,17 +152,29 @@ static double srgb_oetf(double x)
     return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
 }
 
+/* The display mapping of every 8-bit output (this writer, and the boards'
+ * displays through board/frame_image.c), kept in one place so that a frame
+ * on screen and its PNG are the same bytes. */
+unsigned char hfs_srgb8_encode(float v, double exposure, hfs_tonemap tonemap)
+{
+    double x = exposure * v;
+    if (tonemap == HFS_TONEMAP_REINHARD)
+        x = x > 0.0 ? x / (1.0 + x) : 0.0;
+    else
+        x = x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x;
+    return (unsigned char)lrint(255.0 * srgb_oetf(x));
+}
+
 static void fill_srgb8(const png_job *job, int j, unsigned char *row)
 {
     const float *src = job->src + (size_t)j * (size_t)job->w * 3;
-    for (size_t k = 0; k < (size_t)job->w * 3; ++k) {
-        double x = job->exposure * src[k];
-        if (job->tonemap == HFS_TONEMAP_REINHARD)
-            x = x > 0.0 ? x / (1.0 + x) : 0.0;
-        else
-            x = x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x;
-        row[k] = (unsigned char)lrint(255.0 * srgb_oetf(x));
-    }
+    for (size_t k = 0; k < (size_t)job->w * 3; ++k)
+        row[k] = hfs_srgb8_encode(src[k], job->exposure, job->tonemap);
+}
+
+static void fill_rgba8(const png_job *job, int j, unsigned char *row)
+{
+    memcpy(row, job->src8 + (size_t)j * (size_t)job->w * 4, (size_t)job->w * 4);
 }
 
 static void fill_grey16(const png_job *job, int j, unsigned char *row)
@@ -181,7 +195,7 @@ static int png_emit(png_job *job, png_structp png, png_infop info, FILE *f)
     png_init_io(png, f);
     png_set_IHDR(png, info, (png_uint_32)job->w, (png_uint_32)job->h, job->depth, job->ctype,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    if (job->ctype == PNG_COLOR_TYPE_RGB)
+    if (job->ctype == PNG_COLOR_TYPE_RGB || job->ctype == PNG_COLOR_TYPE_RGB_ALPHA)
         png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_write_info(png, info);
     for (int j = 0; j < job->h; ++j) {
@@ -197,7 +211,9 @@ static int png_write_job(png_job *job, hfs_error *err)
     hfs_io_atomic a;
     png_structp png = NULL;
     png_infop info = NULL;
-    size_t bpp = job->ctype == PNG_COLOR_TYPE_RGB ? 3 : (size_t)job->depth / 8;
+    size_t bpp = job->ctype == PNG_COLOR_TYPE_RGB         ? 3
+                 : job->ctype == PNG_COLOR_TYPE_RGB_ALPHA ? 4
+                                                          : (size_t)job->depth / 8;
     int rc;
 
     job->row = malloc((size_t)job->w * bpp);
@@ -274,5 +290,28 @@ int hfs_png16_write_grey(const char *path, int width, int height, const float *v
     job.ctype = PNG_COLOR_TYPE_GRAY;
     job.fill = fill_grey16;
     job.src = v;
+    return png_write_job(&job, err);
+}
+
+int hfs_png_write_rgba8(const char *path, int width, int height, const uint8_t *rgba,
+                        hfs_error *err)
+{
+    png_job job;
+
+    if (!path || !*path)
+        return hfs_fail(err, HFS_E_INVALID, "(no file): empty output path");
+    if (!rgba || width < 1 || height < 1)
+        return hfs_fail(err, HFS_E_INVALID, "%s: nothing to write (empty image)", path);
+    if (width > HFS_HEIGHT_MAX_DIM || height > HFS_HEIGHT_MAX_DIM)
+        return hfs_fail(err, HFS_E_INVALID, "%s: image %dx%d is too large to write", path,
+                        width, height);
+    memset(&job, 0, sizeof job);
+    job.path = path;
+    job.w = width;
+    job.h = height;
+    job.depth = 8;
+    job.ctype = PNG_COLOR_TYPE_RGB_ALPHA;
+    job.fill = fill_rgba8;
+    job.src8 = rgba;
     return png_write_job(&job, err);
 }

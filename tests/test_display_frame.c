@@ -1,0 +1,186 @@
+/*
+ * test_display_frame.c — the display's pure parts (label "unit"):
+ *   - frame_image: the picture equals the PNG writer's bytes for the same
+ *     render (clamp and Reinhard, exposure), rows reversed (row j = 0 at
+ *     the bottom), alpha 255; bad inputs are refused without writing.
+ *   - overlay: the exact pixels of a digit at scale 1 and 2, the box, and
+ *     clipping at every edge (ASan checks the writes).
+ *   - the fit of a picture on a screen (1:1, integer, letterbox, pillarbox).
+ * Run from the build directory (writes display_frame_*.png there).
+ */
+#include "display_backend.h"
+#include "frame_image.h"
+#include "overlay.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "test_display_util.h"
+
+static void check_frame_vs_png(const hfs_png_opts *o, const char *path)
+{
+    enum { W = 7, H = 5 };
+    hfs_image img = {0};
+    hfs_error err = {""};
+    CHECK(hfs_image_alloc(&img, W, H, &err) == 0, "%s", err.msg);
+    /* Every regime of the mapping: negative, 0, the linear toe of the sRGB
+     * curve, mid-tones, 1 and beyond, large. */
+    for (int k = 0; k < W * H * 3; ++k)
+        img.rgb[k] = (float)(k % 11 == 0 ? -0.25 : 0.0021 * pow(1.37, k % 29) - 0.001 * (k % 3));
+    img.rgb[5] = 0.0f;
+    img.rgb[6] = 1.0f;
+    img.rgb[7] = 1e6f;
+
+    uint8_t frame[W * H * 4];
+    CHECK(hfs_frame_to_rgba8(&img, o, frame, &err) == 0, "%s", err.msg);
+    CHECK(hfs_png_write(path, &img, o, &err) == 0, "%s", err.msg);
+    int pw = 0, ph = 0;
+    uint8_t *png = read_png_rgba(path, &pw, &ph);
+    CHECK(png && pw == W && ph == H, "%s: cannot read back", path);
+    for (int j = 0; png && j < H; ++j)
+        for (int i = 0; i < W; ++i) {
+            const uint8_t *f = frame + ((size_t)(H - 1 - j) * W + (size_t)i) * 4;
+            const uint8_t *p = png + ((size_t)j * W + (size_t)i) * 4;
+            CHECK(!memcmp(f, p, 3), "texel (%d,%d): frame %u,%u,%u png %u,%u,%u", i, j, f[0],
+                  f[1], f[2], p[0], p[1], p[2]);
+            CHECK(f[3] == 255, "alpha %u", f[3]);
+        }
+    free(png);
+    hfs_image_free(&img);
+}
+
+static void check_frame_errors(void)
+{
+    hfs_image img = {0};
+    hfs_error err = {""};
+    uint8_t out[2 * 2 * 4], before[sizeof out];
+    hfs_image_alloc(&img, 2, 2, &err);
+    memset(img.rgb, 0, 12 * sizeof(float));
+    memset(out, 0x5a, sizeof out);
+    memcpy(before, out, sizeof out);
+    img.rgb[7] = NAN;
+    CHECK(hfs_frame_to_rgba8(&img, NULL, out, &err) == HFS_E_INVALID, "NaN accepted");
+    CHECK(strstr(err.msg, "(0, 1)") != NULL, "NaN not located: %s", err.msg);
+    img.rgb[7] = 0.0f;
+    hfs_png_opts o = {.exposure = -1.0};
+    CHECK(hfs_frame_to_rgba8(&img, &o, out, &err) == HFS_E_INVALID, "negative exposure");
+    o.exposure = INFINITY;
+    CHECK(hfs_frame_to_rgba8(&img, &o, out, &err) == HFS_E_INVALID, "infinite exposure");
+    o.exposure = 1.0;
+    o.tonemap = (hfs_tonemap)7;
+    CHECK(hfs_frame_to_rgba8(&img, &o, out, &err) == HFS_E_INVALID, "bad tone map");
+    CHECK(!memcmp(out, before, sizeof out), "output written on failure");
+    CHECK(hfs_frame_to_rgba8(NULL, NULL, out, &err) == HFS_E_INVALID, "NULL image");
+    CHECK(hfs_frame_to_rgba8(&img, NULL, NULL, &err) == HFS_E_INVALID, "NULL output");
+    hfs_image_free(&img);
+}
+
+/* The '1' glyph of the font, as it must appear (bit 4 = left). */
+static const char *const one_rows[7] = {
+    "..#..",
+    ".##..",
+    "..#..",
+    "..#..",
+    "..#..",
+    "..#..",
+    ".###.",
+};
+
+static void check_overlay_digit(int scale)
+{
+    enum { W = 24, H = 24 };
+    uint8_t px[W * H * 4];
+    const uint8_t fg[4] = {255, 255, 255, 255}, bg[4] = {0, 0, 0, 255};
+    memset(px, 100, sizeof px);
+    const int x0 = 3, y0 = 2;
+    hfs_overlay_text(px, W, H, x0, y0, scale, "1", fg, bg);
+    int bw, bh;
+    hfs_overlay_text_size("1", scale, &bw, &bh);
+    CHECK(bw == 7 * scale && bh == 9 * scale, "box %dx%d at scale %d", bw, bh, scale);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const uint8_t *p = px + ((size_t)y * W + (size_t)x) * 4;
+            int in_box = x >= x0 && x < x0 + bw && y >= y0 && y < y0 + bh;
+            int gx = (x - x0) / scale - 1, gy = (y - y0) / scale - 1;
+            int on = in_box && gx >= 0 && gx < 5 && gy >= 0 && gy < 7 &&
+                     one_rows[gy][gx] == '#';
+            uint8_t want = on ? 255 : in_box ? 0 : 100;
+            CHECK(p[0] == want && p[1] == want && p[2] == want,
+                  "scale %d pixel (%d,%d) = %u, want %u", scale, x, y, p[0], want);
+        }
+    uint8_t rows[7];
+    CHECK(hfs_overlay_glyph('1', rows) == 1, "'1' missing");
+    CHECK(rows[0] == 0x04 && rows[1] == 0x0C && rows[6] == 0x0E, "'1' rows changed");
+    CHECK(hfs_overlay_glyph('\x01', rows) == 0, "control character claimed");
+    uint8_t q[7];
+    hfs_overlay_glyph('?', q);
+    CHECK(!memcmp(rows, q, 7), "unknown character is not drawn as '?'");
+}
+
+static void check_overlay_clipping(void)
+{
+    enum { W = 10, H = 6 };
+    /* Guard bytes around the picture catch writes outside it even without
+     * ASan. */
+    uint8_t buf[(W * H + 8) * 4];
+    uint8_t *px = buf + 16;
+    const uint8_t fg[4] = {255, 0, 0, 255}, bg[4] = {0, 0, 255, 128};
+    const char *text = "12.3 ms 7/9 100% :";
+    static const int pos[][2] = {{-50, -3}, {-7, 2}, {8, -8}, {9, 5}, {0, 0},
+                                 {-2147483647, 0}, {2147483647, 2147483647}, {3, -20}};
+    for (size_t t = 0; t < sizeof pos / sizeof pos[0]; ++t)
+        for (int scale = 0; scale <= 3; ++scale) {
+            memset(buf, 0xee, sizeof buf);
+            memset(px, 10, (size_t)W * H * 4);
+            hfs_overlay_text(px, W, H, pos[t][0], pos[t][1], scale, text, fg, bg);
+            for (int k = 0; k < 16; ++k)
+                CHECK(buf[k] == 0xee && buf[sizeof buf - 1 - k] == 0xee,
+                      "write outside the picture at (%d,%d) scale %d", pos[t][0], pos[t][1],
+                      scale);
+        }
+    /* Half-transparent box: 50% blue over grey 10. */
+    memset(px, 10, (size_t)W * H * 4);
+    hfs_overlay_text(px, W, H, 0, 0, 1, " ", fg, bg);
+    CHECK(px[0] == 5 && px[1] == 5 && px[2] == 133, "blend gave %u,%u,%u", px[0], px[1], px[2]);
+    int w = -1, h = -1;
+    hfs_overlay_text_size("", 2, &w, &h);
+    CHECK(w == 0 && h == 0, "empty text has size %dx%d", w, h);
+}
+
+static void check_fit(void)
+{
+    hfs_display_fit f = hfs_display_fit_rect(64, 48, 64, 48);
+    CHECK(f.x == 0 && f.y == 0 && f.w == 64 && f.h == 48 && f.nearest, "1:1");
+    f = hfs_display_fit_rect(64, 48, 128, 96);
+    CHECK(f.x == 0 && f.y == 0 && f.w == 128 && f.h == 96 && f.nearest, "2x");
+    f = hfs_display_fit_rect(64, 48, 100, 100);
+    CHECK(f.x == 0 && f.y == 12 && f.w == 100 && f.h == 75 && !f.nearest,
+          "letterbox %d,%d %dx%d", f.x, f.y, f.w, f.h);
+    f = hfs_display_fit_rect(256, 256, 1920, 1080);
+    CHECK(f.x == 420 && f.y == 0 && f.w == 1080 && f.h == 1080 && !f.nearest,
+          "pillarbox %d,%d %dx%d", f.x, f.y, f.w, f.h);
+    f = hfs_display_fit_rect(256, 256, 800, 600);
+    CHECK(f.w == 600 && f.h == 600 && f.x == 100 && !f.nearest, "800x600");
+    f = hfs_display_fit_rect(100, 1, 10, 10);
+    CHECK(f.w == 10 && f.h == 1, "thin picture keeps a row: %dx%d", f.w, f.h);
+}
+
+int main(void)
+{
+    hfs_png_opts clamp = {.exposure = 0.0, .tonemap = HFS_TONEMAP_CLAMP};
+    hfs_png_opts reinhard = {.exposure = 1.7, .tonemap = HFS_TONEMAP_REINHARD};
+    hfs_png_opts bright = {.exposure = 3.0, .tonemap = HFS_TONEMAP_CLAMP};
+    check_frame_vs_png(NULL, "display_frame_default.png");
+    check_frame_vs_png(&clamp, "display_frame_clamp.png");
+    check_frame_vs_png(&reinhard, "display_frame_reinhard.png");
+    check_frame_vs_png(&bright, "display_frame_bright.png");
+    check_frame_errors();
+    check_overlay_digit(1);
+    check_overlay_digit(2);
+    check_overlay_clipping();
+    check_fit();
+    if (failures)
+        fprintf(stderr, "%d check(s) failed\n", failures);
+    return failures ? 1 : 0;
+}
