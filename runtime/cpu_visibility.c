@@ -33,11 +33,25 @@ void hfs_swath_key(double phi, double elev, double alpha, int nphi_key,
     if (fabs(elev) + alpha >= HALF_PI || !(ratio < 1.0)) {
         hfs_swath_full(nphi_key > nphi_env ? nphi_key : nphi_env, s);
     } else {
+        /* The disk spans azimuths phi +- h.  Its samples sit on a lattice of
+         * the circle, k d with d = 2 pi / 2^m, the coarsest such spacing not
+         * coarser than the disk's own 2h / nphi_key: then the samples (and
+         * so the horizons behind them) stay the same while the light moves
+         * inside the sampled swath, or while its elevation changes h a
+         * little (the frame planner keeps them, gles_plan.h), and the
+         * spacing is still at most 2h / nphi_key.  The swath is the run of
+         * lattice samples whose wedges (+- d/2 about each) cover phi +- h:
+         * nphi_key to 2 nphi_key + 1 samples. */
         const double h = asin(ratio);
-        s->n = nphi_key < 1 ? 1 : nphi_key;
+        const int n_req = nphi_key < 1 ? 1 : nphi_key;
+        const int m = (int)ceil(log2(PI * n_req / h));
+        const double d = ldexp(2.0 * PI, -m);
+        const double phin = phi - 2.0 * PI * floor(phi / (2.0 * PI));
+        const double k0 = floor((phin - h) / d + 0.5), k1 = ceil((phin + h) / d - 0.5);
+        s->n = (int)(k1 - k0) + 1;
         s->full = 0;
-        s->dphi = 2.0 * h / s->n;
-        s->phi0 = phi - h + 0.5 * s->dphi;
+        s->dphi = d;
+        s->phi0 = k0 * d;
     }
     s->elev_lo = lo < -HALF_PI ? -HALF_PI : lo;
     s->elev_hi = hi > HALF_PI ? HALF_PI : hi;

@@ -75,7 +75,13 @@ typedef struct hfs_swath_wedge {
 /* Full swath of n samples starting at phi0 = 0. */
 void hfs_swath_full(int n, hfs_swath *s);
 
-/* Swath of a key light (phi, elev, alpha in radians; alpha in (0, pi/2)). */
+/* Swath of a key light (phi, elev, alpha in radians; alpha in (0, pi/2)):
+ * the full swath of max(nphi_key, nphi_env) samples where the disk covers
+ * the zenith or the nadir; otherwise a partial swath covering the disk's
+ * azimuths phi +- h (h = asin(sin alpha / cos elev)) with samples on a
+ * lattice of the circle (spacing 2 pi / 2^m <= 2h / nphi_key, so between
+ * nphi_key and 2 nphi_key + 1 samples), which a light moving within the
+ * sampled swath keeps. */
 void hfs_swath_key(double phi, double elev, double alpha, int nphi_key,
                    int nphi_env, hfs_swath *s);
 

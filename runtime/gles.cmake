@@ -83,9 +83,11 @@ add_custom_command(
 
 set(HFS_GLES_STAMPS "")
 if(HFS_GLSLANG_VALIDATOR)
-  foreach(pass gles_decimate gles_reconstruct gles_normals gles_env gles_key gles_local gles_shade)
+  foreach(pass gles_decimate gles_reconstruct gles_normals gles_env gles_key gles_local
+               gles_transfer gles_keyfactor gles_shade)
     set(product "")
-    if(pass STREQUAL "gles_shade" OR pass STREQUAL "gles_local")
+    # The passes that multiply SH vectors (gles_renderer.c program_get).
+    if(pass MATCHES "^gles_(transfer|keyfactor|local)$")
       set(product ${HFS_SH_GLSL_PRODUCT})
     endif()
     set(stamp ${HFS_GLES_GEN}/${pass}.composed.ok)

@@ -23,8 +23,10 @@ void hfs_gles_plan_init(hfs_gles_plan *gp)
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         snprintf(name, sizeof name, "key %d swath", i);
         gp->in_key_geom[i] = hfs_plan_input(p, name);
-        snprintf(name, sizeof name, "key %d light", i);
-        gp->in_key_light[i] = hfs_plan_input(p, name);
+        snprintf(name, sizeof name, "key %d direction", i);
+        gp->in_key_dir[i] = hfs_plan_input(p, name);
+        snprintf(name, sizeof name, "key %d radiance", i);
+        gp->in_key_rad[i] = hfs_plan_input(p, name);
     }
     gp->pr_pyramid = hfs_plan_product(p, "pyramid");
     gp->pr_env = hfs_plan_product(p, "env visibility");
@@ -33,6 +35,11 @@ void hfs_gles_plan_init(hfs_gles_plan *gp)
         gp->pr_key[i] = hfs_plan_product(p, name);
     }
     gp->pr_local = hfs_plan_product(p, "local ratios");
+    gp->pr_transfer = hfs_plan_product(p, "env transfer");
+    for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
+        snprintf(name, sizeof name, "key %d factor", i);
+        gp->pr_kfactor[i] = hfs_plan_product(p, name);
+    }
     gp->pr_targets = hfs_plan_product(p, "output targets");
     gp->pr_image = hfs_plan_product(p, "image");
 
@@ -50,6 +57,14 @@ void hfs_gles_plan_init(hfs_gles_plan *gp)
     gp->pass[GP_LOCAL] = hfs_plan_pass_add(
         p, "local", (int[]){gp->pr_pyramid, gp->in_grid, gp->in_local_geom, -1},
         (int[]){gp->pr_local, -1});
+    gp->pass[GP_TRANSFER] = hfs_plan_pass_add(p, "transfer", (int[]){gp->pr_pyramid, gp->pr_env, -1},
+                                              (int[]){gp->pr_transfer, -1});
+    for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
+        snprintf(name, sizeof name, "key %d factor", i);
+        gp->pass[GP_KFACTOR0 + i] = hfs_plan_pass_add(
+            p, name, (int[]){gp->pr_pyramid, gp->pr_key[i], gp->in_key_dir[i], -1},
+            (int[]){gp->pr_kfactor[i], -1});
+    }
     gp->pass[GP_SHADE] = hfs_plan_pass_add(p, "shade", NULL, (int[]){gp->pr_targets, -1});
     gp->pass[GP_READBACK] = hfs_plan_pass_add(p, "readback", (int[]){gp->pr_targets, -1},
                                               (int[]){gp->pr_image, -1});
@@ -88,10 +103,13 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
         }
         if (ha != hb || memcmp(a->key[i].dir, b->key[i].dir, sizeof a->key[i].dir) ||
             a->key[i].alpha != b->key[i].alpha || a->key[i].swath.elev_lo != b->key[i].swath.elev_lo ||
-            a->key[i].swath.elev_hi != b->key[i].swath.elev_hi ||
-            memcmp(a->key[i].le, b->key[i].le, sizeof a->key[i].le)) {
-            snprintf(why, sizeof why, "key %d: direction, size or radiance changed", i);
-            hfs_plan_change(p, gp->in_key_light[i], why);
+            a->key[i].swath.elev_hi != b->key[i].swath.elev_hi) {
+            snprintf(why, sizeof why, "key %d: direction or size changed", i);
+            hfs_plan_change(p, gp->in_key_dir[i], why);
+        }
+        if (ha != hb || memcmp(a->key[i].le, b->key[i].le, sizeof a->key[i].le)) {
+            snprintf(why, sizeof why, "key %d: radiance changed", i);
+            hfs_plan_change(p, gp->in_key_rad[i], why);
         }
     }
     int geom = a->n_local != b->n_local || a->nphi_local != b->nphi_local ||
@@ -125,12 +143,12 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
     reads[n++] = gp->in_albedo;
     reads[n++] = gp->in_light_set;
     if (now->has_env) {
-        reads[n++] = gp->pr_env;
+        reads[n++] = gp->pr_transfer;
         reads[n++] = gp->in_env_light;
     }
     for (int i = 0; i < now->n_keys && i < HFS_GLES_PLAN_KEYS; ++i) {
-        reads[n++] = gp->pr_key[i];
-        reads[n++] = gp->in_key_light[i];
+        reads[n++] = gp->pr_kfactor[i];
+        reads[n++] = gp->in_key_rad[i];
     }
     if (now->n_local > 0) {
         reads[n++] = gp->pr_local;
@@ -166,8 +184,12 @@ void hfs_gles_plan_drop_grids(hfs_gles_plan *gp)
         hfs_plan_drop(&gp->p, gp->pr_key[i]);
 }
 
-void hfs_gles_plan_lost(hfs_gles_plan *gp, int grid, int key_horizons, int local_ratios)
+void hfs_gles_plan_lost(hfs_gles_plan *gp, int grid, int key_horizons, int local_ratios,
+                        int key_factors)
 {
+    if (key_factors)
+        for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i)
+            hfs_plan_drop(&gp->p, gp->pr_kfactor[i]);
     if (grid) {
         hfs_gles_plan_drop_grids(gp);
         return;

@@ -6,22 +6,30 @@
  *   inputs   terrain (heights, size, dx, zscale, k, offset, precision),
  *            grid (subsample), env settings (nphi_env, visibility path),
  *            env light (rotated SH), albedo, key i geometry (its swath and
- *            horizon layers), key i light (direction, size, radiance),
- *            local geometry (the contributing lights' centres and radii,
- *            nphi_local, swath mode, path), local radiance
- *   passes   terrain -> env -> key i -> local -> shade -> readback
+ *            horizon layers), key i direction (direction, size, elevation
+ *            window), key i radiance, local geometry (the contributing
+ *            lights' centres and radii, nphi_local, swath mode, path), local
+ *            radiance
+ *   passes   terrain -> env -> key i -> local -> transfer -> key i factor
+ *            -> shade -> readback
  *            terrain  reads terrain                 writes pyramid
  *            env      reads pyramid, grid, env set  writes env visibility
  *            key i    reads pyramid, grid, key i geometry   writes key i horizons
  *            local    reads pyramid, grid, local geometry   writes local ratios
+ *            transfer reads pyramid, env visibility writes env transfer (T)
+ *            key i factor reads pyramid, key i horizons, key i direction
+ *                                                   writes key i factor
  *            shade    reads the light set (which kinds, how many lights), what
- *                     the frame's lights use, env light, albedo, key
- *                     lights, local radiance        writes the output targets
+ *                     the frame's lights use: env transfer + env light, key i
+ *                     factor + key i radiance, local ratios + local
+ *                     radiance; albedo           writes the output targets
  *            readback reads the output targets      writes the image
- * A key light's horizons depend only on its swath (the sample directions),
- * so a change of radiance, or of anything but the swath, costs the shading
- * only; the local ratios do not depend on radiance.  Nothing changed: no
- * pass, no GL call; the last image is handed out again.
+ * A key light's horizons depend only on its swath (the sample directions):
+ * moved inside it, the light costs its factor pass and the shading; the
+ * environment's transfer vectors and the key factors do not depend on
+ * radiance or (environment) rotation, so a turned, re-tinted or dimmed light
+ * costs the shading only.  Nothing changed: no pass, no GL call; the last
+ * image is handed out again.
  */
 #ifndef HFS_GLES_PLAN_H
 #define HFS_GLES_PLAN_H
@@ -52,16 +60,17 @@ typedef struct hfs_gles_frame_sig {
     } local[HFS_MAX_LOCAL_LIGHTS];
 } hfs_gles_frame_sig;
 
-enum { GP_TERRAIN, GP_ENV, GP_KEY0, GP_LOCAL = GP_KEY0 + HFS_GLES_PLAN_KEYS, GP_SHADE,
-       GP_READBACK, GP_PASSES };
+enum { GP_TERRAIN, GP_ENV, GP_KEY0, GP_LOCAL = GP_KEY0 + HFS_GLES_PLAN_KEYS, GP_TRANSFER,
+       GP_KFACTOR0, GP_SHADE = GP_KFACTOR0 + HFS_GLES_PLAN_KEYS, GP_READBACK, GP_PASSES };
 
 typedef struct hfs_gles_plan {
     hfs_plan p;
     int in_terrain, in_grid, in_env_set, in_env_light, in_albedo, in_local_geom, in_local_rad;
     int in_light_set;             /* which light kinds / how many lights */
-    int in_key_geom[HFS_GLES_PLAN_KEYS], in_key_light[HFS_GLES_PLAN_KEYS];
-    int pr_pyramid, pr_env, pr_local, pr_targets, pr_image;
-    int pr_key[HFS_GLES_PLAN_KEYS];
+    int in_key_geom[HFS_GLES_PLAN_KEYS], in_key_dir[HFS_GLES_PLAN_KEYS];
+    int in_key_rad[HFS_GLES_PLAN_KEYS];
+    int pr_pyramid, pr_env, pr_local, pr_transfer, pr_targets, pr_image;
+    int pr_key[HFS_GLES_PLAN_KEYS], pr_kfactor[HFS_GLES_PLAN_KEYS];
     int pass[GP_PASSES];          /* frame_plan pass id of each GP_* */
     hfs_gles_frame_sig last;
     int have_last;
@@ -89,10 +98,11 @@ void hfs_gles_plan_drop_all(hfs_gles_plan *gp);
 void hfs_gles_plan_drop_grids(hfs_gles_plan *gp);
 
 /* Textures were reallocated: the whole visibility grid (env, keys, local),
- * the key horizons, or the local ratios lost their contents.  Call before
- * hfs_gles_plan_frame: the passes that wrote them then run again ("not
- * computed yet"), and what reads them after. */
-void hfs_gles_plan_lost(hfs_gles_plan *gp, int grid, int key_horizons, int local_ratios);
+ * the key horizons, the local ratios or the key factors lost their
+ * contents.  Call before hfs_gles_plan_frame: the passes that wrote them
+ * then run again ("not computed yet"), and what reads them after. */
+void hfs_gles_plan_lost(hfs_gles_plan *gp, int grid, int key_horizons, int local_ratios,
+                        int key_factors);
 
 /* The last frame's steps as a report (public hfs_frame_report). */
 void hfs_gles_plan_report(const hfs_gles_plan *gp, hfs_frame_report *out);

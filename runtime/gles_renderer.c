@@ -39,6 +39,7 @@
 #include "lights.h"
 #include "sh.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -61,14 +62,15 @@ extern const char hfs_gles_sh_product_src[];
  * ulps of pi/2, so that e - alpha < e + alpha at every elevation. */
 #define GLES_MIN_KEY_ALPHA 1e-6
 
-enum pass_id { P_UPLOAD, P_NORMALS, P_DECIMATE, P_RECON, P_ENV, P_KEY, P_LOCAL, P_SHADE,
-               P_READBACK, P_COUNT };
+enum pass_id { P_UPLOAD, P_NORMALS, P_DECIMATE, P_RECON, P_ENV, P_KEY, P_LOCAL, P_TRANSFER,
+               P_KFACTOR, P_SHADE, P_READBACK, P_COUNT };
 static const char *const pass_names[P_COUNT] = {"upload", "normals", "decimate", "reconstruct",
-                                                "env", "key", "local", "shade", "readback"};
+                                                "env", "key", "local", "transfer",
+                                                "keyfactor", "shade", "readback"};
 
 /* Texture units and uniform-block bindings shared by all passes. */
 enum { U_LEVELS = 0, U_NORMALS = 1, U_TAB = 2, U_V0 = 2, U_KEYHZ = 6, U_KTAB = 7, U_KTABB = 8,
-       U_LOCALV = 9, U_SRC = 0, U_VSRC = 4 };
+       U_LOCALV = 9, U_T0 = 2, U_KF = 6, U_SRC = 0, U_VSRC = 4 };
 #define RECON_MRT 4 /* levels per y pass: ES 3.0's minimum draw buffers */
 enum { B_SCALES = 0, B_SWATH = 1, B_SHADE = 2, B_KEYS = 3, B_LOCAL = 4 };
 enum { UBO_SCALES, UBO_ENV, UBO_KEYSWATH, UBO_SHADE, UBO_KEYS, UBO_LOCAL, UBO_COUNT };
@@ -99,10 +101,13 @@ typedef struct resources {
     int keyhz_layers;
     GLuint localv, localv_fbo; /* local-light ratios, 2 lights per layer */
     int localv_layers;
+    GLuint transfer[4], transfer_fbo; /* T = H * V_env per texel (gles_transfer.frag) */
+    GLuint kf, kf_fbo;      /* key factors f / E_max (hi, lo), a layer per key light */
+    int kf_layers;
     GLuint out[2], out_fbo; /* RGB hi, lo: drawn together */
     GLuint out_lo_fbo;      /* lo alone as attachment 0, for the readback */
-    size_t bytes, keyhz_bytes, localv_bytes;
-    unsigned grid_gen, keyhz_gen, localv_gen; /* bumped when reallocated */
+    size_t bytes, keyhz_bytes, localv_bytes, kf_bytes;
+    unsigned grid_gen, keyhz_gen, localv_gen, kf_gen; /* bumped when reallocated */
 } resources;
 
 /* One key light of the frame. */
@@ -192,7 +197,7 @@ static void *scratch(hfs_gles *g, size_t bytes)
 
 static int use_queries(const hfs_gles *g)
 {
-    return g->have_queries && g->caps.timer_query;
+    return 0 && g->have_queries && g->caps.timer_query;
 }
 
 static void pass_begin(hfs_gles *g, int p)
@@ -272,7 +277,9 @@ static int program_get(hfs_gles *g, const char *frag, const char *const *defines
     const char *vert = hfs_shader_source("fullscreen.vert");
     if (!lib || !pass || !vert)
         return hfs_fail(err, HFS_E_INVALID, "backend gles: shader %s not embedded", frag);
-    const int with_product = !strcmp(frag, "gles_shade.frag") || !strcmp(frag, "gles_local.frag");
+    /* The passes that multiply SH vectors get the generated product. */
+    const int with_product = !strcmp(frag, "gles_transfer.frag") ||
+                             !strcmp(frag, "gles_keyfactor.frag") || !strcmp(frag, "gles_local.frag");
     const char *prod = with_product ? hfs_gles_sh_product_src : "";
     const size_t size = strlen(lib) + strlen(prod) + strlen(pass) + 64;
     char *src = malloc(size);
@@ -300,7 +307,8 @@ static int program_get(hfs_gles *g, const char *frag, const char *const *defines
         {"u_src", U_SRC}, {"u_height", U_SRC}, {"u_v0", U_V0}, {"u_v1", U_V0 + 1},
         {"u_v2", U_V0 + 2}, {"u_v3", U_V0 + 3}, {"u_keyhz", U_KEYHZ}, {"u_ktab", U_KTAB},
         {"u_ktabb", U_KTABB}, {"u_localv", U_LOCALV}, {"u_vsrc[0]", U_VSRC}, {"u_vsrc[1]", U_VSRC + 1},
-        {"u_vsrc[2]", U_VSRC + 2}, {"u_vsrc[3]", U_VSRC + 3}};
+        {"u_vsrc[2]", U_VSRC + 2}, {"u_vsrc[3]", U_VSRC + 3}, {"u_t0", U_T0},
+        {"u_t1", U_T0 + 1}, {"u_t2", U_T0 + 2}, {"u_t3", U_T0 + 3}, {"u_kf", U_KF}};
     for (size_t i = 0; i < sizeof samplers / sizeof samplers[0]; ++i) {
         GLint loc = gl->GetUniformLocation(id, samplers[i].name);
         if (loc >= 0)
@@ -447,9 +455,15 @@ static void resources_free(hfs_gles *g)
     del_fbo(gl, &r->out_lo_fbo);
     del_fbo(gl, &r->keyhz_fbo);
     del_fbo(gl, &r->localv_fbo);
-    const unsigned gen[3] = {r->grid_gen, r->keyhz_gen, r->localv_gen};
+    for (int i = 0; i < 4; ++i)
+        del_tex(gl, &r->transfer[i]);
+    del_fbo(gl, &r->transfer_fbo);
+    del_tex(gl, &r->kf);
+    del_fbo(gl, &r->kf_fbo);
+    const unsigned gen[4] = {r->grid_gen, r->keyhz_gen, r->localv_gen, r->kf_gen};
     memset(r, 0, sizeof *r);
     r->grid_gen = gen[0] + 1, r->keyhz_gen = gen[1] + 1, r->localv_gen = gen[2] + 1;
+    r->kf_gen = gen[3] + 1;
     g->terrain_valid = 0;
 }
 
@@ -457,7 +471,7 @@ static void resources_free(hfs_gles *g)
  * level layout and precision; grid-sized ones (visibility, key horizons)
  * also follow the sub-sampling, without touching the terrain's. */
 static int resources_ensure(hfs_gles *g, const hfs_gles_layout *L, int key_layers,
-                            int local_layers, hfs_error *err)
+                            int local_layers, int n_keys, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const hfs_gl_caps *c = &g->caps;
@@ -511,6 +525,12 @@ static int resources_ensure(hfs_gles *g, const hfs_gles_layout *L, int key_layer
         if ((rc = fbo_new(gl, &r->out_fbo, 2, r->out, NULL, "output", err)) ||
             (rc = fbo_new(gl, &r->out_lo_fbo, 1, &r->out[1], NULL, "output", err)))
             return rc;
+        for (int i = 0; i < 4; ++i)
+            r->transfer[i] = tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
+        r->bytes += (size_t)4 * w * h * c->bytes_rgba;
+        if ((rc = fbo_new(gl, &r->transfer_fbo, 4, r->transfer, NULL, "env transfer", err)))
+            return rc;
+        gl->GenFramebuffers(1, &r->kf_fbo);
         gl->GenFramebuffers(1, &r->keyhz_fbo);
         gl->GenFramebuffers(1, &r->localv_fbo);
         r->valid = 1;
@@ -531,6 +551,13 @@ static int resources_ensure(hfs_gles *g, const hfs_gles_layout *L, int key_layer
         ++r->keyhz_gen;
         r->keyhz_bytes = (size_t)L->vw * L->vh * key_layers * c->bytes_rgba;
     }
+    if (n_keys > 0 && r->kf_layers < n_keys) {
+        del_tex(gl, &r->kf);
+        r->kf = tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rg, L->w, L->h, n_keys, 0);
+        r->kf_layers = n_keys;
+        ++r->kf_gen;
+        r->kf_bytes = (size_t)L->w * L->h * n_keys * c->bytes_rg;
+    }
     if (local_layers > 0 && r->localv_layers < local_layers) {
         del_tex(gl, &r->localv);
         r->localv = tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh, local_layers, 1);
@@ -545,7 +572,7 @@ static size_t resources_bytes(const hfs_gles *g)
 {
     const resources *r = &g->r;
     return r->bytes + (size_t)4 * r->vw * r->vh * g->caps.bytes_rgba + r->keyhz_bytes +
-           r->localv_bytes;
+           r->localv_bytes + r->kf_bytes;
 }
 
 static void bind_tex(const hfs_gl *gl, int unit, GLenum target, GLuint t)
@@ -1183,6 +1210,96 @@ static void frame_signature(const frame *fr, const hfs_quality *q, const hfs_gle
     }
 }
 
+/* The environment's transfer vectors T = H * V_env at full resolution
+ * (gles_transfer.frag): kept while only the environment's radiance or
+ * rotation changes. */
+static int run_transfer(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    resources *r = &g->r;
+    const char *defs[2] = {g->caps.fp32 ? "HFS_FP32 1" : NULL, NULL};
+    GLuint prog;
+    int rc = program_get(g, "gles_transfer.frag", defs, &prog, err);
+    if (rc)
+        return rc;
+    gl->UseProgram(prog);
+    bind_tex(gl, U_NORMALS, GL_TEXTURE_2D, r->normals);
+    for (int i = 0; i < 4; ++i)
+        bind_tex(gl, U_V0 + i, GL_TEXTURE_2D, r->venv[i]);
+    set_i2(gl, prog, "u_size", L->w, L->h);
+    set_i2(gl, prog, "u_vsize", L->vw, L->vh);
+    set_i1(gl, prog, "u_sub", L->sub);
+    draw(gl, r->transfer_fbo, L->w, L->h);
+    gl->UseProgram(0);
+    g->pass_fetch[P_TRANSFER] = (double)L->w * L->h * 5;
+    return hfs_gl_check(gl, "backend gles: transfer pass", err);
+}
+
+/* A key light's irradiance at normal incidence, pi sin^2 alpha: the
+ * largest value of its factor E_cap * ratio, by which the factor pass
+ * divides and the shading multiplies (never 0 in float). */
+static double key_emax(const hfs_gles_key *k)
+{
+    return fmax(hfs_cap_irradiance(1.0, k->alpha), (double)FLT_MIN);
+}
+
+/* Each key light q with which[q] set: its factor E_cap * ratio / E_max at
+ * full resolution into layer q of the factor array (gles_keyfactor.frag).
+ * HfsKeys (rec vec4) must be uploaded. */
+static int run_kfactor(hfs_gles *g, const hfs_gles_layout *L, const frame_key *keys,
+                       int n_keys, int rec, int tables, const int *which, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    resources *r = &g->r;
+    char kvec[32], tabn[32];
+    snprintf(kvec, sizeof kvec, "HFS_KEY_VEC4 %d", rec > 0 ? rec : 1);
+    snprintf(tabn, sizeof tabn, "HFS_TABLE_N %d", TABLE_N);
+    const char *defs[5] = {kvec, NULL, NULL, NULL, NULL};
+    int nd = 1;
+    if (tables) {
+        defs[nd++] = "HFS_TABLES 1";
+        defs[nd++] = tabn;
+    }
+    if (g->caps.fp32)
+        defs[nd++] = "HFS_FP32 1";
+    GLuint prog;
+    int rc = program_get(g, "gles_keyfactor.frag", defs, &prog, err);
+    if (rc)
+        return rc;
+    gl->UseProgram(prog);
+    bind_tex(gl, U_NORMALS, GL_TEXTURE_2D, r->normals);
+    bind_tex(gl, U_KEYHZ, GL_TEXTURE_2D_ARRAY, r->keyhz);
+    if (tables) {
+        bind_tex(gl, U_KTAB, GL_TEXTURE_2D_ARRAY, g->ktab);
+        bind_tex(gl, U_KTABB, GL_TEXTURE_2D_ARRAY, g->ktabb);
+    }
+    set_i2(gl, prog, "u_size", L->w, L->h);
+    set_i2(gl, prog, "u_vsize", L->vw, L->vh);
+    set_i1(gl, prog, "u_sub", L->sub);
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, B_KEYS, g->ubo[UBO_KEYS]);
+    for (int q = 0; q < n_keys; ++q) {
+        if (!which[q])
+            continue;
+        set_i1(gl, prog, "u_kb", keys[q].rec_off);
+        set_f1(gl, prog, "u_emax", (float)key_emax(&keys[q].k));
+        gl->BindFramebuffer(GL_FRAMEBUFFER, r->kf_fbo);
+        gl->FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, r->kf, 0, q);
+        const GLenum buf = GL_COLOR_ATTACHMENT0;
+        gl->DrawBuffers(1, &buf);
+        GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE)
+            return hfs_fail(err, HFS_E_UNSUPPORTED,
+                            "backend gles: key factor framebuffer incomplete (0x%x)",
+                            (unsigned)status);
+        draw(gl, r->kf_fbo, L->w, L->h);
+        g->pass_fetch[P_KFACTOR] += (double)L->w * L->h * (1 + (keys[q].k.swath.n + 1) / 2);
+        if ((rc = hfs_gl_check(gl, "backend gles: key factor pass", err)))
+            return rc;
+    }
+    gl->UseProgram(0);
+    return HFS_OK;
+}
+
 static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, hfs_image *out, frame *fr, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
@@ -1242,11 +1359,11 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     /* Textures follow the frame's sizes; what a reallocated texture held is
      * lost, and the planner is told so before it plans. */
     const resources *rs = &g->r;
-    const unsigned gens[3] = {rs->grid_gen, rs->keyhz_gen, rs->localv_gen};
-    if ((rc = resources_ensure(g, &L, fr->key_layers, local_layers, err)))
+    const unsigned gens[4] = {rs->grid_gen, rs->keyhz_gen, rs->localv_gen, rs->kf_gen};
+    if ((rc = resources_ensure(g, &L, fr->key_layers, local_layers, fr->n_keys, err)))
         return rc;
     hfs_gles_plan_lost(&g->plan, rs->grid_gen != gens[0], rs->keyhz_gen != gens[1],
-                       rs->localv_gen != gens[2]);
+                       rs->localv_gen != gens[2], rs->kf_gen != gens[3]);
 
     /* Plan: which passes this frame needs (gles_plan.h). */
     hfs_gles_frame_sig sig;
@@ -1446,6 +1563,34 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         pass_end(g, P_LOCAL);
         hfs_gles_plan_done(&g->plan, GP_LOCAL);
     }
+    /* Full-resolution products of the visibility: the environment's
+     * transfer vectors and each key light's factor. */
+    if (fr->has_env && run[GP_TRANSFER]) {
+        pass_begin(g, P_TRANSFER);
+        if ((rc = run_transfer(g, &L, err)))
+            return rc;
+        pass_end(g, P_TRANSFER);
+        hfs_gles_plan_done(&g->plan, GP_TRANSFER);
+    } else if (fr->has_env) {
+        g->pass_cached[P_TRANSFER] = 1;
+    }
+    if (fr->n_keys > 0) {
+        int any = 0;
+        for (int i = 0; i < fr->n_keys; ++i)
+            any |= run[GP_KFACTOR0 + i];
+        if (any) {
+            pass_begin(g, P_KFACTOR);
+            if ((rc = run_kfactor(g, &L, fr->keys, fr->n_keys, rec, tables, run + GP_KFACTOR0,
+                                  err)))
+                return rc;
+            pass_end(g, P_KFACTOR);
+            for (int i = 0; i < fr->n_keys; ++i)
+                if (run[GP_KFACTOR0 + i])
+                    hfs_gles_plan_done(&g->plan, GP_KFACTOR0 + i);
+        } else {
+            g->pass_cached[P_KFACTOR] = 1;
+        }
+    }
     if (!run[GP_SHADE] && !run[GP_READBACK]) {
         memcpy(out->rgb, g->last_img, n_img * sizeof *out->rgb);
         g->pass_cached[P_SHADE] = g->pass_cached[P_READBACK] = 1;
@@ -1454,7 +1599,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
 
     /* Shading. */
     double bound = 0.0;
-    float shade[14 * 4]; /* HfsShade: u_env[12], u_misc, u_env_neg */
+    float shade[22 * 4]; /* HfsShade: u_env[12], u_misc, u_env_neg, u_kle[8] */
     memset(shade, 0, sizeof shade);
     if (fr->has_env) {
         double m = 0.0;
@@ -1490,26 +1635,25 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     shade[50] = fr->has_env ? 1.0f : 0.0f;
     for (int c = 0; c < 3 && fr->has_env; ++c) /* cpu_render.c env_clamp */
         shade[52 + c] = (float)(fr->rho_pi * PI * hfs_sh_negative_bound(fr->l_env[c]));
+    for (int i = 0; i < fr->n_keys; ++i) /* rho/pi Le E_max: the factor's scale */
+        for (int c = 0; c < 3; ++c)
+            shade[56 + 4 * i + c] =
+                (float)(fr->rho_pi * fr->keys[i].k.le[c] * key_emax(&fr->keys[i].k));
     ubo_upload(gl, g->ubo[UBO_SHADE], shade, sizeof shade);
-    if (fr->n_keys == 0)
-        ubo_upload(gl, g->ubo[UBO_KEYS], shade, 16);
 
-    char kvec[32], tabn[32];
-    snprintf(kvec, sizeof kvec, "HFS_KEY_VEC4 %d", rec > 0 ? rec : 1);
-    snprintf(tabn, sizeof tabn, "HFS_TABLE_N %d", TABLE_N);
-    const char *defs[10] = {kvec, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+    char nkeys[32];
+    snprintf(nkeys, sizeof nkeys, "HFS_NKEYS %d", fr->n_keys);
+    const char *defs[8] = {nkeys, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
     int nd = 1;
-    char nlev[32], nlay[32], ldirs[40];
+    char nlev[32], nlay[32], ldirs[40], nlocal[32];
     if (fr->n_local > 0) {
         level_defines(&L, nlev, nlay, sizeof nlev);
         snprintf(ldirs, sizeof ldirs, "HFS_LOCAL_DIRS %d", q->nphi_local);
+        snprintf(nlocal, sizeof nlocal, "HFS_NLOCAL %d", fr->n_local);
         defs[nd++] = "HFS_LOCAL 1";
         defs[nd++] = nlay;
         defs[nd++] = ldirs;
-    }
-    if (tables && fr->n_keys > 0) {
-        defs[nd++] = "HFS_TABLES 1";
-        defs[nd++] = tabn;
+        defs[nd++] = nlocal;
     }
     if (caps->fp32)
         defs[nd++] = "HFS_FP32 1";
@@ -1521,36 +1665,21 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     gl->UseProgram(prog);
     bind_tex(gl, U_NORMALS, GL_TEXTURE_2D, r->normals);
     for (int i = 0; i < 4; ++i)
-        bind_tex(gl, U_V0 + i, GL_TEXTURE_2D, r->venv[i]);
-    bind_tex(gl, U_KEYHZ, GL_TEXTURE_2D_ARRAY, r->keyhz);
+        bind_tex(gl, U_T0 + i, GL_TEXTURE_2D, r->transfer[i]);
+    bind_tex(gl, U_KF, GL_TEXTURE_2D_ARRAY, r->kf);
     if (fr->n_local > 0) {
         bind_tex(gl, U_LEVELS, GL_TEXTURE_2D_ARRAY, r->arr);
         bind_tex(gl, U_LOCALV, GL_TEXTURE_2D_ARRAY, r->localv);
-        set_i1(gl, prog, "u_nlocal", fr->n_local);
         gl->BindBufferBase(GL_UNIFORM_BUFFER, B_LOCAL, g->ubo[UBO_LOCAL]);
-    }
-    if (tables && fr->n_keys > 0) {
-        bind_tex(gl, U_KTAB, GL_TEXTURE_2D_ARRAY, g->ktab);
-        bind_tex(gl, U_KTABB, GL_TEXTURE_2D_ARRAY, g->ktabb);
     }
     set_i2(gl, prog, "u_size", L.w, L.h);
     set_i2(gl, prog, "u_vsize", L.vw, L.vh);
     set_i1(gl, prog, "u_sub", L.sub);
-    set_i1(gl, prog, "u_nkeys", fr->n_keys);
-    GLint offs[MAX_KEYS] = {0};
-    for (int i = 0; i < fr->n_keys; ++i)
-        offs[i] = fr->keys[i].rec_off;
-    GLint loc = gl->GetUniformLocation(prog, "u_koff");
-    if (loc >= 0)
-        gl->Uniform1iv(loc, MAX_KEYS, offs);
     gl->BindBufferBase(GL_UNIFORM_BUFFER, B_SHADE, g->ubo[UBO_SHADE]);
-    gl->BindBufferBase(GL_UNIFORM_BUFFER, B_KEYS, g->ubo[UBO_KEYS]);
     draw(gl, r->out_fbo, L.w, L.h);
     gl->UseProgram(0);
     pass_end(g, P_SHADE);
-    g->pass_fetch[P_SHADE] = (double)L.w * L.h * (1 + 4 * fr->has_env);
-    for (int i = 0; i < fr->n_keys; ++i)
-        g->pass_fetch[P_SHADE] += (double)L.w * L.h * ((fr->keys[i].k.swath.n + 1) / 2);
+    g->pass_fetch[P_SHADE] = (double)L.w * L.h * (1 + 4 * fr->has_env + fr->n_keys);
     if (fr->n_local > 0) /* the texel's height, one ratio layer per two lights */
         g->pass_fetch[P_SHADE] += (double)L.w * L.h * (1 + (fr->n_local + 1) / 2);
     if ((rc = hfs_gl_check(gl, "backend gles: shading pass", err)))

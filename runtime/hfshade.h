@@ -247,7 +247,9 @@ HFS_API int hfs_renderer_render(hfs_renderer *r, const hfs_field *field,
  * the GPU), "normals", "decimate" (pyramid, fine to coarse), "reconstruct"
  * (B-spline to full resolution), "env" (environment horizons + SH
  * visibility), "key" (key-light horizons), "local" (local-light visibility
- * ratios), "shade", "readback".  The CPU and
+ * ratios), "transfer" (the environment's per-texel transfer vectors),
+ * "keyfactor" (each key light's per-texel E_cap * visible fraction), "shade"
+ * (the sum over lights), "readback".  The CPU and
  * truth backends report one pass, "render". */
 typedef struct hfs_pass_time {
     char name[16];

@@ -84,6 +84,19 @@ vec2 hfs_split(float v)
 #endif
 }
 
+/* Texture coordinate of full-resolution texel p on the visibility grid
+ * (vsize receivers, one every sub texels, the last at W-1/H-1): between
+ * receivers a = p / sub and a + 1 (at min((a+1) sub, size-1)), so a LINEAR
+ * fetch interpolates exactly between the two receivers around p. */
+vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize)
+{
+    ivec2 a = p / sub;
+    ivec2 x0 = a * sub;
+    ivec2 x1 = min(x0 + sub, size - 1);
+    vec2 t = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
+    return (vec2(a) + t + 0.5) / vec2(vsize);
+}
+
 /* Unit normal from an RGBA texel of gles_normals.frag: octahedral
  * coordinates (px hi, px lo, py hi, py lo) of the upper hemisphere; nz > 0. */
 vec3 hfs_normal(vec4 t)

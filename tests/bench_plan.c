@@ -7,7 +7,11 @@
  * row per sequence: median frame time with and without the planner, their
  * ratio, and the passes the planned frames ran.
  *
- *   bench_plan [--frames N] [--size N] [--only NAME]      (defaults 30, 512)
+ *   bench_plan [--frames N] [--size N] [--only NAME] [--passes 1]
+ *                                                    (defaults 30, 512, 0)
+ * --passes 1 also prints, per sequence, where a planned frame's time goes:
+ * the median GPU time of each pass it ran (timing level 1, which waits for
+ * each pass: the frame times of that run are a little longer).
  *
  * Sequences (N frames each, after one warm-up frame):
  *   env-rotate   a knob turning the environment at 60 Hz (6 degrees a frame)
@@ -120,7 +124,7 @@ static void edit(seq *s, int t)
 
 int main(int argc, char **argv)
 {
-    int frames = 30, size = 512;
+    int frames = 30, size = 512, passes_too = 0;
     const char *only = NULL;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!strcmp(argv[i], "--frames"))
@@ -129,9 +133,12 @@ int main(int argc, char **argv)
             size = atoi(argv[i + 1]);
         else if (!strcmp(argv[i], "--only"))
             only = argv[i + 1];
+        else if (!strcmp(argv[i], "--passes"))
+            passes_too = atoi(argv[i + 1]);
     }
     if (frames < 1 || size < 16 || size > 2048) {
-        fprintf(stderr, "usage: bench_plan [--frames N >= 1] [--size 16..2048] [--only NAME]\n");
+        fprintf(stderr, "usage: bench_plan [--frames N >= 1] [--size 16..2048] [--only NAME] "
+                        "[--passes 0|1]\n");
         return 2;
     }
     hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES};
@@ -141,6 +148,8 @@ int main(int argc, char **argv)
         printf("SKIP: no GLES renderer here: %s\n", err.msg);
         return 77;
     }
+    if (passes_too)
+        hfs_renderer_set_timing(planned, 1);
     static const char *const names[] = {"env-rotate", "key-sweep", "local-move", "terrain"};
     printf("| sequence | field | frames | planned ms (median) | full ms (median) | full / "
            "planned | passes run per planned frame (total over the frames) |\n");
@@ -159,6 +168,10 @@ int main(int argc, char **argv)
         double *tp = calloc((size_t)frames, sizeof *tp), *tf = calloc((size_t)frames, sizeof *tf);
         char passes[16][24] = {{0}};
         int counts[16] = {0}, np = 0;
+        /* Per-pass GPU times of the planned frames (--passes), by name. */
+        char tnames[HFS_MAX_PASSES][16] = {{0}};
+        double *tms = calloc((size_t)frames * HFS_MAX_PASSES, sizeof *tms);
+        int ntn = 0;
         if (!tp || !tf || hfs_image_alloc(&img, n, n, &err)) {
             rc = 1;
         } else {
@@ -174,6 +187,21 @@ int main(int argc, char **argv)
                     continue; /* warm-up: programs compiled, caches filled */
                 tp[t] = t1 - t0;
                 tf[t] = t2 - t1;
+                if (passes_too) {
+                    hfs_timings tm;
+                    hfs_renderer_timings(planned, &tm);
+                    for (int i = 0; i < tm.n_passes && tms; ++i) {
+                        if (tm.pass[i].cached)
+                            continue;
+                        int j = 0;
+                        while (j < ntn && strcmp(tnames[j], tm.pass[i].name))
+                            ++j;
+                        if (j == ntn && ntn < HFS_MAX_PASSES)
+                            snprintf(tnames[ntn++], sizeof tnames[0], "%s", tm.pass[i].name);
+                        if (j < HFS_MAX_PASSES)
+                            tms[(size_t)j * frames + t] = tm.pass[i].ms;
+                    }
+                }
                 hfs_frame_report rep;
                 hfs_renderer_frame_report(planned, &rep);
                 for (int i = 0; i < rep.n_steps; ++i) {
@@ -201,9 +229,13 @@ int main(int argc, char **argv)
             }
             printf("| %s | %dx%d | %d | %.2f | %.2f | %.1fx | %s |\n", names[k], n, n, frames, mp,
                    mf, mf / mp, np ? ran : "none");
+            for (int j = 0; j < ntn && tms; ++j)
+                printf("    %s: planned frames' %s pass, median %.2f ms\n", names[k], tnames[j],
+                       hfs_median(tms + (size_t)j * frames, frames));
             fflush(stdout);
         }
         hfs_image_free(&img);
+        free(tms);
         free(tp);
         free(tf);
         free(s.z);

@@ -113,7 +113,7 @@ static void test_fold_matches_visibility(void)
             CHECK(0, "visibility: %s", err.msg);
             continue;
         }
-        double omega[16], nlp[16 * HFS_NLP_N], va[HFS_SH_N], vb[HFS_SH_N];
+        double omega[32], nlp[32 * HFS_NLP_N], va[HFS_SH_N], vb[HFS_SH_N]; /* n <= 2*9+1 */
         for (int k = 0; k < s.n; ++k) {
             omega[k] = -1.5 + 3.0 * frand(&seed);
             hfs_nlp_visible_band(omega[k] > s.elev_lo ? omega[k] : s.elev_lo, s.elev_hi,

@@ -160,19 +160,42 @@ static void test_swaths(void)
     }
     CHECK(fabs(total - 2 * PI) < 1e-12, "full wedges cover %g", total);
 
-    /* Partial: phi 1.0, elev 0.5, alpha 0.2 -> h = asin(sin .2 / cos .5). */
+    /* Partial: phi 1.0, elev 0.5, alpha 0.2 -> h = asin(sin .2 / cos .5):
+     * samples on the lattice 2 pi / 2^m, the coarsest not coarser than
+     * 2h / 3, whose wedges cover [1 - h, 1 + h]. */
     const double h = asin(sin(0.2) / cos(0.5));
     hfs_swath_key(1.0, 0.5, 0.2, 3, 32, &s);
-    CHECK(!s.full && s.n == 3 && hfs_swath_wedge_count(&s) == 4, "partial swath");
-    CHECK(fabs(s.dphi - 2 * h / 3) < 1e-15 && fabs(hfs_swath_phi(&s, 1) - 1.0) < 1e-15,
-          "partial swath spacing / centre sample");
+    const double lat = 2 * PI / pow(2.0, ceil(log2(PI * 3 / h)));
+    CHECK(!s.full && s.dphi == lat && s.dphi <= 2 * h / 3 && 2 * s.dphi > 2 * h / 3,
+          "partial swath spacing %g (h %g)", s.dphi, h);
+    CHECK(s.n >= 3 && s.n <= 7 && hfs_swath_wedge_count(&s) == s.n + 1, "partial swath n=%d",
+          s.n);
+    CHECK(fabs(s.phi0 / s.dphi - floor(s.phi0 / s.dphi + 0.5)) < 1e-9, "samples on the lattice");
     hfs_swath_wedge first, last;
     hfs_swath_get_wedge(&s, 0, &first);
-    hfs_swath_get_wedge(&s, 3, &last);
-    CHECK(first.a == -1 && first.b == 0 && fabs(first.start - (1.0 - h)) < 1e-15 &&
-          fabs(first.extent - s.dphi / 2) < 1e-15, "start boundary wedge");
-    CHECK(last.a == 2 && last.b == -1 && fabs(last.start + last.extent - (1.0 + h)) < 1e-14,
-          "end boundary wedge");
+    hfs_swath_get_wedge(&s, s.n, &last);
+    CHECK(first.a == -1 && first.b == 0 && first.start <= 1.0 - h &&
+          first.start > 1.0 - h - s.dphi && fabs(first.extent - s.dphi / 2) < 1e-15,
+          "start boundary wedge at %g for %g", first.start, 1.0 - h);
+    CHECK(last.a == s.n - 1 && last.b == -1 && last.start + last.extent >= 1.0 + h &&
+              last.start + last.extent < 1.0 + h + s.dphi,
+          "end boundary wedge ends at %g for %g", last.start + last.extent, 1.0 + h);
+    /* A light moved within its sampled swath keeps it; one that leaves it
+     * gets another (the frame planner reuses the horizons only then). */
+    hfs_swath moved;
+    /* Moved left by half the smaller distance from either end of the disk
+     * to the left edge of the wedge holding it: both ends stay in their
+     * wedges. */
+    const double room = fmin((1.0 - h) - first.start, (1.0 + h) - (last.start + last.extent - s.dphi));
+    CHECK(room > 0.0, "no room to move (%g)", room);
+    hfs_swath_key(1.0 - 0.5 * room, 0.5, 0.2, 3, 32, &moved);
+    CHECK(moved.n == s.n && moved.phi0 == s.phi0 && moved.dphi == s.dphi,
+          "a small move changed the swath");
+    hfs_swath_key(1.0 + 1.5 * s.dphi, 0.5, 0.2, 3, 32, &moved);
+    CHECK(moved.phi0 != s.phi0, "a move of 1.5 samples kept the swath");
+    /* Azimuths a turn apart give the same swath. */
+    hfs_swath_key(1.0 + 2 * PI, 0.5, 0.2, 3, 32, &moved);
+    CHECK(moved.n == s.n && fabs(moved.phi0 - s.phi0) < 1e-12, "phi + 2 pi: another swath");
 
     /* Disk covering the zenith or the nadir: full swath, max(nkey, nenv). */
     hfs_swath_key(0.3, 1.45, 0.2, 3, 32, &s);
@@ -261,12 +284,17 @@ static void test_window(void)
     hfs_swath s;
     const double phil = 2.2, el = 0.35, alpha = 0.25;
     hfs_swath_key(phil, el, alpha, 3, 32, &s);
-    const double h = asin(sin(alpha) / cos(el));
+    /* The swath spans [A, B] (its wedges; samples on a lattice around the
+     * disk's phil +- h), with half-wedge ramps at both ends. */
+    hfs_swath_wedge w0, w1;
+    hfs_swath_get_wedge(&s, 0, &w0);
+    hfs_swath_get_wedge(&s, s.n, &w1);
+    const double A = w0.start, B = w1.start + w1.extent, h = 0.5 * (B - A), mid = 0.5 * (A + B);
     for (int path = HFS_VIS_LEGENDRE; path <= HFS_VIS_WEDGE_TABLE; ++path) {
         hfs_visibility *v = make(&s, (hfs_visibility_path)path);
         if (!v)
             continue;
-        const double om[3] = {0.0, 0.0, 0.0};
+        double om[64] = {0.0}; /* horizons at 0 (s.n <= 2 * 3 + 1) */
         double V[HFS_SH_N], W[HFS_SH_N] = {0};
         hfs_visibility_eval(v, om, V);
         double gx[NE], gw[NE];
@@ -287,7 +315,7 @@ static void test_window(void)
                 const double e = lo + (hi - lo) * 0.5 * (gx[q] + 1.0);
                 const double wt = scale * dphi * (hi - lo) * 0.5 * gw[q] * cos(e);
                 double y[HFS_SH_N];
-                hfs_sh_eval_dir(phil + t, e, y);
+                hfs_sh_eval_dir(mid + t, e, y);
                 for (int k = 0; k < HFS_SH_N; ++k)
                     W[k] += wt * y[k];
             }

@@ -216,18 +216,20 @@ static int mode_cache(void)
     render(r, &s, &l, &q, &a);
     hfs_timings t;
     hfs_renderer_timings(r, &t);
-    CHECK(t.n_passes == 8, "first frame: %d passes", t.n_passes);
+    CHECK(t.n_passes == 10, "first frame: %d passes", t.n_passes);
     for (int p = 0; p < t.n_passes; ++p)
         CHECK(!t.pass[p].cached, "first frame: %s cached", t.pass[p].name);
 
-    /* Only the light moves: terrain passes and env cached, key + shade run. */
+    /* Only the light moves: terrain passes, env and the env transfer cached;
+     * key, key factor and shade run. */
     l.key[0].phi += 0.5;
     render(r, &s, &l, &q, &a);
     hfs_renderer_timings(r, &t);
     for (int p = 0; p < t.n_passes; ++p) {
         const int terrain = !strcmp(t.pass[p].name, "upload") || !strcmp(t.pass[p].name, "normals") ||
                             !strcmp(t.pass[p].name, "decimate") ||
-                            !strcmp(t.pass[p].name, "reconstruct") || !strcmp(t.pass[p].name, "env");
+                            !strcmp(t.pass[p].name, "reconstruct") || !strcmp(t.pass[p].name, "env") ||
+                            !strcmp(t.pass[p].name, "transfer");
         CHECK(t.pass[p].cached == terrain, "light change: %s cached=%d", t.pass[p].name,
               t.pass[p].cached);
     }
@@ -327,8 +329,9 @@ static int mode_timing(void)
     render(r, &s, &l, &q, &img);
     hfs_renderer_timings(r, &t);
     CHECK(t.n_passes == 0, "timing off: %d passes reported", t.n_passes);
-    static const char *const names[] = {"upload", "normals", "decimate", "reconstruct",
-                                        "env", "key", "shade", "readback"};
+    static const char *const names[] = {"upload", "normals", "decimate", "reconstruct", "env",
+                                        "key", "transfer", "keyfactor", "shade", "readback"};
+    const int n_names = (int)(sizeof names / sizeof names[0]);
     for (int level = 1; level <= 2; ++level) {
         hfs_renderer_set_timing(r, level);
         hfs_renderer_invalidate(r);
@@ -336,8 +339,8 @@ static int mode_timing(void)
         hfs_renderer_timings(r, &t);
         printf("timing level %d (%s, %s): frame %.2f ms, passes %.2f ms, %zu texture bytes\n",
                level, t.method, t.device, t.frame_ms, t.gpu_ms, t.texture_bytes);
-        CHECK(t.n_passes == 8, "level %d: %d passes", level, t.n_passes);
-        for (int p = 0; p < t.n_passes && p < 8; ++p) {
+        CHECK(t.n_passes == n_names, "level %d: %d passes", level, t.n_passes);
+        for (int p = 0; p < t.n_passes && p < n_names; ++p) {
             printf("  %-12s %8.3f ms %12.0f fetches\n", t.pass[p].name, t.pass[p].ms,
                    t.pass[p].fetches);
             CHECK(!strcmp(t.pass[p].name, names[p]), "pass %d is %s, want %s", p, t.pass[p].name,

@@ -301,7 +301,8 @@ static void test_blocks(void)
     if (!v)
         return;
     const size_t nv = hfs_gles_swath_vec4(s.n);
-    CHECK(nv == 2 + 17 * 3 + 2 * 4, "swath block size %zu", nv);
+    CHECK(s.n >= 3 && nv == 2 + 17 * (size_t)s.n + 2 * (size_t)(s.n + 1), "swath block size %zu",
+          nv);
     float *b = calloc(nv * 4, sizeof *b);
     hfs_gles_layout Lb;
     {
@@ -312,23 +313,24 @@ static void test_blocks(void)
         hfs_gles_layout_init(&Lb, &fb, &qb, &err);
     }
     hfs_gles_pack_swath(&Lb, v, b);
-    CHECK(b[0] == (float)s.elev_lo && b[1] == (float)s.elev_hi && b[2] == 3.0f && b[3] == 0.0f,
+    CHECK(b[0] == (float)s.elev_lo && b[1] == (float)s.elev_hi && b[2] == (float)s.n &&
+              b[3] == 0.0f,
           "header");
-    for (int j = 0; j < 3; ++j) {
+    for (int j = 0; j < s.n; ++j) {
         const double *m = hfs_visibility_sample_matrix(v, j);
         for (int r = 0; r < 16; ++r)
             for (int c = 0; c < 4; ++c)
-                CHECK(b[(2 + 3 + 16 * j + r) * 4 + c] == (float)m[r * 4 + c], "C_%d[%d][%d]", j, r,
+                CHECK(b[(2 + s.n + 16 * j + r) * 4 + c] == (float)m[r * 4 + c], "C_%d[%d][%d]", j, r,
                       c);
         double c0, s0;
         hfs_gles_swath_dir(&s, j, &c0, &s0);
         CHECK(fabs(b[(2 + j) * 4] - c0) < 1e-5 && fabs(b[(2 + j) * 4 + 1] - s0) < 1e-5, "dir %d", j);
     }
-    /* Wedge placements: start boundary mirrored at phi_0, end at phi_2. */
-    const float *rot = b + (2 + 17 * 3) * 4;
+    /* Wedge placements: start boundary mirrored at phi_0, end at phi_{n-1}. */
+    const float *rot = b + (2 + 17 * (size_t)s.n) * 4;
     CHECK(rot[3] == 1.0f && rot[8 + 3] == 0.0f, "mirror flags");
     CHECK(fabs(rot[0] - cos(hfs_swath_phi(&s, 0))) < 1e-6, "start boundary angle");
-    CHECK(fabs(rot[3 * 8] - cos(hfs_swath_phi(&s, 2))) < 1e-6, "end boundary angle");
+    CHECK(fabs(rot[s.n * 8] - cos(hfs_swath_phi(&s, s.n - 1))) < 1e-6, "end boundary angle");
     free(b);
     hfs_visibility_destroy(v);
 

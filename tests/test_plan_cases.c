@@ -98,7 +98,8 @@ int main(void)
     if (hfs_image_alloc(&a, N, N, &err) || hfs_image_alloc(&b, N, N, &err))
         return 1;
 
-    EXPECT("first frame", "terrain env key 0 key 1 local shade readback ");
+    EXPECT("first frame",
+           "terrain env key 0 key 1 local transfer key 0 factor key 1 factor shade readback ");
     EXPECT("nothing changed", "");
     l.env_rotate = 0.7;
     EXPECT("environment rotated", "shade readback ");
@@ -112,16 +113,16 @@ int main(void)
     l.albedo = 0.5;
     EXPECT("albedo", "shade readback ");
     l.key[0].phi += 0.3;
-    EXPECT("key 0 moved", "key 0 shade readback ");
+    EXPECT("key 0 moved", "key 0 key 0 factor shade readback ");
     l.local[0].pos[0] = 12;
     EXPECT("local light moved", "local shade readback ");
     l.key[1].disabled = 1;
     l.local[0].radiance[0] = l.local[0].radiance[1] = l.local[0].radiance[2] = 0;
     EXPECT("key 1 off, local dark", "shade readback ");
     l.key[0].phi += 0.2; /* key 0 is now the only key: its pass runs, no other */
-    EXPECT("key 0 moved again", "key 0 shade readback ");
+    EXPECT("key 0 moved again", "key 0 key 0 factor shade readback ");
     z[5 * N + 7] += 1.0f;
-    EXPECT("heights changed", "terrain env key 0 shade readback ");
+    EXPECT("heights changed", "terrain env key 0 transfer key 0 factor shade readback ");
     EXPECT("nothing changed again", "");
 
     hfs_frame_report rep;

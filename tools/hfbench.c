@@ -208,8 +208,8 @@ static int measure(hfs_renderer *rd, const bench_scene *sc, const hfs_quality *q
                 row[T_KEY * frames] += ms;
             else if (!strcmp(n, "local"))
                 row[T_LOCAL * frames] += ms;
-            else if (!strcmp(n, "shade"))
-                row[T_SHADE * frames] += ms;
+            else if (!strcmp(n, "transfer") || !strcmp(n, "keyfactor") || !strcmp(n, "shade"))
+                row[T_SHADE * frames] += ms; /* the full-resolution passes */
         }
         r->texture_bytes = t.texture_bytes;
     }
