@@ -277,6 +277,7 @@ void hfs_local_legendre_eval(const hfs_local_swath *sw, const double *E, const d
 typedef struct local_src {
     hfs_local_light light;
     double le[3];
+    int open;                  /* beyond the terrain's shadow range: ratio 1 */
 } local_src;
 
 typedef struct local_scratch {
@@ -373,11 +374,14 @@ int hfs_cpu_local_create(const hfs_field *f, const hfs_lighting *l, const hfs_qu
     lc->rho = l->albedo;
     hfs_zh_clamped_cosine(lc->h_zonal);
     hfs_local_elevation_moments(lc->E);
+    hfs_field_extent ext;
+    hfs_field_extent_make(f, &ext);
     for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i) {
         if (!hfs_cpu_local_contributes(&l->local[i]))
             continue;
         local_src *s = &lc->src[lc->n_src++];
         s->light = l->local[i];
+        s->open = hfs_local_light_open(&ext, &l->local[i]);
         for (int ch = 0; ch < 3; ++ch)
             s->le[ch] = l->local[i].radiance[ch];
     }
@@ -532,6 +536,11 @@ static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *sr
     const double e_cap = hfs_cap_irradiance(cos_beta, lv.alpha);
     if (!(e_cap > 0.0))
         return;
+    if (src->open) { /* nothing can shadow it: the unshadowed value */
+        for (int ch = 0; ch < 3; ++ch)
+            lo[ch] += lc->rho / PI * e_cap * src->le[ch];
+        return;
+    }
 
     double zh[HFS_ZH_N], l_sh[HFS_SH_N], m[HFS_SH_N];
     hfs_zh_cap(lv.alpha, zh);

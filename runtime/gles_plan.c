@@ -17,7 +17,11 @@ void hfs_gles_plan_init(hfs_gles_plan *gp)
     gp->in_env_set = hfs_plan_input(p, "env settings");
     gp->in_env_light = hfs_plan_input(p, "env light");
     gp->in_albedo = hfs_plan_input(p, "albedo");
-    gp->in_local_geom = hfs_plan_input(p, "local geometry");
+    gp->in_local_set = hfs_plan_input(p, "local settings");
+    for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i) {
+        snprintf(name, sizeof name, "local %d geometry", i);
+        gp->in_local_geom[i] = hfs_plan_input(p, name);
+    }
     gp->in_local_rad = hfs_plan_input(p, "local radiance");
     gp->in_light_set = hfs_plan_input(p, "light set");
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
@@ -34,7 +38,10 @@ void hfs_gles_plan_init(hfs_gles_plan *gp)
         snprintf(name, sizeof name, "key %d horizons", i);
         gp->pr_key[i] = hfs_plan_product(p, name);
     }
-    gp->pr_local = hfs_plan_product(p, "local ratios");
+    for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i) {
+        snprintf(name, sizeof name, "local %d ratios", i);
+        gp->pr_local[i] = hfs_plan_product(p, name);
+    }
     gp->pr_transfer = hfs_plan_product(p, "env transfer");
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         snprintf(name, sizeof name, "key %d factor", i);
@@ -54,9 +61,13 @@ void hfs_gles_plan_init(hfs_gles_plan *gp)
             p, name, (int[]){gp->pr_pyramid, gp->in_grid, gp->in_key_geom[i], -1},
             (int[]){gp->pr_key[i], -1});
     }
-    gp->pass[GP_LOCAL] = hfs_plan_pass_add(
-        p, "local", (int[]){gp->pr_pyramid, gp->in_grid, gp->in_local_geom, -1},
-        (int[]){gp->pr_local, -1});
+    for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i) {
+        snprintf(name, sizeof name, "local %d", i);
+        gp->pass[GP_LOCAL0 + i] = hfs_plan_pass_add(
+            p, name,
+            (int[]){gp->pr_pyramid, gp->in_grid, gp->in_local_set, gp->in_local_geom[i], -1},
+            (int[]){gp->pr_local[i], -1});
+    }
     gp->pass[GP_TRANSFER] = hfs_plan_pass_add(p, "transfer", (int[]){gp->pr_pyramid, gp->pr_env, -1},
                                               (int[]){gp->pr_transfer, -1});
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
@@ -112,16 +123,23 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
             hfs_plan_change(p, gp->in_key_rad[i], why);
         }
     }
-    int geom = a->n_local != b->n_local || a->nphi_local != b->nphi_local ||
-               a->local_full != b->local_full || a->vis_path != b->vis_path;
+    if (a->nphi_local != b->nphi_local || a->local_full != b->local_full ||
+        a->vis_path != b->vis_path)
+        hfs_plan_change(p, gp->in_local_set, "local-light settings changed");
     int rad = a->n_local != b->n_local;
-    for (int i = 0; i < a->n_local && i < b->n_local; ++i) {
-        geom |= memcmp(a->local[i].pos, b->local[i].pos, sizeof a->local[i].pos) != 0 ||
-                a->local[i].radius != b->local[i].radius;
-        rad |= memcmp(a->local[i].le, b->local[i].le, sizeof a->local[i].le) != 0;
+    for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i) {
+        const int ha = i < a->n_local, hb = i < b->n_local;
+        if (!ha && !hb)
+            continue;
+        if (ha != hb || memcmp(a->local[i].pos, b->local[i].pos, sizeof a->local[i].pos) ||
+            a->local[i].radius != b->local[i].radius || a->local[i].open != b->local[i].open) {
+            snprintf(why, sizeof why, "local %d: %s", i,
+                     ha != hb ? "light added or removed" : "moved or resized");
+            hfs_plan_change(p, gp->in_local_geom[i], why);
+        }
+        if (ha && hb)
+            rad |= memcmp(a->local[i].le, b->local[i].le, sizeof a->local[i].le) != 0;
     }
-    if (geom)
-        hfs_plan_change(p, gp->in_local_geom, "local light moved, resized, added or removed");
     if (rad)
         hfs_plan_change(p, gp->in_local_rad, "local radiance changed");
 }
@@ -138,7 +156,7 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
     gp->have_last = 1;
 
     /* The shading reads what this frame's lights use. */
-    int reads[10 + 2 * HFS_GLES_PLAN_KEYS], n = 0;
+    int reads[10 + 2 * HFS_GLES_PLAN_KEYS + 2 * HFS_MAX_LOCAL_LIGHTS], n = 0;
     reads[n++] = gp->pr_pyramid;
     reads[n++] = gp->in_albedo;
     reads[n++] = gp->in_light_set;
@@ -150,9 +168,12 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
         reads[n++] = gp->pr_kfactor[i];
         reads[n++] = gp->in_key_rad[i];
     }
-    if (now->n_local > 0) {
-        reads[n++] = gp->pr_local;
+    if (now->n_local > 0)
         reads[n++] = gp->in_local_rad;
+    for (int i = 0; i < now->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i) {
+        reads[n++] = gp->in_local_geom[i]; /* E_cap at each texel */
+        if (!now->local[i].open) /* an open light's ratio is 1: nothing to read */
+            reads[n++] = gp->pr_local[i];
     }
     reads[n] = -1;
     hfs_plan_pass_reads(p, gp->pass[GP_SHADE], reads);
@@ -179,7 +200,8 @@ void hfs_gles_plan_drop_all(hfs_gles_plan *gp)
 void hfs_gles_plan_drop_grids(hfs_gles_plan *gp)
 {
     hfs_plan_drop(&gp->p, gp->pr_env);
-    hfs_plan_drop(&gp->p, gp->pr_local);
+    for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i)
+        hfs_plan_drop(&gp->p, gp->pr_local[i]);
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i)
         hfs_plan_drop(&gp->p, gp->pr_key[i]);
 }
@@ -198,7 +220,8 @@ void hfs_gles_plan_lost(hfs_gles_plan *gp, int grid, int key_horizons, int local
         for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i)
             hfs_plan_drop(&gp->p, gp->pr_key[i]);
     if (local_ratios)
-        hfs_plan_drop(&gp->p, gp->pr_local);
+        for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i)
+            hfs_plan_drop(&gp->p, gp->pr_local[i]);
 }
 
 void hfs_gles_plan_report(const hfs_gles_plan *gp, hfs_frame_report *out)
@@ -213,8 +236,10 @@ void hfs_gles_plan_report(const hfs_gles_plan *gp, hfs_frame_report *out)
     }
     for (int i = 0; i < gp->p.n_passes && out->n_steps < HFS_REPORT_STEPS; ++i) {
         const hfs_plan_step *s = &gp->steps[i];
-        /* Key slots beyond the frame's lights say nothing: leave them out. */
-        if (!s->run && !strcmp(s->reason, "not needed") && !strncmp(gp->p.pass[i].name, "key ", 4))
+        /* Key and local slots beyond the frame's lights (and open lights)
+         * say nothing: leave them out. */
+        if (!s->run && !strcmp(s->reason, "not needed") &&
+            (!strncmp(gp->p.pass[i].name, "key ", 4) || !strncmp(gp->p.pass[i].name, "local ", 6)))
             continue;
         hfs_frame_step *o = &out->step[out->n_steps++];
         snprintf(o->pass, sizeof o->pass, "%s", gp->p.pass[i].name);

@@ -7,28 +7,32 @@
  *            grid (subsample), env settings (nphi_env, visibility path),
  *            env light (rotated SH), albedo, key i geometry (its swath and
  *            horizon layers), key i direction (direction, size, elevation
- *            window), key i radiance, local geometry (the contributing
- *            lights' centres and radii, nphi_local, swath mode, path), local
- *            radiance
- *   passes   terrain -> env -> key i -> local -> transfer -> key i factor
+ *            window), key i radiance, local settings (nphi_local, swath
+ *            mode, path), local i geometry (centre, radius, and whether the
+ *            terrain can shadow it at all: lights.h hfs_local_light_open),
+ *            local radiance
+ *   passes   terrain -> env -> key i -> local i -> transfer -> key i factor
  *            -> shade -> readback
  *            terrain  reads terrain                 writes pyramid
  *            env      reads pyramid, grid, env set  writes env visibility
  *            key i    reads pyramid, grid, key i geometry   writes key i horizons
- *            local    reads pyramid, grid, local geometry   writes local ratios
+ *            local i  reads pyramid, grid, local settings, local i geometry
+ *                                                   writes local i ratios
  *            transfer reads pyramid, env visibility writes env transfer (T)
  *            key i factor reads pyramid, key i horizons, key i direction
  *                                                   writes key i factor
  *            shade    reads the light set (which kinds, how many lights), what
  *                     the frame's lights use: env transfer + env light, key i
- *                     factor + key i radiance, local ratios + local
- *                     radiance; albedo           writes the output targets
+ *                     factor + key i radiance, local i ratios (of the lights
+ *                     the terrain can shadow) + local radiance; albedo
+ *                                                   writes the output targets
  *            readback reads the output targets      writes the image
  * A key light's horizons depend only on its swath (the sample directions):
  * moved inside it, the light costs its factor pass and the shading; the
  * environment's transfer vectors and the key factors do not depend on
  * radiance or (environment) rotation, so a turned, re-tinted or dimmed light
- * costs the shading only.  Nothing changed: no pass, no GL call; the last
+ * costs the shading only.  One local light moved costs its own ratios; a
+ * local light beyond the terrain's shadow range needs none (ratio 1).  Nothing changed: no pass, no GL call; the last
  * image is handed out again.
  */
 #ifndef HFS_GLES_PLAN_H
@@ -57,19 +61,23 @@ typedef struct hfs_gles_frame_sig {
     struct {
         double pos[3], radius;
         float le[3];
+        int open;                 /* hfs_local_light_open: no ratios needed */
     } local[HFS_MAX_LOCAL_LIGHTS];
 } hfs_gles_frame_sig;
 
-enum { GP_TERRAIN, GP_ENV, GP_KEY0, GP_LOCAL = GP_KEY0 + HFS_GLES_PLAN_KEYS, GP_TRANSFER,
-       GP_KFACTOR0, GP_SHADE = GP_KFACTOR0 + HFS_GLES_PLAN_KEYS, GP_READBACK, GP_PASSES };
+enum { GP_TERRAIN, GP_ENV, GP_KEY0, GP_LOCAL0 = GP_KEY0 + HFS_GLES_PLAN_KEYS,
+       GP_TRANSFER = GP_LOCAL0 + HFS_MAX_LOCAL_LIGHTS, GP_KFACTOR0,
+       GP_SHADE = GP_KFACTOR0 + HFS_GLES_PLAN_KEYS, GP_READBACK, GP_PASSES };
 
 typedef struct hfs_gles_plan {
     hfs_plan p;
-    int in_terrain, in_grid, in_env_set, in_env_light, in_albedo, in_local_geom, in_local_rad;
+    int in_terrain, in_grid, in_env_set, in_env_light, in_albedo, in_local_set, in_local_rad;
+    int in_local_geom[HFS_MAX_LOCAL_LIGHTS];
     int in_light_set;             /* which light kinds / how many lights */
     int in_key_geom[HFS_GLES_PLAN_KEYS], in_key_dir[HFS_GLES_PLAN_KEYS];
     int in_key_rad[HFS_GLES_PLAN_KEYS];
-    int pr_pyramid, pr_env, pr_local, pr_transfer, pr_targets, pr_image;
+    int pr_pyramid, pr_env, pr_transfer, pr_targets, pr_image;
+    int pr_local[HFS_MAX_LOCAL_LIGHTS];
     int pr_key[HFS_GLES_PLAN_KEYS], pr_kfactor[HFS_GLES_PLAN_KEYS];
     int pass[GP_PASSES];          /* frame_plan pass id of each GP_* */
     hfs_gles_frame_sig last;

@@ -142,6 +142,8 @@ struct hfs_gles {
 
     /* The frame planner (gles_plan.h): which passes a frame runs. */
     hfs_gles_plan plan;
+    hfs_field_extent extent;              /* of the kept terrain (lights.h) */
+    int extent_valid;
     float *last_img;                      /* the last image read back, RGB */
     size_t last_img_cap;
     hfs_visibility *env_vis;
@@ -1054,10 +1056,16 @@ static int run_keys(hfs_gles *g, const hfs_gles_layout *L, const frame_key *keys
     return HFS_OK;
 }
 
-/* Local-light passes (or their counting twins) into the ratio array: lights
- * [l0, l0 + 8) per draw, light i in layer i / 2.  HfsLocal must be uploaded. */
+/* Local-light passes (or their counting twins) into the ratio array, light
+ * i in layer i / 2 (channels RG for even i, BA for odd).  which[i] set: the
+ * light's ratios are computed (which = NULL: all lights).  Layers whose
+ * lights are all wanted (or absent) are drawn 4 at a time (8 lights per
+ * draw); a layer with one wanted and one kept light is drawn alone with a
+ * colour mask that protects the kept light's channels (ES 3.0 has no
+ * per-target mask) and computes only the wanted one (u_lmask).  HfsLocal
+ * must be uploaded. */
 static int run_local(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality *q, int n_local,
-                     int count, double *fetch_sum, hfs_error *err)
+                     const int *which, int count, double *fetch_sum, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     resources *r = &g->r;
@@ -1066,27 +1074,53 @@ static int run_local(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality *q
     snprintf(ldirs, sizeof ldirs, "HFS_LOCAL_DIRS %d", q->nphi_local);
     snprintf(tabn, sizeof tabn, "HFS_TABLE_N %d", TABLE_N);
     const char *extra[4] = {ldirs, tables ? "HFS_TABLES 1" : NULL, tabn, NULL};
-    int rc;
-    for (int l0 = 0; l0 < n_local; l0 += LIGHTS_PER_LOCAL_PASS) {
-        const int cnt = n_local - l0 < LIGHTS_PER_LOCAL_PASS ? n_local - l0
-                                                              : LIGHTS_PER_LOCAL_PASS;
+    const int n_layers = (n_local + 1) / 2;
+    int rc = HFS_OK;
+    for (int k = 0; k < n_layers;) {
+        /* Wanted lights of layer k: bit 0 = light 2k, bit 1 = light 2k + 1. */
+        int want = 0;
+        for (int b = 0; b < 2 && 2 * k + b < n_local; ++b)
+            want |= (!which || which[2 * k + b]) << b;
+        const int both = 2 * k + 1 < n_local ? 3 : 1;
+        if (!want) {
+            ++k;
+            continue;
+        }
+        int layers = 1, mask = want;
+        if (want == both) { /* extend over the following whole layers */
+            while (layers < 4 && k + layers < n_layers) {
+                int w2 = 0;
+                for (int b = 0; b < 2 && 2 * (k + layers) + b < n_local; ++b)
+                    w2 |= (!which || which[2 * (k + layers) + b]) << b;
+                if (w2 != (2 * (k + layers) + 1 < n_local ? 3 : 1))
+                    break;
+                mask |= w2 << (2 * layers);
+                ++layers;
+            }
+        }
+        const int l0 = 2 * k, cnt = 2 * (k + layers) < n_local ? 2 * layers : n_local - l0;
         GLuint prog;
-        if ((rc = grid_program(g, L, "gles_local.frag", extra, (cnt + 1) / 2, count, &prog,
-                               err)))
-            return rc;
+        if ((rc = grid_program(g, L, "gles_local.frag", extra, layers, count, &prog, err)))
+            break;
         set_i1(gl, prog, "u_light0", l0);
         set_i1(gl, prog, "u_nl", cnt);
+        set_i1(gl, prog, "u_lmask", mask);
         if (tables)
             bind_tex(gl, U_TAB, GL_TEXTURE_2D_ARRAY, g->loc_tab);
         gl->BindBufferBase(GL_UNIFORM_BUFFER, B_LOCAL, g->ubo[UBO_LOCAL]);
-        if ((rc = draw_grid_layers(g, L, r->localv_fbo, r->localv, l0 / 2, (cnt + 1) / 2,
-                                   "local-light", count ? fetch_sum : NULL, err)))
-            return rc;
-        if ((rc = hfs_gl_check(gl, "backend gles: local-light pass", err)))
-            return rc;
+        const int partial = layers == 1 && want != both && !count;
+        if (partial)
+            gl->ColorMask(want & 1, want & 1, (want >> 1) & 1, (want >> 1) & 1);
+        rc = draw_grid_layers(g, L, r->localv_fbo, r->localv, k, layers, "local-light",
+                              count ? fetch_sum : NULL, err);
+        if (partial)
+            gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        if (rc || (rc = hfs_gl_check(gl, "backend gles: local-light pass", err)))
+            break;
+        k += layers;
     }
     gl->UseProgram(0);
-    return HFS_OK;
+    return rc;
 }
 
 /* ---- frame ------------------------------------------------------------------------------------ */
@@ -1099,6 +1133,7 @@ typedef struct frame {
     int key_layers;
     int n_local;                          /* contributing local lights (issue 4) */
     hfs_local_light local[HFS_MAX_LOCAL_LIGHTS];
+    int local_open[HFS_MAX_LOCAL_LIGHTS]; /* beyond the shadow range: ratio 1 */
 } frame;
 
 static void frame_free(frame *fr)
@@ -1155,6 +1190,7 @@ static int local_upload(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality
             lt[8 * i + 4 + c] = fr->local[i].radiance[c];
         }
         lt[8 * i + 3] = (float)(fr->local[i].radius * inv_dx);
+        lt[8 * i + 7] = fr->local_open[i] ? 1.0f : 0.0f; /* ratio 1, none stored */
     }
     hfs_swath sw;
     hfs_swath_full(nphi, &sw);
@@ -1207,6 +1243,7 @@ static void frame_signature(const frame *fr, const hfs_quality *q, const hfs_gle
         memcpy(s->local[i].pos, fr->local[i].pos, sizeof fr->local[i].pos);
         s->local[i].radius = fr->local[i].radius;
         memcpy(s->local[i].le, fr->local[i].radiance, sizeof fr->local[i].radiance);
+        s->local[i].open = fr->local_open[i];
     }
 }
 
@@ -1366,12 +1403,21 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
                        rs->localv_gen != gens[2], rs->kf_gen != gens[3]);
 
     /* Plan: which passes this frame needs (gles_plan.h). */
-    hfs_gles_frame_sig sig;
-    frame_signature(fr, q, &L, &sig);
     const size_t n_img = (size_t)L.w * L.h * 3;
     const char *terrain_why = terrain_change(g, f, q);
-    if (terrain_why)
+    if (terrain_why) {
         g->terrain_valid = 0;
+        g->extent_valid = 0;
+    }
+    /* Local lights the terrain cannot shadow need no ratios (lights.h). */
+    if (fr->n_local > 0 && !g->extent_valid) {
+        hfs_field_extent_make(f, &g->extent);
+        g->extent_valid = 1;
+    }
+    for (int i = 0; i < fr->n_local; ++i)
+        fr->local_open[i] = hfs_local_light_open(&g->extent, &fr->local[i]);
+    hfs_gles_frame_sig sig;
+    frame_signature(fr, q, &L, &sig);
     if (hfs_gles_plan_frame(&g->plan, &sig, terrain_why) == 0 && g->last_img &&
         g->last_img_cap >= n_img) {
         /* Nothing changed: no pass; the last image again. */
@@ -1537,12 +1583,15 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     g->stats.offset_mismatches = mismatches;
 
     /* Local lights: visibility ratios on the grid. */
-    if (fr->n_local > 0 && (run[GP_LOCAL] || run[GP_SHADE]) &&
+    int any_local = 0;
+    for (int i = 0; i < fr->n_local; ++i)
+        any_local |= run[GP_LOCAL0 + i];
+    if (fr->n_local > 0 && (any_local || run[GP_SHADE]) &&
         (rc = local_upload(g, &L, q, fr, err)))
         return rc;
-    if (fr->n_local > 0 && !run[GP_LOCAL])
+    if (fr->n_local > 0 && !any_local)
         g->pass_cached[P_LOCAL] = 1;
-    if (fr->n_local > 0 && run[GP_LOCAL]) {
+    if (fr->n_local > 0 && any_local) {
         const double dphi = 2.0 * PI / q->nphi_local;
         if (tables && (!g->loc_tab || g->loc_tab_dphi != dphi)) {
             hfs_wedge_tables *t = tables_get(g, dphi, err);
@@ -1558,10 +1607,12 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
             g->loc_tab_dphi = dphi;
         }
         pass_begin(g, P_LOCAL);
-        if ((rc = run_local(g, &L, q, fr->n_local, 0, NULL, err)))
+        if ((rc = run_local(g, &L, q, fr->n_local, run + GP_LOCAL0, 0, NULL, err)))
             return rc;
         pass_end(g, P_LOCAL);
-        hfs_gles_plan_done(&g->plan, GP_LOCAL);
+        for (int i = 0; i < fr->n_local; ++i)
+            if (run[GP_LOCAL0 + i])
+                hfs_gles_plan_done(&g->plan, GP_LOCAL0 + i);
     }
     /* Full-resolution products of the visibility: the environment's
      * transfer vectors and each key light's factor. */
@@ -1736,7 +1787,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
             (rc = run_keys(g, &L, fr->keys, fr->n_keys, NULL, 1, &g->pass_fetch[P_KEY], err)))
             return rc;
         if (fr->n_local > 0 &&
-            (rc = run_local(g, &L, q, fr->n_local, 1, &g->pass_fetch[P_LOCAL], err)))
+            (rc = run_local(g, &L, q, fr->n_local, NULL, 1, &g->pass_fetch[P_LOCAL], err)))
             return rc;
         hfs_gles_plan_drop_grids(&g->plan); /* their targets now hold counts */
     } else {

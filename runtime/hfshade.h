@@ -289,7 +289,7 @@ HFS_API void hfs_renderer_invalidate(hfs_renderer *r);
  * frame planner, issue 6: a pass runs only when something it reads changed
  * or it never ran; "cached: nothing it reads changed", "not needed").  The
  * CPU and truth backends report one step, "render". */
-#define HFS_REPORT_STEPS 24
+#define HFS_REPORT_STEPS 40
 typedef struct hfs_frame_step {
     char pass[24];
     int ran;

@@ -99,3 +99,36 @@ int hfs_key_light_contributes(const hfs_key_light *k, double albedo)
     const double le = fmax(k->radiance[0], fmax(k->radiance[1], k->radiance[2]));
     return albedo / 3.14159265358979323846 * le * hfs_cap_irradiance(1.0, k->alpha) > 0.0;
 }
+
+void hfs_field_extent_make(const hfs_field *f, hfs_field_extent *e)
+{
+    const size_t w = (size_t)f->width, h = (size_t)f->height;
+    double top = -INFINITY, dzx = 0.0, dzy = 0.0;
+    for (size_t j = 0; j < h; ++j) {
+        const float *row = f->z + j * w;
+        for (size_t i = 0; i < w; ++i) {
+            const double z = row[i];
+            top = z > top ? z : top;
+            if (i + 1 < w)
+                dzx = fmax(dzx, fabs((double)row[i + 1] - z));
+            if (j + 1 < h)
+                dzy = fmax(dzy, fabs((double)row[i + w] - z));
+        }
+    }
+    e->z_top = f->zscale * top;
+    e->slope = f->zscale * hypot(dzx, dzy) / f->dx;
+    e->x_max = (double)(w - 1) * f->dx;
+    e->y_max = (double)(h - 1) * f->dx;
+}
+
+int hfs_local_light_open(const hfs_field_extent *e, const hfs_local_light *l)
+{
+    const double rise = l->pos[2] - l->radius - e->z_top;
+    if (!(rise > 0.0))
+        return 0;
+    /* Farthest receiver: a corner of the field. */
+    const double fx = fmax(fabs(l->pos[0]), fabs(l->pos[0] - e->x_max));
+    const double fy = fmax(fabs(l->pos[1]), fabs(l->pos[1] - e->y_max));
+    const double reach = hypot(fx, fy) + l->radius;
+    return rise > e->slope * reach;
+}

@@ -29,4 +29,25 @@ int hfs_key_light_contributes(const hfs_key_light *k, double albedo);
 int hfs_local_light_cap(const hfs_local_light *l, const double p[3],
                         double dir[3], double *dist, double *alpha);
 
+/* What decides whether the terrain can shadow a light at all: the highest
+ * world height, a bound on the terrain's slope (rise per horizontal world
+ * unit along any direction, over the bilinear surface: sqrt(sx^2 + sy^2)
+ * with sx, sy the steepest differences along x and y) and the field's
+ * horizontal extent, (W-1) dx by (H-1) dx. */
+typedef struct hfs_field_extent {
+    double z_top, slope, x_max, y_max;
+} hfs_field_extent;
+
+void hfs_field_extent_make(const hfs_field *f, hfs_field_extent *e);
+
+/* 1 if no part of the terrain can come between any receiver and any point
+ * of local light l (the light is beyond the terrain's shadow range), so its
+ * visible fraction is exactly 1 everywhere and no visibility need be
+ * computed: its lowest point is above the highest terrain, and a ray from
+ * any receiver to any point of it rises faster than the terrain can, i.e.
+ * (z_c - r - z_top) / D > slope, D the farthest horizontal distance from a
+ * receiver to a point of the light.  Conservative: 0 where it cannot tell.
+ * Every backend uses it, so they agree on which lights are open. */
+int hfs_local_light_open(const hfs_field_extent *e, const hfs_local_light *l);
+
 #endif /* HFS_LIGHTS_H */

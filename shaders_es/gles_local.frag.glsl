@@ -92,6 +92,8 @@ uniform ivec2 u_size;
 uniform int u_sub;
 uniform int u_light0;                    /* first light of this draw */
 uniform int u_nl;                        /* lights in this draw, <= 2 * HFS_NOUT */
+uniform int u_lmask;                     /* bit q: compute light u_light0 + q (the
+                                            others are kept: masked from writes) */
 
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, read layer, 0) */
@@ -100,7 +102,7 @@ layout(std140) uniform HfsLocal {
     vec4 u_lE[16];                       /* elevation moments, row r = E[r][0..3] */
     vec4 u_lg;                           /* (1, base, hscale, zscale/dx): texel units */
     vec4 u_lq;                           /* (nphi_local, forced full swath, 0, 0) */
-    vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (Le.rgb, 0) */
+    vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (Le.rgb, open) */
     vec4 u_ldir[HFS_LOCAL_DIRS];         /* full swath: (cos, sin) of 2 pi k/n */
     vec4 u_lrot[2 * HFS_LOCAL_DIRS];     /* per wedge (cos ma), (sin ma), m = 1..3 */
 };
@@ -420,7 +422,8 @@ void main()
     hfs_sh_cosine(n, H); /* shared by the lights that see above the plane */
     float ratio[2 * HFS_NOUT];
     for (int q = 0; q < 2 * HFS_NOUT; ++q)
-        ratio[q] = q < u_nl ? local_ratio(p, n, H, pw, u_light0 + q) : 0.0;
+        ratio[q] = q < u_nl && ((u_lmask >> q) & 1) != 0 ? local_ratio(p, n, H, pw, u_light0 + q)
+                                                          : 0.0;
 #ifdef HFS_COUNT
     o_r0 = vec4(float(g_fetches % 1024), float(g_fetches / 1024), 0.0, 0.0);
 #if HFS_NOUT > 1

@@ -90,7 +90,7 @@ layout(std140) uniform HfsLocal {
     vec4 u_lE[16];
     vec4 u_lg;                           /* (1, base, hscale, zscale/dx): texel units */
     vec4 u_lq;
-    vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (Le.rgb, 0) */
+    vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (Le.rgb, open) */
     vec4 u_ldir[HFS_LOCAL_DIRS];
 };
 
@@ -118,7 +118,8 @@ vec3 local_lights(ivec2 p, vec3 n, vec2 uv)
         float e_cap = hfs_cap_irradiance_sc(dot(n, v / d), r / d, sqrt(c_tan) / d);
         if (!(e_cap > 0.0))
             continue;
-        float ratio = clamp(q % 2 == 0 ? rv.x + rv.y : rv.z + rv.w, 0.0, 1.0);
+        /* l1.w: the terrain cannot shadow this light (ratio 1, none stored). */
+        float ratio = l1.w > 0.5 ? 1.0 : clamp(q % 2 == 0 ? rv.x + rv.y : rv.z + rv.w, 0.0, 1.0);
         sum += u_misc.x * l1.rgb * (e_cap * ratio);
     }
     return sum;

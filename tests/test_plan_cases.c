@@ -7,7 +7,11 @@
  *     shading and readback only;
  *   - a key light moved: its own key pass, shading; the other key's pass
  *     and the environment are kept;
- *   - a local light moved: the local pass, shading;
+ *   - a key light moved within the swath already sampled: its horizons are
+ *     kept, only its factor and the shading run;
+ *   - a local light moved: its own local pass, shading (the other local
+ *     light's ratios are kept);
+ *   - a local light beyond the terrain's shadow range: no local pass;
  *   - a light switched off (or given radiance 0): no pass for it;
  *   - heights changed: everything.
  * Each planned image also equals a from-scratch one (test_plan_equal does
@@ -91,15 +95,17 @@ int main(void)
     l.n_key = 2;
     l.key[0] = (hfs_key_light){.phi = 0.5, .elev = 0.4, .alpha = 0.04, .radiance = {20, 20, 20}};
     l.key[1] = (hfs_key_light){.phi = 2.5, .elev = 0.7, .alpha = 0.06, .radiance = {10, 9, 8}};
-    l.n_local = 1;
+    l.n_local = 2;
     l.local[0] = (hfs_local_light){.pos = {16, 16, 10}, .radius = 1.5, .radiance = {30, 30, 30}};
+    l.local[1] = (hfs_local_light){.pos = {8, 24, 6}, .radius = 1.0, .radiance = {20, 25, 30}};
     hfs_quality q;
     hfs_quality_defaults(&q);
     if (hfs_image_alloc(&a, N, N, &err) || hfs_image_alloc(&b, N, N, &err))
         return 1;
 
     EXPECT("first frame",
-           "terrain env key 0 key 1 local transfer key 0 factor key 1 factor shade readback ");
+           "terrain env key 0 key 1 local 0 local 1 transfer key 0 factor key 1 factor shade "
+           "readback ");
     EXPECT("nothing changed", "");
     l.env_rotate = 0.7;
     EXPECT("environment rotated", "shade readback ");
@@ -114,15 +120,25 @@ int main(void)
     EXPECT("albedo", "shade readback ");
     l.key[0].phi += 0.3;
     EXPECT("key 0 moved", "key 0 key 0 factor shade readback ");
+    l.key[0].phi += 0.002; /* inside its sampled swath (lattice 2 pi / 256) */
+    EXPECT("key 0 nudged in its swath", "key 0 factor shade readback ");
+    l.key[0].elev += 0.002;
+    EXPECT("key 0 a little higher", "key 0 factor shade readback ");
     l.local[0].pos[0] = 12;
-    EXPECT("local light moved", "local shade readback ");
+    EXPECT("local 0 moved", "local 0 shade readback ");
+    l.local[1].pos[2] = 400; /* far above: the terrain cannot shadow it */
+    EXPECT("local 1 out of shadow range", "shade readback ");
+    l.local[1].pos[2] = 6;
+    EXPECT("local 1 back down", "local 1 shade readback ");
     l.key[1].disabled = 1;
     l.local[0].radiance[0] = l.local[0].radiance[1] = l.local[0].radiance[2] = 0;
-    EXPECT("key 1 off, local dark", "shade readback ");
+    /* local 1 is now the only local light, in slot 0: its ratios move */
+    EXPECT("key 1 off, local 0 dark", "local 0 shade readback ");
     l.key[0].phi += 0.2; /* key 0 is now the only key: its pass runs, no other */
     EXPECT("key 0 moved again", "key 0 key 0 factor shade readback ");
     z[5 * N + 7] += 1.0f;
-    EXPECT("heights changed", "terrain env key 0 transfer key 0 factor shade readback ");
+    EXPECT("heights changed",
+           "terrain env key 0 local 0 transfer key 0 factor shade readback ");
     EXPECT("nothing changed again", "");
 
     hfs_frame_report rep;

@@ -1,7 +1,8 @@
 /*
  * test_plan_equal.c — correctness of the frame planner (issue 6): a seeded
  * random sequence of scene edits (heights, dx/zscale, environment rotation
- * and tint, key and local lights moved, resized, re-tinted, switched off and
+ * and tint, key and local lights moved (also within a key's sampled swath, and
+ * local lights beyond the terrain's shadow range), resized, re-tinted, switched off and
  * on, added and removed, albedo, quality settings including precision and
  * the visibility path, the timing level: level 2's counting passes
  * overwrite the visibility targets), and after each edit the
@@ -148,10 +149,11 @@ static int apply_edit(world *w, int kind)
         if (!l->n_local)
             return 0;
         hfs_local_light *p = &l->local[pick(l->n_local)];
-        if (pick(2)) {
-            p->pos[pick(3)] += uni(-2, 2);
-        } else {
-            p->radius = uni(0.2, 2.5);
+        switch (pick(3)) {
+        case 0: p->pos[pick(3)] += uni(-2, 2); break;
+        case 1: p->radius = uni(0.2, 2.5); break;
+        /* Up beyond the terrain's shadow range (no ratios) and back. */
+        default: p->pos[2] = pick(2) ? uni(2.0 * w->n, 8.0 * w->n) : uni(1, 0.4 * w->n); break;
         }
         return 1;
     }
