@@ -66,12 +66,21 @@ void hfs_plan_change(hfs_plan *p, int node, const char *reason)
 void hfs_plan_drop_all(hfs_plan *p)
 {
     memset(&p->valid, 0, sizeof p->valid);
+    memset(&p->filled, 0, sizeof p->filled);
 }
 
 void hfs_plan_drop(hfs_plan *p, int product)
 {
-    if (product >= 0 && product < p->n_nodes)
+    if (product >= 0 && product < p->n_nodes) {
         p->valid.w[product / 64] &= ~((uint64_t)1 << (product % 64));
+        p->filled.w[product / 64] &= ~((uint64_t)1 << (product % 64));
+    }
+}
+
+void hfs_plan_set_deferrable(hfs_plan *p, int pass, int yes)
+{
+    if (pass >= 0 && pass < p->n_passes)
+        p->deferrable[pass] = yes != 0;
 }
 
 static int first_common(const hfs_plan *p, const hfs_plan_set *a, const hfs_plan_set *b)
@@ -82,7 +91,11 @@ static int first_common(const hfs_plan *p, const hfs_plan_set *a, const hfs_plan
     return -1;
 }
 
-int hfs_plan_frame(hfs_plan *p, const hfs_plan_set *needed, hfs_plan_step *steps)
+/* The planner proper; passes with defer[i] set are skipped as "deferred":
+ * their products keep their old contents, are not new for their readers
+ * this frame, and stay invalid (so they run in a later frame). */
+static int plan_frame(hfs_plan *p, const hfs_plan_set *needed, hfs_plan_step *steps,
+                      const int *defer)
 {
     /* Needed: backwards from what the output needs. */
     hfs_plan_set need = *needed;
@@ -143,6 +156,17 @@ int hfs_plan_frame(hfs_plan *p, const hfs_plan_set *needed, hfs_plan_step *steps
             snprintf(s->reason, sizeof s->reason, "cached: nothing it reads changed");
             continue;
         }
+        if (defer && defer[i]) {
+            snprintf(s->reason, sizeof s->reason, "deferred (amortized): waited %d frame%s",
+                     p->waited[i] + 1, p->waited[i] ? "s" : "");
+            for (int n = 0; n < p->n_nodes; ++n)
+                if (hfs_plan_set_has(&ps->writes, n)) {
+                    /* Old contents, invalid: not new to readers now, rerun later. */
+                    dirty.w[n / 64] &= ~((uint64_t)1 << (n % 64));
+                    p->valid.w[n / 64] &= ~((uint64_t)1 << (n % 64));
+                }
+            continue;
+        }
         s->run = 1;
         ++runs;
     }
@@ -155,10 +179,61 @@ int hfs_plan_frame(hfs_plan *p, const hfs_plan_set *needed, hfs_plan_step *steps
     return runs;
 }
 
+int hfs_plan_frame(hfs_plan *p, const hfs_plan_set *needed, hfs_plan_step *steps)
+{
+    return plan_frame(p, needed, steps, NULL);
+}
+
+int hfs_plan_frame_amortized(hfs_plan *p, const hfs_plan_set *needed, int budget,
+                             hfs_plan_step *steps, int *deferred)
+{
+    /* Which deferrable passes would run, on a copy (planning changes p). */
+    static const int none[HFS_PLAN_MAX_PASSES];
+    hfs_plan dry = *p;
+    plan_frame(&dry, needed, steps, NULL);
+    int cand[HFS_PLAN_MAX_PASSES], n_cand = 0;
+    for (int i = 0; i < p->n_passes; ++i) {
+        if (!steps[i].run || !p->deferrable[i])
+            continue;
+        int filled = 1; /* a pass whose products hold nothing cannot wait */
+        for (int k = 0; k < HFS_PLAN_MAX_NODES / 64; ++k)
+            filled &= (p->pass[i].writes.w[k] & ~p->filled.w[k]) == 0;
+        if (filled)
+            cand[n_cand++] = i;
+    }
+    int defer[HFS_PLAN_MAX_PASSES];
+    memcpy(defer, none, sizeof defer);
+    /* Keep the budget's worth that waited longest (ties: pass order). */
+    for (int c = 0; c < n_cand; ++c)
+        defer[cand[c]] = 1;
+    for (int kept = 0; kept < budget && kept < n_cand; ++kept) {
+        int best = -1;
+        for (int c = 0; c < n_cand; ++c)
+            if (defer[cand[c]] && (best < 0 || p->waited[cand[c]] > p->waited[best]))
+                best = cand[c];
+        defer[best] = 0;
+    }
+    const int runs = plan_frame(p, needed, steps, defer);
+    int waiting = 0;
+    for (int i = 0; i < p->n_passes; ++i) {
+        if (defer[i]) {
+            ++p->waited[i];
+            ++waiting;
+        } else if (steps[i].run) {
+            p->waited[i] = 0;
+        }
+    }
+    if (deferred)
+        *deferred = waiting;
+    return runs;
+}
+
 void hfs_plan_done(hfs_plan *p, int pass)
 {
     if (pass < 0 || pass >= p->n_passes)
         return;
-    for (int k = 0; k < HFS_PLAN_MAX_NODES / 64; ++k)
+    for (int k = 0; k < HFS_PLAN_MAX_NODES / 64; ++k) {
         p->valid.w[k] |= p->pass[pass].writes.w[k];
+        p->filled.w[k] |= p->pass[pass].writes.w[k];
+    }
 }

@@ -22,6 +22,16 @@
  *     reason either way.
  * The planner holds no GPU state: it only decides; the renderer runs the
  * passes and reports each one done (its products become valid).
+ *
+ * Amortization (NS09 section 7, off unless asked for): passes marked
+ * DEFERRABLE (the expensive visibility passes) whose products hold an
+ * earlier result may wait: hfs_plan_frame_amortized runs at most `budget`
+ * of them a frame, the ones waiting longest first, and the others keep
+ * their (outdated) products for this frame and run in later ones.  What
+ * reads a waiting product is not rerun for it until it is recomputed.  So a
+ * change reaches the image in full after up to ceil(K / budget) frames, K
+ * the deferrable passes it made stale; with no further edits the frames
+ * converge to the unamortized image, bit for bit.
  */
 #ifndef HFS_FRAME_PLAN_H
 #define HFS_FRAME_PLAN_H
@@ -57,6 +67,10 @@ typedef struct hfs_plan {
     int is_input[HFS_PLAN_MAX_NODES];
     hfs_plan_pass pass[HFS_PLAN_MAX_PASSES];
     hfs_plan_set valid;            /* products computed and still current */
+    hfs_plan_set filled;           /* products holding some result (maybe
+                                      outdated): computed since the last drop */
+    int deferrable[HFS_PLAN_MAX_PASSES];
+    int waited[HFS_PLAN_MAX_PASSES]; /* frames a deferrable pass has waited */
     hfs_plan_set changed;          /* inputs changed since the last frame  */
     char why[HFS_PLAN_MAX_NODES][HFS_PLAN_REASON]; /* per changed input   */
 } hfs_plan;
@@ -98,6 +112,16 @@ void hfs_plan_drop(hfs_plan *p, int product);
 /* Plans the frame: one step per pass, in pass order, into steps[0..n_passes).
  * Returns the number of passes to run.  Clears the changed inputs. */
 int hfs_plan_frame(hfs_plan *p, const hfs_plan_set *needed, hfs_plan_step *steps);
+
+/* The same with amortization (see above): at most `budget` (>= 1)
+ * deferrable passes run; a deferred pass's step says "deferred
+ * (amortized): ...".  *deferred (may be NULL) receives how many passes wait
+ * for a later frame: the caller renders again while it is not 0. */
+int hfs_plan_frame_amortized(hfs_plan *p, const hfs_plan_set *needed, int budget,
+                             hfs_plan_step *steps, int *deferred);
+
+/* Marks pass `pass` deferrable (or not). */
+void hfs_plan_set_deferrable(hfs_plan *p, int pass, int yes);
 
 /* The renderer ran pass `pass` successfully: its products are valid. */
 void hfs_plan_done(hfs_plan *p, int pass);

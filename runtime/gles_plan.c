@@ -76,6 +76,12 @@ void hfs_gles_plan_init(hfs_gles_plan *gp)
             p, name, (int[]){gp->pr_pyramid, gp->pr_key[i], gp->in_key_dir[i], -1},
             (int[]){gp->pr_kfactor[i], -1});
     }
+    /* The expensive visibility passes may wait when amortizing. */
+    hfs_plan_set_deferrable(p, gp->pass[GP_ENV], 1);
+    for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i)
+        hfs_plan_set_deferrable(p, gp->pass[GP_KEY0 + i], 1);
+    for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i)
+        hfs_plan_set_deferrable(p, gp->pass[GP_LOCAL0 + i], 1);
     gp->pass[GP_SHADE] = hfs_plan_pass_add(p, "shade", NULL, (int[]){gp->pr_targets, -1});
     gp->pass[GP_READBACK] = hfs_plan_pass_add(p, "readback", (int[]){gp->pr_targets, -1},
                                               (int[]){gp->pr_image, -1});
@@ -180,7 +186,11 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
 
     hfs_plan_set need = {{0}};
     hfs_plan_set_add(&need, gp->pr_image);
-    gp->n_run = hfs_plan_frame(p, &need, gp->steps);
+    gp->deferred = 0;
+    if (gp->amortize > 0 && !terrain_why)
+        gp->n_run = hfs_plan_frame_amortized(p, &need, gp->amortize, gp->steps, &gp->deferred);
+    else
+        gp->n_run = hfs_plan_frame(p, &need, gp->steps);
     for (int k = 0; k < GP_PASSES; ++k)
         gp->run[k] = gp->steps[gp->pass[k]].run;
     return gp->n_run;
@@ -247,4 +257,5 @@ void hfs_gles_plan_report(const hfs_gles_plan *gp, hfs_frame_report *out)
         snprintf(o->reason, sizeof o->reason, "%s", s->reason);
         out->n_ran += s->run;
     }
+    out->n_deferred = gp->deferred;
 }

@@ -86,14 +86,18 @@ typedef struct hfs_gles_plan {
     int run[GP_PASSES];           /* this frame's decisions, by GP_* */
     int n_run;
     int black;                    /* the last frame was black: no light, no pass */
+    int amortize;                 /* visibility passes per frame; 0 = all (off) */
+    int deferred;                 /* passes the last frame left for later ones */
 } hfs_gles_plan;
 
 void hfs_gles_plan_init(hfs_gles_plan *gp);
 
 /* Plans a frame: terrain_why is NULL when the terrain is unchanged, else
- * why it changed; resources_lost names products whose textures were
- * reallocated (NULL: none).  Fills gp->run[] and returns the number of passes
- * to run. */
+ * why it changed.  Fills gp->run[] and returns the number of passes to run.
+ * With gp->amortize > 0 and the terrain unchanged, at most that many of the
+ * visibility passes (env, key i, local i) run, the others wait
+ * (frame_plan.h "Amortization"; gp->deferred counts them); a terrain change
+ * runs everything, as NS09 does. */
 int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now,
                         const char *terrain_why);
 

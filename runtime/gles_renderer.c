@@ -748,6 +748,11 @@ const char *hfs_gles_describe(const hfs_gles *g)
     return hfs_gl_context_describe(g->ctx);
 }
 
+void hfs_gles_set_amortize(hfs_gles *g, int passes_per_frame)
+{
+    g->plan.amortize = passes_per_frame;
+}
+
 void hfs_gles_set_timing(hfs_gles *g, int level)
 {
     g->timing = level < 0 ? 0 : (level > 2 ? 2 : level);
@@ -1371,8 +1376,15 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     const size_t align = (size_t)caps->uniform_buffer_offset_alignment;
     for (int i = 0; i < fr->n_keys; ++i) {
         frame_key *k = &fr->keys[i];
-        k->k.hz_layer = fr->key_layers;
-        fr->key_layers += (k->k.swath.n + 1) / 2;
+        /* Each key slot owns a fixed run of layers, room for its largest
+         * swath (hfs_swath_key: <= 2 nphi_key + 1 samples, or the full
+         * swath's max(nphi_key, nphi_env)), so a light whose swath grows or
+         * shrinks does not move the other lights' horizons, and the
+         * texture is not reallocated while the light count stays. */
+        const int n_max = q->nphi_key > q->nphi_env ? q->nphi_key : q->nphi_env;
+        const int stride = ((n_max > 2 * q->nphi_key + 1 ? n_max : 2 * q->nphi_key + 1) + 1) / 2;
+        k->k.hz_layer = i * stride;
+        fr->key_layers = (i + 1) * stride;
         if ((rc = hfs_visibility_create(&k->k.swath, HFS_VIS_LEGENDRE, &k->vis, err)))
             return rc;
         k->swath_off = keyswath_bytes;

@@ -298,10 +298,25 @@ typedef struct hfs_frame_step {
 
 typedef struct hfs_frame_report {
     int n_steps, n_ran;
+    int n_deferred;          /* passes left for later frames (amortization):
+                                render again while this is not 0            */
     hfs_frame_step step[HFS_REPORT_STEPS];
 } hfs_frame_report;
 
 HFS_API int hfs_renderer_frame_report(const hfs_renderer *r, hfs_frame_report *out);
+
+/* Amortization (NS09 section 7), GLES only, off (0) by default: while the
+ * heights stay the same, at most `passes_per_frame` visibility passes (the
+ * environment's, one key light's, one local light's) run in a frame; the
+ * others keep their previous results for that frame and run in the next
+ * ones, those waiting longest first.  A frame then costs at most that many
+ * visibility passes, and a change reaches the image in full after up to
+ * ceil(K / passes_per_frame) frames (K: the visibility passes it made
+ * stale); frames rendered with no further edit converge to the unamortized
+ * image bit for bit.  hfs_frame_report.n_deferred tells whether passes are
+ * still waiting.  A change of heights runs everything at once.  The other
+ * backends accept and ignore it.  0, or HFS_E_INVALID for a negative count. */
+HFS_API int hfs_renderer_set_amortize(hfs_renderer *r, int passes_per_frame);
 
 /* Validation used by hfs_renderer_render, exposed for tools and tests. */
 HFS_API int hfs_validate_inputs(const hfs_field *field, const hfs_lighting *lighting,

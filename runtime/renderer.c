@@ -81,6 +81,15 @@ int hfs_renderer_set_timing(hfs_renderer *r, int level)
     return HFS_OK;
 }
 
+int hfs_renderer_set_amortize(hfs_renderer *r, int passes_per_frame)
+{
+    if (!r || passes_per_frame < 0)
+        return HFS_E_INVALID;
+    if (r->gles)
+        hfs_gles_set_amortize(r->gles, passes_per_frame);
+    return HFS_OK;
+}
+
 int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out)
 {
     if (!r || !out)

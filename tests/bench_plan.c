@@ -20,7 +20,14 @@
  *                azimuth, elevation rising), sky present;
  *   local-move   one of four local lights moving over a panel (size/2);
  *   terrain      an animated height field: a bump moving over the terrain
- *                every frame (dynamic terrain), sky + key light.
+ *                every frame (dynamic terrain), sky + key light;
+ *   lights-sweep two key lights sweeping and two local lights moving over
+ *                still terrain, every frame (sky present): four visibility
+ *                passes stale each frame.
+ * A third renderer amortizes (hfs_renderer_set_amortize 1: one visibility
+ * pass a frame, NS09 section 7) and is timed alongside; its column is its
+ * median frame time (its frames lag the edits by up to K - 1 frames, K the
+ * visibility passes an edit makes stale).
  * No GLES context: exit 77.
  */
 #include "hfshade.h"
@@ -91,6 +98,16 @@ static int setup(seq *s, const char *name, int n)
         s->l.n_key = 1;
         s->l.key[0] = (hfs_key_light){.phi = 5.86, .elev = 0.26, .alpha = 0.035,
                                       .radiance = {150, 140, 125}};
+        if (!strcmp(name, "lights-sweep")) {
+            s->l.n_key = 2;
+            s->l.key[1] = (hfs_key_light){.phi = 2.0, .elev = 0.5, .alpha = 0.05,
+                                          .radiance = {60, 60, 70}};
+            s->l.n_local = 2;
+            for (int i = 0; i < 2; ++i)
+                s->l.local[i] = (hfs_local_light){.pos = {n * (0.3 + 0.4 * i), n * 0.5, n * 0.1},
+                                                  .radius = n / 64.0,
+                                                  .radiance = {400, 380, 350}};
+        }
     }
     memcpy(s->z0, s->z, (size_t)n * n * sizeof *s->z);
     s->f = (hfs_field){.width = n, .height = n, .z = s->z, .dx = 1.0, .zscale = 1.0};
@@ -105,6 +122,11 @@ static void edit(seq *s, int t)
     } else if (!strcmp(s->name, "key-sweep")) {
         s->l.key[0].phi = fmod(0.5 + t * 3.0 * PI / 180.0, 2 * PI);
         s->l.key[0].elev = 0.15 + 0.01 * t;
+    } else if (!strcmp(s->name, "lights-sweep")) {
+        s->l.key[0].phi = fmod(0.5 + t * 3.0 * PI / 180.0, 2 * PI);
+        s->l.key[1].phi = fmod(2.0 - t * 2.0 * PI / 180.0 + 2 * PI, 2 * PI);
+        s->l.local[0].pos[0] = s->n * (0.3 + 0.005 * t);
+        s->l.local[1].pos[1] = s->n * (0.5 - 0.004 * t);
     } else if (!strcmp(s->name, "local-move")) {
         const double f = s->n / 128.0;
         s->l.local[0].pos[0] = (30 + 2.0 * t) * f;
@@ -142,18 +164,22 @@ int main(int argc, char **argv)
         return 2;
     }
     hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES};
-    hfs_renderer *planned = NULL, *full = NULL;
+    hfs_renderer *planned = NULL, *full = NULL, *amort = NULL;
     hfs_error err;
-    if (hfs_renderer_create(&d, &planned, &err) || hfs_renderer_create(&d, &full, &err)) {
+    if (hfs_renderer_create(&d, &planned, &err) || hfs_renderer_create(&d, &full, &err) ||
+        hfs_renderer_create(&d, &amort, &err)) {
         printf("SKIP: no GLES renderer here: %s\n", err.msg);
         return 77;
     }
     if (passes_too)
         hfs_renderer_set_timing(planned, 1);
-    static const char *const names[] = {"env-rotate", "key-sweep", "local-move", "terrain"};
+    hfs_renderer_set_amortize(amort, 1);
+    static const char *const names[] = {"env-rotate", "key-sweep", "local-move", "terrain",
+                                        "lights-sweep"};
     printf("| sequence | field | frames | planned ms (median) | full ms (median) | full / "
-           "planned | passes run per planned frame (total over the frames) |\n");
-    printf("|---|---|---|---|---|---|---|\n");
+           "planned | amortized ms (median) | passes run per planned frame (total over the "
+           "frames) |\n");
+    printf("|---|---|---|---|---|---|---|---|\n");
     int rc = 0;
     for (size_t k = 0; k < sizeof names / sizeof names[0] && !rc; ++k) {
         if (only && strcmp(only, names[k]))
@@ -166,13 +192,14 @@ int main(int argc, char **argv)
         }
         hfs_image img = {0};
         double *tp = calloc((size_t)frames, sizeof *tp), *tf = calloc((size_t)frames, sizeof *tf);
+        double *ta = calloc((size_t)frames, sizeof *ta);
         char passes[16][24] = {{0}};
         int counts[16] = {0}, np = 0;
         /* Per-pass GPU times of the planned frames (--passes), by name. */
         char tnames[HFS_MAX_PASSES][16] = {{0}};
         double *tms = calloc((size_t)frames * HFS_MAX_PASSES, sizeof *tms);
         int ntn = 0;
-        if (!tp || !tf || hfs_image_alloc(&img, n, n, &err)) {
+        if (!tp || !tf || !ta || hfs_image_alloc(&img, n, n, &err)) {
             rc = 1;
         } else {
             for (int t = -1; t < frames && !rc; ++t) {
@@ -183,10 +210,13 @@ int main(int argc, char **argv)
                 hfs_renderer_invalidate(full);
                 rc |= hfs_renderer_render(full, &s.f, &s.l, &s.q, &img, NULL, NULL, &err);
                 const double t2 = now_ms();
+                rc |= hfs_renderer_render(amort, &s.f, &s.l, &s.q, &img, NULL, NULL, &err);
+                const double t3 = now_ms();
                 if (t < 0)
                     continue; /* warm-up: programs compiled, caches filled */
                 tp[t] = t1 - t0;
                 tf[t] = t2 - t1;
+                ta[t] = t3 - t2;
                 if (passes_too) {
                     hfs_timings tm;
                     hfs_renderer_timings(planned, &tm);
@@ -227,8 +257,8 @@ int main(int argc, char **argv)
                 snprintf(one, sizeof one, "%s%s %d", j ? ", " : "", passes[j], counts[j]);
                 strncat(ran, one, sizeof ran - strlen(ran) - 1);
             }
-            printf("| %s | %dx%d | %d | %.2f | %.2f | %.1fx | %s |\n", names[k], n, n, frames, mp,
-                   mf, mf / mp, np ? ran : "none");
+            printf("| %s | %dx%d | %d | %.2f | %.2f | %.1fx | %.2f | %s |\n", names[k], n, n,
+                   frames, mp, mf, mf / mp, hfs_median(ta, frames), np ? ran : "none");
             for (int j = 0; j < ntn && tms; ++j)
                 printf("    %s: planned frames' %s pass, median %.2f ms\n", names[k], tnames[j],
                        hfs_median(tms + (size_t)j * frames, frames));
@@ -236,6 +266,7 @@ int main(int argc, char **argv)
         }
         hfs_image_free(&img);
         free(tms);
+        free(ta);
         free(tp);
         free(tf);
         free(s.z);
@@ -243,5 +274,6 @@ int main(int argc, char **argv)
     }
     hfs_renderer_destroy(planned);
     hfs_renderer_destroy(full);
+    hfs_renderer_destroy(amort);
     return rc ? 1 : 0;
 }

@@ -20,3 +20,7 @@ hfs_add_test(test_plan_cases SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_plan_cases.c
 add_executable(bench_plan ${CMAKE_CURRENT_LIST_DIR}/bench_plan.c)
 target_link_libraries(bench_plan PRIVATE hfshade_lib hfs_terrain_gen m)
 target_include_directories(bench_plan PRIVATE ${PROJECT_SOURCE_DIR}/tools)
+# Amortization (NS09 section 7): bounded latency, convergence to the
+# from-scratch frame (GLES).
+hfs_add_test(test_plan_amortize SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_plan_amortize.c
+             LIBS hfshade_lib hfs_terrain_gen m LABEL gl TIMEOUT 600)

@@ -43,12 +43,16 @@ static void build(graph *g)
     hfs_plan_pass_add(p, "compose", (int[]){g->X, g->E, g->KF, g->KR, -1}, (int[]){g->O, -1});
 }
 
-/* Plans and "runs" a frame; returns the passes run as a bit mask. */
-static unsigned frame(graph *g)
+/* Plans and "runs" a frame (amortized with a budget > 0, *deferred set);
+ * returns the passes run as a bit mask. */
+static unsigned frame_budget(graph *g, int budget, int *deferred)
 {
     hfs_plan_set need = {{0}};
     hfs_plan_set_add(&need, g->O);
-    hfs_plan_frame(&g->p, &need, g->steps);
+    if (budget > 0)
+        hfs_plan_frame_amortized(&g->p, &need, budget, g->steps, deferred);
+    else
+        hfs_plan_frame(&g->p, &need, g->steps);
     unsigned mask = 0;
     for (int i = 0; i < g->p.n_passes; ++i)
         if (g->steps[i].run) {
@@ -56,6 +60,11 @@ static unsigned frame(graph *g)
             hfs_plan_done(&g->p, i);
         }
     return mask;
+}
+
+static unsigned frame(graph *g)
+{
+    return frame_budget(g, 0, NULL);
 }
 
 #define B(x) (1u << (x))
@@ -101,6 +110,28 @@ int main(void)
     hfs_plan_pass_reads(&g.p, COMPOSE, (int[]){g.X, g.E, g.KF, g.KR, -1});
     m = frame(&g);
     CHECK(m == (B(KEY) | B(KEYF) | B(COMPOSE)), "key back: key, keyf, compose (%x)", m);
+
+    /* Amortization, one deferrable pass a frame (env and key): an edit of
+     * both runs one, defers the other (whose readers wait for it), then
+     * runs the other the next frame; nothing waits after that. */
+    hfs_plan_set_deferrable(&g.p, ENV, 1);
+    hfs_plan_set_deferrable(&g.p, KEY, 1);
+    int waiting = -1;
+    hfs_plan_change(&g.p, g.H, "heights changed");
+    m = frame_budget(&g, 1, &waiting);
+    /* (the key factor reads the heights too: it runs, on the old horizons) */
+    CHECK(waiting == 1 && m == (B(TERRAIN) | B(ENV) | B(TRANSFER) | B(KEYF) | B(COMPOSE)),
+          "amortized: env runs, key waits (%x, %d waiting)", m, waiting);
+    CHECK(strstr(g.steps[KEY].reason, "deferred"), "key reason: %s", g.steps[KEY].reason);
+    m = frame_budget(&g, 1, &waiting);
+    CHECK(waiting == 0 && m == (B(KEY) | B(KEYF) | B(COMPOSE)),
+          "amortized, next frame: the key and its readers (%x, %d waiting)", m, waiting);
+    CHECK(frame_budget(&g, 1, &waiting) == 0 && waiting == 0, "amortized: then nothing");
+    /* A pass whose product holds nothing cannot wait. */
+    hfs_plan_drop(&g.p, g.KH);
+    hfs_plan_change(&g.p, g.H, "heights changed");
+    m = frame_budget(&g, 1, &waiting);
+    CHECK(waiting == 0 && m == (B(NPASS) - 1), "empty product: no deferral (%x)", m);
 
     hfs_plan_drop_all(&g.p);
     CHECK(frame(&g) == (B(NPASS) - 1), "after drop_all: everything");
