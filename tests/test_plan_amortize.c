@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "plan_scene.h"
 
 #define N 24
 
@@ -63,20 +64,7 @@ int main(int argc, char **argv)
     hfs_terrain_cones(z, N, N);
     hfs_field f = {.width = N, .height = N, .z = z, .dx = 1.0, .zscale = 1.0};
     hfs_lighting l;
-    hfs_lighting_defaults(&l);
-    l.has_env = 1;
-    l.albedo = 0.8;
-    for (int c = 0; c < 3; ++c) {
-        l.env_sh[c][0] = 2.0;
-        l.env_sh[c][2] = 0.8;
-        l.env_sh[c][3] = 0.3;
-    }
-    l.n_key = 2;
-    l.key[0] = (hfs_key_light){.phi = 0.5, .elev = 0.4, .alpha = 0.04, .radiance = {20, 20, 20}};
-    l.key[1] = (hfs_key_light){.phi = 2.5, .elev = 0.7, .alpha = 0.06, .radiance = {10, 9, 8}};
-    l.n_local = 2;
-    l.local[0] = (hfs_local_light){.pos = {12, 12, 6}, .radius = 1.5, .radiance = {30, 30, 30}};
-    l.local[1] = (hfs_local_light){.pos = {6, 18, 4}, .radius = 1.0, .radiance = {20, 25, 30}};
+    plan_scene_lighting(&l, N, 1);
     hfs_quality q;
     hfs_quality_defaults(&q);
     hfs_image a = {0}, b = {0};
