@@ -52,7 +52,7 @@ static void kiosk(const char *path)
               p->action == HFS_ACTION_PRESET,
           "kiosk.ini: preset");
     const hfs_control_config *lx = hfs_input_config_find(&cfg, "local_x");
-    CHECK(lx && lx->device == HFS_DEVICE_NONE && lx->light == 0 && lx->min == -100,
+    CHECK(lx && lx->device == HFS_DEVICE_NONE && lx->light == -1 && lx->min == -100,
           "kiosk.ini: local_x (replay only)");
     CHECK(hfs_input_config_find(&cfg, "nope") == NULL, "find: unknown name");
 }

@@ -112,6 +112,21 @@ int main(void)
     rc = hfs_scene_validate(&s, &err);
     CHECK(rc != 0 && strstr(err.msg, "no height field"), "missing height accepted");
 
+    /* A preset written into a scene that never named one (the kiosk's
+     * preset.next knob, board/input_map.c) is honoured, and quality keys
+     * the scene gave still override it. */
+    {
+        hfs_quality pq, want;
+        hfs_scene_init(&s);
+        rc = hfs_scene_set(&s, HFS_SOURCE_FILE, "k", "3", "s.ini:1", NULL, &err);
+        snprintf(s.preset, sizeof s.preset, "panel");
+        hfs_scene_quality(&s, &pq);
+        hfs_quality_preset(&want, "panel");
+        CHECK(rc == 0 && pq.nphi_env == want.nphi_env && pq.offset == want.offset && pq.k == 3,
+              "edited preset: nphi_env %d (panel %d), k %d (given 3)", pq.nphi_env,
+              want.nphi_env, pq.k);
+    }
+
     unlink(write_file("s.ini", ""));
     rmdir(dir);
     printf("%s: %d failure(s)\n", failures ? "FAIL" : "PASS", failures);

@@ -14,7 +14,7 @@
 #include "hfs_io.h"
 #include "hfshade.h"
 #include "scene.h"
-#include "sh.h"
+#include "scene_load.h"
 #include "median.h"
 
 #include <math.h>
@@ -160,59 +160,24 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
     return HFS_OK;
 }
 
-/* Everything a render needs, loaded and validated; freed by scene_inputs_free. */
-typedef struct scene_inputs {
-    hfs_heightmap hm;
-    hfs_field field;
-    hfs_lighting lighting;
-    hfs_quality quality;
-} scene_inputs;
+/* Everything a render needs (scene_load.h), plus the tool's one message
+ * about filled holes. */
+typedef hfs_scene_inputs scene_inputs;
 
 static void scene_inputs_free(scene_inputs *in)
 {
-    hfs_heightmap_free(&in->hm);
+    hfs_scene_inputs_free(in);
 }
 
 static int load_inputs(const cli *c, scene_inputs *in, hfs_error *err)
 {
-    memset(in, 0, sizeof *in);
-    const hfs_scene *s = &c->scene;
-    int rc = hfs_scene_validate(s, err);
-    if (rc)
-        return rc;
-
-    hfs_height_load_opts opts = {0};
-    opts.has_nodata = s->has_nodata;
-    opts.nodata = (float)s->nodata;
-    opts.raw_width = s->raw_width;
-    opts.raw_height = s->raw_height;
-    rc = hfs_height_load(s->height, &opts, &in->hm, err);
+    int rc = hfs_scene_inputs_load(&c->scene, in, err);
     if (rc)
         return rc;
     if (in->hm.holes > 0 && !c->quiet)
-        fprintf(stderr, "%s: filled %ld hole%s (nodata)\n", s->height, in->hm.holes,
+        fprintf(stderr, "%s: filled %ld hole%s (nodata)\n", c->scene.height, in->hm.holes,
                 in->hm.holes == 1 ? "" : "s");
-
-    in->field.width = in->hm.width;
-    in->field.height = in->hm.height;
-    in->field.z = in->hm.z;
-    in->field.dx = s->dx_given ? s->dx : (in->hm.cellsize > 0.0 ? in->hm.cellsize : 1.0);
-    in->field.zscale = s->zscale_given ? s->zscale : 1.0;
-
-    if (s->env_map[0]) {
-        hfs_envmap env;
-        rc = hfs_envmap_load(s->env_map, &env, err);
-        if (rc)
-            return rc;
-        double sh[3][HFS_SH_N];
-        hfs_sh_project_equirect(env.rgb, env.width, env.height, sh);
-        hfs_envmap_free(&env);
-        hfs_scene_lighting(s, (const double(*)[HFS_SH_COEFFS])sh, &in->lighting);
-    } else {
-        hfs_scene_lighting(s, NULL, &in->lighting);
-    }
-    hfs_scene_quality(s, &in->quality);
-    return hfs_validate_inputs(&in->field, &in->lighting, &in->quality, err);
+    return HFS_OK;
 }
 
 /* Display option: multiplies the (linear) output by a colour of the

@@ -398,7 +398,10 @@ void hfs_scene_quality(const hfs_scene *s, hfs_quality *q)
      * be a real value, e.g. offset = 0). */
     const unsigned long long given = s->set_mask[0] | s->set_mask[1];
     const hfs_quality *g = &s->quality;
-    if (!(given & (1ull << K_PRESET)) || hfs_quality_preset(q, s->preset) != HFS_OK)
+    /* The preset is read from s->preset, not from the "given" mask: the
+     * kiosk's preset.next control (board/input_map.c) writes s->preset of a
+     * scene that may never have named one. */
+    if (!s->preset[0] || hfs_quality_preset(q, s->preset) != HFS_OK)
         hfs_quality_defaults(q);
 #define TAKE(id, field) do { if (given & (1ull << (id))) q->field = g->field; } while (0)
     TAKE(K_K, k);

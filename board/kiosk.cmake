@@ -1,0 +1,14 @@
+# kiosk.cmake — hfshade-kiosk, the board's program (board/KIOSK.md): the
+# scene (hfshade_scene_load), the renderer (hfshade_lib), a display
+# (hfs_display) and the knobs (hfs_input_dev), in one poll loop.
+# Included after display.cmake and input*.cmake (fragments go in name order).
+
+add_executable(hfshade-kiosk
+  ${CMAKE_CURRENT_LIST_DIR}/kiosk_main.c
+  ${CMAKE_CURRENT_LIST_DIR}/kiosk_world.c
+  ${CMAKE_CURRENT_LIST_DIR}/kiosk_frame.c
+  ${CMAKE_CURRENT_LIST_DIR}/kiosk_loop.c
+  ${CMAKE_CURRENT_LIST_DIR}/kiosk_stats.c
+  ${CMAKE_CURRENT_LIST_DIR}/kiosk_log.c)
+target_link_libraries(hfshade-kiosk PRIVATE hfs_display hfs_input_dev hfshade_scene_load
+                      hfshade_lib m)

@@ -1,0 +1,166 @@
+/*
+ * kiosk.h — the kiosk program's parts (private to hfshade-kiosk).
+ *
+ *   kiosk_main.c   command line, start-up order, teardown, exit codes
+ *   kiosk_world.c  scene file + input configuration + knob state: loaded
+ *                  together, checked together, replaced whole on SIGHUP
+ *   kiosk_frame.c  render -> sRGB picture -> overlay -> present
+ *   kiosk_loop.c   the poll loop: signals, display, devices, replay
+ *   kiosk_stats.c  the --stats file (latency and CPU measurements)
+ *   kiosk_log.c    one line per event of note, journal priorities
+ *
+ * board/KIOSK.md is the user's documentation.  One kiosk per process (the
+ * logger's journal flag is per process); everything else lives in the
+ * kiosk struct, freed by kiosk_main.c.
+ */
+#ifndef HFS_KIOSK_H
+#define HFS_KIOSK_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "display.h"
+#include "input_map.h"
+#include "input_set.h"
+#include "scene_load.h"
+
+/* ---- logging (kiosk_log.c) ------------------------------------------------ */
+
+/* sd-daemon priorities (sd-daemon.h: SD_ERR "<3>", SD_WARNING "<4>",
+ * SD_INFO "<6>"), prefixed when stderr is the journal. */
+typedef enum kiosk_level {
+    KIOSK_ERR = 3,
+    KIOSK_WARNING = 4,
+    KIOSK_INFO = 6
+} kiosk_level;
+
+/* Decides once whether stderr is the journal: JOURNAL_STREAM ("DEV:INODE",
+ * set by systemd) names the device and inode of stderr itself (a child
+ * whose stderr was redirected inherits the variable but not the stream). */
+void kiosk_log_init(void);
+/* One line on stderr: "<N>message" to the journal, "hfshade-kiosk: message"
+ * elsewhere.  Newlines in the message are replaced, so one call is always
+ * one line. */
+void kiosk_log(kiosk_level level, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* ---- options (kiosk_main.c) ------------------------------------------------ */
+
+typedef struct kiosk_opts {
+    const char *scene_path;        /* required                                */
+    const char *input_path;        /* --input; NULL = no controls            */
+    const char *replay_path;       /* --replay                               */
+    const char *display;           /* --display; default "kms"               */
+    const char *out_pattern;       /* --out (headless)                       */
+    const char *stats_path;        /* --stats                                */
+    int width, height;             /* --size (x11 window, headless canvas)   */
+    double exposure;               /* --exposure, default 1                  */
+    int overlay;                   /* --overlay: start with the overlay on   */
+    int exit_after_replay;         /* --exit-after-replay                    */
+    int no_devices;                /* --no-devices: configured devices are
+                                      not opened (replay or demo only)       */
+    int check;                     /* --check: load and check, then exit     */
+    int amortize;                  /* --amortize N: visibility passes per
+                                      frame (hfs_renderer_set_amortize); 0 =
+                                      off, the default                       */
+} kiosk_opts;
+
+/* ---- the world: scene + configuration + knob state (kiosk_world.c) -------- */
+
+typedef struct kiosk_world {
+    hfs_scene scene;               /* as loaded, then edited by the knobs    */
+    hfs_scene_inputs in;           /* heights, env SH, lighting, quality     */
+    hfs_input_config cfg;          /* zero controls without --input          */
+    hfs_input_state st;
+} kiosk_world;
+
+/* Loads the scene file and the configuration (NULL: none), checks the
+ * configuration against the scene (fixed light indices) and initialises the
+ * knob state.  Returns a new world, or NULL with err set (one line naming
+ * the file).  The caller frees it with kiosk_world_free. */
+kiosk_world *kiosk_world_load(const char *scene_path, const char *input_path, hfs_error *err);
+void kiosk_world_free(kiosk_world *w);   /* NULL ok */
+
+/* After knob edits to w->scene: recomputes lighting and quality (no file is
+ * read).  On failure the previous lighting stays. */
+int kiosk_world_relight(kiosk_world *w, hfs_error *err);
+
+/* ---- frames (kiosk_frame.c) ----------------------------------------------- */
+
+typedef struct kiosk_frame {
+    hfs_renderer *renderer;
+    hfs_backend backend;           /* what the renderer was made with, to    */
+    char context[64];              /* know when a reload needs a new one     */
+    hfs_image img;                 /* linear RGB, reused                     */
+    uint8_t *rgba;                 /* sRGB picture, reused                   */
+    double exposure;
+    int presented;                 /* frames presented so far                */
+    int amortize;                  /* applied to every renderer made         */
+    int deferred;                  /* passes the last frame left for later:
+                                      the loop renders again at once         */
+    /* Last frame, for the overlay and the stats. */
+    double render_ms;
+    int passes_ran, passes_total;
+    int64_t present_ns;            /* CLOCK_MONOTONIC after present returned */
+} kiosk_frame;
+
+/* Makes the renderer the scene asks for (backend, context). */
+int kiosk_frame_init(kiosk_frame *f, const hfs_scene *scene, double exposure, hfs_error *err);
+/* For a reload, in two steps so that nothing changes until every part of
+ * the reload has worked: *out = a new renderer when scene asks for another
+ * backend or context than f's, else NULL (f's fits).  Then adopt (r NULL:
+ * keep f's), or hfs_renderer_destroy(r) to abandon. */
+int kiosk_frame_renderer_for(const kiosk_frame *f, const hfs_scene *scene, hfs_renderer **out,
+                             hfs_error *err);
+void kiosk_frame_adopt(kiosk_frame *f, hfs_renderer *r, const hfs_scene *scene);
+void kiosk_frame_free(kiosk_frame *f);
+
+/* Renders in, makes the picture, draws the overlay when asked, presents it
+ * and fills the "last frame" fields. */
+int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, int overlay,
+                     const char *preset, hfs_display *d, hfs_error *err);
+
+/* ---- stats (kiosk_stats.c) -------------------------------------------------- */
+
+typedef struct kiosk_stats kiosk_stats;
+
+/* Opens (truncates) path and writes the header; NULL with err on failure. */
+kiosk_stats *kiosk_stats_open(const char *path, hfs_error *err);
+/* Lines: see kiosk_stats.c.  Each function is a no-op on NULL. */
+void kiosk_stats_start(kiosk_stats *s);
+void kiosk_stats_frame(kiosk_stats *s, const kiosk_frame *f, int events);
+void kiosk_stats_event(kiosk_stats *s, const hfs_input_event *ev, int changed,
+                       const kiosk_frame *f, int shown);
+void kiosk_stats_reload(kiosk_stats *s, int ok);
+void kiosk_stats_flush(kiosk_stats *s);
+void kiosk_stats_close(kiosk_stats *s, int frames);  /* writes "exit" */
+/* Process CPU time (user + system, all threads), microseconds. */
+int64_t kiosk_cpu_us(void);
+
+/* ---- the loop (kiosk_loop.c) ------------------------------------------------ */
+
+typedef struct kiosk {
+    kiosk_opts opt;
+    kiosk_world *world;
+    kiosk_frame frame;
+    hfs_display *display;
+    hfs_input_set *inputs;         /* the configured devices                  */
+    hfs_input_source *replay;      /* kept apart from the set: a reload
+                                      rebuilds the set, the script goes on    */
+    kiosk_stats *stats;
+    int sigfd;                     /* signalfd for SIGHUP, SIGTERM, SIGINT    */
+} kiosk;
+
+/* The input set for cfg: every configured device, or none with
+ * --no-devices.  Errors name the device. */
+int kiosk_inputs_create(const kiosk *k, const hfs_input_config *cfg, hfs_input_set **out,
+                        hfs_error *err);
+
+/* Runs until SIGTERM/SIGINT, a close request, the end of the replay
+ * (--exit-after-replay) or a fatal error.  Returns 0 (clean) or 1. */
+int kiosk_run(kiosk *k);
+
+#endif /* HFS_KIOSK_H */

@@ -1,0 +1,348 @@
+/*
+ * kiosk_loop.c — the kiosk's frame loop.
+ *
+ * One thread, one poll: the signalfd (SIGHUP, SIGTERM, SIGINT), the
+ * display's fd (x11), and the input devices' fds, with the earliest deadline
+ * of any source (a debounce to confirm, a device to reopen, the next
+ * replayed event) as the timeout.  Each wake-up:
+ *
+ *   1. signals: TERM/INT end the loop; HUP reloads scene + configuration;
+ *   2. the display's events (a close request ends the loop);
+ *   3. every pending input event is drained (all sources, until each has
+ *      nothing more) and applied to the scene, in order;
+ *   4. if anything changed: the lighting is recomputed (no file is read)
+ *      and ONE frame is rendered and presented — so a batch of events is
+ *      shown by the next frame, however many there were.
+ *
+ * Nothing changed, nothing drawn: with no event and no deadline the poll
+ * has no timeout and the process sleeps (no timer, no spinning).  ppoll
+ * takes the deadline in nanoseconds, so a replayed event is read when it is
+ * due, not up to a millisecond later.
+ */
+#define _GNU_SOURCE /* ppoll */
+#include "kiosk.h"
+
+#include <errno.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/signalfd.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "input_replay.h"
+
+#define READ_CHUNK 64
+
+/* The events of one wake-up, kept for the stats lines written after the
+ * frame that shows them. */
+typedef struct batch {
+    hfs_input_event *ev;
+    int *changed;
+    int n, cap;
+    int any_change;
+} batch;
+
+typedef struct loop {
+    batch b;
+    hfs_scene saved;   /* the scene before this batch: restored if the
+                          edited lighting is refused                      */
+} loop;
+
+static void input_log(void *user, const char *line)
+{
+    (void)user;
+    const size_t n = strlen(line);
+    const int back = n >= 6 && !strcmp(line + n - 6, ": back");
+    kiosk_log(back ? KIOSK_INFO : KIOSK_WARNING, "%s", line);
+}
+
+int kiosk_inputs_create(const kiosk *k, const hfs_input_config *cfg, hfs_input_set **out,
+                        hfs_error *err)
+{
+    hfs_input_set_desc d = {.config = cfg, .log = input_log};
+    if (!k->opt.no_devices)
+        return hfs_input_set_create(&d, out, err);
+    /* --no-devices: the same controls, none wired, so the set opens
+     * nothing and only the replay drives them. */
+    hfs_input_config *bare = malloc(sizeof *bare);
+    if (!bare)
+        return hfs_fail(err, HFS_E_NOMEM, "out of memory");
+    *bare = *cfg;
+    for (int i = 0; i < bare->n_controls; ++i)
+        bare->control[i].device = HFS_DEVICE_NONE;
+    d.config = bare;
+    const int rc = hfs_input_set_create(&d, out, err);
+    free(bare);
+    return rc;
+}
+
+/* ---- events ----------------------------------------------------------------- */
+
+static void batch_push(batch *b, const hfs_input_event *ev, int changed)
+{
+    if (b->n == b->cap) {
+        const int cap = b->cap ? 2 * b->cap : 256;
+        hfs_input_event *e = realloc(b->ev, (size_t)cap * sizeof *e);
+        if (e)
+            b->ev = e;
+        int *c = realloc(b->changed, (size_t)cap * sizeof *c);
+        if (c)
+            b->changed = c;
+        if (!e || !c)
+            return; /* the edit is applied; only its stats line is lost */
+        b->cap = cap;
+    }
+    b->ev[b->n] = *ev;
+    b->changed[b->n] = changed;
+    b->n++;
+}
+
+static void apply_events(kiosk *k, batch *b, const hfs_input_event *ev, int n)
+{
+    kiosk_world *w = k->world;
+    for (int i = 0; i < n; ++i) {
+        hfs_error err = {{0}};
+        int r = hfs_input_apply(&w->cfg, &w->st, &ev[i], &w->scene, &err);
+        if (r < 0) {
+            /* A replay naming a control the configuration lacks: say so,
+             * skip the event, keep running. */
+            kiosk_log(KIOSK_WARNING, "%s", err.msg);
+            r = 0;
+        }
+        batch_push(b, &ev[i], r > 0);
+        b->any_change |= r > 0;
+    }
+}
+
+/* Reads every source until none has more: a fast spin gives many events
+ * per wake-up and all of them go into this frame. */
+static void drain(kiosk *k, batch *b)
+{
+    const int64_t now = hfs_input_now_ns();
+    hfs_input_event ev[READ_CHUNK];
+    int n;
+    do {
+        n = hfs_input_set_dispatch(k->inputs, now, ev, READ_CHUNK);
+        apply_events(k, b, ev, n);
+    } while (n == READ_CHUNK);
+    if (!k->replay)
+        return;
+    do {
+        hfs_error err = {{0}};
+        n = hfs_input_source_read(k->replay, now, ev, READ_CHUNK, &err);
+        if (n < 0) {
+            kiosk_log(KIOSK_ERR, "%s", err.msg);
+            break;
+        }
+        apply_events(k, b, ev, n);
+    } while (n == READ_CHUNK);
+}
+
+static int show(kiosk *k, int events)
+{
+    hfs_error err = {{0}};
+    kiosk_world *w = k->world;
+    if (kiosk_frame_show(&k->frame, &w->in, w->st.overlay, w->scene.preset, k->display, &err)) {
+        kiosk_log(KIOSK_ERR, "frame: %s", err.msg);
+        return -1;
+    }
+    kiosk_stats_frame(k->stats, &k->frame, events);
+    return 0;
+}
+
+/* Relight, render, present, then the stats of the batch.  -1: fatal. */
+static int show_batch(kiosk *k, loop *l)
+{
+    batch *b = &l->b;
+    int shown = 0;
+    if (!b->any_change && k->frame.deferred > 0) {
+        /* Amortizing: passes still wait for this scene; no event to log. */
+        if (show(k, 0))
+            return -1;
+    } else if (b->any_change) {
+        hfs_error err = {{0}};
+        if (kiosk_world_relight(k->world, &err)) {
+            kiosk_log(KIOSK_ERR, "input: %s; edit undone", err.msg);
+            k->world->scene = l->saved;
+        } else {
+            if (show(k, b->n))
+                return -1;
+            shown = 1;
+        }
+    }
+    for (int i = 0; i < b->n; ++i)
+        kiosk_stats_event(k->stats, &b->ev[i], b->changed[i], &k->frame, shown);
+    kiosk_stats_flush(k->stats);
+    b->n = 0;
+    b->any_change = 0;
+    return 0;
+}
+
+/* ---- reload ------------------------------------------------------------------- */
+
+/* Whether two configurations open the same devices for the same controls
+ * (then the running sources can stay: reopening GPIO lines the old set
+ * still holds would fail with "busy"). */
+static int same_wiring(const hfs_input_config *a, const hfs_input_config *b)
+{
+    if (a->n_controls != b->n_controls)
+        return 0;
+    for (int i = 0; i < a->n_controls; ++i) {
+        const hfs_control_config *x = &a->control[i], *y = &b->control[i];
+        if (strcmp(x->name, y->name) || x->kind != y->kind || x->device != y->device ||
+            strcmp(x->path, y->path) || x->lines[0] != y->lines[0] ||
+            x->lines[1] != y->lines[1] || x->active_low != y->active_low ||
+            x->steps_per_detent != y->steps_per_detent || x->debounce_ms != y->debounce_ms ||
+            x->evdev_type != y->evdev_type || x->evdev_code != y->evdev_code)
+            return 0;
+    }
+    return 1;
+}
+
+static void reload_failed(kiosk *k, const hfs_error *err)
+{
+    kiosk_log(KIOSK_ERR, "reload failed, keeping the running scene and configuration: %s",
+              err->msg);
+    kiosk_stats_reload(k->stats, 0);
+}
+
+/* SIGHUP: a whole new world or none.  Returns -1 only when the frame of
+ * the new scene cannot be presented (fatal, as any present failure) or the
+ * input set cannot even be rebuilt empty (out of memory). */
+static int reload(kiosk *k)
+{
+    hfs_error err = {{0}};
+    kiosk_world *nw = kiosk_world_load(k->opt.scene_path, k->opt.input_path, &err);
+    if (!nw) {
+        reload_failed(k, &err);
+        return 0;
+    }
+    hfs_renderer *r = NULL;
+    if (kiosk_frame_renderer_for(&k->frame, &nw->scene, &r, &err)) {
+        kiosk_world_free(nw);
+        reload_failed(k, &err);
+        return 0;
+    }
+    /* Last, because it cannot be undone cleanly: the old devices are closed
+     * before the new ones open. */
+    if (!same_wiring(&k->world->cfg, &nw->cfg)) {
+        hfs_input_set_destroy(k->inputs);
+        k->inputs = NULL;
+        if (kiosk_inputs_create(k, &nw->cfg, &k->inputs, &err)) {
+            hfs_renderer_destroy(r);
+            kiosk_world_free(nw);
+            reload_failed(k, &err);
+            /* The old devices were open a moment ago: take them back. */
+            if (kiosk_inputs_create(k, &k->world->cfg, &k->inputs, &err)) {
+                kiosk_log(KIOSK_ERR, "input devices lost on reload: %s", err.msg);
+                hfs_input_config none = {0};
+                if (kiosk_inputs_create(k, &none, &k->inputs, &err))
+                    return -1;
+            }
+            return 0;
+        }
+    }
+    kiosk_frame_adopt(&k->frame, r, &nw->scene);
+    nw->st.overlay = k->world->st.overlay; /* a display choice, not the scene's */
+    kiosk_world_free(k->world);
+    k->world = nw;
+    kiosk_log(KIOSK_INFO, "reloaded %s%s%s", k->opt.scene_path,
+              k->opt.input_path ? " and " : "", k->opt.input_path ? k->opt.input_path : "");
+    kiosk_stats_reload(k->stats, 1);
+    const int rc = show(k, 0);
+    kiosk_stats_flush(k->stats);
+    return rc;
+}
+
+/* ---- the loop ------------------------------------------------------------------ */
+
+/* Reads every queued signal; the handlers' work happens here, in the loop. */
+static void read_signals(kiosk *k, int *quit, int *reload_req)
+{
+    struct signalfd_siginfo si;
+    while (read(k->sigfd, &si, sizeof si) == (ssize_t)sizeof si) {
+        if (si.ssi_signo == SIGHUP) {
+            *reload_req = 1;
+        } else if (!*quit) {
+            kiosk_log(KIOSK_INFO, "%s: exiting", strsignal((int)si.ssi_signo));
+            *quit = 1;
+        }
+    }
+}
+
+static struct timespec *timeout_until(int64_t deadline_ns, struct timespec *ts)
+{
+    if (deadline_ns == INT64_MAX)
+        return NULL; /* nothing due: sleep until an fd or a signal */
+    int64_t wait = deadline_ns - hfs_input_now_ns();
+    if (wait < 0)
+        wait = 0;
+    ts->tv_sec = (time_t)(wait / 1000000000);
+    ts->tv_nsec = (long)(wait % 1000000000);
+    return ts;
+}
+
+int kiosk_run(kiosk *k)
+{
+    loop *l = calloc(1, sizeof *l);
+    if (!l) {
+        kiosk_log(KIOSK_ERR, "out of memory");
+        return 1;
+    }
+    int rc = 0;
+    for (;;) {
+        struct pollfd fds[2 + HFS_INPUT_SET_MAX];
+        int n = 0;
+        fds[n++] = (struct pollfd){.fd = k->sigfd, .events = POLLIN};
+        const int dfd = hfs_display_fd(k->display);
+        if (dfd >= 0)
+            fds[n++] = (struct pollfd){.fd = dfd, .events = POLLIN};
+        int64_t deadline = INT64_MAX;
+        n += hfs_input_set_pollfds(k->inputs, fds + n, HFS_INPUT_SET_MAX, &deadline);
+        if (k->replay) {
+            const int64_t d = hfs_input_source_deadline(k->replay);
+            deadline = d < deadline ? d : deadline;
+        }
+        if (k->frame.deferred > 0) /* amortized passes wait: next frame now */
+            deadline = hfs_input_now_ns();
+        struct timespec ts;
+        if (ppoll(fds, (nfds_t)n, timeout_until(deadline, &ts), NULL) < 0 && errno != EINTR) {
+            kiosk_log(KIOSK_ERR, "poll: %s", strerror(errno));
+            rc = 1;
+            break;
+        }
+
+        int quit = 0, reload_req = 0;
+        if (fds[0].revents & POLLIN)
+            read_signals(k, &quit, &reload_req);
+        if (quit)
+            break;
+        if (hfs_display_handle_events(k->display)) {
+            kiosk_log(KIOSK_INFO, "display %s: close requested, exiting",
+                      hfs_display_name(k->display));
+            break;
+        }
+        if (reload_req && reload(k)) {
+            rc = 1;
+            break;
+        }
+
+        l->saved = k->world->scene;
+        drain(k, &l->b);
+        if (show_batch(k, l)) {
+            rc = 1;
+            break;
+        }
+        if (k->opt.exit_after_replay && k->replay && hfs_replay_source_finished(k->replay) == 1 &&
+            k->frame.deferred == 0) { /* amortizing: once the image has caught up */
+            kiosk_log(KIOSK_INFO, "replay finished, exiting");
+            break;
+        }
+    }
+    free(l->b.ev);
+    free(l->b.changed);
+    free(l);
+    return rc;
+}

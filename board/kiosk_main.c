@@ -1,0 +1,264 @@
+/*
+ * kiosk_main.c — hfshade-kiosk: the board's program.  Renders a scene,
+ * shows it on a display (kms on the board, x11 on a desk, headless for
+ * tests and measurements) and lets knobs and buttons move the lights
+ * (board/KIOSK.md).
+ *
+ * Start-up order, and why:
+ *   1. block SIGHUP/SIGTERM/SIGINT and open the signalfd FIRST: the
+ *      renderer's GL driver starts worker threads, which inherit the mask;
+ *      a thread without it would take SIGTERM's default action (death
+ *      without restoring the screen);
+ *   2. load and check every input file (scene, configuration, replay) before
+ *      touching a device, so a typo fails fast with one line and the screen
+ *      is never grabbed for nothing;
+ *   3. input devices, display, renderer; the first frame;
+ *   4. the replay clock starts after the first frame, so scripted times are
+ *      relative to a kiosk that is ready (latency runs then measure frames,
+ *      not start-up).
+ * Exit: 0 after SIGTERM/SIGINT, a close request or the end of a replay
+ * (--exit-after-replay); 1 on an error (one line naming the input); 2 on a
+ * usage error.  Teardown always closes the display (kms restores the CRTC).
+ */
+#define _GNU_SOURCE /* signalfd */
+#include "kiosk.h"
+
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/signalfd.h>
+#include <unistd.h>
+
+#include "input_replay.h"
+
+#define EXIT_USAGE 2
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: hfshade-kiosk SCENE.ini [options]\n"
+            "  --input CONFIG.ini    knobs and buttons (board/kiosk.ini); default: none\n"
+            "  --replay EVENTS.txt   scripted input events (docs/INPUT.md \"Replay files\"),\n"
+            "                        timed from the first frame\n"
+            "  --display NAME        %s (default kms)\n"
+            "  --size WxH            x11 window / headless canvas size (default: the field's)\n"
+            "  --out PATTERN.png     headless: write each frame, e.g. frame-%%04d.png\n"
+            "  --exposure F          linear exposure of the picture (default 1)\n"
+            "  --overlay             start with the frame-time overlay shown\n"
+            "  --no-devices          do not open the configured devices (replay, demos)\n"
+            "  --exit-after-replay   exit 0 once the last replayed event is shown\n"
+            "  --stats FILE          per frame and per input event: times, latency, CPU\n"
+            "  --amortize N          at most N visibility passes a frame while the terrain\n"
+            "                        is still; the rest follow in the next frames (NS09 7,\n"
+            "                        docs/DESIGN.md \"Frame planner\"); default 0 = off\n"
+            "  --check               load and check every input file, open nothing, exit\n"
+            "  --help\n"
+            "signals: SIGHUP reloads SCENE.ini and CONFIG.ini; SIGTERM/SIGINT exit cleanly\n",
+            hfs_display_names());
+}
+
+static int usage_error(const char *fmt, const char *what)
+{
+    fprintf(stderr, "hfshade-kiosk: ");
+    fprintf(stderr, fmt, what);
+    fprintf(stderr, " (see --help)\n");
+    return EXIT_USAGE;
+}
+
+/* 0: run; -1: --help was printed; EXIT_USAGE: a one-line error was. */
+static int parse_args(kiosk_opts *o, int argc, char **argv)
+{
+    memset(o, 0, sizeof *o);
+    o->display = "kms";
+    o->exposure = 1.0;
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        if (a[0] != '-') {
+            if (o->scene_path)
+                return usage_error("%s: a second scene file", a);
+            o->scene_path = a;
+            continue;
+        }
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage(stdout);
+            return -1;
+        }
+        int *flag = !strcmp(a, "--overlay")             ? &o->overlay
+                    : !strcmp(a, "--no-devices")        ? &o->no_devices
+                    : !strcmp(a, "--exit-after-replay") ? &o->exit_after_replay
+                    : !strcmp(a, "--check")             ? &o->check
+                                                        : NULL;
+        if (flag) {
+            *flag = 1;
+            continue;
+        }
+        const char **val = !strcmp(a, "--input")     ? &o->input_path
+                           : !strcmp(a, "--replay")  ? &o->replay_path
+                           : !strcmp(a, "--display") ? &o->display
+                           : !strcmp(a, "--out")     ? &o->out_pattern
+                           : !strcmp(a, "--stats")   ? &o->stats_path
+                                                     : NULL;
+        const int numeric =
+            !strcmp(a, "--size") || !strcmp(a, "--exposure") || !strcmp(a, "--amortize");
+        if (!val && !numeric)
+            return usage_error("%s: unknown option", a);
+        if (i + 1 >= argc)
+            return usage_error("%s: missing value", a);
+        const char *v = argv[++i];
+        if (val) {
+            *val = v;
+        } else if (!strcmp(a, "--amortize")) {
+            char *end;
+            const long n = strtol(v, &end, 10);
+            if (end == v || *end || n < 0 || n > 64)
+                return usage_error("--amortize: '%s' is not a pass count 0..64", v);
+            o->amortize = (int)n;
+        } else if (!strcmp(a, "--size")) {
+            char tail;
+            if (sscanf(v, "%dx%d%c", &o->width, &o->height, &tail) != 2 || o->width < 1 ||
+                o->height < 1 || o->width > 16384 || o->height > 16384)
+                return usage_error("--size: '%s' is not WxH (1..16384)", v);
+        } else {
+            char *end;
+            o->exposure = strtod(v, &end);
+            if (end == v || *end || !(o->exposure > 0.0) || !isfinite(o->exposure))
+                return usage_error("--exposure: '%s' is not a positive number", v);
+        }
+    }
+    if (!o->scene_path)
+        return usage_error("%s", "no scene file");
+    if (o->exit_after_replay && !o->replay_path)
+        return usage_error("%s", "--exit-after-replay needs --replay");
+    if (o->out_pattern && strcmp(o->display, "headless"))
+        return usage_error("%s", "--out is for --display headless");
+    return 0;
+}
+
+/* Loads the replay once to check it (errors name the file and line) and
+ * says how many events it holds; the source that runs is made later, when
+ * its clock starts. */
+static int check_replay(const char *path, int *count, hfs_error *err)
+{
+    hfs_input_source *src = NULL;
+    int rc = hfs_replay_source_create(path, 0, &src, err);
+    if (rc)
+        return rc;
+    *count = hfs_replay_source_count(src);
+    hfs_input_source_destroy(src);
+    return HFS_OK;
+}
+
+static void teardown(kiosk *k)
+{
+    kiosk_stats_close(k->stats, k->frame.presented);
+    hfs_input_source_destroy(k->replay);
+    hfs_input_set_destroy(k->inputs);
+    kiosk_frame_free(&k->frame);
+    hfs_display_close(k->display); /* kms: gives the CRTC back as it was */
+    kiosk_world_free(k->world);
+    if (k->sigfd >= 0)
+        close(k->sigfd);
+}
+
+static int start(kiosk *k)
+{
+    const kiosk_opts *o = &k->opt;
+    hfs_error err = {{0}};
+    int replay_events = 0;
+    if (!(k->world = kiosk_world_load(o->scene_path, o->input_path, &err)) ||
+        (o->replay_path && check_replay(o->replay_path, &replay_events, &err))) {
+        kiosk_log(KIOSK_ERR, "%s", err.msg);
+        return 1;
+    }
+    const kiosk_world *w = k->world;
+    if (w->in.hm.holes > 0)
+        kiosk_log(KIOSK_INFO, "%s: filled %ld hole%s (nodata)", w->scene.height, w->in.hm.holes,
+                  w->in.hm.holes == 1 ? "" : "s");
+    if (o->check) {
+        printf("ok: scene %s (%dx%d, %d key, %d local light%s), input %s (%d controls), "
+               "replay %s (%d events)\n",
+               o->scene_path, w->in.field.width, w->in.field.height, w->scene.n_key,
+               w->scene.n_local, w->scene.n_local == 1 ? "" : "s",
+               o->input_path ? o->input_path : "none", w->cfg.n_controls,
+               o->replay_path ? o->replay_path : "none", replay_events);
+        return 0;
+    }
+    if (o->stats_path && !(k->stats = kiosk_stats_open(o->stats_path, &err))) {
+        kiosk_log(KIOSK_ERR, "%s", err.msg);
+        return 1;
+    }
+    kiosk_stats_start(k->stats);
+
+    hfs_display_opts dopts = {.width = o->width, .height = o->height,
+                              .title = "hfshade", .out_pattern = o->out_pattern};
+    /* Devices before the display: a missing knob must not grab the screen. */
+    if (kiosk_inputs_create(k, &w->cfg, &k->inputs, &err)) {
+        /* A device missing at start is an error (a typo must not look like
+         * an unplugged knob); say which file named it. */
+        kiosk_log(KIOSK_ERR, "%s: %s", o->input_path, err.msg);
+        return 1;
+    }
+    int rc = hfs_display_open(o->display, &dopts, &k->display, &err);
+    if (!rc)
+        rc = kiosk_frame_init(&k->frame, &w->scene, o->exposure, &err);
+    if (!rc) {
+        k->frame.amortize = o->amortize;
+        hfs_renderer_set_amortize(k->frame.renderer, o->amortize);
+    }
+    if (rc) {
+        kiosk_log(KIOSK_ERR, "%s", err.msg);
+        return 1;
+    }
+    k->world->st.overlay = o->overlay;
+    if (kiosk_frame_show(&k->frame, &w->in, w->st.overlay, w->scene.preset, k->display, &err)) {
+        kiosk_log(KIOSK_ERR, "frame: %s", err.msg);
+        return 1;
+    }
+    kiosk_stats_frame(k->stats, &k->frame, 0);
+    kiosk_stats_flush(k->stats);
+    if (o->replay_path &&
+        hfs_replay_source_create(o->replay_path, hfs_input_now_ns(), &k->replay, &err)) {
+        kiosk_log(KIOSK_ERR, "%s", err.msg);
+        return 1;
+    }
+    kiosk_log(KIOSK_INFO,
+              "started: scene %s %dx%d, input %s (%d controls, %d device source%s), "
+              "replay %s, display %s, renderer %s, first frame %.1f ms",
+              o->scene_path, w->in.field.width, w->in.field.height,
+              o->input_path ? o->input_path : "none", w->cfg.n_controls,
+              hfs_input_set_count(k->inputs), hfs_input_set_count(k->inputs) == 1 ? "" : "s",
+              o->replay_path ? o->replay_path : "none", hfs_display_name(k->display),
+              hfs_renderer_backend_name(k->frame.renderer), k->frame.render_ms);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    kiosk_log_init();
+    kiosk k;
+    memset(&k, 0, sizeof k);
+    k.sigfd = -1;
+    int rc = parse_args(&k.opt, argc, argv);
+    if (rc)
+        return rc < 0 ? 0 : rc;
+
+    sigset_t sigs;
+    sigemptyset(&sigs);
+    sigaddset(&sigs, SIGHUP);
+    sigaddset(&sigs, SIGTERM);
+    sigaddset(&sigs, SIGINT);
+    if (sigprocmask(SIG_BLOCK, &sigs, NULL) != 0 ||
+        (k.sigfd = signalfd(-1, &sigs, SFD_NONBLOCK | SFD_CLOEXEC)) < 0) {
+        kiosk_log(KIOSK_ERR, "signalfd: %s", strerror(errno));
+        return 1;
+    }
+
+    rc = start(&k);
+    if (!rc && !k.opt.check)
+        rc = kiosk_run(&k);
+    teardown(&k);
+    return rc;
+}

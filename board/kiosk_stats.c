@@ -1,0 +1,115 @@
+/*
+ * kiosk_stats.c — the --stats file: what latency and idle CPU are computed
+ * from (tools/bench_kiosk.sh, tests/test_kiosk.c).
+ *
+ * One record per line, fields separated by single spaces, times in
+ * CLOCK_MONOTONIC nanoseconds (the clock of input event timestamps), CPU in
+ * microseconds of user + system time of the whole process (getrusage
+ * RUSAGE_SELF: every thread, llvmpipe's included):
+ *
+ *   start  T_NS CPU_US
+ *   frame  N T_PRESENT_NS RENDER_MS PASSES_RAN PASSES_TOTAL EVENTS CPU_US
+ *   event  T_EVENT_NS T_PRESENT_NS LATENCY_NS FRAME CHANGED CONTROL
+ *   reload T_NS OK CPU_US
+ *   exit   T_NS CPU_US FRAMES
+ *
+ * "frame" is written after hfs_display_present returned, then one "event"
+ * line per input event of the batch that frame shows (CHANGED 1 when the
+ * event edited the scene or the visible state).  Events of a batch that
+ * changed nothing were not shown by any frame: T_PRESENT_NS, LATENCY_NS and
+ * FRAME are -1.  Lines are flushed per frame, so a reader sees whole
+ * records while the kiosk runs.
+ */
+#include "kiosk.h"
+
+#include <stdlib.h>
+#include <sys/resource.h>
+
+struct kiosk_stats {
+    FILE *f;
+};
+
+int64_t kiosk_cpu_us(void)
+{
+    struct rusage ru;
+    if (getrusage(RUSAGE_SELF, &ru) != 0)
+        return -1;
+    return (int64_t)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) * 1000000 +
+           (int64_t)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+}
+
+kiosk_stats *kiosk_stats_open(const char *path, hfs_error *err)
+{
+    kiosk_stats *s = calloc(1, sizeof *s);
+    if (!s) {
+        hfs_fail(err, HFS_E_NOMEM, "out of memory");
+        return NULL;
+    }
+    s->f = fopen(path, "w");
+    if (!s->f) {
+        hfs_fail(err, HFS_E_IO, "%s: cannot write the stats file", path);
+        free(s);
+        return NULL;
+    }
+    fprintf(s->f,
+            "# hfshade-kiosk stats: times CLOCK_MONOTONIC ns, cpu user+system us (getrusage)\n"
+            "# start T_NS CPU_US\n"
+            "# frame N T_PRESENT_NS RENDER_MS PASSES_RAN PASSES_TOTAL EVENTS CPU_US\n"
+            "# event T_EVENT_NS T_PRESENT_NS LATENCY_NS FRAME CHANGED CONTROL\n"
+            "# reload T_NS OK CPU_US\n"
+            "# exit T_NS CPU_US FRAMES\n");
+    return s;
+}
+
+void kiosk_stats_start(kiosk_stats *s)
+{
+    if (!s)
+        return;
+    fprintf(s->f, "start %lld %lld\n", (long long)hfs_input_now_ns(), (long long)kiosk_cpu_us());
+    fflush(s->f);
+}
+
+void kiosk_stats_frame(kiosk_stats *s, const kiosk_frame *f, int events)
+{
+    if (!s)
+        return;
+    fprintf(s->f, "frame %d %lld %.3f %d %d %d %lld\n", f->presented - 1,
+            (long long)f->present_ns, f->render_ms, f->passes_ran, f->passes_total, events,
+            (long long)kiosk_cpu_us());
+}
+
+void kiosk_stats_event(kiosk_stats *s, const hfs_input_event *ev, int changed,
+                       const kiosk_frame *f, int shown)
+{
+    if (!s)
+        return;
+    const long long present = shown ? (long long)f->present_ns : -1;
+    const long long latency = shown ? (long long)(f->present_ns - ev->t_ns) : -1;
+    fprintf(s->f, "event %lld %lld %lld %d %d %.*s\n", (long long)ev->t_ns, present, latency,
+            shown ? f->presented - 1 : -1, changed, HFS_CONTROL_NAME_MAX, ev->control);
+}
+
+void kiosk_stats_reload(kiosk_stats *s, int ok)
+{
+    if (!s)
+        return;
+    fprintf(s->f, "reload %lld %d %lld\n", (long long)hfs_input_now_ns(), ok,
+            (long long)kiosk_cpu_us());
+    fflush(s->f);
+}
+
+void kiosk_stats_close(kiosk_stats *s, int frames)
+{
+    if (!s)
+        return;
+    fprintf(s->f, "exit %lld %lld %d\n", (long long)hfs_input_now_ns(),
+            (long long)kiosk_cpu_us(), frames);
+    fclose(s->f);
+    free(s);
+}
+
+void kiosk_stats_flush(kiosk_stats *s)
+{
+    if (s)
+        fflush(s->f);
+}

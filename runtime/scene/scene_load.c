@@ -1,0 +1,73 @@
+/*
+ * scene_load.c — scene to renderer inputs (scene_load.h).
+ *
+ * The environment map's SH projection is kept in the inputs so that a
+ * relight never reads the map again: projecting a 2k x 1k map costs tens of
+ * milliseconds, far more than a knob's frame budget.
+ */
+#include "scene_load.h"
+
+#include <string.h>
+
+#include "sh.h"
+
+void hfs_scene_inputs_free(hfs_scene_inputs *in)
+{
+    if (!in)
+        return;
+    hfs_heightmap_free(&in->hm);
+    memset(in, 0, sizeof *in);
+}
+
+int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *err)
+{
+    hfs_lighting l;
+    hfs_quality q;
+    hfs_scene_lighting(s, in->has_env_map ? (const double(*)[HFS_SH_COEFFS])in->env_map_sh : NULL,
+                       &l);
+    hfs_scene_quality(s, &q);
+    const int rc = hfs_validate_inputs(&in->field, &l, &q, err);
+    if (rc)
+        return rc;
+    in->lighting = l;
+    in->quality = q;
+    return HFS_OK;
+}
+
+int hfs_scene_inputs_load(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *err)
+{
+    memset(in, 0, sizeof *in);
+    int rc = hfs_scene_validate(s, err);
+    if (rc)
+        return rc;
+
+    hfs_height_load_opts opts = {0};
+    opts.has_nodata = s->has_nodata;
+    opts.nodata = (float)s->nodata;
+    opts.raw_width = s->raw_width;
+    opts.raw_height = s->raw_height;
+    if ((rc = hfs_height_load(s->height, &opts, &in->hm, err)))
+        goto fail;
+    in->field.width = in->hm.width;
+    in->field.height = in->hm.height;
+    in->field.z = in->hm.z;
+    in->field.dx = s->dx_given ? s->dx : (in->hm.cellsize > 0.0 ? in->hm.cellsize : 1.0);
+    in->field.zscale = s->zscale_given ? s->zscale : 1.0;
+
+    if (s->env_map[0]) {
+        hfs_envmap env;
+        if ((rc = hfs_envmap_load(s->env_map, &env, err)))
+            goto fail;
+        double sh[3][HFS_SH_N];
+        hfs_sh_project_equirect(env.rgb, env.width, env.height, sh);
+        hfs_envmap_free(&env);
+        memcpy(in->env_map_sh, sh, sizeof in->env_map_sh);
+        in->has_env_map = 1;
+    }
+    if ((rc = hfs_scene_inputs_relight(s, in, err)))
+        goto fail;
+    return HFS_OK;
+fail:
+    hfs_scene_inputs_free(in);
+    return rc;
+}

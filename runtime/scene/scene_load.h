@@ -1,0 +1,55 @@
+/*
+ * scene_load.h — a scene (scene.h) made into what a renderer takes: the
+ * height field loaded, the environment map projected to SH, the lighting
+ * and quality filled in and validated.
+ *
+ * Shared by the command-line tool (one render) and the kiosk (many frames):
+ * the expensive part — reading the height file, reading the environment
+ * map and projecting it to SH — is done once by hfs_scene_inputs_load; a
+ * caller that edits only lights, the environment rotation or the preset
+ * (the kiosk's knobs) calls hfs_scene_inputs_relight, which recomputes the
+ * lighting and quality from the scene and touches no file.
+ *
+ * Kept out of libhfshade (hfshade_lib): it needs the file formats
+ * (hfshade_io) and the scene parser (hfshade_scene), which the renderer
+ * core must not depend on.  Library: hfshade_scene_load.
+ *
+ * Ownership: hfs_scene_inputs_load fills a caller-owned struct whose heights
+ * it allocates; hfs_scene_inputs_free releases them (a zeroed struct is
+ * fine).  field.z points into hm: do not copy the struct and free both.
+ * Errors: 0 or a negative hfs_status with a one-line message naming the
+ * file; nothing is printed (hm.holes says how many holes were filled, for
+ * the caller to report).
+ */
+#ifndef HFS_SCENE_LOAD_H
+#define HFS_SCENE_LOAD_H
+
+#include "hfs_io.h"
+#include "hfshade.h"
+#include "scene.h"
+
+typedef struct hfs_scene_inputs {
+    hfs_heightmap hm;            /* the loaded heights (owned)               */
+    hfs_field field;             /* view of hm with the scene's dx, zscale   */
+    int has_env_map;             /* env_map_sh holds the map's projection    */
+    double env_map_sh[3][HFS_SH_COEFFS];
+    hfs_lighting lighting;       /* from the scene (degrees -> radians)      */
+    hfs_quality quality;         /* preset + quality keys of the scene       */
+} hfs_scene_inputs;
+
+/* Validates the scene (hfs_scene_validate), loads its height field and
+ * environment map, and fills lighting and quality (validated with
+ * hfs_validate_inputs).  On failure *in is freed and zeroed. */
+int hfs_scene_inputs_load(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *err);
+
+/* Recomputes lighting and quality from s, which must describe the same
+ * height field and environment as the scene in was loaded from (only
+ * lights, env-rotate, albedo, preset and quality keys may differ).  Reads no
+ * file.  On failure (a value the renderer refuses) in->lighting and
+ * in->quality are unchanged. */
+int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *err);
+
+/* Frees the heights and zeroes *in.  NULL-safe. */
+void hfs_scene_inputs_free(hfs_scene_inputs *in);
+
+#endif /* HFS_SCENE_LOAD_H */

@@ -1,0 +1,55 @@
+# kiosk.cmake — hfshade-kiosk end to end (board/KIOSK.md).
+#   kiosk_bad_inputs       missing/broken scene, configuration, replay,
+#                          unknown display, usage errors: one line, non-zero
+#                          exit, no frame; the shipped example passes
+#                          --check ("io"; no GL needed)
+#   test_kiosk_replay      scripted knobs move the key light: last frame ==
+#                          direct library render, byte for byte ("gl");
+#                          _es30 under MESA_GLES_VERSION_OVERRIDE=3.0
+#   test_kiosk_amortize    the same with --amortize 1: the last frame, after
+#                          the amortized passes caught up, is still the
+#                          direct render ("gl")
+#   test_kiosk_signals     SIGHUP reload (good and broken scene), journal
+#                          priorities, SIGTERM exit 0 ("gl")
+#   test_kiosk_idle        3 s without events: no frame, < 5% of a core ("gl")
+#   test_kiosk_example     board/kiosk.ini driving data/demo.ini ("gl")
+# GL tests exit 77 without a GLES context.  Sanitizer builds run the GL ones
+# with tests/lsan.supp (Mesa/LLVM leaks only), as tests/gl.cmake does; the
+# kiosk they start inherits LSAN_OPTIONS.
+
+if(TARGET hfshade-kiosk)
+  add_test(NAME kiosk_bad_inputs
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/kiosk_bad_inputs.sh
+                   $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen> ${PROJECT_SOURCE_DIR})
+  set_tests_properties(kiosk_bad_inputs PROPERTIES LABELS io TIMEOUT 120)
+
+  add_executable(test_kiosk ${CMAKE_CURRENT_LIST_DIR}/test_kiosk.c
+                            ${CMAKE_CURRENT_LIST_DIR}/kiosk_harness.c)
+  target_link_libraries(test_kiosk PRIVATE hfshade_scene_load hfs_display hfshade_lib
+                        PkgConfig::HFS_PNG m)
+  add_dependencies(test_kiosk hfshade-kiosk hfgen)
+  set(hfs_kiosk_gl_tests test_kiosk_replay test_kiosk_amortize test_kiosk_signals
+      test_kiosk_idle test_kiosk_example)
+  foreach(mode replay amortize signals idle)
+    add_test(NAME test_kiosk_${mode}
+             COMMAND test_kiosk ${mode} $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen>)
+  endforeach()
+  # As the other gl tests: also on an ES 3.0 context (as on boards).
+  add_test(NAME test_kiosk_replay_es30
+           COMMAND test_kiosk replay $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen>)
+  set_tests_properties(test_kiosk_replay_es30 PROPERTIES
+                       ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
+  list(APPEND hfs_kiosk_gl_tests test_kiosk_replay_es30)
+  add_test(NAME test_kiosk_example
+           COMMAND test_kiosk example $<TARGET_FILE:hfshade-kiosk>
+                   ${PROJECT_SOURCE_DIR}/data/demo.ini ${PROJECT_SOURCE_DIR}/board/kiosk.ini
+                   ${CMAKE_CURRENT_LIST_DIR}/data/kiosk/example_replay.txt)
+  set_tests_properties(${hfs_kiosk_gl_tests} PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
+                       TIMEOUT 300)
+  if(HFS_SANITIZE)
+    foreach(t IN LISTS hfs_kiosk_gl_tests)
+      set_property(TEST ${t} APPEND PROPERTY ENVIRONMENT
+                   "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+    endforeach()
+  endif()
+endif()

@@ -1,0 +1,359 @@
+/*
+ * test_kiosk.c — hfshade-kiosk end to end, headless (board/KIOSK.md).
+ *
+ *   test_kiosk replay  KIOSK HFGEN   scripted knobs move the key light: the
+ *                                    last frame equals, byte for byte, a
+ *                                    direct render with the light where the
+ *                                    script and the configuration's step and
+ *                                    limits put it; one frame per batch of
+ *                                    events that changed something, none
+ *                                    for a turn past a limit
+ *   test_kiosk signals KIOSK HFGEN   SIGHUP reloads an edited scene (the
+ *                                    next frame is the new scene's); a
+ *                                    broken scene on SIGHUP is one "<3>"
+ *                                    journal line and the kiosk goes on;
+ *                                    SIGTERM: exit 0, stats complete
+ *   test_kiosk idle    KIOSK HFGEN   3 s without events: no frame, < 5% of
+ *                                    one core
+ *   test_kiosk example KIOSK DEMO.ini KIOSK.ini REPLAY.txt
+ *                                    the shipped example configuration
+ *                                    drives the demo scene (--no-devices)
+ * Exit 77 when no GLES renderer can be made here.
+ */
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "check.h"
+#include "kiosk_harness.h"
+
+/* The scene of the tests: 48x48 cones under a dim uniform sky and a key
+ * light at phi 30, elevation 20 (degrees). */
+static void make_scene(const char *hfgen, const char *key)
+{
+    char *const gen[] = {(char *)hfgen, "cones", "--size", "48x48", "-o",
+                         (char *)kh_path("cones.pfm"), NULL};
+    pid_t pid = kh_spawn(gen, kh_path("hfgen.log"));
+    int st = pid > 0 ? kh_wait(pid, 60) : -1;
+    if (st == -1 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
+        fprintf(stderr, "hfgen failed\n");
+        exit(1);
+    }
+    char text[256];
+    snprintf(text, sizeof text,
+             "height = cones.pfm\n"
+             "env-sh = 1.0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0\n"
+             "key = %s\n",
+             key);
+    kh_write(kh_path("scene.ini"), text);
+}
+
+/* Compares frame file with a direct render of the scene (key light moved
+ * to phi/elev unless NAN).  1 when equal byte for byte. */
+static int frame_is(const char *frame, double phi, double elev)
+{
+    int w = 0, h = 0, dw = 0, dh = 0, no_gl = 0;
+    uint8_t *got = kh_png_rgba(frame, &w, &h);
+    uint8_t *want = kh_direct_frame(kh_path("scene.ini"), phi, elev, &dw, &dh, &no_gl);
+    int same = got && want && w == dw && h == dh && !memcmp(got, want, (size_t)w * h * 4);
+    if (got && want && !same && w == dw && h == dh) {
+        int diff = 0, worst = 0;
+        for (size_t i = 0; i < (size_t)w * h * 4; ++i) {
+            const int d = abs(got[i] - want[i]);
+            diff += d != 0;
+            worst = d > worst ? d : worst;
+        }
+        fprintf(stderr, "%s: %d bytes differ (max %d/255) from the direct render\n", frame,
+                diff, worst);
+    }
+    free(got);
+    free(want);
+    return same;
+}
+
+static int frames_equal(const char *a, const char *b)
+{
+    int w1, h1, w2, h2;
+    uint8_t *x = kh_png_rgba(a, &w1, &h1), *y = kh_png_rgba(b, &w2, &h2);
+    const int same = x && y && w1 == w2 && h1 == h2 && !memcmp(x, y, (size_t)w1 * h1 * 4);
+    free(x);
+    free(y);
+    return same;
+}
+
+static int exited_ok(int st)
+{
+    return st != -1 && WIFEXITED(st) && WEXITSTATUS(st) == 0;
+}
+
+static void dump(const char *path)
+{
+    char *s = kh_read(path);
+    fprintf(stderr, "---- %s\n%s----\n", path, s ? s : "(unreadable)\n");
+    free(s);
+}
+
+/* ---- replay ------------------------------------------------------------------ */
+
+static const char *const config =
+    "[knob az]\naction = key.azimuth\nstep = 2\n"            /* wraps in [0, 360) */
+    "[knob el]\naction = key.elevation\nstep = 1\nmin = 5\nmax = 90\n"
+    "[button ov]\naction = overlay.toggle\n";
+
+/* Each line with the value it implies.  Times 250 ms apart so that each
+ * event is usually its own batch; the checks hold however they batch. */
+static const char *const script =
+    "100  az turn 5      # phi 30 + 10 = 40\n"
+    "350  el turn -3     # elev 20 - 3 = 17\n"
+    "600  az turn -25    # phi 40 - 50 = -10 -> wraps to 350\n"
+    "850  el turn 200    # elev 217 -> clamped to 90\n"
+    "1100 el turn 1      # at the limit: no change, no frame\n"
+    "1350 el turn -30    # elev 60\n"
+    "1350 az turn 3      # phi 356, same time: same frame\n";
+
+/* amortize: with --amortize 1 frames without events follow until the
+ * image has caught up (one visibility pass a frame); the last frame must
+ * still be the direct render. */
+static void replay(const char *kiosk, const char *hfgen, int amortize)
+{
+    make_scene(hfgen, "30,20,3,100");
+    kh_write(kh_path("c.ini"), config);
+    kh_write(kh_path("r.txt"), script);
+    char *const argv[] = {(char *)kiosk, (char *)kh_path("scene.ini"), "--input",
+                          (char *)kh_path("c.ini"), "--replay", (char *)kh_path("r.txt"),
+                          "--display", "headless", "--out", (char *)kh_path("f-%02d.png"),
+                          "--stats", (char *)kh_path("stats.txt"), "--exit-after-replay",
+                          amortize ? "--amortize" : NULL, "1", NULL};
+    pid_t pid = kh_spawn(argv, kh_path("err.txt"));
+    const int st = pid > 0 ? kh_wait(pid, 120) : -1;
+    CHECK(exited_ok(st), "replay run: status %d", st);
+
+    /* Frames: the first one, then one per batch that changed something. */
+    const int frames = kh_count_lines(kh_path("stats.txt"), "frame ");
+    int files = 0;
+    char name[32];
+    for (int i = 0; i < 20; ++i) {
+        snprintf(name, sizeof name, "f-%02d.png", i);
+        files += access(kh_path(name), F_OK) == 0;
+    }
+    CHECK(frames >= 2 && files == frames, "%d frame files, %d frame lines", files, frames);
+    CHECK(kh_count_lines(kh_path("stats.txt"), "event ") == 7, "7 event lines");
+
+    /* Every changing event is shown by a frame, the clamped one changed
+     * nothing, and each frame after the first shows at least one event. */
+    char *s = kh_read(kh_path("stats.txt"));
+    int shown_by[20] = {0}, changed = 0, unchanged = 0, lost = 0;
+    for (char *line = s; line && *line; line = strchr(line, '\n') ? strchr(line, '\n') + 1 : NULL) {
+        long long te, tp, lat;
+        int frame, ch;
+        if (sscanf(line, "event %lld %lld %lld %d %d", &te, &tp, &lat, &frame, &ch) != 5)
+            continue;
+        changed += ch;
+        unchanged += !ch;
+        if (ch && (frame < 1 || lat < 0))
+            ++lost;
+        if (frame >= 0 && frame < 20)
+            shown_by[frame]++;
+    }
+    free(s);
+    CHECK(changed == 6 && unchanged == 1 && lost == 0,
+          "events: %d changed, %d unchanged, %d changed but never shown", changed, unchanged,
+          lost);
+    for (int f = 1; f < frames && f < 20 && !amortize; ++f)
+        CHECK(shown_by[f] > 0, "frame %d shows no event (a frame without input)", f);
+
+    snprintf(name, sizeof name, "f-%02d.png", frames - 1);
+    CHECK(frame_is(kh_path("f-00.png"), NAN, NAN), "first frame != direct render");
+    CHECK(frame_is(kh_path(name), 356, 60), "last frame != direct render at phi 356, elev 60");
+    CHECK(!frames_equal(kh_path("f-00.png"), kh_path(name)), "the light did not move");
+    CHECK(kh_count_lines(kh_path("stats.txt"), "exit ") == 1, "stats: no exit line");
+    if (failures) {
+        dump(kh_path("err.txt"));
+        dump(kh_path("stats.txt"));
+    }
+}
+
+/* ---- signals ----------------------------------------------------------------- */
+
+static void signals(const char *kiosk, const char *hfgen)
+{
+    make_scene(hfgen, "30,20,3,100");
+    /* Pretend stderr is the journal: its dev:inode in JOURNAL_STREAM. */
+    kh_write(kh_path("err.txt"), "");
+    struct stat stt;
+    if (stat(kh_path("err.txt"), &stt) == 0) {
+        char js[64];
+        snprintf(js, sizeof js, "%llu:%llu", (unsigned long long)stt.st_dev,
+                 (unsigned long long)stt.st_ino);
+        setenv("JOURNAL_STREAM", js, 1);
+    }
+    kh_write(kh_path("c.ini"), config);
+    char *const argv[] = {(char *)kiosk, (char *)kh_path("scene.ini"), "--input",
+                          (char *)kh_path("c.ini"), "--display", "headless", "--out",
+                          (char *)kh_path("f-%02d.png"), "--stats", (char *)kh_path("stats.txt"),
+                          NULL};
+    pid_t pid = kh_spawn(argv, kh_path("err.txt"));
+    unsetenv("JOURNAL_STREAM");
+    if (pid < 0) {
+        CHECK(0, "spawn");
+        return;
+    }
+    CHECK(kh_wait_lines(pid, kh_path("stats.txt"), "frame ", 1, 60), "no first frame");
+
+    /* An edited scene: the key light elsewhere. */
+    make_scene(hfgen, "120,45,3,100");
+    kill(pid, SIGHUP);
+    CHECK(kh_wait_lines(pid, kh_path("stats.txt"), "frame ", 2, 60), "no frame after SIGHUP");
+    CHECK(frame_is(kh_path("f-01.png"), NAN, NAN), "frame after SIGHUP != the edited scene");
+    CHECK(kh_count_lines(kh_path("err.txt"), "<6>reloaded ") == 1, "no <6>reloaded line");
+
+    /* A broken scene: one error line, the kiosk keeps running. */
+    const int lines_before = kh_count_lines(kh_path("err.txt"), "");
+    kh_write(kh_path("scene.ini"), "height = cones.pfm\nk = 99\n");
+    kill(pid, SIGHUP);
+    CHECK(kh_wait_lines(pid, kh_path("stats.txt"), "reload ", 2, 60), "second reload not seen");
+    kh_sleep(0.2);
+    CHECK(kill(pid, 0) == 0 && waitpid(pid, NULL, WNOHANG) == 0, "died on a broken scene");
+    CHECK(kh_count_lines(kh_path("err.txt"), "") == lines_before + 1,
+          "broken scene: %d lines logged, want 1",
+          kh_count_lines(kh_path("err.txt"), "") - lines_before);
+    CHECK(kh_count_lines(kh_path("err.txt"), "<3>reload failed") == 1 &&
+              kh_count_lines(kh_path("err.txt"), "") > 0,
+          "no <3>reload failed line");
+    char *err = kh_read(kh_path("err.txt"));
+    CHECK(err && strstr(err, "scene.ini:2: k: 99"), "the error names the file and line");
+    free(err);
+    CHECK(kh_count_lines(kh_path("stats.txt"), "frame ") == 2, "a frame for a failed reload");
+
+    /* The scene mended, the configuration broken: one line again. */
+    make_scene(hfgen, "120,45,3,100");
+    kh_write(kh_path("c.ini"), "[knob az]\naction = key.azimuth\nstep = 2x\n");
+    kill(pid, SIGHUP);
+    CHECK(kh_wait_lines(pid, kh_path("stats.txt"), "reload ", 3, 60), "third reload not seen");
+    CHECK(kh_count_lines(kh_path("err.txt"), "<3>reload failed") == 2 &&
+              kh_count_lines(kh_path("err.txt"), "") == lines_before + 2,
+          "broken configuration: not one <3> line");
+    err = kh_read(kh_path("err.txt"));
+    CHECK(err && strstr(err, "c.ini:3: step: '2x' is not a number"),
+          "the error names the configuration's line");
+    free(err);
+    CHECK(kill(pid, 0) == 0 && waitpid(pid, NULL, WNOHANG) == 0, "died on a broken config");
+
+    kill(pid, SIGTERM);
+    const int st = kh_wait(pid, 60);
+    CHECK(exited_ok(st), "SIGTERM: status %d", st);
+    CHECK(kh_count_lines(kh_path("stats.txt"), "exit ") == 1, "stats: no exit line");
+    int w, h;
+    uint8_t *px = kh_png_rgba(kh_path("f-01.png"), &w, &h);
+    CHECK(px != NULL, "f-01.png unreadable");
+    free(px);
+    if (failures) {
+        dump(kh_path("err.txt"));
+        dump(kh_path("stats.txt"));
+    }
+}
+
+/* ---- idle --------------------------------------------------------------------- */
+
+static void idle(const char *kiosk, const char *hfgen)
+{
+    make_scene(hfgen, "30,20,3,100");
+    kh_write(kh_path("c.ini"), config);
+    char *const argv[] = {(char *)kiosk, (char *)kh_path("scene.ini"), "--input",
+                          (char *)kh_path("c.ini"), "--display", "headless", "--stats",
+                          (char *)kh_path("stats.txt"), NULL};
+    pid_t pid = kh_spawn(argv, kh_path("err.txt"));
+    if (pid < 0) {
+        CHECK(0, "spawn");
+        return;
+    }
+    CHECK(kh_wait_lines(pid, kh_path("stats.txt"), "frame ", 1, 60), "no first frame");
+    kh_sleep(3.0);
+    kill(pid, SIGTERM);
+    CHECK(exited_ok(kh_wait(pid, 60)), "SIGTERM: bad exit");
+    char *s = kh_read(kh_path("stats.txt"));
+    long long t0 = 0, c0 = 0, t1 = 0, c1 = 0;
+    int frames = -1;
+    const char *f = s ? strstr(s, "\nframe 0 ") : NULL;
+    const char *e = s ? strstr(s, "\nexit ") : NULL;
+    double ms;
+    int ran, tot, ev;
+    if (!f || sscanf(f, "\nframe 0 %lld %lf %d %d %d %lld", &t0, &ms, &ran, &tot, &ev, &c0) != 6 ||
+        !e || sscanf(e, "\nexit %lld %lld %d", &t1, &c1, &frames) != 3) {
+        CHECK(0, "stats unreadable");
+    } else {
+        const double cpu = (double)(c1 - c0) / 1e6, wall = (double)(t1 - t0) / 1e9;
+        printf("idle: %.3f s CPU in %.2f s = %.2f%% of one core, %d frame(s)\n", cpu, wall,
+               100.0 * cpu / wall, frames);
+        CHECK(wall > 2.5, "idle period %.2f s", wall);
+        CHECK(cpu < 0.05 * wall, "idle CPU %.2f%% of one core (limit 5%%)", 100.0 * cpu / wall);
+        CHECK(frames == 1, "%d frames while idle, want only the first", frames);
+    }
+    free(s);
+    if (failures)
+        dump(kh_path("err.txt"));
+}
+
+/* ---- the shipped example ------------------------------------------------------ */
+
+static void example(const char *kiosk, const char *scene, const char *cfg, const char *script_path)
+{
+    char *const argv[] = {(char *)kiosk, (char *)scene, "--input", (char *)cfg, "--no-devices",
+                          "--replay", (char *)script_path, "--display", "headless", "--overlay",
+                          "--out", (char *)kh_path("f-%02d.png"), "--stats",
+                          (char *)kh_path("stats.txt"), "--exit-after-replay", NULL};
+    pid_t pid = kh_spawn(argv, kh_path("err.txt"));
+    const int st = pid > 0 ? kh_wait(pid, 300) : -1;
+    CHECK(exited_ok(st), "example run: status %d", st);
+    CHECK(kh_count_lines(kh_path("stats.txt"), "frame ") >= 2, "no frame after the first");
+    CHECK(kh_count_lines(kh_path("stats.txt"), "event ") >= 1, "no event");
+    /* Every control of the script exists in the example: no warnings. */
+    CHECK(kh_count_lines(kh_path("err.txt"), "") == 2, "log: %d lines, want start + end",
+          kh_count_lines(kh_path("err.txt"), ""));
+    CHECK(!frames_equal(kh_path("f-00.png"), kh_path("f-01.png")), "the knobs changed nothing");
+    if (failures) {
+        dump(kh_path("err.txt"));
+        dump(kh_path("stats.txt"));
+    }
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 4) {
+        fprintf(stderr, "usage: test_kiosk replay|signals|idle KIOSK HFGEN\n"
+                        "       test_kiosk example KIOSK SCENE CONFIG REPLAY\n");
+        return 2;
+    }
+    if (!kh_have_gl())
+        return 77;
+    if (!kh_tmpdir("hfs_kiosk")) {
+        perror("mkdtemp");
+        return 1;
+    }
+    const char *mode = argv[1];
+    if (!strcmp(mode, "replay"))
+        replay(argv[2], argv[3], 0);
+    else if (!strcmp(mode, "amortize"))
+        replay(argv[2], argv[3], 1);
+    else if (!strcmp(mode, "signals"))
+        signals(argv[2], argv[3]);
+    else if (!strcmp(mode, "idle"))
+        idle(argv[2], argv[3]);
+    else if (!strcmp(mode, "example") && argc == 6)
+        example(argv[2], argv[3], argv[4], argv[5]);
+    else {
+        fprintf(stderr, "test_kiosk: unknown mode %s\n", mode);
+        return 2;
+    }
+    kh_rm_tmpdir();
+    if (failures)
+        fprintf(stderr, "test_kiosk %s: %d failure(s)\n", mode, failures);
+    else
+        printf("test_kiosk %s: all checks passed\n", mode);
+    return failures ? 1 : 0;
+}

@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# hfshade-kiosk: input-to-photon latency and idle CPU (board/KIOSK.md).
+#
+# Latency: a headless kiosk (frames kept in memory, not written) on a 256x256
+# fractal terrain under the demo sky (courtyard.exr) and a key light, with
+# the default quality preset (kiosk), replays EVENTS knob turns SPACING_MS
+# apart, cycling environment rotation, key azimuth and key elevation.  For
+# each event the --stats file holds the event's timestamp and the
+# CLOCK_MONOTONIC time right after hfs_display_present returned for the
+# frame showing it; latency = the difference.  The first frame (start-up,
+# every pass) is not an event and is excluded.
+# Idle CPU: the same kiosk with no input for IDLE_S seconds after its first
+# frame; CPU = user + system time of the whole process (getrusage, every
+# thread) over that wall time.
+#
+# usage: tools/bench_kiosk.sh BUILD_DIR [EVENTS] [SPACING_MS] [IDLE_S]
+#        defaults 100 events, 150 ms, 10 s
+set -euo pipefail
+cd "$(dirname "$0")/.."
+B=$(cd "$1" && pwd); N=${2:-100}; SPACING=${3:-150}; IDLE=${4:-10}
+K=$B/board/hfshade-kiosk
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+
+$B/tools/hfgen fractal --size 256x256 -o "$T/terrain.pfm" >/dev/null
+cat >"$T/scene.ini" <<EOS
+height = terrain.pfm
+env-map = $PWD/data/courtyard.exr
+key = 95,30,2.5,400
+albedo = 0.35
+EOS
+cat >"$T/knobs.ini" <<'EOS'
+[knob environment]
+action = env.rotate
+step = 5
+[knob azimuth]
+action = key.azimuth
+step = 2
+[knob elevation]
+action = key.elevation
+step = 1
+min = 5
+max = 85
+EOS
+# Events: env, azimuth, elevation in turn; elevation goes up and down so
+# every event changes the scene (no clamping).
+awk -v n="$N" -v dt="$SPACING" 'BEGIN {
+  split("environment azimuth elevation", k, " ");
+  for (i = 0; i < n; ++i) {
+    c = k[i % 3 + 1]; d = (c == "elevation" && int(i / 3) % 2) ? -1 : 1;
+    printf "%d %s turn %d\n", 200 + i * dt, c, d } }' >"$T/events.txt"
+
+"$K" "$T/scene.ini" --input "$T/knobs.ini" --replay "$T/events.txt" --display headless \
+    --stats "$T/latency.txt" --exit-after-replay 2>"$T/latency.log"
+
+# Idle: start, wait for the first frame, leave alone, SIGTERM.
+"$K" "$T/scene.ini" --input "$T/knobs.ini" --display headless --stats "$T/idle.txt" \
+    2>"$T/idle.log" &
+pid=$!
+for _ in $(seq 600); do grep -q '^frame 0 ' "$T/idle.txt" 2>/dev/null && break; sleep 0.1; done
+sleep "$IDLE"
+kill -TERM $pid; wait $pid
+
+python3 - "$T/latency.txt" "$T/idle.txt" <<'EOS'
+import statistics, sys
+lat = {}; render = {}; frames = {}; passes = {}
+for line in open(sys.argv[1]):
+    f = line.split()
+    if f[0] == "frame":
+        frames[int(f[1])] = (float(f[3]), int(f[4]), int(f[5]))
+    if f[0] == "event" and f[5] == "1":
+        lat.setdefault(f[6], []).append(int(f[3]) / 1e6)
+        render.setdefault(f[6], []).append(frames[int(f[4])][0])
+        passes.setdefault(f[6], []).append(frames[int(f[4])][1:])
+every = sorted(x for v in lat.values() for x in v)
+def row(name, v, r, p):
+    v = sorted(v)
+    ran = statistics.median_low([x[0] for x in p]); tot = p[0][1]
+    print(f"| {name} | {len(v)} | {statistics.median(v):.1f} | {v[int(0.9 * (len(v) - 1))]:.1f} | {max(v):.1f} | {statistics.median(r):.1f} | {ran}/{tot} |")
+print("| knob | events | latency median ms | p90 ms | max ms | render median ms | passes run (median) |")
+print("|---|---|---|---|---|---|---|")
+for k in sorted(lat):
+    row(k, lat[k], render[k], passes[k])
+row("all", every, [x for v in render.values() for x in v], [x for v in passes.values() for x in v])
+first = None; last = None
+for line in open(sys.argv[2]):
+    f = line.split()
+    if f[0] == "frame" and f[1] == "0": first = (int(f[2]), int(f[7]))
+    if f[0] == "exit": last = (int(f[1]), int(f[2]), int(f[3]))
+wall = (last[0] - first[0]) / 1e9; cpu = (last[1] - first[1]) / 1e6
+print(f"\nidle: {cpu:.3f} s CPU over {wall:.1f} s = {100 * cpu / wall:.2f}% of one core, "
+      f"{last[2] - 1} frame(s) after the first")
+EOS
+echo; grep -h started "$T/latency.log" | sed 's/^/latency run: /'
