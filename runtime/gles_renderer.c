@@ -1662,7 +1662,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
 
     /* Shading. */
     double bound = 0.0;
-    float shade[22 * 4]; /* HfsShade: u_env[12], u_misc, u_env_neg, u_kle[8] */
+    float shade[26 * 4]; /* HfsShade: u_env[12], u_misc, u_env_neg, u_kle[8], u_topen[4] */
     memset(shade, 0, sizeof shade);
     if (fr->has_env) {
         double m = 0.0;
@@ -1702,6 +1702,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         for (int c = 0; c < 3; ++c)
             shade[56 + 4 * i + c] =
                 (float)(fr->rho_pi * fr->keys[i].k.le[c] * key_emax(&fr->keys[i].k));
+    hfs_gles_open_transfer(shade + 88);
     ubo_upload(gl, g->ubo[UBO_SHADE], shade, sizeof shade);
 
     char nkeys[32];

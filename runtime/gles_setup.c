@@ -330,3 +330,21 @@ double hfs_gles_output_scale(double bound)
     e = e < -100 ? -100 : (e > 100 ? 100 : e);
     return ldexp(1.0, e);
 }
+
+void hfs_gles_open_transfer(float dst[16])
+{
+    /* The product at N = +z, where only the m = 0 coefficients are not 0;
+     * a zonal function's (l, 0) coefficient at +z is k_l Y_l0(+z) with
+     * Y_l0(+z) = sqrt((2l + 1) / 4 pi). */
+    double zc[HFS_ZH_N], zh[HFS_ZH_N], c[HFS_SH_N], h[HFS_SH_N], t[HFS_SH_N];
+    hfs_zh_clamped_cosine(zc);
+    hfs_zh_cap(0.5 * 3.14159265358979323846, zh);
+    hfs_sh_rotate_zonal(zc, 0.0, 0.0, 1.0, c);
+    hfs_sh_rotate_zonal(zh, 0.0, 0.0, 1.0, h);
+    hfs_sh_product(c, h, t);
+    for (int l = 0; l * l < HFS_SH_N; ++l) {
+        const double k = t[l * (l + 1)] / sqrt((2.0 * l + 1.0) / (4.0 * 3.14159265358979323846));
+        for (int m = -l; m <= l; ++m)
+            dst[l * (l + 1) + m] = (float)k;
+    }
+}

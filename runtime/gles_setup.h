@@ -145,4 +145,11 @@ double hfs_gles_local_max_irradiance(const hfs_gles_layout *L, const hfs_local_l
  * 2^e with bound * 2^e <= 16384, e in [-100, 100]. */
 double hfs_gles_output_scale(double bound);
 
+/* The open part of the environment's transfer, H(N) * hemisphere(N) (the
+ * SH product of the clamped cosine and the hemisphere about the normal),
+ * is zonal about N: its coefficient (l, m) is k_l Y_lm(N).  Writes k_l for
+ * each of the 16 coefficients (std140: 4 vec4) for the shading pass, which
+ * adds it to the stored occluded part (gles_transfer.frag). */
+void hfs_gles_open_transfer(float dst[16]);
+
 #endif /* HFS_GLES_SETUP_H */

@@ -1,8 +1,10 @@
 /*
  * gles_shade.frag - exit radiance at full resolution from the kept per-texel
  * products (DESIGN.md "Shading", "GLES path", "Frame planner"):
- *   environment  Lo += rho/pi * T . L_env per channel, T = H * V_env from
- *                gles_transfer.frag, clamped into [-neg, rho/pi H . L_env +
+ *   environment  Lo += rho/pi * T . L_env per channel, T = H * V_env = the
+ *                open part H * hemisphere(N), zonal about N and evaluated
+ *                here as k_l Y_lm(N) (u_topen), plus the occluded part from
+ *                gles_transfer.frag; clamped into [-neg, rho/pi H . L_env +
  *                neg] (u_env_neg) with H = the clamped cosine of this
  *                texel's normal;
  *   key light q  Lo += rho/pi * Le E_max * f_q, f_q = E_cap ratio / E_max
@@ -37,10 +39,11 @@ void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
 float hfs_cap_irradiance_sc(float cos_beta, float s, float c);
 vec2 hfs_split(float v);
+void hfs_sh_basis(vec3 d, out vec4 y[4]);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 
 uniform highp sampler2D u_normals;       /* full resolution */
-uniform highp sampler2D u_t0;            /* T = H * V_env, full resolution */
+uniform highp sampler2D u_t0;            /* T_occ = H * D, full resolution */
 uniform highp sampler2D u_t1;
 uniform highp sampler2D u_t2;
 uniform highp sampler2D u_t3;
@@ -57,6 +60,8 @@ layout(std140) uniform HfsShade {
     vec4 u_misc;                         /* (rho/pi, out scale, has env, 0) */
     vec4 u_env_neg;                      /* rho * negative part of L_env per channel */
     vec4 u_kle[8];                       /* per key light: rho/pi Le E_max (rgb) */
+    vec4 u_topen[4];                     /* k_l per coefficient: H * hemisphere(N)
+                                            = k_l Y_lm(N) */
 };
 
 layout(location = 0) out vec4 o_hi;       /* RGB hi (fp16-exact), 1 */
@@ -135,10 +140,11 @@ void main()
         vec4 H[4];
         hfs_sh_cosine(n, H);
         vec4 T[4];
-        T[0] = texelFetch(u_t0, p, 0);
-        T[1] = texelFetch(u_t1, p, 0);
-        T[2] = texelFetch(u_t2, p, 0);
-        T[3] = texelFetch(u_t3, p, 0);
+        hfs_sh_basis(n, T);
+        T[0] = T[0] * u_topen[0] + texelFetch(u_t0, p, 0);
+        T[1] = T[1] * u_topen[1] + texelFetch(u_t1, p, 0);
+        T[2] = T[2] * u_topen[2] + texelFetch(u_t2, p, 0);
+        T[3] = T[3] * u_topen[3] + texelFetch(u_t3, p, 0);
         vec4 L[4];
         for (int c = 0; c < 3; ++c) {
             for (int g = 0; g < 4; ++g)

@@ -1,12 +1,17 @@
 /*
- * gles_transfer.frag - the environment's per-texel transfer vector T = H * V
- * (DESIGN.md "Shading", "Frame planner"): H = the clamped cosine of the
- * full-resolution normal N as SH, V = hemisphere(N) + the grid's V_env -
- * hemisphere(N_receiver), read bilinearly (exact at grid points).  T does not
- * depend on the environment's radiance or rotation, so it is kept while only
- * those change: a turned or re-tinted environment costs the shading pass's
- * 16-term dot per channel (gles_shade.frag), not this product.
- * Output: T's 16 coefficients in 4 RGBA targets, rounded to fp16 in the
+ * gles_transfer.frag - the occluded part of the environment's per-texel
+ * transfer vector (DESIGN.md "Shading", "Frame planner").  The transfer is
+ * T = H * V with H = the clamped cosine of the full-resolution normal N as
+ * SH and V = hemisphere(N) + D, D = the grid's V_env - hemisphere(N_receiver)
+ * read bilinearly (exact at grid points).  T = H * hemisphere(N) + H * D:
+ * the first term is zonal about N and the shading pass evaluates it
+ * exactly from N; this pass stores T_occ = H * D, which is 0 wherever
+ * nothing occludes, so fp16 storage costs nothing there and elsewhere only
+ * a fraction of the occluded part.  T does not depend on the environment's
+ * radiance or rotation, so it is kept while only those change: a turned or
+ * re-tinted environment costs the shading pass's dots (gles_shade.frag),
+ * not this product.
+ * Output: T_occ's 16 coefficients in 4 RGBA targets, rounded to fp16 in the
  * shader (HFS_FP32: kept as is) so the stored value does not depend on how a
  * driver converts float to half.
  */
@@ -18,13 +23,12 @@ precision highp sampler2D;
 
 vec3 hfs_normal(vec4 t);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
-void hfs_sh_hemisphere(vec3 n, out vec4 h[4]);
 vec4 hfs_f16v(vec4 v);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 
 uniform highp sampler2D u_normals;       /* full resolution */
-uniform highp sampler2D u_v0;            /* V_env, visibility grid, LINEAR */
+uniform highp sampler2D u_v0;            /* D = V_env - hemisphere, grid, LINEAR */
 uniform highp sampler2D u_v1;
 uniform highp sampler2D u_v2;
 uniform highp sampler2D u_v3;
@@ -49,10 +53,6 @@ void main()
     V[1] = texture(u_v1, uv);
     V[2] = texture(u_v2, uv);
     V[3] = texture(u_v3, uv);
-    vec4 hemi[4];
-    hfs_sh_hemisphere(n, hemi);
-    for (int g = 0; g < 4; ++g)
-        V[g] += hemi[g];
     vec4 T[4];
     hfs_sh_product(H, V, T);
     o_t0 = hfs_f16v(T[0]);
