@@ -34,18 +34,29 @@ void hfs_swath_key(double phi, double elev, double alpha, int nphi_key,
         hfs_swath_full(nphi_key > nphi_env ? nphi_key : nphi_env, s);
     } else {
         /* The disk spans azimuths phi +- h.  Its samples sit on a lattice of
-         * the circle, k d with d = 2 pi / 2^m, the coarsest such spacing not
-         * coarser than the disk's own 2h / nphi_key: then the samples (and
-         * so the horizons behind them) stay the same while the light moves
-         * inside the sampled swath, or while its elevation changes h a
-         * little (the frame planner keeps them, gles_plan.h), and the
-         * spacing is still at most 2h / nphi_key.  The swath is the run of
-         * lattice samples whose wedges (+- d/2 about each) cover phi +- h:
-         * nphi_key to 2 nphi_key + 1 samples. */
+         * the circle, k d with d = 2 pi / N, N the largest "round" count
+         * (1..4, then 4..7 times a power of two: consecutive ones differ
+         * by at most 1.25x) whose spacing is not finer than the disk's own
+         * 2h / nphi_key: then the samples (and so the horizons behind them)
+         * stay the same while the light moves inside the sampled swath, or
+         * while its elevation changes h a little (the frame planner keeps
+         * them, gles_plan.h).  The swath is the run of lattice samples whose
+         * wedges (+- d/2 about each) cover phi +- h: the spacing is within
+         * 1.25x of 2h / nphi_key, and the covering run has 0.8 nphi_key to
+         * nphi_key + 1 samples, about as many as centred ones. */
         const double h = asin(ratio);
         const int n_req = nphi_key < 1 ? 1 : nphi_key;
-        const int m = (int)ceil(log2(PI * n_req / h));
-        const double d = ldexp(2.0 * PI, -m);
+        const double n_max = PI * n_req / h; /* circle / (2h / nphi_key) */
+        double n_lat = floor(n_max);
+        if (n_max >= 5.0) {
+            const double base = ldexp(1.0, (int)floor(log2(n_max / 4.0)));
+            n_lat = 4.0 * base;
+            for (int m = 5; m <= 7 && m * base <= n_max; ++m)
+                n_lat = m * base;
+        }
+        if (n_lat < 1.0)
+            n_lat = 1.0; /* a disk wider than the circle's half: 2 samples */
+        const double d = 2.0 * PI / n_lat;
         const double phin = phi - 2.0 * PI * floor(phi / (2.0 * PI));
         const double k0 = floor((phin - h) / d + 0.5), k1 = ceil((phin + h) / d - 0.5);
         s->n = (int)(k1 - k0) + 1;

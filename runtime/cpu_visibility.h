@@ -79,9 +79,9 @@ void hfs_swath_full(int n, hfs_swath *s);
  * the full swath of max(nphi_key, nphi_env) samples where the disk covers
  * the zenith or the nadir; otherwise a partial swath covering the disk's
  * azimuths phi +- h (h = asin(sin alpha / cos elev)) with samples on a
- * lattice of the circle (spacing 2 pi / 2^m <= 2h / nphi_key, so between
- * nphi_key and 2 nphi_key + 1 samples), which a light moving within the
- * sampled swath keeps. */
+ * lattice of the circle (spacing 2 pi / N >= 2h / nphi_key, N a round count
+ * within 1.25x: 0.8 nphi_key to nphi_key + 1 samples), which a light moving
+ * within the sampled swath keeps. */
 void hfs_swath_key(double phi, double elev, double alpha, int nphi_key,
                    int nphi_env, hfs_swath *s);
 

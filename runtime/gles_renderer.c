@@ -199,7 +199,7 @@ static void *scratch(hfs_gles *g, size_t bytes)
 
 static int use_queries(const hfs_gles *g)
 {
-    return 0 && g->have_queries && g->caps.timer_query;
+    return g->have_queries && g->caps.timer_query;
 }
 
 static void pass_begin(hfs_gles *g, int p)
