@@ -1395,7 +1395,17 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         if ((rc = hfs_gl_caps_check_uniform_block(caps, k->swath_size, "key-light swath", err)))
             return rc;
     }
-    if ((rc = hfs_gl_caps_check_uniform_block(caps, (size_t)(rec > 0 ? rec : 1) * 16,
+    /* The records' declared size (HFS_KEY_VEC4) goes in size classes, so
+     * that a swath gaining or losing a sample as its light moves does not
+     * recompile the factor pass (a 100-400 ms hitch on llvmpipe): the next
+     * power of two from 64 vec4, or the exact size where that would not
+     * fit the block limit.  The buffer is uploaded at that size. */
+    int rec_block = 64;
+    while (rec_block < rec)
+        rec_block *= 2;
+    if ((size_t)rec_block * 16 > (size_t)caps->max_uniform_block_size)
+        rec_block = rec > 0 ? rec : 1;
+    if ((rc = hfs_gl_caps_check_uniform_block(caps, (size_t)rec_block * 16,
                                               "key-light records (shading)", err)) ||
         (rc = hfs_gl_caps_check_texture(caps, L.vw, L.vh, fr->key_layers,
                                         "key-light horizons", err)))
@@ -1524,10 +1534,10 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     /* Key lights: uniform data, tables, horizon passes. */
     float *keys_rec = NULL;
     if (fr->n_keys > 0) {
-        float *ks = scratch(g, keyswath_bytes + (size_t)rec * 16);
+        float *ks = scratch(g, keyswath_bytes + (size_t)rec_block * 16);
         if (!ks)
             return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
-        memset(ks, 0, keyswath_bytes);
+        memset(ks, 0, keyswath_bytes + (size_t)rec_block * 16);
         keys_rec = ks + keyswath_bytes / sizeof(float);
         int n_sets = 0;
         double set_dphi[MAX_KEYS];
@@ -1547,7 +1557,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
             hfs_gles_pack_key(&L, &k->k, k->vis, keys_rec + (size_t)k->rec_off * 4);
         }
         ubo_upload(gl, g->ubo[UBO_KEYSWATH], ks, keyswath_bytes);
-        ubo_upload(gl, g->ubo[UBO_KEYS], keys_rec, (size_t)rec * 16);
+        ubo_upload(gl, g->ubo[UBO_KEYS], keys_rec, (size_t)rec_block * 16);
         if (tables) {
             int same = g->ktab && g->ktab_sets >= n_sets;
             for (int s = 0; s < n_sets && same; ++s)
@@ -1643,7 +1653,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
             any |= run[GP_KFACTOR0 + i];
         if (any) {
             pass_begin(g, P_KFACTOR);
-            if ((rc = run_kfactor(g, &L, fr->keys, fr->n_keys, rec, tables, run + GP_KFACTOR0,
+            if ((rc = run_kfactor(g, &L, fr->keys, fr->n_keys, rec_block, tables, run + GP_KFACTOR0,
                                   err)))
                 return rc;
             pass_end(g, P_KFACTOR);
