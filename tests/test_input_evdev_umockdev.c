@@ -84,13 +84,39 @@ int main(void)
             break;
         n += k;
     }
-    CHECK(n == n_want, "%d events (want %d)", n, n_want);
-    for (int i = 0; i < n && i < n_want; ++i)
-        CHECK(got[i].kind == want[i].kind && got[i].delta == want[i].delta &&
-                  strcmp(got[i].control, want[i].control) == 0 && got[i].t_ns == want[i].t,
+    /* The frame after SYN_DROPPED (+5) is dropped only if it is already
+     * queued when the resync runs, as on a real device (the kernel inserts
+     * SYN_DROPPED into a full buffer, the frame right behind it).
+     * umockdev replays in real time and may deliver it a little later on a
+     * loaded machine; then it is an ordinary event and comes through (the
+     * resync itself is tested deterministically in test_input_evdev). */
+    int skip = -1; /* index in got[] of a late-delivered +5, if any */
+    if (n > 7 && got[7].kind == HFS_INPUT_TURN && got[7].delta == 5 && got[7].t_ns == AT(800)) {
+        skip = 7;
+        printf("note: the frame after SYN_DROPPED arrived after the resync (kept)\n");
+        if (n == n_want)
+            give_up = hfs_input_now_ns() + MSEC(1000); /* the last event is still due */
+        while (n < n_want + 1 && hfs_input_now_ns() < give_up) {
+            struct pollfd p = {.fd = hfs_input_source_fd(s), .events = POLLIN};
+            if (poll(&p, 1, 100) < 0)
+                break;
+            int k = hfs_input_source_read(s, hfs_input_now_ns(), got + n, 32 - n, &err);
+            if (k < 0)
+                break;
+            n += k;
+        }
+    }
+    CHECK(n == n_want + (skip >= 0), "%d events (want %d)", n, n_want + (skip >= 0));
+    for (int i = 0, j = 0; i < n && j < n_want; ++i) {
+        if (i == skip)
+            continue;
+        CHECK(got[i].kind == want[j].kind && got[i].delta == want[j].delta &&
+                  strcmp(got[i].control, want[j].control) == 0 && got[i].t_ns == want[j].t,
               "event %d: kind %d delta %d %s t %lld (want %d %d %s %lld)", i, got[i].kind,
-              got[i].delta, got[i].control, (long long)got[i].t_ns, want[i].kind, want[i].delta,
-              want[i].control, (long long)want[i].t);
+              got[i].delta, got[i].control, (long long)got[i].t_ns, want[j].kind, want[j].delta,
+              want[j].control, (long long)want[j].t);
+        ++j;
+    }
     hfs_input_source_destroy(s);
     if (failures)
         fprintf(stderr, "test_input_evdev_umockdev: %d failure(s)\n", failures);
