@@ -143,6 +143,7 @@ struct hfs_gles {
     /* The frame planner (gles_plan.h): which passes a frame runs. */
     hfs_gles_plan plan;
     hfs_field_extent extent;              /* of the kept terrain (lights.h) */
+    int key_stride;                       /* horizon layers per key slot */
     int extent_valid;
     float *last_img;                      /* the last image read back, RGB */
     size_t last_img_cap;
@@ -1374,17 +1375,22 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     size_t keyswath_bytes = 0;
     int rec = 0;
     const size_t align = (size_t)caps->uniform_buffer_offset_alignment;
+    /* Each key slot owns a run of g->key_stride horizon layers, the most any
+     * key swath of this renderer has needed (a high-water mark, from room
+     * for a partial swath's nphi_key + 1 samples): a light whose swath
+     * grows or shrinks within it does not move the other lights' horizons,
+     * and the texture is not reallocated.  When the mark rises (a light
+     * covering the zenith takes the full swath) every slot moves: the
+     * planner sees new layers (hz_layer is in the signature). */
+    if (g->key_stride < (q->nphi_key + 2) / 2)
+        g->key_stride = (q->nphi_key + 2) / 2;
+    for (int i = 0; i < fr->n_keys; ++i)
+        if (g->key_stride < (fr->keys[i].k.swath.n + 1) / 2)
+            g->key_stride = (fr->keys[i].k.swath.n + 1) / 2;
     for (int i = 0; i < fr->n_keys; ++i) {
         frame_key *k = &fr->keys[i];
-        /* Each key slot owns a fixed run of layers, room for its largest
-         * swath (hfs_swath_key: <= 2 nphi_key + 1 samples, or the full
-         * swath's max(nphi_key, nphi_env)), so a light whose swath grows or
-         * shrinks does not move the other lights' horizons, and the
-         * texture is not reallocated while the light count stays. */
-        const int n_max = q->nphi_key > q->nphi_env ? q->nphi_key : q->nphi_env;
-        const int stride = ((n_max > 2 * q->nphi_key + 1 ? n_max : 2 * q->nphi_key + 1) + 1) / 2;
-        k->k.hz_layer = i * stride;
-        fr->key_layers = (i + 1) * stride;
+        k->k.hz_layer = i * g->key_stride;
+        fr->key_layers = (i + 1) * g->key_stride;
         if ((rc = hfs_visibility_create(&k->k.swath, HFS_VIS_LEGENDRE, &k->vis, err)))
             return rc;
         k->swath_off = keyswath_bytes;
