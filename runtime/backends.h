@@ -39,6 +39,7 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                     const hfs_quality *q, hfs_image *out, hfs_error *err);
 void hfs_gles_set_timing(hfs_gles *g, int level);
 void hfs_gles_set_amortize(hfs_gles *g, int passes_per_frame); /* hfshade.h */
+void hfs_gles_set_timing_finish(hfs_gles *g, int finish);        /* hfshade.h */
 void hfs_gles_get_timings(const hfs_gles *g, hfs_timings *t);
 void hfs_gles_invalidate(hfs_gles *g);
 void hfs_gles_frame_report(const hfs_gles *g, hfs_frame_report *out);

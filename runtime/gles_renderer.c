@@ -165,6 +165,7 @@ struct hfs_gles {
 
     /* Timing. */
     int timing;
+    int timing_finish;     /* glFinish + clock even where timer queries exist */
     double pass_ms[P_COUNT], pass_fetch[P_COUNT];
     int pass_ran[P_COUNT], pass_cached[P_COUNT];
     double pass_t0[P_COUNT];
@@ -200,7 +201,7 @@ static void *scratch(hfs_gles *g, size_t bytes)
 
 static int use_queries(const hfs_gles *g)
 {
-    return g->have_queries && g->caps.timer_query;
+    return g->have_queries && g->caps.timer_query && !g->timing_finish;
 }
 
 static void pass_begin(hfs_gles *g, int p)
@@ -747,6 +748,11 @@ const char *hfs_gles_context_name(const hfs_gles *g)
 const char *hfs_gles_describe(const hfs_gles *g)
 {
     return hfs_gl_context_describe(g->ctx);
+}
+
+void hfs_gles_set_timing_finish(hfs_gles *g, int finish)
+{
+    g->timing_finish = finish != 0;
 }
 
 void hfs_gles_set_amortize(hfs_gles *g, int passes_per_frame)

@@ -278,6 +278,12 @@ typedef struct hfs_timings {
  * the frame: slower, and the next frame recomputes the environment).
  * Timing adds synchronization, so timed frames are a little slower. */
 HFS_API int hfs_renderer_set_timing(hfs_renderer *r, int level);
+/* How the GLES backend times passes: 0 = timer queries where the context has
+ * them, else glFinish + clock (default); 1 = always glFinish + clock.  Use 1
+ * on llvmpipe to see where the time goes: its timestamps do not cover work
+ * it defers to the next flush (a shading pass's draw runs at the readback).
+ * The other backends accept and ignore it.  0, or HFS_E_INVALID. */
+HFS_API int hfs_renderer_set_timing_finish(hfs_renderer *r, int finish);
 /* Timings of the last frame rendered with timing on (zeroed if none). */
 HFS_API int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out);
 /* Forget results cached from earlier frames (GLES: the pyramid, normals and

@@ -90,6 +90,15 @@ int hfs_renderer_set_amortize(hfs_renderer *r, int passes_per_frame)
     return HFS_OK;
 }
 
+int hfs_renderer_set_timing_finish(hfs_renderer *r, int finish)
+{
+    if (!r || finish < 0 || finish > 1)
+        return HFS_E_INVALID;
+    if (r->gles)
+        hfs_gles_set_timing_finish(r->gles, finish);
+    return HFS_OK;
+}
+
 int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out)
 {
     if (!r || !out)

@@ -10,8 +10,9 @@
  *   bench_plan [--frames N] [--size N] [--only NAME] [--passes 1]
  *                                                    (defaults 30, 512, 0)
  * --passes 1 also prints, per sequence, where a planned frame's time goes:
- * the median GPU time of each pass it ran (timing level 1, which waits for
- * each pass: the frame times of that run are a little longer).
+ * the median time of each pass it ran (timing level 1 by glFinish + clock,
+ * hfs_renderer_set_timing_finish: llvmpipe's timer queries miss deferred
+ * work; waiting for each pass makes that run's frames a little longer).
  *
  * Sequences (N frames each, after one warm-up frame):
  *   env-rotate   a knob turning the environment at 60 Hz (6 degrees a frame)
@@ -23,7 +24,11 @@
  *                every frame (dynamic terrain), sky + key light;
  *   lights-sweep two key lights sweeping and two local lights moving over
  *                still terrain, every frame (sky present): four visibility
- *                passes stale each frame.
+ *                passes stale each frame;
+ *   key-dim      env-rotate's terrain and key light without the sky, the
+ *                key light dimming every frame: the planned frame is the
+ *                shading pass and readback without the environment's part
+ *                (beside env-rotate, what that part costs).
  * A third renderer amortizes (hfs_renderer_set_amortize 1: one visibility
  * pass a frame, NS09 section 7) and is timed alongside; its column is its
  * median frame time (its frames lag the edits by up to K - 1 frames, K the
@@ -94,7 +99,8 @@ static int setup(seq *s, const char *name, int n)
     } else {
         if (hfs_terrain_fractal(s->z, n, n, 1, 0.25))
             return -1;
-        sky(&s->l);
+        if (strcmp(name, "key-dim"))
+            sky(&s->l);
         s->l.n_key = 1;
         s->l.key[0] = (hfs_key_light){.phi = 5.86, .elev = 0.26, .alpha = 0.035,
                                       .radiance = {150, 140, 125}};
@@ -122,6 +128,9 @@ static void edit(seq *s, int t)
     } else if (!strcmp(s->name, "key-sweep")) {
         s->l.key[0].phi = fmod(0.5 + t * 3.0 * PI / 180.0, 2 * PI);
         s->l.key[0].elev = 0.15 + 0.01 * t;
+    } else if (!strcmp(s->name, "key-dim")) {
+        for (int c = 0; c < 3; ++c)
+            s->l.key[0].radiance[c] = (float)(150.0 - 2.0 * t);
     } else if (!strcmp(s->name, "lights-sweep")) {
         s->l.key[0].phi = fmod(0.5 + t * 3.0 * PI / 180.0, 2 * PI);
         s->l.key[1].phi = fmod(2.0 - t * 2.0 * PI / 180.0 + 2 * PI, 2 * PI);
@@ -171,11 +180,13 @@ int main(int argc, char **argv)
         printf("SKIP: no GLES renderer here: %s\n", err.msg);
         return 77;
     }
-    if (passes_too)
+    if (passes_too) {
         hfs_renderer_set_timing(planned, 1);
+        hfs_renderer_set_timing_finish(planned, 1);
+    }
     hfs_renderer_set_amortize(amort, 1);
     static const char *const names[] = {"env-rotate", "key-sweep", "local-move", "terrain",
-                                        "lights-sweep"};
+                                        "lights-sweep", "key-dim"};
     printf("| sequence | field | frames | planned ms (median) | full ms (median) | full / "
            "planned | amortized ms (median) | passes run per planned frame (total over the "
            "frames) |\n");
