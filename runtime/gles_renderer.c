@@ -1731,6 +1731,8 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     snprintf(nkeys, sizeof nkeys, "HFS_NKEYS %d", fr->n_keys);
     const char *defs[8] = {nkeys, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
     int nd = 1;
+    if (fr->has_env)
+        defs[nd++] = "HFS_ENV 1";
     char nlev[32], nlay[32], ldirs[40], nlocal[32];
     if (fr->n_local > 0) {
         level_defines(&L, nlev, nlay, sizeof nlev);

@@ -20,10 +20,12 @@
  * pair in two targets (the readback adds them and divides the scale out
  * exactly).
  */
-// hfs-variant: HFS_FP32 1
+// hfs-variant: HFS_ENV 1
+// hfs-variant: HFS_ENV 1, HFS_FP32 1
+// hfs-variant: HFS_ENV 1, HFS_NKEYS 2
 // hfs-variant: HFS_NKEYS 2
 // hfs-variant: HFS_LOCAL 1
-// hfs-variant: HFS_LOCAL 1, HFS_FP32 1
+// hfs-variant: HFS_ENV 1, HFS_LOCAL 1, HFS_FP32 1
 
 #ifndef HFS_PI
 #define HFS_PI 3.14159265358979
@@ -136,7 +138,12 @@ void main()
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec3 n = hfs_normal(texelFetch(u_normals, p, 0));
     vec3 lo = vec3(0.0);
-    if (u_misc.z > 0.5) {
+#ifdef HFS_ENV
+    /* Compiled in only when the scene has an environment: llvmpipe pays
+     * for this block behind a uniform branch that skips it (a 512^2 pass
+     * without it took 13.6 ms behind the branch, BENCHMARKS.md "Frame
+     * planner"). */
+    {
         vec4 H[4];
         hfs_sh_cosine(n, H);
         vec4 T[4];
@@ -156,6 +163,7 @@ void main()
             lo[c] += clamp(u_misc.x * hfs_sh_dot(T, L), -u_env_neg[c], open + u_env_neg[c]);
         }
     }
+#endif
     /* The frame's key-light count is compiled in: llvmpipe runs a loop
      * with a uniform bound as a masked loop, several times slower. */
     for (int q = 0; q < HFS_NKEYS; ++q) {
