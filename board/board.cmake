@@ -1,4 +1,5 @@
-# board.cmake — hfs_board: headless GL context backends (gl_context.h).
+# board.cmake — hfs_board: headless GL context backends (gl_context.h) and
+# the skip rule of GL tests and hfstress (gl_require.h).
 #   surfaceless  EGL (pkg-config egl), always built
 #   osmesa       OSMesa (pkg-config osmesa, headers) when HFS_WITH_OSMESA is ON
 #                and found, loaded at run time with dlopen (never linked);
@@ -10,6 +11,7 @@ pkg_check_modules(HFS_EGL REQUIRED IMPORTED_TARGET egl)
 
 add_library(hfs_board STATIC
   ${CMAKE_CURRENT_LIST_DIR}/gl_context.c
+  ${CMAKE_CURRENT_LIST_DIR}/gl_require.c
   ${CMAKE_CURRENT_LIST_DIR}/egl_surfaceless.c
   ${CMAKE_CURRENT_LIST_DIR}/egl_util.c
   ${CMAKE_CURRENT_LIST_DIR}/osmesa.c)
@@ -31,6 +33,8 @@ if(HFS_WITH_OSMESA)
     message(STATUS "hfshade: OSMesa not found (libosmesa6-dev); context \"osmesa\" will report \"not built\"")
   endif()
 endif()
+# Tests of the osmesa context exist only where it is built (tests/gl.cmake).
+set(HFS_HAVE_OSMESA ${HFS_HAVE_OSMESA} CACHE INTERNAL "OSMesa context built")
 if(HFS_HAVE_OSMESA)
   message(STATUS "hfshade: GL contexts: surfaceless, osmesa")
 else()

@@ -33,11 +33,12 @@
  * pass a frame, NS09 section 7) and is timed alongside; its column is its
  * median frame time (its frames lag the edits by up to K - 1 frames, K the
  * visibility passes an edit makes stale).
- * No GLES context: exit 77.
+ * No GLES context of any kind: exit 77 (gl_test.h).
  */
 #include "hfshade.h"
 #include "terrain_gen.h"
 #include "median.h"
+#include "gl_test.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -172,14 +173,8 @@ int main(int argc, char **argv)
                         "[--passes 0|1]\n");
         return 2;
     }
-    hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES};
-    hfs_renderer *planned = NULL, *full = NULL, *amort = NULL;
     hfs_error err;
-    if (hfs_renderer_create(&d, &planned, &err) || hfs_renderer_create(&d, &full, &err) ||
-        hfs_renderer_create(&d, &amort, &err)) {
-        printf("SKIP: no GLES renderer here: %s\n", err.msg);
-        return 77;
-    }
+    hfs_renderer *planned = gl_test_gles(), *full = gl_test_gles(), *amort = gl_test_gles();
     if (passes_too) {
         hfs_renderer_set_timing(planned, 1);
         hfs_renderer_set_timing_finish(planned, 1);

@@ -3,19 +3,22 @@
 #   test_gles_*           against the CPU reference and on their own ("gl"):
 #     equal_SCENE_PREC_PATH  SPEC metrics vs cpu at default settings,
 #                            subsample 1 (bounds below, stated per test)
-#     sub2_/sub4_SCENE       the error sub-sampling adds (fp16, Legendre)
+#     sub2_/sub4_SCENE       subsample 2/4 against subsample 1 on the GPU
+#                            (fp16, Legendre): grid texels equal, the rest
+#                            within the interpolation error
 #     determinism, cache, flat, timing, errors  (see test_gles_render.c)
 #   *_es30   MESA_GLES_VERSION_OVERRIDE=3.0 (an ES 3.0 context, as on boards)
 #   *_sse41  GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 (llvmpipe without AVX)
 # A context that cannot be made exits 77 (skipped, with the reason).
 # Sanitizer builds run the gl tests with tests/lsan.supp (Mesa/LLVM leaks).
 #
-# Bounds (mean, max of |gles - cpu| / max unshadowed, SPEC metrics), set at
-# 3-5x what llvmpipe measures (DESIGN.md "GLES path"); the issue asks for
-# 2e-3 / 2e-2 at fp16:
-#   subsample 1   fp16  mean 1e-4, max 1e-3     fp32  mean 3e-6, max 1.5e-4
-#   subsample 2/4 (an approximation of the full-resolution reference, so a
-#                 measured envelope per scene, ~1.5x the measurement)
+# Bounds (mean, max of |gles - cpu| / max unshadowed, SPEC metrics): about
+# 10x what llvmpipe measures, per scene, precision and path (the issue's
+# 2e-3 / 2e-2 at fp16 is the product requirement, far above).  Measured on
+# Mesa 22.3.6 llvmpipe, RelWithDebInfo; Release (-O3) and Debug + ASan/UBSan
+# give the same digits, and so do MESA_GLES_VERSION_OVERRIDE=3.0,
+# GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 (fp32 differs in the 3rd digit at most)
+# and OSMesa.  Subsample 2/4: see test_gles_sub* below.
 add_library(hfs_test_gles_scenes STATIC ${CMAKE_CURRENT_LIST_DIR}/test_gles_scenes.c)
 target_include_directories(hfs_test_gles_scenes PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(hfs_test_gles_scenes PUBLIC hfshade_lib hfshade_io hfs_terrain_gen m)
@@ -39,27 +42,55 @@ function(hfs_gles_test name)
   set(hfs_gles_tests ${hfs_gles_tests} ${name} PARENT_SCOPE)
 endfunction()
 
+#                                       bound (mean max)   measured mean / max
+set(hfs_eq_cones_fp16_legendre          1e-4   9e-4)     # 9.8e-6 / 8.6e-5
+set(hfs_eq_cones_fp16_tables            2.4e-4 1.1e-3)   # 2.4e-5 / 1.1e-4
+set(hfs_eq_cones_fp32_legendre          6e-7   1.8e-5)   # 6.2e-8 / 1.8e-6
+set(hfs_eq_cones_fp32_tables            8e-7   4.4e-6)   # 8.0e-8 / 4.4e-7
+set(hfs_eq_fractal_fp16_legendre        4e-4   3.4e-3)   # 4.1e-5 / 3.4e-4
+set(hfs_eq_fractal_fp16_tables          4.2e-4 2.9e-3)   # 4.2e-5 / 2.9e-4
+set(hfs_eq_fractal_fp32_legendre        7e-7   3.8e-5)   # 7.1e-8 / 3.8e-6
+set(hfs_eq_fractal_fp32_tables          1.1e-6 7.7e-6)   # 1.1e-7 / 7.7e-7
+set(hfs_eq_dem_fp16_legendre            2e-4   1.4e-3)   # 2.0e-5 / 1.4e-4
+set(hfs_eq_dem_fp16_tables              2.7e-4 1.6e-3)   # 2.7e-5 / 1.6e-4
+set(hfs_eq_dem_fp32_legendre            9e-7   2.8e-5)   # 8.6e-8 / 2.8e-6
+set(hfs_eq_dem_fp32_tables              1.1e-6 8.7e-6)   # 1.1e-7 / 8.7e-7
 foreach(scene cones fractal dem)
   foreach(path legendre tables)
-    hfs_gles_test(test_gles_equal_${scene}_fp16_${path} equal ${scene} fp16 ${path} 1 1e-4 1e-3)
-    hfs_gles_test(test_gles_equal_${scene}_fp32_${path} equal ${scene} fp32 ${path} 1 3e-6 1.5e-4)
+    foreach(prec fp16 fp32)
+      hfs_gles_test(test_gles_equal_${scene}_${prec}_${path}
+                    equal ${scene} ${prec} ${path} 1 ${hfs_eq_${scene}_${prec}_${path}})
+    endforeach()
   endforeach()
 endforeach()
-# Sub-sampling: measured (mean, max) cones 1.2e-3/0.11 (2), 3.1e-3/0.16 (4);
-# fractal (relief 1 at 64x64: slopes up to ~5) 3.4e-2/0.53, 6.6e-2/0.62;
-# DEM 5.9e-3/0.20, 1.5e-2/0.28.
-hfs_gles_test(test_gles_sub2_cones equal cones fp16 legendre 2 2e-3 0.2)
-hfs_gles_test(test_gles_sub4_cones equal cones fp16 legendre 4 5e-3 0.3)
-hfs_gles_test(test_gles_sub2_fractal equal fractal fp16 legendre 2 5e-2 0.8)
-hfs_gles_test(test_gles_sub4_fractal equal fractal fp16 legendre 4 1e-1 0.9)
-hfs_gles_test(test_gles_sub2_dem equal dem fp16 legendre 2 1e-2 0.3)
-hfs_gles_test(test_gles_sub4_dem equal dem fp16 legendre 4 2.5e-2 0.4)
+# Sub-sampling against subsample 1 on the same renderer (mode sub; sky and
+# key light).  Grid texels: bit for bit on the 64^2 scenes (grids of 33 and
+# 17 receivers); on the 96^2 DEM (49 and 25 receivers) a few grid texels
+# differ by float rounding of the grid texture coordinate (hfs_grid_uv:
+# ((a + 0.5) / 49) * 49 - 0.5 != a for a = 3, 13, 27, 28), measured
+# 2.2e-6 (sub 2) / 7.0e-7 (sub 4) of the max unshadowed: bound 2.2e-5 / 7e-6.
+# Others: the interpolation error, which involves no CPU arithmetic and is
+# the same to 4 digits in every build and llvmpipe variant above, so the
+# bound is the measurement + 20% (10x would allow whole-frame breakage):
+#   measured mean / max  cones   sub 2 1.27e-3 / 0.114  sub 4 3.28e-3 / 0.158
+#                        fractal       3.49e-2 / 0.548        6.52e-2 / 0.606
+#                        DEM           5.99e-3 / 0.205        1.55e-2 / 0.295
+hfs_gles_test(test_gles_sub2_cones sub cones 2 0 1.5e-3 0.137)
+hfs_gles_test(test_gles_sub4_cones sub cones 4 0 3.9e-3 0.19)
+hfs_gles_test(test_gles_sub2_fractal sub fractal 2 0 4.2e-2 0.66)
+hfs_gles_test(test_gles_sub4_fractal sub fractal 4 0 7.8e-2 0.73)
+hfs_gles_test(test_gles_sub2_dem sub dem 2 2.2e-5 7.2e-3 0.25)
+hfs_gles_test(test_gles_sub4_dem sub dem 4 7e-6 1.9e-2 0.36)
 foreach(mode determinism cache flat timing errors variants)
   hfs_gles_test(test_gles_${mode} ${mode})
 endforeach()
-# The same backend on the OSMesa fallback context (skipped where not built).
-hfs_gles_test(test_gles_equal_fractal_fp16_legendre_osmesa equal fractal fp16 legendre 1 1e-4 1e-3 osmesa)
-hfs_gles_test(test_gles_equal_dem_fp32_tables_osmesa equal dem fp32 tables 1 3e-6 1.5e-4 osmesa)
+# The same backend on the OSMesa fallback context (where it is built).
+if(HFS_HAVE_OSMESA)
+  hfs_gles_test(test_gles_equal_fractal_fp16_legendre_osmesa
+                equal fractal fp16 legendre 1 ${hfs_eq_fractal_fp16_legendre} osmesa)
+  hfs_gles_test(test_gles_equal_dem_fp32_tables_osmesa
+                equal dem fp32 tables 1 ${hfs_eq_dem_fp32_tables} osmesa)
+endif()
 
 # The CI environments: an ES 3.0 context, and llvmpipe without AVX.
 foreach(variant es30 sse41)
@@ -70,10 +101,11 @@ foreach(variant es30 sse41)
   endif()
   foreach(scene cones fractal dem)
     hfs_gles_test(test_gles_equal_${scene}_fp16_legendre_${variant}
-                  equal ${scene} fp16 legendre 1 1e-4 1e-3)
+                  equal ${scene} fp16 legendre 1 ${hfs_eq_${scene}_fp16_legendre})
     set_tests_properties(test_gles_equal_${scene}_fp16_legendre_${variant} PROPERTIES ENVIRONMENT ${env})
   endforeach()
-  hfs_gles_test(test_gles_equal_fractal_fp32_tables_${variant} equal fractal fp32 tables 1 3e-6 1.5e-4)
+  hfs_gles_test(test_gles_equal_fractal_fp32_tables_${variant}
+                equal fractal fp32 tables 1 ${hfs_eq_fractal_fp32_tables})
   set_tests_properties(test_gles_equal_fractal_fp32_tables_${variant} PROPERTIES ENVIRONMENT ${env})
   foreach(mode determinism flat errors variants)
     hfs_gles_test(test_gles_${mode}_${variant} ${mode})

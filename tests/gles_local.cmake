@@ -7,9 +7,26 @@
 #   *_es30 / *_sse41      the CI environments, as tests/gles.cmake
 # A context that cannot be made exits 77 (skipped).
 #
-# Bound (SPEC metrics, |gles - cpu| / max unshadowed): mean 1e-3, max 1e-2
-# (the task's); llvmpipe measures <= 5e-6 / 2e-5 (fp16 and fp32 alike: the
-# float arithmetic of the shader, not the storage, dominates).
+# Bounds (SPEC metrics, |gles - cpu| / max unshadowed): about 10x what
+# llvmpipe measures per test (Mesa 22.3.6, RelWithDebInfo; Release, Debug +
+# ASan/UBSan, MESA_GLES_VERSION_OVERRIDE=3.0 and GALLIUM_OVERRIDE_CPU_CAPS=
+# sse4.1 give the same 3 digits).  fp16 and fp32 alike: the float arithmetic
+# of the shader, not the storage, dominates.  The task's 1e-3 / 1e-2 is the
+# product requirement, far above.
+#                                    bound (mean max)   measured mean / max
+set(hfs_loc_cones_1                  1.1e-7 1.5e-4)   # 1.05e-8 / 1.49e-5
+set(hfs_loc_cones_8                  5e-7   8.8e-5)   # 5.04e-8 / 8.76e-6
+set(hfs_loc_panel_1                  2.9e-8 4e-6)     # 2.88e-9 / 3.93e-7
+set(hfs_loc_panel_8                  7.1e-8 1.6e-5)   # 7.12e-9 / 1.59e-6
+set(hfs_loc_cones_3_full             1.9e-7 4.1e-6)   # 1.92e-8 / 4.08e-7
+set(hfs_loc_cones_3_wedge            3.1e-5 4.1e-4)   # 3.09e-6 / 4.11e-5
+set(hfs_loc_panel_3_fp32             9.9e-8 6.5e-5)   # 9.93e-9 / 6.51e-6
+# Subsample 2 against the full-resolution CPU: the interpolation error,
+# deterministic (the same 4 digits in every build and variant above), so
+# the measurement + 20% as tests/gles.cmake's sub-sampling tests; the grid
+# texels' bit-equality is mode sub.
+set(hfs_loc_cones_8_sub2             1.75e-4 2.1e-2)  # 1.454e-4 / 1.770e-2
+set(hfs_loc_panel_8_sub2             3.1e-4 1.85e-2)  # 2.573e-4 / 1.545e-2
 add_executable(test_gles_local ${CMAKE_CURRENT_LIST_DIR}/test_gles_local.c)
 target_link_libraries(test_gles_local PRIVATE hfs_test_gles_scenes)
 target_compile_definitions(test_gles_local PRIVATE HFS_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
@@ -35,21 +52,20 @@ foreach(variant "" es30 sse41)
   foreach(scene cones panel)
     foreach(n 1 8)
       hfs_gles_local_test(test_gles_local_equal_${scene}_${n}${sfx}
-                          equal ${scene} ${n} partial 1 fp16 1e-3 1e-2)
+                          equal ${scene} ${n} partial 1 fp16 ${hfs_loc_${scene}_${n}})
       list(APPEND names test_gles_local_equal_${scene}_${n}${sfx})
     endforeach()
   endforeach()
-  hfs_gles_local_test(test_gles_local_equal_cones_3_full${sfx} equal cones 3 full 1 fp16 1e-3 1e-2)
+  hfs_gles_local_test(test_gles_local_equal_cones_3_full${sfx}
+                      equal cones 3 full 1 fp16 ${hfs_loc_cones_3_full})
   list(APPEND names test_gles_local_equal_cones_3_full${sfx})
-  # Sub-sampled visibility (issue 4): measured 1.5e-4 / 1.9e-2 (cones) and
-  # 2.7e-4 / 2.3e-2 (panel), 8 lights at subsample 2 (DESIGN.md).
-  # The wedge-table path (fp16 tables: bounds as the Legendre ones).
+  # The wedge-table path (fp16 tables).
   hfs_gles_local_test(test_gles_local_equal_cones_3_wedge${sfx}
-                      equal cones 3 partial 1 fp16 1e-3 1e-2 wedge)
+                      equal cones 3 partial 1 fp16 ${hfs_loc_cones_3_wedge} wedge)
   list(APPEND names test_gles_local_equal_cones_3_wedge${sfx})
   foreach(scene cones panel)
     hfs_gles_local_test(test_gles_local_equal_${scene}_8_sub2${sfx}
-                        equal ${scene} 8 partial 2 fp16 1e-3 0.1)
+                        equal ${scene} 8 partial 2 fp16 ${hfs_loc_${scene}_8_sub2})
     list(APPEND names test_gles_local_equal_${scene}_8_sub2${sfx})
   endforeach()
   foreach(mode dem mixed flat sub errors)
@@ -60,7 +76,8 @@ foreach(variant "" es30 sse41)
     set_tests_properties(${names} PROPERTIES ENVIRONMENT ${env})
   endif()
 endforeach()
-hfs_gles_local_test(test_gles_local_equal_panel_3_fp32 equal panel 3 partial 1 fp32 1e-3 1e-2)
+hfs_gles_local_test(test_gles_local_equal_panel_3_fp32
+                    equal panel 3 partial 1 fp32 ${hfs_loc_panel_3_fp32})
 
 if(HFS_SANITIZE)
   foreach(t IN LISTS hfs_gles_local_tests)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # hfbench end to end on a 32x32 cones field, CPU backend only (no GL
-# needed): the CSV has one row per (scene, setting), errors are finite, a
-# second run takes the truth from the cache, and plots appear when gnuplot
-# is installed.  A bad grid key is a one-line error.
+# needed): the CSV has one row per (scene, setting), errors as measured
+# (+ 20%), a second run takes the truth from the cache, and plots appear
+# when gnuplot is installed.  A bad grid key is a one-line error.
 set -euo pipefail
 HB=$1
 T=$(mktemp -d)
@@ -11,8 +11,16 @@ trap 'rm -rf "$T"' EXIT
       --cache "$T/cache" --frames 1 --truth-samples 64 --quiet > "$T/out.md" 2> "$T/err"
 rows=$(($(wc -l < "$T/a.csv") - 1))
 [ "$rows" -eq 4 ] || { echo "expected 4 rows, got $rows"; cat "$T/a.csv"; exit 1; }
-awk -F, 'NR > 1 && !($22 + 0 >= 0 && $22 + 0 < 1) { bad = 1 } END { exit bad }' "$T/a.csv" ||
-  { echo "mean_abs out of [0, 1)"; cat "$T/a.csv"; exit 1; }
+# mean_abs (column 22: the CPU reference against the 64-sample truth, SPEC
+# metrics) measured cones 1.86e-2 (k 2) / 1.69e-2 (k 4), sine 2.94e-2 /
+# 2.55e-2, the same digits in RelWithDebInfo and Release (double arithmetic
+# and deterministic truth on both sides): bound the measurement + 20%.  An
+# approximation's error, not rounding noise: 10x would pass a reference that
+# lost every key-light shadow (3.3e-2 / 6.0e-2 then).
+awk -F, 'NR > 1 { b = ($1 == "cones" ? ($5 == 2 ? 2.2e-2 : 2.0e-2) : ($5 == 2 ? 3.5e-2 : 3.1e-2))
+                  if (!($22 + 0 >= 0 && $22 + 0 <= b)) { bad = 1; print "mean_abs " $22 " > " b " (" $1 " k " $5 ")" } }
+         END { exit bad }' "$T/a.csv" ||
+  { echo "mean_abs out of bounds"; cat "$T/a.csv"; exit 1; }
 ls "$T"/cache/truth-*.pfm > /dev/null
 "$HB" -o "$T/b.csv" --scenes cones --size 32 --grid "backend=cpu" --cache "$T/cache" \
       --frames 1 --truth-samples 64 2> "$T/err2" > /dev/null

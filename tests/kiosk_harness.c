@@ -22,6 +22,7 @@
 
 #include "frame_image.h"
 #include "scene_load.h"
+#include "gl_test.h"
 
 extern char **environ;
 
@@ -178,15 +179,9 @@ uint8_t *kh_png_rgba(const char *path, int *w, int *h)
     return px;
 }
 
-int kh_have_gl(void)
+void kh_require_gl(void)
 {
-    hfs_renderer *r = NULL;
-    hfs_error err = {{0}};
-    const int rc = hfs_renderer_create(&(hfs_renderer_desc){0}, &r, &err);
-    hfs_renderer_destroy(r);
-    if (rc)
-        fprintf(stderr, "no GLES renderer here: %s\n", err.msg);
-    return rc == 0;
+    hfs_renderer_destroy(gl_test_renderer(&(hfs_renderer_desc){0}));
 }
 
 uint8_t *kh_direct_frame(const char *scene_path, double key_phi, double key_elev, int *w,

@@ -45,11 +45,13 @@ uint8_t *kh_png_rgba(const char *path, int *w, int *h);
  * key_phi is not NAN) with a fresh GLES renderer, made into the kiosk's
  * picture (frame_image.h, exposure 1).  Returns the malloc'ed RGBA8
  * picture or NULL with the reason printed.  *no_gl is set when no GL
- * context could be made (the test then skips). */
+ * context could be made. */
 uint8_t *kh_direct_frame(const char *scene_path, double key_phi, double key_elev, int *w,
                          int *h, int *no_gl);
 
-/* 1 if a GLES renderer can be made here. */
-int kh_have_gl(void);
+/* Returns when a GLES renderer can be made here; otherwise exits 77 when no
+ * GLES context of any kind can be made, 1 when the renderer is broken
+ * (gl_test.h). */
+void kh_require_gl(void);
 
 #endif /* HFS_KIOSK_HARNESS_H */

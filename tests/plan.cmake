@@ -24,3 +24,8 @@ target_include_directories(bench_plan PRIVATE ${PROJECT_SOURCE_DIR}/tools)
 # from-scratch frame (GLES).
 hfs_add_test(test_plan_amortize SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_plan_amortize.c
              LIBS hfshade_lib hfs_terrain_gen m LABEL gl TIMEOUT 600)
+# The GLES plan's input diff without a context: each signature field alone
+# runs exactly the passes that read it (the swath's sample count included).
+hfs_add_test(test_gles_plan_diff SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gles_plan_diff.c
+             LIBS hfs_gles LABEL unit)
+target_include_directories(test_gles_plan_diff PRIVATE ${PROJECT_SOURCE_DIR}/runtime)

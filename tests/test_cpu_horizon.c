@@ -100,8 +100,9 @@ static void test_ramp(void)
             hfs_horizon_point(s.hp, 1, i, 20, fl, &env, &key, NULL);
             CHECK(env >= fl && key >= fl && env < fl + 0.1, "downhill horizon %g, floor %g", env, fl);
         }
-        CHECK(worst_up < 1e-12, "ramp, facing uphill: error %g", worst_up);
-        CHECK(worst_floor < 1e-12, "ramp floor: error %g", worst_floor);
+        /* measured 2.7e-15 and 0 (double, every build type): ~10x */
+        CHECK(worst_up < 3e-14, "ramp, facing uphill: error %g", worst_up);
+        CHECK(worst_floor < 3e-14, "ramp floor: error %g", worst_floor);
         unmake(&s);
     }
     free(z);

@@ -381,7 +381,9 @@ static void test_wall(void)
                 worst[row][1] = fmax(worst[row][1], lit);
                 CHECK(behind <= (exact ? 0.0 : 0.5), "wall %s/%s: hidden light leaks %g of "
                       "unshadowed", path_name(path), mode_name(mode), behind);
-                CHECK(lit <= (exact ? 1e-3 : 0.3), "wall %s/%s: lit side off unshadowed by %g",
+                /* exact swath: measured 0 (bound 10 float ulps); else
+                 * measured 0.11 / 0.13 (the approximate swath's error) */
+                CHECK(lit <= (exact ? 1.2e-6 : 0.3), "wall %s/%s: lit side off unshadowed by %g",
                       path_name(path), mode_name(mode), lit);
             }
             hfs_image_free(&img);
@@ -395,7 +397,8 @@ static void test_wall(void)
                     for (int i = 0; i <= 15; ++i)
                         off = fmax(off, fabs(img.rgb[3 * (j * w + i)] / ref.rgb[3 * (j * w + i)] - 1));
                 worst[row][2] = fmax(worst[row][2], off);
-                CHECK(off <= (exact ? 1e-3 : 0.4), "wall behind the light %s/%s shadows it: off by %g",
+                /* exact: measured 0; else 0.30 / 0.17 */
+                CHECK(off <= (exact ? 1.2e-6 : 0.4), "wall behind the light %s/%s shadows it: off by %g",
                       path_name(path), mode_name(mode), off);
             }
             hfs_image_free(&img);
@@ -677,7 +680,8 @@ static void test_switches(void)
         worst = 0.0;
         for (int k = 0; k < w * h * 3; ++k)
             worst = fmax(worst, fabs(sum_img.rgb[k] - acc[k]) / fmax(1e-6, acc[k]));
-        CHECK(worst <= 1e-5, "%s: 16 lights != sum of single lights (rel %g)", mode_name(mode), worst);
+        /* measured 1.1e-7 (float sums in another order): ~10x */
+        CHECK(worst <= 1.1e-6, "%s: 16 lights != sum of single lights (rel %g)", mode_name(mode), worst);
         free(acc);
         hfs_image_free(&sum_img);
     }

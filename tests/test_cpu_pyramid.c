@@ -155,7 +155,8 @@ static void test_ramp(int w, int h, int k)
             const double e = fabs(hfs_cpu_pyramid_sample(p, i, gx, gy) - (c0 + a * gx + b * gy));
             worst = e > worst ? e : worst;
         }
-        CHECK(worst < 1e-10, "ramp %dx%d k=%d: max deviation %g", w, h, k, worst);
+        /* measured <= 2.8e-14 (double, every build type): ~10x */
+        CHECK(worst < 3e-13, "ramp %dx%d k=%d: max deviation %g", w, h, k, worst);
         CHECK(checked_levels >= 3, "ramp %dx%d: only %d levels checked", w, h, checked_levels);
         /* The decimated samples never clamp (levels shrink), so they are the
          * ramp in texture coordinates at every level, borders included. */
@@ -171,7 +172,7 @@ static void test_ramp(int w, int h, int k)
                     worst_s = e > worst_s ? e : worst_s;
                 }
         }
-        CHECK(worst_s < 1e-10, "ramp %dx%d k=%d: decimated samples deviate by %g", w, h, k, worst_s);
+        CHECK(worst_s < 3e-13, "ramp %dx%d k=%d: decimated samples deviate by %g", w, h, k, worst_s);
     }
     hfs_cpu_pyramid_destroy(p);
     free(z);

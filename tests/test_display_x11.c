@@ -42,6 +42,7 @@
 
 #include "check.h"
 #include "test_display_util.h"
+#include "gl_test.h"
 
 #define SKIP 77
 #define PI 3.14159265358979323846
@@ -137,9 +138,8 @@ static void scene_make(scene *s)
     hfs_error err = {""};
     memset(s, 0, sizeof *s);
     if (hfs_renderer_create(&desc, &s->r, &err)) {
-        printf("SKIP: no GLES renderer here: %s\n", err.msg);
         stop_xvfb();
-        exit(SKIP);
+        gl_test_unavailable("cannot create the GLES renderer", &err);
     }
     s->z = calloc((size_t)W * H, sizeof *s->z);
     hfs_terrain_cones(s->z, W, H);

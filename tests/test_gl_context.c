@@ -1,8 +1,9 @@
 /*
  * test_gl_context.c — one context backend end to end (argv[1]: surfaceless,
  * osmesa or auto; argv[2], for auto: the backend it must pick, else SKIP):
- *   requires: the backend can make an ES 3.0-capable context here, else
- *             SKIP (exit 77) with the backend's one-line reason;
+ *   requires: the backend can make an ES 3.0-capable context here; when it
+ *             cannot, SKIP (exit 77) only if no context of any kind can be
+ *             made (gl_test.h), else FAIL;
  *   checks:   name and strings, the function table, every embedded shader
  *             compiles on the driver, driver messages carry .glsl line
  *             numbers, the pattern renders into RGBA16F 64x64 and reads back
@@ -10,6 +11,7 @@
  *             variant define, make_current, teardown.
  */
 #include "gl_context.h"
+#include "gl_test.h"
 #include "gl_pattern.h"
 #include "gl_shaders.h"
 #include "gl_util.h"
@@ -76,10 +78,8 @@ int main(int argc, char **argv)
     hfs_gl_context *ctx = NULL;
 
     int rc = hfs_gl_context_create(name, &ctx, &err);
-    if (rc == HFS_E_CONTEXT || rc == HFS_E_UNSUPPORTED) {
-        printf("SKIP: %s\n", err.msg);
-        return 77;
-    }
+    if (rc == HFS_E_CONTEXT || rc == HFS_E_UNSUPPORTED)
+        gl_test_unavailable("cannot make the context", &err);
     if (rc) {
         printf("FAIL: %s (%s)\n", err.msg, hfs_status_name(rc));
         return 1;
@@ -113,10 +113,12 @@ int main(int argc, char **argv)
                gl.timer_query);
         CHECK(gl.is_es == hfs_gl_context_is_es(ctx), "is_es disagree");
         if (!gl.render_half_float) {
-            printf("SKIP: context %s: RGBA16F is not renderable "
-                   "(no GL_EXT_color_buffer_half_float)\n", got);
+            /* A driver without the product's one extension: no device. */
+            printf("%s: context %s: RGBA16F is not renderable "
+                   "(no GL_EXT_color_buffer_half_float)\n",
+                   hfs_gl_required() ? "FAIL (HFS_REQUIRE_GL=1)" : "SKIP", got);
             hfs_gl_context_destroy(ctx);
-            return 77;
+            return hfs_gl_required() ? 1 : GL_TEST_SKIP;
         }
         check_shaders_compile(&gl);
         check_compile_error(&gl);

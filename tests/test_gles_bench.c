@@ -21,6 +21,7 @@
  */
 #include "backends.h"
 #include "test_gles_scenes.h"
+#include "gl_test.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -115,10 +116,8 @@ int main(int argc, char **argv)
     hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES, .context = context, .gl_profile = profile};
     hfs_renderer *r = NULL;
     hfs_error err;
-    if (hfs_renderer_create(&d, &r, &err)) {
-        fprintf(stderr, "gles_bench: %s\n", err.msg);
-        return 77;
-    }
+    if (hfs_renderer_create(&d, &r, &err))
+        gl_test_unavailable("gles_bench", &err);
     hfs_image img = {0};
     if (hfs_image_alloc(&img, s.f.width, s.f.height, &err))
         return 1;

@@ -13,14 +13,14 @@
  *       output is non-finite.
  *   dem      the 96x96 DEM crop (dx 83, zscale 2: world units far from 1),
  *       three lights placed from the crop's height range, fp16, vs the CPU
- *       (the equal bound 1e-3 / 1e-2).
+ *       (bounds 1.5e-6 / 1.3e-2, ~10x the measurement).
  *   mixed    cones, 3 local lights + the test sky + the key light
  *       (scene_lighting), fp16, subsample 1 and 2 against the CPU.
  *   flat     a flat plane: one light high above (the whole cap above the
  *       horizon, E = pi sin^2(alpha) cos(beta), nothing occludes) equals the
- *       analytic value within the fp16 bound (relative 1e-4 of the max); a
+ *       analytic value within 2.3e-6 of the max (10x the measurement); a
  *       light sunk into the plane gives rho Le exactly at the receivers
- *       inside the sphere.
+ *       inside the sphere (within 1.2e-6 relative).
  *   sub      local-light visibility is sub-sampled like the environment's:
  *       at subsample 2 and 4 the local pass fetches ~1/sub^2 of subsample
  *       1's (timing level 2), texels on grid points equal subsample 1 bit
@@ -32,11 +32,12 @@
  *   equal ... wedge  (optional 9th argument) the same on the SN08 wedge-table
  *       path (full local swath, the interior table of 2 pi / nphi_local).
  *
- * No GLES context here: exit 77.
+ * No GLES context of any kind: exit 77 (gl_test.h).
  */
 #include "backends.h"
 #include "terrain_gen.h"
 #include "test_gles_scenes.h"
+#include "gl_test.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -44,8 +45,10 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
-#define SKIP 77
 #define SIZE 128
+/* Sunk light: receivers inside the sphere get rho Le; measured exactly
+ * (0), on every llvmpipe variant: bound 10 float ulps. */
+#define SUNK_REL 1.2e-6
 
 #ifndef HFS_DATA_DIR
 #define HFS_DATA_DIR "data"
@@ -121,17 +124,11 @@ static hfs_quality quality(const char *prec, int sub, int full)
     return q;
 }
 
+/* The product's renderer, or exits by gl_test.h's rule (77 only when no
+ * GLES context of any kind can be made here). */
 static hfs_renderer *gles_or_skip(void)
 {
-    hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES};
-    hfs_renderer *r = NULL;
-    hfs_error err;
-    int rc = hfs_renderer_create(&d, &r, &err);
-    if (rc) {
-        printf("SKIP: no GLES renderer here: %s\n", err.msg);
-        exit(SKIP);
-    }
-    return r;
+    return gl_test_gles();
 }
 
 static int render_with(hfs_backend backend, hfs_renderer *r, const hfs_field *f,
@@ -231,9 +228,11 @@ static int mode_dem(void)
     if (!render_with(HFS_BACKEND_GLES, r, &s.f, &l, &q, &g) &&
         !render_with(HFS_BACKEND_CPU, NULL, &s.f, &l, &q, &c)) {
         hfs_metrics m = compare(&s.f, &l, &q, &g, &c);
-        printf("dem, 3 lights (z %.0f..%.0f): mean %.3e max %.3e (bounds 1e-3 1e-2)\n", zlo, zhi,
-               m.mean_abs, m.max_abs);
-        CHECK(m.nonfinite == 0 && m.mean_abs <= 1e-3 && m.max_abs <= 1e-2, "dem out of bounds");
+        /* measured 1.51e-7 / 1.26e-3 (llvmpipe, every build and variant;
+         * the max is one texel): ~10x */
+        printf("dem, 3 lights (z %.0f..%.0f): mean %.3e max %.3e (bounds 1.5e-6 1.3e-2)\n", zlo,
+               zhi, m.mean_abs, m.max_abs);
+        CHECK(m.nonfinite == 0 && m.mean_abs <= 1.5e-6 && m.max_abs <= 1.3e-2, "dem out of bounds");
     }
     hfs_image_free(&g);
     hfs_image_free(&c);
@@ -257,9 +256,12 @@ static int mode_mixed(void)
         if (!render_with(HFS_BACKEND_GLES, r, &s.f, &l, &q, &g) &&
             !render_with(HFS_BACKEND_CPU, NULL, &s.f, &l, &q, &c)) {
             hfs_metrics m = compare(&s.f, &l, &q, &g, &c);
-            /* sub 1: the fp16 bound of the other GLES tests; sub 2: the
-             * env/key sub-sampling envelope of cones (tests/gles.cmake). */
-            const double bmean = sub == 1 ? 1e-4 : 2e-3, bmax = sub == 1 ? 1e-3 : 0.2;
+            /* sub 1: measured 2.23e-6 / 1.95e-5, bound ~10x; sub 2 (vs the
+             * full-resolution CPU: the interpolation error, the same to 4
+             * digits in every build and llvmpipe variant): measured 4.83e-4
+             * / 2.56e-2, bound the measurement + 20%, as the env/key
+             * sub-sampling tests (tests/gles.cmake). */
+            const double bmean = sub == 1 ? 2.2e-5 : 5.8e-4, bmax = sub == 1 ? 2e-4 : 3.1e-2;
             printf("mixed sub %d: mean %.3e max %.3e (bounds %.1e %.1e)\n", sub, m.mean_abs,
                    m.max_abs, bmean, bmax);
             CHECK(m.nonfinite == 0, "non-finite outputs");
@@ -299,14 +301,16 @@ static int mode_flat(void)
                 for (int c = 0; c < 3; ++c)
                     worst = fmax(worst, fabs(g.rgb[3 * ((size_t)j * n + i) + c] - want));
             }
-        printf("flat, light above: max |gles - analytic| %.3e of max %.4g (bound 1e-4 rel)\n",
+        /* measured 1.83e-7 of 0.8 (2.3e-7 relative), every variant: 10x */
+        printf("flat, light above: max |gles - analytic| %.3e of max %.4g (bound 2.3e-6 rel)\n",
                worst, vmax);
-        CHECK(worst <= 1e-4 * vmax, "flat: %.3e > 1e-4 * %.4g", worst, vmax);
+        CHECK(worst <= 2.3e-6 * vmax, "flat: %.3e > 2.3e-6 * %.4g", worst, vmax);
     }
     /* Sunk light: receivers within the sphere get rho Le (E = pi). */
     static const double sunk[1][5] = {{8, 8, 0, 3, 10}};
     local_set(&l, sunk, 1);
     int inside = 0, bad = 0;
+    double worst_in = 0.0;
     hfs_image c = {0};
     if (!render_with(HFS_BACKEND_GLES, r, &fb.f, &l, &q, &g) &&
         !render_with(HFS_BACKEND_CPU, NULL, &fb.f, &l, &q, &c)) {
@@ -316,14 +320,20 @@ static int mode_flat(void)
                 if (dx * dx + dy * dy + dz * dz > 8.5) /* clear of the surface (r^2 = 9) */
                     continue;
                 ++inside;
-                for (int ch = 0; ch < 3; ++ch)
-                    bad += fabs(g.rgb[3 * ((size_t)j * n + i) + ch] - rho * 10.0) > 1e-4 * rho * 10.0;
+                for (int ch = 0; ch < 3; ++ch) {
+                    const double e = fabs(g.rgb[3 * ((size_t)j * n + i) + ch] - rho * 10.0);
+                    worst_in = fmax(worst_in, e / (rho * 10.0));
+                    bad += e > SUNK_REL * rho * 10.0;
+                }
             }
         hfs_metrics m = compare(&fb.f, &l, &q, &g, &c);
-        printf("flat, sunk light: %d receivers inside, %d channels off rho Le; vs cpu mean %.3e "
-               "max %.3e\n", inside, bad, m.mean_abs, m.max_abs);
+        printf("flat, sunk light: %d receivers inside, %d channels off rho Le (largest relative "
+               "difference %.3e, bound %.1e); vs cpu mean %.3e max %.3e\n", inside, bad, worst_in,
+               SUNK_REL, m.mean_abs, m.max_abs);
         CHECK(inside > 0 && bad == 0, "sunk light: %d of %d", bad, inside);
-        CHECK(m.mean_abs <= 1e-4 && m.max_abs <= 1e-3, "sunk light vs cpu");
+        /* measured 1.20e-7 / 1.07e-6: 10x */
+        CHECK(m.mean_abs <= 1.2e-6 && m.max_abs <= 1.1e-5, "sunk light vs cpu: mean %.3e max %.3e",
+              m.mean_abs, m.max_abs);
     }
     hfs_image_free(&c);
     hfs_image_free(&g);

@@ -11,7 +11,7 @@
  *   - the converged image equals a from-scratch frame bit for bit;
  *   - a change of heights runs everything in its own frame (nothing waits).
  *   test_plan_amortize [EDITS] [SEED]      (defaults 300 1)
- * No GLES context: exit 77.
+ * No GLES context of any kind: exit 77 (gl_test.h).
  */
 #include "hfshade.h"
 #include "terrain_gen.h"
@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "gl_test.h"
 #include "plan_scene.h"
 
 #define N 24
@@ -50,14 +51,8 @@ int main(int argc, char **argv)
 {
     const int edits = argc > 1 ? atoi(argv[1]) : 300;
     seed = argc > 2 ? (unsigned)atoi(argv[2]) : 1u;
-    hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES};
-    hfs_renderer *am = NULL, *fresh = NULL;
     hfs_error err;
-    if (hfs_renderer_create(&d, &am, &err) || hfs_renderer_create(&d, &fresh, &err)) {
-        printf("SKIP: no GLES renderer here: %s\n", err.msg);
-        hfs_renderer_destroy(am);
-        return 77;
-    }
+    hfs_renderer *am = gl_test_gles(), *fresh = gl_test_gles();
     CHECK(hfs_renderer_set_amortize(am, -1) == HFS_E_INVALID, "negative budget accepted");
     hfs_renderer_set_amortize(am, 1);
     float z[N * N];

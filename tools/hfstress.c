@@ -26,6 +26,9 @@
  * One line per case and backend: PASS/FAIL, the measured numbers and
  * [their bounds] ("!" marks the one that failed); a summary; exit 1 on any
  * failure, 77 when nothing could run (no backend available), 2 on usage.
+ * A GLES backend that cannot be made counts as a failure unless no GLES
+ * context of any kind can be made here (board/gl_require.h; HFS_REQUIRE_GL=1
+ * makes that a failure too) or, for the es32 ones, the driver is below 3.2.
  * --fast is the CI subset (ctest label "stress").
  */
 #include "hfstress.h"
@@ -249,7 +252,9 @@ static int runs(runner *rn, const stress_case *c, int b)
         return 0;
     if (!stress_backend_ready(&rn->bk, b)) {
         if (!rn->reported[b]) {
-            printf("SKIP backend %s: %s\n", stress_backend_name(b), rn->bk.why[b]);
+            printf("%s backend %s: %s\n", rn->bk.broken[b] ? "FAIL" : "SKIP",
+                   stress_backend_name(b), rn->bk.why[b]);
+            rn->fail += rn->bk.broken[b];
             rn->reported[b] = 1;
         }
         return 0;

@@ -5,6 +5,7 @@
  * instead of failing every case.
  */
 #include "hfstress.h"
+#include "gl_require.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -92,6 +93,21 @@ static int probe(stress_backends *s, int b, hfs_error *err)
     return rc;
 }
 
+/* Whether backend b's failure to be created is the machine's, not the
+ * product's (board/gl_require.h): no GLES context of any kind here, or a
+ * driver below ES 3.2 refusing the es32 profile with the capability layer's
+ * line.  Anything else counts as a failed check. */
+static int excused(int b, int rc, const hfs_error *err)
+{
+    if (defs[b].kind != HFS_BACKEND_GLES)
+        return 0;
+    if (defs[b].profile && !strcmp(defs[b].profile, "es32") && rc == HFS_E_UNSUPPORTED &&
+        strstr(err->msg, "profile es32: this driver offers"))
+        return 1;
+    hfs_error why = {""};
+    return hfs_gl_missing_device(&why);
+}
+
 int stress_backend_ready(stress_backends *s, int b)
 {
     if (s->state[b])
@@ -106,14 +122,17 @@ int stress_backend_ready(stress_backends *s, int b)
         return 0;
     } else {
         const hfs_renderer_desc d = {.backend = defs[b].kind, .gl_profile = defs[b].profile};
-        if (hfs_renderer_create(&d, &s->r[b], &err)) {
+        const int rc = hfs_renderer_create(&d, &s->r[b], &err);
+        if (rc) {
             snprintf(s->why[b], sizeof s->why[b], "%s", err.msg);
             s->state[b] = -1;
+            s->broken[b] = !excused(b, rc, &err);
             return 0;
         }
     }
     if (defs[b].kind == HFS_BACKEND_GLES && probe(s, b, &err)) {
         snprintf(s->why[b], sizeof s->why[b], "%s", err.msg);
+        s->broken[b] = 1; /* a context and a renderer, but not the 2x2 sky */
         if (sh < 0)
             hfs_renderer_destroy(s->r[b]);
         s->r[b] = NULL;

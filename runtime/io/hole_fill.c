@@ -7,7 +7,24 @@
  * Repeat to 1x1, which is valid as soon as any input texel is.
  * Pull: from the coarsest level down, every invalid texel of level L takes
  * the bilinear interpolation of level L+1 (already complete) at its own
- * centre, (x - 0.5)/2 in level-(L+1) texel units, clamped to the edge.
+ * position, clamped to the edge.  A level-(L+1) texel sits at the centre of
+ * its children: level-L coordinate 2X + 0.5, i.e. level-(L+1) coordinate
+ * (x - 0.5)/2 for level-L texel x.
+ *
+ * Odd sizes.  When W_L is odd, the last column of level L+1 has one child
+ * column, the last one (and likewise rows): that texel sits ON level-L
+ * column W_L - 1, not half a texel past the border, so the pull's last
+ * interval is 3/4 of a texel wide and level-L column W_L - 1 reads that
+ * texel alone (coarse_coord).  And when that lone child column is all
+ * holes (a missing border line), the texel takes the valid texels of the
+ * column beside it instead, as an even level's last block would
+ * (lone_fallback): otherwise it would be a hole too, with no sibling to
+ * fill it, at every odd level up, and the border line would be filled from
+ * a level far coarser than the hole (a 9-wide ramp 0..7 missing its last
+ * column got 4.625, now 7).  So every border behaves as the first row and
+ * column of any level do: a missing border line gets the next line's values
+ * (heights are never extrapolated: see below), interpolated along the border
+ * between level-(L+1) texel centres and clamped beyond the first and last.
  *
  * Invariants: valid input texels are never modified; every output value is a
  * convex combination of valid inputs (means of means, bilinear weights), so
@@ -26,37 +43,68 @@ typedef struct level {
     float *v;
 } level;
 
+static float at(const level *l, int x, int y)
+{
+    return l->v[(size_t)y * (size_t)l->w + (size_t)x];
+}
+
+/* Mean of the valid texels of fine[y0..y1][x0..x1], or NaN if none is. */
+static float block_mean(const level *fine, int x0, int x1, int y0, int y1)
+{
+    double sum = 0.0;
+    int count = 0;
+    for (int fy = y0; fy <= y1; ++fy)
+        for (int fx = x0; fx <= x1; ++fx) {
+            const float v = at(fine, fx, fy);
+            if (!isnan(v)) {
+                sum += v;
+                ++count;
+            }
+        }
+    return count ? (float)(sum / count) : NAN;
+}
+
+/* The lone border texel of an odd level (children: the last column and/or
+ * row alone) whose children are all holes: see "Odd sizes" above.  The
+ * lone corner (both) takes its row and column neighbours, or if both are
+ * holes its diagonal one: the texels an even level's corner block holds. */
+static float lone_fallback(const level *fine, int x0, int x1, int y0, int y1)
+{
+    const int lx = x1 == x0 && x0 > 0, ly = y1 == y0 && y0 > 0;
+    if (lx && ly) {
+        const float a = at(fine, x0 - 1, y0), b = at(fine, x0, y0 - 1);
+        if (isnan(a) && isnan(b))
+            return at(fine, x0 - 1, y0 - 1);
+        return isnan(a) ? b : isnan(b) ? a : (float)(0.5 * ((double)a + b));
+    }
+    if (lx)
+        return block_mean(fine, x0 - 1, x0 - 1, y0, y1);
+    if (ly)
+        return block_mean(fine, x0, x1, y0 - 1, y0 - 1);
+    return NAN;
+}
+
 static void push(const level *fine, level *coarse)
 {
     for (int y = 0; y < coarse->h; ++y) {
+        const int y0 = 2 * y, y1 = 2 * y + 1 < fine->h ? 2 * y + 1 : fine->h - 1;
         for (int x = 0; x < coarse->w; ++x) {
-            double sum = 0.0;
-            int count = 0;
-            for (int dy = 0; dy < 2; ++dy) {
-                int fy = 2 * y + dy;
-                if (fy >= fine->h)
-                    break;
-                for (int dx = 0; dx < 2; ++dx) {
-                    int fx = 2 * x + dx;
-                    float v;
-                    if (fx >= fine->w)
-                        break;
-                    v = fine->v[(size_t)fy * (size_t)fine->w + (size_t)fx];
-                    if (!isnan(v)) {
-                        sum += v;
-                        ++count;
-                    }
-                }
-            }
-            coarse->v[(size_t)y * (size_t)coarse->w + (size_t)x] =
-                count ? (float)(sum / count) : NAN;
+            const int x0 = 2 * x, x1 = 2 * x + 1 < fine->w ? 2 * x + 1 : fine->w - 1;
+            float v = block_mean(fine, x0, x1, y0, y1);
+            if (isnan(v))
+                v = lone_fallback(fine, x0, x1, y0, y1);
+            coarse->v[(size_t)y * (size_t)coarse->w + (size_t)x] = v;
         }
     }
 }
 
-/* Maps fine index i to a clamped coarse coordinate: integer part and weight. */
-static void coarse_coord(int i, int n_coarse, int *i0, int *i1, double *t)
+/* Maps fine index i to a clamped coarse coordinate: integer part and weight.
+ * Coarse texel k is centred at c = k, except the last one of an odd-sized
+ * fine level: its only child is fine n_fine - 1, at c = n_coarse - 1.25. */
+static void coarse_coord(int i, int n_fine, int n_coarse, int *i0, int *i1, double *t)
 {
+    const int last = n_coarse - 1;
+    const double c_last = (n_fine & 1) ? last - 0.25 : last;
     double c = (i - 0.5) * 0.5;
     int k;
 
@@ -65,15 +113,15 @@ static void coarse_coord(int i, int n_coarse, int *i0, int *i1, double *t)
         *t = 0.0;
         return;
     }
-    if (c >= n_coarse - 1) {
-        *i0 = *i1 = n_coarse - 1;
+    if (c >= c_last) {
+        *i0 = *i1 = last;
         *t = 0.0;
         return;
     }
     k = (int)c;
     *i0 = k;
     *i1 = k + 1;
-    *t = c - k;
+    *t = k + 1 == last ? (c - k) / (c_last - k) : c - k;
 }
 
 static void pull(level *fine, const level *coarse)
@@ -81,7 +129,7 @@ static void pull(level *fine, const level *coarse)
     for (int y = 0; y < fine->h; ++y) {
         int y0, y1;
         double ty;
-        coarse_coord(y, coarse->h, &y0, &y1, &ty);
+        coarse_coord(y, fine->h, coarse->h, &y0, &y1, &ty);
         for (int x = 0; x < fine->w; ++x) {
             float *dst = &fine->v[(size_t)y * (size_t)fine->w + (size_t)x];
             const float *r0, *r1;
@@ -89,7 +137,7 @@ static void pull(level *fine, const level *coarse)
             double tx, a, b;
             if (!isnan(*dst))
                 continue;
-            coarse_coord(x, coarse->w, &x0, &x1, &tx);
+            coarse_coord(x, fine->w, coarse->w, &x0, &x1, &tx);
             r0 = coarse->v + (size_t)y0 * (size_t)coarse->w;
             r1 = coarse->v + (size_t)y1 * (size_t)coarse->w;
             a = r0[x0] + (r0[x1] - (double)r0[x0]) * tx;

@@ -1,0 +1,53 @@
+/*
+ * gl_test.h — how a GL test gets its renderer or context, and the one rule
+ * for skipping (board/gl_require.h): exit 77 only when no GLES context of
+ * any kind can be made here; every other failure fails the test (exit 1),
+ * and with HFS_REQUIRE_GL=1 (CI) even that does.
+ *
+ * Header-only (static inline); link hfs_board.
+ */
+#ifndef HFS_TEST_GL_TEST_H
+#define HFS_TEST_GL_TEST_H
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "gl_require.h"
+#include "hfshade.h"
+
+#define GL_TEST_SKIP 77
+
+/* Something GL failed with err: exits 77 ("SKIP: ...") when that is because
+ * this machine has no GLES context at all, else 1 ("FAIL: ..."). */
+static inline _Noreturn void gl_test_unavailable(const char *what, const hfs_error *err)
+{
+    hfs_error why = {""};
+    if (hfs_gl_missing_device(&why)) {
+        printf("SKIP: %s: %s (%s)\n", what, err->msg, why.msg);
+        fflush(stdout);
+        exit(GL_TEST_SKIP);
+    }
+    printf("FAIL: %s: %s (%s)\n", what, err->msg, why.msg);
+    fprintf(stderr, "FAIL: %s: %s (%s)\n", what, err->msg, why.msg);
+    fflush(stdout);
+    exit(1);
+}
+
+/* A renderer for desc, or exits by the rule above. */
+static inline hfs_renderer *gl_test_renderer(const hfs_renderer_desc *desc)
+{
+    hfs_renderer *r = NULL;
+    hfs_error err = {""};
+    if (hfs_renderer_create(desc, &r, &err))
+        gl_test_unavailable("cannot create the GLES renderer", &err);
+    return r;
+}
+
+/* The product's renderer (GLES, default context and profile). */
+static inline hfs_renderer *gl_test_gles(void)
+{
+    const hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES};
+    return gl_test_renderer(&d);
+}
+
+#endif /* HFS_TEST_GL_TEST_H */
