@@ -364,13 +364,16 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
             continue;
         swath_job *job = &c.jobs[c.n_jobs++];
         job->vis_of = -1;
-        hfs_swath_key(k->phi, k->elev, k->alpha, q->nphi_key, q->nphi_env, &job->swath);
+        /* The swath and the visible fraction see at least HFS_MIN_VIS_ALPHA
+         * (lights.h), as on GLES; E_cap keeps alpha. */
+        const double a_vis = hfs_key_vis_alpha(k->alpha);
+        hfs_swath_key(k->phi, k->elev, a_vis, q->nphi_key, q->nphi_env, &job->swath);
         hfs_dir(k->phi, k->elev, job->dir);
         job->alpha = k->alpha;
         for (int ch = 0; ch < 3; ++ch)
             job->le[ch] = k->radiance[ch];
         double zh[HFS_ZH_N];
-        hfs_zh_cap(k->alpha, zh);
+        hfs_zh_cap(a_vis, zh);
         hfs_sh_rotate_zonal(zh, job->dir[0], job->dir[1], job->dir[2], job->l_sh);
         job->l_norm = norm16(job->l_sh);
         /* A full swath identical to the environment's reuses its reads. */

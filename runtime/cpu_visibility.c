@@ -4,6 +4,7 @@
  * wedges out and sums them.
  */
 #include "cpu_visibility.h"
+#include "lights.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -28,6 +29,7 @@ void hfs_swath_full(int n, hfs_swath *s)
 void hfs_swath_key(double phi, double elev, double alpha, int nphi_key,
                    int nphi_env, hfs_swath *s)
 {
+    alpha = hfs_key_vis_alpha(alpha); /* lights.h: the window must not collapse */
     const double ratio = sin(alpha) / cos(elev); /* cos(elev) >= 0; /0 -> inf */
     const double lo = elev - alpha, hi = elev + alpha;
     if (fabs(elev) + alpha >= HALF_PI || !(ratio < 1.0)) {
@@ -42,8 +44,10 @@ void hfs_swath_key(double phi, double elev, double alpha, int nphi_key,
          * while its elevation changes h a little (the frame planner keeps
          * them, gles_plan.h).  The swath is the run of lattice samples whose
          * wedges (+- d/2 about each) cover phi +- h: the spacing is within
-         * 1.25x of 2h / nphi_key, and the covering run has 0.8 nphi_key to
-         * nphi_key + 1 samples, about as many as centred ones. */
+         * 1.25x of 2h / nphi_key (1.5x at nphi_key = 1, where N = PI / h
+         * >= 2 can fall between the counts 2 and 3), and the covering run
+         * has 0.8 nphi_key to nphi_key + 1 samples, about as many as
+         * centred ones. */
         const double h = asin(ratio);
         const int n_req = nphi_key < 1 ? 1 : nphi_key;
         const double n_max = PI * n_req / h; /* circle / (2h / nphi_key) */

@@ -7,12 +7,15 @@
  *     n samples phi_j = phi0 + j*dphi, dphi = 2 pi/n; n wedges [phi_j, phi_j+1]
  *     (the last wraps to sample 0).
  *   Partial swath (key light at (phi_L, e_L), angular radius alpha):
- *     half-width h = asin(sin(alpha)/cos(e_L)), dphi = 2h/n,
- *     phi_j = phi_L - h + (j + 0.5) dphi; wedges in order:
- *       0        start boundary [phi_L - h, phi_0], width dphi/2, blocked at
- *                its outer end, sample 0 at its inner end;
+ *     half-width h = asin(sin(alpha)/cos(e_L)); the samples are the run of
+ *     a circle lattice, phi_j = phi0 + j*dphi with dphi = 2 pi / N and
+ *     phi0 = k0 dphi (hfs_swath_key), whose wedges +- dphi/2 cover
+ *     [phi_L - h, phi_L + h]; wedges in order:
+ *       0        start boundary [phi_0 - dphi/2, phi_0], width dphi/2,
+ *                blocked at its outer end, sample 0 at its inner end;
  *       1..n-1   interior [phi_{w-1}, phi_w];
- *       n        end boundary [phi_{n-1}, phi_L + h], sample n-1, then blocked.
+ *       n        end boundary [phi_{n-1}, phi_{n-1} + dphi/2], sample n-1,
+ *                then blocked.
  *   A key light needs the full swath when its disk covers the zenith OR the
  *   nadir, |e_L| + alpha >= pi/2 (exactly when sin(alpha)/cos(e_L) >= 1 and h
  *   would be undefined); it then uses max(nphi_key, nphi_env) samples from
@@ -75,13 +78,16 @@ typedef struct hfs_swath_wedge {
 /* Full swath of n samples starting at phi0 = 0. */
 void hfs_swath_full(int n, hfs_swath *s);
 
-/* Swath of a key light (phi, elev, alpha in radians; alpha in (0, pi/2)):
- * the full swath of max(nphi_key, nphi_env) samples where the disk covers
- * the zenith or the nadir; otherwise a partial swath covering the disk's
- * azimuths phi +- h (h = asin(sin alpha / cos elev)) with samples on a
- * lattice of the circle (spacing 2 pi / N >= 2h / nphi_key, N a round count
- * within 1.25x: 0.8 nphi_key to nphi_key + 1 samples), which a light moving
- * within the sampled swath keeps. */
+/* Swath of a key light (phi, elev, alpha in radians; alpha in [0, pi/2),
+ * lifted to HFS_MIN_VIS_ALPHA, lights.h, before anything else): the full
+ * swath of max(nphi_key, nphi_env) samples where the disk covers the zenith
+ * or the nadir; otherwise a partial swath covering the disk's azimuths
+ * phi +- h (h = asin(sin alpha / cos elev)) with samples on a lattice of the
+ * circle (spacing 2 pi / N >= 2h / nphi_key, N the largest round count
+ * 1..4, 4..7 x 2^k not finer: within 1.25x for nphi_key >= 2, 1.5x for
+ * nphi_key = 1; 0.8 nphi_key to nphi_key + 1 samples), which a light moving
+ * within the sampled swath keeps.  The window is [e - alpha, e + alpha]
+ * clamped to [-pi/2, pi/2]. */
 void hfs_swath_key(double phi, double elev, double alpha, int nphi_key,
                    int nphi_env, hfs_swath *s);
 

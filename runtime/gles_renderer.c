@@ -58,9 +58,6 @@ extern const char hfs_gles_sh_product_src[];
 #define DIRS_PER_KEY_PASS 8 /* 4 RGBA targets (ES 3.0's minimum) x 2 (hi, lo) pairs */
 
 #define LIGHTS_PER_LOCAL_PASS 8 /* 4 RGBA targets x 2 (hi, lo) ratio pairs */
-/* Smallest key-light radius the visibility sees (hfs_gles_render): 30 float
- * ulps of pi/2, so that e - alpha < e + alpha at every elevation. */
-#define GLES_MIN_KEY_ALPHA 1e-6
 
 enum pass_id { P_UPLOAD, P_NORMALS, P_DECIMATE, P_RECON, P_ENV, P_KEY, P_LOCAL, P_TRANSFER,
                P_KFACTOR, P_SHADE, P_READBACK, P_COUNT };
@@ -1867,8 +1864,9 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
          * float: below ~1e-7 rad they collapse (a 1e-8 rad sun came out
          * black on an open plane).  A disk that small is a point at any
          * terrain scale: its fraction is taken from a disk of
-         * GLES_MIN_KEY_ALPHA about the same centre; E_cap keeps alpha. */
-        const double a_vis = fmax(k->alpha, GLES_MIN_KEY_ALPHA);
+         * HFS_MIN_VIS_ALPHA (lights.h) about the same centre; E_cap keeps
+         * alpha. */
+        const double a_vis = hfs_key_vis_alpha(k->alpha);
         hfs_swath_key(k->phi, k->elev, a_vis, q->nphi_key, q->nphi_env, &fk->k.swath);
         hfs_dir(k->phi, k->elev, fk->k.dir);
         fk->k.alpha = k->alpha;

@@ -5,6 +5,11 @@
 
 #include <math.h>
 
+double hfs_key_vis_alpha(double alpha)
+{
+    return alpha > HFS_MIN_VIS_ALPHA ? alpha : HFS_MIN_VIS_ALPHA;
+}
+
 double hfs_cap_irradiance(double cos_beta, double alpha)
 {
     const double pi = 3.14159265358979323846;

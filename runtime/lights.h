@@ -21,6 +21,20 @@ double hfs_cap_irradiance(double cos_beta, double alpha);
  * their output is 0 in any case. */
 int hfs_key_light_contributes(const hfs_key_light *k, double albedo);
 
+/* Smallest disk radius the visibility of a key light sees, in radians: 30
+ * float ulps of pi/2, so that the elevation window e - alpha < e + alpha and
+ * the swath's half-width stay apart at every elevation on the fp16/fp32 GLES
+ * path and in the double CPU reference alike (below ~ulp(elev)/2 the window
+ * collapses to a point and a 1e-8 rad sun would come out black).  A disk
+ * that small is a point at any terrain scale: its visible FRACTION is taken
+ * from a disk of this radius about the same centre, while its irradiance
+ * (hfs_cap_irradiance) keeps the true alpha.  Every backend uses it. */
+#define HFS_MIN_VIS_ALPHA 1e-6
+
+/* max(alpha, HFS_MIN_VIS_ALPHA): the radius a key light's swath and
+ * visible-fraction projection use. */
+double hfs_key_vis_alpha(double alpha);
+
 /* A local light seen from receiver point p (world units): unit direction
  * toward its centre, distance to the centre, and the cap half-angle
  * asin(r/d) (pi when p is inside or on the sphere, in which case dir is +z

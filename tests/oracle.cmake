@@ -7,19 +7,17 @@
 #   test_swath_oracle        hfs_swath_key / hfs_swath_full and the GLES swath
 #                            and key blocks (gles_setup.c) against the closed
 #                            form of DESIGN.md "Azimuth swaths" ("unit")
-#   test_swath_oracle_known_*
-#                            documented swath behaviour the code misses today
-#                            (see test_swath_oracle.c): nphi_key = 1 spacing,
-#                            spacing below ~1e-15 (tiny alpha), a sun below ulp(elev)/2 black
-#                            on the CPU backend.  WILL_FAIL while each issue
-#                            stands: when one starts "failing", it was fixed:
-#                            drop its WILL_FAIL.
+#   test_swath_oracle_{nk1,tiny_alpha,black_sun}
+#                            the defects it found, one mode each (see
+#                            test_swath_oracle.c): nphi_key = 1 spacing,
+#                            tiny alpha off the lattice, a sun below
+#                            ulp(elev)/2 black on the CPU backend.
 hfs_add_test(test_swath_oracle LABEL unit TIMEOUT 120
              SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_swath_oracle.c LIBS hfshade_lib hfs_gles m)
 foreach(issue nk1 tiny-alpha black-sun)
   string(REPLACE "-" "_" t ${issue})
-  add_test(NAME test_swath_oracle_known_${t} COMMAND test_swath_oracle known-${issue})
-  set_tests_properties(test_swath_oracle_known_${t} PROPERTIES LABELS unit WILL_FAIL TRUE TIMEOUT 60)
+  add_test(NAME test_swath_oracle_${t} COMMAND test_swath_oracle ${issue})
+  set_tests_properties(test_swath_oracle_${t} PROPERTIES LABELS unit TIMEOUT 60)
 endforeach()
 #   test_sh_oracle           SH basis, z-rotation, clamped cosine and the
 #                            renderer's env_rotate against SPEC's table written

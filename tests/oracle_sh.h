@@ -3,7 +3,7 @@
  * (test_sh_oracle.c, test_sh_glsl_gpu.c), independent of runtime/sh*.c:
  *   the 16 polynomials of SPEC's table with constants from the
  *   normalization formula (oracle_sh_init fills them; test_sh_oracle checks
- *   them against SPEC's printed 6 digits), a Gauss-Legendre rule, and the
+ *   them against SPEC's printed 6 digits), and the
  *   exit radiance of an unoccluded receiver with normal n under a rotated
  *   SH environment by exact quadrature.
  * Everything is static inline: each test takes what it uses.
@@ -13,6 +13,8 @@
 
 #include <math.h>
 #include <stdlib.h>
+
+#include "test_sh_util.h" /* ref_legendre, ref_gauss */
 
 #define ORACLE_PI 3.14159265358979323846
 
@@ -95,35 +97,6 @@ static inline double oracle_f(const double c[16], double x, double y, double z)
     return s;
 }
 
-/* Legendre P_n(t) and Gauss-Legendre nodes/weights on [a, b] (n <= 32). */
-static inline double oracle_legendre(int n, double t)
-{
-    double p0 = 1, p1 = t;
-    if (n == 0)
-        return 1;
-    for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k;
-        p0 = p1, p1 = p2;
-    }
-    return p1;
-}
-static inline void oracle_gauss(int n, double a, double b, double *x, double *w)
-{
-    for (int i = 0; i < n; ++i) {
-        double t = cos(ORACLE_PI * (i + 0.75) / (n + 0.5)), d = 1;
-        for (int it = 0; it < 100; ++it) {
-            d = n * (oracle_legendre(n - 1, t) - t * oracle_legendre(n, t)) / (1 - t * t);
-            const double dt = oracle_legendre(n, t) / d;
-            t -= dt;
-            if (fabs(dt) < 1e-16)
-                break;
-        }
-        d = n * (oracle_legendre(n - 1, t) - t * oracle_legendre(n, t)) / (1 - t * t);
-        x[i] = 0.5 * (a + b) + 0.5 * (b - a) * t;
-        w[i] = (b - a) / ((1 - t * t) * d * d);
-    }
-}
-
 /* Lo = (1/pi) integral over the hemisphere about unit n of L(R_z(-a) s) (n.s),
  * L = sum c_k y_k (SPEC: the environment rotated about +z by a): u = n.s by
  * Gauss (8 nodes), the azimuth about n uniform (16): exact for the cubic L
@@ -142,7 +115,7 @@ static inline double oracle_lo_unoccluded(const double c[16], double a, const do
     t2[1] = n[2] * t1[0] - n[0] * t1[2];
     t2[2] = n[0] * t1[1] - n[1] * t1[0];
     double ux[8], uw[8], sum = 0.0;
-    oracle_gauss(8, 0, 1, ux, uw);
+    ref_gauss(8, 0, 1, ux, uw);
     const double ca = cos(a), sa = sin(a);
     for (int i = 0; i < 8; ++i)
         for (int j = 0; j < 16; ++j) {

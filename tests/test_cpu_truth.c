@@ -62,17 +62,7 @@
 #define PI 3.14159265358979323846
 #define DEG (PI / 180.0)
 
-static int failures;
-
-#define CHECK(cond, ...)                                                        \
-    do {                                                                        \
-        if (!(cond)) {                                                          \
-            fprintf(stderr, "%s:%d: FAIL: ", __FILE__, __LINE__);               \
-            fprintf(stderr, __VA_ARGS__);                                       \
-            fputc('\n', stderr);                                                \
-            failures++;                                                         \
-        }                                                                       \
-    } while (0)
+#include "check.h"
 
 /* ---- scenes --------------------------------------------------------------------- */
 

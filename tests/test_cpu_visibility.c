@@ -223,9 +223,11 @@ static void test_swaths(void)
     CHECK(s.full && s.n == 16, "nadir-covering key light: full=%d n=%d", s.full, s.n);
     hfs_swath_key(0.3, -HALF_PI, 0.2, 3, 16, &s);
     CHECK(s.full && s.n == 16 && isfinite(s.dphi), "key light at the nadir");
-    /* Tiny alpha: a tiny but valid swath. */
+    /* Tiny alpha: the swath of a disk of HFS_MIN_VIS_ALPHA (lights.h):
+     * h ~ 1.005e-6 at elev 0.1, 2h/3 <= dphi <= 1.25 * 2h/3. */
     hfs_swath_key(2.0, 0.1, 1e-9, 3, 32, &s);
-    CHECK(!s.full && s.dphi > 0.0 && s.dphi < 1e-8 && isfinite(s.phi0), "tiny alpha swath");
+    CHECK(!s.full && s.dphi >= 6.6e-7 && s.dphi < 8.4e-7 && isfinite(s.phi0) && s.elev_lo == 0.1 - 1e-6,
+          "tiny alpha swath: dphi %g, window from %.17g", s.dphi, s.elev_lo);
 }
 
 static void test_constant_full(void)

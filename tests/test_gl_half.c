@@ -12,19 +12,8 @@
 #include <math.h>
 #include <stdio.h>
 
-static int failures;
-
-#define CHECK(cond, ...)                                                        \
-    do {                                                                        \
-        if (!(cond)) {                                                          \
-            if (failures < 20) {                                                \
-                fprintf(stderr, "%s:%d: FAIL: ", __FILE__, __LINE__);           \
-                fprintf(stderr, __VA_ARGS__);                                   \
-                fputc('\n', stderr);                                            \
-            }                                                                   \
-            failures++;                                                         \
-        }                                                                       \
-    } while (0)
+#define CHECK_MAX_MESSAGES 20
+#include "check.h"
 
 static double half_formula(unsigned h)
 {

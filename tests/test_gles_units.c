@@ -30,19 +30,8 @@
 
 #define PI 3.14159265358979323846
 
-static int failures;
-
-#define CHECK(cond, ...)                                                        \
-    do {                                                                        \
-        if (!(cond)) {                                                          \
-            if (failures < 30) {                                                \
-                fprintf(stderr, "%s:%d: FAIL: ", __FILE__, __LINE__);           \
-                fprintf(stderr, __VA_ARGS__);                                   \
-                fputc('\n', stderr);                                            \
-            }                                                                   \
-            failures++;                                                         \
-        }                                                                       \
-    } while (0)
+#define CHECK_MAX_MESSAGES 30
+#include "check.h"
 
 static hfs_gl_driver llvmpipe_like(void)
 {

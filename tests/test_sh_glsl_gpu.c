@@ -42,14 +42,8 @@ extern const char hfs_gles_sh_product_src[]; /* runtime/gles.cmake (hfs_gles) */
 
 #define NP 16 /* pairs per draw */
 
-static uint64_t rng_state = 0x853c49e6748fea9bull;
-static double urand(void)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * 0x1p-53;
-}
+#define TEST_RNG_SEED 0x853c49e6748fea9bull
+#include "test_rng.h"
 
 static const char *frag_main =
     "uniform vec4 u_a[4 * " "16" "];\n"
@@ -240,7 +234,7 @@ static void check_products(gpu_product *g)
      * generated from the library's basis */
     {
         double zx[8], zw[8], T[16][16][16] = {{{0}}};
-        oracle_gauss(8, -1, 1, zx, zw);
+        ref_gauss(8, -1, 1, zx, zw);
         for (int ia = 0; ia < 8; ++ia)
             for (int ib = 0; ib < 20; ++ib) {
                 const double ph = 2 * ORACLE_PI * (ib + 0.5) / 20, q = sqrt(1 - zx[ia] * zx[ia]);

@@ -41,29 +41,11 @@
 
 #define PI 3.14159265358979323846
 
-static int failures;
+#define CHECK_MAX_MESSAGES 25
+#include "check.h"
+#define TEST_RNG_SEED 0x2545f4914f6cdd1dull
+#include "test_rng.h"
 
-#define CHECK(cond, ...)                                                        \
-    do {                                                                        \
-        if (!(cond)) {                                                          \
-            if (failures < 25) {                                                \
-                fprintf(stderr, "%s:%d: FAIL: ", __FILE__, __LINE__);           \
-                fprintf(stderr, __VA_ARGS__);                                   \
-                fputc('\n', stderr);                                            \
-            }                                                                   \
-            failures++;                                                         \
-        }                                                                       \
-    } while (0)
-
-static uint64_t rng_state = 0x2545f4914f6cdd1dull;
-static double urand(void)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * 0x1p-53;
-}
-static double uni(double a, double b) { return a + (b - a) * urand(); }
 
 static void random_dir(double s[3])
 {
@@ -86,7 +68,7 @@ static void check_basis(void)
     /* orthonormality by exact quadrature (degree 6: 8 Gauss nodes in z, 16 phi) */
     enum { NZ = 8, NP = 16 };
     double zx[NZ], zw[NZ];
-    oracle_gauss(NZ, -1, 1, zx, zw);
+    ref_gauss(NZ, -1, 1, zx, zw);
     double G[16][16] = {{0}};
     for (int a = 0; a < NZ; ++a)
         for (int b = 0; b < NP; ++b) {
@@ -210,7 +192,7 @@ static void check_zonal(void)
     const double exact[4] = {sqrt(PI) / 2, sqrt(PI / 3), sqrt(5 * PI) / 8, 0.0};
     /* quadrature: zh_l = integral max(0, z) y_l0(s) ds = 2 pi int_0^1 z y_l0(z) dz */
     double xq[8], wq[8], quad[4] = {0};
-    oracle_gauss(8, 0, 1, xq, wq);
+    ref_gauss(8, 0, 1, xq, wq);
     for (int i = 0; i < 8; ++i) {
         const double q = sqrt(1 - xq[i] * xq[i]);
         double y[16];

@@ -6,3 +6,6 @@ hfs_add_test(test_truth_render SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_re
 # Timing of the ground truth (not a test): see the header of bench_truth.c.
 add_executable(bench_truth ${CMAKE_CURRENT_SOURCE_DIR}/bench_truth.c)
 target_link_libraries(bench_truth PRIVATE hfs_truth)
+# SPEC error metrics (runtime/metrics.c) on hand-worked distributions.
+hfs_add_test(test_metrics SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_metrics.c
+             LIBS hfshade_lib m LABEL unit TIMEOUT 30)
