@@ -13,6 +13,7 @@
  * sense for it, min < max) when the section ends, at the line of the key
  * concerned.  The first error wins and parsing stops there.
  */
+#include "file_input.h"
 #include "input_config.h"
 
 #include <ini.h>
@@ -570,30 +571,7 @@ static char *read_line(char *str, int num, void *stream)
 
 static int read_text(const char *path, char **out, hfs_error *err)
 {
-    struct stat st;
-    if (stat(path, &st) != 0)
-        return hfs_fail(err, HFS_E_IO, "%s: cannot open input configuration", path);
-    if (!S_ISREG(st.st_mode))
-        return hfs_fail(err, HFS_E_IO, "%s: not a regular file", path);
-    if (st.st_size > CONFIG_FILE_MAX)
-        return hfs_fail(err, HFS_E_FORMAT, "%s: larger than %d bytes", path, CONFIG_FILE_MAX);
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return hfs_fail(err, HFS_E_IO, "%s: cannot open input configuration", path);
-    char *text = malloc((size_t)st.st_size + 1);
-    if (!text) {
-        fclose(f);
-        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", path);
-    }
-    const size_t n = fread(text, 1, (size_t)st.st_size, f);
-    fclose(f);
-    text[n] = '\0';
-    if (memchr(text, '\0', n)) {
-        free(text);
-        return hfs_fail(err, HFS_E_FORMAT, "%s: binary data in input configuration", path);
-    }
-    *out = text;
-    return HFS_OK;
+    return hfs_read_text_file(path, "input configuration", CONFIG_FILE_MAX, out, NULL, err);
 }
 
 int hfs_input_config_load(const char *path, hfs_input_config *cfg, hfs_error *err)

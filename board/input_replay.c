@@ -6,6 +6,7 @@
  * checked by their characters before strtod/strtol see them: strtod would
  * otherwise accept "inf", "nan" and "0x1p3", and strtol leading blanks.
  */
+#include "file_input.h"
 #include "input_replay.h"
 
 #include <errno.h>
@@ -241,31 +242,7 @@ static int parse_text(replay *r, char *text, size_t size, const char *path, int6
 
 static int read_text(const char *path, char **text, size_t *size, hfs_error *err)
 {
-    struct stat st;
-    if (stat(path, &st) != 0)
-        return hfs_fail(err, HFS_E_IO, "%s: cannot open replay file", path);
-    if (!S_ISREG(st.st_mode))
-        return hfs_fail(err, HFS_E_IO, "%s: not a regular file", path);
-    if (st.st_size > REPLAY_FILE_MAX)
-        return hfs_fail(err, HFS_E_FORMAT, "%s: larger than %d bytes", path, REPLAY_FILE_MAX);
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return hfs_fail(err, HFS_E_IO, "%s: cannot open replay file", path);
-    char *buf = malloc((size_t)st.st_size + 1);
-    if (!buf) {
-        fclose(f);
-        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", path);
-    }
-    const size_t n = fread(buf, 1, (size_t)st.st_size, f);
-    fclose(f);
-    buf[n] = '\0';
-    if (memchr(buf, '\0', n)) {
-        free(buf);
-        return hfs_fail(err, HFS_E_FORMAT, "%s: binary data in replay file", path);
-    }
-    *text = buf;
-    *size = n;
-    return HFS_OK;
+    return hfs_read_text_file(path, "replay file", REPLAY_FILE_MAX, text, size, err);
 }
 
 int hfs_replay_source_create(const char *path, int64_t start_ns, hfs_input_source **out,

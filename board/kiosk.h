@@ -116,6 +116,14 @@ int kiosk_frame_init(kiosk_frame *f, const hfs_scene *scene, double exposure, hf
 int kiosk_frame_renderer_for(const kiosk_frame *f, const hfs_scene *scene, hfs_renderer **out,
                              hfs_error *err);
 void kiosk_frame_adopt(kiosk_frame *f, hfs_renderer *r, const hfs_scene *scene);
+/* The admission check of a scene: one whole frame of it (no amortizing)
+ * rendered with r into a scratch image; the display is not touched.  r NULL:
+ * a renderer made for the scene (--check) and destroyed again.  A scene
+ * that passes loads, checks, AND renders here; a failure leaves r usable
+ * (invalidated: its next frame redoes every pass).  r's amortization is
+ * set back to `amortize` afterwards. */
+int kiosk_frame_admit(hfs_renderer *r, int amortize, const hfs_scene *scene,
+                      const hfs_scene_inputs *in, hfs_error *err);
 void kiosk_frame_free(kiosk_frame *f);
 
 /* Renders in, makes the picture, draws the overlay when asked, presents it
@@ -136,7 +144,8 @@ void kiosk_stats_event(kiosk_stats *s, const hfs_input_event *ev, int changed,
                        const kiosk_frame *f, int shown);
 void kiosk_stats_reload(kiosk_stats *s, int ok);
 void kiosk_stats_flush(kiosk_stats *s);
-void kiosk_stats_close(kiosk_stats *s, int frames);  /* writes "exit" */
+/* Writes "exit"; -1 if any stats write failed (logged when it did). */
+int kiosk_stats_close(kiosk_stats *s, int frames);
 /* Process CPU time (user + system, all threads), microseconds. */
 int64_t kiosk_cpu_us(void);
 

@@ -54,6 +54,29 @@ void kiosk_frame_adopt(kiosk_frame *f, hfs_renderer *r, const hfs_scene *s)
     snprintf(f->context, sizeof f->context, "%s", s->context);
 }
 
+int kiosk_frame_admit(hfs_renderer *r, int amortize, const hfs_scene *s,
+                      const hfs_scene_inputs *in, hfs_error *err)
+{
+    hfs_renderer *own = NULL;
+    int rc = r ? HFS_OK : make_renderer(s, &own, err);
+    if (rc)
+        return rc;
+    hfs_renderer *use = r ? r : own;
+    hfs_image img = {0};
+    hfs_renderer_set_amortize(use, 0); /* the whole frame must work */
+    rc = hfs_image_alloc(&img, in->field.width, in->field.height, err);
+    if (!rc)
+        rc = hfs_renderer_render(use, &in->field, &in->lighting, &in->quality, &img, NULL, NULL,
+                                 err);
+    if (rc)
+        hfs_renderer_invalidate(use);
+    if (r)
+        hfs_renderer_set_amortize(r, amortize);
+    hfs_image_free(&img);
+    hfs_renderer_destroy(own);
+    return rc;
+}
+
 void kiosk_frame_free(kiosk_frame *f)
 {
     hfs_renderer_destroy(f->renderer);

@@ -225,6 +225,17 @@ static int reload(kiosk *k)
         reload_failed(k, &err);
         return 0;
     }
+    /* A scene that loads but that the renderer refuses (a limit of the
+     * device, a swath the GLES path cannot hold) must not be swapped in:
+     * its first frame is rendered here, off screen, before anything
+     * changes. */
+    if (kiosk_frame_admit(r ? r : k->frame.renderer, k->frame.amortize,
+                          &nw->scene, &nw->in, &err)) {
+        hfs_renderer_destroy(r);
+        kiosk_world_free(nw);
+        reload_failed(k, &err);
+        return 0;
+    }
     /* Last, because it cannot be undone cleanly: the old devices are closed
      * before the new ones open. */
     if (!same_wiring(&k->world->cfg, &nw->cfg)) {
@@ -293,6 +304,13 @@ int kiosk_run(kiosk *k)
     }
     int rc = 0;
     for (;;) {
+        /* Checked before waiting: a replay with no events (or whose last
+         * event was just shown) has nothing left to wake the poll. */
+        if (k->opt.exit_after_replay && k->replay && hfs_replay_source_finished(k->replay) == 1 &&
+            k->frame.deferred == 0) { /* amortizing: once the image has caught up */
+            kiosk_log(KIOSK_INFO, "replay finished, exiting");
+            break;
+        }
         struct pollfd fds[2 + HFS_INPUT_SET_MAX];
         int n = 0;
         fds[n++] = (struct pollfd){.fd = k->sigfd, .events = POLLIN};
@@ -333,11 +351,6 @@ int kiosk_run(kiosk *k)
         drain(k, &l->b);
         if (show_batch(k, l)) {
             rc = 1;
-            break;
-        }
-        if (k->opt.exit_after_replay && k->replay && hfs_replay_source_finished(k->replay) == 1 &&
-            k->frame.deferred == 0) { /* amortizing: once the image has caught up */
-            kiosk_log(KIOSK_INFO, "replay finished, exiting");
             break;
         }
     }

@@ -151,9 +151,10 @@ static int check_replay(const char *path, int *count, hfs_error *err)
     return HFS_OK;
 }
 
-static void teardown(kiosk *k)
+/* Returns -1 when the stats file could not be written in full. */
+static int teardown(kiosk *k)
 {
-    kiosk_stats_close(k->stats, k->frame.presented);
+    const int stats_rc = kiosk_stats_close(k->stats, k->frame.presented);
     hfs_input_source_destroy(k->replay);
     hfs_input_set_destroy(k->inputs);
     kiosk_frame_free(&k->frame);
@@ -161,6 +162,22 @@ static void teardown(kiosk *k)
     kiosk_world_free(k->world);
     if (k->sigfd >= 0)
         close(k->sigfd);
+    return stats_rc;
+}
+
+/* The stats file is the kiosk's one output: it must not be any of the
+ * files it reads (a typo such as --stats kiosk.ini would truncate it). */
+static int check_stats_path(const kiosk_opts *o, const hfs_scene *s, hfs_error *err)
+{
+    hfs_outputs *outs = NULL;
+    int rc = hfs_outputs_create(&outs, err);
+    const char *inputs[] = {o->scene_path, o->input_path, o->replay_path, s->height, s->env_map};
+    for (size_t i = 0; i < sizeof inputs / sizeof inputs[0] && !rc; ++i)
+        rc = hfs_outputs_input(outs, inputs[i], err);
+    if (!rc)
+        rc = hfs_outputs_add(outs, o->stats_path, err);
+    hfs_outputs_destroy(outs);
+    return rc;
 }
 
 static int start(kiosk *k)
@@ -178,6 +195,11 @@ static int start(kiosk *k)
         kiosk_log(KIOSK_INFO, "%s: filled %ld hole%s (nodata)", w->scene.height, w->in.hm.holes,
                   w->in.hm.holes == 1 ? "" : "s");
     if (o->check) {
+        /* The same admission check as a reload: one frame, off screen. */
+        if (kiosk_frame_admit(NULL, 0, &w->scene, &w->in, &err)) {
+            kiosk_log(KIOSK_ERR, "%s: %s", o->scene_path, err.msg);
+            return 1;
+        }
         printf("ok: scene %s (%dx%d, %d key, %d local light%s), input %s (%d controls), "
                "replay %s (%d events)\n",
                o->scene_path, w->in.field.width, w->in.field.height, w->scene.n_key,
@@ -186,7 +208,8 @@ static int start(kiosk *k)
                o->replay_path ? o->replay_path : "none", replay_events);
         return 0;
     }
-    if (o->stats_path && !(k->stats = kiosk_stats_open(o->stats_path, &err))) {
+    if (o->stats_path && (check_stats_path(o, &w->scene, &err) ||
+                          !(k->stats = kiosk_stats_open(o->stats_path, &err)))) {
         kiosk_log(KIOSK_ERR, "%s", err.msg);
         return 1;
     }
@@ -259,6 +282,7 @@ int main(int argc, char **argv)
     rc = start(&k);
     if (!rc && !k.opt.check)
         rc = kiosk_run(&k);
-    teardown(&k);
+    if (teardown(&k) && !rc)
+        rc = 1; /* the stats it was asked for are incomplete (logged) */
     return rc;
 }

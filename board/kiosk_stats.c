@@ -19,15 +19,38 @@
  * changed nothing were not shown by any frame: T_PRESENT_NS, LATENCY_NS and
  * FRAME are -1.  Lines are flushed per frame, so a reader sees whole
  * records while the kiosk runs.
+ *
+ * A write that fails (a full disk, /dev/full) is never ignored: the first
+ * failure is logged once with its reason, no further stats are written (the
+ * display keeps running: stats are a measurement, not the product), and the
+ * kiosk's exit status becomes 1 (kiosk_stats_close).
  */
 #include "kiosk.h"
 
+#include <errno.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/resource.h>
 
 struct kiosk_stats {
     FILE *f;
+    char *path;
+    int failed; /* a write failed: logged once, nothing more written */
 };
+
+/* Flushes and checks the stream; 0 while every write so far succeeded. */
+static int check(kiosk_stats *s)
+{
+    if (s->failed)
+        return -1;
+    if (fflush(s->f) != 0 || ferror(s->f)) {
+        kiosk_log(KIOSK_ERR, "%s: stats write failed: %s; no more stats are written", s->path,
+                  strerror(errno ? errno : EIO));
+        s->failed = 1;
+        return -1;
+    }
+    return 0;
+}
 
 int64_t kiosk_cpu_us(void)
 {
@@ -46,8 +69,12 @@ kiosk_stats *kiosk_stats_open(const char *path, hfs_error *err)
         return NULL;
     }
     s->f = fopen(path, "w");
-    if (!s->f) {
-        hfs_fail(err, HFS_E_IO, "%s: cannot write the stats file", path);
+    s->path = strdup(path);
+    if (!s->f || !s->path) {
+        hfs_fail(err, HFS_E_IO, "%s: cannot write the stats file: %s", path, strerror(errno));
+        if (s->f)
+            fclose(s->f);
+        free(s->path);
         free(s);
         return NULL;
     }
@@ -58,20 +85,25 @@ kiosk_stats *kiosk_stats_open(const char *path, hfs_error *err)
             "# event T_EVENT_NS T_PRESENT_NS LATENCY_NS FRAME CHANGED CONTROL\n"
             "# reload T_NS OK CPU_US\n"
             "# exit T_NS CPU_US FRAMES\n");
+    if (check(s)) {
+        hfs_fail(err, HFS_E_IO, "%s: cannot write the stats file", path);
+        kiosk_stats_close(s, 0);
+        return NULL;
+    }
     return s;
 }
 
 void kiosk_stats_start(kiosk_stats *s)
 {
-    if (!s)
+    if (!s || s->failed)
         return;
     fprintf(s->f, "start %lld %lld\n", (long long)hfs_input_now_ns(), (long long)kiosk_cpu_us());
-    fflush(s->f);
+    check(s);
 }
 
 void kiosk_stats_frame(kiosk_stats *s, const kiosk_frame *f, int events)
 {
-    if (!s)
+    if (!s || s->failed)
         return;
     fprintf(s->f, "frame %d %lld %.3f %d %d %d %lld\n", f->presented - 1,
             (long long)f->present_ns, f->render_ms, f->passes_ran, f->passes_total, events,
@@ -81,7 +113,7 @@ void kiosk_stats_frame(kiosk_stats *s, const kiosk_frame *f, int events)
 void kiosk_stats_event(kiosk_stats *s, const hfs_input_event *ev, int changed,
                        const kiosk_frame *f, int shown)
 {
-    if (!s)
+    if (!s || s->failed)
         return;
     const long long present = shown ? (long long)f->present_ns : -1;
     const long long latency = shown ? (long long)(f->present_ns - ev->t_ns) : -1;
@@ -91,25 +123,33 @@ void kiosk_stats_event(kiosk_stats *s, const hfs_input_event *ev, int changed,
 
 void kiosk_stats_reload(kiosk_stats *s, int ok)
 {
-    if (!s)
+    if (!s || s->failed)
         return;
     fprintf(s->f, "reload %lld %d %lld\n", (long long)hfs_input_now_ns(), ok,
             (long long)kiosk_cpu_us());
-    fflush(s->f);
+    check(s);
 }
 
-void kiosk_stats_close(kiosk_stats *s, int frames)
+int kiosk_stats_close(kiosk_stats *s, int frames)
 {
     if (!s)
-        return;
-    fprintf(s->f, "exit %lld %lld %d\n", (long long)hfs_input_now_ns(),
-            (long long)kiosk_cpu_us(), frames);
-    fclose(s->f);
+        return 0;
+    if (!s->failed)
+        fprintf(s->f, "exit %lld %lld %d\n", (long long)hfs_input_now_ns(),
+                (long long)kiosk_cpu_us(), frames);
+    check(s);
+    if (fclose(s->f) != 0 && !s->failed) {
+        kiosk_log(KIOSK_ERR, "%s: stats write failed: %s", s->path, strerror(errno));
+        s->failed = 1;
+    }
+    const int failed = s->failed;
+    free(s->path);
     free(s);
+    return failed ? -1 : 0;
 }
 
 void kiosk_stats_flush(kiosk_stats *s)
 {
     if (s)
-        fflush(s->f);
+        check(s);
 }

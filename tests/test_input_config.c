@@ -141,7 +141,7 @@ static const bad_case bad[] = {
     {"bad_too_many.ini", HFS_E_FORMAT, ":98: more than 32 controls"},
     {"bad_long_line.ini", HFS_E_FORMAT, ":4: line longer than 190 characters"},
     {"bad_empty.ini", HFS_E_FORMAT, ": no [knob NAME] or [button NAME] sections"},
-    {"missing.ini", HFS_E_IO, ": cannot open input configuration"},
+    {"missing.ini", HFS_E_IO, ": cannot open input configuration: No such file or directory"},
 };
 
 static void broken(void)

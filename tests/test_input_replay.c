@@ -98,7 +98,7 @@ static const bad_case bad[] = {
      "digits, '_', '-', '.')"},
     {"bad_replay_tokens.txt", HFS_E_FORMAT, ":2: unexpected '2' after the event"},
     {"bad_replay_long.txt", HFS_E_FORMAT, ":2: line longer than 255 characters"},
-    {"missing.txt", HFS_E_IO, ": cannot open replay file"},
+    {"missing.txt", HFS_E_IO, ": cannot open replay file: No such file or directory"},
 };
 
 static void broken(void)

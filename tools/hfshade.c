@@ -82,10 +82,42 @@ static void progress_bar(void *user, double fraction)
     fflush(stderr);
 }
 
+/* The flag name of argv[i] ("o" for -o, "pfm" for --pfm), or NULL. */
+static const char *flag_name(const char *a)
+{
+    if (a[0] != '-' || a[1] == '\0')
+        return NULL;
+    return a[1] == '-' ? a + 2 : a + 1;
+}
+
+/* A flag given twice is an error (like a repeated scene key): the last one
+ * silently winning hides a typo in a long command line. */
+static int check_repeats(int argc, char **argv, hfs_error *err)
+{
+    for (int i = 2; i < argc; ++i) {
+        const char *name = flag_name(argv[i]);
+        if (!name)
+            continue;
+        const int takes_value = strcmp(name, "quiet") && strcmp(name, "help") && strcmp(name, "h");
+        for (int j = 2; j < i; ++j) {
+            const char *prev = flag_name(argv[j]);
+            if (prev && !strcmp(prev, name))
+                return hfs_fail(err, HFS_E_INVALID, "%s: given twice (once is allowed)", argv[i]);
+            if (prev && strcmp(prev, "quiet") && strcmp(prev, "help") && strcmp(prev, "h"))
+                ++j; /* skip its value */
+        }
+        i += takes_value;
+    }
+    return HFS_OK;
+}
+
 /* Two passes over argv: the scene file first, then flags, so flags always
  * override the file whatever their position. */
 static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
 {
+    int rc = check_repeats(argc, argv, err);
+    if (rc)
+        return rc;
     for (int i = 2; i < argc; ++i) {
         const char *a = argv[i];
         if (a[0] == '-' && a[1] != '\0') {
@@ -104,11 +136,8 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
             c->positional[c->n_positional++] = a;
         }
     }
-    if (c->scene_file) {
-        int rc = hfs_scene_load_file(&c->scene, c->scene_file, err);
-        if (rc)
-            return rc;
-    }
+    if (c->scene_file && (rc = hfs_scene_load_file(&c->scene, c->scene_file, err)))
+        return rc;
     for (int i = 2; i < argc; ++i) {
         const char *a = argv[i];
         if (!(a[0] == '-' && a[1] != '\0'))
@@ -152,8 +181,7 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
                 return hfs_fail(err, HFS_E_INVALID, "%s: unknown flag (see 'hfshade keys')", a);
             char where[80];
             snprintf(where, sizeof where, "--%s", name);
-            int rc = hfs_scene_set(&c->scene, HFS_SOURCE_FLAG, name, v, where, NULL, err);
-            if (rc)
+            if ((rc = hfs_scene_set(&c->scene, HFS_SOURCE_FLAG, name, v, where, NULL, err)))
                 return rc;
         }
     }
@@ -245,6 +273,24 @@ static int time_frames(const cli *c, hfs_renderer *r, const scene_inputs *in, hf
     return rc;
 }
 
+/* The run's output set: every output checked against every input and the
+ * other output before anything is read or rendered. */
+static int plan_outputs(const cli *c, hfs_outputs **o, hfs_error *err)
+{
+    int rc = hfs_outputs_create(o, err);
+    if (!rc)
+        rc = hfs_outputs_input(*o, c->scene_file, err);
+    if (!rc)
+        rc = hfs_outputs_input(*o, c->scene.height, err);
+    if (!rc)
+        rc = hfs_outputs_input(*o, c->scene.env_map, err);
+    if (!rc && c->out_pfm)
+        rc = hfs_outputs_add(*o, c->out_pfm, err);
+    if (!rc && c->out_png)
+        rc = hfs_outputs_add(*o, c->out_png, err);
+    return rc;
+}
+
 static int cmd_render(const cli *c, hfs_error *err)
 {
     if (!c->out_png && !c->out_pfm)
@@ -252,11 +298,12 @@ static int cmd_render(const cli *c, hfs_error *err)
     if (c->n_positional)
         return hfs_fail(err, HFS_E_INVALID, "%s: unexpected argument", c->positional[0]);
 
-    scene_inputs in;
+    scene_inputs in = {0};
     hfs_renderer *r = NULL;
     hfs_image img = {0};
-    int rc = load_inputs(c, &in, err);
-    if (rc)
+    hfs_outputs *outs = NULL;
+    int rc = plan_outputs(c, &outs, err);
+    if (rc || (rc = load_inputs(c, &in, err)))
         goto out;
     hfs_renderer_desc desc = {.backend = c->scene.backend,
                               .context = c->scene.context[0] ? c->scene.context : NULL};
@@ -275,23 +322,25 @@ static int cmd_render(const cli *c, hfs_error *err)
     const double t1 = now_seconds();
     if (rc)
         goto out;
-    if (c->out_pfm && (rc = hfs_pfm_write(c->out_pfm, &img, 0, err)))
+    /* Both files are written to temporaries first and renamed together:
+     * a failure leaves neither, and removes nothing that was there. */
+    if (c->out_pfm && (rc = hfs_pfm_write_to(outs, c->out_pfm, &img, 0, err)))
         goto out;
     if (c->out_png) {
         hfs_png_opts po = {0};
         po.exposure = c->exposure; /* 0 = default 1 */
         if (c->colormap)
             apply_terrain_colormap(&img, &in.hm); /* after the PFM: display only */
-        if ((rc = hfs_png_write(c->out_png, &img, &po, err))) {
-            if (c->out_pfm)
-                remove(c->out_pfm); /* no partial output */
+        if ((rc = hfs_png_write_to(outs, c->out_png, &img, &po, err)))
             goto out;
-        }
     }
+    if ((rc = hfs_outputs_commit(outs, err)))
+        goto out;
     if (!c->quiet && !c->time_frames)
         fprintf(stderr, "%s: %dx%d, backend %s, %.3f s\n", c->out_png ? c->out_png : c->out_pfm,
                 in.field.width, in.field.height, hfs_renderer_backend_name(r), t1 - t0);
 out:
+    hfs_outputs_destroy(outs);
     hfs_image_free(&img);
     hfs_renderer_destroy(r);
     scene_inputs_free(&in);

@@ -268,13 +268,22 @@ int hfs_envmap_load(const char *path, hfs_envmap *out, hfs_error *err)
     if ((rc = hfs_rd_open(&rd, path, err)))
         return rc;
     n = hfs_rd_peek(&rd, 16, &p);
+    const int is_exr = n >= 4 && memcmp(p, "\x76\x2f\x31\x01", 4) == 0;
+    const int is_hdr = n >= 2 && p[0] == '#' && p[1] == '?';
+    char ext[8];
+    hfs_io_extension(path, ext, sizeof ext);
     if (n == 0) {
         rc = rd.read_errno ? hfs_rd_fail_short(&rd, err, "file")
                            : hfs_fail(err, HFS_E_FORMAT, "%s: empty file", path);
-    } else if (n >= 4 && memcmp(p, "\x76\x2f\x31\x01", 4) == 0) {
+    } else if ((!strcmp(ext, "hdr") && !is_hdr) || (!strcmp(ext, "exr") && !is_exr)) {
+        /* The name says one format and the content another: a mislabelled
+         * file is more likely a mistake than a choice. */
+        rc = hfs_fail(err, HFS_E_FORMAT, "%s: named .%s but the content is %s", path, ext,
+                      is_exr ? "OpenEXR" : is_hdr ? "Radiance .hdr" : "neither .hdr nor .exr");
+    } else if (is_exr) {
         hfs_rd_close(&rd); /* OpenEXRCore does its own reading */
         rc = hfs_io_envmap_load_exr(path, out, err);
-    } else if (n >= 2 && p[0] == '#' && p[1] == '?') {
+    } else if (is_hdr) {
         rc = load_hdr(&rd, out, err);
     } else if (n >= 8 && memcmp(p, "\x89PNG\r\n\x1a\n", 8) == 0) {
         rc = hfs_fail(err, HFS_E_UNSUPPORTED,

@@ -18,6 +18,7 @@
  * against what its stored bytes can expand to) before the image is
  * allocated and decoded.
  */
+#include "file_input.h"
 #include "io_internal.h"
 
 #include <errno.h>
@@ -354,19 +355,15 @@ int hfs_io_envmap_load_exr(const char *path, hfs_envmap *out, hfs_error *err)
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     exr_src src;
     exr_job job;
-    struct stat st;
     exr_result_t rv;
     int rc;
 
     memset(&src, 0, sizeof src);
     memset(&job, 0, sizeof job);
-    src.fd = open(path, O_RDONLY | O_CLOEXEC);
-    if (src.fd < 0) {
-        char why[128];
-        hfs_io_strerror(errno, why, sizeof why);
-        return hfs_fail(err, HFS_E_IO, "%s: cannot open: %s", path, why);
-    }
-    src.size = fstat(src.fd, &st) == 0 && S_ISREG(st.st_mode) ? (int64_t)st.st_size : -1;
+    long long size;
+    if ((rc = hfs_open_regular(path, "environment map", &src.fd, &size, err)))
+        return rc;
+    src.size = (int64_t)size;
 
     init.error_handler_fn = exr_on_error;
     init.user_data = &src;

@@ -39,8 +39,14 @@
  *
  * Writers are atomic: they write "PATH.tmp-XXXXXX" in the same directory and
  * rename it over PATH only when everything succeeded, so no partial file is
- * ever left behind.  They refuse images that hold NaN or Inf (SPEC: no
- * non-finite value reaches an output).
+ * ever left behind (PATH with symbolic links resolved: a link keeps pointing
+ * at the new file).  An existing PATH that is not a regular file (a
+ * character device, a FIFO with a reader) is written in place with every
+ * error reported (ENOSPC from /dev/full), never replaced; a directory, a
+ * dangling link or a FIFO with no reader is an error.  They refuse images
+ * that hold NaN or Inf (SPEC: no non-finite value reaches an output).
+ * Reader functions open regular files only, without blocking (a FIFO named
+ * as an input is a one-line error, not a hang).
  */
 #ifndef HFS_IO_H
 #define HFS_IO_H
@@ -181,6 +187,33 @@ HFS_API void hfs_envmap_free(hfs_envmap *m);
 /* ---- writers ------------------------------------------------------------------ */
 
 /*
+ * Output sets: the files one run writes, checked and committed together.
+ *   hfs_outputs_input(o, PATH)  for every file the run reads (missing ones
+ *                               are ignored: their loader will say so);
+ *   hfs_outputs_add(o, PATH)    for every file it will write: a PATH that is
+ *                               the same file as an input or an earlier
+ *                               output (device and inode, through symbolic
+ *                               and hard links; for files not there yet the
+ *                               path with its directory resolved) is an
+ *                               error (HFS_E_INVALID) before anything is
+ *                               written;
+ *   hfs_pfm_write_to / hfs_png_write_to(o, PATH, ...)  write complete
+ *                               temporaries;
+ *   hfs_outputs_commit(o)       renames them all over their targets; if a
+ *                               rename fails, the files this run created are
+ *                               removed again (a file that existed before and
+ *                               was already replaced stays replaced);
+ *   hfs_outputs_destroy(o)      removes every temporary not committed.
+ * At most 16 inputs and 8 outputs.
+ */
+typedef struct hfs_outputs hfs_outputs;
+HFS_API int hfs_outputs_create(hfs_outputs **out, hfs_error *err);
+HFS_API int hfs_outputs_input(hfs_outputs *o, const char *path, hfs_error *err);
+HFS_API int hfs_outputs_add(hfs_outputs *o, const char *path, hfs_error *err);
+HFS_API int hfs_outputs_commit(hfs_outputs *o, hfs_error *err);
+HFS_API void hfs_outputs_destroy(hfs_outputs *o);
+
+/*
  * PFM, little-endian (scale -1.0), first row written = row j = 0 (SPEC).
  * grey != 0 writes "Pf" with the Rec. 709 luminance 0.2126 R + 0.7152 G +
  * 0.0722 B computed in double (exactly R when R = G = B); grey == 0 writes
@@ -188,6 +221,9 @@ HFS_API void hfs_envmap_free(hfs_envmap *m);
  */
 HFS_API int hfs_pfm_write(const char *path, const hfs_image *img, int grey,
                           hfs_error *err);
+/* The same into an output set (committed by hfs_outputs_commit). */
+HFS_API int hfs_pfm_write_to(hfs_outputs *o, const char *path, const hfs_image *img, int grey,
+                             hfs_error *err);
 
 /* "Pf" from a single-channel width*height array (e.g. a height field). */
 HFS_API int hfs_pfm_write_grey(const char *path, int width, int height,
@@ -222,6 +258,9 @@ typedef struct hfs_png_opts {
  */
 HFS_API int hfs_png_write(const char *path, const hfs_image *img,
                           const hfs_png_opts *opts, hfs_error *err);
+/* The same into an output set (committed by hfs_outputs_commit). */
+HFS_API int hfs_png_write_to(hfs_outputs *o, const char *path, const hfs_image *img,
+                             const hfs_png_opts *opts, hfs_error *err);
 
 /*
  * The per-channel mapping of hfs_png_write, for code that displays frames

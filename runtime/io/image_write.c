@@ -1,6 +1,6 @@
 /*
  * image_write.c — PFM dumps, 8-bit sRGB display PNGs and 16-bit grey height
- * PNGs, all written atomically (io_util.c: temp file + rename).
+ * PNGs, all written atomically (io_output.c: temp file + rename).
  *
  * PFM: little-endian (scale -1.0), first row written = row j = 0 (SPEC),
  * "Pf" grey (Rec. 709 luminance in double: exact when R = G = B) or "PF" RGB.
@@ -61,8 +61,14 @@ static void put_f32_le(unsigned char *b, float f)
 }
 
 /* channels_in: 1 (grey array) or 3 (RGB); grey_out: write Pf. */
-static int pfm_emit(const char *path, int w, int h, const float *v, int channels_in,
-                    int grey_out, hfs_error *err)
+/* Completes a written temporary: into the output set o, or renamed now. */
+static int finish_output(hfs_outputs *o, hfs_io_atomic *a, hfs_error *err)
+{
+    return o ? hfs_io_outputs_adopt(o, a, err) : hfs_io_atomic_commit(a, err);
+}
+
+static int pfm_emit(hfs_outputs *o, const char *path, int w, int h, const float *v,
+                    int channels_in, int grey_out, hfs_error *err)
 {
     hfs_io_atomic a;
     char header[64];
@@ -95,7 +101,7 @@ static int pfm_emit(const char *path, int w, int h, const float *v, int channels
         hfs_io_atomic_abort(&a);
         return rc;
     }
-    return hfs_io_atomic_commit(&a, err);
+    return finish_output(o, &a, err);
 }
 
 int hfs_pfm_write(const char *path, const hfs_image *img, int grey, hfs_error *err)
@@ -103,7 +109,16 @@ int hfs_pfm_write(const char *path, const hfs_image *img, int grey, hfs_error *e
     int rc = check_image(path, img, err);
     if (rc)
         return rc;
-    return pfm_emit(path, img->width, img->height, img->rgb, 3, grey != 0, err);
+    return pfm_emit(NULL, path, img->width, img->height, img->rgb, 3, grey != 0, err);
+}
+
+int hfs_pfm_write_to(hfs_outputs *o, const char *path, const hfs_image *img, int grey,
+                     hfs_error *err)
+{
+    int rc = check_image(path, img, err);
+    if (rc)
+        return rc;
+    return pfm_emit(o, path, img->width, img->height, img->rgb, 3, grey != 0, err);
 }
 
 int hfs_pfm_write_grey(const char *path, int width, int height, const float *v, hfs_error *err)
@@ -116,7 +131,7 @@ int hfs_pfm_write_grey(const char *path, int width, int height, const float *v, 
         if (!isfinite(v[k]))
             return hfs_fail(err, HFS_E_INVALID, "%s: refusing to write a non-finite value at "
                             "(%zu, %zu)", path, k % (size_t)width, k / (size_t)width);
-    return pfm_emit(path, width, height, v, 1, 1, err);
+    return pfm_emit(NULL, path, width, height, v, 1, 1, err);
 }
 
 /* ---- PNG ---------------------------------------------------------------------- */
@@ -206,7 +221,7 @@ static int png_emit(png_job *job, png_structp png, png_infop info, FILE *f)
     return 0;
 }
 
-static int png_write_job(png_job *job, hfs_error *err)
+static int png_write_job(png_job *job, hfs_outputs *o, hfs_error *err)
 {
     hfs_io_atomic a;
     png_structp png = NULL;
@@ -233,7 +248,7 @@ static int png_write_job(png_job *job, hfs_error *err)
             hfs_io_atomic_abort(&a);
             rc = hfs_fail(err, HFS_E_IO, "%s: PNG encoding failed: %s", job->path, job->msg);
         } else {
-            rc = hfs_io_atomic_commit(&a, err);
+            rc = finish_output(o, &a, err);
         }
     }
     png_destroy_write_struct(&png, &info);
@@ -242,8 +257,8 @@ static int png_write_job(png_job *job, hfs_error *err)
     return rc;
 }
 
-int hfs_png_write(const char *path, const hfs_image *img, const hfs_png_opts *opts,
-                  hfs_error *err)
+int hfs_png_write_to(hfs_outputs *o, const char *path, const hfs_image *img,
+                     const hfs_png_opts *opts, hfs_error *err)
 {
     png_job job;
     int rc = check_image(path, img, err);
@@ -265,7 +280,13 @@ int hfs_png_write(const char *path, const hfs_image *img, const hfs_png_opts *op
     job.ctype = PNG_COLOR_TYPE_RGB;
     job.fill = fill_srgb8;
     job.src = img->rgb;
-    return png_write_job(&job, err);
+    return png_write_job(&job, o, err);
+}
+
+int hfs_png_write(const char *path, const hfs_image *img, const hfs_png_opts *opts,
+                  hfs_error *err)
+{
+    return hfs_png_write_to(NULL, path, img, opts, err);
 }
 
 int hfs_png16_write_grey(const char *path, int width, int height, const float *v,
@@ -290,7 +311,7 @@ int hfs_png16_write_grey(const char *path, int width, int height, const float *v
     job.ctype = PNG_COLOR_TYPE_GRAY;
     job.fill = fill_grey16;
     job.src = v;
-    return png_write_job(&job, err);
+    return png_write_job(&job, NULL, err);
 }
 
 int hfs_png_write_rgba8(const char *path, int width, int height, const uint8_t *rgba,
@@ -313,5 +334,5 @@ int hfs_png_write_rgba8(const char *path, int width, int height, const uint8_t *
     job.ctype = PNG_COLOR_TYPE_RGB_ALPHA;
     job.fill = fill_rgba8;
     job.src8 = rgba;
-    return png_write_job(&job, err);
+    return png_write_job(&job, NULL, err);
 }

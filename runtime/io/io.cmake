@@ -23,6 +23,7 @@ endif()
 set(HFS_IO_DIR ${CMAKE_CURRENT_SOURCE_DIR}/io)
 add_library(hfshade_io STATIC
   ${HFS_IO_DIR}/io_util.c
+  ${HFS_IO_DIR}/io_output.c
   ${HFS_IO_DIR}/height_load.c
   ${HFS_IO_DIR}/height_png.c
   ${HFS_IO_DIR}/height_netpbm.c

@@ -7,8 +7,10 @@
  * - Strict number parsers: tokens are checked against a grammar before any
  *   conversion, so "12abc", "0x10", "nan" or an empty token never become a
  *   value, and the C library's locale can never turn "1.5" into 1.
- * - hfs_io_atomic: "PATH.tmp-XXXXXX" in PATH's directory, renamed over PATH
- *   only on success; every failure path removes the temporary.
+ * - hfs_io_atomic (io_output.c): "TARGET.tmp-XXXXXX" next to the target,
+ *   renamed over it only on success; every failure path removes the
+ *   temporary; an existing non-regular target (a device) is written in
+ *   place, never replaced.
  *
  * Invariants: every function that fails fills err with "PATH: problem" and
  * returns a negative hfs_status; none prints; none keeps global state.
@@ -61,7 +63,9 @@ int hfs_rd_expect_end(hfs_rd *rd, int ws_ok, hfs_error *err, const char *what);
 /* Header token: skips ASCII whitespace (and '#' comments to end of line when
  * comments != 0), then copies the token (non-whitespace, not '#' when
  * comments) into tok (NUL-terminated) WITHOUT consuming the byte after it.
- * Returns the token length, 0 at end of file, -1 if longer than cap - 1. */
+ * Returns the token length, 0 at end of file, -1 if longer than cap - 1.
+ * A NUL byte inside a token is stored as the two characters "\0", so the
+ * token is never cut short (no parser accepts it; messages show it). */
 int hfs_rd_token(hfs_rd *rd, char *tok, size_t cap, int comments);
 
 static inline int hfs_io_isspace(int c)
@@ -112,15 +116,26 @@ void hfs_io_extension(const char *path, char *ext, size_t cap);
 
 typedef struct hfs_io_atomic {
     FILE *f;
-    char *tmp;              /* temporary name, owned                           */
-    const char *path;       /* final name, borrowed                            */
+    char *tmp;              /* temporary name, owned (NULL when in place)      */
+    char *target;           /* path with symbolic links resolved, owned        */
+    const char *path;       /* name as given, borrowed (for messages)          */
+    int in_place;           /* an existing device or FIFO: written directly    */
+    int created;            /* the target did not exist before this run        */
 } hfs_io_atomic;
 
-/* Creates the temporary next to path; a->f is ready for writing. */
+/* Creates the temporary next to the target (or opens a device target in
+ * place); a->f is ready for writing.  A directory or a dangling symbolic
+ * link is an error. */
 int hfs_io_atomic_open(hfs_io_atomic *a, const char *path, hfs_error *err);
-/* Flushes, syncs, closes and renames over path.  On failure the temporary is
+/* hfs_io_atomic_finish (flush, sync, close: the temporary is complete) then
+ * hfs_io_atomic_rename (over the target).  On failure the temporary is
  * removed.  Either way a is released. */
 int hfs_io_atomic_commit(hfs_io_atomic *a, hfs_error *err);
+int hfs_io_atomic_finish(hfs_io_atomic *a, hfs_error *err);
+int hfs_io_atomic_rename(hfs_io_atomic *a, hfs_error *err);
+/* Finishes a and hands it to the output set, which renames it at
+ * hfs_outputs_commit; a's path must have been added to o. */
+int hfs_io_outputs_adopt(hfs_outputs *o, hfs_io_atomic *a, hfs_error *err);
 /* fwrite that reports a short write as "PATH: write error: ..." (HFS_E_IO). */
 int hfs_io_atomic_write(hfs_io_atomic *a, const void *data, size_t n,
                         hfs_error *err);

@@ -7,6 +7,7 @@
  * temporaries of the atomic writer never outlive a failed call.
  */
 #include "io_internal.h"
+#include "file_input.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -31,31 +32,17 @@ void hfs_io_strerror(int errnum, char *buf, size_t cap)
 
 int hfs_rd_open(hfs_rd *rd, const char *path, hfs_error *err)
 {
-    char why[128];
-    struct stat st;
-
     memset(rd, 0, sizeof *rd);
-    rd->path = path;
-    rd->file_size = -1;
     if (!path || !*path)
         return hfs_fail(err, HFS_E_INVALID, "(no file): empty path");
-    rd->f = fopen(path, "rb");
-    if (!rd->f) {
-        hfs_io_strerror(errno, why, sizeof why);
+    /* Regular files only, opened without blocking (file_input.h): a FIFO
+     * would hang the open, a directory fail later with a confusing EISDIR. */
+    int rc = hfs_fopen_regular(path, "input file", &rd->f, &rd->file_size, err);
+    if (rc) {
         memset(rd, 0, sizeof *rd);
-        return hfs_fail(err, HFS_E_IO, "%s: cannot open: %s", path, why);
+        return rc;
     }
-    /* fopen() happily opens a directory on Linux; reading it then fails
-     * with a confusing EISDIR, so say what is wrong up front. */
-    if (fstat(fileno(rd->f), &st) == 0) {
-        if (S_ISDIR(st.st_mode)) {
-            fclose(rd->f);
-            memset(rd, 0, sizeof *rd);
-            return hfs_fail(err, HFS_E_IO, "%s: is a directory, not a file", path);
-        }
-        if (S_ISREG(st.st_mode))
-            rd->file_size = (long long)st.st_size;
-    }
+    rd->path = path;
     rd->cap = HFS_RD_CAP;
     rd->buf = malloc(rd->cap);
     if (!rd->buf) {
@@ -203,6 +190,17 @@ int hfs_rd_token(hfs_rd *rd, char *tok, size_t cap, int comments)
         c = hfs_rd_peekc(rd);
         if (c < 0 || hfs_io_isspace(c) || (comments && c == '#'))
             break;
+        if (c == 0) {
+            /* A NUL byte would end the C string early ("12\0abc" read as
+             * 12): it becomes the two characters \0, which no number
+             * grammar accepts and every message shows where it was. */
+            if (n + 2 >= cap)
+                return -1;
+            tok[n++] = '\\';
+            tok[n++] = '0';
+            hfs_rd_getc(rd);
+            continue;
+        }
         if (n + 1 >= cap)
             return -1;
         tok[n++] = (char)c;
@@ -354,128 +352,4 @@ void hfs_io_extension(const char *path, char *ext, size_t cap)
         ext[k] = (c >= 'A' && c <= 'Z') ? (char)(c - 'A' + 'a') : c;
     }
     ext[n] = '\0';
-}
-
-/* ---- atomic output --------------------------------------------------------- */
-
-static uint64_t splitmix64(uint64_t x)
-{
-    x += 0x9E3779B97F4A7C15ull;
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-}
-
-int hfs_io_atomic_open(hfs_io_atomic *a, const char *path, hfs_error *err)
-{
-    static const char alphabet[] =
-        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
-    struct timespec ts;
-    size_t n;
-    int fd = -1;
-
-    memset(a, 0, sizeof *a);
-    if (!path || !*path)
-        return hfs_fail(err, HFS_E_INVALID, "(no file): empty output path");
-    n = strlen(path);
-    a->tmp = malloc(n + sizeof ".tmp-XXXXXX");
-    if (!a->tmp)
-        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", path);
-    clock_gettime(CLOCK_REALTIME, &ts);
-    /* open(O_EXCL) with our own random suffix rather than mkstemp(): mkstemp
-     * creates mode 0600, and reading the umask to fix that is process-global
-     * and racy.  O_EXCL makes a collision a retry, never a clobber. */
-    for (unsigned attempt = 0; attempt < 100; ++attempt) {
-        uint64_t r = splitmix64((uint64_t)ts.tv_nsec ^ ((uint64_t)ts.tv_sec << 30) ^
-                                ((uint64_t)getpid() << 40) ^ (uint64_t)(uintptr_t)a ^
-                                ((uint64_t)attempt << 20));
-        memcpy(a->tmp, path, n);
-        memcpy(a->tmp + n, ".tmp-", 5);
-        for (int k = 0; k < 6; ++k) {
-            a->tmp[n + 5 + k] = alphabet[r % 62];
-            r /= 62;
-        }
-        a->tmp[n + 11] = '\0';
-        fd = open(a->tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0 || errno != EEXIST)
-            break;
-    }
-    if (fd < 0) {
-        char why[128];
-        hfs_io_strerror(errno, why, sizeof why);
-        free(a->tmp);
-        a->tmp = NULL;
-        return hfs_fail(err, HFS_E_IO, "%s: cannot create a temporary file next to it: %s",
-                        path, why);
-    }
-    a->f = fdopen(fd, "wb");
-    if (!a->f) {
-        char why[128];
-        hfs_io_strerror(errno, why, sizeof why);
-        close(fd);
-        unlink(a->tmp);
-        free(a->tmp);
-        a->tmp = NULL;
-        return hfs_fail(err, HFS_E_IO, "%s: cannot open for writing: %s", path, why);
-    }
-    a->path = path;
-    return HFS_OK;
-}
-
-int hfs_io_atomic_write(hfs_io_atomic *a, const void *data, size_t n, hfs_error *err)
-{
-    if (n && fwrite(data, 1, n, a->f) != n) {
-        char why[128];
-        hfs_io_strerror(errno ? errno : EIO, why, sizeof why);
-        return hfs_fail(err, HFS_E_IO, "%s: write error: %s", a->path, why);
-    }
-    return HFS_OK;
-}
-
-void hfs_io_atomic_abort(hfs_io_atomic *a)
-{
-    if (!a)
-        return;
-    if (a->f)
-        fclose(a->f);
-    if (a->tmp) {
-        unlink(a->tmp);
-        free(a->tmp);
-    }
-    memset(a, 0, sizeof *a);
-}
-
-int hfs_io_atomic_commit(hfs_io_atomic *a, hfs_error *err)
-{
-    char why[128];
-    const char *step = NULL;
-    int e = 0;
-
-    if (fflush(a->f) != 0 || ferror(a->f)) {
-        step = "write error";
-        e = errno ? errno : EIO;
-    } else if (fsync(fileno(a->f)) != 0) {
-        /* Without this a crash after rename could expose an empty file. */
-        step = "cannot sync";
-        e = errno;
-    }
-    if (fclose(a->f) != 0 && !step) {
-        step = "write error";
-        e = errno ? errno : EIO;
-    }
-    a->f = NULL;
-    if (!step && rename(a->tmp, a->path) != 0) {
-        step = "cannot replace the file";
-        e = errno;
-    }
-    if (step) {
-        int rc;
-        hfs_io_strerror(e, why, sizeof why);
-        rc = hfs_fail(err, HFS_E_IO, "%s: %s: %s", a->path, step, why);
-        hfs_io_atomic_abort(a);
-        return rc;
-    }
-    free(a->tmp);
-    memset(a, 0, sizeof *a);
-    return HFS_OK;
 }

@@ -7,6 +7,7 @@
  * (size-guarded) and lines longer than inih's buffer are rejected up front,
  * because inih would silently split them.
  */
+#include "file_input.h"
 #include "scene.h"
 
 #include <ini.h>
@@ -45,29 +46,10 @@ static int on_key(void *user, const char *section, const char *name, const char 
 
 int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err)
 {
-    struct stat st;
-    if (stat(path, &st) != 0)
-        return hfs_fail(err, HFS_E_IO, "%s: cannot open scene file", path);
-    if (!S_ISREG(st.st_mode))
-        return hfs_fail(err, HFS_E_IO, "%s: not a regular file", path);
-    if (st.st_size > SCENE_FILE_MAX)
-        return hfs_fail(err, HFS_E_FORMAT, "%s: scene file larger than %d bytes", path, SCENE_FILE_MAX);
-
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return hfs_fail(err, HFS_E_IO, "%s: cannot open scene file", path);
-    char *text = malloc((size_t)st.st_size + 1);
-    if (!text) {
-        fclose(f);
-        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", path);
-    }
-    size_t n = fread(text, 1, (size_t)st.st_size, f);
-    fclose(f);
-    text[n] = '\0';
-    if (memchr(text, '\0', n)) {
-        free(text);
-        return hfs_fail(err, HFS_E_FORMAT, "%s: binary data in scene file", path);
-    }
+    char *text;
+    int rc = hfs_read_text_file(path, "scene file", SCENE_FILE_MAX, &text, NULL, err);
+    if (rc)
+        return rc;
     int line = 1;
     for (const char *p = text, *start = text; ; ++p) {
         if (*p == '\n' || *p == '\0') {
