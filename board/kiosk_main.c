@@ -86,6 +86,11 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
             usage(stdout);
             return -1;
         }
+        /* An option given twice is an error: the last one silently
+         * winning hides a typo in a unit file. */
+        for (int j = 1; j < i; ++j)
+            if (!strcmp(argv[j], a))
+                return usage_error("%s: given twice (once is allowed)", a);
         int *flag = !strcmp(a, "--overlay")             ? &o->overlay
                     : !strcmp(a, "--no-devices")        ? &o->no_devices
                     : !strcmp(a, "--exit-after-replay") ? &o->exit_after_replay

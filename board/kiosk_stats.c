@@ -85,9 +85,12 @@ kiosk_stats *kiosk_stats_open(const char *path, hfs_error *err)
             "# event T_EVENT_NS T_PRESENT_NS LATENCY_NS FRAME CHANGED CONTROL\n"
             "# reload T_NS OK CPU_US\n"
             "# exit T_NS CPU_US FRAMES\n");
-    if (check(s)) {
-        hfs_fail(err, HFS_E_IO, "%s: cannot write the stats file", path);
-        kiosk_stats_close(s, 0);
+    if (fflush(s->f) != 0 || ferror(s->f)) {
+        hfs_fail(err, HFS_E_IO, "%s: cannot write the stats file: %s", path,
+                 strerror(errno ? errno : EIO));
+        fclose(s->f);
+        free(s->path);
+        free(s);
         return NULL;
     }
     return s;

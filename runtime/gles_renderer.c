@@ -1681,16 +1681,16 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
 
     /* Shading. */
     double bound = 0.0;
-    float shade[26 * 4]; /* HfsShade: u_env[12], u_misc, u_env_neg, u_kle[8], u_topen[4] */
+    /* HfsShade: u_env[12], u_misc, u_env_neg, u_kle[8], u_topen[4], u_lle[16] */
+    float shade[(26 + HFS_MAX_LOCAL_LIGHTS) * 4];
+    _Static_assert(HFS_MAX_LOCAL_LIGHTS == 16, "gles_shade.frag: u_lle[16]");
     memset(shade, 0, sizeof shade);
     if (fr->has_env) {
         double m = 0.0;
         for (int c = 0; c < 3; ++c) {
             double s = 0.0;
-            for (int k = 0; k < HFS_SH_N; ++k) {
-                shade[c * 16 + k] = (float)fr->l_env[c][k];
+            for (int k = 0; k < HFS_SH_N; ++k)
                 s += fabs(fr->l_env[c][k]);
-            }
             m = s > m ? s : m;
         }
         bound += 4.0 * m;
@@ -1708,20 +1708,35 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
                       fmax(fr->local[i].radiance[1], fr->local[i].radiance[2])) *
                  hfs_gles_local_max_irradiance(&L, &fr->local[i]);
     bound *= fr->rho_pi;
-    /* fp32 too: the shader clamps to fp16's range (65504) on either path,
-     * and a power of two is exact both ways, so fp32 gets the same scale
-     * (unscaled, a sky of radiance 1e6 read back as 65504 there). */
+    /* Every radiance reaches the shader already multiplied by a power of
+     * two that puts the frame's largest possible value near 16384: fp16
+     * (and fp32: the shader clamps to fp16's range on either path) then
+     * never saturates and never sinks into subnormals, for any finite
+     * scene (a sky of radiance 1e38 read back as 8.3e34 when only the
+     * output was scaled: the products overflowed first).  A power of two
+     * is exact: the frame's bits are those of an unscaled computation
+     * wherever that one neither overflowed nor underflowed. */
+    if (!isfinite(bound))
+        return hfs_fail(err, HFS_E_INVALID, "backend gles: the scene's radiance (bound %g) is "
+                        "beyond what double precision carries", bound);
     const double out_scale = hfs_gles_output_scale(bound);
+    for (int c = 0; c < 3 && fr->has_env; ++c)
+        for (int k = 0; k < HFS_SH_N; ++k)
+            shade[c * 16 + k] = (float)(fr->l_env[c][k] * out_scale);
     shade[48] = (float)fr->rho_pi;
-    shade[49] = (float)out_scale;
+    shade[49] = 1.0f; /* the scale is in the radiances */
     shade[50] = fr->has_env ? 1.0f : 0.0f;
     for (int c = 0; c < 3 && fr->has_env; ++c) /* cpu_render.c env_clamp */
-        shade[52 + c] = (float)(fr->rho_pi * PI * hfs_sh_negative_bound(fr->l_env[c]));
+        shade[52 + c] =
+            (float)(fr->rho_pi * PI * hfs_sh_negative_bound(fr->l_env[c]) * out_scale);
     for (int i = 0; i < fr->n_keys; ++i) /* rho/pi Le E_max: the factor's scale */
         for (int c = 0; c < 3; ++c)
-            shade[56 + 4 * i + c] =
-                (float)(fr->rho_pi * fr->keys[i].k.le[c] * key_emax(&fr->keys[i].k));
+            shade[56 + 4 * i + c] = (float)(fr->rho_pi * fr->keys[i].k.le[c] *
+                                            key_emax(&fr->keys[i].k) * out_scale);
     hfs_gles_open_transfer(shade + 88);
+    for (int i = 0; i < fr->n_local; ++i) /* u_lle: Le, scaled */
+        for (int c = 0; c < 3; ++c)
+            shade[104 + 4 * i + c] = (float)(fr->local[i].radiance[c] * out_scale);
     ubo_upload(gl, g->ubo[UBO_SHADE], shade, sizeof shade);
 
     char nkeys[32];

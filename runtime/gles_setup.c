@@ -327,7 +327,7 @@ double hfs_gles_output_scale(double bound)
     if (!(bound > 0.0) || !isfinite(bound))
         return 1.0;
     int e = (int)floor(log2(16384.0 / bound));
-    e = e < -100 ? -100 : (e > 100 ? 100 : e);
+    e = e < -1000 ? -1000 : (e > 1000 ? 1000 : e); /* double's range */
     return ldexp(1.0, e);
 }
 

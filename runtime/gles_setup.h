@@ -142,7 +142,8 @@ double hfs_gles_local_max_irradiance(const hfs_gles_layout *L, const hfs_local_l
 
 /* fp16 <-> float are in gl_util.h.  Power-of-two output scale that keeps
  * the frame's largest possible exit radiance (bound) in fp16's range:
- * 2^e with bound * 2^e <= 16384, e in [-100, 100]. */
+ * 2^e with bound * 2^e <= 16384, e in [-1000, 1000]; the renderer multiplies
+ * every radiance by it before the shaders see one. */
 double hfs_gles_output_scale(double bound);
 
 /* The open part of the environment's transfer, H(N) * hemisphere(N) (the

@@ -15,7 +15,7 @@
  * Everything that depends on the visibility was computed by those passes,
  * so this pass is what a turned or re-tinted environment or a change of
  * radiance costs.
- * Output: linear RGB times a power-of-two scale (u_misc.y, on both
+ * Output: linear RGB times a power-of-two scale (folded into every radiance, on both
  * precisions) that keeps the frame inside fp16's range, as an fp16 hi + lo
  * pair in two targets (the readback adds them and divides the scale out
  * exactly).
@@ -59,12 +59,16 @@ uniform int u_sub;
 
 layout(std140) uniform HfsShade {
     vec4 u_env[12];                      /* L_env, 4 vec4 per channel */
-    vec4 u_misc;                         /* (rho/pi, out scale, has env, 0) */
+    vec4 u_misc;                         /* (rho/pi, 1, has env, 0) */
     vec4 u_env_neg;                      /* rho * negative part of L_env per channel */
     vec4 u_kle[8];                       /* per key light: rho/pi Le E_max (rgb) */
     vec4 u_topen[4];                     /* k_l per coefficient: H * hemisphere(N)
                                             = k_l Y_lm(N) */
+    vec4 u_lle[16];                      /* per local light: Le (rgb) */
 };
+/* Every radiance above (u_env, u_env_neg, u_kle, u_lle) comes multiplied by
+ * the frame's power-of-two output scale (gles_renderer.c): no product here
+ * can overflow fp16 or fp32 for any finite scene. */
 
 layout(location = 0) out vec4 o_hi;       /* RGB hi (fp16-exact), 1 */
 layout(location = 1) out vec4 o_lo;       /* RGB lo: hi + lo = value */
@@ -97,7 +101,7 @@ layout(std140) uniform HfsLocal {
     vec4 u_lE[16];
     vec4 u_lg;                           /* (1, base, hscale, zscale/dx): texel units */
     vec4 u_lq;
-    vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (Le.rgb, open) */
+    vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (-, open): Le is u_lle */
     vec4 u_ldir[HFS_LOCAL_DIRS];
 };
 
@@ -118,7 +122,7 @@ vec3 local_lights(ivec2 p, vec3 n, vec2 uv)
         float rho2 = dot(v.xy, v.xy);
         float c_tan = (rho2 - r * r) + v.z * v.z;  /* as gles_local.frag */
         if (!(c_tan > 0.0)) {
-            sum += u_misc.x * HFS_PI * l1.rgb;
+            sum += u_misc.x * HFS_PI * u_lle[q].rgb;
             continue;
         }
         float d = length(v);
@@ -127,7 +131,7 @@ vec3 local_lights(ivec2 p, vec3 n, vec2 uv)
             continue;
         /* l1.w: the terrain cannot shadow this light (ratio 1, none stored). */
         float ratio = l1.w > 0.5 ? 1.0 : clamp(q % 2 == 0 ? rv.x + rv.y : rv.z + rv.w, 0.0, 1.0);
-        sum += u_misc.x * l1.rgb * (e_cap * ratio);
+        sum += u_misc.x * u_lle[q].rgb * (e_cap * ratio);
     }
     return sum;
 }

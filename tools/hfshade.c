@@ -421,8 +421,7 @@ int main(int argc, char **argv)
         return 0;
     }
     if (strcmp(c.command, "render") && strcmp(c.command, "compare")) {
-        fprintf(stderr, "hfshade: unknown command '%s'\n", c.command);
-        usage(stderr);
+        fprintf(stderr, "hfshade: unknown command '%s' (see hfshade --help)\n", c.command);
         return EXIT_USAGE;
     }
     hfs_error err = {{0}};

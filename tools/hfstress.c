@@ -285,6 +285,46 @@ static void expect_refusal(runner *rn, const stress_case *c, const stress_scene 
     finish(rn, c, b < 0 ? "unshadowed" : stress_backend_name(b), &ln, t0);
 }
 
+/* Every radiance of case c times r (STRESS_RADIANCE_SCALES): the image
+ * divided by r must equal the unscaled one (keep) within the tolerance of
+ * the geometric scales; a finite scaled scene must render. */
+static void check_radiance_scales(runner *rn, const stress_case *c, int b, const hfs_image *keep,
+                                  double umax, line *ln)
+{
+    static const double rs[] = STRESS_RADIANCE_SCALES;
+    const tolerances *t = tol_of(b);
+    for (size_t k = 0; k < sizeof rs / sizeof rs[0]; ++k) {
+        const double r = rs[k];
+        stress_scene sc;
+        char msg[512];
+        if (build(rn, c, 1.0, &sc, msg, sizeof msg)) {
+            add(ln, 0, "  radiance x%g: %s", r, msg);
+            continue;
+        }
+        for (int ch = 0; ch < 3; ++ch) {
+            for (int i = 0; i < HFS_SH_COEFFS && sc.l.has_env; ++i)
+                sc.l.env_sh[ch][i] *= r;
+            for (int i = 0; i < sc.l.n_key; ++i)
+                sc.l.key[i].radiance[ch] = (float)(sc.l.key[i].radiance[ch] * r);
+            for (int i = 0; i < sc.l.n_local; ++i)
+                sc.l.local[i].radiance[ch] = (float)(sc.l.local[i].radiance[ch] * r);
+        }
+        hfs_image img = {0};
+        hfs_error err = {{0}};
+        const int rc = stress_render(&rn->bk, b, &sc, &img, &err);
+        if (rc) {
+            add(ln, 0, "  radiance x%g: render failed (%s): %s", r, hfs_status_name(rc), err.msg);
+        } else {
+            for (size_t i = 0; i < (size_t)img.width * (size_t)img.height * 3; ++i)
+                img.rgb[i] = (float)(img.rgb[i] / r);
+            const double d = stress_max_diff(&img, keep, umax);
+            add(ln, d <= t->scale, "  radiance x%g: %.1e [%.0e]", r, d, t->scale);
+        }
+        hfs_image_free(&img);
+        stress_scene_free(&sc);
+    }
+}
+
 /* Renders case c at every invariance factor on backend b and checks it;
  * keeps the s = 1 image in *keep for the fp16 comparison. */
 static void run_backend(runner *rn, const stress_case *c, const stress_scene *sc, int b,
@@ -346,6 +386,8 @@ static void run_backend(runner *rn, const stress_case *c, const stress_scene *sc
         hfs_image_free(&img);
         stress_scene_free(&scaled);
     }
+    if (c->radiance)
+        check_radiance_scales(rn, c, b, keep, umax, &ln);
     finish(rn, c, stress_backend_name(b), &ln, t0);
 }
 

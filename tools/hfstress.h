@@ -92,7 +92,14 @@ typedef struct stress_case {
                                unshadowed image (a flat, unoccluded field)   */
     double scales[STRESS_MAX_SCALES]; /* invariance factors s (0 = unused)   */
     int tables;             /* SN08 wedge tables instead of Legendre         */
+    int radiance;           /* also under every radiance times each of
+                               STRESS_RADIANCE_SCALES: out(r) / r = out(1)  */
 } stress_case;
+
+/* Radiance invariance factors (issue 13): the GLES path scales radiance by
+ * a power of two into fp16's range, so a sky of 1e-30 or a sun of 3e38 must
+ * come out as exactly scaled copies (within float rounding of the inputs). */
+#define STRESS_RADIANCE_SCALES {1e-30, 1e30, 1e36}
 
 /* The table, in run order. */
 const stress_case *stress_cases(int *count);
