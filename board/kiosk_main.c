@@ -190,11 +190,21 @@ static int start(kiosk *k)
     const kiosk_opts *o = &k->opt;
     hfs_error err = {{0}};
     int replay_events = 0;
+    /* Nothing is open yet that an exit would have to restore (the display
+     * comes later): SIGTERM and SIGINT end the process at once while the
+     * files load, however large (queued ones included), instead of waiting
+     * in the signalfd until the loop reads it. */
+    sigset_t term;
+    sigemptyset(&term);
+    sigaddset(&term, SIGTERM);
+    sigaddset(&term, SIGINT);
+    sigprocmask(SIG_UNBLOCK, &term, NULL);
     if (!(k->world = kiosk_world_load(o->scene_path, o->input_path, &err)) ||
         (o->replay_path && check_replay(o->replay_path, &replay_events, &err))) {
         kiosk_log(KIOSK_ERR, "%s", err.msg);
         return 1;
     }
+    sigprocmask(SIG_BLOCK, &term, NULL);
     const kiosk_world *w = k->world;
     if (w->in.hm.holes > 0)
         kiosk_log(KIOSK_INFO, "%s: filled %ld hole%s (nodata)", w->scene.height, w->in.hm.holes,

@@ -5,10 +5,12 @@ add_test(NAME cli_bad_inputs
                  ${CMAKE_CURRENT_SOURCE_DIR}/data/broken)
 set_tests_properties(cli_bad_inputs PROPERTIES LABELS io TIMEOUT 300)
 
+
 # The hostile-user corpus (issue 13, tests/hostile.sh): a few hundred
 # generated bad inputs through hfshade and the kiosk: exit status, one-line
 # message naming the input, files left exactly as found, no hang, finite
 # outputs.  Counts per class: docs/STRESS.md.
+if(TARGET hfshade-kiosk)
 add_executable(hostile_pfm_check ${CMAKE_CURRENT_SOURCE_DIR}/hostile_pfm_check.c)
 target_link_libraries(hostile_pfm_check PRIVATE hfshade_io m)
 add_test(NAME hostile
@@ -16,3 +18,8 @@ add_test(NAME hostile
                  $<TARGET_FILE:hfshade> $<TARGET_FILE:hfgen> $<TARGET_FILE:hfshade-kiosk>
                  $<TARGET_FILE:hostile_pfm_check>)
 set_tests_properties(hostile PROPERTIES LABELS io TIMEOUT 900)
+if(HFS_SANITIZE)
+  set_property(TEST hostile APPEND PROPERTY ENVIRONMENT
+               "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/lsan.supp:print_suppressions=0")
+endif()
+endif()

@@ -18,7 +18,7 @@
 set -u
 HFSHADE=$1 HFGEN=$2 KIOSK=$3 PFMCHECK=$4 ONLY=${5:-}
 w=$(mktemp -d)
-trap 'chmod -R u+rwx "$w" 2>/dev/null; rm -rf "$w"' EXIT
+trap 'chmod -R u+rwx "$w" 2>/dev/null; rm -rf "$w" "$w".*' EXIT
 in=$w/in out=$w/out
 mkdir -p "$in" "$out"
 declare -A n_class fail_class
@@ -73,12 +73,35 @@ run() {
         echo "ok   [$class/$name] $(head -c 160 "$w.stderr" | head -1)"
     fi
     for f in $outputs; do rm -f "$w/$f"; done
+    restore_fixtures
     return 0
+}
+
+# A case that destroyed a shared fixture (the height field, a scene) must
+# not take the following cases with it: each class is measured on its own.
+kept=""
+keep() { cp "$1" "$w.keep.$(basename "$1")"; kept="$kept $1"; }
+restore_fixtures() {
+    local f
+    for f in $kept; do
+        [ -f "$f" ] && [ ! -L "$f" ] && cmp -s "$f" "$w.keep.$(basename "$f")" ||
+            { rm -rf "$f"; cp "$w.keep.$(basename "$f")" "$f"; }
+    done
 }
 
 # ---- fixtures ----------------------------------------------------------------------
 "$HFGEN" cones --size 24x20 -o "$in/h.pfm" >/dev/null || { echo "FAIL: hfgen"; exit 1; }
+keep "$in/h.pfm"
 sky="3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0"
+# Device targets: as root, private nodes of the same devices.  A tool that
+# regresses to renaming over a device would otherwise turn this machine's
+# /dev/full and /dev/null into files (the pre-issue-13 tool did exactly
+# that when this corpus first ran as root).
+DEVFULL=/dev/full DEVNULL=/dev/null DEVZERO=/dev/zero
+if [ "$(id -u)" = 0 ] && mkdir -p "$w/dev" && mknod -m 666 "$w/dev/full" c 1 7 2>/dev/null &&
+   mknod -m 666 "$w/dev/null" c 1 3 && mknod -m 666 "$w/dev/zero" c 1 5; then
+    DEVFULL=$w/dev/full DEVNULL=$w/dev/null DEVZERO=$w/dev/zero
+fi
 B="render --backend cpu --nphi-env 8"
 good_asc() { printf 'ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n4 5 6\n7 8 9\n'; }
 good_p2() { printf 'P2\n3 3\n255\n1 2 3\n4 5 6\n7 8 9\n'; }
@@ -153,8 +176,8 @@ rm -f "$in/loop.pfm"
 ln -s "$in/nothing.pfm" "$in/dangling.pfm"
 run heights dangling_link fail "dangling.pfm" "" -- "$HFSHADE" $B --height "$in/dangling.pfm" --env-sh $sky -o "$out/o.png"
 rm -f "$in/dangling.pfm"
-run heights dev_zero fail "/dev/zero" "" -- "$HFSHADE" $B --height /dev/zero --env-sh $sky -o "$out/o.png"
-run heights dev_null fail "/dev/null" "" -- "$HFSHADE" $B --height /dev/null --env-sh $sky -o "$out/o.png"
+run heights dev_zero fail "$DEVZERO" "" -- "$HFSHADE" $B --height "$DEVZERO" --env-sh $sky -o "$out/o.png"
+run heights dev_null fail "$DEVNULL" "" -- "$HFSHADE" $B --height "$DEVNULL" --env-sh $sky -o "$out/o.png"
 run heights good_pfm ok "" "out/o.png out/o.pfm" -- "$HFSHADE" $B --height "$in/h.pfm" --env-sh $sky -o "$out/o.png" --pfm "$out/o.pfm" --quiet
 good_asc >"$in/g.asc"
 run heights good_asc ok "" "out/o.pfm" -- "$HFSHADE" $B --height "$in/g.asc" --env-sh $sky --pfm "$out/o.pfm" --quiet
@@ -284,8 +307,8 @@ O missing_dir "nodir" -o "$out/nodir/o.png"
 O missing_dir_pfm "nodir" --pfm "$out/nodir/o.pfm" -o "$out/pre.png"
 ln -s "$out/nowhere.png" "$out/dangling.png"
 O dangling_link "dangling.png" -o "$out/dangling.png"
-O dev_full "/dev/full" -o /dev/full
-O dev_full_pfm "/dev/full" --pfm /dev/full
+O dev_full "$DEVFULL" -o "$DEVFULL"
+O dev_full_pfm "$DEVFULL" --pfm "$DEVFULL"
 mkfifo "$out/fifo.png"
 O fifo_no_reader "fifo.png" -o "$out/fifo.png"
 O render_fails_keeps "k" -o "$out/pre.png" --pfm "$out/pre.pfm" --k 0
@@ -294,8 +317,8 @@ run outputs env_fails_keeps fail "nope.exr" "" -- "$HFSHADE" $B --height "$in/h.
 printf 'height = %s/h.pfm\nenv-sh = %s\nbackend = cpu\n' "$in" "$sky" >"$in/s.ini"
 run outputs png_is_scene fail "s.ini" "" -- "$HFSHADE" render "$in/s.ini" -o "$in/s.ini"
 run outputs pfm_is_scene fail "s.ini" "" -- "$HFSHADE" render "$in/s.ini" --pfm "$in/s.ini"
-run outputs dev_null ok "" "out/o.pfm" -- "$HFSHADE" $R -o /dev/null --pfm "$out/o.pfm" --quiet
-O dev_null_twice "/dev/null" -o /dev/null --pfm /dev/null
+run outputs dev_null ok "" "out/o.pfm" -- "$HFSHADE" $R -o "$DEVNULL" --pfm "$out/o.pfm" --quiet
+O dev_null_twice "$DEVNULL" -o "$DEVNULL" --pfm "$DEVNULL"
 run outputs good_both ok "" "out/o.png out/o.pfm" -- "$HFSHADE" $R -o "$out/o.png" --pfm "$out/o.pfm" --quiet
 run outputs good_replace ok "" "" -- "$HFSHADE" $R -o "$out/pre.png" --quiet
 printf 'keep me\n' >"$out/pre.png"
@@ -351,13 +374,14 @@ printf 'height = %s/h.pfm\nenv-sh = %s\nbackend = gles\nkey = 30,20,2,10\n' "$in
 printf 'height = %s/h.pfm\nenv-sh = %s\nbackend = gles\nkey = 30,20,2,10\nnphi-key = 256\n' "$in" "$sky" >"$in/refused.ini"
 printf 'height = %s/h.pfm\nbackend = gles\ndx = -1\n' "$in" >"$in/bad.ini"
 : >"$in/empty.txt"
+keep "$in/good.ini"; keep "$in/refused.ini"; keep "$in/bad.ini"
 KI check_good ok "" "$in/good.ini" --check
 KI check_refused fail "refused.ini" "$in/refused.ini" --check
 KI check_bad fail "bad.ini" "$in/bad.ini" --check
 KI check_missing fail "nope.ini" "$in/nope.ini" --check
 KI stats_is_scene fail "good.ini" "$in/good.ini" --display headless --stats "$in/good.ini"
 KI stats_is_height fail "h.pfm" "$in/good.ini" --display headless --stats "$in/h.pfm"
-KI stats_dev_full fail "/dev/full" "$in/good.ini" --display headless --replay "$in/empty.txt" --exit-after-replay --stats /dev/full
+KI stats_dev_full fail "$DEVFULL" "$in/good.ini" --display headless --replay "$in/empty.txt" --exit-after-replay --stats "$DEVFULL"
 KI empty_replay_exits ok "" "$in/good.ini" --display headless --replay "$in/empty.txt" --exit-after-replay
 KI bad_size fail "--size" "$in/good.ini" --display headless --size 0x0
 KI bad_amortize fail "--amortize" "$in/good.ini" --display headless --amortize -1

@@ -52,4 +52,14 @@ if(TARGET hfshade-kiosk)
                    "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
     endforeach()
   endif()
+  # Issue 13: 100 reloads alternating a good scene and one the renderer refuses;
+  # still running, fds and memory flat (tests/kiosk_reload_soak.sh prints them).
+  add_test(NAME kiosk_reload_soak
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/kiosk_reload_soak.sh
+                   $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen> 100)
+  set_tests_properties(kiosk_reload_soak PROPERTIES LABELS gl TIMEOUT 300 SKIP_RETURN_CODE 77)
+  if(HFS_SANITIZE)
+    set_property(TEST kiosk_reload_soak APPEND PROPERTY ENVIRONMENT
+                 "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+  endif()
 endif()
