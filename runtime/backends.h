@@ -28,9 +28,10 @@ int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
 typedef struct hfs_gles hfs_gles;
 
 /* context: gl_context.h name (NULL = surfaceless); profile: gl_caps.h name
- * or NULL (by precision).  HFS_E_CONTEXT/UNSUPPORTED/INVALID with one line. */
-int hfs_gles_create(const char *context, const char *profile, hfs_gles **out,
-                    hfs_error *err);
+ * or NULL (by precision); strict_limits: hfs_renderer_desc.gl_strict_limits.
+ * HFS_E_CONTEXT/UNSUPPORTED/INVALID with one line. */
+int hfs_gles_create(const char *context, const char *profile, int strict_limits,
+                    hfs_gles **out, hfs_error *err);
 void hfs_gles_destroy(hfs_gles *g);
 /* "surfaceless" or "osmesa"; hfs_gl_context_describe() of the context. */
 const char *hfs_gles_context_name(const hfs_gles *g);

@@ -67,7 +67,7 @@ static int cap(int driver, int profile)
 }
 
 int hfs_gl_caps_select(const hfs_gl_driver *d, const char *profile, int want_fp32,
-                       hfs_gl_caps *c, hfs_error *err)
+                       int strict_limits, hfs_gl_caps *c, hfs_error *err)
 {
     if (!profile)
         profile = want_fp32 ? "es30-float" : "es30-half";
@@ -117,22 +117,26 @@ int hfs_gl_caps_select(const hfs_gl_driver *d, const char *profile, int want_fp3
     out.bytes_r = out.fp32 ? 4 : 2;
     out.bytes_rg = out.fp32 ? 8 : 4;
     out.bytes_rgba = out.fp32 ? 16 : 8;
-    out.max_texture_size = cap(d->max_texture_size, es30 ? ES30_MAX_TEXTURE_SIZE : 0);
+    /* Features come from the profile; limits from the driver, unless strict
+     * limits ask for the ES 3.0 minimums (what every ES 3.0 device has). */
+    const int strict = es30 && strict_limits;
+    out.strict_limits = strict;
+    out.max_texture_size = cap(d->max_texture_size, strict ? ES30_MAX_TEXTURE_SIZE : 0);
     out.max_array_texture_layers =
-        cap(d->max_array_texture_layers, es30 ? ES30_MAX_ARRAY_TEXTURE_LAYERS : 0);
-    out.max_draw_buffers = cap(d->max_draw_buffers, es30 ? ES30_MAX_DRAW_BUFFERS : 0);
+        cap(d->max_array_texture_layers, strict ? ES30_MAX_ARRAY_TEXTURE_LAYERS : 0);
+    out.max_draw_buffers = cap(d->max_draw_buffers, strict ? ES30_MAX_DRAW_BUFFERS : 0);
     out.max_uniform_block_size =
-        cap(d->max_uniform_block_size, es30 ? ES30_MAX_UNIFORM_BLOCK_SIZE : 0);
+        cap(d->max_uniform_block_size, strict ? ES30_MAX_UNIFORM_BLOCK_SIZE : 0);
     out.max_fragment_uniform_blocks =
-        cap(d->max_fragment_uniform_blocks, es30 ? ES30_MAX_FRAGMENT_UNIFORM_BLOCKS : 0);
+        cap(d->max_fragment_uniform_blocks, strict ? ES30_MAX_FRAGMENT_UNIFORM_BLOCKS : 0);
     out.max_uniform_buffer_bindings =
-        cap(d->max_uniform_buffer_bindings, es30 ? ES30_MAX_UNIFORM_BUFFER_BINDINGS : 0);
+        cap(d->max_uniform_buffer_bindings, strict ? ES30_MAX_UNIFORM_BUFFER_BINDINGS : 0);
     out.max_texture_image_units =
-        cap(d->max_texture_image_units, es30 ? ES30_MAX_TEXTURE_IMAGE_UNITS : 0);
+        cap(d->max_texture_image_units, strict ? ES30_MAX_TEXTURE_IMAGE_UNITS : 0);
     /* Alignment is a minimum the application must honour: the larger of
      * the two is the safe one. */
     out.uniform_buffer_offset_alignment = d->uniform_buffer_offset_alignment;
-    if (es30 && out.uniform_buffer_offset_alignment < ES30_UNIFORM_BUFFER_OFFSET_ALIGNMENT)
+    if (strict && out.uniform_buffer_offset_alignment < ES30_UNIFORM_BUFFER_OFFSET_ALIGNMENT)
         out.uniform_buffer_offset_alignment = ES30_UNIFORM_BUFFER_OFFSET_ALIGNMENT;
     if (out.uniform_buffer_offset_alignment < 1)
         out.uniform_buffer_offset_alignment = 1;
@@ -147,45 +151,67 @@ int hfs_gl_caps_select(const hfs_gl_driver *d, const char *profile, int want_fp3
     return HFS_OK;
 }
 
+/* "the driver's limit 4096 (GL_MAX_TEXTURE_SIZE)", or under strict limits
+ * "the ES 3.0 minimum 2048 (GL_MAX_TEXTURE_SIZE, strict limits; this driver
+ * allows 16384)": every refusal names the limit, its value and whose it is. */
+static const char *limit_text(const hfs_gl_caps *c, int limit, int driver, const char *name,
+                              char *buf, size_t n)
+{
+    if (c->strict_limits && limit < driver)
+        snprintf(buf, n, "the ES 3.0 minimum %d (%s, strict limits; this driver allows %d)", limit,
+                 name, driver);
+    else
+        snprintf(buf, n, "the driver's limit %d (%s)", limit, name);
+    return buf;
+}
+
 int hfs_gl_caps_check_texture(const hfs_gl_caps *c, int w, int h, int layers,
                               const char *what, hfs_error *err)
 {
+    char t[160];
     if (w > c->max_texture_size || h > c->max_texture_size)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: %dx%d texture exceeds the %s limit %d "
-                        "(GL_MAX_TEXTURE_SIZE; driver %d)", what, w, h, c->profile,
-                        c->max_texture_size, c->driver.max_texture_size);
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: a %dx%d texture exceeds %s", what, w, h,
+                        limit_text(c, c->max_texture_size, c->driver.max_texture_size,
+                                   "GL_MAX_TEXTURE_SIZE", t, sizeof t));
     if (layers > c->max_array_texture_layers)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: %d array layers exceed the %s limit %d "
-                        "(GL_MAX_ARRAY_TEXTURE_LAYERS; driver %d)", what, layers, c->profile,
-                        c->max_array_texture_layers, c->driver.max_array_texture_layers);
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: %d array layers exceed %s", what, layers,
+                        limit_text(c, c->max_array_texture_layers,
+                                   c->driver.max_array_texture_layers,
+                                   "GL_MAX_ARRAY_TEXTURE_LAYERS", t, sizeof t));
     return HFS_OK;
 }
 
 int hfs_gl_caps_check_uniform_block(const hfs_gl_caps *c, size_t bytes, const char *what,
                                     hfs_error *err)
 {
+    char t[160];
     if (bytes > (size_t)c->max_uniform_block_size)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: needs a %zu-byte uniform block, the %s "
-                        "limit is %d (GL_MAX_UNIFORM_BLOCK_SIZE; driver %d)", what, bytes,
-                        c->profile, c->max_uniform_block_size, c->driver.max_uniform_block_size);
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: needs a %zu-byte uniform block, over %s",
+                        what, bytes,
+                        limit_text(c, c->max_uniform_block_size,
+                                   c->driver.max_uniform_block_size, "GL_MAX_UNIFORM_BLOCK_SIZE",
+                                   t, sizeof t));
     return HFS_OK;
 }
 
 int hfs_gl_caps_check_draw_buffers(const hfs_gl_caps *c, int n, const char *what,
                                    hfs_error *err)
 {
+    char t[160];
     if (n > c->max_draw_buffers)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: needs %d draw buffers, the %s limit is %d "
-                        "(GL_MAX_DRAW_BUFFERS; driver %d)", what, n, c->profile,
-                        c->max_draw_buffers, c->driver.max_draw_buffers);
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: needs %d draw buffers, over %s", what, n,
+                        limit_text(c, c->max_draw_buffers, c->driver.max_draw_buffers,
+                                   "GL_MAX_DRAW_BUFFERS", t, sizeof t));
     return HFS_OK;
 }
 
 int hfs_gl_caps_check_samplers(const hfs_gl_caps *c, int n, const char *what, hfs_error *err)
 {
+    char t[160];
     if (n > c->max_texture_image_units)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: needs %d texture units, the %s limit is %d "
-                        "(GL_MAX_TEXTURE_IMAGE_UNITS; driver %d)", what, n, c->profile,
-                        c->max_texture_image_units, c->driver.max_texture_image_units);
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: needs %d texture units, over %s", what, n,
+                        limit_text(c, c->max_texture_image_units,
+                                   c->driver.max_texture_image_units,
+                                   "GL_MAX_TEXTURE_IMAGE_UNITS", t, sizeof t));
     return HFS_OK;
 }

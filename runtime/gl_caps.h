@@ -11,8 +11,10 @@
  *   "es30-half"   OpenGL ES 3.0 core + GL_EXT_color_buffer_half_float:
  *                 R16F/RG16F/RGBA16F render targets, fp16 linear filtering
  *                 (core ES 3.0).  No float32 texture or render target.
- *                 Limits capped at the ES 3.0 minimums (texture 2048, 256
- *                 array layers, 4 draw buffers, 16384-byte uniform blocks...).
+ *                 Limits: the driver's own (a board that holds a 4096^2
+ *                 field renders it), or with strict limits (CI) capped at
+ *                 the ES 3.0 minimums (texture 2048, 256 array layers, 4
+ *                 draw buffers, 16384-byte uniform blocks...).
  *   "es30-float"  the same + GL_EXT_color_buffer_float (32F render targets)
  *                 + GL_OES_texture_float_linear (32F filtering): what
  *                 --precision fp32 runs on.
@@ -70,7 +72,8 @@ typedef struct hfs_gl_caps {
     GLenum fmt_rgba;             /* GL_RGBA16F or GL_RGBA32F                 */
     GLenum type_upload;          /* GL_HALF_FLOAT or GL_FLOAT                */
     int bytes_r, bytes_rg, bytes_rgba; /* per texel                         */
-    /* Limits: min(driver, profile). */
+    int strict_limits;           /* limits capped at the ES 3.0 minimums    */
+    /* Limits: the driver's, or min(driver, ES 3.0 minimum) when strict. */
     int max_texture_size;
     int max_array_texture_layers;
     int max_draw_buffers;
@@ -92,7 +95,7 @@ void hfs_gl_caps_query(const hfs_gl *gl, hfs_gl_driver *d);
  * name (the message lists the known ones), HFS_E_UNSUPPORTED with one line
  * naming what the driver lacks.  *c is filled on success only. */
 int hfs_gl_caps_select(const hfs_gl_driver *d, const char *profile, int want_fp32,
-                       hfs_gl_caps *c, hfs_error *err);
+                       int strict_limits, hfs_gl_caps *c, hfs_error *err);
 
 /* "es30-half, es30-float, es32" for help texts. */
 const char *hfs_gl_profile_names(void);

@@ -122,6 +122,7 @@ struct hfs_gles {
     hfs_gl_driver driver;
     hfs_gl_caps caps;
     char profile[16]; /* "" = by precision */
+    int strict_limits; /* ES 3.0 minimums instead of the driver's limits */
     GLuint vao;
     GLuint ubo[UBO_COUNT];
     GLuint queries[2 * P_COUNT];
@@ -665,7 +666,8 @@ static int tables_upload(hfs_gles *g, const hfs_wedge_tables *t, GLuint tab, GLu
 
 /* ---- object ------------------------------------------------------------------------------ */
 
-int hfs_gles_create(const char *context, const char *profile, hfs_gles **out, hfs_error *err)
+int hfs_gles_create(const char *context, const char *profile, int strict_limits, hfs_gles **out,
+                    hfs_error *err)
 {
     *out = NULL;
     hfs_gles *g = calloc(1, sizeof *g);
@@ -677,12 +679,13 @@ int hfs_gles_create(const char *context, const char *profile, hfs_gles **out, hf
     if ((rc = hfs_gl_load(&g->gl, hfs_gl_context_loader, g->ctx, err)))
         goto fail;
     hfs_gl_caps_query(&g->gl, &g->driver);
+    g->strict_limits = strict_limits != 0;
     if (profile) {
         /* Refuse a bad name or an impossible profile now, not at the first
          * frame. */
         hfs_gl_caps c;
-        if ((rc = hfs_gl_caps_select(&g->driver, profile, !strcmp(profile, "es30-float"), &c,
-                                     err)))
+        if ((rc = hfs_gl_caps_select(&g->driver, profile, !strcmp(profile, "es30-float"),
+                                     strict_limits, &c, err)))
             goto fail;
         snprintf(g->profile, sizeof g->profile, "%s", profile);
     }
@@ -1351,8 +1354,8 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     const hfs_gl *gl = &g->gl;
     int rc;
     const int fp32 = q->precision == HFS_PRECISION_FP32;
-    if ((rc = hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL, fp32, &g->caps,
-                                 err)))
+    if ((rc = hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL, fp32,
+                                 g->strict_limits, &g->caps, err)))
         return rc;
     const hfs_gl_caps *caps = &g->caps;
     hfs_gles_layout L;
@@ -1361,7 +1364,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     const int tables = q->visibility == HFS_VIS_WEDGE_TABLE;
 
     /* Limits, all through the caps layer. */
-    if ((rc = hfs_gl_caps_check_texture(caps, L.w, L.h, L.n_layers, "height levels", err)) ||
+    if ((rc = hfs_gl_caps_check_texture(caps, L.w, L.h, L.n_layers, "height levels (the field's size)", err)) ||
         (rc = hfs_gl_caps_check_texture(caps, TABLE_N, TABLE_N, 4 * (MAX_KEYS + 1),
                                         "wedge tables", err)) ||
         (rc = hfs_gl_caps_check_draw_buffers(caps, 4, "SH visibility (16 coefficients)", err)) ||
@@ -1401,7 +1404,8 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
         keyswath_bytes = align_up(keyswath_bytes + k->swath_size, align);
         k->rec_off = rec;
         rec += (int)hfs_gles_key_vec4(k->k.swath.n);
-        if ((rc = hfs_gl_caps_check_uniform_block(caps, k->swath_size, "key-light swath", err)))
+        if ((rc = hfs_gl_caps_check_uniform_block(caps, k->swath_size,
+                                                   "key-light swath (lower --nphi-key)", err)))
             return rc;
     }
     /* The records' declared size (HFS_KEY_VEC4) goes in size classes, so
@@ -1415,7 +1419,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     if ((size_t)rec_block * 16 > (size_t)caps->max_uniform_block_size)
         rec_block = rec > 0 ? rec : 1;
     if ((rc = hfs_gl_caps_check_uniform_block(caps, (size_t)rec_block * 16,
-                                              "key-light records (shading)", err)) ||
+                                              "key-light records (fewer keys or --nphi-key)", err)) ||
         (rc = hfs_gl_caps_check_texture(caps, L.vw, L.vh, fr->key_layers,
                                         "key-light horizons", err)))
         return rc;

@@ -221,6 +221,15 @@ typedef struct hfs_renderer_desc {
                                 (the product), "es30-float", "es32"; NULL =
                                 by precision (fp16: es30-half, fp32:
                                 es30-float).  See runtime/gl_caps.h.          */
+    int gl_strict_limits;    /* GLES only: 0 (default) = every limit
+                                (texture size, uniform block size, ...) is
+                                the driver's own, so a board that holds a
+                                4096^2 field renders it; 1 = capped at the
+                                ES 3.0 minimums under the es30 profiles
+                                (2048 texels, 16 KiB blocks): how CI checks
+                                that a scene runs on ANY ES 3.0 device.  The
+                                environment variable HFS_GL_STRICT_LIMITS=1
+                                turns it on for every renderer.              */
 } hfs_renderer_desc;
 
 HFS_API int hfs_renderer_create(const hfs_renderer_desc *desc, hfs_renderer **out,

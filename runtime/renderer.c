@@ -47,8 +47,10 @@ int hfs_renderer_create(const hfs_renderer_desc *desc, hfs_renderer **out, hfs_e
         return hfs_fail(err, HFS_E_NOMEM, "renderer: out of memory");
     r->backend = b;
     if (b == HFS_BACKEND_GLES) {
+        const char *env = getenv("HFS_GL_STRICT_LIMITS");
+        const int strict = (desc && desc->gl_strict_limits) || (env && !strcmp(env, "1"));
         int rc = hfs_gles_create(desc ? desc->context : NULL, desc ? desc->gl_profile : NULL,
-                                 &r->gles, err);
+                                 strict, &r->gles, err);
         if (rc) {
             free(r);
             return rc;

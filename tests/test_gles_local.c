@@ -429,7 +429,9 @@ static int mode_errors(void)
     field_buf fb;
     if (field_make("cones", 32, &fb))
         return 1;
-    hfs_renderer *r = gles_or_skip();
+    /* Strict limits: the ES 3.0 minimums every device has. */
+    const hfs_renderer_desc strict = {.backend = HFS_BACKEND_GLES, .gl_strict_limits = 1};
+    hfs_renderer *r = gl_test_renderer(&strict);
     hfs_lighting l = lighting_local_only();
     static const double one[1][5] = {{16, 16, 20, 1, 1}};
     local_set(&l, one, 1);

@@ -696,7 +696,10 @@ static int mode_errors(void)
     scene s;
     if (scene_make("cones", 32, HFS_DATA_DIR, &s))
         return 1;
-    hfs_renderer *r = gles_or_skip(NULL);
+    /* Strict limits: the ES 3.0 minimums, which every device has. */
+    const hfs_renderer_desc strict = {.backend = HFS_BACKEND_GLES, .context = test_context,
+                                      .gl_strict_limits = 1};
+    hfs_renderer *r = gl_test_renderer(&strict);
     hfs_lighting l = scene_lighting(1, 0);
     hfs_quality q = quality("fp16", "legendre", 1);
     hfs_image img = {0};
@@ -723,6 +726,16 @@ static int mode_errors(void)
 
     d.gl_profile = "es30-half";
     bad = gl_test_renderer(&d);
+    /* Without strict limits the driver's own: nphi-env 128 fits llvmpipe's
+     * 64 KiB blocks under es30-half too (issue 13). */
+    q.nphi_env = 128;
+    rc = hfs_renderer_render(bad, &s.f, &l, &q, &img, NULL, NULL, &err);
+    printf("nphi-env 128 under es30-half, driver limits: %s\n", rc ? err.msg : "ok");
+    const char *strict_env = getenv("HFS_GL_STRICT_LIMITS"); /* makes every renderer strict */
+    CHECK(rc == 0 || strstr(err.msg, strict_env && !strcmp(strict_env, "1") ? "strict limits"
+                                                                              : "the driver's limit"),
+          "nphi-env 128, driver limits: %s", err.msg);
+    q.nphi_env = 32;
     q.precision = HFS_PRECISION_FP32;
     rc = hfs_renderer_render(bad, &s.f, &l, &q, &img, NULL, NULL, &err);
     printf("fp32 under es30-half: %s\n", err.msg);

@@ -48,7 +48,7 @@ int scene_make(const char *name, int n, const char *data_dir, scene *s)
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i)
                 s->z[(size_t)j * n + i] =
-                    hm.z[(size_t)(j + y0 % hm.height) * hm.width + (size_t)(i + x0) % hm.width];
+                    hm.z[(size_t)((j + y0) % hm.height) * hm.width + (size_t)((i + x0) % hm.width)];
         hfs_heightmap_free(&hm);
         s->f.dx = 83.0;
         s->f.zscale = 2.0;

@@ -58,10 +58,29 @@ static void test_caps(void)
     hfs_error err;
     hfs_gl_driver d = llvmpipe_like();
 
-    CHECK(hfs_gl_caps_select(&d, NULL, 0, &c, &err) == 0, "default: %s", err.msg);
+    /* Default: the profile's features, the driver's limits (issue 13). */
+    CHECK(hfs_gl_caps_select(&d, NULL, 0, 0, &c, &err) == 0, "default: %s", err.msg);
     CHECK(!strcmp(c.profile, "es30-half") && !c.fp32 && c.fmt_rg == GL_RG16F &&
               c.fmt_rgba == GL_RGBA16F && c.type_upload == GL_HALF_FLOAT,
           "default profile/formats");
+    CHECK(c.max_texture_size == 16384 && c.max_uniform_block_size == 65536 && !c.strict_limits,
+          "es30 default limits are not the driver's: %d %d", c.max_texture_size,
+          c.max_uniform_block_size);
+    CHECK(hfs_gl_caps_check_texture(&c, 4096, 4096, 1, "field", &err) == 0,
+          "a 4096^2 field on a 16384 driver: %s", err.msg);
+    CHECK(hfs_gl_caps_check_uniform_block(&c, 70000, "swath (lower --nphi-key)", &err) ==
+                  HFS_E_UNSUPPORTED &&
+              strstr(err.msg, "the driver's limit 65536 (GL_MAX_UNIFORM_BLOCK_SIZE)") &&
+              strstr(err.msg, "70000") && strstr(err.msg, "--nphi-key"),
+          "refusal names the limit, the value and the way out: %s", err.msg);
+
+    /* Strict limits (CI): the ES 3.0 minimums. */
+    CHECK(hfs_gl_caps_select(&d, NULL, 0, 1, &c, &err) == 0 && c.strict_limits, "strict: %s",
+          err.msg);
+    CHECK(hfs_gl_caps_check_texture(&c, 4096, 4096, 1, "field", &err) == HFS_E_UNSUPPORTED &&
+              strstr(err.msg, "the ES 3.0 minimum 2048 (GL_MAX_TEXTURE_SIZE, strict limits; "
+                              "this driver allows 16384)"),
+          "strict refusal: %s", err.msg);
     CHECK(c.max_texture_size == 2048 && c.max_array_texture_layers == 256 &&
               c.max_draw_buffers == 4 && c.max_uniform_block_size == 16384 &&
               c.max_texture_image_units == 16 && c.uniform_buffer_offset_alignment == 256,
@@ -70,19 +89,19 @@ static void test_caps(void)
           c.max_texture_image_units, c.uniform_buffer_offset_alignment);
     CHECK(c.driver.max_texture_size == 16384, "driver values not kept");
 
-    CHECK(hfs_gl_caps_select(&d, NULL, 1, &c, &err) == 0 && !strcmp(c.profile, "es30-float") &&
+    CHECK(hfs_gl_caps_select(&d, NULL, 1, 1, &c, &err) == 0 && !strcmp(c.profile, "es30-float") &&
               c.fp32 && c.fmt_rg == GL_RG32F && c.fmt_rgba == GL_RGBA32F && c.type_upload == GL_FLOAT,
           "fp32 default profile: %s", err.msg);
-    CHECK(hfs_gl_caps_select(&d, "es32", 0, &c, &err) == 0 && c.max_texture_size == 16384 &&
+    CHECK(hfs_gl_caps_select(&d, "es32", 0, 1, &c, &err) == 0 && c.max_texture_size == 16384 &&
               c.max_uniform_block_size == 65536 && c.max_draw_buffers == 8 && !c.fp32,
           "es32 must keep the driver's limits: %s", err.msg);
-    CHECK(hfs_gl_caps_select(&d, "es32", 1, &c, &err) == 0 && c.fp32, "es32 fp32: %s", err.msg);
+    CHECK(hfs_gl_caps_select(&d, "es32", 1, 1, &c, &err) == 0 && c.fp32, "es32 fp32: %s", err.msg);
 
     /* A driver smaller than the profile: min wins. */
     hfs_gl_driver small = d;
     small.max_texture_size = 1024;
     small.max_uniform_block_size = 8192;
-    CHECK(hfs_gl_caps_select(&small, "es30-half", 0, &c, &err) == 0 && c.max_texture_size == 1024 &&
+    CHECK(hfs_gl_caps_select(&small, "es30-half", 0, 1, &c, &err) == 0 && c.max_texture_size == 1024 &&
               c.max_uniform_block_size == 8192, "small driver");
 
     /* Refusals, each one line naming what is missing. */
@@ -98,7 +117,7 @@ static void test_caps(void)
         {"es30-half", 1, NULL, HFS_E_UNSUPPORTED, "es30-float"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
-        int rc = hfs_gl_caps_select(&d, cases[i].profile, cases[i].fp32, &c, &err);
+        int rc = hfs_gl_caps_select(&d, cases[i].profile, cases[i].fp32, 1, &c, &err);
         CHECK(rc == cases[i].code, "case %zu: rc %d", i, rc);
         if (cases[i].needle)
             CHECK(strstr(err.msg, cases[i].needle) && !strchr(err.msg, '\n'), "case %zu: %s", i,
@@ -107,34 +126,34 @@ static void test_caps(void)
     hfs_gl_driver nohalf = d;
     nohalf.minor = 0;
     nohalf.color_buffer_half_float = nohalf.color_buffer_float = 0;
-    int rc = hfs_gl_caps_select(&nohalf, NULL, 0, &c, &err);
+    int rc = hfs_gl_caps_select(&nohalf, NULL, 0, 1, &c, &err);
     CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "GL_EXT_color_buffer_half_float"),
           "no half-float targets: %d %s", rc, err.msg);
     hfs_gl_driver half_only = d;
     half_only.minor = 0;
     half_only.color_buffer_float = 0;
-    CHECK(hfs_gl_caps_select(&half_only, NULL, 0, &c, &err) == 0, "ES 3.0 + half: %s", err.msg);
-    rc = hfs_gl_caps_select(&half_only, NULL, 1, &c, &err);
+    CHECK(hfs_gl_caps_select(&half_only, NULL, 0, 1, &c, &err) == 0, "ES 3.0 + half: %s", err.msg);
+    rc = hfs_gl_caps_select(&half_only, NULL, 1, 1, &c, &err);
     CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "GL_EXT_color_buffer_float"),
           "fp32 without float targets: %d %s", rc, err.msg);
-    rc = hfs_gl_caps_select(&half_only, "es32", 0, &c, &err);
+    rc = hfs_gl_caps_select(&half_only, "es32", 0, 1, &c, &err);
     CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "es32"), "es32 on ES 3.0: %d %s", rc, err.msg);
     hfs_gl_driver nolinear = d;
     nolinear.texture_float_linear = 0;
-    rc = hfs_gl_caps_select(&nolinear, NULL, 1, &c, &err);
+    rc = hfs_gl_caps_select(&nolinear, NULL, 1, 1, &c, &err);
     CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "GL_OES_texture_float_linear"),
           "fp32 without float filtering: %d %s", rc, err.msg);
-    CHECK(hfs_gl_caps_select(&nolinear, NULL, 0, &c, &err) == 0, "fp16 needs no float filtering");
+    CHECK(hfs_gl_caps_select(&nolinear, NULL, 0, 1, &c, &err) == 0, "fp16 needs no float filtering");
     hfs_gl_driver noblend = d;
     noblend.float_blend = 0;
-    CHECK(hfs_gl_caps_select(&noblend, NULL, 1, &c, &err) == 0 && c.fmt_r == GL_R32F,
+    CHECK(hfs_gl_caps_select(&noblend, NULL, 1, 1, &c, &err) == 0 && c.fmt_r == GL_R32F,
           "no blending is needed: %s", err.msg);
     hfs_gl_driver desktop = d;
     desktop.is_es = 0, desktop.major = 4, desktop.minor = 5;
-    CHECK(hfs_gl_caps_select(&desktop, "es32", 1, &c, &err) == 0, "desktop GL: %s", err.msg);
+    CHECK(hfs_gl_caps_select(&desktop, "es32", 1, 1, &c, &err) == 0, "desktop GL: %s", err.msg);
 
     /* Checks. */
-    CHECK(hfs_gl_caps_select(&d, NULL, 0, &c, &err) == 0, "reselect");
+    CHECK(hfs_gl_caps_select(&d, NULL, 0, 1, &c, &err) == 0, "reselect");
     CHECK(hfs_gl_caps_check_texture(&c, 2048, 2048, 256, "x", &err) == 0, "2048^2 x 256 fits");
     rc = hfs_gl_caps_check_texture(&c, 2049, 16, 1, "height levels", &err);
     CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "GL_MAX_TEXTURE_SIZE") &&

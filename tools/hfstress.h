@@ -123,8 +123,9 @@ void stress_scene_free(stress_scene *sc);
 
 /* ---- backends (hfstress_backends.c) ------------------------------------------- */
 
-/* gles-*: the product profile (es30-half for fp16, es30-float for fp32),
- * whose textures stop at ES 3.0's guaranteed 2048; gles-es32-*: the same
+/* gles-*: the product profile (es30-half for fp16, es30-float for fp32)
+ * with strict limits (the smallest ES 3.0 device: textures stop at the
+ * guaranteed 2048); gles-es32-*: the same
  * renderer under the es32 profile (the driver's limits), run only on
  * fields with a side beyond 2048; truth only on the cases that ask. */
 enum { BK_CPU, BK_GLES16, BK_GLES32, BK_ES32_16, BK_ES32_32, BK_TRUTH, BK_COUNT };

@@ -121,7 +121,10 @@ int stress_backend_ready(stress_backends *s, int b)
         s->state[b] = -1;
         return 0;
     } else {
-        const hfs_renderer_desc d = {.backend = defs[b].kind, .gl_profile = defs[b].profile};
+        /* gles-fp16/fp32 stand for the smallest ES 3.0 device (strict
+         * limits: 2048 texels, 16 KiB blocks); gles-es32-* for the driver. */
+        const hfs_renderer_desc d = {.backend = defs[b].kind, .gl_profile = defs[b].profile,
+                                     .gl_strict_limits = defs[b].profile == NULL};
         const int rc = hfs_renderer_create(&d, &s->r[b], &err);
         if (rc) {
             snprintf(s->why[b], sizeof s->why[b], "%s", err.msg);
