@@ -25,7 +25,7 @@ add_library(hfs_display STATIC
 target_include_directories(hfs_display PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_compile_definitions(hfs_display PRIVATE HFS_BUILDING_LIBRARY)
 target_link_libraries(hfs_display PUBLIC hfs_base hfshade_io
-                      PRIVATE hfs_gl hfs_board PkgConfig::HFS_EGL m)
+                      PRIVATE hfs_gl hfs_glctx PkgConfig::HFS_EGL m)
 
 set(hfs_displays "headless")
 if(HFS_X11_FOUND)

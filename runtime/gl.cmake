@@ -1,7 +1,7 @@
 # gl.cmake — hfs_gl: the GL ES 3.0 function table (gl_api.c), GL helpers
 # (gl_util.c) and the shaders of ../shaders_es embedded as C (weston style).
 # No GL, EGL or OSMesa library is linked: entry points come from a context
-# at run time (board/gl_context.h).  Only the Khronos headers are needed.
+# at run time (runtime/gl/gl_context.h).  Only the Khronos headers are needed.
 #
 # Shaders: every shaders_es/<stem>.<vert|frag>.glsl becomes the embedded
 # source "<stem>.<vert|frag>" (gl_shaders.h).  With glslangValidator

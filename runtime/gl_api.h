@@ -7,7 +7,7 @@
  * libGLESv2 could reach the wrong driver.  Nothing here links a GL library;
  * <GLES3/gl3.h> is used with GL_GLES_PROTOTYPES 0 for its types only.
  *
- * Usage (board/gl_context.h):
+ * Usage (runtime/gl/gl_context.h):
  *   hfs_gl gl;
  *   if (hfs_gl_load(&gl, hfs_gl_context_loader, ctx, err)) ...
  *   gl.Viewport(0, 0, w, h);

@@ -1,7 +1,7 @@
 # gles.cmake — hfs_gles: the GLES renderer backend (issue 3; DESIGN.md
 # "GLES path").  Included at the end of gl.cmake (needs hfs_gl, hfs_sh's
 # generated GLSL product, hfs_cpu's layout/visibility functions and, from
-# ../board, hfs_board for contexts).
+# runtime/gl/, hfs_glctx for contexts).
 #
 #   gl_caps.c        capability layer: driver x target profile (gl_caps.h)
 #   gles_setup.c     CPU side of a frame: layout, fp16 split, std140 blocks
@@ -114,4 +114,4 @@ add_library(hfs_gles STATIC
 add_dependencies(hfs_gles hfs_gles_shaders)
 target_include_directories(hfs_gles PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_compile_definitions(hfs_gles PRIVATE HFS_BUILDING_LIBRARY)
-target_link_libraries(hfs_gles PUBLIC hfs_gl hfs_board hfs_cpu hfs_sh hfs_base m)
+target_link_libraries(hfs_gles PUBLIC hfs_gl hfs_glctx hfs_cpu hfs_sh hfs_base m)

@@ -1,10 +1,10 @@
 /*
  * gl_test.h — how a GL test gets its renderer or context, and the one rule
- * for skipping (board/gl_require.h): exit 77 only when no GLES context of
+ * for skipping (runtime/gl/gl_require.h): exit 77 only when no GLES context of
  * any kind can be made here; every other failure fails the test (exit 1),
  * and with HFS_REQUIRE_GL=1 (CI) even that does.
  *
- * Header-only (static inline); link hfs_board.
+ * Header-only (static inline); link hfs_glctx.
  */
 #ifndef HFS_TEST_GL_TEST_H
 #define HFS_TEST_GL_TEST_H

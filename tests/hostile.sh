@@ -360,7 +360,7 @@ rm -f "$in/f.pfm" "$in/f.hdr" "$in/f.ini" "$in/f.exr" "$in/sock.pfm"
 
 # ---- kiosk -----------------------------------------------------------------------------------
 # The kiosk renders with GLES: without any GLES context on this machine its
-# cases cannot run (board/gl_require.h: HFS_REQUIRE_GL=1 makes that a failure).
+# cases cannot run (runtime/gl/gl_require.h: HFS_REQUIRE_GL=1 makes that a failure).
 if ! "$HFSHADE" info >/dev/null 2>&1; then
     if [ "${HFS_REQUIRE_GL:-0}" = 1 ]; then
         echo "FAIL [kiosk]: no GLES context, and HFS_REQUIRE_GL=1"; fails=$((fails + 1))

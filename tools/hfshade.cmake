@@ -1,6 +1,6 @@
 # The hfshade command-line tool.
 add_executable(hfshade ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.c)
-target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfshade_scene_load hfs_board)
+target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfshade_scene_load hfs_glctx)
 
 # Deterministic procedural height fields for tests and benchmarks: the
 # generators (one definition for hfgen, tests and benchmarks) and the tool.

@@ -27,7 +27,7 @@
  * [their bounds] ("!" marks the one that failed); a summary; exit 1 on any
  * failure, 77 when nothing could run (no backend available), 2 on usage.
  * A GLES backend that cannot be made counts as a failure unless no GLES
- * context of any kind can be made here (board/gl_require.h; HFS_REQUIRE_GL=1
+ * context of any kind can be made here (runtime/gl/gl_require.h; HFS_REQUIRE_GL=1
  * makes that a failure too) or, for the es32 ones, the driver is below 3.2.
  * --fast is the CI subset (ctest label "stress").
  */

@@ -136,7 +136,7 @@ typedef struct stress_backends {
     int state[BK_COUNT];        /* 0 untried, 1 ready, -1 unavailable       */
     char why[BK_COUNT][600];    /* why unavailable                          */
     int broken[BK_COUNT];       /* unavailable though the machine could run
-                                   it (board/gl_require.h): a failure       */
+                                   it (runtime/gl/gl_require.h): a failure       */
     int subsample;              /* GLES visibility grid step; 0 = default   */
 } stress_backends;
 

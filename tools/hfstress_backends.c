@@ -94,7 +94,7 @@ static int probe(stress_backends *s, int b, hfs_error *err)
 }
 
 /* Whether backend b's failure to be created is the machine's, not the
- * product's (board/gl_require.h): no GLES context of any kind here, or a
+ * product's (runtime/gl/gl_require.h): no GLES context of any kind here, or a
  * driver below ES 3.2 refusing the es32 profile with the capability layer's
  * line.  Anything else counts as a failed check. */
 static int excused(int b, int rc, const hfs_error *err)
