@@ -267,6 +267,8 @@ F repeat_exposure "--exposure" $R -o "$out/a.png" --exposure 1 --exposure 2
 F repeat_key_flag "--dx" $R -o "$out/a.png" --dx 1 --dx 2
 F repeat_height "--height" $R --height "$in/h.pfm" -o "$out/a.png"
 F repeat_time "--time" $R -o "$out/a.png" --time 1 --time 2
+run flags repeatable_keys ok "" "out/a.pfm" -- "$HFSHADE" $R --pfm "$out/a.pfm" --quiet \
+    --key 30,20,2,10 --key 200,40,3,5 --local 5,5,8,1,50 --local 15,12,6,1,20
 F missing_value "--dx" $R -o "$out/a.png" --dx
 F unknown "--bogus" $R -o "$out/a.png" --bogus 1
 F exposure_neg "--exposure" $R -o "$out/a.png" --exposure -1

@@ -90,8 +90,10 @@ static const char *flag_name(const char *a)
     return a[1] == '-' ? a + 2 : a + 1;
 }
 
-/* A flag given twice is an error (like a repeated scene key): the last one
- * silently winning hides a typo in a long command line. */
+/* A tool option (-o, --pfm, --exposure, --time, --colormap) given twice is
+ * an error, like a repeated scene key: the last one silently winning hides a
+ * typo in a long command line.  Scene keys are the scene layer's to judge
+ * (hfs_scene_set: key and local are repeatable, the others are not). */
 static int check_repeats(int argc, char **argv, hfs_error *err)
 {
     for (int i = 2; i < argc; ++i) {
@@ -99,6 +101,10 @@ static int check_repeats(int argc, char **argv, hfs_error *err)
         if (!name)
             continue;
         const int takes_value = strcmp(name, "quiet") && strcmp(name, "help") && strcmp(name, "h");
+        if (hfs_scene_is_key(name)) {
+            i += takes_value;
+            continue;
+        }
         for (int j = 2; j < i; ++j) {
             const char *prev = flag_name(argv[j]);
             if (prev && !strcmp(prev, name))

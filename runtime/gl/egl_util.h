@@ -1,5 +1,5 @@
 /*
- * egl_util.h — small EGL helpers shared by the board's EGL users (the
+ * egl_util.h — small EGL helpers shared by the EGL users (the library's
  * surfaceless context and the x11/kms displays).
  */
 #ifndef HFS_BOARD_EGL_UTIL_H

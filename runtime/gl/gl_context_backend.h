@@ -1,6 +1,6 @@
 /*
  * gl_context_backend.h — what a context backend implements (private to
- * board/).  gl_context.c picks a backend by name and does everything common:
+ * runtime/gl/).  gl_context.c picks a backend by name and does everything common:
  * error prefixes, reading the GL strings, checking the GL is ES 3.0-capable.
  *
  * A backend object embeds struct hfs_gl_context as its first member, so the
