@@ -31,7 +31,7 @@ int hfs_frame_to_rgba8(const hfs_image *img, const hfs_png_opts *opts, uint8_t *
 
     for (size_t j = 0; j < h; ++j) {
         const float *src = img->rgb + j * w * 3;
-        uint8_t *dst = rgba + (h - 1 - j) * w * 4; /* row j = 0 at the bottom */
+        uint8_t *dst = rgba + j * w * 4; /* row j = 0 at the top (SPEC) */
         for (size_t i = 0; i < w; ++i) {
             for (int c = 0; c < 3; ++c)
                 dst[4 * i + c] = hfs_srgb8_encode(src[3 * i + c], exposure, tm);

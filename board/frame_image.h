@@ -2,11 +2,11 @@
  * frame_image.h — a render (linear RGB floats, hfs_image) made into the
  * picture a display shows (sRGB RGBA8, hfs_display_present).
  *
- * Which way is up: SPEC fixes the grid (row j = 0 is y = 0), not the screen.
- * We show the field like a map: +x to the right, +y UP, so row j = 0 is the
- * BOTTOM row of the picture and picture row 0 (the top) is j = height - 1.
- * (The PNG writer, hfs_png_write, keeps file order instead: its top row is
- * j = 0.  A frame and that PNG are the same bytes with the rows reversed.)
+ * Which way is up: SPEC ("Orientation"): every picture -- PNG, kiosk frame,
+ * window -- shows row j = 0 at the top, as the source image does (a
+ * north-up DEM stays north-up).  A frame and the PNG `hfshade render -o`
+ * writes are the same pixels in the same order.  (Before issue 14 frames
+ * were flipped, so the kiosk showed a DEM mirrored north-south.)
  *
  * Colour: per channel exactly hfs_png_write's mapping (hfs_srgb8_encode in
  * runtime/io: exposure, clamp or Reinhard, sRGB OETF, round), alpha 255, so

@@ -63,3 +63,15 @@ if(TARGET hfshade-kiosk)
                  "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
   endif()
 endif()
+
+# Issue 14: the kiosk's headless frame and `hfshade render -o` are the same
+# picture, row j = 0 at the top (tests/orientation.sh).
+if(TARGET hfshade-kiosk)
+  add_executable(png_same_picture ${CMAKE_CURRENT_LIST_DIR}/png_same_picture.c)
+  target_link_libraries(png_same_picture PRIVATE PkgConfig::HFS_PNG)
+  add_test(NAME orientation
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/orientation.sh
+                   $<TARGET_FILE:hfshade> $<TARGET_FILE:hfgen> $<TARGET_FILE:hfshade-kiosk>
+                   $<TARGET_FILE:png_same_picture>)
+  set_tests_properties(orientation PROPERTIES LABELS io TIMEOUT 120)
+endif()

@@ -1,8 +1,9 @@
 /*
  * test_display_frame.c — the display's pure parts (label "unit"):
  *   - frame_image: the picture equals the PNG writer's bytes for the same
- *     render (clamp and Reinhard, exposure), rows reversed (row j = 0 at
- *     the bottom), alpha 255; bad inputs are refused without writing.
+ *     render (clamp and Reinhard, exposure), in the same row order (row
+ *     j = 0 at the top, SPEC), alpha 255; bad inputs are refused without
+ *     writing.
  *   - overlay: the exact pixels of a digit at scale 1 and 2, the box, and
  *     clipping at every edge (ASan checks the writes).
  *   - the fit of a picture on a screen (1:1, integer, letterbox, pillarbox).
@@ -40,7 +41,7 @@ static void check_frame_vs_png(const hfs_png_opts *o, const char *path)
     CHECK(png && pw == W && ph == H, "%s: cannot read back", path);
     for (int j = 0; png && j < H; ++j)
         for (int i = 0; i < W; ++i) {
-            const uint8_t *f = frame + ((size_t)(H - 1 - j) * W + (size_t)i) * 4;
+            const uint8_t *f = frame + ((size_t)j * W + (size_t)i) * 4;
             const uint8_t *p = png + ((size_t)j * W + (size_t)i) * 4;
             CHECK(!memcmp(f, p, 3), "texel (%d,%d): frame %u,%u,%u png %u,%u,%u", i, j, f[0],
                   f[1], f[2], p[0], p[1], p[2]);
