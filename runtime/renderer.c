@@ -1,6 +1,7 @@
 /*
  * renderer.c — the public renderer object: validates every input once and
- * dispatches to a backend (backends.h).  Backends may assume valid inputs.
+ * dispatches to a backend (backends.h) through one table of backend
+ * operations.  Backends may assume valid inputs.
  */
 #include "backends.h"
 
@@ -10,11 +11,82 @@
 #include <string.h>
 #include <time.h>
 
+/* ---- backends as a table (like board/display_backend.h) ---------------------------
+ * Every backend is one row: its name, how it is made and destroyed, how it
+ * renders, and the GLES-only controls (NULL where a backend has none: the
+ * CPU reference and the ground truth render every frame from scratch and
+ * are timed here by wall clock). */
+typedef struct backend_ops {
+    const char *name;
+    int (*create)(const hfs_renderer_desc *d, void **state, hfs_error *err); /* NULL: none */
+    void (*destroy)(void *state);
+    int (*render)(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                  hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err);
+    void (*set_timing)(void *state, int level);
+    void (*set_amortize)(void *state, int passes_per_frame);
+    void (*set_timing_finish)(void *state, int finish);
+    void (*timings)(const void *state, hfs_timings *out);
+    void (*invalidate)(void *state);
+    void (*frame_report)(const void *state, hfs_frame_report *out);
+} backend_ops;
+
+static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                      hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
+{
+    (void)state;
+    return hfs_cpu_render(f, l, q, out, progress, user, err);
+}
+
+static int truth_render(void *state, const hfs_field *f, const hfs_lighting *l,
+                        const hfs_quality *q, hfs_image *out, hfs_progress_fn progress, void *user,
+                        hfs_error *err)
+{
+    (void)state;
+    return hfs_truth_render(f, l, q, out, progress, user, err);
+}
+
+static int gles_create(const hfs_renderer_desc *d, void **state, hfs_error *err)
+{
+    const char *env = getenv("HFS_GL_STRICT_LIMITS");
+    const int strict = (d && d->gl_strict_limits) || (env && !strcmp(env, "1"));
+    hfs_gles *g = NULL;
+    const int rc = hfs_gles_create(d ? d->context : NULL, d ? d->gl_profile : NULL, strict, &g, err);
+    *state = g;
+    return rc;
+}
+static void gles_destroy(void *state) { hfs_gles_destroy(state); }
+static int gles_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                       hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
+{
+    const int rc = hfs_gles_render(state, f, l, q, out, err);
+    if (!rc && progress)
+        progress(user, 1.0); /* one GPU frame: no finer progress to report */
+    return rc;
+}
+static void gles_set_timing(void *state, int level) { hfs_gles_set_timing(state, level); }
+static void gles_set_amortize(void *state, int n) { hfs_gles_set_amortize(state, n); }
+static void gles_set_timing_finish(void *state, int f) { hfs_gles_set_timing_finish(state, f); }
+static void gles_timings(const void *state, hfs_timings *out) { hfs_gles_get_timings(state, out); }
+static void gles_invalidate(void *state) { hfs_gles_invalidate(state); }
+static void gles_frame_report(const void *state, hfs_frame_report *out)
+{
+    hfs_gles_frame_report(state, out);
+}
+
+static const backend_ops backends[] = {
+    [HFS_BACKEND_GLES] = {"gles", gles_create, gles_destroy, gles_render, gles_set_timing,
+                          gles_set_amortize, gles_set_timing_finish, gles_timings,
+                          gles_invalidate, gles_frame_report},
+    [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL},
+    [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL, NULL},
+};
+#define N_BACKENDS ((int)(sizeof backends / sizeof backends[0]))
+
 struct hfs_renderer {
-    hfs_backend backend;
-    hfs_gles *gles;          /* HFS_BACKEND_GLES only */
+    const backend_ops *ops;
+    void *state;             /* the backend's own object (NULL if it has none) */
     int timing;
-    hfs_timings timings;     /* CPU backends: the last timed frame */
+    hfs_timings timings;     /* backends without timings of their own: the last timed frame */
 };
 
 static double wall_ms(void)
@@ -24,33 +96,20 @@ static double wall_ms(void)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
-static const char *backend_name(hfs_backend b)
-{
-    switch (b) {
-    case HFS_BACKEND_GLES: return "gles";
-    case HFS_BACKEND_CPU: return "cpu";
-    case HFS_BACKEND_TRUTH: return "truth";
-    default: return "default";
-    }
-}
-
 int hfs_renderer_create(const hfs_renderer_desc *desc, hfs_renderer **out, hfs_error *err)
 {
     *out = NULL;
     hfs_backend b = desc ? desc->backend : HFS_BACKEND_DEFAULT;
     if (b == HFS_BACKEND_DEFAULT)
         b = HFS_BACKEND_GLES; /* the product */
-    if (b != HFS_BACKEND_CPU && b != HFS_BACKEND_TRUTH && b != HFS_BACKEND_GLES)
+    if ((int)b < 0 || (int)b >= N_BACKENDS || !backends[b].render)
         return hfs_fail(err, HFS_E_INVALID, "backend %d: unknown", (int)b);
     hfs_renderer *r = calloc(1, sizeof *r);
     if (!r)
         return hfs_fail(err, HFS_E_NOMEM, "renderer: out of memory");
-    r->backend = b;
-    if (b == HFS_BACKEND_GLES) {
-        const char *env = getenv("HFS_GL_STRICT_LIMITS");
-        const int strict = (desc && desc->gl_strict_limits) || (env && !strcmp(env, "1"));
-        int rc = hfs_gles_create(desc ? desc->context : NULL, desc ? desc->gl_profile : NULL,
-                                 strict, &r->gles, err);
+    r->ops = &backends[b];
+    if (r->ops->create) {
+        const int rc = r->ops->create(desc, &r->state, err);
         if (rc) {
             free(r);
             return rc;
@@ -64,13 +123,14 @@ void hfs_renderer_destroy(hfs_renderer *r)
 {
     if (!r)
         return;
-    hfs_gles_destroy(r->gles);
+    if (r->ops->destroy)
+        r->ops->destroy(r->state);
     free(r);
 }
 
 const char *hfs_renderer_backend_name(const hfs_renderer *r)
 {
-    return backend_name(r->backend);
+    return r->ops->name;
 }
 
 int hfs_renderer_set_timing(hfs_renderer *r, int level)
@@ -78,8 +138,8 @@ int hfs_renderer_set_timing(hfs_renderer *r, int level)
     if (!r || level < 0 || level > 2)
         return HFS_E_INVALID;
     r->timing = level;
-    if (r->gles)
-        hfs_gles_set_timing(r->gles, level);
+    if (r->ops->set_timing)
+        r->ops->set_timing(r->state, level);
     return HFS_OK;
 }
 
@@ -87,8 +147,8 @@ int hfs_renderer_set_amortize(hfs_renderer *r, int passes_per_frame)
 {
     if (!r || passes_per_frame < 0)
         return HFS_E_INVALID;
-    if (r->gles)
-        hfs_gles_set_amortize(r->gles, passes_per_frame);
+    if (r->ops->set_amortize)
+        r->ops->set_amortize(r->state, passes_per_frame);
     return HFS_OK;
 }
 
@@ -96,8 +156,8 @@ int hfs_renderer_set_timing_finish(hfs_renderer *r, int finish)
 {
     if (!r || finish < 0 || finish > 1)
         return HFS_E_INVALID;
-    if (r->gles)
-        hfs_gles_set_timing_finish(r->gles, finish);
+    if (r->ops->set_timing_finish)
+        r->ops->set_timing_finish(r->state, finish);
     return HFS_OK;
 }
 
@@ -105,8 +165,8 @@ int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out)
 {
     if (!r || !out)
         return HFS_E_INVALID;
-    if (r->gles)
-        hfs_gles_get_timings(r->gles, out);
+    if (r->ops->timings)
+        r->ops->timings(r->state, out);
     else
         *out = r->timings;
     return HFS_OK;
@@ -114,16 +174,16 @@ int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out)
 
 void hfs_renderer_invalidate(hfs_renderer *r)
 {
-    if (r && r->gles)
-        hfs_gles_invalidate(r->gles);
+    if (r && r->ops->invalidate)
+        r->ops->invalidate(r->state);
 }
 
 int hfs_renderer_frame_report(const hfs_renderer *r, hfs_frame_report *out)
 {
     if (!r || !out)
         return HFS_E_INVALID;
-    if (r->gles) {
-        hfs_gles_frame_report(r->gles, out);
+    if (r->ops->frame_report) {
+        r->ops->frame_report(r->state, out);
         return HFS_OK;
     }
     memset(out, 0, sizeof *out);
@@ -224,24 +284,9 @@ int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
     if (!out || !out->rgb || out->width != f->width || out->height != f->height)
         return hfs_fail(err, HFS_E_INVALID, "render: output image is not %dx%d", f->width, f->height);
     const double t0 = wall_ms();
-    switch (r->backend) {
-    case HFS_BACKEND_CPU:
-        rc = hfs_cpu_render(f, l, q, out, progress, user, err);
-        break;
-    case HFS_BACKEND_TRUTH:
-        rc = hfs_truth_render(f, l, q, out, progress, user, err);
-        break;
-    case HFS_BACKEND_GLES:
-        rc = hfs_gles_render(r->gles, f, l, q, out, err);
-        if (!rc && progress)
-            progress(user, 1.0);
-        break;
-    default:
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "backend %s: not available", backend_name(r->backend));
-    }
-    if (rc)
+    if ((rc = r->ops->render(r->state, f, l, q, out, progress, user, err)))
         return rc;
-    if (r->timing && !r->gles) {
+    if (r->timing && !r->ops->timings) {
         hfs_timings *t = &r->timings;
         memset(t, 0, sizeof *t);
         t->n_passes = 1;
@@ -249,9 +294,9 @@ int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
         t->pass[0].ms = t->gpu_ms = t->frame_ms = wall_ms() - t0;
         t->pass[0].fetches = -1.0;
         snprintf(t->method, sizeof t->method, "wall");
-        snprintf(t->device, sizeof t->device, "%s", backend_name(r->backend));
+        snprintf(t->device, sizeof t->device, "%s", r->ops->name);
     }
-    return check_output(out, backend_name(r->backend), err);
+    return check_output(out, r->ops->name, err);
 }
 
 int hfs_render_unshadowed(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
