@@ -1685,10 +1685,8 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
 
     /* Shading. */
     double bound = 0.0;
-    /* HfsShade: u_env[12], u_misc, u_env_neg, u_kle[8], u_topen[4], u_lle[16] */
-    float shade[(26 + HFS_MAX_LOCAL_LIGHTS) * 4];
-    _Static_assert(HFS_MAX_LOCAL_LIGHTS == 16, "gles_shade.frag: u_lle[16]");
-    memset(shade, 0, sizeof shade);
+    hfs_gles_shade_block sb;
+    memset(&sb, 0, sizeof sb);
     if (fr->has_env) {
         double m = 0.0;
         for (int c = 0; c < 3; ++c) {
@@ -1726,22 +1724,22 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_quality *q, h
     const double out_scale = hfs_gles_output_scale(bound);
     for (int c = 0; c < 3 && fr->has_env; ++c)
         for (int k = 0; k < HFS_SH_N; ++k)
-            shade[c * 16 + k] = (float)(fr->l_env[c][k] * out_scale);
-    shade[48] = (float)fr->rho_pi;
-    shade[49] = 1.0f; /* the scale is in the radiances */
-    shade[50] = fr->has_env ? 1.0f : 0.0f;
+            sb.env[c][k] = (float)(fr->l_env[c][k] * out_scale);
+    sb.misc[0] = (float)fr->rho_pi;
+    sb.misc[1] = 1.0f; /* the scale is in the radiances */
+    sb.misc[2] = fr->has_env ? 1.0f : 0.0f;
     for (int c = 0; c < 3 && fr->has_env; ++c) /* cpu_render.c env_clamp */
-        shade[52 + c] =
+        sb.env_neg[c] =
             (float)(fr->rho_pi * PI * hfs_sh_negative_bound(fr->l_env[c]) * out_scale);
     for (int i = 0; i < fr->n_keys; ++i) /* rho/pi Le E_max: the factor's scale */
         for (int c = 0; c < 3; ++c)
-            shade[56 + 4 * i + c] = (float)(fr->rho_pi * fr->keys[i].k.le[c] *
-                                            key_emax(&fr->keys[i].k) * out_scale);
-    hfs_gles_open_transfer(shade + 88);
-    for (int i = 0; i < fr->n_local; ++i) /* u_lle: Le, scaled */
+            sb.kle[i][c] = (float)(fr->rho_pi * fr->keys[i].k.le[c] *
+                                   key_emax(&fr->keys[i].k) * out_scale);
+    hfs_gles_open_transfer(sb.topen);
+    for (int i = 0; i < fr->n_local; ++i)
         for (int c = 0; c < 3; ++c)
-            shade[104 + 4 * i + c] = (float)(fr->local[i].radiance[c] * out_scale);
-    ubo_upload(gl, g->ubo[UBO_SHADE], shade, sizeof shade);
+            sb.lle[i][c] = (float)(fr->local[i].radiance[c] * out_scale);
+    ubo_upload(gl, g->ubo[UBO_SHADE], &sb, sizeof sb);
 
     char nkeys[32];
     snprintf(nkeys, sizeof nkeys, "HFS_NKEYS %d", fr->n_keys);

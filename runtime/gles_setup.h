@@ -153,4 +153,26 @@ double hfs_gles_output_scale(double bound);
  * adds it to the stored occluded part (gles_transfer.frag). */
 void hfs_gles_open_transfer(float dst[16]);
 
+/* The shading pass's uniform block HfsShade (gles_shade.frag.glsl), std140,
+ * by name: every member is a vec4 array there, so the C layout (floats,
+ * no padding) is the std140 one; the asserts pin the offsets the shader
+ * relies on.  Radiances (env, env_neg, kle, lle) come multiplied by the
+ * frame's power-of-two output scale. */
+typedef struct hfs_gles_shade_block {
+    float env[3][16];                   /* u_env[12]: L_env, 4 vec4 per channel  */
+    float misc[4];                      /* u_misc: (rho/pi, 1, has env, 0)        */
+    float env_neg[4];                   /* u_env_neg: rho * negative part of L_c  */
+    float kle[HFS_MAX_KEY_LIGHTS][4];   /* u_kle[8]: rho/pi Le E_max per key      */
+    float topen[16];                    /* u_topen[4]: k_l per coefficient        */
+    float lle[HFS_MAX_LOCAL_LIGHTS][4]; /* u_lle[16]: Le per local light          */
+} hfs_gles_shade_block;
+_Static_assert(HFS_MAX_KEY_LIGHTS == 8 && HFS_MAX_LOCAL_LIGHTS == 16,
+               "gles_shade.frag.glsl declares u_kle[8] and u_lle[16]");
+_Static_assert(offsetof(hfs_gles_shade_block, misc) == 12 * 16, "HfsShade.u_misc");
+_Static_assert(offsetof(hfs_gles_shade_block, env_neg) == 13 * 16, "HfsShade.u_env_neg");
+_Static_assert(offsetof(hfs_gles_shade_block, kle) == 14 * 16, "HfsShade.u_kle");
+_Static_assert(offsetof(hfs_gles_shade_block, topen) == 22 * 16, "HfsShade.u_topen");
+_Static_assert(offsetof(hfs_gles_shade_block, lle) == 26 * 16, "HfsShade.u_lle");
+_Static_assert(sizeof(hfs_gles_shade_block) == 42 * 16, "HfsShade size");
+
 #endif /* HFS_GLES_SETUP_H */
