@@ -1170,7 +1170,7 @@ static int local_upload(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality
                         const frame *fr, hfs_error *err)
 {
     const int nphi = q->nphi_local;
-    const size_t n4 = 16 + 2 + 2 * HFS_MAX_LOCAL_LIGHTS + 3 * (size_t)nphi;
+    const size_t n4 = sizeof(hfs_gles_local_block) / 16 + 3 * (size_t)nphi;
     int rc;
     if ((rc = hfs_gl_caps_check_uniform_block(&g->caps, n4 * 16,
                                               "local lights (--nphi-local)", err)))
@@ -1179,36 +1179,36 @@ static int local_upload(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality
     if (!u)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
     memset(u, 0, n4 * 16);
+    hfs_gles_local_block *lb = (hfs_gles_local_block *)u;
     double E[HFS_SH_N * HFS_NLP_N];
+    _Static_assert(HFS_SH_N * HFS_NLP_N == 16 * 4, "u_lE[16]");
     hfs_local_elevation_moments(E);
     for (int i = 0; i < HFS_SH_N * HFS_NLP_N; ++i)
-        u[i] = (float)E[i];
-    float *gq = u + 64;
+        lb->moments[i / 4][i % 4] = (float)E[i];
     /* Lengths in texel units (dx = 1): the shaders' float arithmetic is then
      * the same for a scene scaled as a whole (dx, zscale and the lights
      * together), so knife-edge decisions (a scale exactly at a light's
      * entry distance) fall the same way at every scale. */
     const double inv_dx = 1.0 / L->dx;
-    gq[0] = 1.0f;
-    gq[1] = (float)L->base;
-    gq[2] = (float)L->hscale;
-    gq[3] = (float)(L->zscale * inv_dx);
-    gq[4] = (float)nphi;
-    gq[5] = q->local_full_swath ? 1.0f : 0.0f;
-    float *lt = u + 72;
+    lb->geom[0] = 1.0f;
+    lb->geom[1] = (float)L->base;
+    lb->geom[2] = (float)L->hscale;
+    lb->geom[3] = (float)(L->zscale * inv_dx);
+    lb->swath[0] = (float)nphi;
+    lb->swath[1] = q->local_full_swath ? 1.0f : 0.0f;
     for (int i = 0; i < fr->n_local; ++i) {
-        for (int c = 0; c < 3; ++c) {
-            lt[8 * i + c] = (float)(fr->local[i].pos[c] * inv_dx);
-            lt[8 * i + 4 + c] = fr->local[i].radiance[c];
-        }
-        lt[8 * i + 3] = (float)(fr->local[i].radius * inv_dx);
-        lt[8 * i + 7] = fr->local_open[i] ? 1.0f : 0.0f; /* ratio 1, none stored */
+        for (int c = 0; c < 3; ++c)
+            lb->lights[i][0][c] = (float)(fr->local[i].pos[c] * inv_dx);
+        lb->lights[i][0][3] = (float)(fr->local[i].radius * inv_dx);
+        /* Le is the shading block's (u_lle, scaled); here only whether
+         * the terrain can shadow the light at all (ratio 1, none stored). */
+        lb->lights[i][1][3] = fr->local_open[i] ? 1.0f : 0.0f;
     }
     hfs_swath sw;
     hfs_swath_full(nphi, &sw);
     float *cs = u + n4 * 4;
     hfs_gles_swath_float_dirs(L, &sw, cs);
-    float *dirs = u + 72 + 8 * HFS_MAX_LOCAL_LIGHTS;
+    float *dirs = u + sizeof(hfs_gles_local_block) / sizeof(float); /* u_ldir */
     for (int k = 0; k < nphi; ++k) {
         dirs[4 * k] = cs[2 * k];
         dirs[4 * k + 1] = cs[2 * k + 1];

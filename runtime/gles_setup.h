@@ -175,4 +175,20 @@ _Static_assert(offsetof(hfs_gles_shade_block, topen) == 22 * 16, "HfsShade.u_top
 _Static_assert(offsetof(hfs_gles_shade_block, lle) == 26 * 16, "HfsShade.u_lle");
 _Static_assert(sizeof(hfs_gles_shade_block) == 42 * 16, "HfsShade size");
 
+/* The fixed head of the local-light block HfsLocal (gles_local.frag.glsl and
+ * gles_shade.frag.glsl), std140, by name; u_ldir[nphi_local] follows it,
+ * one vec4 (cos, sin, 0, 0) per direction of the full swath.  Lengths are in
+ * texel units (dx = 1). */
+typedef struct hfs_gles_local_block {
+    float moments[16][4];   /* u_lE[16]: elevation moments, row r = E[r][0..3]     */
+    float geom[4];          /* u_lg: (1, base, hscale, zscale / dx)                 */
+    float swath[4];         /* u_lq: (nphi_local, forced full swath, 0, 0)          */
+    float lights[HFS_MAX_LOCAL_LIGHTS][2][4]; /* u_lights: (centre.xyz, radius),
+                                                 (-, -, -, open: no shadow possible) */
+} hfs_gles_local_block;
+_Static_assert(offsetof(hfs_gles_local_block, geom) == 16 * 16, "HfsLocal.u_lg");
+_Static_assert(offsetof(hfs_gles_local_block, swath) == 17 * 16, "HfsLocal.u_lq");
+_Static_assert(offsetof(hfs_gles_local_block, lights) == 18 * 16, "HfsLocal.u_lights");
+_Static_assert(sizeof(hfs_gles_local_block) == (18 + 2 * 16) * 16, "HfsLocal head size");
+
 #endif /* HFS_GLES_SETUP_H */

@@ -102,7 +102,7 @@ layout(std140) uniform HfsLocal {
     vec4 u_lE[16];                       /* elevation moments, row r = E[r][0..3] */
     vec4 u_lg;                           /* (1, base, hscale, zscale/dx): texel units */
     vec4 u_lq;                           /* (nphi_local, forced full swath, 0, 0) */
-    vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (Le.rgb, open) */
+    vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (-, -, -, open) */
     vec4 u_ldir[HFS_LOCAL_DIRS];         /* full swath: (cos, sin) of 2 pi k/n */
     vec4 u_lrot[2 * HFS_LOCAL_DIRS];     /* per wedge (cos ma), (sin ma), m = 1..3 */
 };
