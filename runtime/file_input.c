@@ -86,23 +86,25 @@ int hfs_read_text_file(const char *path, const char *what, long long max_bytes, 
         fclose(f);
         return hfs_fail(err, HFS_E_FORMAT, "%s: %s larger than %lld bytes", path, what, max_bytes);
     }
-    /* Read to the end, not to the stat size: the file may have grown, and a
-     * file that grows past max_bytes is refused the same way. */
-    char *buf = malloc((size_t)max_bytes + 2);
+    /* One byte more than fstat said: a file that grew while we read it is
+     * refused rather than read in part (the buffer is the file's size, not
+     * max_bytes: scene files are read at every reload and every fuzz run). */
+    const size_t want = (size_t)size + 1;
+    char *buf = malloc(want + 1);
     if (!buf) {
         fclose(f);
         return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", path);
     }
-    const size_t n = fread(buf, 1, (size_t)max_bytes + 1, f);
+    const size_t n = fread(buf, 1, want, f);
     const int bad = ferror(f);
     fclose(f);
     if (bad) {
         free(buf);
         return hfs_fail(err, HFS_E_IO, "%s: read error in the %s", path, what);
     }
-    if (n > (size_t)max_bytes) {
+    if (n == want) {
         free(buf);
-        return hfs_fail(err, HFS_E_FORMAT, "%s: %s larger than %lld bytes", path, what, max_bytes);
+        return hfs_fail(err, HFS_E_IO, "%s: the %s changed while it was read", path, what);
     }
     buf[n] = '\0';
     if (memchr(buf, '\0', n)) {
