@@ -1,12 +1,22 @@
+# hfs_shared: algorithm code every backend uses — azimuth swaths and their
+# visibility (visibility.c: NS09 Legendre and SN08 wedge tables), the height
+# pyramid's layout (pyramid_layout.c).  Neutral names: neither the CPU
+# reference nor the GLES path owns them.
+add_library(hfs_shared STATIC
+  ${CMAKE_CURRENT_SOURCE_DIR}/visibility.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/pyramid_layout.c)
+target_compile_definitions(hfs_shared PRIVATE HFS_BUILDING_LIBRARY)
+target_include_directories(hfs_shared PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(hfs_shared PUBLIC hfs_base hfs_sh)
+
 # hfs_cpu: the CPU reference renderer (DESIGN.md in double precision):
-# height pyramid, multi-scale horizons, swaths and visibility, shading.
+# height pyramid, multi-scale horizons, shading.
 # Included from runtime/CMakeLists.txt after sh.cmake (needs hfs_sh).
 add_library(hfs_cpu STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_pyramid.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_horizon.c
-  ${CMAKE_CURRENT_SOURCE_DIR}/cpu_visibility.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_render.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_local.c)   # local lights (issue 4)
 target_compile_definitions(hfs_cpu PRIVATE HFS_BUILDING_LIBRARY)
 target_include_directories(hfs_cpu PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(hfs_cpu PUBLIC hfs_base hfs_sh)
+target_link_libraries(hfs_cpu PUBLIC hfs_shared hfs_base hfs_sh)

@@ -20,7 +20,7 @@
 #include "cpu_local.h"
 
 #include "cpu_horizon.h"
-#include "cpu_visibility.h"
+#include "visibility.h"
 #include "field_geom.h"
 #include "lights.h"
 

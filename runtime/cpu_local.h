@@ -92,7 +92,7 @@ double hfs_local_entry_distance(const hfs_local_view *lv, double c, double s, do
 
 /* ---- swath and Legendre visibility ------------------------------------------------- */
 
-/* Same layout as hfs_swath (cpu_visibility.h): full = n samples at
+/* Same layout as hfs_swath (visibility.h): full = n samples at
  * phi0 + k dphi, dphi = 2 pi/n, hat functions of half-width dphi; partial = n
  * samples at phi0 + k dphi with boundary wedges of dphi/2 that fade to 0. */
 typedef struct hfs_local_swath {

@@ -114,4 +114,4 @@ add_library(hfs_gles STATIC
 add_dependencies(hfs_gles hfs_gles_shaders)
 target_include_directories(hfs_gles PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_compile_definitions(hfs_gles PRIVATE HFS_BUILDING_LIBRARY)
-target_link_libraries(hfs_gles PUBLIC hfs_gl hfs_glctx hfs_cpu hfs_sh hfs_base m)
+target_link_libraries(hfs_gles PUBLIC hfs_gl hfs_glctx hfs_shared hfs_cpu hfs_sh hfs_base m)

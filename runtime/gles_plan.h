@@ -38,7 +38,7 @@
 #ifndef HFS_GLES_PLAN_H
 #define HFS_GLES_PLAN_H
 
-#include "cpu_visibility.h"
+#include "visibility.h"
 #include "frame_plan.h"
 #include "hfshade.h"
 

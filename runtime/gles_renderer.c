@@ -28,7 +28,7 @@
  */
 #include "backends.h"
 #include "cpu_local.h"
-#include "cpu_visibility.h"
+#include "visibility.h"
 #include "field_geom.h"
 #include "gl_caps.h"
 #include "gl_context.h"
@@ -599,7 +599,7 @@ static void ubo_upload(const hfs_gl *gl, GLuint ubo, const void *data, size_t by
 
 /* ---- wedge tables --------------------------------------------------------------------- */
 
-/* Tables of extent dphi (boundary dphi/2), cached (cpu_visibility.c builds
+/* Tables of extent dphi (boundary dphi/2), cached (visibility.c builds
  * exactly these: hfs_wedge_tables_create_ext(dphi, dphi/2, 257)). */
 static hfs_wedge_tables *tables_get(hfs_gles *g, double dphi, hfs_error *err)
 {

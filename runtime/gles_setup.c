@@ -3,7 +3,7 @@
  */
 #include "gles_setup.h"
 
-#include "cpu_pyramid.h"
+#include "pyramid_layout.h"
 #include "gl_util.h"
 #include "sh.h"
 
@@ -162,7 +162,7 @@ void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, floa
     for (int w = 0; w < n_wedges; ++w) {
         hfs_swath_wedge wd;
         hfs_swath_get_wedge(s, w, &wd);
-        /* cpu_visibility.c table_placement: a start boundary wedge is the
+        /* visibility.c table_placement: a start boundary wedge is the
          * mirrored table wedge rotated to its inner end. */
         const int mirror = wd.a < 0;
         const double a = mirror ? wd.start + wd.extent : wd.start;

@@ -23,7 +23,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "cpu_visibility.h"
+#include "visibility.h"
 #include "hfshade.h"
 
 #define HFS_GLES_MAX_LEVELS 256

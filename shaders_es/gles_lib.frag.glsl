@@ -144,7 +144,7 @@ vec4 hfs_nlp_occ_tan(float t)
 }
 
 /* NLP vector of the visible band (max(omega, win.x), win.y]; occ_top is
- * hfs_nlp_occ(win.y) (cpu_visibility.c visible_nlp). */
+ * hfs_nlp_occ(win.y) (visibility.c visible_nlp). */
 vec4 hfs_visible(float omega, vec4 win, vec4 occ_top)
 {
     float o = max(omega, win.x);
@@ -257,7 +257,7 @@ float hfs_table_coord(float omega, float n)
 /* V += one wedge's table placed in the sky: the four layers layer0..+3 of
  * `tab` at uv (the wedge's horizon pair, hfs_table_coord), mirrored in y
  * when `mirror` (a start boundary wedge), rotated about z by (cos ma),
- * (sin ma) (runtime/cpu_visibility.c table_placement).  Shared by the
+ * (sin ma) (runtime/visibility.c table_placement).  Shared by the
  * environment, key and local passes' wedge-table paths. */
 void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror, vec3 c,
                    vec3 s, inout vec4 V[4])

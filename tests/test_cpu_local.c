@@ -23,7 +23,7 @@
 #include "cpu_horizon.h"
 #include "cpu_local.h"
 #include "cpu_pyramid.h"
-#include "cpu_visibility.h"
+#include "visibility.h"
 #include "field_geom.h"
 #include "lights.h"
 

@@ -1,5 +1,5 @@
 /*
- * test_cpu_visibility.c — swaths and horizons -> SH visibility, against
+ * test_visibility.c — swaths and horizons -> SH visibility, against
  * brute-force integration over the sphere:
  *   - swath layouts (full, partial, pole-covering key lights, tiny alpha);
  *   - full swath with a constant horizon omega: V is the exact SH projection
@@ -11,7 +11,7 @@
  *   - partial swath with every horizon at the (flat) floor: the swath window;
  *   - the fast form equals the wedge-by-wedge reference.
  */
-#include "cpu_visibility.h"
+#include "visibility.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -5,7 +5,7 @@
  *           requirements refused with a one-line message naming what is
  *           missing; limits are min(driver, profile) (ES 3.0 minimums for
  *           es30-*, the driver's for es32); formats follow the precision.
- *   layout  hfs_gles_layout_init agrees with cpu_pyramid.h for many sizes
+ *   layout  hfs_gles_layout_init agrees with pyramid_layout.h for many sizes
  *           and k/o (level count, sizes, spacings, read levels) and defines
  *           the visibility grid as DESIGN.md says.
  *   split   the fp16 hi+lo upload represents every normalized height to

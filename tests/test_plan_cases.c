@@ -17,7 +17,7 @@
  * Each planned image also equals a from-scratch one (test_plan_equal does
  * that at random).  No GLES context of any kind: exit 77 (gl_test.h).
  */
-#include "cpu_visibility.h"
+#include "visibility.h"
 #include "hfshade.h"
 #include "terrain_gen.h"
 

@@ -1,6 +1,6 @@
 /*
  * test_swath_oracle.c — hfs_swath_key / hfs_swath_full and the GLES swath
- * blocks against the CLOSED-FORM definition of the layout (cpu_visibility.h
+ * blocks against the CLOSED-FORM definition of the layout (visibility.h
  * and DESIGN.md "Azimuth swaths"), computed here from (phi, elev, alpha,
  * nphi_key, nphi_env) without calling the code under test:
  *
@@ -70,7 +70,7 @@
  */
 #include "lights.h"
 #include "test_sh_util.h" /* ref_legendre */
-#include "cpu_visibility.h"
+#include "visibility.h"
 #include "gles_setup.h"
 #include "hfshade.h"
 

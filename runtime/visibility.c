@@ -1,9 +1,9 @@
 /*
- * cpu_visibility.c — see cpu_visibility.h.  All SH math (M_lin, NLP vectors,
+ * visibility.c — see visibility.h.  All SH math (M_lin, NLP vectors,
  * wedge tables, z-rotation, mirroring) comes from sh.h; this file only lays
  * wedges out and sums them.
  */
-#include "cpu_visibility.h"
+#include "visibility.h"
 #include "lights.h"
 
 #include <math.h>

@@ -1,6 +1,8 @@
 /*
- * cpu_visibility.h — azimuth swaths and horizons -> SH visibility (DESIGN.md
- * "Azimuth swaths" and "Visibility to SH"), CPU reference.
+ * visibility.h — azimuth swaths and horizons -> SH visibility (DESIGN.md
+ * "Azimuth swaths" and "Visibility to SH"), shared by every backend: the CPU
+ * reference evaluates it in double, the GLES path packs the same swaths and
+ * folded matrices into its uniform blocks (gles_setup.h).
  *
  * Swath layout.
  *   Full swath (environment, and a key light whose disk covers a pole):
@@ -47,8 +49,8 @@
  * Ownership: create/destroy; destroy(NULL) is a no-op.  Immutable after
  * create: any number of threads may evaluate one object at once.
  */
-#ifndef HFS_CPU_VISIBILITY_H
-#define HFS_CPU_VISIBILITY_H
+#ifndef HFS_VISIBILITY_H
+#define HFS_VISIBILITY_H
 
 #include "hfshade.h"
 #include "sh.h"
@@ -125,4 +127,4 @@ void hfs_visibility_eval_reference(const hfs_visibility *v, const double *omega,
  * folded form, for upload (NULL for the table path). */
 const double *hfs_visibility_sample_matrix(const hfs_visibility *v, int j);
 
-#endif /* HFS_CPU_VISIBILITY_H */
+#endif /* HFS_VISIBILITY_H */
