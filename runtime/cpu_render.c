@@ -332,7 +332,7 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         n_key += hfs_key_light_contributes(&l->key[i], l->albedo);
     int n_local = 0; /* local lights (issue 4) */
     for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
-        n_local += hfs_cpu_local_contributes(&l->local[i]);
+        n_local += hfs_local_light_contributes(&l->local[i]);
     if ((!has_env && n_key == 0 && n_local == 0) || !(l->albedo > 0.0)) {
         memset(out->rgb, 0, (size_t)w * (size_t)h * 3 * sizeof *out->rgb);
         if (progress)

@@ -1895,7 +1895,7 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
         fk->k.l_norm = sqrt(hfs_sh_dot(fk->k.l_sh, fk->k.l_sh));
     }
     for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
-        if (hfs_cpu_local_contributes(&l->local[i]))
+        if (hfs_local_light_contributes(&l->local[i]))
             fr.local[fr.n_local++] = l->local[i];
     fr.rho_pi = l->albedo / PI;
     if ((!fr.has_env && fr.n_keys == 0 && fr.n_local == 0) || !(l->albedo > 0.0)) {

@@ -5,6 +5,13 @@
 
 #include <math.h>
 
+int hfs_local_light_contributes(const hfs_local_light *l)
+{
+    if (l->disabled || !(l->radius > 0.0))
+        return 0;
+    return l->radiance[0] > 0.0f || l->radiance[1] > 0.0f || l->radiance[2] > 0.0f;
+}
+
 double hfs_key_vis_alpha(double alpha)
 {
     return alpha > HFS_MIN_VIS_ALPHA ? alpha : HFS_MIN_VIS_ALPHA;

@@ -21,6 +21,11 @@ double hfs_cap_irradiance(double cos_beta, double alpha);
  * their output is 0 in any case. */
 int hfs_key_light_contributes(const hfs_key_light *k, double albedo);
 
+/* A local light costs something iff it is enabled, has a positive radiance
+ * channel and a positive radius (a point has zero solid angle: 0, as the
+ * truth).  Every backend skips exactly the same lights. */
+int hfs_local_light_contributes(const hfs_local_light *l);
+
 /* Smallest disk radius the visibility of a key light sees, in radians: 30
  * float ulps of pi/2, so that the elevation window e - alpha < e + alpha and
  * the swath's half-width stay apart at every elevation on the fp16/fp32 GLES
