@@ -142,7 +142,7 @@ int hfs_cpu_local_create(const hfs_field *f, const hfs_lighting *l, const hfs_qu
     lc->row_pass = lc->mode == HFS_LOCAL_SWATH_FULL || lc->path == HFS_VIS_WEDGE_TABLE;
     lc->rho = l->albedo;
     hfs_zh_clamped_cosine(lc->h_zonal);
-    hfs_local_elevation_moments(lc->E);
+    hfs_wedge_elevation_moments(lc->E);
     hfs_field_extent ext;
     hfs_field_extent_make(f, &ext);
     for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i) {

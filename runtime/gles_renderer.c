@@ -1182,7 +1182,7 @@ static int local_upload(hfs_gles *g, const hfs_gles_layout *L, const hfs_quality
     hfs_gles_local_block *lb = (hfs_gles_local_block *)u;
     double E[HFS_SH_N * HFS_NLP_N];
     _Static_assert(HFS_SH_N * HFS_NLP_N == 16 * 4, "u_lE[16]");
-    hfs_local_elevation_moments(E);
+    hfs_wedge_elevation_moments(E);
     for (int i = 0; i < HFS_SH_N * HFS_NLP_N; ++i)
         lb->moments[i / 4][i % 4] = (float)E[i];
     /* Lengths in texel units (dx = 1): the shaders' float arithmetic is then

@@ -110,28 +110,6 @@ void hfs_local_swath_make(const hfs_local_view *lv, int nphi_local,
     sw->phi0 = lv->phi_l - h + 0.5 * sw->dphi;
 }
 
-/* The same 32-node rule as sh_wedge.c's elevation_moments, so that the
- * closed-form fold below matches hfs_wedge_mlin to rounding. */
-void hfs_local_elevation_moments(double E[HFS_SH_N * HFS_NLP_N])
-{
-    enum { NODES = 32 };
-    double x[NODES], w[NODES];
-    hfs_gauss_legendre(NODES, x, w);
-    for (int i = 0; i < HFS_SH_N * HFS_NLP_N; ++i)
-        E[i] = 0.0;
-    for (int i = 0; i < NODES; ++i) {
-        const double e = 0.5 * PI * x[i];
-        const double z = sin(e), rho = cos(e);
-        const double wt = 0.5 * PI * w[i] * rho;
-        double el[HFS_SH_N], p[HFS_NLP_N];
-        hfs_sh_eval_elev(z, rho, el);
-        hfs_nlp_eval(z, p);
-        for (int r = 0; r < HFS_SH_N; ++r)
-            for (int c = 0; c < HFS_NLP_N; ++c)
-                E[r * HFS_NLP_N + c] += wt * el[r] * p[c];
-    }
-}
-
 /* integral_0^w (1 - u/w) cos(m u) du = 2 sin^2(m w/2) / (m^2 w). */
 static double tri_cos(double w, int m)
 {

@@ -64,9 +64,6 @@ void hfs_local_swath_make(const hfs_local_view *lv, int nphi_local,
                           hfs_local_swath_mode mode, hfs_visibility_path path,
                           hfs_local_swath *sw);
 
-/* Elevation moments E[r][c] = integral P^_c(sin e) elev_r(e) cos e de (the
- * constant factor of M_lin, sh_wedge.c), 16 x 4 row-major. */
-void hfs_local_elevation_moments(double E[HFS_SH_N * HFS_NLP_N]);
 
 /* Azimuthal weights A[r] = integral hat_k(phi) azim_r(phi) dphi of sample k
  * (hat of half-widths: the neighbouring spacing, dphi/2 at a partial swath's

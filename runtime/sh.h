@@ -167,6 +167,12 @@ void hfs_nlp_visible_band(double lo, double hi, double out[HFS_NLP_N]);
  * per dphi, not per texel. */
 void hfs_wedge_mlin(double dphi, double m[HFS_SH_N * 2 * HFS_NLP_N]);
 
+/* The elevation moments that M_lin factors into: E[r][c] = integral over
+ * e in [-pi/2, pi/2] of P^_c(sin e) elev_r(e) cos e de, 16 x 4 row-major
+ * (32-node Gauss rule: exact to rounding).  The local-light path folds
+ * M_lin per sample in closed form from the same numbers. */
+void hfs_wedge_elevation_moments(double E[HFS_SH_N * HFS_NLP_N]);
+
 /* M_bspl(dphi), 16x32 row-major, the same for the uniform cubic B-spline blend
  * of w_{j-1}, w_j, w_{j+1}, w_{j+2} (SN08's beta_0..beta_3 with u = a);
  * column 4q + c, q = 0..3 for w_{j-1} .. w_{j+2}. */

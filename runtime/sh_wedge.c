@@ -30,13 +30,12 @@
  * rule's error is far below rounding. */
 #define AZ_NODES 12
 
-static void elevation_moments(double E[HFS_SH_N][HFS_NLP_N])
+void hfs_wedge_elevation_moments(double E[HFS_SH_N * HFS_NLP_N])
 {
     double x[ELEV_NODES], w[ELEV_NODES];
     hfs_gauss_legendre(ELEV_NODES, x, w);
-    for (int r = 0; r < HFS_SH_N; ++r)
-        for (int c = 0; c < HFS_NLP_N; ++c)
-            E[r][c] = 0.0;
+    for (int i = 0; i < HFS_SH_N * HFS_NLP_N; ++i)
+        E[i] = 0.0;
     for (int i = 0; i < ELEV_NODES; ++i) {
         const double e = 0.5 * PI * x[i];
         const double z = sin(e), rho = cos(e);
@@ -46,7 +45,7 @@ static void elevation_moments(double E[HFS_SH_N][HFS_NLP_N])
         hfs_nlp_eval(z, p);
         for (int r = 0; r < HFS_SH_N; ++r)
             for (int c = 0; c < HFS_NLP_N; ++c)
-                E[r][c] += wt * el[r] * p[c];
+                E[r * HFS_NLP_N + c] += wt * el[r] * p[c];
     }
 }
 
@@ -75,8 +74,8 @@ static void wedge_matrix(double dphi, int nq, blend_fn blend, double *m)
         m[i] = 0.0;
     if (!(dphi > 0.0) || dphi > 2.0 * PI + 1e-12)
         return;   /* outside the documented domain (also NaN): zeros */
-    double E[HFS_SH_N][HFS_NLP_N];
-    elevation_moments(E);
+    double E[HFS_SH_N * HFS_NLP_N];
+    hfs_wedge_elevation_moments(E);
 
     double x[AZ_NODES], w[AZ_NODES];
     hfs_gauss_legendre(AZ_NODES, x, w);
@@ -100,7 +99,7 @@ static void wedge_matrix(double dphi, int nq, blend_fn blend, double *m)
     for (int r = 0; r < HFS_SH_N; ++r)
         for (int q = 0; q < nq; ++q)
             for (int c = 0; c < HFS_NLP_N; ++c)
-                m[r * ncol + q * HFS_NLP_N + c] = A[r][q] * E[r][c];
+                m[r * ncol + q * HFS_NLP_N + c] = A[r][q] * E[r * HFS_NLP_N + c];
 }
 
 void hfs_wedge_mlin(double dphi, double m[HFS_SH_N * 2 * HFS_NLP_N])

@@ -92,7 +92,7 @@ static double frand(unsigned *s)
 static void test_fold_matches_visibility(void)
 {
     double E[HFS_SH_N * HFS_NLP_N];
-    hfs_local_elevation_moments(E);
+    hfs_wedge_elevation_moments(E);
     unsigned seed = 7;
     double worst = 0.0;
     for (int trial = 0; trial < 24; ++trial) {
