@@ -327,32 +327,28 @@ int hfs_io_outputs_adopt(hfs_outputs *o, hfs_io_atomic *a, hfs_error *err)
 
 int hfs_outputs_commit(hfs_outputs *o, hfs_error *err)
 {
-    for (int k = 0; k < o->n_pending; ++k) {
-        const int created = o->pending[k].created;
-        char *target = o->pending[k].target ? strdup(o->pending[k].target) : NULL;
-        const int rc = hfs_io_atomic_rename(&o->pending[k], err);
-        if (rc) {
-            /* Undo what can be undone: files this run created go again;
-             * a file that existed before was replaced and stays replaced. */
-            free(target);
-            for (int j = 0; j < k; ++j) {
-                if (o->pending[j].created && o->pending[j].target)
-                    unlink(o->pending[j].target);
-                free(o->pending[j].target);
-            }
-            for (int j = k + 1; j < o->n_pending; ++j)
-                hfs_io_atomic_abort(&o->pending[j]);
-            o->n_pending = 0;
-            return rc;
+    int rc = HFS_OK, done = 0;
+    for (; done < o->n_pending; ++done) {
+        const hfs_io_atomic *a = &o->pending[done];
+        if (!a->in_place && rename(a->tmp, a->target) != 0) {
+            rc = fail_errno(err, errno, a->path, "cannot replace the file");
+            break;
         }
-        /* Keep what the undo above needs. */
-        o->pending[k].created = created;
-        o->pending[k].target = target;
     }
-    for (int k = 0; k < o->n_pending; ++k)
-        free(o->pending[k].target);
+    /* On failure undo what can be undone: files this run created go again;
+     * a file that existed before was replaced and stays replaced. */
+    for (int j = 0; rc && j < done; ++j)
+        if (o->pending[j].created)
+            unlink(o->pending[j].target);
+    for (int j = 0; j < o->n_pending; ++j) {
+        if (j < done) { /* renamed: no temporary left to remove */
+            free(o->pending[j].tmp);
+            o->pending[j].tmp = NULL;
+        }
+        hfs_io_atomic_abort(&o->pending[j]);
+    }
     o->n_pending = 0;
-    return HFS_OK;
+    return rc;
 }
 
 void hfs_outputs_destroy(hfs_outputs *o)
