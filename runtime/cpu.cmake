@@ -1,12 +1,14 @@
 # hfs_shared: algorithm code every backend uses — azimuth swaths and their
 # visibility (visibility.c: NS09 Legendre and SN08 wedge tables), the height
 # pyramid's layout (pyramid_layout.c), a local light seen from a receiver
-# (local_geometry.c).  Neutral names: neither the CPU
+# (local_geometry.c), what a key light and the environment become before a
+# frame (key_setup.c).  Neutral names: neither the CPU
 # reference nor the GLES path owns them.
 add_library(hfs_shared STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/visibility.c
   ${CMAKE_CURRENT_SOURCE_DIR}/pyramid_layout.c
-  ${CMAKE_CURRENT_SOURCE_DIR}/local_geometry.c)
+  ${CMAKE_CURRENT_SOURCE_DIR}/local_geometry.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/key_setup.c)
 target_compile_definitions(hfs_shared PRIVATE HFS_BUILDING_LIBRARY)
 target_include_directories(hfs_shared PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(hfs_shared PUBLIC hfs_base hfs_sh)

@@ -52,6 +52,7 @@
 #include "cpu_horizon.h"
 #include "cpu_local.h"
 #include "cpu_pyramid.h"
+#include "key_setup.h"
 #include "visibility.h"
 #include "field_geom.h"
 #include "lights.h"
@@ -353,10 +354,9 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         job->vis_of = -1;
         job->is_env = 1;
         hfs_swath_full(q->nphi_env, &job->swath);
-        for (int ch = 0; ch < 3; ++ch) {
-            hfs_sh_rotate_z(l->env_sh[ch], l->env_rotate, c.l_env[ch]);
+        hfs_env_rotated(l, c.l_env);
+        for (int ch = 0; ch < 3; ++ch)
             c.env_neg[ch] = l->albedo * hfs_sh_negative_bound(c.l_env[ch]);
-        }
     }
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i) {
         const hfs_key_light *k = &l->key[i];
@@ -365,17 +365,15 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         swath_job *job = &c.jobs[c.n_jobs++];
         job->vis_of = -1;
         /* The swath and the visible fraction see at least HFS_MIN_VIS_ALPHA
-         * (lights.h), as on GLES; E_cap keeps alpha. */
-        const double a_vis = hfs_key_vis_alpha(k->alpha);
-        hfs_swath_key(k->phi, k->elev, a_vis, q->nphi_key, q->nphi_env, &job->swath);
-        hfs_dir(k->phi, k->elev, job->dir);
-        job->alpha = k->alpha;
-        for (int ch = 0; ch < 3; ++ch)
-            job->le[ch] = k->radiance[ch];
-        double zh[HFS_ZH_N];
-        hfs_zh_cap(a_vis, zh);
-        hfs_sh_rotate_zonal(zh, job->dir[0], job->dir[1], job->dir[2], job->l_sh);
-        job->l_norm = norm16(job->l_sh);
+         * (key_setup.h), as on GLES; E_cap keeps alpha. */
+        hfs_key_setup ks;
+        hfs_key_setup_make(k, q, &ks);
+        job->swath = ks.swath;
+        memcpy(job->dir, ks.dir, sizeof job->dir);
+        job->alpha = ks.alpha;
+        memcpy(job->le, ks.le, sizeof job->le);
+        memcpy(job->l_sh, ks.l_sh, sizeof job->l_sh);
+        job->l_norm = ks.l_norm;
         /* A full swath identical to the environment's reuses its reads. */
         job->shares_env = has_env && job->swath.full && job->swath.n == c.jobs[0].swath.n &&
                           job->swath.phi0 == c.jobs[0].swath.phi0;

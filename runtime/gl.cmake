@@ -68,4 +68,4 @@ target_compile_definitions(hfs_gl PRIVATE HFS_BUILDING_LIBRARY
 target_link_libraries(hfs_gl PUBLIC hfs_base)
 
 # The GLES renderer backend built on this library (issue 3).
-include(${HFS_GL_DIR}/gles.cmake)
+include(${HFS_GL_DIR}/gles/gles.cmake)

@@ -97,7 +97,7 @@ vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize)
     return (vec2(a) + t + 0.5) / vec2(vsize);
 }
 
-/* Unit normal from an RGBA texel of gles_normals.frag: octahedral
+/* Unit normal from an RGBA texel of terrain_normals.frag: octahedral
  * coordinates (px hi, px lo, py hi, py lo) of the upper hemisphere; nz > 0. */
 vec3 hfs_normal(vec4 t)
 {
@@ -320,8 +320,8 @@ float hfs_cap_irradiance(float cos_beta, float alpha)
     return hfs_cap_irradiance_sc(cos_beta, sin(alpha), cos(alpha));
 }
 
-/* ---- horizon sampling on the visibility grid (gles_env, gles_key, ------ */
-/* ---- gles_shade's local lights; DESIGN.md "Horizons") ------------------- */
+/* ---- horizon sampling on the visibility grid (env_horizons, key_horizons, ------ */
+/* ---- shade's local lights; DESIGN.md "Horizons") ------------------- */
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33

@@ -11,7 +11,7 @@
  * (issue 12: the planner must see it; the end-to-end case is in
  * test_plan_cases).
  */
-#include "gles_plan.h"
+#include "plan.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -49,20 +49,23 @@ static hfs_gles_frame_sig base_sig(void)
 static const char *ran_after(const hfs_gles_frame_sig *now)
 {
     static char list[512];
-    hfs_gles_plan gp;
-    hfs_gles_plan_init(&gp);
+    static hfs_gles_plan gp;
+    hfs_error err;
+    CHECK(hfs_gles_plan_init(&gp, &err) == HFS_OK, "plan init: %s", err.msg);
     const hfs_gles_frame_sig base = base_sig();
     hfs_gles_plan_frame(&gp, &base, "first frame");
-    for (int k = 0; k < GP_PASSES; ++k)
-        if (gp.run[k])
-            hfs_gles_plan_done(&gp, k);
+    for (int k = 0; k < HFS_PASS_COUNT; ++k)
+        for (int i = 0; i < HFS_GLES_PLAN_INSTANCES; ++i)
+            if (gp.run[k][i])
+                hfs_gles_plan_done(&gp, (hfs_gles_pass_id)k, i);
     hfs_gles_plan_frame(&gp, now, NULL);
     list[0] = '\0';
-    for (int k = 0; k < GP_PASSES; ++k)
-        if (gp.run[k]) {
-            strncat(list, gp.p.pass[gp.pass[k]].name, sizeof list - strlen(list) - 2);
-            strcat(list, " ");
-        }
+    for (int k = 0; k < HFS_PASS_COUNT; ++k)
+        for (int i = 0; i < HFS_GLES_PLAN_INSTANCES; ++i)
+            if (gp.run[k][i]) {
+                strncat(list, gp.p.pass[gp.pass[k][i]].name, sizeof list - strlen(list) - 2);
+                strcat(list, " ");
+            }
     return list;
 }
 

@@ -21,7 +21,7 @@
 #include "cpu_pyramid.h"
 #include "gl_caps.h"
 #include "gl_util.h"
-#include "gles_setup.h"
+#include "uniform_blocks.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -71,7 +71,7 @@
 #include "lights.h"
 #include "test_sh_util.h" /* ref_legendre */
 #include "visibility.h"
-#include "gles_setup.h"
+#include "uniform_blocks.h"
 #include "hfshade.h"
 
 #include <float.h>

@@ -132,7 +132,7 @@ void stress_fp16_bound(const stress_scene *sc, double umax, stress_fp16_terms *t
     }
     const double slope = 0.5 * (zmax - zmin) * f->zscale / f->dx;
     const double dh = fmin(PI / 2, 2.0 * U_PAIR * slope); /* |dw| from heights */
-    /* Normals come from the same heights (gles_normals.frag, uploaded
+    /* Normals come from the same heights (terrain_normals.frag, uploaded
      * heights: 2^-24 each): a one-sided difference's slope is off by
      * 2^-23 S, the normal's direction by as much; plus the normal's own
      * storage (octahedral pair) and float decoding, a few 2^-22. */

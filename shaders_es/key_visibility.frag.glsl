@@ -1,10 +1,10 @@
 /*
- * gles_keyfactor.frag - one key light's per-texel factor at full resolution
+ * key_visibility.frag - one key light's per-texel factor at full resolution
  * (DESIGN.md "Shading", "GLES path", "Frame planner"):
  *   f = E_cap(N.d, alpha) * clamp(num/den, 0, 1),
  *   num = V_key . (H * L_key), den = V_open . (H * L_key); the horizons are
  *   floor_j(N) + excess_j, the excess read bilinearly from the visibility
- *   grid (gles_key.frag), and V_open uses the floors of this texel's normal.
+ *   grid (key_horizons.frag), and V_open uses the floors of this texel's normal.
  * The shading pass multiplies f by rho/pi Le: a re-tinted or dimmed key
  * light, or any change of the other lights, keeps f.  Stored as f / E_max
  * (u_emax = pi sin^2 alpha, f's largest value, so the stored value is in

@@ -1,5 +1,5 @@
 /*
- * gles_decimate.frag - one pyramid level from the next finer one (DESIGN.md
+ * terrain_decimate.frag - one pyramid level from the next finer one (DESIGN.md
  * "Height pyramid"): level i samples level i+1 bilinearly at its own texel
  * centres, clamped to the edge (runtime/cpu_pyramid.c decimate).  The
  * target is the level's own RG texture; heights are normalized hi+lo pairs,

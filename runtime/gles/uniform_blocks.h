@@ -1,64 +1,32 @@
 /*
- * gles_setup.h — the CPU side of the GLES renderer: everything a frame needs
- * that does not touch GL, as pure functions (unit-tested without a driver).
+ * uniform_blocks.h — the C side of the C-to-shader contract: every std140
+ * uniform block the GLES passes read, packed by named fields, as pure
+ * functions (unit-tested without a driver).
  *
- *   layout        level count/sizes/spacings exactly as the CPU reference
- *                 (hfs_pyramid_* of cpu_pyramid.h), the reconstructed range,
- *                 the sub-sampled visibility grid, the height normalization;
- *   heights       the field as fp16 hi+lo pairs (or fp32) of normalized
- *                 heights v = (z - base) / hscale in [-1, 1];
- *   uniform data  std140 blocks: per-scale constants, per-swath directions,
- *                 folded Legendre matrices (hfs_visibility_sample_matrix of
- *                 the CPU reference) or wedge placements, key-light records;
- *   offsets       the shader's float form of the sample offsets and a check
- *                 that it classifies every (direction, scale) sample as the
- *                 CPU reference's double form does (DESIGN.md, "GLES path").
+ *   HfsScales   per-scale constants of the pyramid          (all grid passes)
+ *   HfsSwath    a swath's directions, folded Legendre matrices
+ *               (hfs_visibility_sample_matrix of the CPU reference) or wedge
+ *               placements                     (env_horizons, key_horizons)
+ *   HfsKeys     key-light records                              (key_visibility)
+ *   HfsShade    the shading constants                                   (shade)
+ *   HfsLocal    local lights                         (local_visibility, shade)
+ *   offsets     the shader's float form of the sample offsets and a check
+ *               that it classifies every (direction, scale) sample as the
+ *               CPU reference's double form does (DESIGN.md, "GLES path").
  *
- * Layout of the std140 blocks (vec4 units) is documented at each packer and
- * mirrored by the `layout(std140) uniform` declarations in shaders_es/.
+ * Each block's layout is documented at its struct or packer and mirrored by
+ * the `layout(std140) uniform` declarations in shaders_es/; the fixed-size
+ * ones are C structs whose offsets are pinned by _Static_assert.
  */
-#ifndef HFS_GLES_SETUP_H
-#define HFS_GLES_SETUP_H
+#ifndef HFS_GLES_UNIFORM_BLOCKS_H
+#define HFS_GLES_UNIFORM_BLOCKS_H
 
 #include <stddef.h>
 #include <stdint.h>
 
+#include "layout.h"
 #include "visibility.h"
 #include "hfshade.h"
-
-#define HFS_GLES_MAX_LEVELS 256
-
-typedef struct hfs_gles_layout {
-    int w, h;                 /* field size                                   */
-    int k, offset;            /* quality                                      */
-    int n_levels;             /* N = hfs_pyramid_level_count                  */
-    int lmin;                 /* lowest level read: min(k*o, N-1)             */
-    int n_layers;             /* reconstructed layers N - lmin (input incl.)  */
-    int sub, vw, vh;          /* visibility grid: step, size                  */
-    int lw[HFS_GLES_MAX_LEVELS], lh[HFS_GLES_MAX_LEVELS];
-    double spacing[HFS_GLES_MAX_LEVELS];   /* s_i = d_i                       */
-    int read_layer[HFS_GLES_MAX_LEVELS];   /* read level of scale i, - lmin   */
-    double base, hscale;      /* v = (z - base) / hscale, v in [-1, 1]        */
-    double vmax;              /* max v (1, or 0 for a flat field)            */
-    double dx, zscale;
-} hfs_gles_layout;
-
-/* Fills L for field f and quality q (validated inputs).  HFS_E_UNSUPPORTED
- * when the level count exceeds HFS_GLES_MAX_LEVELS. */
-int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quality *q,
-                         hfs_error *err);
-
-/* Visibility grid: receiver a of the sub-sampled grid sits on full-resolution
- * grid point min(a*sub, W-1) (same in y); vw = ceil((W-1)/sub) + 1. */
-int hfs_gles_grid_size(int n, int sub);
-
-/* Normalized heights, row-major W x H, two components per texel:
- *   fp32 = 0: uint16_t pairs (hi, lo): hi = half(v), lo = half(v - hi);
- *   fp32 = 1: float pairs (v, 0).
- * dst holds W*H*2 elements of the chosen type.  Returns the max absolute
- * representation error |hi + lo - v| in normalized units (0 for fp32). */
-double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int fp32,
-                              void *dst);
 
 /* ---- std140 blocks ---------------------------------------------------------- */
 
@@ -133,27 +101,15 @@ size_t hfs_gles_key_vec4(int n);
 void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hfs_visibility *v,
                        float *dst);
 
-/* The largest irradiance E (exit radiance rho/pi Le E) local light l can
- * give any receiver of the field: pi when the sphere reaches the field's
- * bounding box (receivers lifted by 1e-4 dx), else pi (r / d_min)^2 with
- * d_min the distance from the centre to the box (a cap of half-angle alpha
- * gives at most pi sin^2 alpha).  Bounds the output scale below. */
-double hfs_gles_local_max_irradiance(const hfs_gles_layout *L, const hfs_local_light *l);
-
-/* fp16 <-> float are in gl_util.h.  Power-of-two output scale that keeps
- * the frame's largest possible exit radiance (bound) in fp16's range:
- * 2^e with bound * 2^e <= 16384, e in [-1000, 1000]; the renderer multiplies
- * every radiance by it before the shaders see one. */
-double hfs_gles_output_scale(double bound);
 
 /* The open part of the environment's transfer, H(N) * hemisphere(N) (the
  * SH product of the clamped cosine and the hemisphere about the normal),
  * is zonal about N: its coefficient (l, m) is k_l Y_lm(N).  Writes k_l for
  * each of the 16 coefficients (std140: 4 vec4) for the shading pass, which
- * adds it to the stored occluded part (gles_transfer.frag). */
+ * adds it to the stored occluded part (env_transfer.frag). */
 void hfs_gles_open_transfer(float dst[16]);
 
-/* The shading pass's uniform block HfsShade (gles_shade.frag.glsl), std140,
+/* The shading pass's uniform block HfsShade (shade.frag.glsl), std140,
  * by name: every member is a vec4 array there, so the C layout (floats,
  * no padding) is the std140 one; the asserts pin the offsets the shader
  * relies on.  Radiances (env, env_neg, kle, lle) come multiplied by the
@@ -167,7 +123,7 @@ typedef struct hfs_gles_shade_block {
     float lle[HFS_MAX_LOCAL_LIGHTS][4]; /* u_lle[16]: Le per local light          */
 } hfs_gles_shade_block;
 _Static_assert(HFS_MAX_KEY_LIGHTS == 8 && HFS_MAX_LOCAL_LIGHTS == 16,
-               "gles_shade.frag.glsl declares u_kle[8] and u_lle[16]");
+               "shade.frag.glsl declares u_kle[8] and u_lle[16]");
 _Static_assert(offsetof(hfs_gles_shade_block, misc) == 12 * 16, "HfsShade.u_misc");
 _Static_assert(offsetof(hfs_gles_shade_block, env_neg) == 13 * 16, "HfsShade.u_env_neg");
 _Static_assert(offsetof(hfs_gles_shade_block, kle) == 14 * 16, "HfsShade.u_kle");
@@ -175,8 +131,8 @@ _Static_assert(offsetof(hfs_gles_shade_block, topen) == 22 * 16, "HfsShade.u_top
 _Static_assert(offsetof(hfs_gles_shade_block, lle) == 26 * 16, "HfsShade.u_lle");
 _Static_assert(sizeof(hfs_gles_shade_block) == 42 * 16, "HfsShade size");
 
-/* The fixed head of the local-light block HfsLocal (gles_local.frag.glsl and
- * gles_shade.frag.glsl), std140, by name; u_ldir[nphi_local] follows it,
+/* The fixed head of the local-light block HfsLocal (local_visibility.frag.glsl and
+ * shade.frag.glsl), std140, by name; u_ldir[nphi_local] follows it,
  * one vec4 (cos, sin, 0, 0) per direction of the full swath.  Lengths are in
  * texel units (dx = 1). */
 typedef struct hfs_gles_local_block {
@@ -191,4 +147,4 @@ _Static_assert(offsetof(hfs_gles_local_block, swath) == 17 * 16, "HfsLocal.u_lq"
 _Static_assert(offsetof(hfs_gles_local_block, lights) == 18 * 16, "HfsLocal.u_lights");
 _Static_assert(sizeof(hfs_gles_local_block) == (18 + 2 * 16) * 16, "HfsLocal head size");
 
-#endif /* HFS_GLES_SETUP_H */
+#endif /* HFS_GLES_UNIFORM_BLOCKS_H */

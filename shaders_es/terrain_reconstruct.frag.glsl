@@ -1,5 +1,5 @@
 /*
- * gles_reconstruct.frag - a pyramid level brought back to the full W x H
+ * terrain_reconstruct.frag - a pyramid level brought back to the full W x H
  * grid: the uniform cubic B-spline of its samples evaluated at the grid
  * points (DESIGN.md "Height pyramid"), with bilinear fetches instead of
  * taps (Sigg & Hadwiger, GPU Gems 2 ch. 20; SN08 section 6).  Per axis the

@@ -1,5 +1,5 @@
 /*
- * gles_transfer.frag - the occluded part of the environment's per-texel
+ * env_transfer.frag - the occluded part of the environment's per-texel
  * transfer vector (DESIGN.md "Shading", "Frame planner").  The transfer is
  * T = H * V with H = the clamped cosine of the full-resolution normal N as
  * SH and V = hemisphere(N) + D, D = the grid's V_env - hemisphere(N_receiver)
@@ -9,7 +9,7 @@
  * nothing occludes, so fp16 storage costs nothing there and elsewhere only
  * a fraction of the occluded part.  T does not depend on the environment's
  * radiance or rotation, so it is kept while only those change: a turned or
- * re-tinted environment costs the shading pass's dots (gles_shade.frag),
+ * re-tinted environment costs the shading pass's dots (shade.frag),
  * not this product.
  * Output: T_occ's 16 coefficients in 4 RGBA targets, rounded to fp16 in the
  * shader (HFS_FP32: kept as is) so the stored value does not depend on how a

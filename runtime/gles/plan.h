@@ -1,7 +1,10 @@
 /*
- * gles_plan.h — the GLES renderer's frame as a frame_plan.h graph (issue 6):
+ * plan.h — the GLES renderer's frame as a frame_plan.h graph (issue 6):
  * what each pass reads and writes, what a scene edit invalidates, and which
- * passes a frame runs.
+ * passes a frame runs.  The graph is built from the pass table (pass.h):
+ * each pass declares its reads and writes where it is defined; this file
+ * declares the inputs (what a frame signature carries) and turns the
+ * difference between two signatures into changed inputs.
  *
  *   inputs   terrain (heights, size, dx, zscale, k, offset, precision),
  *            grid (subsample), env settings (nphi_env, visibility path),
@@ -41,6 +44,7 @@
 #include "visibility.h"
 #include "frame_plan.h"
 #include "hfshade.h"
+#include "pass.h"
 
 #define HFS_GLES_PLAN_KEYS HFS_MAX_KEY_LIGHTS
 
@@ -65,9 +69,9 @@ typedef struct hfs_gles_frame_sig {
     } local[HFS_MAX_LOCAL_LIGHTS];
 } hfs_gles_frame_sig;
 
-enum { GP_TERRAIN, GP_ENV, GP_KEY0, GP_LOCAL0 = GP_KEY0 + HFS_GLES_PLAN_KEYS,
-       GP_TRANSFER = GP_LOCAL0 + HFS_MAX_LOCAL_LIGHTS, GP_KFACTOR0,
-       GP_SHADE = GP_KFACTOR0 + HFS_GLES_PLAN_KEYS, GP_READBACK, GP_PASSES };
+/* Instances of a pass: at most this many (the most lights of a kind). */
+#define HFS_GLES_PLAN_INSTANCES (HFS_MAX_LOCAL_LIGHTS > HFS_MAX_KEY_LIGHTS ? \
+                                 HFS_MAX_LOCAL_LIGHTS : HFS_MAX_KEY_LIGHTS)
 
 typedef struct hfs_gles_plan {
     hfs_plan p;
@@ -79,21 +83,25 @@ typedef struct hfs_gles_plan {
     int pr_pyramid, pr_env, pr_transfer, pr_targets, pr_image;
     int pr_local[HFS_MAX_LOCAL_LIGHTS];
     int pr_key[HFS_GLES_PLAN_KEYS], pr_kfactor[HFS_GLES_PLAN_KEYS];
-    int pass[GP_PASSES];          /* frame_plan pass id of each GP_* */
+    /* frame_plan pass id of each (pass, instance); -1 past the pass's
+     * instances. */
+    int pass[HFS_PASS_COUNT][HFS_GLES_PLAN_INSTANCES];
     hfs_gles_frame_sig last;
     int have_last;
     hfs_plan_step steps[HFS_PLAN_MAX_PASSES];
-    int run[GP_PASSES];           /* this frame's decisions, by GP_* */
+    int run[HFS_PASS_COUNT][HFS_GLES_PLAN_INSTANCES]; /* this frame's decisions */
     int n_run;
     int black;                    /* the last frame was black: no light, no pass */
     int amortize;                 /* visibility passes per frame; 0 = all (off) */
     int deferred;                 /* passes the last frame left for later ones */
 } hfs_gles_plan;
 
-void hfs_gles_plan_init(hfs_gles_plan *gp);
+/* Builds the graph from the pass table; HFS_E_INVALID (a bug) when a pass
+ * reads a node nothing declares or the graph does not fit frame_plan.h. */
+int hfs_gles_plan_init(hfs_gles_plan *gp, hfs_error *err);
 
 /* Plans a frame: terrain_why is NULL when the terrain is unchanged, else
- * why it changed.  Fills gp->run[] and returns the number of passes to run.
+ * why it changed.  Fills gp->run[][] and returns the number of passes to run.
  * With gp->amortize > 0 and the terrain unchanged, at most that many of the
  * visibility passes (env, key i, local i) run, the others wait
  * (frame_plan.h "Amortization"; gp->deferred counts them); a terrain change
@@ -101,8 +109,8 @@ void hfs_gles_plan_init(hfs_gles_plan *gp);
 int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now,
                         const char *terrain_why);
 
-/* Pass GP_* ran: its products are valid. */
-void hfs_gles_plan_done(hfs_gles_plan *gp, int which);
+/* Instance i of pass p ran: its products are valid. */
+void hfs_gles_plan_done(hfs_gles_plan *gp, hfs_gles_pass_id p, int i);
 
 /* Products that no longer hold their values (a failed frame, counting
  * twins writing fetch counts into the visibility targets, reallocation). */

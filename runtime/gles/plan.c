@@ -1,16 +1,26 @@
 /*
- * gles_plan.c — see gles_plan.h.
+ * plan.c — see plan.h.
  */
-#include "gles_plan.h"
+#include "plan.h"
 
 #include <stdio.h>
 #include <string.h>
 
-void hfs_gles_plan_init(hfs_gles_plan *gp)
+/* Node `name` (a printf format with the instance i), or -1. */
+static int node_find(const hfs_plan *p, const char *fmt, int i)
 {
-    memset(gp, 0, sizeof *gp);
+    char name[HFS_PLAN_NAME];
+    snprintf(name, sizeof name, fmt, i);
+    for (int n = 0; n < p->n_nodes; ++n)
+        if (!strcmp(p->node[n], name))
+            return n;
+    return -1;
+}
+
+/* The inputs: what a frame signature carries (diff_inputs below). */
+static void declare_inputs(hfs_gles_plan *gp)
+{
     hfs_plan *p = &gp->p;
-    hfs_plan_init(p);
     char name[HFS_PLAN_NAME];
     gp->in_terrain = hfs_plan_input(p, "terrain");
     gp->in_grid = hfs_plan_input(p, "subsample");
@@ -32,59 +42,71 @@ void hfs_gles_plan_init(hfs_gles_plan *gp)
         snprintf(name, sizeof name, "key %d radiance", i);
         gp->in_key_rad[i] = hfs_plan_input(p, name);
     }
-    gp->pr_pyramid = hfs_plan_product(p, "pyramid");
-    gp->pr_env = hfs_plan_product(p, "env visibility");
-    for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
-        snprintf(name, sizeof name, "key %d horizons", i);
-        gp->pr_key[i] = hfs_plan_product(p, name);
-    }
-    for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i) {
-        snprintf(name, sizeof name, "local %d ratios", i);
-        gp->pr_local[i] = hfs_plan_product(p, name);
-    }
-    gp->pr_transfer = hfs_plan_product(p, "env transfer");
-    for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
-        snprintf(name, sizeof name, "key %d factor", i);
-        gp->pr_kfactor[i] = hfs_plan_product(p, name);
-    }
-    gp->pr_targets = hfs_plan_product(p, "output targets");
-    gp->pr_image = hfs_plan_product(p, "image");
+}
 
-    gp->pass[GP_TERRAIN] = hfs_plan_pass_add(p, "terrain", (int[]){gp->in_terrain, -1},
-                                             (int[]){gp->pr_pyramid, -1});
-    gp->pass[GP_ENV] = hfs_plan_pass_add(
-        p, "env", (int[]){gp->pr_pyramid, gp->in_grid, gp->in_env_set, -1},
-        (int[]){gp->pr_env, -1});
+/* Instance i of a pass of the table as a frame_plan pass. */
+static int add_pass(hfs_gles_plan *gp, const hfs_gles_pass *pass, int i, hfs_error *err)
+{
+    hfs_plan *p = &gp->p;
+    int reads[HFS_PASS_MAX_IO + 1], writes[HFS_PASS_MAX_IO + 1], nr = 0, nw = 0;
+    for (int k = 0; k < HFS_PASS_MAX_IO && pass->reads[k]; ++k)
+        if ((reads[nr++] = node_find(p, pass->reads[k], i)) < 0)
+            return hfs_fail(err, HFS_E_INVALID, "gles plan: pass %s reads %s, which no input "
+                            "or earlier pass declares", pass->plan_name, pass->reads[k]);
+    for (int k = 0; k < HFS_PASS_MAX_IO && pass->writes[k]; ++k) {
+        int n = node_find(p, pass->writes[k], i);
+        if (n < 0) {
+            char name[HFS_PLAN_NAME];
+            snprintf(name, sizeof name, pass->writes[k], i);
+            n = hfs_plan_product(p, name);
+        }
+        if (n < 0)
+            return hfs_fail(err, HFS_E_INVALID, "gles plan: too many nodes");
+        writes[nw++] = n;
+    }
+    reads[nr] = writes[nw] = -1;
+    char name[HFS_PLAN_NAME];
+    snprintf(name, sizeof name, pass->plan_name, i);
+    const int id = hfs_plan_pass_add(p, name, nr ? reads : NULL, writes);
+    if (id < 0)
+        return hfs_fail(err, HFS_E_INVALID, "gles plan: too many passes");
+    hfs_plan_set_deferrable(p, id, pass->deferrable);
+    gp->pass[pass->id][i] = id;
+    return HFS_OK;
+}
+
+int hfs_gles_plan_init(hfs_gles_plan *gp, hfs_error *err)
+{
+    memset(gp, 0, sizeof *gp);
+    hfs_plan *p = &gp->p;
+    hfs_plan_init(p);
+    declare_inputs(gp);
+    for (int k = 0; k < HFS_PASS_COUNT; ++k) {
+        const hfs_gles_pass *pass = hfs_gles_pass_table[k];
+        for (int i = 0; i < HFS_GLES_PLAN_INSTANCES; ++i)
+            gp->pass[k][i] = -1;
+        for (int i = 0; i < hfs_gles_pass_max_instances(pass); ++i) {
+            int rc = add_pass(gp, pass, i, err);
+            if (rc)
+                return rc;
+        }
+    }
+    /* The products the planner itself names (drops, the shading's reads). */
+    gp->pr_pyramid = node_find(p, "pyramid", 0);
+    gp->pr_env = node_find(p, "env visibility", 0);
+    gp->pr_transfer = node_find(p, "env transfer", 0);
+    gp->pr_targets = node_find(p, "output targets", 0);
+    gp->pr_image = node_find(p, "image", 0);
+    int ok = gp->pr_pyramid >= 0 && gp->pr_env >= 0 && gp->pr_transfer >= 0 &&
+             gp->pr_targets >= 0 && gp->pr_image >= 0;
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
-        snprintf(name, sizeof name, "key %d", i);
-        gp->pass[GP_KEY0 + i] = hfs_plan_pass_add(
-            p, name, (int[]){gp->pr_pyramid, gp->in_grid, gp->in_key_geom[i], -1},
-            (int[]){gp->pr_key[i], -1});
+        ok &= (gp->pr_key[i] = node_find(p, "key %d horizons", i)) >= 0;
+        ok &= (gp->pr_kfactor[i] = node_find(p, "key %d factor", i)) >= 0;
     }
-    for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i) {
-        snprintf(name, sizeof name, "local %d", i);
-        gp->pass[GP_LOCAL0 + i] = hfs_plan_pass_add(
-            p, name,
-            (int[]){gp->pr_pyramid, gp->in_grid, gp->in_local_set, gp->in_local_geom[i], -1},
-            (int[]){gp->pr_local[i], -1});
-    }
-    gp->pass[GP_TRANSFER] = hfs_plan_pass_add(p, "transfer", (int[]){gp->pr_pyramid, gp->pr_env, -1},
-                                              (int[]){gp->pr_transfer, -1});
-    for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
-        snprintf(name, sizeof name, "key %d factor", i);
-        gp->pass[GP_KFACTOR0 + i] = hfs_plan_pass_add(
-            p, name, (int[]){gp->pr_pyramid, gp->pr_key[i], gp->in_key_dir[i], -1},
-            (int[]){gp->pr_kfactor[i], -1});
-    }
-    /* The expensive visibility passes may wait when amortizing. */
-    hfs_plan_set_deferrable(p, gp->pass[GP_ENV], 1);
-    for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i)
-        hfs_plan_set_deferrable(p, gp->pass[GP_KEY0 + i], 1);
     for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i)
-        hfs_plan_set_deferrable(p, gp->pass[GP_LOCAL0 + i], 1);
-    gp->pass[GP_SHADE] = hfs_plan_pass_add(p, "shade", NULL, (int[]){gp->pr_targets, -1});
-    gp->pass[GP_READBACK] = hfs_plan_pass_add(p, "readback", (int[]){gp->pr_targets, -1},
-                                              (int[]){gp->pr_image, -1});
+        ok &= (gp->pr_local[i] = node_find(p, "local %d ratios", i)) >= 0;
+    return ok ? HFS_OK : hfs_fail(err, HFS_E_INVALID, "gles plan: a product the planner "
+                                  "needs is written by no pass");
 }
 
 static int swath_equal(const hfs_swath *a, const hfs_swath *b)
@@ -182,7 +204,7 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
             reads[n++] = gp->pr_local[i];
     }
     reads[n] = -1;
-    hfs_plan_pass_reads(p, gp->pass[GP_SHADE], reads);
+    hfs_plan_pass_reads(p, gp->pass[HFS_PASS_SHADE][0], reads);
 
     hfs_plan_set need = {{0}};
     hfs_plan_set_add(&need, gp->pr_image);
@@ -191,14 +213,15 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
         gp->n_run = hfs_plan_frame_amortized(p, &need, gp->amortize, gp->steps, &gp->deferred);
     else
         gp->n_run = hfs_plan_frame(p, &need, gp->steps);
-    for (int k = 0; k < GP_PASSES; ++k)
-        gp->run[k] = gp->steps[gp->pass[k]].run;
+    for (int k = 0; k < HFS_PASS_COUNT; ++k)
+        for (int i = 0; i < HFS_GLES_PLAN_INSTANCES; ++i)
+            gp->run[k][i] = gp->pass[k][i] >= 0 && gp->steps[gp->pass[k][i]].run;
     return gp->n_run;
 }
 
-void hfs_gles_plan_done(hfs_gles_plan *gp, int which)
+void hfs_gles_plan_done(hfs_gles_plan *gp, hfs_gles_pass_id p, int i)
 {
-    hfs_plan_done(&gp->p, gp->pass[which]);
+    hfs_plan_done(&gp->p, gp->pass[p][i]);
 }
 
 void hfs_gles_plan_drop_all(hfs_gles_plan *gp)

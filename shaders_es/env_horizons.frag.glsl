@@ -1,5 +1,5 @@
 /*
- * gles_env.frag - environment visibility on the full swath (DESIGN.md
+ * env_horizons.frag - environment visibility on the full swath (DESIGN.md
  * "Horizons", "Visibility to SH", "GLES path").  One fragment per receiver
  * of the visibility grid (grid point min(a*sub, W-1)); writes the 16 SH
  * coefficients of V_env to four RGBA targets.

@@ -1,5 +1,5 @@
 /*
- * gles_normals.frag - unit normals at full resolution (SPEC: central
+ * terrain_normals.frag - unit normals at full resolution (SPEC: central
  * differences of world z, one-sided at the border; runtime/field_geom.c
  * hfs_field_normal, including its overflow-safe scaling).  Output RGBA:
  * the upper-hemisphere octahedral coordinates p = (nx, ny) / (|nx| + |ny| +

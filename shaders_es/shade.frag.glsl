@@ -1,17 +1,17 @@
 /*
- * gles_shade.frag - exit radiance at full resolution from the kept per-texel
+ * shade.frag - exit radiance at full resolution from the kept per-texel
  * products (DESIGN.md "Shading", "GLES path", "Frame planner"):
  *   environment  Lo += rho/pi * T . L_env per channel, T = H * V_env = the
  *                open part H * hemisphere(N), zonal about N and evaluated
  *                here as k_l Y_lm(N) (u_topen), plus the occluded part from
- *                gles_transfer.frag; clamped into [-neg, rho/pi H . L_env +
+ *                env_transfer.frag; clamped into [-neg, rho/pi H . L_env +
  *                neg] (u_env_neg) with H = the clamped cosine of this
  *                texel's normal;
  *   key light q  Lo += rho/pi * Le E_max * f_q, f_q = E_cap ratio / E_max
- *                from gles_keyfactor.frag (one layer per light, (hi, lo));
+ *                from key_visibility.frag (one layer per light, (hi, lo));
  *   local lights (HFS_LOCAL) Lo += rho/pi * Le * E_cap * ratio, E_cap at
  *                the texel, the ratio read bilinearly from the grid of
- *                gles_local.frag (local_lights below).
+ *                local_visibility.frag (local_lights below).
  * Everything that depends on the visibility was computed by those passes,
  * so this pass is what a turned or re-tinted environment or a change of
  * radiance costs.
@@ -77,7 +77,7 @@ layout(location = 1) out vec4 o_lo;       /* RGB lo: hi + lo = value */
 /* ---- local spherical lights (DESIGN.md "Local lights", "GLES path"):
  * rho/pi * Le * E_cap * ratio per light, E_cap at this texel's own point
  * (lifted by 1e-4 dx, as the CPU) and normal, the visibility ratio read
- * bilinearly from the grid written by gles_local.frag (two lights per layer
+ * bilinearly from the grid written by local_visibility.frag (two lights per layer
  * as (hi, lo) pairs).  A texel inside the sphere gets rho Le (E = pi). */
 #ifndef HFS_NLAYERS
 #define HFS_NLAYERS 25
@@ -120,7 +120,7 @@ vec3 local_lights(ivec2 p, vec3 n, vec2 uv)
         vec3 v = l0.xyz - pw;
         float r = l0.w;
         float rho2 = dot(v.xy, v.xy);
-        float c_tan = (rho2 - r * r) + v.z * v.z;  /* as gles_local.frag */
+        float c_tan = (rho2 - r * r) + v.z * v.z;  /* as local_visibility.frag */
         if (!(c_tan > 0.0)) {
             sum += u_misc.x * HFS_PI * u_lle[q].rgb;
             continue;

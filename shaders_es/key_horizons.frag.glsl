@@ -1,5 +1,5 @@
 /*
- * gles_key.frag - key-light horizons on a swath (DESIGN.md "Horizons": the
+ * key_horizons.frag - key-light horizons on a swath (DESIGN.md "Horizons": the
  * B-spline max over scale).  One fragment per receiver of the visibility
  * grid; directions [u_dir0, u_dir0 + u_ndir) of the light's swath, two per
  * RGBA target, up to HFS_NOUT targets.  Per direction it writes the horizon
@@ -15,7 +15,7 @@
  * farther ones are off-grid too and contribute the floor).  The receiver's
  * own heights are fetched once per level.
  *
- * HFS_COUNT: writes the fetch count to o_h0 instead (see gles_env.frag).
+ * HFS_COUNT: writes the fetch count to o_h0 instead (see env_horizons.frag).
  */
 // hfs-variant: HFS_NOUT 4
 // hfs-variant: HFS_FP32 1, HFS_COUNT 1

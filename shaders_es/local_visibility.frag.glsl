@@ -1,5 +1,5 @@
 /*
- * gles_local.frag - local spherical lights' visibility on the visibility
+ * local_visibility.frag - local spherical lights' visibility on the visibility
  * grid (DESIGN.md "Local lights", "GLES path"; mirrors runtime/cpu_local.c
  * shade() for the Legendre path).  One fragment per receiver of the grid
  * (grid point min(a*sub, W-1)), lights [u_light0, u_light0 + u_nl) of the
@@ -16,7 +16,7 @@
  * light's azimuth (or the full swath of nphi_local when the light surrounds
  * the receiver or u_lq.y forces it), exact per-sample cap windows, per-scale
  * horizons cut at the light's entry distance, the B-spline max over scale
- * (as gles_key.frag), closed-form hat weights A_k and the constant elevation
+ * (as key_horizons.frag), closed-form hat weights A_k and the constant elevation
  * moments E, num/den as 4-dots with the NLP bands.  A receiver inside the
  * sphere writes 1 (the shading pass gives it rho Le); one whose tangent
  * plane hides the whole cap writes the ratio for the plane facing the light
@@ -29,7 +29,7 @@
  * interior table of dphi = 2 pi / nphi_local (u_tab) placed per wedge by a
  * z-rotation (u_lrot), num = V_k . M, den = V_open . M.
  *
- * HFS_COUNT: writes the fetch count to o_r0 instead (see gles_env.frag).
+ * HFS_COUNT: writes the fetch count to o_r0 instead (see env_horizons.frag).
  */
 // hfs-variant: HFS_NOUT 4
 // hfs-variant: HFS_TABLES 1

@@ -1,0 +1,235 @@
+/*
+ * gles_backend.c — the GLES renderer backend (backends.h, DESIGN.md "GLES
+ * path"): the CPU reference's algorithm on OpenGL ES 3.0 with fp16
+ * textures.  This file holds the object (context, GL table, buffers,
+ * caches) and turns a lighting into a frame's lights; gles_frame.c runs
+ * the frame over the pass table (pass.h).
+ *
+ * Every format/limit decision goes through gl_caps.h; every GL call through
+ * the hfs_gl table of the renderer's own context, which is made current at
+ * each call.  Nothing is printed; nothing is global.
+ */
+#include "gles_backend.h"
+
+#include "gl_util.h"
+#include "key_setup.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+/* Timing slots: the stages of the table's passes, in order. */
+static void name_slots(hfs_gles *g)
+{
+    int n = 0;
+    for (int p = 0; p < HFS_PASS_COUNT; ++p) {
+        const hfs_gles_pass *pass = hfs_gles_pass_table[p];
+        g->stage_slot[p] = n;
+        for (int s = 0; s < HFS_PASS_MAX_STAGES && pass->stages[s]; ++s)
+            g->timing.name[n++] = pass->stages[s];
+    }
+    g->timing.n_slots = n;
+}
+
+int hfs_gles_create(const char *context, const char *profile, int strict_limits, hfs_gles **out,
+                    hfs_error *err)
+{
+    *out = NULL;
+    hfs_gles *g = calloc(1, sizeof *g);
+    if (!g)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+    int rc = hfs_gl_context_create(context, &g->ctx, err);
+    if (rc)
+        goto fail;
+    if ((rc = hfs_gl_load(&g->gl, hfs_gl_context_loader, g->ctx, err)))
+        goto fail;
+    hfs_gl_caps_query(&g->gl, &g->driver);
+    g->strict_limits = strict_limits != 0;
+    if (profile) {
+        /* Refuse a bad name or an impossible profile now, not at the first
+         * frame. */
+        hfs_gl_caps c;
+        if ((rc = hfs_gl_caps_select(&g->driver, profile, !strcmp(profile, "es30-float"),
+                                     strict_limits, &c, err)))
+            goto fail;
+        snprintf(g->profile, sizeof g->profile, "%s", profile);
+    }
+    const hfs_gl *gl = &g->gl;
+    gl->GenVertexArrays(1, &g->vao);
+    gl->BindVertexArray(g->vao);
+    gl->GenBuffers(HFS_UBO_COUNT, g->ubo);
+    hfs_gles_timing_init(&g->timing, gl, g->driver.timer_query);
+    name_slots(g);
+    gl->Disable(GL_BLEND);
+    gl->Disable(GL_DEPTH_TEST);
+    gl->Disable(GL_SCISSOR_TEST);
+    if ((rc = hfs_gl_check(gl, "backend gles: setup", err)))
+        goto fail;
+    if ((rc = hfs_gles_plan_init(&g->plan, err)))
+        goto fail;
+    *out = g;
+    return HFS_OK;
+
+fail:
+    hfs_gles_destroy(g);
+    return rc;
+}
+
+void hfs_gles_destroy(hfs_gles *g)
+{
+    if (!g)
+        return;
+    const hfs_gl *gl = NULL;
+    if (g->ctx && g->gl.GetError && !hfs_gl_context_make_current(g->ctx, NULL)) {
+        gl = &g->gl;
+        hfs_gles_resources_free(&g->r, gl);
+        hfs_gles_programs_free(&g->programs, gl);
+        if (g->vao)
+            gl->DeleteVertexArrays(1, &g->vao);
+        gl->DeleteBuffers(HFS_UBO_COUNT, g->ubo);
+        hfs_gles_timing_free(&g->timing, gl);
+    }
+    hfs_gles_wedge_textures_free(&g->wedge, gl);
+    hfs_visibility_destroy(g->env_vis);
+    hfs_gl_context_destroy(g->ctx);
+    free(g->terrain_z);
+    free(g->last_img);
+    free(g->scratch);
+    free(g);
+}
+
+const char *hfs_gles_context_name(const hfs_gles *g)
+{
+    return hfs_gl_context_name(g->ctx);
+}
+
+const char *hfs_gles_describe(const hfs_gles *g)
+{
+    return hfs_gl_context_describe(g->ctx);
+}
+
+void hfs_gles_set_timing_finish(hfs_gles *g, int finish)
+{
+    g->timing.finish = finish != 0;
+}
+
+void hfs_gles_set_amortize(hfs_gles *g, int passes_per_frame)
+{
+    g->plan.amortize = passes_per_frame;
+}
+
+void hfs_gles_set_timing(hfs_gles *g, int level)
+{
+    g->timing.level = level < 0 ? 0 : (level > 2 ? 2 : level);
+}
+
+void hfs_gles_get_timings(const hfs_gles *g, hfs_timings *t)
+{
+    *t = g->last;
+}
+
+void hfs_gles_invalidate(hfs_gles *g)
+{
+    g->terrain_valid = 0;
+    hfs_gles_plan_drop_all(&g->plan);
+}
+
+void hfs_gles_frame_report(const hfs_gles *g, hfs_frame_report *out)
+{
+    hfs_gles_plan_report(&g->plan, out);
+}
+
+void hfs_gles_get_stats(const hfs_gles *g, hfs_gles_stats *s)
+{
+    *s = g->stats;
+}
+
+/* The frame's lights: those that contribute, exactly as cpu_render.c. */
+static void frame_lights(const hfs_lighting *l, const hfs_quality *q, hfs_gles_frame *fr)
+{
+    if (l->has_env)
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < HFS_SH_COEFFS; ++k)
+                fr->has_env |= l->env_sh[c][k] != 0.0;
+    for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i) {
+        if (!hfs_key_light_contributes(&l->key[i], l->albedo))
+            continue;
+        hfs_gles_key *k = &fr->keys[fr->n_keys++].k;
+        hfs_key_setup ks;
+        hfs_key_setup_make(&l->key[i], q, &ks);
+        k->swath = ks.swath;
+        memcpy(k->dir, ks.dir, sizeof k->dir);
+        k->alpha = ks.alpha;
+        memcpy(k->le, ks.le, sizeof k->le);
+        memcpy(k->l_sh, ks.l_sh, sizeof k->l_sh);
+        k->l_norm = ks.l_norm;
+    }
+    for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
+        if (hfs_local_light_contributes(&l->local[i]))
+            fr->local[fr->n_local++] = l->local[i];
+    fr->rho_pi = l->albedo / PI;
+    if (fr->has_env)
+        hfs_env_rotated(l, fr->l_env);
+}
+
+static void frame_free(hfs_gles_frame *fr)
+{
+    for (int q = 0; q < fr->n_keys; ++q)
+        hfs_visibility_destroy(fr->keys[q].vis);
+    fr->n_keys = 0;
+}
+
+static void report_timings(hfs_gles *g, double t_start)
+{
+    hfs_timings *t = &g->last;
+    hfs_gles_timing_report(&g->timing, t);
+    t->texture_bytes = hfs_gles_resources_bytes(&g->r, &g->caps) + g->wedge.bytes;
+    snprintf(t->method, sizeof t->method, "%s",
+             g->timing.use_queries ? "timer-query" : "finish-clock");
+    snprintf(t->device, sizeof t->device, "%s (%s)", hfs_gl_context_describe(g->ctx),
+             g->caps.profile);
+    t->frame_ms = hfs_gles_now_ms() - t_start;
+}
+
+int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
+                    const hfs_quality *q, hfs_image *out, hfs_error *err)
+{
+    const double t_start = hfs_gles_now_ms();
+    int rc = hfs_gl_context_make_current(g->ctx, err);
+    if (rc)
+        return rc;
+    hfs_gles_timing_reset(&g->timing);
+    memset(&g->last, 0, sizeof g->last);
+    g->stats.terrain_recomputed = 0;
+    g->stats.env_recomputed = 0;
+
+    static const hfs_gles_frame empty;
+    hfs_gles_frame fr = empty;
+    fr.f = f, fr.q = q, fr.out = out;
+    frame_lights(l, q, &fr);
+    if ((!fr.has_env && fr.n_keys == 0 && fr.n_local == 0) || !(l->albedo > 0.0)) {
+        /* Black without a pass; the planner keeps the last lit frame's state
+         * (its image is still right for that scene). */
+        memset(out->rgb, 0, (size_t)out->width * out->height * 3 * sizeof *out->rgb);
+        g->plan.black = 1;
+        return HFS_OK;
+    }
+    rc = hfs_gles_frame_render(g, &fr, err);
+    frame_free(&fr);
+    if (rc) {
+        /* A failed frame may have left partial results: recompute next time. */
+        g->terrain_valid = 0;
+        hfs_gles_plan_drop_all(&g->plan);
+        for (int i = 0; i < 16 && g->gl.GetError() != GL_NO_ERROR; ++i)
+            ;
+        return rc;
+    }
+    hfs_gles_timing_collect(&g->timing, &g->gl);
+    snprintf(g->stats.profile, sizeof g->stats.profile, "%s", g->caps.profile);
+    g->stats.fp32 = g->caps.fp32;
+    if (g->timing.level)
+        report_timings(g, t_start);
+    return HFS_OK;
+}

@@ -1,0 +1,136 @@
+/*
+ * gles_backend.h — the GLES backend's private state, shared by its files
+ * (not installed, not for the other backends).
+ *
+ *   gles_backend.c   the object: create/destroy, settings, hfs_gles_render
+ *                    (which lights contribute, the frame's light data)
+ *   gles_frame.c     one frame: limits, resources, the plan, the loop over
+ *                    the pass table
+ *   pass_*.c         the passes (pass.h), one file each
+ *   resources.c      textures and framebuffers
+ *   programs.c       the program cache (programs.def)
+ *   wedge_textures.c the table path's wedge tables as textures
+ *   timing.c         per-pass GPU times
+ *   plan.c           the frame as a frame_plan.h graph (from the pass table)
+ *   layout.c, uniform_blocks.c   the CPU side: sizes, heights, std140 blocks
+ */
+#ifndef HFS_GLES_BACKEND_H
+#define HFS_GLES_BACKEND_H
+
+#include "backends.h"
+#include "gl_caps.h"
+#include "gl_context.h"
+#include "lights.h"
+#include "pass.h"
+#include "plan.h"
+#include "programs.h"
+#include "resources.h"
+#include "timing.h"
+#include "uniform_blocks.h"
+#include "wedge_textures.h"
+
+/* Uniform buffers (one per block content; the key swaths and records are
+ * two buffers, bound by range). */
+enum { HFS_UBO_SCALES, HFS_UBO_ENV_SWATH, HFS_UBO_KEY_SWATHS, HFS_UBO_SHADE, HFS_UBO_KEYS,
+       HFS_UBO_LOCAL, HFS_UBO_COUNT };
+
+/* One key light of the frame. */
+typedef struct hfs_gles_frame_key {
+    hfs_gles_key k;
+    hfs_visibility *vis;
+    size_t swath_off;  /* bytes into HFS_UBO_KEY_SWATHS */
+    size_t swath_size; /* bytes */
+    int rec_off;       /* vec4 into HfsKeys */
+} hfs_gles_frame_key;
+
+/* What one frame is computed from, and what its passes hand each other. */
+struct hfs_gles_frame {
+    const hfs_field *f;
+    const hfs_quality *q;
+    hfs_image *out;
+    hfs_gles_layout L;
+    int tables;                           /* the wedge-table visibility path */
+    int has_env, n_keys;
+    hfs_gles_frame_key keys[HFS_MAX_KEY_LIGHTS];
+    double l_env[3][HFS_SH_N];            /* rotated environment SH */
+    double rho_pi;
+    int key_layers;                       /* horizon layers the keys use */
+    size_t key_swath_bytes;               /* HFS_UBO_KEY_SWATHS size */
+    int key_rec_block;                    /* HfsKeys declared size, vec4 */
+    int n_local;                          /* contributing local lights */
+    hfs_local_light local[HFS_MAX_LOCAL_LIGHTS];
+    int local_open[HFS_MAX_LOCAL_LIGHTS]; /* beyond the shadow range: ratio 1 */
+    double out_scale;                     /* power of two (pass_shade.c) */
+    const int *run[HFS_PASS_COUNT];       /* the plan: run[p][instance] */
+};
+
+struct hfs_gles {
+    hfs_gl_context *ctx;
+    hfs_gl gl;
+    hfs_gl_driver driver;
+    hfs_gl_caps caps;                     /* this frame's profile */
+    char profile[16];                     /* "" = by precision */
+    int strict_limits;                    /* ES 3.0 minimums, not the driver's */
+    GLuint vao;
+    GLuint ubo[HFS_UBO_COUNT];
+    hfs_gles_programs programs;
+    hfs_gles_resources r;
+    hfs_gles_wedge_textures wedge;
+
+    /* Terrain cache: what the terrain pass computed from. */
+    int terrain_valid;
+    float *terrain_z;
+    size_t terrain_cap;
+    int t_w, t_h, t_k, t_offset, t_fp32;
+    double t_dx, t_zscale;
+
+    hfs_gles_plan plan;
+    hfs_field_extent extent;              /* of the kept terrain (lights.h) */
+    int extent_valid;
+    int key_stride;                       /* horizon layers per key slot */
+    float *last_img;                      /* the last image read back, RGB */
+    size_t last_img_cap;
+    hfs_visibility *env_vis;
+    int env_vis_n;
+
+    hfs_gles_timing timing;
+    int stage_slot[HFS_PASS_COUNT];       /* first timing slot of each pass */
+    hfs_timings last;
+    hfs_gles_stats stats;
+    char *scratch;
+    size_t scratch_cap;
+};
+
+/* Scratch memory of at least `bytes`, kept between frames (NULL: none). */
+void *hfs_gles_scratch(hfs_gles *g, size_t bytes);
+/* One frame (gles_frame.c): fr holds the frame's lights. */
+int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err);
+
+/* Timing of stage `stage` of pass `p` (pass.h stages). */
+void hfs_gles_stage_begin(hfs_gles *g, hfs_gles_pass_id p, int stage);
+void hfs_gles_stage_end(hfs_gles *g, hfs_gles_pass_id p, int stage);
+void hfs_gles_stage_fetches(hfs_gles *g, hfs_gles_pass_id p, int stage, double fetches);
+
+/* Why the terrain pass must run again, or NULL when what it computed still
+ * holds (the heights are compared with the kept copy; pass_terrain.c). */
+const char *hfs_gles_terrain_change(const hfs_gles *g, const hfs_field *f, const hfs_quality *q);
+
+/* Binds the textures every grid pass reads (levels, normals) and the
+ * per-scale constants, and sets the grid uniforms. */
+int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
+                              const hfs_gles_layout *L, hfs_error *err);
+/* Draws the bound program over the grid into `outs` layers of array
+ * texture tex from layer0 (through fbo); with fetch_sum, adds the counts
+ * the HFS_COUNT twin wrote to target 0. */
+int hfs_gles_draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, GLuint tex,
+                              int layer0, int outs, const char *what, double *fetch_sum,
+                              hfs_error *err);
+/* Adds the fetch counts a counting twin wrote to target 0 of fbo (vw x vh). */
+int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, double *sum,
+                        hfs_error *err);
+
+/* A key light's irradiance at normal incidence, pi sin^2 alpha: the
+ * largest value of its factor (never 0 in float). */
+double hfs_gles_key_emax(const hfs_gles_key *k);
+
+#endif /* HFS_GLES_BACKEND_H */

@@ -1,0 +1,279 @@
+/*
+ * gles_frame.c — one GLES frame: the profile and its limits, the
+ * resources, the plan (which passes and which of their instances run, and
+ * why), then a loop over the pass table (pass.h).  Also the helpers the
+ * passes share (grid inputs, layered draws, timing by stage).
+ */
+#include "gles_backend.h"
+
+#include "gl_util.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void *hfs_gles_scratch(hfs_gles *g, size_t bytes)
+{
+    if (bytes > g->scratch_cap) {
+        char *p = realloc(g->scratch, bytes);
+        if (!p)
+            return NULL;
+        g->scratch = p;
+        g->scratch_cap = bytes;
+    }
+    return g->scratch;
+}
+
+void hfs_gles_stage_begin(hfs_gles *g, hfs_gles_pass_id p, int stage)
+{
+    hfs_gles_timing_begin(&g->timing, &g->gl, g->stage_slot[p] + stage);
+}
+
+void hfs_gles_stage_end(hfs_gles *g, hfs_gles_pass_id p, int stage)
+{
+    hfs_gles_timing_end(&g->timing, &g->gl, g->stage_slot[p] + stage);
+}
+
+void hfs_gles_stage_fetches(hfs_gles *g, hfs_gles_pass_id p, int stage, double fetches)
+{
+    g->timing.fetch[g->stage_slot[p] + stage] += fetches;
+}
+
+int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
+                              const hfs_gles_layout *L, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    int rc;
+    if ((rc = hfs_gles_program_texture(gl, prog, "u_levels", GL_TEXTURE_2D_ARRAY, g->r.arr, err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, g->r.normals, err)))
+        return rc;
+    hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
+    hfs_gles_set_i1(gl, prog, "u_sub", L->sub);
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SCALES, g->ubo[HFS_UBO_SCALES]);
+    return HFS_OK;
+}
+
+int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, double *sum,
+                        hfs_error *err)
+{
+    float *px = hfs_gles_scratch(g, (size_t)L->vw * L->vh * 4 * sizeof(float));
+    if (!px)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+    int rc = hfs_gl_read_rgba(&g->gl, fbo, 0, 0, L->vw, L->vh, HFS_GL_READ_AUTO, px, NULL, err);
+    if (rc)
+        return rc;
+    for (size_t i = 0; i < (size_t)L->vw * L->vh; ++i)
+        *sum += px[4 * i] + 1024.0 * px[4 * i + 1];
+    return HFS_OK;
+}
+
+int hfs_gles_draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, GLuint tex,
+                              int layer0, int outs, const char *what, double *fetch_sum,
+                              hfs_error *err)
+{
+    int rc = hfs_gles_fbo_layers(&g->gl, fbo, tex, layer0, outs, what, err);
+    if (rc)
+        return rc;
+    hfs_gles_draw(&g->gl, fbo, L->vw, L->vh);
+    return fetch_sum ? hfs_gles_sum_counts(g, L, fbo, fetch_sum, err) : HFS_OK;
+}
+
+/* The profile, the layout, and every limit the frame must meet (each
+ * pass's own through its layout hook), before anything is allocated. */
+static int check_limits(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+{
+    const hfs_gl_caps *caps = &g->caps;
+    const hfs_gles_layout *L = &fr->L;
+    int rc;
+    if ((rc = hfs_gl_caps_check_texture(caps, L->w, L->h, L->n_layers,
+                                        "height levels (the field's size)", err)) ||
+        (rc = hfs_gl_caps_check_texture(caps, HFS_VIS_TABLE_SIZE, HFS_VIS_TABLE_SIZE,
+                                        4 * (HFS_MAX_KEY_LIGHTS + 1), "wedge tables", err)) ||
+        (rc = hfs_gl_caps_check_draw_buffers(caps, 4, "SH visibility (16 coefficients)", err)) ||
+        (rc = hfs_gl_caps_check_samplers(caps, 10, "shading pass", err)) ||
+        (rc = hfs_gl_caps_check_uniform_block(caps, hfs_gles_scales_vec4(L) * 16,
+                                              "per-scale constants", err)))
+        return rc;
+    for (int p = 0; p < HFS_PASS_COUNT; ++p) {
+        const hfs_gles_pass *pass = hfs_gles_pass_table[p];
+        if (pass->layout && (!pass->present || pass->present(fr)) &&
+            (rc = pass->layout(g, fr, err)))
+            return rc;
+    }
+    return HFS_OK;
+}
+
+/* Textures follow the frame's sizes; what a reallocated texture held is
+ * lost, and the planner is told so before it plans. */
+static int fit_resources(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+{
+    const hfs_gles_resources *r = &g->r;
+    const unsigned gens[5] = {r->terrain_gen, r->grid_gen, r->keyhz_gen, r->localv_gen,
+                              r->kf_gen};
+    int rc = hfs_gles_resources_ensure(&g->r, &g->gl, &g->caps, &fr->L, fr->key_layers,
+                                       (fr->n_local + 1) / 2, fr->n_keys, err);
+    if (rc)
+        return rc;
+    if (r->terrain_gen != gens[0])
+        g->terrain_valid = 0;
+    hfs_gles_plan_lost(&g->plan, r->grid_gen != gens[1], r->keyhz_gen != gens[2],
+                       r->localv_gen != gens[3], r->kf_gen != gens[4]);
+    hfs_gles_wedge_textures_follow(&g->wedge, &g->gl, &g->caps);
+    return HFS_OK;
+}
+
+/* What this frame's passes are computed from, for the planner. */
+static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
+{
+    const hfs_quality *q = fr->q;
+    memset(s, 0, sizeof *s);
+    s->sub = fr->L.sub, s->vw = fr->L.vw, s->vh = fr->L.vh;
+    s->has_env = fr->has_env;
+    s->nphi_env = q->nphi_env;
+    s->vis_path = (int)q->visibility;
+    if (fr->has_env)
+        memcpy(s->l_env, fr->l_env, sizeof s->l_env);
+    s->rho_pi = fr->rho_pi;
+    s->n_keys = fr->n_keys;
+    for (int i = 0; i < fr->n_keys && i < HFS_GLES_PLAN_KEYS; ++i) {
+        const hfs_gles_key *k = &fr->keys[i].k;
+        s->key[i].swath = k->swath;
+        s->key[i].hz_layer = k->hz_layer;
+        memcpy(s->key[i].dir, k->dir, sizeof k->dir);
+        s->key[i].alpha = k->alpha;
+        memcpy(s->key[i].le, k->le, sizeof k->le);
+    }
+    s->n_local = fr->n_local;
+    s->nphi_local = q->nphi_local;
+    s->local_full = q->local_full_swath;
+    for (int i = 0; i < fr->n_local; ++i) {
+        memcpy(s->local[i].pos, fr->local[i].pos, sizeof fr->local[i].pos);
+        s->local[i].radius = fr->local[i].radius;
+        memcpy(s->local[i].le, fr->local[i].radiance, sizeof fr->local[i].radiance);
+        s->local[i].open = fr->local_open[i];
+    }
+}
+
+/* Plans the frame; 0 when no pass needs to run (the kept image holds). */
+static int plan(hfs_gles *g, hfs_gles_frame *fr)
+{
+    const char *terrain_why = hfs_gles_terrain_change(g, fr->f, fr->q);
+    if (terrain_why) {
+        g->terrain_valid = 0;
+        g->extent_valid = 0;
+    }
+    /* Local lights the terrain cannot shadow need no ratios (lights.h). */
+    if (fr->n_local > 0 && !g->extent_valid) {
+        hfs_field_extent_make(fr->f, &g->extent);
+        g->extent_valid = 1;
+    }
+    for (int i = 0; i < fr->n_local; ++i)
+        fr->local_open[i] = hfs_local_light_open(&g->extent, &fr->local[i]);
+    hfs_gles_frame_sig sig;
+    frame_signature(fr, &sig);
+    const size_t n_img = (size_t)fr->L.w * fr->L.h * 3;
+    const int kept = g->last_img && g->last_img_cap >= n_img;
+    if (hfs_gles_plan_frame(&g->plan, &sig, terrain_why) == 0 && kept)
+        return 0;
+    /* The readback needs this frame's output scale, and a shaded frame is
+     * read back: the two go together (as does a frame without a kept
+     * image, e.g. the first after a failure). */
+    if (g->plan.run[HFS_PASS_SHADE][0] || g->plan.run[HFS_PASS_READBACK][0] || !kept)
+        g->plan.run[HFS_PASS_SHADE][0] = g->plan.run[HFS_PASS_READBACK][0] = 1;
+    for (int p = 0; p < HFS_PASS_COUNT; ++p)
+        fr->run[p] = g->plan.run[p];
+    return 1;
+}
+
+static void mark_cached(hfs_gles *g, int p)
+{
+    const hfs_gles_pass *pass = hfs_gles_pass_table[p];
+    for (int s = 0; s < HFS_PASS_MAX_STAGES && pass->stages[s]; ++s)
+        g->timing.cached[g->stage_slot[p] + s] = 1;
+}
+
+/* One row of the table: prepare, then the instances the plan chose. */
+static int run_pass(hfs_gles *g, hfs_gles_frame *fr, int p, hfs_error *err)
+{
+    const hfs_gles_pass *pass = hfs_gles_pass_table[p];
+    int rc;
+    if (pass->present && !pass->present(fr))
+        return HFS_OK;
+    if (pass->prepare && (rc = pass->prepare(g, fr, err)))
+        return rc;
+    const int n = hfs_gles_pass_max_instances(pass);
+    int any = 0;
+    for (int i = 0; i < n; ++i)
+        any |= fr->run[p][i];
+    if (!any) {
+        mark_cached(g, p);
+        return HFS_OK;
+    }
+    const int self_timed = pass->stages[1] != NULL; /* times its own stages */
+    if (!self_timed)
+        hfs_gles_stage_begin(g, (hfs_gles_pass_id)p, 0);
+    if ((rc = pass->run(g, fr, fr->run[p], err)))
+        return rc;
+    if (!self_timed)
+        hfs_gles_stage_end(g, (hfs_gles_pass_id)p, 0);
+    for (int i = 0; i < n; ++i)
+        if (fr->run[p][i])
+            hfs_gles_plan_done(&g->plan, (hfs_gles_pass_id)p, i);
+    return HFS_OK;
+}
+
+/* Counting twins of the passes that have one (timing level 2): their
+ * fetch counts, at the price of their targets (dropped after). */
+static int count_fetches(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+{
+    for (int p = 0; p < HFS_PASS_COUNT; ++p) {
+        const hfs_gles_pass *pass = hfs_gles_pass_table[p];
+        if (!pass->count)
+            continue;
+        double *fetch = &g->timing.fetch[g->stage_slot[p]];
+        if (g->timing.level < 2) {
+            *fetch = -1.0;
+            continue;
+        }
+        *fetch = 0.0;
+        int rc;
+        if ((!pass->present || pass->present(fr)) && (rc = pass->count(g, fr, fetch, err)))
+            return rc;
+    }
+    if (g->timing.level >= 2)
+        hfs_gles_plan_drop_grids(&g->plan); /* their targets now hold counts */
+    return HFS_OK;
+}
+
+int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+{
+    const int fp32 = fr->q->precision == HFS_PRECISION_FP32;
+    int rc;
+    if ((rc = hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL, fp32,
+                                 g->strict_limits, &g->caps, err)) ||
+        (rc = hfs_gles_layout_init(&fr->L, fr->f, fr->q, err)))
+        return rc;
+    hfs_gles_timing_select(&g->timing, g->caps.timer_query);
+    fr->tables = fr->q->visibility == HFS_VIS_WEDGE_TABLE;
+    if ((rc = check_limits(g, fr, err)) || (rc = fit_resources(g, fr, err)))
+        return rc;
+    const size_t n_img = (size_t)fr->L.w * fr->L.h * 3;
+    if (!plan(g, fr)) { /* nothing changed: no pass; the last image again */
+        memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
+        for (int p = 0; p < HFS_PASS_COUNT; ++p)
+            mark_cached(g, p);
+        return HFS_OK;
+    }
+    g->stats.offset_mismatches = 0;
+    for (int p = 0; p < HFS_PASS_COUNT; ++p) {
+        if (p == HFS_PASS_SHADE && !fr->run[p][0]) {
+            /* Neither shading nor read-back: the kept image holds. */
+            memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
+            mark_cached(g, HFS_PASS_SHADE);
+            mark_cached(g, HFS_PASS_READBACK);
+            return HFS_OK;
+        }
+        if ((rc = run_pass(g, fr, p, err)))
+            return rc;
+    }
+    return count_fetches(g, fr, err);
+}

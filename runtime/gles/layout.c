@@ -1,0 +1,111 @@
+/*
+ * layout.c — see layout.h.
+ */
+#include "layout.h"
+
+#include "pyramid_layout.h"
+#include "gl_util.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+int hfs_gles_grid_size(int n, int sub)
+{
+    if (sub < 1)
+        sub = 1;
+    return (n - 1 + sub - 1) / sub + 1;
+}
+
+int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quality *q,
+                         hfs_error *err)
+{
+    memset(L, 0, sizeof *L);
+    L->w = f->width;
+    L->h = f->height;
+    L->k = q->k;
+    L->offset = q->offset;
+    L->dx = f->dx;
+    L->zscale = f->zscale;
+    L->n_levels = hfs_pyramid_level_count(L->w, L->h, q->k);
+    if (L->n_levels > HFS_GLES_MAX_LEVELS)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: %d pyramid levels (k=%d, %dx%d) "
+                        "exceed %d", L->n_levels, q->k, L->w, L->h, HFS_GLES_MAX_LEVELS);
+    L->lmin = hfs_pyramid_read_level(L->n_levels, q->k, q->offset, 0);
+    L->n_layers = L->n_levels - L->lmin;
+    L->sub = q->subsample < 1 ? 1 : q->subsample;
+    L->vw = hfs_gles_grid_size(L->w, L->sub);
+    L->vh = hfs_gles_grid_size(L->h, L->sub);
+    for (int i = 0; i < L->n_levels; ++i) {
+        hfs_pyramid_level_size(L->w, L->h, q->k, i, &L->lw[i], &L->lh[i]);
+        L->spacing[i] = hfs_pyramid_spacing(L->n_levels, q->k, i);
+        L->read_layer[i] = hfs_pyramid_read_level(L->n_levels, q->k, q->offset, i) - L->lmin;
+    }
+    double lo = DBL_MAX, hi = -DBL_MAX;
+    const size_t n = (size_t)L->w * (size_t)L->h;
+    for (size_t i = 0; i < n; ++i) {
+        const double z = f->z[i];
+        lo = z < lo ? z : lo;
+        hi = z > hi ? z : hi;
+    }
+    L->base = 0.5 * lo + 0.5 * hi; /* no overflow for any float range */
+    L->hscale = 0.5 * hi - 0.5 * lo;
+    L->vmax = 1.0;
+    if (!(L->hscale > 0.0)) {
+        L->hscale = 1.0; /* flat: every v is 0 */
+        L->vmax = 0.0;
+    }
+    return HFS_OK;
+}
+
+double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int fp32,
+                              void *dst)
+{
+    const size_t n = (size_t)L->w * (size_t)L->h;
+    double worst = 0.0;
+    if (fp32) {
+        float *out = dst;
+        for (size_t i = 0; i < n; ++i) {
+            out[2 * i] = (float)(((double)f->z[i] - L->base) / L->hscale);
+            out[2 * i + 1] = 0.0f;
+        }
+        return 0.0;
+    }
+    uint16_t *out = dst;
+    for (size_t i = 0; i < n; ++i) {
+        const double v = ((double)f->z[i] - L->base) / L->hscale;
+        const uint16_t hi = hfs_float_to_half((float)v);
+        const double hv = hfs_half_to_float(hi);
+        const uint16_t lo = hfs_float_to_half((float)(v - hv));
+        out[2 * i] = hi;
+        out[2 * i + 1] = lo;
+        const double e = fabs(hv + (double)hfs_half_to_float(lo) - v);
+        worst = e > worst ? e : worst;
+    }
+    return worst;
+}
+
+double hfs_gles_local_max_irradiance(const hfs_gles_layout *L, const hfs_local_light *l)
+{
+    const double lo[3] = {0.0, 0.0, L->zscale * (L->base - L->hscale)};
+    const double hi[3] = {(L->w - 1) * L->dx, (L->h - 1) * L->dx,
+                          L->zscale * (L->base + L->hscale) + 1e-4 * L->dx};
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double c = l->pos[k], e = c < lo[k] ? lo[k] - c : (c > hi[k] ? c - hi[k] : 0.0);
+        d2 += e * e;
+    }
+    const double r2 = l->radius * l->radius;
+    return d2 <= r2 ? PI : PI * r2 / d2;
+}
+
+double hfs_gles_output_scale(double bound)
+{
+    if (!(bound > 0.0) || !isfinite(bound))
+        return 1.0;
+    int e = (int)floor(log2(16384.0 / bound));
+    e = e < -1000 ? -1000 : (e > 1000 ? 1000 : e); /* double's range */
+    return ldexp(1.0, e);
+}

@@ -1,0 +1,110 @@
+/*
+ * pass_env_horizons.c — the environment's visibility on the sub-sampled
+ * grid (env_horizons.frag): per receiver the horizon in each direction of
+ * the full swath (q->nphi_env), projected to order-4 SH (folded Legendre
+ * matrices, or wedge tables on the table path), written as 4 RGBA targets
+ * (DESIGN.md "Horizons", "GLES path").  Kept with the terrain while the
+ * environment's settings do not change: a turned or re-tinted environment
+ * does not rerun it.
+ */
+#include "gles_backend.h"
+
+#include "gl_util.h"
+
+static int present(const hfs_gles_frame *fr)
+{
+    return fr->has_env;
+}
+
+static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+{
+    return hfs_gl_caps_check_uniform_block(&g->caps, hfs_gles_swath_vec4(fr->q->nphi_env) * 16,
+                                           "environment swath (--nphi-env)", err);
+}
+
+/* The swath's visibility object (kept while nphi_env holds), its block and
+ * tables when the pass runs. */
+static int prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+{
+    const hfs_quality *q = fr->q;
+    int rc;
+    if (!g->env_vis || g->env_vis_n != q->nphi_env) {
+        hfs_visibility_destroy(g->env_vis);
+        g->env_vis = NULL;
+        hfs_swath s;
+        hfs_swath_full(q->nphi_env, &s);
+        if ((rc = hfs_visibility_create(&s, HFS_VIS_LEGENDRE, &g->env_vis, err)))
+            return rc;
+        g->env_vis_n = q->nphi_env;
+    }
+    g->stats.offset_mismatches += hfs_gles_offset_mismatches(&fr->L, hfs_visibility_swath(g->env_vis));
+    if (!fr->run[HFS_PASS_ENV_HORIZONS][0])
+        return HFS_OK;
+    const size_t bytes = hfs_gles_swath_vec4(q->nphi_env) * 16;
+    float *sw = hfs_gles_scratch(g, bytes);
+    if (!sw)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+    hfs_gles_pack_swath(&fr->L, g->env_vis, sw);
+    hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_ENV_SWATH], sw, bytes);
+    if (!fr->tables)
+        return HFS_OK;
+    void *scratch = hfs_gles_scratch(g, hfs_gles_wedge_scratch_bytes());
+    if (!scratch)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for wedge tables");
+    return hfs_gles_wedge_env(&g->wedge, &g->gl, &g->caps, hfs_visibility_swath(g->env_vis)->dphi,
+                              scratch, err);
+}
+
+/* The pass (count = 1: its counting twin) into the visibility targets. */
+static int draw(hfs_gles *g, const hfs_gles_frame *fr, int count, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    const hfs_gles_layout *L = &fr->L;
+    const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
+                                .n_dir = g->env_vis_n, .tables = fr->tables,
+                                .fp32 = g->caps.fp32, .count = count};
+    const hfs_gles_program *prog;
+    int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_HORIZONS, &v, &prog, err);
+    if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)))
+        return rc;
+    if (fr->tables &&
+        (rc = hfs_gles_program_texture(gl, prog, "u_tab", GL_TEXTURE_2D_ARRAY, g->wedge.env, err)))
+        return rc;
+    /* A hair above the largest height: rounding in the pyramid's hi+lo
+     * pairs and the bilinear filter must never make the bound too tight. */
+    hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SWATH, g->ubo[HFS_UBO_ENV_SWATH]);
+    hfs_gles_draw(gl, g->r.venv_fbo, L->vw, L->vh);
+    gl->UseProgram(0);
+    return hfs_gl_check(gl, "backend gles: env pass", err);
+}
+
+static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
+{
+    (void)which;
+    int rc = draw(g, fr, 0, err);
+    if (!rc)
+        g->stats.env_recomputed = 1;
+    return rc;
+}
+
+static int count(hfs_gles *g, hfs_gles_frame *fr, double *fetches, hfs_error *err)
+{
+    int rc = draw(g, fr, 1, err);
+    return rc ? rc : hfs_gles_sum_counts(g, &fr->L, g->r.venv_fbo, fetches, err);
+}
+
+const hfs_gles_pass hfs_pass_env_horizons = {
+    .id = HFS_PASS_ENV_HORIZONS,
+    .plan_name = "env",
+    .scope = HFS_SCOPE_FRAME,
+    .deferrable = 1,
+    .reads = {"pyramid", "subsample", "env settings"},
+    .writes = {"env visibility"},
+    .stages = {"env"},
+    .present = present,
+    .layout = layout,
+    .prepare = prepare,
+    .run = run,
+    .count = count,
+};

@@ -1,0 +1,55 @@
+/*
+ * pass_env_transfer.c — the environment's transfer vectors at full
+ * resolution (env_transfer.frag): per texel the occluded part of
+ * T = H(N) * V_env, the SH product of its clamped cosine and the grid's
+ * visibility interpolated to it.  Independent of the environment's radiance
+ * and rotation: a turned or re-tinted sky costs the shading's dot products
+ * only.
+ */
+#include "gles_backend.h"
+
+#include "gl_util.h"
+
+#include <stdio.h>
+
+static int present(const hfs_gles_frame *fr)
+{
+    return fr->has_env;
+}
+
+static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
+{
+    (void)which;
+    const hfs_gl *gl = &g->gl;
+    const hfs_gles_layout *L = &fr->L;
+    const hfs_gles_variant v = {.fp32 = g->caps.fp32};
+    const hfs_gles_program *prog;
+    int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_TRANSFER, &v, &prog, err);
+    if (rc ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, g->r.normals, err)))
+        return rc;
+    for (int i = 0; i < 4; ++i) {
+        char name[8];
+        snprintf(name, sizeof name, "u_v%d", i);
+        if ((rc = hfs_gles_program_texture(gl, prog, name, GL_TEXTURE_2D, g->r.venv[i], err)))
+            return rc;
+    }
+    hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
+    hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
+    hfs_gles_set_i1(gl, prog, "u_sub", L->sub);
+    hfs_gles_draw(gl, g->r.transfer_fbo, L->w, L->h);
+    gl->UseProgram(0);
+    hfs_gles_stage_fetches(g, HFS_PASS_ENV_TRANSFER, 0, (double)L->w * L->h * 5);
+    return hfs_gl_check(gl, "backend gles: transfer pass", err);
+}
+
+const hfs_gles_pass hfs_pass_env_transfer = {
+    .id = HFS_PASS_ENV_TRANSFER,
+    .plan_name = "transfer",
+    .scope = HFS_SCOPE_FRAME,
+    .reads = {"pyramid", "env visibility"},
+    .writes = {"env transfer"},
+    .stages = {"transfer"},
+    .present = present,
+    .run = run,
+};

@@ -1,0 +1,149 @@
+/*
+ * pass_shade.c — exit radiance at full resolution (shade.frag), RGB as
+ * fp16 hi + lo targets: the environment (H(N) . L_env from the kept
+ * transfer vectors, clamped against order-4 ringing), each key light
+ * (rho/pi Le E_max times its factor) and each local light (E_cap at the
+ * texel times its interpolated ratio), times the albedo.
+ *
+ * Every radiance reaches the shader already multiplied by the frame's
+ * output scale, a power of two that puts the largest value the frame can
+ * hold near 16384 (layout.h hfs_gles_output_scale): fp16 then never
+ * saturates and never sinks into subnormals, for any finite scene, and the
+ * frame's bits are those of an unscaled computation wherever that one
+ * neither overflowed nor underflowed.  The read-back divides it out.
+ */
+#include "gles_backend.h"
+
+#include "gl_util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+/* The largest exit radiance the frame's lights can give. */
+static double radiance_bound(const hfs_gles_frame *fr)
+{
+    double bound = 0.0;
+    if (fr->has_env) {
+        double m = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            double s = 0.0;
+            for (int k = 0; k < HFS_SH_N; ++k)
+                s += fabs(fr->l_env[c][k]);
+            m = s > m ? s : m;
+        }
+        bound += 4.0 * m;
+    }
+    bound *= PI;
+    /* Lights by the irradiance they can actually give (not pi): a bound
+     * loose by Le * pi / E_max pushes the frame's values into fp16's
+     * subnormals, where hi + lo keep only ~3e-8 of the scale (a 1e-5 rad sun
+     * of radiance 3e9 lost 0.7% that way). */
+    for (int i = 0; i < fr->n_keys; ++i) /* pi sin^2 alpha, at normal incidence */
+        bound += fmax(fr->keys[i].k.le[0], fmax(fr->keys[i].k.le[1], fr->keys[i].k.le[2])) *
+                 hfs_cap_irradiance(1.0, fr->keys[i].k.alpha);
+    for (int i = 0; i < fr->n_local; ++i)
+        bound += fmax(fr->local[i].radiance[0],
+                      fmax(fr->local[i].radiance[1], fr->local[i].radiance[2])) *
+                 hfs_gles_local_max_irradiance(&fr->L, &fr->local[i]);
+    return bound * fr->rho_pi;
+}
+
+/* HfsShade, every radiance times the output scale s. */
+static void fill_block(const hfs_gles_frame *fr, double s, hfs_gles_shade_block *sb)
+{
+    memset(sb, 0, sizeof *sb);
+    for (int c = 0; c < 3 && fr->has_env; ++c)
+        for (int k = 0; k < HFS_SH_N; ++k)
+            sb->env[c][k] = (float)(fr->l_env[c][k] * s);
+    sb->misc[0] = (float)fr->rho_pi;
+    sb->misc[1] = 1.0f; /* the scale is in the radiances */
+    sb->misc[2] = fr->has_env ? 1.0f : 0.0f;
+    for (int c = 0; c < 3 && fr->has_env; ++c) /* cpu_render.c env_clamp */
+        sb->env_neg[c] = (float)(fr->rho_pi * PI * hfs_sh_negative_bound(fr->l_env[c]) * s);
+    for (int i = 0; i < fr->n_keys; ++i) /* rho/pi Le E_max: the factor's scale */
+        for (int c = 0; c < 3; ++c)
+            sb->kle[i][c] = (float)(fr->rho_pi * fr->keys[i].k.le[c] *
+                                    hfs_gles_key_emax(&fr->keys[i].k) * s);
+    hfs_gles_open_transfer(sb->topen);
+    for (int i = 0; i < fr->n_local; ++i)
+        for (int c = 0; c < 3; ++c)
+            sb->lle[i][c] = (float)(fr->local[i].radiance[c] * s);
+}
+
+static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_program *prog,
+                       hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    const hfs_gles_resources *r = &g->r;
+    int rc;
+    if ((rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, r->normals, err)))
+        return rc;
+    for (int i = 0; i < 4; ++i) {
+        char name[8];
+        snprintf(name, sizeof name, "u_t%d", i);
+        if ((rc = hfs_gles_program_texture(gl, prog, name, GL_TEXTURE_2D, r->transfer[i], err)))
+            return rc;
+    }
+    if ((rc = hfs_gles_program_texture(gl, prog, "u_kf", GL_TEXTURE_2D_ARRAY, r->kf, err)))
+        return rc;
+    if (fr->n_local > 0) {
+        if ((rc = hfs_gles_program_texture(gl, prog, "u_levels", GL_TEXTURE_2D_ARRAY, r->arr,
+                                           err)) ||
+            (rc = hfs_gles_program_texture(gl, prog, "u_localv", GL_TEXTURE_2D_ARRAY, r->localv,
+                                           err)))
+            return rc;
+        gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_LOCAL, g->ubo[HFS_UBO_LOCAL]);
+    }
+    hfs_gles_set_i2(gl, prog, "u_size", fr->L.w, fr->L.h);
+    hfs_gles_set_i2(gl, prog, "u_vsize", fr->L.vw, fr->L.vh);
+    hfs_gles_set_i1(gl, prog, "u_sub", fr->L.sub);
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SHADE, g->ubo[HFS_UBO_SHADE]);
+    return HFS_OK;
+}
+
+static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
+{
+    (void)which;
+    const hfs_gl *gl = &g->gl;
+    const hfs_gles_layout *L = &fr->L;
+    const double bound = radiance_bound(fr);
+    if (!isfinite(bound))
+        return hfs_fail(err, HFS_E_INVALID, "backend gles: the scene's radiance (bound %g) is "
+                        "beyond what double precision carries", bound);
+    fr->out_scale = hfs_gles_output_scale(bound);
+    hfs_gles_shade_block sb;
+    fill_block(fr, fr->out_scale, &sb);
+    hfs_gles_ubo_upload(gl, g->ubo[HFS_UBO_SHADE], &sb, sizeof sb);
+
+    const int local = fr->n_local > 0;
+    const hfs_gles_variant v = {.n_keys = fr->n_keys, .env = fr->has_env, .local = local,
+                                .n_layers = local ? L->n_layers : 0,
+                                .local_dirs = local ? fr->q->nphi_local : 0,
+                                .n_local = fr->n_local, .fp32 = g->caps.fp32};
+    const hfs_gles_program *prog;
+    int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_SHADE, &v, &prog, err);
+    if (rc || (rc = bind_inputs(g, fr, prog, err)))
+        return rc;
+    hfs_gles_draw(gl, g->r.out_fbo, L->w, L->h);
+    gl->UseProgram(0);
+    double fetches = (double)L->w * L->h * (1 + 4 * fr->has_env + fr->n_keys);
+    if (local) /* the texel's height, one ratio layer per two lights */
+        fetches += (double)L->w * L->h * (1 + (fr->n_local + 1) / 2);
+    hfs_gles_stage_fetches(g, HFS_PASS_SHADE, 0, fetches);
+    return hfs_gl_check(gl, "backend gles: shading pass", err);
+}
+
+const hfs_gles_pass hfs_pass_shade = {
+    .id = HFS_PASS_SHADE,
+    .plan_name = "shade",
+    .scope = HFS_SCOPE_FRAME,
+    /* Reads what the frame's lights use; plan.c sets that each frame
+     * (hfs_gles_plan_frame). */
+    .reads = {NULL},
+    .writes = {"output targets"},
+    .stages = {"shade"},
+    .run = run,
+};

@@ -1,0 +1,277 @@
+/*
+ * resources.c — see resources.h.
+ */
+#include "resources.h"
+
+#include "gl_util.h"
+
+#include <string.h>
+
+GLuint hfs_gles_tex_new(const hfs_gl *gl, GLenum target, GLenum fmt, int w, int h, int layers,
+                        int linear)
+{
+    GLuint t = 0;
+    gl->GenTextures(1, &t);
+    gl->BindTexture(target, t);
+    if (target == GL_TEXTURE_2D_ARRAY)
+        gl->TexStorage3D(target, 1, fmt, w, h, layers);
+    else
+        gl->TexStorage2D(target, 1, fmt, w, h);
+    const GLint f = linear ? GL_LINEAR : GL_NEAREST;
+    gl->TexParameteri(target, GL_TEXTURE_MIN_FILTER, f);
+    gl->TexParameteri(target, GL_TEXTURE_MAG_FILTER, f);
+    gl->TexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->TexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl->BindTexture(target, 0);
+    return t;
+}
+
+void hfs_gles_tex_delete(const hfs_gl *gl, GLuint *t)
+{
+    if (*t)
+        gl->DeleteTextures(1, t);
+    *t = 0;
+}
+
+static void fbo_delete(const hfs_gl *gl, GLuint *f)
+{
+    if (*f)
+        gl->DeleteFramebuffers(1, f);
+    *f = 0;
+}
+
+int hfs_gles_fbo_new(const hfs_gl *gl, GLuint *fbo, int n, const GLuint *tex, const int *layer,
+                     const char *what, hfs_error *err)
+{
+    gl->GenFramebuffers(1, fbo);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, *fbo);
+    GLenum bufs[4];
+    for (int i = 0; i < n; ++i) {
+        if (layer && layer[i] >= 0)
+            gl->FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)i, tex[i],
+                                        0, layer[i]);
+        else
+            gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)i,
+                                     GL_TEXTURE_2D, tex[i], 0);
+        bufs[i] = GL_COLOR_ATTACHMENT0 + (GLenum)i;
+    }
+    gl->DrawBuffers(n, bufs);
+    GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: %s framebuffer incomplete "
+                        "(0x%x)", what, (unsigned)status);
+    return hfs_gl_check(gl, what, err);
+}
+
+int hfs_gles_fbo_layers(const hfs_gl *gl, GLuint fbo, GLuint tex, int layer0, int outs,
+                        const char *what, hfs_error *err)
+{
+    gl->BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    GLenum bufs[4];
+    for (int o = 0; o < 4; ++o) {
+        gl->FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)o,
+                                    o < outs ? tex : 0, 0, o < outs ? layer0 + o : 0);
+        bufs[o] = GL_COLOR_ATTACHMENT0 + (GLenum)o;
+    }
+    gl->DrawBuffers(outs, bufs);
+    GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: %s framebuffer incomplete (0x%x)",
+                        what, (unsigned)status);
+    return HFS_OK;
+}
+
+void hfs_gles_draw(const hfs_gl *gl, GLuint fbo, int w, int h)
+{
+    gl->BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl->Viewport(0, 0, w, h);
+    gl->DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void hfs_gles_ubo_upload(const hfs_gl *gl, GLuint ubo, const void *data, size_t bytes)
+{
+    gl->BindBuffer(GL_UNIFORM_BUFFER, ubo);
+    gl->BufferData(GL_UNIFORM_BUFFER, (GLsizeiptr)(bytes ? bytes : 16), data, GL_DYNAMIC_DRAW);
+    gl->BindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+static void grid_free(hfs_gles_resources *r, const hfs_gl *gl)
+{
+    for (int i = 0; i < 4; ++i)
+        hfs_gles_tex_delete(gl, &r->venv[i]);
+    fbo_delete(gl, &r->venv_fbo);
+    hfs_gles_tex_delete(gl, &r->keyhz);
+    r->keyhz_layers = 0;
+    r->keyhz_bytes = 0;
+    hfs_gles_tex_delete(gl, &r->localv);
+    r->localv_layers = 0;
+    r->localv_bytes = 0;
+    r->vw = r->vh = 0;
+}
+
+void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
+{
+    grid_free(r, gl);
+    hfs_gles_tex_delete(gl, &r->input);
+    for (int i = 0; i < HFS_GLES_MAX_LEVELS; ++i) {
+        hfs_gles_tex_delete(gl, &r->lev[i]);
+        fbo_delete(gl, &r->lev_fbo[i]);
+        hfs_gles_tex_delete(gl, &r->half[i]);
+        fbo_delete(gl, &r->half_fbo[i]);
+        fbo_delete(gl, &r->arr_fbo[i]);
+        fbo_delete(gl, &r->arr_mrt_fbo[i]);
+    }
+    hfs_gles_tex_delete(gl, &r->arr);
+    hfs_gles_tex_delete(gl, &r->normals);
+    fbo_delete(gl, &r->normals_fbo);
+    hfs_gles_tex_delete(gl, &r->out[0]);
+    hfs_gles_tex_delete(gl, &r->out[1]);
+    fbo_delete(gl, &r->out_fbo);
+    fbo_delete(gl, &r->out_lo_fbo);
+    fbo_delete(gl, &r->keyhz_fbo);
+    fbo_delete(gl, &r->localv_fbo);
+    for (int i = 0; i < 4; ++i)
+        hfs_gles_tex_delete(gl, &r->transfer[i]);
+    fbo_delete(gl, &r->transfer_fbo);
+    hfs_gles_tex_delete(gl, &r->kf);
+    fbo_delete(gl, &r->kf_fbo);
+    const unsigned gen[5] = {r->terrain_gen, r->grid_gen, r->keyhz_gen, r->localv_gen,
+                             r->kf_gen};
+    memset(r, 0, sizeof *r);
+    r->terrain_gen = gen[0] + 1, r->grid_gen = gen[1] + 1, r->keyhz_gen = gen[2] + 1;
+    r->localv_gen = gen[3] + 1, r->kf_gen = gen[4] + 1;
+}
+
+/* The pyramid: input, decimated levels, x-pass intermediates, the layer
+ * array and its single- and multi-target framebuffers. */
+static int pyramid_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                         const hfs_gles_layout *L, hfs_error *err)
+{
+    const int w = L->w, h = L->h;
+    int rc;
+    r->input = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, w, h, 1, 1);
+    r->bytes += (size_t)w * h * c->bytes_rg;
+    for (int l = L->lmin; l < L->n_levels - 1; ++l) {
+        r->lev[l] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, L->lw[l], L->lh[l], 1, 1);
+        r->bytes += (size_t)L->lw[l] * L->lh[l] * c->bytes_rg;
+        if ((rc = hfs_gles_fbo_new(gl, &r->lev_fbo[l], 1, &r->lev[l], NULL, "level", err)))
+            return rc;
+        /* The separable reconstruction's intermediate, its own size so
+         * that CLAMP_TO_EDGE clamps at the level's last row. */
+        r->half[l] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, w, L->lh[l], 1, 1);
+        r->bytes += (size_t)w * L->lh[l] * c->bytes_rg;
+        if ((rc = hfs_gles_fbo_new(gl, &r->half_fbo[l], 1, &r->half[l], NULL, "level", err)))
+            return rc;
+    }
+    r->arr = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rg, w, h, L->n_layers, 1);
+    r->bytes += (size_t)w * h * L->n_layers * c->bytes_rg;
+    for (int i = 0; i < L->n_layers - 1; ++i)
+        if ((rc = hfs_gles_fbo_new(gl, &r->arr_fbo[i], 1, &r->arr, &i, "level layer", err)))
+            return rc;
+    for (int i = 0; i < L->n_layers - 1; i += HFS_GLES_RECON_MRT) {
+        const int left = L->n_layers - 1 - i;
+        const int n = left < HFS_GLES_RECON_MRT ? left : HFS_GLES_RECON_MRT;
+        const GLuint att[HFS_GLES_RECON_MRT] = {r->arr, r->arr, r->arr, r->arr};
+        const int lay[HFS_GLES_RECON_MRT] = {i, i + 1, i + 2, i + 3};
+        if ((rc = hfs_gles_fbo_new(gl, &r->arr_mrt_fbo[i / HFS_GLES_RECON_MRT], n, att, lay,
+                                   "level layers", err)))
+            return rc;
+    }
+    return HFS_OK;
+}
+
+/* Full-resolution targets: normals, output (hi, lo), transfer vectors. */
+static int terrain_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                         const hfs_gles_layout *L, hfs_error *err)
+{
+    const int w = L->w, h = L->h;
+    int rc;
+    r->w = L->w, r->h = L->h, r->n_levels = L->n_levels, r->lmin = L->lmin;
+    r->n_layers = L->n_layers, r->fp32 = c->fp32;
+    if ((rc = pyramid_alloc(r, gl, c, L, err)))
+        return rc;
+    r->normals = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
+    r->bytes += (size_t)w * h * c->bytes_rgba;
+    if ((rc = hfs_gles_fbo_new(gl, &r->normals_fbo, 1, &r->normals, NULL, "normals", err)))
+        return rc;
+    r->out[0] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
+    r->out[1] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
+    r->bytes += (size_t)2 * w * h * c->bytes_rgba;
+    if ((rc = hfs_gles_fbo_new(gl, &r->out_fbo, 2, r->out, NULL, "output", err)) ||
+        (rc = hfs_gles_fbo_new(gl, &r->out_lo_fbo, 1, &r->out[1], NULL, "output", err)))
+        return rc;
+    for (int i = 0; i < 4; ++i)
+        r->transfer[i] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
+    r->bytes += (size_t)4 * w * h * c->bytes_rgba;
+    if ((rc = hfs_gles_fbo_new(gl, &r->transfer_fbo, 4, r->transfer, NULL, "env transfer",
+                               err)))
+        return rc;
+    gl->GenFramebuffers(1, &r->kf_fbo);
+    gl->GenFramebuffers(1, &r->keyhz_fbo);
+    gl->GenFramebuffers(1, &r->localv_fbo);
+    r->valid = 1;
+    return HFS_OK;
+}
+
+/* Grows the layered textures that follow the light counts. */
+static void layers_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                          const hfs_gles_layout *L, int key_layers, int local_layers, int n_keys)
+{
+    if (r->keyhz_layers < key_layers) {
+        hfs_gles_tex_delete(gl, &r->keyhz);
+        r->keyhz = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh,
+                                    key_layers, 1);
+        r->keyhz_layers = key_layers;
+        ++r->keyhz_gen;
+        r->keyhz_bytes = (size_t)L->vw * L->vh * key_layers * c->bytes_rgba;
+    }
+    if (n_keys > 0 && r->kf_layers < n_keys) {
+        hfs_gles_tex_delete(gl, &r->kf);
+        r->kf = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rg, L->w, L->h, n_keys, 0);
+        r->kf_layers = n_keys;
+        ++r->kf_gen;
+        r->kf_bytes = (size_t)L->w * L->h * n_keys * c->bytes_rg;
+    }
+    if (local_layers > 0 && r->localv_layers < local_layers) {
+        hfs_gles_tex_delete(gl, &r->localv);
+        r->localv = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh,
+                                     local_layers, 1);
+        r->localv_layers = local_layers;
+        ++r->localv_gen;
+        r->localv_bytes = (size_t)L->vw * L->vh * local_layers * c->bytes_rgba;
+    }
+}
+
+int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                              const hfs_gles_layout *L, int key_layers, int local_layers,
+                              int n_keys, hfs_error *err)
+{
+    int rc;
+    if (key_layers < 1)
+        key_layers = 1;
+    if (!(r->valid && r->w == L->w && r->h == L->h && r->n_levels == L->n_levels &&
+          r->lmin == L->lmin && r->fp32 == c->fp32)) {
+        hfs_gles_resources_free(r, gl);
+        if ((rc = hfs_gl_check(gl, "backend gles: pending error", err)) ||
+            (rc = terrain_alloc(r, gl, c, L, err)))
+            return rc;
+    }
+    if (r->vw != L->vw || r->vh != L->vh || !r->venv_fbo) {
+        grid_free(r, gl);
+        r->vw = L->vw, r->vh = L->vh;
+        ++r->grid_gen, ++r->keyhz_gen, ++r->localv_gen;
+        for (int i = 0; i < 4; ++i)
+            r->venv[i] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->vw, L->vh, 1, 1);
+        if ((rc = hfs_gles_fbo_new(gl, &r->venv_fbo, 4, r->venv, NULL, "visibility", err)))
+            return rc;
+    }
+    layers_ensure(r, gl, c, L, key_layers, local_layers, n_keys);
+    return hfs_gl_check(gl, "backend gles: allocating textures", err);
+}
+
+size_t hfs_gles_resources_bytes(const hfs_gles_resources *r, const hfs_gl_caps *c)
+{
+    return r->bytes + (size_t)4 * r->vw * r->vh * c->bytes_rgba + r->keyhz_bytes +
+           r->localv_bytes + r->kf_bytes;
+}

@@ -1,0 +1,73 @@
+/*
+ * resources.h — the GLES backend's textures and framebuffers: what each
+ * pass writes and later passes read, allocated to the frame's sizes and
+ * kept while they fit.
+ *
+ * Terrain-sized resources (pyramid levels, normals, transfer vectors, key
+ * factors, output) follow the field size, level layout and precision;
+ * grid-sized ones (environment visibility, key horizons, local ratios) also
+ * follow the sub-sampling, without touching the terrain's.  Each group
+ * carries a generation counter bumped when it is reallocated, so that the
+ * planner can be told its contents are gone (hfs_gles_plan_lost).
+ *
+ * Also here: the few GL helpers every pass uses (texture/framebuffer
+ * creation, a fullscreen draw, a uniform-buffer upload).
+ */
+#ifndef HFS_GLES_RESOURCES_H
+#define HFS_GLES_RESOURCES_H
+
+#include "gl_api.h"
+#include "gl_caps.h"
+#include "layout.h"
+
+#define HFS_GLES_RECON_MRT 4 /* levels per y pass: ES 3.0's minimum draw buffers */
+
+typedef struct hfs_gles_resources {
+    int valid;
+    int w, h, n_levels, lmin, n_layers, vw, vh, fp32;
+    GLuint input;                                                       /* heights, hi+lo */
+    GLuint lev[HFS_GLES_MAX_LEVELS], lev_fbo[HFS_GLES_MAX_LEVELS];      /* decimated levels */
+    GLuint half[HFS_GLES_MAX_LEVELS], half_fbo[HFS_GLES_MAX_LEVELS];    /* W x lh: x pass */
+    GLuint arr, arr_fbo[HFS_GLES_MAX_LEVELS];   /* reconstructed levels, one layer each */
+    GLuint arr_mrt_fbo[HFS_GLES_MAX_LEVELS];    /* layers 4g..4g+3 as 4 targets */
+    GLuint normals, normals_fbo;
+    GLuint venv[4], venv_fbo;                   /* SH visibility on the grid */
+    GLuint keyhz, keyhz_fbo;                    /* key horizon excess, 2 directions a layer */
+    int keyhz_layers;
+    GLuint localv, localv_fbo;                  /* local-light ratios, 2 lights per layer */
+    int localv_layers;
+    GLuint transfer[4], transfer_fbo;           /* T = H * V_env per texel */
+    GLuint kf, kf_fbo;      /* key factors f / E_max (hi, lo), a layer per key light */
+    int kf_layers;
+    GLuint out[2], out_fbo; /* RGB hi, lo: drawn together */
+    GLuint out_lo_fbo;      /* lo alone as attachment 0, for the readback */
+    size_t bytes, keyhz_bytes, localv_bytes, kf_bytes;
+    unsigned terrain_gen, grid_gen, keyhz_gen, localv_gen, kf_gen; /* bumped when reallocated */
+} hfs_gles_resources;
+
+/* Fits r to layout L: key_layers horizon layers, local_layers ratio
+ * layers, n_keys factor layers (textures only grow). */
+int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                              const hfs_gles_layout *L, int key_layers, int local_layers,
+                              int n_keys, hfs_error *err);
+/* Deletes everything; the generations move on. */
+void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl);
+size_t hfs_gles_resources_bytes(const hfs_gles_resources *r, const hfs_gl_caps *c);
+
+/* ---- helpers ---- */
+GLuint hfs_gles_tex_new(const hfs_gl *gl, GLenum target, GLenum fmt, int w, int h, int layers,
+                        int linear);
+void hfs_gles_tex_delete(const hfs_gl *gl, GLuint *t);
+/* A framebuffer with n colour attachments: 2D textures (layer NULL or < 0)
+ * or layers of array textures. */
+int hfs_gles_fbo_new(const hfs_gl *gl, GLuint *fbo, int n, const GLuint *tex, const int *layer,
+                     const char *what, hfs_error *err);
+/* Attaches `outs` consecutive layers of array texture tex from layer0 to
+ * fbo (the other of the 4 attachments detached) and checks completeness. */
+int hfs_gles_fbo_layers(const hfs_gl *gl, GLuint fbo, GLuint tex, int layer0, int outs,
+                        const char *what, hfs_error *err);
+/* One fullscreen triangle into fbo over w x h. */
+void hfs_gles_draw(const hfs_gl *gl, GLuint fbo, int w, int h);
+void hfs_gles_ubo_upload(const hfs_gl *gl, GLuint ubo, const void *data, size_t bytes);
+
+#endif /* HFS_GLES_RESOURCES_H */
