@@ -288,6 +288,87 @@ static void band(double omega, double lo, double hi, double out[HFS_NLP_N])
     hfs_nlp_visible_band(omega > lo ? omega : lo, hi, out);
 }
 
+/* Per-scale horizon angles of sample k (direction c, sn) at receiver
+ * (i, j), cut at the light: a scale whose horizon point lies beyond the
+ * light's entry into the receiver's view counts as the floor. */
+static void scale_angles(const hfs_cpu_local *lc, local_scratch *s, const hfs_local_view *lv,
+                         clamp_trig *ct, int use_rows, int i, int j, int k, double c,
+                         double sn, double floor, double t_near, int k_lo, double *om)
+{
+    const int nl = lc->n_levels;
+    if (use_rows) {
+        const size_t base = (size_t)k * nl * lc->w + (size_t)i;
+        for (int t = 0; t < nl; ++t) {
+            const size_t at = base + (size_t)t * lc->w;
+            const double o = s->om[at];
+            double ce, se;
+            if (t < k_lo) {
+                om[t] = floor;
+                continue;
+            }
+            if (lc->dist_world[t] < t_near) {
+                om[t] = o;
+                continue;
+            }
+            clamp_dir(ct, o, s->co[at], s->si[at], &ce, &se);
+            om[t] = lc->dist_world[t] <= hfs_local_entry_distance(lv, c, sn, ce, se) ? o
+                                                                                     : floor;
+        }
+    } else {
+        for (int t = 0; t < k_lo; ++t)
+            om[t] = floor;
+        hfs_horizon_point_slopes(lc->scales, i, j, c, sn, k_lo, s->slope, s->in_grid);
+        for (int t = k_lo; t < nl; ++t) {
+            if (!s->in_grid[t]) {
+                om[t] = floor;
+                continue;
+            }
+            const double dd = s->slope[t], o = atan(dd);
+            if (lc->dist_world[t] < t_near) {
+                om[t] = o;
+                continue;
+            }
+            const double ce_o = 1.0 / sqrt(1.0 + dd * dd), se_o = dd * ce_o;
+            double ce, se;
+            clamp_dir(ct, o, ce_o, se_o, &ce, &se);
+            om[t] = lc->dist_world[t] <= hfs_local_entry_distance(lv, c, sn, ce, se) ? o
+                                                                                     : floor;
+        }
+    }
+}
+
+/* Legendre path, sample k: g = sum_r m_r A_k[r] E[r], then 4-dots with the
+ * visible and the open band, added to sums (num, den, den_scale). */
+static void legendre_sums(const hfs_cpu_local *lc, const hfs_local_swath *sw,
+                          const hfs_local_hat *hats, const double m[HFS_SH_N], int k, double c,
+                          double sn, double omega, double floor, const clamp_trig *ct,
+                          double sums[3])
+{
+    double a_loc[HFS_SH_N];
+    const double *A = a_loc;
+    if (sw->full)
+        A = lc->full_A + (size_t)k * HFS_SH_N;
+    else
+        hfs_local_weights_at(c, sn, hfs_local_sample_hat(sw, hats, k), a_loc); /* snapped: < 1e-12 off */
+    double g[HFS_NLP_N] = {0.0, 0.0, 0.0, 0.0};
+    for (int r = 0; r < HFS_SH_N; ++r) {
+        const double wr = m[r] * A[r];
+        const double *e = lc->E + r * HFS_NLP_N;
+        g[0] += wr * e[0];
+        g[1] += wr * e[1];
+        g[2] += wr * e[2];
+        g[3] += wr * e[3];
+    }
+    double vb[HFS_NLP_N], ob[HFS_NLP_N];
+    band(omega, ct->lo, ct->hi, vb);
+    band(floor, ct->lo, ct->hi, ob);
+    for (int q = 0; q < HFS_NLP_N; ++q) {
+        sums[0] += g[q] * vb[q];
+        sums[1] += g[q] * ob[q];
+        sums[2] += fabs(g[q] * ob[q]);
+    }
+}
+
 /* One light at one receiver: adds to lo[3]. */
 static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *src, int i,
                   int j, const double p[3], const double n[3], const double hn[HFS_SH_N],
@@ -376,77 +457,17 @@ static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *sr
             while (k_lo < nl && lc->dist_world[k_lo] > u + g)
                 ++k_lo;
         }
-        /* Per-scale angles, cut at the light. */
         double *om = s->lv_omega;
-        if (use_rows) {
-            const size_t base = (size_t)k * nl * lc->w + (size_t)i;
-            for (int t = 0; t < nl; ++t) {
-                const size_t at = base + (size_t)t * lc->w;
-                const double o = s->om[at];
-                double ce, se;
-                if (t < k_lo) {
-                    om[t] = floor;
-                    continue;
-                }
-                if (lc->dist_world[t] < t_near) {
-                    om[t] = o;
-                    continue;
-                }
-                clamp_dir(&ct, o, s->co[at], s->si[at], &ce, &se);
-                om[t] = lc->dist_world[t] <= hfs_local_entry_distance(&lv, c, sn, ce, se) ? o
-                                                                                         : floor;
-            }
-        } else {
-            for (int t = 0; t < k_lo; ++t)
-                om[t] = floor;
-            hfs_horizon_point_slopes(lc->scales, i, j, c, sn, k_lo, s->slope, s->in_grid);
-            for (int t = k_lo; t < nl; ++t) {
-                if (!s->in_grid[t]) {
-                    om[t] = floor;
-                    continue;
-                }
-                const double dd = s->slope[t], o = atan(dd);
-                if (lc->dist_world[t] < t_near) {
-                    om[t] = o;
-                    continue;
-                }
-                const double ce_o = 1.0 / sqrt(1.0 + dd * dd), se_o = dd * ce_o;
-                double ce, se;
-                clamp_dir(&ct, o, ce_o, se_o, &ce, &se);
-                om[t] = lc->dist_world[t] <= hfs_local_entry_distance(&lv, c, sn, ce, se) ? o
-                                                                                         : floor;
-            }
-        }
+        scale_angles(lc, s, &lv, &ct, use_rows, i, j, k, c, sn, floor, t_near, k_lo, om);
         const double omega = hfs_horizon_bspline_max(om, nl, 1, floor);
         if (tables) {
             s->om_k[k] = omega;
             s->fl_k[k] = floor;
             continue;
         }
-        /* Legendre: g = sum_r m_r A_k[r] E[r], then 4-dots with the bands. */
-        double a_loc[HFS_SH_N];
-        const double *A = a_loc;
-        if (sw.full)
-            A = lc->full_A + (size_t)k * HFS_SH_N;
-        else
-            hfs_local_weights_at(c, sn, hfs_local_sample_hat(&sw, hats, k), a_loc); /* snapped: < 1e-12 off */
-        double g[HFS_NLP_N] = {0.0, 0.0, 0.0, 0.0};
-        for (int r = 0; r < HFS_SH_N; ++r) {
-            const double wr = m[r] * A[r];
-            const double *e = lc->E + r * HFS_NLP_N;
-            g[0] += wr * e[0];
-            g[1] += wr * e[1];
-            g[2] += wr * e[2];
-            g[3] += wr * e[3];
-        }
-        double vb[HFS_NLP_N], ob[HFS_NLP_N];
-        band(omega, ct.lo, ct.hi, vb);
-        band(floor, ct.lo, ct.hi, ob);
-        for (int q = 0; q < HFS_NLP_N; ++q) {
-            num += g[q] * vb[q];
-            den += g[q] * ob[q];
-            den_scale += fabs(g[q] * ob[q]);
-        }
+        double sums[3] = {num, den, den_scale};
+        legendre_sums(lc, &sw, hats, m, k, c, sn, omega, floor, &ct, sums);
+        num = sums[0], den = sums[1], den_scale = sums[2];
     }
     if (lc->path == HFS_VIS_WEDGE_TABLE) {
         double vk[HFS_SH_N], vo[HFS_SH_N];
