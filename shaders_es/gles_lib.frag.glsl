@@ -108,7 +108,7 @@ vec3 hfs_normal(vec4 t)
 /* ---- sample offsets (DESIGN.md "Horizons", float-sized snapping) --------- */
 
 /* Snaps each component within a float tolerance of an integer to it
- * (gles_setup.h: HFS_GLES_SNAP_REL, HFS_GLES_SNAP_ABS). */
+ * (runtime/gles/uniform_blocks.h: HFS_GLES_SNAP_REL, HFS_GLES_SNAP_ABS). */
 vec2 hfs_snap(vec2 o)
 {
     vec2 r = floor(o + 0.5);

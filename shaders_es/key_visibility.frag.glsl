@@ -10,7 +10,7 @@
  * (u_emax = pi sin^2 alpha, f's largest value, so the stored value is in
  * [0, 1] whatever the disk's size: a 1e-7 rad sun's E_cap is far below
  * fp16's range) as an fp16 (hi, lo) pair in one layer of an RG array.
- * HfsKeys holds one record per key light (runtime/gles_setup.h
+ * HfsKeys holds one record per key light (runtime/gles/uniform_blocks.h
  * hfs_gles_pack_key), this light's from vec4 u_k[u_kb].
  */
 // hfs-variant: HFS_TABLES 1

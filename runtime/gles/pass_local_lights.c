@@ -28,26 +28,25 @@ static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
                                      "local-light visibility", err);
 }
 
-/* The full swath's directions (u_ldir, one vec4 each: the robust floats of
- * hfs_gles_swath_float_dirs), then per wedge its z-rotation for the wedge
- * tables, (cos m a), (sin m a) for m = 1..3 (as hfs_gles_pack_swath). */
-static void pack_swath(const hfs_gles_layout *L, int nphi, float *dirs, float *cs)
+/* The full swath after the head: u_ldir[nphi] (the robust floats of
+ * hfs_gles_swath_float_dirs: (cos, sin, 0, 0)), then per wedge its
+ * z-rotation for the wedge tables (hfs_gles_wedge_rot, interior wedges: no
+ * mirror); cs: scratch for 2 nphi floats. */
+static void pack_swath(const hfs_gles_layout *L, int nphi, float *dst, float *cs)
 {
     hfs_swath sw;
     hfs_swath_full(nphi, &sw);
     hfs_gles_swath_float_dirs(L, &sw, cs);
+    hfs_gles_swath_sample *dir = (hfs_gles_swath_sample *)dst;
     for (int k = 0; k < nphi; ++k) {
-        dirs[4 * k] = cs[2 * k];
-        dirs[4 * k + 1] = cs[2 * k + 1];
+        dir[k].cos = cs[2 * k];
+        dir[k].sin = cs[2 * k + 1];
     }
-    float *rot = dirs + 4 * (size_t)nphi;
+    hfs_gles_wedge_rot *rot = (hfs_gles_wedge_rot *)(dir + nphi);
     for (int w = 0; w < hfs_swath_wedge_count(&sw) && w < nphi; ++w) {
         hfs_swath_wedge wd;
-        hfs_swath_get_wedge(&sw, w, &wd); /* interior wedges: no mirror */
-        for (int m = 1; m <= 3; ++m) {
-            rot[8 * w + m - 1] = (float)cos(m * wd.start);
-            rot[8 * w + 4 + m - 1] = (float)sin(m * wd.start);
-        }
+        hfs_swath_get_wedge(&sw, w, &wd);
+        hfs_gles_wedge_rot_set(&rot[w], wd.start, 0);
     }
 }
 
@@ -56,7 +55,8 @@ static int upload_block(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
 {
     const hfs_gles_layout *L = &fr->L;
     const int nphi = fr->q->nphi_local;
-    const size_t n4 = sizeof(hfs_gles_local_block) / 16 + 3 * (size_t)nphi;
+    const size_t n4 = (sizeof(hfs_gles_local_block) + (size_t)nphi * sizeof(hfs_gles_swath_sample) +
+                       (size_t)nphi * sizeof(hfs_gles_wedge_rot)) / 16;
     int rc;
     if ((rc = hfs_gl_caps_check_uniform_block(&g->caps, n4 * 16,
                                               "local lights (--nphi-local)", err)))

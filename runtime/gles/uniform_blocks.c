@@ -20,15 +20,14 @@ size_t hfs_gles_scales_vec4(const hfs_gles_layout *L)
 
 void hfs_gles_pack_scales(const hfs_gles_layout *L, float *dst)
 {
+    hfs_gles_scale *scale = (hfs_gles_scale *)dst;
     for (int i = 0; i < L->n_levels; ++i) {
         const double d = L->spacing[i];
         double inv = L->hscale * L->zscale / (d * L->dx);
         if (!(inv < 1e30))
             inv = 1e30;
-        dst[4 * i + 0] = (float)d;
-        dst[4 * i + 1] = (float)inv;
-        dst[4 * i + 2] = (float)L->read_layer[i];
-        dst[4 * i + 3] = 0.0f;
+        scale[i] = (hfs_gles_scale){.spacing = (float)d, .inv_run = (float)inv,
+                                    .read_layer = (float)L->read_layer[i]};
     }
 }
 
@@ -46,7 +45,28 @@ void hfs_gles_swath_dir(const hfs_swath *s, int j, double *c, double *sn)
 
 size_t hfs_gles_swath_vec4(int n)
 {
-    return 2 + 17 * (size_t)n + 2 * ((size_t)n + 1);
+    return (sizeof(hfs_gles_swath_head) + (size_t)n * sizeof(hfs_gles_swath_sample) +
+            (size_t)n * sizeof(hfs_gles_swath_matrix) +
+            ((size_t)n + 1) * sizeof(hfs_gles_wedge_rot)) / 16;
+}
+
+hfs_gles_swath_block hfs_gles_swath_view(float *dst, int n)
+{
+    hfs_gles_swath_block b;
+    b.head = (hfs_gles_swath_head *)dst;
+    b.dir = (hfs_gles_swath_sample *)(b.head + 1);
+    b.matrix = (hfs_gles_swath_matrix *)(b.dir + n);
+    b.rot = (hfs_gles_wedge_rot *)(b.matrix + n);
+    return b;
+}
+
+void hfs_gles_wedge_rot_set(hfs_gles_wedge_rot *r, double a, int mirror)
+{
+    for (int m = 1; m <= 3; ++m) {
+        r->cos_ma[m - 1] = (float)cos(m * a);
+        r->sin_ma[m - 1] = (float)sin(m * a);
+    }
+    r->mirror = (float)mirror;
 }
 
 void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, float *dst)
@@ -54,32 +74,30 @@ void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, floa
     const hfs_swath *s = hfs_visibility_swath(v);
     const int n = s->n;
     memset(dst, 0, hfs_gles_swath_vec4(n) * 4 * sizeof *dst);
-    dst[0] = (float)s->elev_lo;
-    dst[1] = (float)s->elev_hi;
-    dst[2] = (float)n;
-    dst[3] = (float)s->full;
+    const hfs_gles_swath_block b = hfs_gles_swath_view(dst, n);
+    b.head->elev_lo = (float)s->elev_lo;
+    b.head->elev_hi = (float)s->elev_hi;
+    b.head->n = (float)n;
+    b.head->full = (float)s->full;
     double occ[HFS_NLP_N];
     hfs_nlp_occlusion(s->elev_hi, occ);
     for (int c = 0; c < 4; ++c)
-        dst[4 + c] = (float)occ[c];
-    float *dirs = dst + 4 * 2;
-    float *cm = dst + 4 * (2 + (size_t)n);
-    float *rot = dst + 4 * (2 + 17 * (size_t)n);
+        b.head->occ_top[c] = (float)occ[c];
     for (int j = 0; j < n; ++j) {
         float cs[2];
         const hfs_swath one = {.n = 1, .full = s->full, .phi0 = hfs_swath_phi(s, j), .dphi = s->dphi};
         hfs_gles_swath_float_dirs(L, &one, cs);
-        dirs[4 * j] = cs[0];
-        dirs[4 * j + 1] = cs[1];
+        b.dir[j].cos = cs[0];
+        b.dir[j].sin = cs[1];
         const double *m = hfs_visibility_sample_matrix(v, j);
         double frob = 0.0;
         if (m)
             for (int r = 0; r < HFS_SH_N; ++r)
                 for (int q = 0; q < HFS_NLP_N; ++q) {
-                    cm[(16 * (size_t)j + (size_t)r) * 4 + (size_t)q] = (float)m[r * HFS_NLP_N + q];
+                    b.matrix[j].row[r][q] = (float)m[r * HFS_NLP_N + q];
                     frob += m[r * HFS_NLP_N + q] * m[r * HFS_NLP_N + q];
                 }
-        dirs[4 * j + 2] = (float)sqrt(frob);
+        b.dir[j].c_norm = (float)sqrt(frob);
     }
     const int n_wedges = hfs_swath_wedge_count(s);
     for (int w = 0; w < n_wedges; ++w) {
@@ -88,13 +106,7 @@ void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, floa
         /* visibility.c table_placement: a start boundary wedge is the
          * mirrored table wedge rotated to its inner end. */
         const int mirror = wd.a < 0;
-        const double a = mirror ? wd.start + wd.extent : wd.start;
-        float *r = rot + 8 * (size_t)w;
-        for (int m = 1; m <= 3; ++m) {
-            r[m - 1] = (float)cos(m * a);
-            r[4 + m - 1] = (float)sin(m * a);
-        }
-        r[3] = (float)mirror;
+        hfs_gles_wedge_rot_set(&b.rot[w], mirror ? wd.start + wd.extent : wd.start, mirror);
     }
 }
 
@@ -208,27 +220,28 @@ long hfs_gles_offset_mismatches(const hfs_gles_layout *L, const hfs_swath *s)
 
 size_t hfs_gles_key_vec4(int n)
 {
-    return 7 + hfs_gles_swath_vec4(n);
+    return sizeof(hfs_gles_key_record) / 16 + hfs_gles_swath_vec4(n);
 }
 
 void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hfs_visibility *v,
                        float *dst)
 {
     const hfs_swath *s = hfs_visibility_swath(v);
-    memset(dst, 0, 7 * 4 * sizeof *dst);
-    dst[0] = (float)s->n;
-    dst[1] = (float)s->full;
-    dst[2] = (float)k->hz_layer;
-    dst[3] = (float)k->table_set;
+    hfs_gles_key_record *rec = (hfs_gles_key_record *)dst;
+    memset(rec, 0, sizeof *rec);
+    rec->n = (float)s->n;
+    rec->full = (float)s->full;
+    rec->hz_layer = (float)k->hz_layer;
+    rec->table_set = (float)k->table_set;
     for (int c = 0; c < 3; ++c) {
-        dst[4 + c] = (float)k->dir[c];
-        dst[8 + c] = (float)k->le[c];
+        rec->dir[c] = (float)k->dir[c];
+        rec->le[c] = (float)k->le[c];
     }
-    dst[7] = (float)k->alpha;
-    dst[11] = (float)k->l_norm;
+    rec->alpha = (float)k->alpha;
+    rec->l_norm = (float)k->l_norm;
     for (int c = 0; c < 16; ++c)
-        dst[12 + c] = (float)k->l_sh[c];
-    hfs_gles_pack_swath(L, v, dst + 7 * 4);
+        rec->l_sh[c] = (float)k->l_sh[c];
+    hfs_gles_pack_swath(L, v, (float *)(rec + 1));
 }
 
 void hfs_gles_open_transfer(float dst[16])

@@ -30,23 +30,60 @@
 
 /* ---- std140 blocks ---------------------------------------------------------- */
 
-/* HfsScales: N vec4, scale i: (d_i, inv_run_i, read layer, 0) with
- * inv_run_i = hscale * zscale / (d_i * dx) (clamped to 1e30). */
+/* HfsScales (u_scale[HFS_NLEV]): one vec4 per scale i. */
+typedef struct hfs_gles_scale {
+    float spacing;    /* d_i                                                  */
+    float inv_run;    /* hscale * zscale / (d_i * dx), clamped to 1e30         */
+    float read_layer; /* the reconstructed layer scale i reads                 */
+    float pad;
+} hfs_gles_scale;
+_Static_assert(sizeof(hfs_gles_scale) == 16, "HfsScales: a vec4 per scale");
+
 size_t hfs_gles_scales_vec4(const hfs_gles_layout *L);
 void hfs_gles_pack_scales(const hfs_gles_layout *L, float *dst);
 
-/* HfsSwath for a swath of n samples (visibility object v):
- *   [0]            (elev_lo, elev_hi, n, full)
- *   [1]            NLP occlusion vector of elev_hi (visible band top)
- *   [2 .. 2+n)     (cos phi_j, sin phi_j, |C_j|_F, 0): the direction as
- *                  hfs_gles_swath_float_dirs gives it, the Frobenius norm
- *                  of C_j (0 for the table path)
- *   [2+n .. 2+17n) Legendre: C_j as 4 column-major mat4 (16 vec4, row r of
- *                  C_j at vec4 16j + r); zeros for the table path
- *   [2+17n ..)     n + 1 wedge placements, 2 vec4 each:
- *                  (cos a, cos 2a, cos 3a, mirror), (sin a, sin 2a, sin 3a, 0)
- *                  with a the wedge's placement angle (table path)
- * Total 2 + 17n + 2(n+1) vec4. */
+/* HfsSwath for a swath of n samples (env_horizons.frag declares it whole;
+ * key_horizons.frag its prefix; key_visibility.frag reads it inside a key
+ * record), std140, in this order:
+ *   head    u_win, u_occtop
+ *   dir     u_dir[n]: the direction as hfs_gles_swath_float_dirs gives it
+ *           and the Frobenius norm of C_j (0 for the table path)
+ *   matrix  u_C[4n]: C_j (folded Legendre, hfs_visibility_sample_matrix) as
+ *           4 column-major mat4, row r of C_j at vec4 16j + r; zeros on the
+ *           table path
+ *   rot     u_rot[2(n+1)]: per wedge its placement angle a for the tables
+ * Total hfs_gles_swath_vec4(n) vec4. */
+typedef struct hfs_gles_swath_head {
+    float elev_lo, elev_hi, n, full; /* u_win: the elevation window, samples, full swath */
+    float occ_top[4];                /* u_occtop: NLP occlusion vector of elev_hi        */
+} hfs_gles_swath_head;
+typedef struct hfs_gles_swath_sample {
+    float cos, sin, c_norm, pad;
+} hfs_gles_swath_sample;
+typedef struct hfs_gles_swath_matrix {
+    float row[16][4];
+} hfs_gles_swath_matrix;
+typedef struct hfs_gles_wedge_rot {
+    float cos_ma[3], mirror;         /* (cos a, cos 2a, cos 3a, mirrored wedge)         */
+    float sin_ma[3], pad;            /* (sin a, sin 2a, sin 3a, 0)                      */
+} hfs_gles_wedge_rot;
+_Static_assert(sizeof(hfs_gles_swath_head) == 2 * 16, "HfsSwath: u_win, u_occtop");
+_Static_assert(sizeof(hfs_gles_swath_sample) == 16, "HfsSwath: u_dir[j] is a vec4");
+_Static_assert(sizeof(hfs_gles_swath_matrix) == 16 * 16, "HfsSwath: C_j is 4 mat4");
+_Static_assert(sizeof(hfs_gles_wedge_rot) == 2 * 16, "HfsSwath: 2 vec4 per wedge");
+
+/* The parts of a swath block of n samples at dst (vec4-aligned). */
+typedef struct hfs_gles_swath_block {
+    hfs_gles_swath_head *head;
+    hfs_gles_swath_sample *dir;       /* [n]     */
+    hfs_gles_swath_matrix *matrix; /* [n]     */
+    hfs_gles_wedge_rot *rot;       /* [n + 1] */
+} hfs_gles_swath_block;
+hfs_gles_swath_block hfs_gles_swath_view(float *dst, int n);
+/* A wedge's placement: (cos m a, sin m a) for m = 1..3, and whether the
+ * wedge is the mirrored table wedge (visibility.c table_placement). */
+void hfs_gles_wedge_rot_set(hfs_gles_wedge_rot *r, double a, int mirror);
+
 size_t hfs_gles_swath_vec4(int n);
 void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, float *dst);
 
@@ -90,13 +127,17 @@ typedef struct hfs_gles_key {
     int table_set;            /* wedge table set (table path)                 */
 } hfs_gles_key;
 
-/* Record of key light q in HfsKeys (vec4 units, relative to its start):
- *   [0] (n, full, hz_layer, table_set)
- *   [1] (dir.xyz, alpha)
- *   [2] (Le.rgb, l_norm)
- *   [3..7) l_sh (16 floats)
- *   [7 ..) the light's HfsSwath block (hfs_gles_pack_swath)
- * Total 7 + hfs_gles_swath_vec4(n). */
+/* Record of a key light in HfsKeys (key_visibility.frag reads it from
+ * u_k[u_kb]): this head, then the light's HfsSwath block.  Total
+ * hfs_gles_key_vec4(n) vec4. */
+typedef struct hfs_gles_key_record {
+    float n, full, hz_layer, table_set; /* the swath, its horizon layers, table set */
+    float dir[3], alpha;                /* unit direction, angular radius          */
+    float le[3], l_norm;                /* radiance, |l_sh|                        */
+    float l_sh[16];                     /* SH of the unit-radiance disk            */
+} hfs_gles_key_record;
+_Static_assert(sizeof(hfs_gles_key_record) == 7 * 16,
+               "key_visibility.frag: the swath block starts at u_k[u_kb + 7]");
 size_t hfs_gles_key_vec4(int n);
 void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hfs_visibility *v,
                        float *dst);
