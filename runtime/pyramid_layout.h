@@ -1,7 +1,7 @@
 /*
  * pyramid_layout.h — the layout of the height pyramid of DESIGN.md ("Height
  * pyramid"), shared by the CPU reference (cpu_pyramid.h), the GLES path
- * (gles_setup.c) and the benchmarks, so that every backend uses and reports
+ * (runtime/gles/layout.c) and the benchmarks, so that every backend uses and reports
  * the same numbers.  Pure functions, no allocation.
  *
  *   n = max(W, H), b = 2^(1/k), N = ceil(k log2 n) + 1 levels, index 0..N-1,

@@ -42,7 +42,7 @@ void hfs_swath_key(double phi, double elev, double alpha, int nphi_key,
          * 2h / nphi_key: then the samples (and so the horizons behind them)
          * stay the same while the light moves inside the sampled swath, or
          * while its elevation changes h a little (the frame planner keeps
-         * them, gles_plan.h).  The swath is the run of lattice samples whose
+         * them, runtime/gles/plan.h).  The swath is the run of lattice samples whose
          * wedges (+- d/2 about each) cover phi +- h: the spacing is within
          * 1.25x of 2h / nphi_key (1.5x at nphi_key = 1, where N = PI / h
          * >= 2 can fall between the counts 2 and 3), and the covering run

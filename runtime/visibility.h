@@ -2,7 +2,7 @@
  * visibility.h — azimuth swaths and horizons -> SH visibility (DESIGN.md
  * "Azimuth swaths" and "Visibility to SH"), shared by every backend: the CPU
  * reference evaluates it in double, the GLES path packs the same swaths and
- * folded matrices into its uniform blocks (gles_setup.h).
+ * folded matrices into its uniform blocks (runtime/gles/uniform_blocks.h).
  *
  * Swath layout.
  *   Full swath (environment, and a key light whose disk covers a pole):

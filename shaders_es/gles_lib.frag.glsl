@@ -1,6 +1,6 @@
 /*
  * gles_lib.frag - functions shared by the GLES renderer's passes.  At
- * program creation (runtime/gles_renderer.c) every pass is compiled as
+ * program creation (runtime/gles/programs.c) every pass is compiled as
  *     "#version 300 es" + variant defines + gles_lib.frag
  *     + sh_product.glsl.inc (generated) + the pass shader,
  * with #line markers so driver messages name the right part (source string

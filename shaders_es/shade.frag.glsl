@@ -67,7 +67,7 @@ layout(std140) uniform HfsShade {
     vec4 u_lle[16];                      /* per local light: Le (rgb) */
 };
 /* Every radiance above (u_env, u_env_neg, u_kle, u_lle) comes multiplied by
- * the frame's power-of-two output scale (gles_renderer.c): no product here
+ * the frame's power-of-two output scale (runtime/gles/pass_shade.c): no product here
  * can overflow fp16 or fp32 for any finite scene. */
 
 layout(location = 0) out vec4 o_hi;       /* RGB hi (fp16-exact), 1 */

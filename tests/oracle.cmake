@@ -5,7 +5,7 @@
 # header of each source for what it checks and how its bounds were measured.
 #
 #   test_swath_oracle        hfs_swath_key / hfs_swath_full and the GLES swath
-#                            and key blocks (gles_setup.c) against the closed
+#                            and key blocks (runtime/gles/uniform_blocks.c) against the closed
 #                            form of DESIGN.md "Azimuth swaths" ("unit")
 #   test_swath_oracle_{nk1,tiny_alpha,black_sun}
 #                            the defects it found, one mode each (see

@@ -1,6 +1,6 @@
 /*
  * test_gles_plan_diff.c — the GLES frame plan's input diff, without a GL
- * context (runtime/gles_plan.h): every field of the frame signature, changed
+ * context (runtime/gles/plan.h): every field of the frame signature, changed
  * alone after a frame whose passes all ran, must run exactly the passes that
  * read it (and what reads their products), and nothing else.
  *

@@ -49,11 +49,11 @@
  * n = 1..1024.  Bounds are stated at each check (exact where the definition
  * is exact arithmetic, ~10x the measurement where it is not).
  *
- * GLES side (gles_setup.c, no driver): hfs_gles_pack_swath / pack_key of the
+ * GLES side (runtime/gles/uniform_blocks.c, no driver): hfs_gles_pack_swath / pack_key of the
  * same swaths against the same closed form: header (elev_lo, elev_hi, n,
  * full) as the float of the closed-form window, the occlusion vector of
  * elev_hi, the sample directions (cos, sin)(k 2 pi / N) within the 64 float
- * ulps gles_setup.h allows for its nudge, the wedge placements (cos m a,
+ * ulps uniform_blocks.h allows for its nudge, the wedge placements (cos m a,
  * sin m a, mirror) at the closed-form wedge starts, the key record header.
  *
  * Modes nk1, tiny-alpha, black-sun (tests/oracle.cmake) each guard a defect
@@ -442,7 +442,7 @@ static void check_gles_block(const hfs_gles_layout *L, const hfs_swath *s, long 
             worst_dir_ulps = fmax(worst_dir_ulps, uc);
         if (fabs(sn) >= 1e-12)
             worst_dir_ulps = fmax(worst_dir_ulps, us);
-        /* gles_setup.h: the float nearest to (cos, sin), or a neighbour
+        /* uniform_blocks.h: the float nearest to (cos, sin), or a neighbour
          * within 64 ulps; |c| < 1e-12 is snapped to 0 */
         CHECK((uc <= 64.5 || fabs(c) < 1e-12) && (us <= 64.5 || fabs(sn) < 1e-12),
               "gles: direction %d = (%.9g, %.9g), lattice point %lld of %.0f gives (%.9g, %.9g) (%s)", j, fc, fs,

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# GLES frame times of two builds side by side (e.g. before and after a
+# refactoring): each configuration is timed ROUNDS times, the two builds
+# alternating within each round (so drift on a shared machine hits both),
+# every frame running every pass (hfshade render --time: caches
+# invalidated).  Prints the median frame ms of each build and the median of
+# the per-round ratios B / A, as a Markdown table.
+# usage: tools/bench_gles_ab.sh BUILD_A BUILD_B [ROUNDS] [FRAMES]   (defaults 5 5)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+A=${1:?usage: bench_gles_ab.sh BUILD_A BUILD_B [ROUNDS] [FRAMES]}
+B=${2:?usage: bench_gles_ab.sh BUILD_A BUILD_B [ROUNDS] [FRAMES]}
+R=${3:-5}
+F=${4:-5}
+C=$(mktemp -d)
+trap 'rm -rf "$C"' EXIT
+SKY="--env-sh 3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0"
+SUN="--key 336,15,2,1500"
+LOCAL="--local 40,40,30,4,2000 --local 90,30,25,3,1500"
+# frame_ms BUILD ARGS... -> the median frame ms of F frames
+frame_ms() {
+    local b=$1
+    shift
+    "$b/tools/hfshade" render "$@" --time "$F" --pfm "$C/out.pfm" | awk '$1 == "frame" {print $2}'
+}
+median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
+"$B/tools/hfgen" fractal --size 256x256 -o "$C/f256.pfm"
+"$B/tools/hfgen" fractal --size 512x512 -o "$C/f512.pfm"
+echo "| scene | A frame ms | B frame ms | B / A (median of $R rounds) |"
+echo "|---|---|---|---|"
+for cfg in "256² env+key sub 2|$C/f256.pfm|$SKY $SUN --subsample 2" \
+           "256² env sub 1 fp32|$C/f256.pfm|$SKY --subsample 1 --precision fp32" \
+           "256² env+key+2 local sub 2|$C/f256.pfm|$SKY $SUN $LOCAL --subsample 2" \
+           "512² env+key sub 2|$C/f512.pfm|$SKY $SUN --subsample 2"; do
+    IFS='|' read -r name field args <<<"$cfg"
+    : >"$C/a" && : >"$C/b" && : >"$C/r"
+    for ((i = 0; i < R; ++i)); do
+        # shellcheck disable=SC2086
+        a=$(frame_ms "$A" --height "$field" $args --backend gles)
+        # shellcheck disable=SC2086
+        b=$(frame_ms "$B" --height "$field" $args --backend gles)
+        echo "$a" >>"$C/a"
+        echo "$b" >>"$C/b"
+        awk -v a="$a" -v b="$b" 'BEGIN {print b / a}' >>"$C/r"
+    done
+    printf '| %s | %.1f | %.1f | %.3f |\n' "$name" "$(median <"$C/a")" "$(median <"$C/b")" \
+        "$(median <"$C/r")"
+done
