@@ -113,6 +113,7 @@ int hfs_gl_caps_select(const hfs_gl_driver *d, const char *profile, int want_fp3
     out.fmt_r = out.fp32 ? GL_R32F : GL_R16F;
     out.fmt_rg = out.fp32 ? GL_RG32F : GL_RG16F;
     out.fmt_rgba = out.fp32 ? GL_RGBA32F : GL_RGBA16F;
+    out.fmt_block = GL_RGBA16UI;
     out.type_upload = out.fp32 ? GL_FLOAT : GL_HALF_FLOAT;
     out.bytes_r = out.fp32 ? 4 : 2;
     out.bytes_rg = out.fp32 ? 8 : 4;

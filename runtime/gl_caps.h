@@ -71,6 +71,9 @@ typedef struct hfs_gl_caps {
     GLenum fmt_rg;               /* GL_RG16F or GL_RG32F                     */
     GLenum fmt_rgba;             /* GL_RGBA16F or GL_RGBA32F                 */
     GLenum type_upload;          /* GL_HALF_FLOAT or GL_FLOAT                */
+    GLenum fmt_block;            /* GL_RGBA16UI: uniform data too large for a
+                                    block, as 16-bit halves of its float bits
+                                    (gles/block_texture.h; core ES 3.0)       */
     int bytes_r, bytes_rg, bytes_rgba; /* per texel                         */
     int strict_limits;           /* limits capped at the ES 3.0 minimums    */
     /* Limits: the driver's, or min(driver, ES 3.0 minimum) when strict. */

@@ -29,6 +29,8 @@
  */
 // hfs-variant: HFS_TABLES 1
 // hfs-variant: HFS_FP32 1, HFS_COUNT 1
+// hfs-variant: HFS_SWATH_TEX 1
+// hfs-variant: HFS_SWATH_TEX 1, HFS_TABLES 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -77,6 +79,18 @@ uniform float u_vmax;                    /* largest normalized height, a hair up
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
 };
+#ifdef HFS_SWATH_TEX
+/* The same data from a texture (too large for a uniform block): vec4 i of
+ * the block below is SW(i). */
+vec4 hfs_block_vec4(highp usampler2D t, int i);
+uniform highp usampler2D u_swath_tex;
+#define SW(i) hfs_block_vec4(u_swath_tex, (i))
+#define SW_OCCTOP SW(1)
+#define SW_DIR(j) SW(2 + (j))
+#define SW_C(k) mat4(SW(2 + HFS_NDIR + 4 * (k)), SW(3 + HFS_NDIR + 4 * (k)), \
+                     SW(4 + HFS_NDIR + 4 * (k)), SW(5 + HFS_NDIR + 4 * (k)))
+#define SW_ROT(i) SW(2 + 17 * HFS_NDIR + (i))
+#else
 layout(std140) uniform HfsSwath {
     vec4 u_win;                          /* (elev_lo, elev_hi, n, full) */
     vec4 u_occtop;
@@ -84,6 +98,11 @@ layout(std140) uniform HfsSwath {
     mat4 u_C[HFS_NDIR * 4];              /* folded M_lin, rows as columns */
     vec4 u_rot[2 * HFS_NDIR + 2];        /* per wedge (cos ma, mirror), (sin ma) */
 };
+#define SW_OCCTOP u_occtop
+#define SW_DIR(j) u_dir[j]
+#define SW_C(k) u_C[k]
+#define SW_ROT(i) u_rot[i]
+#endif
 
 layout(location = 0) out vec4 o_v0;
 layout(location = 1) out vec4 o_v1;
@@ -96,7 +115,7 @@ void add_wedge(inout vec4 V[4], float a, float b, int w)
 {
     float n = float(HFS_TABLE_N);
     hfs_table_add(u_tab, vec2(hfs_table_coord(a, n), hfs_table_coord(b, n)), 0.0, false,
-                  u_rot[2 * w].xyz, u_rot[2 * w + 1].xyz, V);
+                  SW_ROT(2 * w).xyz, SW_ROT(2 * w + 1).xyz, V);
 }
 #endif
 
@@ -115,7 +134,7 @@ void main()
     float om_first = 0.0, om_prev = 0.0;
 #endif
     for (int j = 0; j < HFS_NDIR; ++j) {
-        vec2 cs = u_dir[j].xy;
+        vec2 cs = SW_DIR(j).xy;
         /* Start at tan(floor): a slope below the tangent plane never wins. */
         float best = -(n.x * cs.x + n.y * cs.y) / n.z;
         for (int i = HFS_NLEV - 1; i >= 0; --i) {
@@ -142,11 +161,11 @@ void main()
         /* The environment's window is the whole [-pi/2, pi/2]: the visible
          * band is (omega, pi/2], and its NLP vector needs only sin(omega)
          * and cos^2(omega), both rational in tan(omega) = best. */
-        vec4 v = u_occtop - hfs_nlp_occ_tan(best);
-        V[0] += v * u_C[4 * j];
-        V[1] += v * u_C[4 * j + 1];
-        V[2] += v * u_C[4 * j + 2];
-        V[3] += v * u_C[4 * j + 3];
+        vec4 v = SW_OCCTOP - hfs_nlp_occ_tan(best);
+        V[0] += v * SW_C(4 * j);
+        V[1] += v * SW_C(4 * j + 1);
+        V[2] += v * SW_C(4 * j + 2);
+        V[3] += v * SW_C(4 * j + 3);
 #endif
     }
 #ifdef HFS_TABLES

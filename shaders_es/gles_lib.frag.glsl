@@ -395,3 +395,21 @@ float hfs_bspline_close(float best, vec4 w)
         best = max(best, w.x + ((w.x - w.x) + 23.0 * (w.y - w.x) + (w.z - w.x)) / 48.0);
     return best;
 }
+
+/* ---- uniform data carried by a texture (runtime/gles/block_texture.h) -- */
+/* A block too large for GL_MAX_UNIFORM_BLOCK_SIZE arrives as RGBA16UI
+ * texels, each vec4 as two texels holding its floats' bits as (high, low)
+ * 16-bit halves: vec4 i of the block, bit for bit the float the block would
+ * have held. */
+#if defined(HFS_SWATH_TEX) || defined(HFS_KEYS_TEX) || defined(HFS_LOCAL_TEX)
+#define HFS_BLOCK_TEX_W 1024
+vec4 hfs_block_vec4(highp usampler2D t, int i)
+{
+    int k = 2 * i;
+    ivec2 p = ivec2(k % HFS_BLOCK_TEX_W, k / HFS_BLOCK_TEX_W);
+    uvec4 a = texelFetch(t, p, 0);
+    uvec4 b = texelFetch(t, p + ivec2(1, 0), 0);
+    return vec4(uintBitsToFloat((a.x << 16) | a.y), uintBitsToFloat((a.z << 16) | a.w),
+                uintBitsToFloat((b.x << 16) | b.y), uintBitsToFloat((b.z << 16) | b.w));
+}
+#endif

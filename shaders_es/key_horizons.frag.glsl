@@ -19,6 +19,7 @@
  */
 // hfs-variant: HFS_NOUT 4
 // hfs-variant: HFS_FP32 1, HFS_COUNT 1
+// hfs-variant: HFS_SWATH_TEX 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -62,11 +63,21 @@ uniform int u_ndir;                      /* directions in this pass, <= 2 * HFS_
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];
 };
+#ifdef HFS_SWATH_TEX
+/* The swath from a texture (too large for a uniform block): this light's
+ * starts at vec4 u_swath_base. */
+vec4 hfs_block_vec4(highp usampler2D t, int i);
+uniform highp usampler2D u_swath_tex;
+uniform int u_swath_base;
+#define SW_DIR(j) hfs_block_vec4(u_swath_tex, u_swath_base + 2 + (j))
+#else
 layout(std140) uniform HfsSwath {        /* the light's swath (prefix) */
     vec4 u_win;
     vec4 u_occtop;
     vec4 u_dir[HFS_NDIR];
 };
+#define SW_DIR(j) u_dir[j]
+#endif
 
 layout(location = 0) out vec4 o_h0;
 #if HFS_NOUT > 1
@@ -92,7 +103,7 @@ void main()
         ex[q] = 0.0;
 
     for (int q = 0; q < u_ndir; ++q) {
-        vec2 cs = u_dir[u_dir0 + q].xy;
+        vec2 cs = SW_DIR(u_dir0 + q).xy;
         float fl = hfs_floor(n, cs);
         /* Per-scale angles from fine to coarse into the B-spline max.  Past
          * the grid every angle is the floor: three more steps flush the

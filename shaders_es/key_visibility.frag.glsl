@@ -15,6 +15,8 @@
  */
 // hfs-variant: HFS_TABLES 1
 // hfs-variant: HFS_FP32 1
+// hfs-variant: HFS_KEYS_TEX 1
+// hfs-variant: HFS_KEYS_TEX 1, HFS_TABLES 1
 
 #ifndef HFS_KEY_VEC4
 #define HFS_KEY_VEC4 1
@@ -55,9 +57,17 @@ uniform int u_sub;
 uniform int u_kb;                        /* this light's record in u_k */
 uniform float u_emax;                    /* pi sin^2 alpha */
 
+#ifdef HFS_KEYS_TEX
+/* The records from a texture (too large for a uniform block). */
+vec4 hfs_block_vec4(highp usampler2D t, int i);
+uniform highp usampler2D u_keys_tex;
+#define KREC(i) hfs_block_vec4(u_keys_tex, (i))
+#else
 layout(std140) uniform HfsKeys {
     vec4 u_k[HFS_KEY_VEC4];
 };
+#define KREC(i) u_k[i]
+#endif
 
 layout(location = 0) out vec4 o_f;       /* (f / E_max hi, lo, 0, 1) */
 
@@ -65,26 +75,26 @@ layout(location = 0) out vec4 o_f;       /* (f / E_max hi, lo, 0, 1) */
 void tab_add(inout vec4 V[4], float a, float b, bool boundary, int rot, float set)
 {
     float n = float(HFS_TABLE_N);
-    bool mirror = u_k[rot].w > 0.5;
+    bool mirror = KREC(rot).w > 0.5;
     if (boundary)
         hfs_table_add(u_ktabb, vec2(hfs_table_coord(a, n), 0.5), 4.0 * set, mirror,
-                      u_k[rot].xyz, u_k[rot + 1].xyz, V);
+                      KREC(rot).xyz, KREC(rot + 1).xyz, V);
     else
         hfs_table_add(u_ktab, vec2(hfs_table_coord(a, n), hfs_table_coord(b, n)), 4.0 * set,
-                      mirror, u_k[rot].xyz, u_k[rot + 1].xyz, V);
+                      mirror, KREC(rot).xyz, KREC(rot + 1).xyz, V);
 }
 #endif
 
 /* E_cap * ratio for the key light whose record starts at b. */
 float key_factor(int b, vec3 n, vec4 H[4], vec2 uv)
 {
-    vec4 h0 = u_k[b], h1 = u_k[b + 1], h2 = u_k[b + 2];
+    vec4 h0 = KREC(b), h1 = KREC(b + 1), h2 = KREC(b + 2);
     float e_cap = hfs_cap_irradiance(dot(n, h1.xyz), h1.w);
     if (!(e_cap > 0.0))
         return 0.0;
     vec4 L[4];
     for (int g = 0; g < 4; ++g)
-        L[g] = u_k[b + 3 + g];
+        L[g] = KREC(b + 3 + g);
     vec4 M[4];
     hfs_sh_product(H, L, M);
 
@@ -92,7 +102,7 @@ float key_factor(int b, vec3 n, vec4 H[4], vec2 uv)
     bool full = h0.y > 0.5;
     float layer0 = h0.z;
     int sw = b + 7;                      /* the light's HfsSwath record */
-    vec4 win = u_k[sw], occtop = u_k[sw + 1];
+    vec4 win = KREC(sw), occtop = KREC(sw + 1);
     int dirs = sw + 2, cm = sw + 2 + nd, rot = sw + 2 + 17 * nd;
 #ifdef HFS_TABLES
     vec4 Vk[4], Vo[4];
@@ -104,7 +114,7 @@ float key_factor(int b, vec3 n, vec4 H[4], vec2 uv)
 #else
     /* V.M = sum_j v_j . (C_j^T M): one 16x4 product per direction serves
      * num and den.  |V_open| (the threshold's scale) is bounded by
-     * sum_j |C_j|_F |v_open_j| (u_k[dirs + j].z), so a den that the CPU's
+     * sum_j |C_j|_F |v_open_j| (KREC(dirs + j).z), so a den that the CPU's
      * test 1e-12 |L| |V_open| calls zero is zero here too. */
     float num = 0.0, den = 0.0, vo_norm = 0.0;
 #endif
@@ -112,7 +122,7 @@ float key_factor(int b, vec3 n, vec4 H[4], vec2 uv)
     for (int j = 0; j < nd; ++j) {
         if (j % 2 == 0)
             exv = texture(u_keyhz, vec3(uv, layer0 + float(j / 2)));
-        vec4 dj = u_k[dirs + j];
+        vec4 dj = KREC(dirs + j);
         float fl = atan(-(n.x * dj.x + n.y * dj.y), n.z);
         float ex = j % 2 == 0 ? exv.x + exv.y : exv.z + exv.w;
         float om = min(fl + ex, HFS_HALF_PI);
@@ -133,12 +143,12 @@ float key_factor(int b, vec3 n, vec4 H[4], vec2 uv)
         fl_prev = fl;
 #else
         int c = cm + 16 * j;
-        vec4 w = M[0].x * u_k[c] + M[0].y * u_k[c + 1] + M[0].z * u_k[c + 2] +
-                 M[0].w * u_k[c + 3] + M[1].x * u_k[c + 4] + M[1].y * u_k[c + 5] +
-                 M[1].z * u_k[c + 6] + M[1].w * u_k[c + 7] + M[2].x * u_k[c + 8] +
-                 M[2].y * u_k[c + 9] + M[2].z * u_k[c + 10] + M[2].w * u_k[c + 11] +
-                 M[3].x * u_k[c + 12] + M[3].y * u_k[c + 13] + M[3].z * u_k[c + 14] +
-                 M[3].w * u_k[c + 15];
+        vec4 w = M[0].x * KREC(c) + M[0].y * KREC(c + 1) + M[0].z * KREC(c + 2) +
+                 M[0].w * KREC(c + 3) + M[1].x * KREC(c + 4) + M[1].y * KREC(c + 5) +
+                 M[1].z * KREC(c + 6) + M[1].w * KREC(c + 7) + M[2].x * KREC(c + 8) +
+                 M[2].y * KREC(c + 9) + M[2].z * KREC(c + 10) + M[2].w * KREC(c + 11) +
+                 M[3].x * KREC(c + 12) + M[3].y * KREC(c + 13) + M[3].z * KREC(c + 14) +
+                 M[3].w * KREC(c + 15);
         vec4 vo = hfs_visible(fl, win, occtop);
         num += dot(hfs_visible(om, win, occtop), w);
         den += dot(vo, w);

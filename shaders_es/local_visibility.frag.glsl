@@ -34,6 +34,8 @@
 // hfs-variant: HFS_NOUT 4
 // hfs-variant: HFS_TABLES 1
 // hfs-variant: HFS_FP32 1, HFS_COUNT 1
+// hfs-variant: HFS_LOCAL_TEX 1
+// hfs-variant: HFS_LOCAL_TEX 1, HFS_TABLES 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -103,9 +105,22 @@ layout(std140) uniform HfsLocal {
     vec4 u_lg;                           /* (1, base, hscale, zscale/dx): texel units */
     vec4 u_lq;                           /* (nphi_local, forced full swath, 0, 0) */
     vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (-, -, -, open) */
+#ifndef HFS_LOCAL_TEX
     vec4 u_ldir[HFS_LOCAL_DIRS];         /* full swath: (cos, sin) of 2 pi k/n */
     vec4 u_lrot[2 * HFS_LOCAL_DIRS];     /* per wedge (cos ma), (sin ma), m = 1..3 */
+#endif
 };
+#ifdef HFS_LOCAL_TEX
+/* The swath from a texture (too large for a uniform block): the whole
+ * block's data, the swath after the head's 18 + 2 HFS_LOCAL_MAX vec4. */
+vec4 hfs_block_vec4(highp usampler2D t, int i);
+uniform highp usampler2D u_local_tex;
+#define LOCAL_DIR(k) hfs_block_vec4(u_local_tex, 18 + 2 * HFS_LOCAL_MAX + (k))
+#define LOCAL_ROT(i) hfs_block_vec4(u_local_tex, 18 + 2 * HFS_LOCAL_MAX + HFS_LOCAL_DIRS + (i))
+#else
+#define LOCAL_DIR(k) u_ldir[k]
+#define LOCAL_ROT(i) u_lrot[i]
+#endif
 #ifdef HFS_TABLES
 uniform highp sampler2DArray u_tab;      /* interior wedge table, 4 layers */
 
@@ -114,7 +129,7 @@ void local_wedge(inout vec4 V[4], float a, float b, int w)
 {
     float n = float(HFS_TABLE_N);
     hfs_table_add(u_tab, vec2(hfs_table_coord(a, n), hfs_table_coord(b, n)), 0.0, false,
-                  u_lrot[2 * w].xyz, u_lrot[2 * w + 1].xyz, V);
+                  LOCAL_ROT(2 * w).xyz, LOCAL_ROT(2 * w + 1).xyz, V);
 }
 #endif
 
@@ -277,7 +292,7 @@ float local_ratio(ivec2 p, vec3 n, vec4 Hn[4], vec3 pw, int q)
     for (int k = 0; k < ns; ++k) {
         vec2 cs;
         if (full) {
-            cs = u_ldir[k].xy;
+            cs = LOCAL_DIR(k).xy;
         } else {
             float phi = phi0 + float(k) * dphi;
             cs = vec2(cos(phi), sin(phi));

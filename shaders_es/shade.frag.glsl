@@ -102,8 +102,7 @@ layout(std140) uniform HfsLocal {
     vec4 u_lg;                           /* (1, base, hscale, zscale/dx): texel units */
     vec4 u_lq;
     vec4 u_lights[2 * HFS_LOCAL_MAX];    /* (centre.xyz, radius), (-, open): Le is u_lle */
-    vec4 u_ldir[HFS_LOCAL_DIRS];
-};
+};                                       /* (a prefix: the swath that follows is not read here) */
 
 vec3 local_lights(ivec2 p, vec3 n, vec2 uv)
 {

@@ -90,6 +90,10 @@ void hfs_gles_destroy(hfs_gles *g)
             gl->DeleteVertexArrays(1, &g->vao);
         gl->DeleteBuffers(HFS_UBO_COUNT, g->ubo);
         hfs_gles_timing_free(&g->timing, gl);
+        hfs_gles_block_texture_free(&g->env_swath_tex, gl);
+        hfs_gles_block_texture_free(&g->key_swath_tex, gl);
+        hfs_gles_block_texture_free(&g->keys_tex, gl);
+        hfs_gles_block_texture_free(&g->local_tex, gl);
     }
     hfs_gles_wedge_textures_free(&g->wedge, gl);
     hfs_visibility_destroy(g->env_vis);
@@ -185,7 +189,9 @@ static void report_timings(hfs_gles *g, double t_start)
 {
     hfs_timings *t = &g->last;
     hfs_gles_timing_report(&g->timing, t);
-    t->texture_bytes = hfs_gles_resources_bytes(&g->r, &g->caps) + g->wedge.bytes;
+    t->texture_bytes = hfs_gles_resources_bytes(&g->r, &g->caps) + g->wedge.bytes +
+                       g->env_swath_tex.bytes + g->key_swath_tex.bytes + g->keys_tex.bytes +
+                       g->local_tex.bytes;
     snprintf(t->method, sizeof t->method, "%s",
              g->timing.use_queries ? "timer-query" : "finish-clock");
     snprintf(t->device, sizeof t->device, "%s (%s)", hfs_gl_context_describe(g->ctx),

@@ -18,6 +18,7 @@
 #define HFS_GLES_BACKEND_H
 
 #include "backends.h"
+#include "block_texture.h"
 #include "gl_caps.h"
 #include "gl_context.h"
 #include "lights.h"
@@ -61,6 +62,9 @@ struct hfs_gles_frame {
     hfs_local_light local[HFS_MAX_LOCAL_LIGHTS];
     int local_open[HFS_MAX_LOCAL_LIGHTS]; /* beyond the shadow range: ratio 1 */
     double out_scale;                     /* power of two (pass_shade.c) */
+    /* Uniform data too large for the profile's blocks, carried by textures
+     * instead (block_texture.h): decided by the passes' layout hooks. */
+    int env_swath_tex, key_swath_tex, keys_tex, local_tex;
     const int *run[HFS_PASS_COUNT];       /* the plan: run[p][instance] */
 };
 
@@ -76,6 +80,7 @@ struct hfs_gles {
     hfs_gles_programs programs;
     hfs_gles_resources r;
     hfs_gles_wedge_textures wedge;
+    hfs_gles_block_texture env_swath_tex, key_swath_tex, keys_tex, local_tex;
 
     /* Terrain cache: what the terrain pass computed from. */
     int terrain_valid;

@@ -16,10 +16,15 @@ static int present(const hfs_gles_frame *fr)
     return fr->has_env;
 }
 
+/* The swath's block, or (too large for the profile's blocks) its texture. */
 static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
-    return hfs_gl_caps_check_uniform_block(&g->caps, hfs_gles_swath_vec4(fr->q->nphi_env) * 16,
-                                           "environment swath (--nphi-env)", err);
+    const size_t n4 = hfs_gles_swath_vec4(fr->q->nphi_env);
+    fr->env_swath_tex = hfs_gles_block_too_big(&g->caps, n4);
+    return fr->env_swath_tex
+               ? hfs_gles_block_texture_check(&g->caps, n4, "environment swath (--nphi-env)", err)
+               : hfs_gl_caps_check_uniform_block(&g->caps, n4 * 16,
+                                                 "environment swath (--nphi-env)", err);
 }
 
 /* The swath's visibility object (kept while nphi_env holds), its block and
@@ -41,11 +46,18 @@ static int prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     if (!fr->run[HFS_PASS_ENV_HORIZONS][0])
         return HFS_OK;
     const size_t bytes = hfs_gles_swath_vec4(q->nphi_env) * 16;
-    float *sw = hfs_gles_scratch(g, bytes);
+    float *sw = hfs_gles_scratch(g, 2 * bytes); /* the block, then its texels */
     if (!sw)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
     hfs_gles_pack_swath(&fr->L, g->env_vis, sw);
-    hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_ENV_SWATH], sw, bytes);
+    if (fr->env_swath_tex) {
+        if ((rc = hfs_gles_block_texture_upload(&g->env_swath_tex, &g->gl, &g->caps, sw,
+                                                bytes / 16, (char *)sw + bytes,
+                                                "environment swath (--nphi-env)", err)))
+            return rc;
+    } else {
+        hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_ENV_SWATH], sw, bytes);
+    }
     if (!fr->tables)
         return HFS_OK;
     void *scratch = hfs_gles_scratch(g, hfs_gles_wedge_scratch_bytes());
@@ -62,7 +74,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, int count, hfs_error *err
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                 .n_dir = g->env_vis_n, .tables = fr->tables,
-                                .fp32 = g->caps.fp32, .count = count};
+                                .fp32 = g->caps.fp32, .count = count,
+                                .swath_tex = fr->env_swath_tex};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_HORIZONS, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)))
@@ -73,7 +86,13 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, int count, hfs_error *err
     /* A hair above the largest height: rounding in the pyramid's hi+lo
      * pairs and the bilinear filter must never make the bound too tight. */
     hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
-    gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SWATH, g->ubo[HFS_UBO_ENV_SWATH]);
+    if (fr->env_swath_tex)
+        rc = hfs_gles_program_texture(gl, prog, "u_swath_tex", GL_TEXTURE_2D,
+                                      g->env_swath_tex.tex, err);
+    else
+        gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SWATH, g->ubo[HFS_UBO_ENV_SWATH]);
+    if (rc)
+        return rc;
     hfs_gles_draw(gl, g->r.venv_fbo, L->vw, L->vh);
     gl->UseProgram(0);
     return hfs_gl_check(gl, "backend gles: env pass", err);

@@ -63,10 +63,13 @@ static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
         fr->key_swath_bytes = align_up(fr->key_swath_bytes + k->swath_size, align);
         k->rec_off = rec;
         rec += (int)hfs_gles_key_vec4(k->k.swath.n);
-        if ((rc = hfs_gl_caps_check_uniform_block(caps, k->swath_size,
-                                                   "key-light swath (lower --nphi-key)", err)))
-            return rc;
+        /* A swath too large for a block: every key's from one texture. */
+        fr->key_swath_tex |= hfs_gles_block_too_big(caps, k->swath_size / 16);
     }
+    if (fr->key_swath_tex &&
+        (rc = hfs_gles_block_texture_check(caps, fr->key_swath_bytes / 16,
+                                           "key-light swaths (--nphi-key)", err)))
+        return rc;
     /* The records' declared size (HFS_KEY_VEC4) goes in size classes, so
      * that a swath gaining or losing a sample as its light moves does not
      * recompile the visibility pass (a 100-400 ms hitch on llvmpipe): the
@@ -78,11 +81,24 @@ static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     if ((size_t)rec_block * 16 > (size_t)caps->max_uniform_block_size)
         rec_block = rec > 0 ? rec : 1;
     fr->key_rec_block = rec_block;
-    if ((rc = hfs_gl_caps_check_uniform_block(caps, (size_t)rec_block * 16,
-                                              "key-light records (fewer keys or --nphi-key)", err)))
+    fr->keys_tex = hfs_gles_block_too_big(caps, (size_t)rec_block);
+    if ((rc = hfs_gles_block_texture_check(caps, (size_t)rec_block,
+                                           "key-light records (fewer keys or --nphi-key)", err)))
         return rc;
     return hfs_gl_caps_check_texture(caps, fr->L.vw, fr->L.vh, fr->key_layers,
                                      "key-light horizons", err);
+}
+
+/* Block data into its uniform buffer, or its texture (block_texture.h). */
+static int upload(hfs_gles *g, hfs_gles_block_texture *bt, int ubo, int as_texture,
+                  const float *data, size_t bytes, void *texels, const char *what,
+                  hfs_error *err)
+{
+    if (as_texture)
+        return hfs_gles_block_texture_upload(bt, &g->gl, &g->caps, data, bytes / 16, texels,
+                                             what, err);
+    hfs_gles_ubo_upload(&g->gl, g->ubo[ubo], data, bytes);
+    return HFS_OK;
 }
 
 /* Swath blocks, records and (table path) the wedge-table sets, every frame
@@ -90,7 +106,7 @@ static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 static int prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     const size_t bytes = fr->key_swath_bytes + (size_t)fr->key_rec_block * 16;
-    float *ks = hfs_gles_scratch(g, bytes);
+    float *ks = hfs_gles_scratch(g, 2 * bytes); /* the blocks, then texels */
     if (!ks)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
     memset(ks, 0, bytes);
@@ -112,8 +128,13 @@ static int prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
         }
         hfs_gles_pack_key(&fr->L, &k->k, k->vis, recs + (size_t)k->rec_off * 4);
     }
-    hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_KEY_SWATHS], ks, fr->key_swath_bytes);
-    hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_KEYS], recs, (size_t)fr->key_rec_block * 16);
+    int rc;
+    if ((rc = upload(g, &g->key_swath_tex, HFS_UBO_KEY_SWATHS, fr->key_swath_tex, ks,
+                     fr->key_swath_bytes, (char *)ks + bytes, "key-light swaths", err)) ||
+        (rc = upload(g, &g->keys_tex, HFS_UBO_KEYS, fr->keys_tex, recs,
+                     (size_t)fr->key_rec_block * 16, (char *)ks + bytes, "key-light records",
+                     err)))
+        return rc;
     if (!fr->tables)
         return HFS_OK;
     void *scratch = hfs_gles_scratch(g, hfs_gles_wedge_scratch_bytes());
@@ -139,7 +160,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
             const int outs = (cnt + 1) / 2;
             const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                         .n_out = outs, .n_dir = n, .fp32 = g->caps.fp32,
-                                        .count = count};
+                                        .count = count, .swath_tex = fr->key_swath_tex};
             const hfs_gles_program *prog;
             if ((rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_KEY_HORIZONS, &v, &prog,
                                            err)) ||
@@ -147,8 +168,16 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
                 return rc;
             hfs_gles_set_i1(gl, prog, "u_dir0", d0);
             hfs_gles_set_i1(gl, prog, "u_ndir", cnt);
-            gl->BindBufferRange(GL_UNIFORM_BUFFER, HFS_BLOCK_SWATH, g->ubo[HFS_UBO_KEY_SWATHS],
-                                (GLintptr)k->swath_off, (GLsizeiptr)k->swath_size);
+            if (fr->key_swath_tex) {
+                if ((rc = hfs_gles_program_texture(gl, prog, "u_swath_tex", GL_TEXTURE_2D,
+                                                   g->key_swath_tex.tex, err)))
+                    return rc;
+                hfs_gles_set_i1(gl, prog, "u_swath_base", (int)(k->swath_off / 16));
+            } else {
+                gl->BindBufferRange(GL_UNIFORM_BUFFER, HFS_BLOCK_SWATH,
+                                    g->ubo[HFS_UBO_KEY_SWATHS], (GLintptr)k->swath_off,
+                                    (GLsizeiptr)k->swath_size);
+            }
             if ((rc = hfs_gles_draw_grid_layers(g, L, g->r.keyhz_fbo, g->r.keyhz,
                                                 k->k.hz_layer + d0 / 2, outs, "key",
                                                 count ? fetch_sum : NULL, err)) ||

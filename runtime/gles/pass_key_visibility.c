@@ -42,6 +42,9 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     hfs_gles_set_i1(gl, prog, "u_sub", L->sub);
+    if (fr->keys_tex)
+        return hfs_gles_program_texture(gl, prog, "u_keys_tex", GL_TEXTURE_2D, g->keys_tex.tex,
+                                        err);
     gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_KEYS, g->ubo[HFS_UBO_KEYS]);
     return HFS_OK;
 }
@@ -51,7 +54,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.key_vec4 = fr->key_rec_block > 0 ? fr->key_rec_block : 1,
-                                .tables = fr->tables, .fp32 = g->caps.fp32};
+                                .tables = fr->tables, .fp32 = g->caps.fp32,
+                                .keys_tex = fr->keys_tex};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_KEY_VISIBILITY, &v, &prog, err);
     if (rc || (rc = bind_inputs(g, fr, prog, err)))

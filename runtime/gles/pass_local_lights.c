@@ -21,11 +21,29 @@ static int present(const hfs_gles_frame *fr)
     return fr->n_local > 0;
 }
 
+/* HfsLocal in vec4: the head, then the full swath's directions and wedge
+ * placements. */
+static size_t block_vec4(int nphi)
+{
+    return (sizeof(hfs_gles_local_block) + (size_t)nphi * sizeof(hfs_gles_swath_sample) +
+            (size_t)nphi * sizeof(hfs_gles_wedge_rot)) / 16;
+}
+
+/* The ratio layers; the block, or (too large for the profile's blocks) its
+ * head in the block and the whole in a texture. */
 static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     const int layers = (fr->n_local + 1) / 2;
-    return hfs_gl_caps_check_texture(&g->caps, fr->L.vw, fr->L.vh, layers > 0 ? layers : 1,
-                                     "local-light visibility", err);
+    const size_t n4 = block_vec4(fr->q->nphi_local);
+    fr->local_tex = hfs_gles_block_too_big(&g->caps, n4);
+    int rc = hfs_gl_caps_check_texture(&g->caps, fr->L.vw, fr->L.vh, layers > 0 ? layers : 1,
+                                       "local-light visibility", err);
+    if (rc)
+        return rc;
+    return fr->local_tex
+               ? hfs_gles_block_texture_check(&g->caps, n4, "local lights (--nphi-local)", err)
+               : hfs_gl_caps_check_uniform_block(&g->caps, n4 * 16, "local lights (--nphi-local)",
+                                                 err);
 }
 
 /* The full swath after the head: u_ldir[nphi] (the robust floats of
@@ -55,13 +73,9 @@ static int upload_block(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
 {
     const hfs_gles_layout *L = &fr->L;
     const int nphi = fr->q->nphi_local;
-    const size_t n4 = (sizeof(hfs_gles_local_block) + (size_t)nphi * sizeof(hfs_gles_swath_sample) +
-                       (size_t)nphi * sizeof(hfs_gles_wedge_rot)) / 16;
-    int rc;
-    if ((rc = hfs_gl_caps_check_uniform_block(&g->caps, n4 * 16,
-                                              "local lights (--nphi-local)", err)))
-        return rc;
-    float *u = hfs_gles_scratch(g, n4 * 16 + (size_t)nphi * 2 * sizeof(float));
+    const size_t n4 = block_vec4(nphi);
+    /* The block, 2 floats a direction (cs), then the texels. */
+    float *u = hfs_gles_scratch(g, n4 * 16 + (size_t)nphi * 2 * sizeof(float) + n4 * 16);
     if (!u)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
     memset(u, 0, n4 * 16);
@@ -91,7 +105,17 @@ static int upload_block(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
         lb->lights[i][1][3] = fr->local_open[i] ? 1.0f : 0.0f;
     }
     pack_swath(L, nphi, u + sizeof(hfs_gles_local_block) / sizeof(float), u + n4 * 4);
-    hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_LOCAL], u, n4 * 16);
+    if (fr->local_tex) {
+        /* The head for the shading and the pass; the whole for the swath. */
+        hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_LOCAL], u, sizeof(hfs_gles_local_block));
+        int rc = hfs_gles_block_texture_upload(&g->local_tex, &g->gl, &g->caps, u, n4,
+                                               (char *)u + n4 * 16 + (size_t)nphi * 2 * 4,
+                                               "local lights (--nphi-local)", err);
+        if (rc)
+            return rc;
+    } else {
+        hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_LOCAL], u, n4 * 16);
+    }
     hfs_swath sw;
     hfs_swath_full(nphi, &sw);
     g->stats.offset_mismatches += hfs_gles_offset_mismatches(L, &sw);
@@ -141,7 +165,8 @@ static int draw_layers(hfs_gles *g, const hfs_gles_frame *fr, int k, int layers,
     const int cnt = 2 * (k + layers) < n_local ? 2 * layers : n_local - l0;
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                 .n_out = layers, .local_dirs = fr->q->nphi_local,
-                                .tables = fr->tables, .fp32 = g->caps.fp32, .count = count};
+                                .tables = fr->tables, .fp32 = g->caps.fp32, .count = count,
+                                .local_tex = fr->local_tex};
     const hfs_gles_program *prog;
     int rc;
     if ((rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_LOCAL_VISIBILITY, &v, &prog, err)) ||
@@ -155,6 +180,10 @@ static int draw_layers(hfs_gles *g, const hfs_gles_frame *fr, int k, int layers,
                                        err)))
         return rc;
     gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_LOCAL, g->ubo[HFS_UBO_LOCAL]);
+    if (fr->local_tex &&
+        (rc = hfs_gles_program_texture(gl, prog, "u_local_tex", GL_TEXTURE_2D, g->local_tex.tex,
+                                       err)))
+        return rc;
     if (partial)
         gl->ColorMask(mask & 1, mask & 1, (mask >> 1) & 1, (mask >> 1) & 1);
     rc = hfs_gles_draw_grid_layers(g, L, g->r.localv_fbo, g->r.localv, k, layers, "local-light",

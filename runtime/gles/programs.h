@@ -44,6 +44,9 @@ typedef struct hfs_gles_variant {
     int local;      /* HFS_LOCAL 1: local lights are shaded                  */
     int local_dirs; /* HFS_LOCAL_DIRS: the local lights' full swath          */
     int n_local;    /* HFS_NLOCAL: local lights shaded                       */
+    int swath_tex;  /* HFS_SWATH_TEX 1: HfsSwath from a texture (block_texture.h) */
+    int keys_tex;   /* HFS_KEYS_TEX 1: HfsKeys from a texture                */
+    int local_tex;  /* HFS_LOCAL_TEX 1: HfsLocal's swath from a texture      */
 } hfs_gles_variant;
 
 #define HFS_GLES_MAX_PROGRAMS 64
@@ -79,7 +82,7 @@ void hfs_gles_set_f1(const hfs_gl *gl, const hfs_gles_program *p, const char *na
 
 /* The "#define NAME VALUE" strings of variant v (NULL-terminated; bufs
  * holds their text).  Exposed for tests. */
-#define HFS_GLES_MAX_DEFINES 16
+#define HFS_GLES_MAX_DEFINES 20
 void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
                               const char *defs[HFS_GLES_MAX_DEFINES + 1]);
 
