@@ -34,33 +34,34 @@
 
 static const hfs_action_info actions[] = {
     /* action, name, knob, button, target, continuous, multiplicative,
-     * step, min, max, wrap, lo, hi, lo_open */
+     * step, min, max, wrap (defaults), the scene key and number it edits
+     * (its range: what min/max may reach) */
     {HFS_ACTION_KEY_AZIMUTH, "key.azimuth", 1, 0, HFS_TARGET_KEY, 1, 0,
-     2.0, 0.0, 360.0, 1, -3600.0, 3600.0, 0},
+     2.0, 0.0, 360.0, 1, HFS_SK_KEY, 0},
     {HFS_ACTION_KEY_ELEVATION, "key.elevation", 1, 0, HFS_TARGET_KEY, 1, 0,
-     1.0, 0.0, 90.0, 0, -90.0, 90.0, 0},
+     1.0, 0.0, 90.0, 0, HFS_SK_KEY, 1},
     {HFS_ACTION_KEY_RADIUS, "key.radius", 1, 0, HFS_TARGET_KEY, 1, 0,
-     0.5, 0.5, 30.0, 0, 0.0, 89.0, 1},
+     0.5, 0.5, 30.0, 0, HFS_SK_KEY, 2},
     {HFS_ACTION_KEY_RADIANCE, "key.radiance", 1, 0, HFS_TARGET_KEY, 1, 1,
-     1.1, 0.01, 1e6, 0, 0.0, 1e9, 1},
+     1.1, 0.01, 1e6, 0, HFS_SK_KEY, 3},
     {HFS_ACTION_LOCAL_X, "local.x", 1, 0, HFS_TARGET_LOCAL, 1, 0,
-     1.0, -1e9, 1e9, 0, -1e9, 1e9, 0},
+     1.0, -1e9, 1e9, 0, HFS_SK_LOCAL, 0},
     {HFS_ACTION_LOCAL_Y, "local.y", 1, 0, HFS_TARGET_LOCAL, 1, 0,
-     1.0, -1e9, 1e9, 0, -1e9, 1e9, 0},
+     1.0, -1e9, 1e9, 0, HFS_SK_LOCAL, 1},
     {HFS_ACTION_LOCAL_Z, "local.z", 1, 0, HFS_TARGET_LOCAL, 1, 0,
-     1.0, -1e9, 1e9, 0, -1e9, 1e9, 0},
+     1.0, -1e9, 1e9, 0, HFS_SK_LOCAL, 2},
     {HFS_ACTION_LOCAL_RADIUS, "local.radius", 1, 0, HFS_TARGET_LOCAL, 1, 0,
-     0.5, 0.1, 1e9, 0, 0.0, 1e9, 0},
+     0.5, 0.1, 1e9, 0, HFS_SK_LOCAL, 3},
     {HFS_ACTION_LOCAL_RADIANCE, "local.radiance", 1, 0, HFS_TARGET_LOCAL, 1, 1,
-     1.1, 0.01, 1e9, 0, 0.0, 1e9, 1},
+     1.1, 0.01, 1e9, 0, HFS_SK_LOCAL, 4},
     {HFS_ACTION_ENV_ROTATE, "env.rotate", 1, 0, HFS_TARGET_NONE, 1, 0,
-     5.0, 0.0, 360.0, 1, -36000.0, 36000.0, 0},
+     5.0, 0.0, 360.0, 1, HFS_SK_ENV_ROTATE, 0},
     {HFS_ACTION_LIGHT_SELECT, "light.select", 1, 1, HFS_TARGET_NONE, 0, 0,
-     1.0, 0.0, 0.0, 1, 0.0, 0.0, 0},
+     1.0, 0.0, 0.0, 1, HFS_SK_COUNT, 0},
     {HFS_ACTION_PRESET, "preset.next", 1, 1, HFS_TARGET_NONE, 0, 0,
-     1.0, 0.0, 0.0, 1, 0.0, 0.0, 0},
+     1.0, 0.0, 0.0, 1, HFS_SK_COUNT, 0},
     {HFS_ACTION_OVERLAY, "overlay.toggle", 0, 1, HFS_TARGET_NONE, 0, 0,
-     1.0, 0.0, 0.0, 0, 0.0, 0.0, 0},
+     1.0, 0.0, 0.0, 0, HFS_SK_COUNT, 0},
 };
 #define N_ACTIONS ((int)(sizeof actions / sizeof actions[0]))
 
@@ -70,6 +71,17 @@ const hfs_action_info *hfs_action_get(hfs_action action)
         if (actions[i].action == action)
             return &actions[i];
     return NULL;
+}
+
+hfs_key_range hfs_action_range(const hfs_action_info *a)
+{
+    const hfs_key_number *n = hfs_scene_key_number(a->key, a->number);
+    if (!n)
+        return (hfs_key_range){0.0, 0.0, 1}; /* holds nothing */
+    hfs_key_range r = n->range;
+    if (a->multiplicative && r.lo == 0.0)
+        r.lo_open = 1;
+    return r;
 }
 
 hfs_action hfs_action_from_name(const char *name)
@@ -459,10 +471,14 @@ static int end_section(parse_ctx *c)
         k->max = a->max;
     const int limit_line = c->key_line[K_MAX] > c->key_line[K_MIN] ? c->key_line[K_MAX]
                                                                     : c->key_line[K_MIN];
-    const int bad_lo = a->lo_open ? !(k->min > a->lo) : !(k->min >= a->lo);
-    if (bad_lo || k->max > a->hi)
-        return fail_at(c, limit_line, "min/max: [%g, %g] is outside what %s accepts, %c%g, %g]",
-                       k->min, k->max, a->name, a->lo_open ? '(' : '[', a->lo, a->hi);
+    const hfs_key_range accepts = hfs_action_range(a);
+    const int bad_lo = accepts.lo_open ? !(k->min > accepts.lo) : !(k->min >= accepts.lo);
+    if (bad_lo || k->max > accepts.hi) {
+        char range[80];
+        hfs_key_range_text(&accepts, HFS_UNIT_NONE, range, sizeof range);
+        return fail_at(c, limit_line, "min/max: [%g, %g] is outside what %s accepts, %s",
+                       k->min, k->max, a->name, range);
+    }
     if (!(k->min < k->max))
         return fail_at(c, limit_line, "min/max: min %g is not below max %g", k->min, k->max);
     return 1;

@@ -37,6 +37,7 @@
 #define HFS_BOARD_INPUT_CONFIG_H
 
 #include "input.h"
+#include "scene_keys.h"
 
 #define HFS_MAX_CONTROLS 32
 
@@ -117,13 +118,17 @@ typedef struct hfs_action_info {
     int multiplicative;         /* a detent multiplies by step (radiance)   */
     double step, min, max;      /* defaults                                 */
     int wrap;                   /* default                                  */
-    double lo, hi;              /* what the scene accepts; min/max must lie
-                                   inside (lo excluded when lo_open)        */
-    int lo_open;
+    hfs_scene_key_id key;       /* continuous: the scene key and the number */
+    int number;                 /* in it that the action edits              */
 } hfs_action_info;
 
 /* The entry for action, or NULL (HFS_ACTION_NONE, out of range). */
 const hfs_action_info *hfs_action_get(hfs_action action);
+
+/* What a continuous action accepts, min/max included: the range of the
+ * scene key's number it edits (scene_keys.h), with 0 excluded for an action
+ * that multiplies (a product never leaves 0). */
+hfs_key_range hfs_action_range(const hfs_action_info *a);
 
 /* The action written name ("env.rotate"), or HFS_ACTION_NONE. */
 hfs_action hfs_action_from_name(const char *name);

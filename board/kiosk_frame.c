@@ -8,6 +8,10 @@
  *
  * Buffers (linear image, RGBA8 picture) are allocated once and reused; a
  * reload to a field of another size reallocates them.
+ *
+ * Validation: a world's heights are checked once, when it loads; every
+ * render names them by the world's serial (hfs_renderer_set_field_serial),
+ * so no frame scans them again.
  */
 #include "kiosk.h"
 
@@ -65,6 +69,7 @@ int kiosk_frame_admit(hfs_renderer *r, int amortize, const hfs_scene *s,
     hfs_image img = {0};
     hfs_renderer_set_amortize(use, 0); /* the whole frame must work */
     rc = hfs_image_alloc(&img, in->field.width, in->field.height, err);
+    hfs_renderer_set_field_serial(use, in->serial);
     if (!rc)
         rc = hfs_renderer_render(use, &in->field, &in->lighting, &in->quality, &img, NULL, NULL,
                                  err);
@@ -120,6 +125,11 @@ int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, int overlay,
     if (rc)
         return rc;
     const int64_t t0 = hfs_input_now_ns();
+    /* The world's heights never change after loading: their serial spares
+     * the renderer a pass over them every frame (the knobs' lighting and
+     * quality were validated by kiosk_world_relight; the renderer checks
+     * them again, which costs nothing next to a frame). */
+    hfs_renderer_set_field_serial(f->renderer, in->serial);
     rc = hfs_renderer_render(f->renderer, &in->field, &in->lighting, &in->quality, &f->img,
                              NULL, NULL, err);
     if (rc)

@@ -241,12 +241,31 @@ HFS_API void hfs_renderer_destroy(hfs_renderer *r);
 HFS_API const char *hfs_renderer_backend_name(const hfs_renderer *r);
 
 /* Renders one frame: out must be allocated to the field's size.  Every input
- * is validated first (one-line error, nothing written on failure). */
+ * is validated first (one-line error, nothing written on failure): the
+ * heights too, which is a pass over the whole field, unless the caller
+ * names their changes with hfs_renderer_set_field_serial. */
 HFS_API int hfs_renderer_render(hfs_renderer *r, const hfs_field *field,
                                 const hfs_lighting *lighting,
                                 const hfs_quality *quality, hfs_image *out,
                                 hfs_progress_fn progress, void *user,
                                 hfs_error *err);
+
+/* Heights checked once per change.  Checking every height for NaN/Inf is a
+ * pass over the whole field; a caller that renders the same heights frame
+ * after frame (a kiosk turning lights) can spare it by giving the heights a
+ * serial: a number that names their content.  While the serial is not 0,
+ * hfs_renderer_render scans the heights only when the field's z pointer,
+ * width, height or the serial differ from those of the last heights it
+ * found finite; all other inputs are still checked on every call.
+ *   - The contract: whoever changes a height, in place or by pointing z at
+ *     other heights, sets a new serial before the next render (count up;
+ *     never reuse a serial for other heights at the same address).  Heights
+ *     changed under an old serial are not re-checked: such a frame renders
+ *     what the backend makes of them or fails, but never succeeds with a
+ *     non-finite value in its image.
+ *   - 0, the default: no serial, every render scans the heights.
+ * hfs_renderer_invalidate forgets what was checked.  Kept until changed. */
+HFS_API void hfs_renderer_set_field_serial(hfs_renderer *r, uint64_t serial);
 
 /* ---- measurement ------------------------------------------------------------ */
 
@@ -297,7 +316,8 @@ HFS_API int hfs_renderer_set_timing_finish(hfs_renderer *r, int finish);
 HFS_API int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out);
 /* Forget results cached from earlier frames (GLES: the pyramid, normals and
  * environment visibility are reused while the terrain and settings do not
- * change); the next frame recomputes everything.  For benchmarks. */
+ * change) and which heights were found finite; the next frame recomputes
+ * and checks everything.  For benchmarks. */
 HFS_API void hfs_renderer_invalidate(hfs_renderer *r);
 
 /* What the last frame ran and what it skipped, and why (the GLES renderer's
@@ -333,9 +353,17 @@ HFS_API int hfs_renderer_frame_report(const hfs_renderer *r, hfs_frame_report *o
  * backends accept and ignore it.  0, or HFS_E_INVALID for a negative count. */
 HFS_API int hfs_renderer_set_amortize(hfs_renderer *r, int passes_per_frame);
 
-/* Validation used by hfs_renderer_render, exposed for tools and tests. */
+/* Validation used by hfs_renderer_render, exposed for tools and tests: all
+ * inputs, or one group (the field: size, dx, zscale and every height; the
+ * lighting; the quality).  The ranges are the scene keys' (docs/SCENE.md)
+ * in library units (radians where the scene says degrees); one-line
+ * messages name the input ("key light 2: elevation 1.6 is out of range
+ * [-1.5708, 1.5708] (radians)"). */
 HFS_API int hfs_validate_inputs(const hfs_field *field, const hfs_lighting *lighting,
                                 const hfs_quality *quality, hfs_error *err);
+HFS_API int hfs_validate_field(const hfs_field *field, hfs_error *err);
+HFS_API int hfs_validate_lighting(const hfs_lighting *lighting, hfs_error *err);
+HFS_API int hfs_validate_quality(const hfs_quality *quality, hfs_error *err);
 
 /* Exact unshadowed Lo (V = 1) of the scene, any backend-independent: the
  * normalizer of SPEC's error metrics. */

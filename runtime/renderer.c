@@ -1,9 +1,12 @@
 /*
- * renderer.c — the public renderer object: validates every input once and
+ * renderer.c — the public renderer object: validates every input and
  * dispatches to a backend (backends.h) through one table of backend
- * operations.  Backends may assume valid inputs.
+ * operations.  Backends may assume valid inputs.  Ranges come from the
+ * table of scene keys (scene_keys.h); the heights are scanned once per
+ * change when the caller names their changes (hfs_renderer_set_field_serial).
  */
 #include "backends.h"
+#include "scene_keys.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -82,11 +85,22 @@ static const backend_ops backends[] = {
 };
 #define N_BACKENDS ((int)(sizeof backends / sizeof backends[0]))
 
+/* The heights last found finite, under the caller's serial (see
+ * hfs_renderer_set_field_serial): the same pointer, size and serial are the
+ * same heights, so their scan is not repeated. */
+typedef struct checked_heights {
+    const float *z;
+    int width, height;
+    uint64_t serial;         /* 0: none checked */
+} checked_heights;
+
 struct hfs_renderer {
     const backend_ops *ops;
     void *state;             /* the backend's own object (NULL if it has none) */
     int timing;
     hfs_timings timings;     /* backends without timings of their own: the last timed frame */
+    uint64_t field_serial;   /* the caller's serial of the heights; 0: unknown */
+    checked_heights checked;
 };
 
 static double wall_ms(void)
@@ -174,8 +188,17 @@ int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out)
 
 void hfs_renderer_invalidate(hfs_renderer *r)
 {
-    if (r && r->ops->invalidate)
+    if (!r)
+        return;
+    r->checked = (checked_heights){0};
+    if (r->ops->invalidate)
         r->ops->invalidate(r->state);
+}
+
+void hfs_renderer_set_field_serial(hfs_renderer *r, uint64_t serial)
+{
+    if (r)
+        r->field_serial = serial;
 }
 
 int hfs_renderer_frame_report(const hfs_renderer *r, hfs_frame_report *out)
@@ -195,73 +218,154 @@ int hfs_renderer_frame_report(const hfs_renderer *r, hfs_frame_report *out)
     return HFS_OK;
 }
 
-static int finite3(const float v[3])
+/* ---- validation -------------------------------------------------------------------
+ * Every range is the table of scene keys' (scene_keys.h), in library units:
+ * a value the scene parser accepts passes here, one just outside fails both.
+ * Fields without a scene key (counts of lights, enumerations, the truth's
+ * elevation order) are checked here alone. */
+
+#define CHECK_LIB(id, i, x, who) hfs_scene_key_check_lib((id), (i), (x), (who), err)
+
+static int check_radiance(hfs_scene_key_id id, int i, const float v[3], const char *who,
+                          hfs_error *err)
 {
-    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]) && v[0] >= 0 && v[1] >= 0 && v[2] >= 0;
+    int rc = HFS_OK;
+    for (int c = 0; c < 3 && !rc; ++c)
+        rc = CHECK_LIB(id, i, (double)v[c], who);
+    return rc;
 }
 
-int hfs_validate_inputs(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
-                        hfs_error *err)
+/* Everything about the field but its heights: O(1). */
+static int check_field_params(const hfs_field *f, hfs_error *err)
 {
-    const double pi = 3.14159265358979323846;
-    if (!f || !l || !q || !f->z)
+    if (!f || !f->z)
         return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
-    if (f->width < 2 || f->height < 2)
-        return hfs_fail(err, HFS_E_INVALID, "height field: %dx%d is smaller than 2x2", f->width, f->height);
-    /* Wide but bounded ranges keep every product of heights, scales and
-     * spacings far from double overflow/underflow. */
-    if (!(f->dx >= 1e-9 && f->dx <= 1e12))
-        return hfs_fail(err, HFS_E_INVALID, "dx: %g is out of range [1e-9, 1e12]", f->dx);
-    if (!(f->zscale >= 0.0 && f->zscale <= 1e12))
-        return hfs_fail(err, HFS_E_INVALID, "zscale: %g is out of range [0, 1e12]", f->zscale);
+    const hfs_key_range side = hfs_scene_key_lib_range(HFS_SK_SIZE, 0);
+    if (f->width < side.lo || f->height < side.lo)
+        return hfs_fail(err, HFS_E_INVALID, "height field: %dx%d is smaller than %.0fx%.0f",
+                        f->width, f->height, side.lo, side.lo);
+    if (f->width > side.hi || f->height > side.hi)
+        return hfs_fail(err, HFS_E_INVALID, "height field: %dx%d is larger than %.0fx%.0f",
+                        f->width, f->height, side.hi, side.hi);
+    int rc = CHECK_LIB(HFS_SK_DX, 0, f->dx, "dx");
+    return rc ? rc : CHECK_LIB(HFS_SK_ZSCALE, 0, f->zscale, "zscale");
+}
+
+/* The heights: a pass over the whole field. */
+static int check_heights(const hfs_field *f, hfs_error *err)
+{
     const size_t n = (size_t)f->width * (size_t)f->height;
     for (size_t i = 0; i < n; ++i)
         if (!isfinite(f->z[i]))
             return hfs_fail(err, HFS_E_INVALID, "height field: non-finite height at texel %zu "
                             "(holes must be filled before rendering)", i);
-    if (!(l->albedo >= 0.0 && l->albedo <= 1.0))
-        return hfs_fail(err, HFS_E_INVALID, "albedo: %g is out of range [0, 1]", l->albedo);
-    if (l->has_env) {
-        for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < HFS_SH_COEFFS; ++k)
-                if (!isfinite(l->env_sh[c][k]))
-                    return hfs_fail(err, HFS_E_INVALID, "env-sh: coefficient %d is not finite", k);
-        if (!isfinite(l->env_rotate))
-            return hfs_fail(err, HFS_E_INVALID, "env-rotate: not finite");
-    }
+    return HFS_OK;
+}
+
+int hfs_validate_field(const hfs_field *f, hfs_error *err)
+{
+    const int rc = check_field_params(f, err);
+    return rc ? rc : check_heights(f, err);
+}
+
+static int check_lights(const hfs_lighting *l, hfs_error *err)
+{
+    char who[32];
+    int rc = HFS_OK;
     if (l->n_key < 0 || l->n_key > HFS_MAX_KEY_LIGHTS)
         return hfs_fail(err, HFS_E_INVALID, "key: %d lights (at most %d)", l->n_key, HFS_MAX_KEY_LIGHTS);
-    for (int i = 0; i < l->n_key; ++i) {
+    for (int i = 0; i < l->n_key && !rc; ++i) {
         const hfs_key_light *k = &l->key[i];
-        if (!isfinite(k->phi) || !(k->elev >= -pi / 2 && k->elev <= pi / 2) ||
-            !(k->alpha > 0.0 && k->alpha < pi / 2) || !finite3(k->radiance))
-            return hfs_fail(err, HFS_E_INVALID, "key light %d: direction, radius or radiance out of range", i + 1);
+        snprintf(who, sizeof who, "key light %d", i + 1);
+        const double angle[3] = {k->phi, k->elev, k->alpha};
+        for (int j = 0; j < 3 && !rc; ++j)
+            rc = CHECK_LIB(HFS_SK_KEY, j, angle[j], who);
+        if (!rc)
+            rc = check_radiance(HFS_SK_KEY, 3, k->radiance, who, err);
     }
-    if (l->n_local < 0 || l->n_local > HFS_MAX_LOCAL_LIGHTS)
+    if (!rc && (l->n_local < 0 || l->n_local > HFS_MAX_LOCAL_LIGHTS))
         return hfs_fail(err, HFS_E_INVALID, "local: %d lights (at most %d)", l->n_local, HFS_MAX_LOCAL_LIGHTS);
-    for (int i = 0; i < l->n_local; ++i) {
+    for (int i = 0; i < l->n_local && !rc; ++i) {
         const hfs_local_light *o = &l->local[i];
-        if (!isfinite(o->pos[0]) || !isfinite(o->pos[1]) || !isfinite(o->pos[2]) ||
-            !(o->radius >= 0.0) || !isfinite(o->radius) || !finite3(o->radiance))
-            return hfs_fail(err, HFS_E_INVALID, "local light %d: position, radius or radiance out of range", i + 1);
+        snprintf(who, sizeof who, "local light %d", i + 1);
+        for (int j = 0; j < 3 && !rc; ++j)
+            rc = CHECK_LIB(HFS_SK_LOCAL, j, o->pos[j], who);
+        if (!rc)
+            rc = CHECK_LIB(HFS_SK_LOCAL, 3, o->radius, who);
+        if (!rc)
+            rc = check_radiance(HFS_SK_LOCAL, 4, o->radiance, who, err);
     }
-    if (q->k < 1 || q->k > 16 || q->offset < 0 || q->offset > 16)
-        return hfs_fail(err, HFS_E_INVALID, "quality: k=%d (1..16) or offset=%d (0..16) out of range", q->k, q->offset);
-    if (q->nphi_env < 3 || q->nphi_env > 1024 || q->nphi_key < 1 || q->nphi_key > 256 ||
-        q->nphi_local < 3 || q->nphi_local > 1024)
-        return hfs_fail(err, HFS_E_INVALID, "quality: azimuth sample counts out of range");
-    if (q->subsample != 1 && q->subsample != 2 && q->subsample != 4)
-        return hfs_fail(err, HFS_E_INVALID, "subsample: %d is not 1, 2 or 4", q->subsample);
+    return rc;
+}
+
+int hfs_validate_lighting(const hfs_lighting *l, hfs_error *err)
+{
+    if (!l)
+        return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
+    int rc = CHECK_LIB(HFS_SK_ALBEDO, 0, l->albedo, "albedo");
+    for (int c = 0; c < 3 && l->has_env && !rc; ++c)
+        for (int k = 0; k < HFS_SH_COEFFS && !rc; ++k)
+            rc = CHECK_LIB(HFS_SK_ENV_SH, k, l->env_sh[c][k], "env-sh");
+    if (!rc && l->has_env)
+        rc = CHECK_LIB(HFS_SK_ENV_ROTATE, 0, l->env_rotate, "env-rotate");
+    return rc ? rc : check_lights(l, err);
+}
+
+int hfs_validate_quality(const hfs_quality *q, hfs_error *err)
+{
+    if (!q)
+        return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
+    const struct { hfs_scene_key_id id; int value; } counts[] = {
+        {HFS_SK_K, q->k}, {HFS_SK_OFFSET, q->offset}, {HFS_SK_NPHI_ENV, q->nphi_env},
+        {HFS_SK_NPHI_KEY, q->nphi_key}, {HFS_SK_NPHI_LOCAL, q->nphi_local},
+        {HFS_SK_SUBSAMPLE, q->subsample}, {HFS_SK_THREADS, q->threads},
+        {HFS_SK_TRUTH_AZIMUTHS, q->truth_azimuths}, {HFS_SK_TRUTH_SAMPLES, q->truth_light_samples},
+    };
+    for (size_t i = 0; i < sizeof counts / sizeof counts[0]; ++i) {
+        const hfs_scene_key *k = hfs_scene_key_get(counts[i].id);
+        const int rc = CHECK_LIB(counts[i].id, 0, counts[i].value, k->name);
+        if (rc)
+            return rc;
+        if (!hfs_scene_key_int_allowed(k, counts[i].value)) {
+            char allowed[64];
+            hfs_scene_key_allowed_text(k, allowed, sizeof allowed);
+            return hfs_fail(err, HFS_E_INVALID, "%s: %d is not one of %s", k->name,
+                            counts[i].value, allowed);
+        }
+    }
     if (q->precision != HFS_PRECISION_FP16 && q->precision != HFS_PRECISION_FP32)
         return hfs_fail(err, HFS_E_INVALID, "precision: unknown value %d", (int)q->precision);
     if (q->local_full_swath != 0 && q->local_full_swath != 1)
         return hfs_fail(err, HFS_E_INVALID, "local-swath: unknown value %d", q->local_full_swath);
     if (q->visibility != HFS_VIS_LEGENDRE && q->visibility != HFS_VIS_WEDGE_TABLE)
         return hfs_fail(err, HFS_E_INVALID, "visibility: unknown value %d", (int)q->visibility);
-    if (q->threads < 0 || q->truth_azimuths < 1 || q->truth_elev_order < 1 ||
-        q->truth_elev_order > 64 || q->truth_light_samples < 1)
-        return hfs_fail(err, HFS_E_INVALID, "quality: thread or ground-truth settings out of range");
+    if (q->truth_elev_order < 1 || q->truth_elev_order > 64)
+        return hfs_fail(err, HFS_E_INVALID, "quality: truth_elev_order %d is out of range [1, 64]",
+                        q->truth_elev_order);
     return HFS_OK;
+}
+
+#undef CHECK_LIB
+
+/* Inputs in the order a message should name them; the heights only when
+ * `heights` (the renderer scans them once per serial). */
+static int validate(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q, int heights,
+                    hfs_error *err)
+{
+    if (!f || !l || !q || !f->z)
+        return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
+    int rc = check_field_params(f, err);
+    if (!rc && heights)
+        rc = check_heights(f, err);
+    if (!rc)
+        rc = hfs_validate_lighting(l, err);
+    return rc ? rc : hfs_validate_quality(q, err);
+}
+
+int hfs_validate_inputs(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                        hfs_error *err)
+{
+    return validate(f, l, q, 1, err);
 }
 
 /* Defence in depth: a backend bug must never leak NaN/Inf to an output. */
@@ -274,11 +378,26 @@ static int check_output(const hfs_image *out, const char *who, hfs_error *err)
     return HFS_OK;
 }
 
+/* Validates a frame's inputs; the heights only when they are not the ones
+ * last found finite under the current serial. */
+static int validate_frame(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
+                          const hfs_quality *q, hfs_error *err)
+{
+    const checked_heights now = {f ? f->z : NULL, f ? f->width : 0, f ? f->height : 0,
+                                 r->field_serial};
+    const int known = now.serial != 0 && now.z == r->checked.z && now.width == r->checked.width &&
+                      now.height == r->checked.height && now.serial == r->checked.serial;
+    const int rc = validate(f, l, q, !known, err);
+    if (!rc && !known && now.serial != 0)
+        r->checked = now;
+    return rc;
+}
+
 int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
                         const hfs_quality *q, hfs_image *out, hfs_progress_fn progress,
                         void *user, hfs_error *err)
 {
-    int rc = hfs_validate_inputs(f, l, q, err);
+    int rc = validate_frame(r, f, l, q, err);
     if (rc)
         return rc;
     if (!out || !out->rgb || out->width != f->width || out->height != f->height)

@@ -23,6 +23,7 @@
 #include "bench_sweep.h"
 #include "bench_truth.h"
 #include "median.h"
+#include "scene_keys.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -124,8 +125,9 @@ static int parse_args(int argc, char **argv, options *o)
             if (parse_number(a, v, 1, 1000, &x))
                 return -1;
             o->frames = (int)x;
-        } else if (!strcmp(a, "--truth-samples")) {
-            if (parse_number(a, v, 1, 1 << 20, &x))
+        } else if (!strcmp(a, "--truth-samples")) { /* the scene key's range */
+            const hfs_key_range *r = &hfs_scene_key_number(HFS_SK_TRUTH_SAMPLES, 0)->range;
+            if (parse_number(a, v, r->lo, r->hi, &x))
                 return -1;
             o->truth_samples = (int)x;
         } else if (!strcmp(a, "--kiosk-ms")) {

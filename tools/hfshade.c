@@ -17,6 +17,7 @@
 #include "scene_load.h"
 #include "median.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -53,12 +54,25 @@ static void usage(FILE *f)
             "scene keys (also accepted in SCENE.ini as KEY = VALUE): run 'hfshade keys'\n");
 }
 
+/* One line a key: its form, help, the range of a single number and the
+ * default, all from the table of scene keys. */
 static void print_keys(void)
 {
     int n;
     const hfs_scene_key_info *k = hfs_scene_keys(&n);
-    for (int i = 0; i < n; ++i)
-        printf("  --%-15s %-24s %s\n", k[i].key, k[i].arg, k[i].help);
+    for (int i = 0; i < n; ++i) {
+        char range[96] = "";
+        const hfs_key_number *num = &k[i].num[0];
+        if (k[i].n == 1 && !k[i].pow2 && num->range.lo != -DBL_MAX) {
+            range[0] = ' ';
+            hfs_key_range_text(&num->range, num->unit, range + 1, sizeof range - 1);
+            if (*hfs_key_unit_name(num->unit))
+                snprintf(range + strlen(range), sizeof range - strlen(range), " %s",
+                         hfs_key_unit_name(num->unit));
+        }
+        printf("  --%-15s %-24s %s%s%s%s\n", k[i].name, k[i].arg, k[i].help, range,
+               k[i].def ? "; default " : "", k[i].def ? k[i].def : "");
+    }
 }
 
 static double now_seconds(void)

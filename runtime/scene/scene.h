@@ -4,7 +4,8 @@
  *
  * One setter, hfs_scene_set(), applies "key = value" for both sources, so the
  * scene file and the flags accept exactly the same keys with the same syntax
- * and ranges (the key is the flag without its leading "--").  Flags are
+ * and ranges (the key is the flag without its leading "--").  The keys, their
+ * ranges and defaults are the table of runtime/scene_keys.h.  Flags are
  * applied after the file and override it; a repeatable key (key, local) given
  * on the command line replaces the file's list instead of appending to it.
  *
@@ -24,6 +25,7 @@
 #define HFS_SCENE_H
 
 #include "hfshade.h"
+#include "scene_keys.h"
 
 #define HFS_PATH_MAX 4096
 
@@ -80,7 +82,7 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
 /* Reads a scene file (INI).  Errors name the file and line. */
 int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err);
 
-/* True if key (without "--") is a scene key; *takes_value set accordingly. */
+/* True if key (without "--") is a scene key. */
 int hfs_scene_is_key(const char *key);
 
 /* Checks cross-key consistency (height given, env-sh xor env-map, raw size
@@ -94,12 +96,9 @@ void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS
                         hfs_lighting *l);
 void hfs_scene_quality(const hfs_scene *s, hfs_quality *q);
 
-/* Prints nothing; returns the static table of keys for help texts. */
-typedef struct hfs_scene_key_info {
-    const char *key;
-    const char *arg;
-    const char *help;
-} hfs_scene_key_info;
+/* The table of scene keys (scene_keys.h: name, value form, units, ranges,
+ * default, help), for help texts; prints nothing. */
+typedef hfs_scene_key hfs_scene_key_info;
 const hfs_scene_key_info *hfs_scene_keys(int *count);
 
 #endif /* HFS_SCENE_H */

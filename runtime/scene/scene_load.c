@@ -7,9 +7,15 @@
  */
 #include "scene_load.h"
 
+#include <stdatomic.h>
 #include <string.h>
 
 #include "sh.h"
+
+/* Serials of loaded heights (hfs_renderer_set_field_serial): unique in the
+ * process, so that heights loaded where freed ones lay never pass for them.
+ * A counter only: nothing else is shared between loads. */
+static atomic_ulong last_serial;
 
 void hfs_scene_inputs_free(hfs_scene_inputs *in)
 {
@@ -26,7 +32,10 @@ int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error
     hfs_scene_lighting(s, in->has_env_map ? (const double(*)[HFS_SH_COEFFS])in->env_map_sh : NULL,
                        &l);
     hfs_scene_quality(s, &q);
-    const int rc = hfs_validate_inputs(&in->field, &l, &q, err);
+    /* The field does not change here: hfs_scene_inputs_load checked it. */
+    int rc = hfs_validate_lighting(&l, err);
+    if (!rc)
+        rc = hfs_validate_quality(&q, err);
     if (rc)
         return rc;
     in->lighting = l;
@@ -64,8 +73,9 @@ int hfs_scene_inputs_load(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *e
         memcpy(in->env_map_sh, sh, sizeof in->env_map_sh);
         in->has_env_map = 1;
     }
-    if ((rc = hfs_scene_inputs_relight(s, in, err)))
+    if ((rc = hfs_validate_field(&in->field, err)) || (rc = hfs_scene_inputs_relight(s, in, err)))
         goto fail;
+    in->serial = (uint64_t)atomic_fetch_add(&last_serial, 1) + 1;
     return HFS_OK;
 fail:
     hfs_scene_inputs_free(in);

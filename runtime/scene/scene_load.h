@@ -35,18 +35,23 @@ typedef struct hfs_scene_inputs {
     double env_map_sh[3][HFS_SH_COEFFS];
     hfs_lighting lighting;       /* from the scene (degrees -> radians)      */
     hfs_quality quality;         /* preset + quality keys of the scene       */
+    uint64_t serial;             /* names the heights, for
+                                    hfs_renderer_set_field_serial: not 0,
+                                    never two loads the same in a process    */
 } hfs_scene_inputs;
 
 /* Validates the scene (hfs_scene_validate), loads its height field and
- * environment map, and fills lighting and quality (validated with
- * hfs_validate_inputs).  On failure *in is freed and zeroed. */
+ * environment map, and fills lighting and quality: every input validated
+ * (hfs_validate_field, then as hfs_scene_inputs_relight), the heights once
+ * here.  On failure *in is freed and zeroed. */
 int hfs_scene_inputs_load(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *err);
 
 /* Recomputes lighting and quality from s, which must describe the same
  * height field and environment as the scene in was loaded from (only
- * lights, env-rotate, albedo, preset and quality keys may differ).  Reads no
- * file.  On failure (a value the renderer refuses) in->lighting and
- * in->quality are unchanged. */
+ * lights, env-rotate, albedo, preset and quality keys may differ), and
+ * validates them (hfs_validate_lighting, hfs_validate_quality: no pass over
+ * the heights, which do not change here).  Reads no file.  On failure (a
+ * value the renderer refuses) in->lighting and in->quality are unchanged. */
 int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *err);
 
 /* Frees the heights and zeroes *in.  NULL-safe. */
