@@ -13,7 +13,7 @@
 
 /* The largest picture side a display accepts: the GL texture size every
  * ES 3.0 device must support, and far beyond any screen. */
-#define MAX_SIDE 2048
+#define MAX_SIDE HFS_DISPLAY_MAX_SIDE
 
 static const struct hfs_display_backend *const backends[] = {
     &hfs_display_backend_kms,

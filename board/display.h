@@ -36,6 +36,10 @@
 
 #include "hfshade.h"
 
+/* The largest picture side any display accepts (hfs_display_present); the
+ * kiosk shrinks a larger field's picture to fit (frame_image.h). */
+#define HFS_DISPLAY_MAX_SIDE 2048
+
 #ifdef __cplusplus
 extern "C" {
 #endif

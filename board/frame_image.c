@@ -40,3 +40,26 @@ int hfs_frame_to_rgba8(const hfs_image *img, const hfs_png_opts *opts, uint8_t *
     }
     return HFS_OK;
 }
+
+int hfs_shrink_factor(int w, int h, int max_side)
+{
+    const int side = w > h ? w : h;
+    return side <= max_side ? 1 : (side + max_side - 1) / max_side;
+}
+
+void hfs_image_shrink(const hfs_image *img, int f, hfs_image *out)
+{
+    const int w = img->width, h = img->height;
+    for (int y = 0; y < out->height; ++y)
+        for (int x = 0; x < out->width; ++x) {
+            double sum[3] = {0.0, 0.0, 0.0};
+            int n = 0;
+            for (int j = y * f; j < h && j < (y + 1) * f; ++j)
+                for (int i = x * f; i < w && i < (x + 1) * f; ++i, ++n)
+                    for (int c = 0; c < 3; ++c)
+                        sum[c] += img->rgb[((size_t)j * w + (size_t)i) * 3 + (size_t)c];
+            for (int c = 0; c < 3; ++c)
+                out->rgb[((size_t)y * out->width + (size_t)x) * 3 + (size_t)c] =
+                    (float)(sum[c] / n);
+        }
+}

@@ -31,6 +31,16 @@ extern "C" {
 int hfs_frame_to_rgba8(const hfs_image *img, const hfs_png_opts *opts, uint8_t *rgba,
                        hfs_error *err);
 
+/* The box-filter shrink of img by an integer factor f >= 1, in linear
+ * radiance (before the sRGB encoding, so a shrunk picture is the average
+ * light, not the average of encoded values): out is ceil(w / f) x
+ * ceil(h / f), each texel the mean of its f x f block (fewer at the right
+ * and bottom edges).  out must be allocated at that size. */
+void hfs_image_shrink(const hfs_image *img, int f, hfs_image *out);
+
+/* The smallest factor that brings w x h within max_side per side. */
+int hfs_shrink_factor(int w, int h, int max_side);
+
 #ifdef __cplusplus
 }
 #endif

@@ -95,6 +95,9 @@ typedef struct kiosk_frame {
     hfs_backend backend;           /* what the renderer was made with, to    */
     char context[64];              /* know when a reload needs a new one     */
     hfs_image img;                 /* linear RGB, reused                     */
+    hfs_image small;               /* img shrunk to the display's largest
+                                      side (shrink > 1), reused              */
+    int shrink;                    /* picture = img / shrink per side        */
     uint8_t *rgba;                 /* sRGB picture, reused                   */
     double exposure;
     int presented;                 /* frames presented so far                */

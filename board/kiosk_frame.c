@@ -86,21 +86,33 @@ void kiosk_frame_free(kiosk_frame *f)
 {
     hfs_renderer_destroy(f->renderer);
     hfs_image_free(&f->img);
+    hfs_image_free(&f->small);
     free(f->rgba);
     f->renderer = NULL;
     f->rgba = NULL;
 }
 
+/* The render (w x h) and the picture: a field larger than any display's
+ * side is shown shrunk by an integer factor, averaged in linear light (a
+ * 4096^2 DEM is shown at 2048^2 instead of failing its first frame). */
 static int ensure_buffers(kiosk_frame *f, int w, int h, hfs_error *err)
 {
     if (f->img.rgb && f->img.width == w && f->img.height == h)
         return HFS_OK;
     hfs_image_free(&f->img);
+    hfs_image_free(&f->small);
     free(f->rgba);
-    f->rgba = malloc((size_t)w * (size_t)h * 4);
+    f->shrink = hfs_shrink_factor(w, h, HFS_DISPLAY_MAX_SIDE);
+    const int pw = (w + f->shrink - 1) / f->shrink, ph = (h + f->shrink - 1) / f->shrink;
+    f->rgba = malloc((size_t)pw * (size_t)ph * 4);
     if (!f->rgba)
         return hfs_fail(err, HFS_E_NOMEM, "frame %dx%d: out of memory", w, h);
-    return hfs_image_alloc(&f->img, w, h, err);
+    int rc = hfs_image_alloc(&f->img, w, h, err);
+    if (!rc && f->shrink > 1)
+        rc = hfs_image_alloc(&f->small, pw, ph, err);
+    if (rc)
+        hfs_image_free(&f->img); /* allocated again next time */
+    return rc;
 }
 
 /* "12.3 ms  3/11 passes  kiosk": the render's wall time and what the
@@ -113,7 +125,8 @@ static void draw_overlay(kiosk_frame *f, const char *preset)
     char text[96];
     snprintf(text, sizeof text, "%.1f ms %d/%d passes %s", f->render_ms, f->passes_ran,
              f->passes_total, preset && preset[0] ? preset : "kiosk");
-    const int w = f->img.width, h = f->img.height;
+    const hfs_image *pic = f->shrink > 1 ? &f->small : &f->img;
+    const int w = pic->width, h = pic->height;
     const int scale = w >= 480 ? 2 : 1;
     hfs_overlay_text(f->rgba, w, h, 2, 2, scale, text, fg, bg);
 }
@@ -144,11 +157,16 @@ int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, int overlay,
         f->passes_ran = f->passes_total = f->deferred = 0;
     }
     hfs_png_opts po = {.exposure = f->exposure};
-    if ((rc = hfs_frame_to_rgba8(&f->img, &po, f->rgba, err)))
+    const hfs_image *pic = &f->img;
+    if (f->shrink > 1) {
+        hfs_image_shrink(&f->img, f->shrink, &f->small);
+        pic = &f->small;
+    }
+    if ((rc = hfs_frame_to_rgba8(pic, &po, f->rgba, err)))
         return rc;
     if (overlay)
         draw_overlay(f, preset);
-    if ((rc = hfs_display_present(d, f->rgba, f->img.width, f->img.height, err)))
+    if ((rc = hfs_display_present(d, f->rgba, pic->width, pic->height, err)))
         return rc;
     f->present_ns = hfs_input_now_ns();
     f->presented++;

@@ -13,6 +13,9 @@
 #                          priorities, SIGTERM exit 0 ("gl")
 #   test_kiosk_idle        3 s without events: no frame, < 5% of a core ("gl")
 #   test_kiosk_example     board/kiosk.ini driving data/demo.ini ("gl")
+#   test_kiosk_large       a 2100x40 field (wider than any display) shown
+#                          shrunk to 1050x20, equal to the library's render
+#                          shrunk in linear light (CPU backend, "io")
 # GL tests exit 77 without a GLES context.  Sanitizer builds run the GL ones
 # with tests/lsan.supp (Mesa/LLVM leaks only), as tests/gl.cmake does; the
 # kiosk they start inherits LSAN_OPTIONS.
@@ -40,6 +43,9 @@ if(TARGET hfshade-kiosk)
   set_tests_properties(test_kiosk_replay_es30 PROPERTIES
                        ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
   list(APPEND hfs_kiosk_gl_tests test_kiosk_replay_es30)
+  add_test(NAME test_kiosk_large
+           COMMAND test_kiosk large $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen>)
+  set_tests_properties(test_kiosk_large PROPERTIES LABELS io TIMEOUT 300)
   add_test(NAME test_kiosk_example
            COMMAND test_kiosk example $<TARGET_FILE:hfshade-kiosk>
                    ${PROJECT_SOURCE_DIR}/data/demo.ini ${PROJECT_SOURCE_DIR}/board/kiosk.ini

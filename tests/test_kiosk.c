@@ -30,7 +30,9 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "frame_image.h"
 #include "kiosk_harness.h"
+#include "scene_load.h"
 
 /* The scene of the tests: 48x48 cones under a dim uniform sky and a key
  * light at phi 30, elevation 20 (degrees). */
@@ -322,6 +324,64 @@ static void example(const char *kiosk, const char *scene, const char *cfg, const
     }
 }
 
+/* A field larger than any display's side (2100 x 40 > HFS_DISPLAY_MAX_SIDE)
+ * is shown shrunk by an integer factor (2: 1050 x 20), averaged in linear
+ * light, instead of failing its first frame; the picture equals the
+ * library's render shrunk the same way (CPU backend: no GL needed). */
+static void large(const char *kiosk, const char *hfgen)
+{
+    char *const gen[] = {(char *)hfgen, "cones", "--size", "2100x40", "-o",
+                         (char *)kh_path("wide.pfm"), NULL};
+    pid_t pid = kh_spawn(gen, kh_path("hfgen.log"));
+    int st = pid > 0 ? kh_wait(pid, 60) : -1;
+    CHECK(st != -1 && WIFEXITED(st) && WEXITSTATUS(st) == 0, "hfgen failed");
+    kh_write(kh_path("wide.ini"), "height = wide.pfm\nbackend = cpu\n"
+                                  "env-sh = 1.0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0\n"
+                                  "key = 30,20,2,5\n");
+    kh_write(kh_path("empty.txt"), "");
+    char *const argv[] = {(char *)kiosk, (char *)kh_path("wide.ini"), "--display", "headless",
+                          "--replay", (char *)kh_path("empty.txt"), "--exit-after-replay",
+                          "--out", (char *)kh_path("w-%02d.png"), NULL};
+    pid = kh_spawn(argv, kh_path("err.txt"));
+    st = pid > 0 ? kh_wait(pid, 120) : -1;
+    CHECK(exited_ok(st), "2100x40 field: status %d", st);
+    int w = 0, h = 0;
+    uint8_t *shown = kh_png_rgba(kh_path("w-00.png"), &w, &h);
+    CHECK(shown && w == 1050 && h == 20, "picture %dx%d, want 1050x20", w, h);
+
+    hfs_error err = {{0}};
+    hfs_scene sc;
+    hfs_scene_inputs in;
+    memset(&in, 0, sizeof in);
+    hfs_renderer *r = NULL;
+    hfs_image img = {0}, small = {0};
+    uint8_t *want = malloc((size_t)1050 * 20 * 4);
+    hfs_scene_init(&sc);
+    const int ok = want && !hfs_scene_load_file(&sc, kh_path("wide.ini"), &err) &&
+                   !hfs_scene_inputs_load(&sc, &in, &err) &&
+                   !hfs_renderer_create(&(hfs_renderer_desc){.backend = HFS_BACKEND_CPU}, &r,
+                                        &err) &&
+                   !hfs_image_alloc(&img, 2100, 40, &err) &&
+                   !hfs_image_alloc(&small, 1050, 20, &err) &&
+                   !hfs_renderer_render(r, &in.field, &in.lighting, &in.quality, &img, NULL,
+                                        NULL, &err);
+    CHECK(ok, "direct render: %s", err.msg);
+    if (ok && shown && w == 1050 && h == 20) {
+        hfs_image_shrink(&img, 2, &small);
+        CHECK(!hfs_frame_to_rgba8(&small, &(hfs_png_opts){.exposure = 1.0}, want, &err) &&
+                  !memcmp(want, shown, (size_t)1050 * 20 * 4),
+              "the kiosk's shrunk picture differs from the library's render shrunk");
+    }
+    free(want);
+    free(shown);
+    hfs_image_free(&img);
+    hfs_image_free(&small);
+    hfs_renderer_destroy(r);
+    hfs_scene_inputs_free(&in);
+    if (failures)
+        dump(kh_path("err.txt"));
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 4) {
@@ -329,7 +389,8 @@ int main(int argc, char **argv)
                         "       test_kiosk example KIOSK SCENE CONFIG REPLAY\n");
         return 2;
     }
-    kh_require_gl();
+    if (strcmp(argv[1], "large")) /* the CPU backend's test needs no GL */
+        kh_require_gl();
     if (!kh_tmpdir("hfs_kiosk")) {
         perror("mkdtemp");
         return 1;
@@ -343,6 +404,8 @@ int main(int argc, char **argv)
         signals(argv[2], argv[3]);
     else if (!strcmp(mode, "idle"))
         idle(argv[2], argv[3]);
+    else if (!strcmp(mode, "large"))
+        large(argv[2], argv[3]);
     else if (!strcmp(mode, "example") && argc == 6)
         example(argv[2], argv[3], argv[4], argv[5]);
     else {
