@@ -66,6 +66,29 @@ for f in "$BROKEN"/env/*; do
     expect_fail "env:$(basename "$f")" "$(basename "$f")" $R --height "$tmp/flat.pfm" --env-map "$f"
 done
 
+# --check: everything a render does (inputs, outputs planned against them,
+# one frame) but writing.  A bad scene or output fails as the render would;
+# a good one prints one "ok" line on stdout and leaves nothing behind.
+C="render --check --backend cpu --nphi-env 4"
+expect_fail check-range "--k" $C --height "$tmp/flat.pfm" --env-sh $sky --k 0
+expect_fail check-missing "nope.pfm" $C --height "$tmp/nope.pfm" --env-sh $sky
+expect_fail check-clash "flat.pfm" $C --height "$tmp/flat.pfm" --env-sh $sky --pfm "$tmp/flat.pfm"
+expect_fail check-twice "--check" $C --check --height "$tmp/flat.pfm" --env-sh $sky
+"$HFGEN" cones --size 2100x3 -o "$tmp/wide.pfm" >/dev/null || { echo "FAIL: hfgen"; exit 1; }
+if "$HFSHADE" info >/dev/null 2>&1; then # a GLES refusal needs a context to refuse
+    HFS_GL_STRICT_LIMITS=1 expect_fail check-refused "GL_MAX_TEXTURE_SIZE" render --check \
+        --backend gles --height "$tmp/wide.pfm" --env-sh $sky
+fi
+cases=$((cases + 1))
+before=$(ls "$tmp" | sort)
+out=$("$HFSHADE" $C --height "$tmp/flat.pfm" --env-sh $sky -o "$tmp/out.png" 2>"$tmp/stderr")
+if [ $? -eq 0 ] && [ "$(printf '%s\n' "$out" | wc -l)" -eq 1 ] && [[ $out == *": ok ("* ]] &&
+   [ ! -s "$tmp/stderr" ] && [ "$(ls "$tmp" | sort)" = "$before" ]; then
+    echo "ok   [check-good] $out"
+else
+    echo "FAIL [check-good]: '$out' $(cat "$tmp/stderr")"; fails=$((fails + 1))
+fi
+
 # The good case: both outputs written, nothing else.
 cases=$((cases + 1))
 if "$HFSHADE" $R --height "$tmp/flat.pfm" --env-sh $sky --colormap terrain --quiet && [ -s "$tmp/out.png" ] && [ -s "$tmp/out.pfm" ]; then

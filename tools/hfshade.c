@@ -38,6 +38,7 @@ typedef struct cli {
     int time_frames; /* --time N: timed frames after one warm-up, 0 = off */
     int colormap; /* 0 none, 1 terrain */
     int quiet;
+    int check;    /* --check: everything a render does but write the outputs */
     hfs_scene scene;
 } cli;
 
@@ -50,6 +51,7 @@ static void usage(FILE *f)
             "       hfshade info [--context surfaceless|osmesa|auto]\n"
             "options: --exposure F (PNG only, default 1), --colormap none|terrain (PNG only),\n"
             "         --time N (render N full frames after a warm-up; print per-pass medians),\n"
+            "         --check (load, validate and render one frame off screen; write nothing),\n"
             "         --quiet, --help\n"
             "scene keys (also accepted in SCENE.ini as KEY = VALUE): run 'hfshade keys'\n");
 }
@@ -104,6 +106,13 @@ static const char *flag_name(const char *a)
     return a[1] == '-' ? a + 2 : a + 1;
 }
 
+/* Flags that take no value. */
+static int is_switch(const char *name)
+{
+    return !strcmp(name, "quiet") || !strcmp(name, "help") || !strcmp(name, "h") ||
+           !strcmp(name, "check");
+}
+
 /* A tool option (-o, --pfm, --exposure, --time, --colormap) given twice is
  * an error, like a repeated scene key: the last one silently winning hides a
  * typo in a long command line.  Scene keys are the scene layer's to judge
@@ -114,7 +123,7 @@ static int check_repeats(int argc, char **argv, hfs_error *err)
         const char *name = flag_name(argv[i]);
         if (!name)
             continue;
-        const int takes_value = strcmp(name, "quiet") && strcmp(name, "help") && strcmp(name, "h");
+        const int takes_value = !is_switch(name);
         if (hfs_scene_is_key(name)) {
             i += takes_value;
             continue;
@@ -123,7 +132,7 @@ static int check_repeats(int argc, char **argv, hfs_error *err)
             const char *prev = flag_name(argv[j]);
             if (prev && !strcmp(prev, name))
                 return hfs_fail(err, HFS_E_INVALID, "%s: given twice (once is allowed)", argv[i]);
-            if (prev && strcmp(prev, "quiet") && strcmp(prev, "help") && strcmp(prev, "h"))
+            if (prev && !is_switch(prev))
                 ++j; /* skip its value */
         }
         i += takes_value;
@@ -142,7 +151,7 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
         const char *a = argv[i];
         if (a[0] == '-' && a[1] != '\0') {
             const char *name = a[1] == '-' ? a + 2 : a + 1;
-            if (!strcmp(name, "quiet") || !strcmp(name, "help") || !strcmp(name, "h"))
+            if (is_switch(name))
                 continue;
             ++i; /* every other flag takes a value */
             continue;
@@ -165,6 +174,10 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
         const char *name = a[1] == '-' ? a + 2 : a + 1;
         if (!strcmp(name, "quiet")) {
             c->quiet = 1;
+            continue;
+        }
+        if (!strcmp(name, "check")) {
+            c->check = 1;
             continue;
         }
         if (!strcmp(name, "help") || !strcmp(name, "h")) {
@@ -313,7 +326,7 @@ static int plan_outputs(const cli *c, hfs_outputs **o, hfs_error *err)
 
 static int cmd_render(const cli *c, hfs_error *err)
 {
-    if (!c->out_png && !c->out_pfm)
+    if (!c->out_png && !c->out_pfm && !c->check)
         return hfs_fail(err, HFS_E_INVALID, "render: no output (give -o OUT.png and/or --pfm OUT.pfm)");
     if (c->n_positional)
         return hfs_fail(err, HFS_E_INVALID, "%s: unexpected argument", c->positional[0]);
@@ -342,6 +355,13 @@ static int cmd_render(const cli *c, hfs_error *err)
     const double t1 = now_seconds();
     if (rc)
         goto out;
+    if (c->check) { /* the outputs were checked against the inputs; none is written */
+        if (!c->quiet)
+            printf("%s: ok (%dx%d, backend %s, one frame in %.3f s; nothing written)\n",
+                   c->scene_file ? c->scene_file : "scene", in.field.width, in.field.height,
+                   hfs_renderer_backend_name(r), t1 - t0);
+        goto out;
+    }
     /* Both files are written to temporaries first and renamed together:
      * a failure leaves neither, and removes nothing that was there. */
     if (c->out_pfm && (rc = hfs_pfm_write_to(outs, c->out_pfm, &img, 0, err)))
