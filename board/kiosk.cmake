@@ -8,6 +8,7 @@ add_executable(hfshade-kiosk
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_world.c
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_frame.c
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_loop.c
+  ${CMAKE_CURRENT_LIST_DIR}/kiosk_check.c
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_stats.c
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_log.c)
 target_link_libraries(hfshade-kiosk PRIVATE hfs_display hfs_input_dev hfshade_scene_load

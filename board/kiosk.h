@@ -18,6 +18,7 @@
 
 #include <stdint.h>
 #include <stdio.h>
+#include <sys/types.h>
 
 #include "display.h"
 #include "input_map.h"
@@ -154,8 +155,37 @@ int64_t kiosk_cpu_us(void);
 
 /* ---- the loop (kiosk_loop.c) ------------------------------------------------ */
 
+/* ---- a reload's admission, checked in a child process (kiosk_check.c) ----- */
+
+/* SIGHUP starts `hfshade-kiosk SCENE [--input CONFIG] --check` (this very
+ * program, /proc/self/exe): it loads both files and renders the new scene's
+ * first frame off screen with a renderer of its own, exactly the admission
+ * a reload needs, while this process keeps running the old scene, reading
+ * its knobs and answering SIGTERM at once (a 4096^2 field's admission frame
+ * takes a minute on llvmpipe; a signal waited for all of it).  Its stderr
+ * comes back through a pipe: the failure's one line. */
+typedef struct kiosk_check {
+    pid_t pid;                     /* 0: none running                        */
+    int fd;                        /* read end of its stderr; -1             */
+    char out[1024];                /* what it wrote (the tail)               */
+    size_t len;
+    int again;                     /* SIGHUP while it ran: check once more   */
+} kiosk_check;
+
+void kiosk_check_init(kiosk_check *c);
+/* Starts the check of o's scene and configuration.  Fails (nothing
+ * started) when the program cannot be spawned. */
+int kiosk_check_start(kiosk_check *c, const kiosk_opts *o, hfs_error *err);
+/* After POLLIN (or POLLHUP) on c->fd: reads what is there.  Returns 1 when
+ * the check has ended (c is idle again): *ok = it admitted the scene, msg =
+ * its last line otherwise; 0 while it runs. */
+int kiosk_check_poll(kiosk_check *c, int *ok, char *msg, size_t size);
+/* Ends a running check (SIGKILL) and reaps it. */
+void kiosk_check_stop(kiosk_check *c);
+
 typedef struct kiosk {
     kiosk_opts opt;
+    kiosk_check check;             /* the running reload check, if any       */
     kiosk_world *world;
     kiosk_frame frame;
     hfs_display *display;

@@ -208,10 +208,12 @@ static void reload_failed(kiosk *k, const hfs_error *err)
     kiosk_stats_reload(k->stats, 0);
 }
 
-/* SIGHUP: a whole new world or none.  Returns -1 only when the frame of
- * the new scene cannot be presented (fatal, as any present failure) or the
+/* SIGHUP: a whole new world or none.  admitted: the check process
+ * (kiosk_check.c) rendered the new scene's first frame already; else that
+ * admission frame is rendered here.  Returns -1 only when the frame of the
+ * new scene cannot be presented (fatal, as any present failure) or the
  * input set cannot even be rebuilt empty (out of memory). */
-static int reload(kiosk *k)
+static int reload(kiosk *k, int admitted)
 {
     hfs_error err = {{0}};
     kiosk_world *nw = kiosk_world_load(k->opt.scene_path, k->opt.input_path, &err);
@@ -229,8 +231,8 @@ static int reload(kiosk *k)
      * device, a swath the GLES path cannot hold) must not be swapped in:
      * its first frame is rendered here, off screen, before anything
      * changes. */
-    if (kiosk_frame_admit(r ? r : k->frame.renderer, k->frame.amortize,
-                          &nw->scene, &nw->in, &err)) {
+    if (!admitted && kiosk_frame_admit(r ? r : k->frame.renderer, k->frame.amortize,
+                                       &nw->scene, &nw->in, &err)) {
         hfs_renderer_destroy(r);
         kiosk_world_free(nw);
         reload_failed(k, &err);
@@ -264,6 +266,44 @@ static int reload(kiosk *k)
     kiosk_stats_reload(k->stats, 1);
     const int rc = show(k, 0);
     kiosk_stats_flush(k->stats);
+    return rc;
+}
+
+/* SIGHUP: the check process starts (or, when one runs, will start again
+ * when it ends: the files may have changed meanwhile).  Where no process
+ * can be started, the reload is checked here, in the loop. */
+static int request_reload(kiosk *k)
+{
+    if (k->check.pid > 0) {
+        k->check.again = 1;
+        return 0;
+    }
+    hfs_error err = {{0}};
+    if (kiosk_check_start(&k->check, &k->opt, &err) == HFS_OK)
+        return 0;
+    kiosk_log(KIOSK_WARNING, "%s; checking the reload in this process", err.msg);
+    return reload(k, 0);
+}
+
+/* The check process wrote or ended: on its verdict, the reload. */
+static int check_progress(kiosk *k)
+{
+    int ok = 0;
+    char msg[512];
+    if (!kiosk_check_poll(&k->check, &ok, msg, sizeof msg))
+        return 0;
+    int rc = 0;
+    if (ok) {
+        rc = reload(k, 1);
+    } else {
+        hfs_error err;
+        snprintf(err.msg, sizeof err.msg, "%s", msg);
+        reload_failed(k, &err);
+    }
+    if (!rc && k->check.again) {
+        k->check.again = 0;
+        rc = request_reload(k);
+    }
     return rc;
 }
 
@@ -311,12 +351,15 @@ int kiosk_run(kiosk *k)
             kiosk_log(KIOSK_INFO, "replay finished, exiting");
             break;
         }
-        struct pollfd fds[2 + HFS_INPUT_SET_MAX];
+        struct pollfd fds[3 + HFS_INPUT_SET_MAX];
         int n = 0;
         fds[n++] = (struct pollfd){.fd = k->sigfd, .events = POLLIN};
         const int dfd = hfs_display_fd(k->display);
         if (dfd >= 0)
             fds[n++] = (struct pollfd){.fd = dfd, .events = POLLIN};
+        const int check_at = k->check.fd >= 0 ? n : -1;
+        if (check_at >= 0)
+            fds[n++] = (struct pollfd){.fd = k->check.fd, .events = POLLIN};
         int64_t deadline = INT64_MAX;
         n += hfs_input_set_pollfds(k->inputs, fds + n, HFS_INPUT_SET_MAX, &deadline);
         if (k->replay) {
@@ -342,7 +385,12 @@ int kiosk_run(kiosk *k)
                       hfs_display_name(k->display));
             break;
         }
-        if (reload_req && reload(k)) {
+        if (reload_req && request_reload(k)) {
+            rc = 1;
+            break;
+        }
+        if (check_at >= 0 && (fds[check_at].revents & (POLLIN | POLLHUP | POLLERR)) &&
+            check_progress(k)) {
             rc = 1;
             break;
         }
@@ -354,6 +402,7 @@ int kiosk_run(kiosk *k)
             break;
         }
     }
+    kiosk_check_stop(&k->check); /* a reload still being checked is dropped */
     free(l->b.ev);
     free(l->b.changed);
     free(l);

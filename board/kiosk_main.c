@@ -278,6 +278,7 @@ int main(int argc, char **argv)
     kiosk_log_init();
     kiosk k;
     memset(&k, 0, sizeof k);
+    kiosk_check_init(&k.check);
     k.sigfd = -1;
     int rc = parse_args(&k.opt, argc, argv);
     if (rc)

@@ -445,6 +445,41 @@ kiosk_session reload_missing missing good
 kiosk_session reload_alternating refused good refused good bad good fifo good
 kiosk_session term_only
 
+# SIGTERM while a reload is being checked (issue 13): the check runs in a
+# child process (board/kiosk_check.c), so the kiosk ends within a second even
+# when the new scene's admission frame takes many (a 1536^2 field), exit 0,
+# and the child does not outlive it.
+if [ -z "$ONLY" ] || [ "$ONLY" = kiosk ]; then
+    cases=$((cases + 1)); n_class[kiosk]=$(( ${n_class[kiosk]:-0} + 1 ))
+    "$HFGEN" fractal --size 1536x1536 -o "$in/big.pfm" >/dev/null
+    printf 'height = %s/big.pfm\nenv-sh = %s\nbackend = gles\nkey = 30,20,2,10\n' "$in" "$sky" >"$in/big.ini"
+    cp "$in/good.ini" "$in/live.ini"
+    HFS_GL_STRICT_LIMITS=1 "$KIOSK" "$in/live.ini" --display headless 2>"$w.klog" &
+    pid=$! why=""
+    for _ in $(seq 50); do grep -q started "$w.klog" && break; sleep 0.1; done
+    grep -q started "$w.klog" || why="did not start"
+    cp "$in/big.ini" "$in/live.ini"
+    kill -HUP $pid 2>/dev/null
+    sleep 0.5
+    t0=$(date +%s%N)
+    kill -TERM $pid 2>/dev/null
+    for _ in $(seq 20); do kill -0 $pid 2>/dev/null || break; sleep 0.05; done
+    if kill -0 $pid 2>/dev/null; then why="$why still running 1 s after SIGTERM"; kill -KILL $pid; fi
+    wait $pid; rc=$?
+    [ -n "$why" ] || [ $rc -eq 0 ] || why="exit status $rc"
+    sleep 0.2
+    if pgrep -f -- "$in/live.ini --check" >/dev/null; then
+        why="$why; the reload check outlived the kiosk"; pkill -KILL -f -- "$in/live.ini --check"
+    fi
+    if [ -n "$why" ]; then
+        fails=$((fails + 1)); fail_class[kiosk]=$(( ${fail_class[kiosk]:-0} + 1 ))
+        echo "FAIL [kiosk/term_during_reload_check]: $why"; tail -3 "$w.klog" | sed 's/^/     log: /'
+    else
+        echo "ok   [kiosk/term_during_reload_check] $(( ($(date +%s%N) - t0) / 1000000 )) ms to exit"
+    fi
+    rm -f "$in/big.pfm" "$in/big.ini"
+fi
+
 echo
 for c in heights envmaps keys flags outputs fifos kiosk; do
     [ -n "${n_class[$c]:-}" ] && printf '%-8s %4d cases, %d failed\n' "$c" "${n_class[$c]}" "${fail_class[$c]:-0}"
