@@ -53,6 +53,7 @@
 #include "cpu_local.h"
 #include "cpu_pyramid.h"
 #include "key_setup.h"
+#include "slice_light.h"
 #include "visibility.h"
 #include "field_geom.h"
 #include "lights.h"
@@ -108,6 +109,7 @@ typedef struct render_ctx {
     size_t *omega_at;          /* offset of job j in worker omega/floors */
     worker_scratch *scratch;
     const hfs_cpu_local *local; /* local lights (issue 4), NULL if none */
+    hfs_slice_table slices;    /* HFS_VIS_SLICE: the environment's slices (p NULL otherwise) */
 } render_ctx;
 
 
@@ -208,11 +210,16 @@ static void render_row(void *ctx, int j, int worker)
             const int nd = job->swath.n;
             const double *omega = s->omega + c->omega_at[q];
             if (job->is_env) {
-                double v[HFS_SH_N], t[HFS_SH_N];
-                for (int d = 0; d < nd; ++d)
-                    s->om[d] = omega[(size_t)d * w + i];
-                hfs_visibility_eval(job->vis, s->om, v);
-                hfs_sh_product(hn, v, t);
+                double v[HFS_SH_N], t[HFS_SH_N] = {0};
+                if (c->slices.p) { /* exact slice lighting (slice_light.h) */
+                    for (int d = 0; d < nd; ++d)
+                        hfs_slice_add(&c->slices, d, n, omega[(size_t)d * w + i], t);
+                } else {
+                    for (int d = 0; d < nd; ++d)
+                        s->om[d] = omega[(size_t)d * w + i];
+                    hfs_visibility_eval(job->vis, s->om, v);
+                    hfs_sh_product(hn, v, t);
+                }
                 for (int ch = 0; ch < 3; ++ch)
                     lo[ch] += env_clamp(c->rho_pi * hfs_sh_dot(t, c->l_env[ch]),
                                         c->rho_pi * hfs_sh_dot(hn, c->l_env[ch]), c->env_neg[ch]);
@@ -489,7 +496,11 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     int max_n = 1;
     if ((rc = make_plans(&c, pyr, q, &max_n, err)))
         goto done;
-    if ((rc = build_all_visibility(&c, q->visibility, threads, err)))
+    /* Slice lighting: the environment's slices; key lights keep Legendre. */
+    const int slice = q->visibility == HFS_VIS_SLICE;
+    if ((rc = build_all_visibility(&c, slice ? HFS_VIS_LEGENDRE : q->visibility, threads, err)))
+        goto done;
+    if (slice && c.has_env && (rc = hfs_slice_table_init(&c.slices, &c.jobs[0].swath, err)))
         goto done;
 
     /* Local lights (issue 4): NULL when none contributes. */
@@ -516,6 +527,7 @@ done:
         if (c.jobs[j].vis_of < 0)
             hfs_visibility_destroy(c.jobs[j].vis);
     }
+    hfs_slice_table_free(&c.slices);
     free(c.jobs);
     free(c.omega_at);
     hfs_cpu_pyramid_destroy(pyr);

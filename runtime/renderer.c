@@ -337,7 +337,8 @@ int hfs_validate_quality(const hfs_quality *q, hfs_error *err)
         return hfs_fail(err, HFS_E_INVALID, "precision: unknown value %d", (int)q->precision);
     if (q->local_full_swath != 0 && q->local_full_swath != 1)
         return hfs_fail(err, HFS_E_INVALID, "local-swath: unknown value %d", q->local_full_swath);
-    if (q->visibility != HFS_VIS_LEGENDRE && q->visibility != HFS_VIS_WEDGE_TABLE)
+    if (q->visibility != HFS_VIS_LEGENDRE && q->visibility != HFS_VIS_WEDGE_TABLE &&
+        q->visibility != HFS_VIS_SLICE)
         return hfs_fail(err, HFS_E_INVALID, "visibility: unknown value %d", (int)q->visibility);
     if (q->truth_elev_order < 1 || q->truth_elev_order > 64)
         return hfs_fail(err, HFS_E_INVALID, "quality: truth_elev_order %d is out of range [1, 64]",

@@ -93,8 +93,9 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                         "renderer: GLES, CPU reference, ground truth"},
     [HFS_SK_CONTEXT] = {"context", "surfaceless|osmesa|auto", HFS_FORM_WORD, 0, 0, 0, {{0}},
                         "surfaceless", "how the GLES context is made"},
-    [HFS_SK_VISIBILITY] = {"visibility", "legendre|wedge", HFS_FORM_WORD, 0, 0, 0, {{0}},
-                           "legendre", "visibility to SH: NS09 Legendre or SN08 wedge tables"},
+    [HFS_SK_VISIBILITY] = {"visibility", "legendre|wedge|slice", HFS_FORM_WORD, 0, 0, 0, {{0}},
+                           "legendre", "visibility to SH: NS09 Legendre, SN08 wedge tables, "
+                           "or exact slice lighting (CPU only so far)"},
     /* 0: as many as the machine has cores (at most 64, hfs_parallel). */
     [HFS_SK_THREADS] = {"threads", "N", HFS_FORM_INT, 1, 0, 0,
                         {{NULL, HFS_UNIT_COUNT, {0, 64, 0}, NULL}}, "0",

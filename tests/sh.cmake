@@ -17,3 +17,12 @@ if(HFS_GLSLANG_VALIDATOR)
            COMMAND ${HFS_GLSLANG_VALIDATOR} ${HFS_SH_GLSL_CHECK})
   set_tests_properties(test_sh_glsl_product PROPERTIES LABELS unit)
 endif()
+
+# Exact per-slice lighting (runtime/slice_light.c, issue 15): closed forms
+# against quadrature, the slice table against the SH basis, flat/shadowed/
+# tilted receivers against their closed forms.
+hfs_add_test(test_slice_light
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_slice_light.c
+  LIBS hfs_shared m
+  LABEL unit
+  TIMEOUT 60)

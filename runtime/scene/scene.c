@@ -178,7 +178,8 @@ static void store_word(hfs_scene *s, hfs_scene_key_id id, int w, const char *val
     case HFS_SK_BACKEND: s->backend = backends[w]; break;
     case HFS_SK_CONTEXT: snprintf(s->context, sizeof s->context, "%s", value); break;
     case HFS_SK_VISIBILITY:
-        s->quality.visibility = w == 0 ? HFS_VIS_LEGENDRE : HFS_VIS_WEDGE_TABLE;
+        s->quality.visibility = w == 0 ? HFS_VIS_LEGENDRE
+                                : w == 1 ? HFS_VIS_WEDGE_TABLE : HFS_VIS_SLICE;
         break;
     case HFS_SK_LOCAL_SWATH: s->quality.local_full_swath = w; break;
     case HFS_SK_PRESET: snprintf(s->preset, sizeof s->preset, "%s", value); break;

@@ -1,0 +1,60 @@
+/*
+ * slice_light.h — exact per-slice lighting (issue 15): the environment's
+ * transfer vector integrated exactly along each azimuth slice above its
+ * horizon, instead of projecting visibility to order 4 and multiplying by
+ * the clamped cosine in SH (the seeds' method, whose order-4 product holds
+ * the error at ~1% of the unshadowed maximum whatever the horizons).
+ *
+ * Along the slice of azimuth phi a direction is w(e) = cos e d + sin e z,
+ * d = (cos phi, sin phi, 0), and the receiver of normal N sees
+ *     S_k(phi) = Int_x^{pi/2} Y_k(w(e)) (a cos e + b sin e) cos e de,
+ *     a = N.d, b = N_z, x = the horizon's elevation (>= the tangent plane's,
+ *     where a cos e + b sin e = 0: cpu_horizon.h hfs_horizon_floor),
+ * and E = sum_k L_k T_k with T_k = dphi sum_j S_k(phi_j): the SPEC sphere
+ * integral of an order-4 environment, exact but for the azimuth sampling.
+ * T is linear in the lighting, so it is kept per texel like the seeds'
+ * H * V (a turned or re-tinted sky costs a dot product).  For L = 1,
+ * S = (a/2)(pi/2 - x - sin(2x)/2) + (b/4)(1 + cos 2x), and on an open flat
+ * plane (1/pi) sum_j S dphi = 1.
+ *
+ * How: restricted to a vertical great circle, Y_k is a trigonometric
+ * polynomial of degree <= 3 in e, Y_k(w(e)) = sum_m P_km(phi) f_m(e) with
+ * f = (1, cos e, sin e, cos 2e, sin 2e, cos 3e, sin 3e) (P by an exact
+ * 8-point DFT, per slice, once per swath).  Times cos^2 e or sin e cos e it
+ * has degree <= 5, integrated in closed form from x: only x, cos kx and
+ * sin kx (k <= 5) per slice and receiver.
+ *
+ * Shared by the CPU reference and (later) the GLES path: no state but the
+ * table, no I/O.
+ */
+#ifndef HFS_SLICE_LIGHT_H
+#define HFS_SLICE_LIGHT_H
+
+#include "sh.h"
+#include "visibility.h"
+
+#define HFS_SLICE_F 7 /* 1, cos e, sin e, cos 2e, sin 2e, cos 3e, sin 3e */
+
+/* P_km(phi_j) for the samples of a swath, and each slice's (cos, sin). */
+typedef struct hfs_slice_table {
+    int n;
+    double dphi;
+    double *p;    /* n x HFS_SH_N x HFS_SLICE_F */
+    double *dir;  /* n x 2: (cos phi_j, sin phi_j), snapped as the horizons' */
+} hfs_slice_table;
+
+/* For the samples of swath s (a full swath: the environment's).  Returns
+ * HFS_OK or HFS_E_NOMEM. */
+int hfs_slice_table_init(hfs_slice_table *t, const hfs_swath *s, hfs_error *err);
+void hfs_slice_table_free(hfs_slice_table *t);
+
+/* Adds slice j's exact transfer, dphi S_k(phi_j) for k < 16, to T: normal
+ * n (unit, n_z > 0), horizon elevation x in [-pi/2, pi/2] (clamped). */
+void hfs_slice_add(const hfs_slice_table *t, int j, const double n[3], double x,
+                   double T[HFS_SH_N]);
+
+/* The 7 slice integrals g_m = Int_x^{pi/2} f_m(e) (a cos e + b sin e) cos e
+ * de (exposed for the tests). */
+void hfs_slice_integrals(double a, double b, double x, double g[HFS_SLICE_F]);
+
+#endif /* HFS_SLICE_LIGHT_H */

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Exact slice lighting against the seeds' order-4 paths (issue 15): the CPU
+# reference's error against ground truth (SPEC's metrics, % of the
+# unshadowed maximum as `hfshade compare` prints them) with --visibility
+# legendre, wedge and slice, on the benchmark scenes (cones, fractal relief
+# 0.25, the DEM window), under the sky alone (the demo's courtyard sky at
+# order 4) and sky + the 2-degree sun.  Prints a Markdown table.
+#
+# usage: tools/bench_slice.sh [BUILD_DIR] [SIZE] [FLAGS...]   (defaults: build 128)
+# FLAGS go to every CPU render (e.g. --k 8 --offset 4 --nphi-env 64).
+# Truth renders are cached in $BUILD_DIR/bench-cache by scene and lighting.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+B=${1:-build}
+N=${2:-128}
+shift 2 || true
+FLAGS=("$@")
+HFS=$B/tools/hfshade
+GEN=$B/tools/hfgen
+C=$B/bench-cache
+mkdir -p "$C"
+"$GEN" cones --size ${N}x${N} -o "$C/cones$N.pfm"
+"$GEN" fractal --size ${N}x${N} --relief 0.25 -o "$C/fractal$N.pfm"
+"$GEN" crop data/jacksboro.png --rect 140,100,$N,$N -o "$C/dem$N.pfm"
+scenes=("cones|$C/cones$N.pfm|--dx 1"
+        "fractal|$C/fractal$N.pfm|--dx 1"
+        "dem|$C/dem$N.pfm|--dx 83 --zscale 2")
+lightings=("sky|--env-map data/courtyard.exr"
+           "sky+sun|--env-map data/courtyard.exr --key 336,15,2,1500")
+seconds() { sed -n 's/.*, \([0-9.]*\) s$/\1/p' "$1" | tail -n 1; }
+echo "| scene (${N}x${N}) | lights | visibility | mean abs | p99 abs | max abs | cpu s |"
+echo "|---|---|---|---|---|---|---|"
+for sc in "${scenes[@]}"; do
+    IFS='|' read -r name hf extra <<<"$sc"
+    for li in "${lightings[@]}"; do
+        IFS='|' read -r lname LIGHT <<<"$li"
+        truth=$C/truth-$name$N-$lname.pfm
+        if [ ! -s "$truth" ]; then
+            # shellcheck disable=SC2086
+            "$HFS" render --height "$hf" $extra $LIGHT --backend truth --truth-samples 1024 \
+                --pfm "$truth" --quiet
+        fi
+        for vis in legendre wedge slice; do
+            out=$C/slice-$name$N.pfm
+            # shellcheck disable=SC2086
+            "$HFS" render --height "$hf" $extra $LIGHT --backend cpu --visibility $vis \
+                "${FLAGS[@]}" --pfm "$out" 2>"$C/slice.log"
+            # shellcheck disable=SC2086
+            m=$("$HFS" compare --height "$hf" $extra $LIGHT "$out" "$truth")
+            read -r _ mean _ _ _ p99 _ mx _ <<<"$m"
+            echo "| $name | $lname | $vis | $mean | $p99 | $mx | $(seconds "$C/slice.log") |"
+        done
+    done
+done
