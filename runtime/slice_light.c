@@ -7,116 +7,50 @@
 #include <stdlib.h>
 
 #define PI 3.14159265358979323846
-#define DEG 5                  /* products have degree <= 5 */
-#define NB (1 + 2 * DEG)       /* basis 1, cos ke, sin ke (k = 1..5) */
-
-/* A trigonometric polynomial: c[0] + sum_k c[2k-1] cos ke + c[2k] sin ke. */
-typedef struct trig {
-    double c[NB];
-} trig;
-
-/* r += coef * (is_sin ? sin : cos)(f e), f of either sign. */
-static void trig_add(trig *r, int is_sin, int f, double coef)
-{
-    if (is_sin) {
-        if (f == 0)
-            return;
-        if (f < 0) {
-            f = -f;
-            coef = -coef;
-        }
-        if (f <= DEG)
-            r->c[2 * f] += coef;
-        return;
-    }
-    f = f < 0 ? -f : f;
-    if (f <= DEG)
-        r->c[f ? 2 * f - 1 : 0] += coef;
-}
-
-/* Term index t: 0 the constant, 2k-1 cos ke, 2k sin ke. */
-static int term_freq(int t)
-{
-    return (t + 1) / 2;
-}
-
-static trig trig_product(const trig *u, const trig *v)
-{
-    trig r = {{0}};
-    for (int i = 0; i < NB; ++i)
-        for (int k = 0; k < NB; ++k) {
-            const double p = u->c[i] * v->c[k];
-            if (p == 0.0)
-                continue;
-            const int fi = term_freq(i), fk = term_freq(k);
-            const int si = i > 0 && i % 2 == 0, sk = k > 0 && k % 2 == 0;
-            if (!si && !sk) { /* cos cos */
-                trig_add(&r, 0, fi + fk, 0.5 * p);
-                trig_add(&r, 0, fi - fk, 0.5 * p);
-            } else if (si && sk) { /* sin sin */
-                trig_add(&r, 0, fi - fk, 0.5 * p);
-                trig_add(&r, 0, fi + fk, -0.5 * p);
-            } else if (si) { /* sin(fi) cos(fk) */
-                trig_add(&r, 1, fi + fk, 0.5 * p);
-                trig_add(&r, 1, fi - fk, 0.5 * p);
-            } else { /* cos(fi) sin(fk) */
-                trig_add(&r, 1, fi + fk, 0.5 * p);
-                trig_add(&r, 1, fk - fi, 0.5 * p);
-            }
-        }
-    return r;
-}
-
-/* Coefficients of f_m(e) cos^2 e (A) and f_m(e) sin e cos e (B). */
-static trig basis_a[HFS_SLICE_F], basis_b[HFS_SLICE_F];
-static int basis_ready; /* written once, idempotently: same values each time */
-
-static void basis_init(void)
-{
-    if (basis_ready)
-        return;
-    const trig cos2 = {{0.5, 0, 0, 0.5}};   /* (1 + cos 2e) / 2 */
-    const trig sincos = {{0, 0, 0, 0, 0.5}}; /* sin 2e / 2 */
-    for (int m = 0; m < HFS_SLICE_F; ++m) {
-        trig f = {{0}};
-        f.c[m] = 1.0; /* f_m: index m is 1, cos e, sin e, cos 2e, ... */
-        basis_a[m] = trig_product(&f, &cos2);
-        basis_b[m] = trig_product(&f, &sincos);
-    }
-    basis_ready = 1;
-}
-
-/* J_i(x) = Int_x^{pi/2} (1, cos ke, sin ke) de. */
-static void integrals_from(double x, double J[NB])
-{
-    J[0] = 0.5 * PI - x;
-    for (int k = 1; k <= DEG; ++k) {
-        const double ck = cos(k * x), sk = sin(k * x);
-        const double c_top = cos(k * 0.5 * PI), s_top = sin(k * 0.5 * PI);
-        J[2 * k - 1] = (s_top - sk) / k;
-        J[2 * k] = (ck - c_top) / k;
-    }
-}
-
+/* The 7 integrals in closed form.  With J0 = pi/2 - x, Jc_k = Int_x^{pi/2}
+ * cos ke de = (sin(k pi/2) - sin kx) / k and Js_k = Int sin ke de =
+ * (cos kx - cos(k pi/2)) / k, the products of f_m with cos^2 e =
+ * (1 + cos 2e)/2 (A) and with sin e cos e = sin 2e / 2 (B) are
+ *   m  f_m      A_m                                 B_m
+ *   0  1        (J0 + Jc2) / 2                      Js2 / 2
+ *   1  cos e    (3 Jc1 + Jc3) / 4                   (Js1 + Js3) / 4
+ *   2  sin e    (Js1 + Js3) / 4                     (Jc1 - Jc3) / 4
+ *   3  cos 2e   J0 / 4 + Jc2 / 2 + Jc4 / 4          Js4 / 4
+ *   4  sin 2e   Js2 / 2 + Js4 / 4                   (J0 - Jc4) / 4
+ *   5  cos 3e   Jc1 / 4 + Jc3 / 2 + Jc5 / 4         (Js5 - Js1) / 4
+ *   6  sin 3e   Js1 / 4 + Js3 / 2 + Js5 / 4         (Jc1 - Jc5) / 4
+ * and g_m = a A_m + b B_m.  shaders_es/env_horizons.frag (HFS_SLICE) writes
+ * the same table. */
 void hfs_slice_integrals(double a, double b, double x, double g[HFS_SLICE_F])
 {
-    basis_init();
     x = x < -0.5 * PI ? -0.5 * PI : (x > 0.5 * PI ? 0.5 * PI : x);
-    double J[NB];
-    integrals_from(x, J);
-    for (int m = 0; m < HFS_SLICE_F; ++m) {
-        double ga = 0.0, gb = 0.0;
-        for (int i = 0; i < NB; ++i) {
-            ga += basis_a[m].c[i] * J[i];
-            gb += basis_b[m].c[i] * J[i];
-        }
-        g[m] = a * ga + b * gb;
-    }
+    const double c1 = cos(x), s1 = sin(x);
+    const double c2 = c1 * c1 - s1 * s1, s2 = 2.0 * s1 * c1;
+    const double c3 = c2 * c1 - s2 * s1, s3 = s2 * c1 + c2 * s1;
+    const double c4 = c3 * c1 - s3 * s1, s4 = s3 * c1 + c3 * s1;
+    const double c5 = c4 * c1 - s4 * s1, s5 = s4 * c1 + c4 * s1;
+    const double J0 = 0.5 * PI - x;
+    const double Jc1 = 1.0 - s1, Js1 = c1;
+    const double Jc2 = -s2 / 2.0, Js2 = (c2 + 1.0) / 2.0;
+    const double Jc3 = (-1.0 - s3) / 3.0, Js3 = c3 / 3.0;
+    const double Jc4 = -s4 / 4.0, Js4 = (c4 - 1.0) / 4.0;
+    const double Jc5 = (1.0 - s5) / 5.0, Js5 = c5 / 5.0;
+    const double A[HFS_SLICE_F] = {(J0 + Jc2) / 2.0,
+                                   (3.0 * Jc1 + Jc3) / 4.0,
+                                   (Js1 + Js3) / 4.0,
+                                   J0 / 4.0 + Jc2 / 2.0 + Jc4 / 4.0,
+                                   Js2 / 2.0 + Js4 / 4.0,
+                                   Jc1 / 4.0 + Jc3 / 2.0 + Jc5 / 4.0,
+                                   Js1 / 4.0 + Js3 / 2.0 + Js5 / 4.0};
+    const double B[HFS_SLICE_F] = {Js2 / 2.0,          (Js1 + Js3) / 4.0, (Jc1 - Jc3) / 4.0,
+                                   Js4 / 4.0,          (J0 - Jc4) / 4.0,  (Js5 - Js1) / 4.0,
+                                   (Jc1 - Jc5) / 4.0};
+    for (int m = 0; m < HFS_SLICE_F; ++m)
+        g[m] = a * A[m] + b * B[m];
 }
 
 int hfs_slice_table_init(hfs_slice_table *t, const hfs_swath *s, hfs_error *err)
 {
-    basis_init();
     t->n = s->n;
     t->dphi = s->dphi;
     t->p = malloc((size_t)s->n * HFS_SH_N * HFS_SLICE_F * sizeof *t->p);
