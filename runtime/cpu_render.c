@@ -212,8 +212,10 @@ static void render_row(void *ctx, int j, int worker)
             if (job->is_env) {
                 double v[HFS_SH_N], t[HFS_SH_N] = {0};
                 if (c->slices.p) { /* exact slice lighting (slice_light.h) */
+                    for (int k = 0; k < HFS_SH_N; ++k)
+                        t[k] = hn[k]; /* the open hemisphere, exactly */
                     for (int d = 0; d < nd; ++d)
-                        hfs_slice_add(&c->slices, d, n, omega[(size_t)d * w + i], t);
+                        hfs_slice_add_occluded(&c->slices, d, n, omega[(size_t)d * w + i], t);
                 } else {
                     for (int d = 0; d < nd; ++d)
                         s->om[d] = omega[(size_t)d * w + i];

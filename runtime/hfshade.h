@@ -138,8 +138,7 @@ typedef enum hfs_visibility_path {
     HFS_VIS_WEDGE_TABLE,     /* SN08: 2D/1D tabulated visibility wedges     */
     HFS_VIS_SLICE            /* exact per-slice lighting of the environment
                                 (slice_light.h, issue 15); key and local
-                                lights as HFS_VIS_LEGENDRE.  CPU reference
-                                only so far: the GLES path refuses it      */
+                                lights as HFS_VIS_LEGENDRE                 */
 } hfs_visibility_path;
 
 /* Texture precision of the GLES path: fp16 is the product (profile

@@ -95,7 +95,7 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                         "surfaceless", "how the GLES context is made"},
     [HFS_SK_VISIBILITY] = {"visibility", "legendre|wedge|slice", HFS_FORM_WORD, 0, 0, 0, {{0}},
                            "legendre", "visibility to SH: NS09 Legendre, SN08 wedge tables, "
-                           "or exact slice lighting (CPU only so far)"},
+                           "or exact slice lighting"},
     /* 0: as many as the machine has cores (at most 64, hfs_parallel). */
     [HFS_SK_THREADS] = {"threads", "N", HFS_FORM_INT, 1, 0, 0,
                         {{NULL, HFS_UNIT_COUNT, {0, 64, 0}, NULL}}, "0",

@@ -103,6 +103,25 @@ void hfs_slice_table_free(hfs_slice_table *t)
     t->dir = NULL;
 }
 
+void hfs_slice_add_occluded(const hfs_slice_table *t, int j, const double n[3], double x,
+                            double T[HFS_SH_N])
+{
+    const double a = n[0] * t->dir[2 * j] + n[1] * t->dir[2 * j + 1], b = n[2];
+    const double floor = atan2(-a, b);
+    if (!(x > floor))
+        return; /* open: nothing occluded */
+    double gx[HFS_SLICE_F], gf[HFS_SLICE_F];
+    hfs_slice_integrals(a, b, x, gx);
+    hfs_slice_integrals(a, b, floor, gf);
+    const double *p = t->p + (size_t)j * HFS_SH_N * HFS_SLICE_F;
+    for (int k = 0; k < HFS_SH_N; ++k) {
+        double s = 0.0;
+        for (int m = 0; m < HFS_SLICE_F; ++m)
+            s += p[k * HFS_SLICE_F + m] * (gx[m] - gf[m]);
+        T[k] += t->dphi * s;
+    }
+}
+
 void hfs_slice_add(const hfs_slice_table *t, int j, const double n[3], double x,
                    double T[HFS_SH_N])
 {

@@ -53,6 +53,14 @@ void hfs_slice_table_free(hfs_slice_table *t);
 void hfs_slice_add(const hfs_slice_table *t, int j, const double n[3], double x,
                    double T[HFS_SH_N]);
 
+/* The occluded part of slice j: dphi (S_k(x) - S_k(floor)) with floor the
+ * tangent plane's elevation in that slice (<= x): 0 for an open slice, and
+ * T = H(N) + the sum over the slices, H(N) the clamped cosine's SH (exact:
+ * the open hemisphere needs no azimuth sampling).  What both backends
+ * compute. */
+void hfs_slice_add_occluded(const hfs_slice_table *t, int j, const double n[3], double x,
+                            double T[HFS_SH_N]);
+
 /* The 7 slice integrals g_m = Int_x^{pi/2} f_m(e) (a cos e + b sin e) cos e
  * de (exposed for the tests). */
 void hfs_slice_integrals(double a, double b, double x, double g[HFS_SLICE_F]);

@@ -31,6 +31,8 @@
 // hfs-variant: HFS_FP32 1, HFS_COUNT 1
 // hfs-variant: HFS_SWATH_TEX 1
 // hfs-variant: HFS_SWATH_TEX 1, HFS_TABLES 1
+// hfs-variant: HFS_SLICE 1
+// hfs-variant: HFS_SLICE 1, HFS_SWATH_TEX 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -90,14 +92,20 @@ uniform highp usampler2D u_swath_tex;
 #define SW_C(k) mat4(SW(2 + HFS_NDIR + 4 * (k)), SW(3 + HFS_NDIR + 4 * (k)), \
                      SW(4 + HFS_NDIR + 4 * (k)), SW(5 + HFS_NDIR + 4 * (k)))
 #define SW_ROT(i) SW(2 + 17 * HFS_NDIR + (i))
+#define SW_P(i) SW(2 + HFS_NDIR + (i))
 #else
 layout(std140) uniform HfsSwath {
     vec4 u_win;                          /* (elev_lo, elev_hi, n, full) */
     vec4 u_occtop;
     vec4 u_dir[HFS_NDIR];                /* (cos, sin, 0, 0) */
+#ifdef HFS_SLICE
+    vec4 u_P[28 * HFS_NDIR];             /* dphi P_km(phi_j): vec4 28 j + 4 m + k/4 */
+#else
     mat4 u_C[HFS_NDIR * 4];              /* folded M_lin, rows as columns */
     vec4 u_rot[2 * HFS_NDIR + 2];        /* per wedge (cos ma, mirror), (sin ma) */
+#endif
 };
+#define SW_P(i) u_P[i]
 #define SW_OCCTOP u_occtop
 #define SW_DIR(j) u_dir[j]
 #define SW_C(k) u_C[k]
@@ -116,6 +124,50 @@ void add_wedge(inout vec4 V[4], float a, float b, int w)
     float n = float(HFS_TABLE_N);
     hfs_table_add(u_tab, vec2(hfs_table_coord(a, n), hfs_table_coord(b, n)), 0.0, false,
                   SW_ROT(2 * w).xyz, SW_ROT(2 * w + 1).xyz, V);
+}
+#endif
+
+#ifdef HFS_SLICE
+/* Exact slice lighting (runtime/slice_light.h): g[m] = Int_x^{pi/2} f_m(e)
+ * (a cos e + b sin e) cos e de, f = (1, cos e, sin e, cos 2e, sin 2e,
+ * cos 3e, sin 3e), in closed form (the table of slice_light.c). */
+void slice_g(float a, float b, float x, out float g[7])
+{
+    float c1 = cos(x), s1 = sin(x);
+    float c2 = c1 * c1 - s1 * s1, s2 = 2.0 * s1 * c1;
+    float c3 = c2 * c1 - s2 * s1, s3 = s2 * c1 + c2 * s1;
+    float c4 = c3 * c1 - s3 * s1, s4 = s3 * c1 + c3 * s1;
+    float c5 = c4 * c1 - s4 * s1, s5 = s4 * c1 + c4 * s1;
+    float J0 = HFS_HALF_PI - x;
+    float Jc1 = 1.0 - s1, Js1 = c1;
+    float Jc2 = -s2 / 2.0, Js2 = (c2 + 1.0) / 2.0;
+    float Jc3 = (-1.0 - s3) / 3.0, Js3 = c3 / 3.0;
+    float Jc4 = -s4 / 4.0, Js4 = (c4 - 1.0) / 4.0;
+    float Jc5 = (1.0 - s5) / 5.0, Js5 = c5 / 5.0;
+    g[0] = a * (J0 + Jc2) / 2.0 + b * Js2 / 2.0;
+    g[1] = a * (3.0 * Jc1 + Jc3) / 4.0 + b * (Js1 + Js3) / 4.0;
+    g[2] = a * (Js1 + Js3) / 4.0 + b * (Jc1 - Jc3) / 4.0;
+    g[3] = a * (J0 / 4.0 + Jc2 / 2.0 + Jc4 / 4.0) + b * Js4 / 4.0;
+    g[4] = a * (Js2 / 2.0 + Js4 / 4.0) + b * (J0 - Jc4) / 4.0;
+    g[5] = a * (Jc1 / 4.0 + Jc3 / 2.0 + Jc5 / 4.0) + b * (Js5 - Js1) / 4.0;
+    g[6] = a * (Js1 / 4.0 + Js3 / 2.0 + Js5 / 4.0) + b * (Jc1 - Jc5) / 4.0;
+}
+
+/* V += the occluded part of slice j: the transfer between the tangent
+ * plane (tan tf) and the horizon (tan tx), negated. */
+void slice_add(int j, float a, float b, float tf, float tx, inout vec4 V[4])
+{
+    float gx[7], gf[7];
+    slice_g(a, b, atan(tx), gx);
+    slice_g(a, b, atan(tf), gf);
+    for (int m = 0; m < 7; ++m) {
+        float d = gx[m] - gf[m];
+        int base = 28 * j + 4 * m;
+        V[0] += d * SW_P(base);
+        V[1] += d * SW_P(base + 1);
+        V[2] += d * SW_P(base + 2);
+        V[3] += d * SW_P(base + 3);
+    }
 }
 #endif
 
@@ -157,6 +209,12 @@ void main()
             fetches += 4;
         }
         om_prev = om;
+#elif defined(HFS_SLICE)
+        /* Exact: only slices whose horizon rises above the tangent plane
+         * carry an occluded part (0 exactly elsewhere). */
+        float tfl = -(n.x * cs.x + n.y * cs.y) / n.z;
+        if (best > tfl)
+            slice_add(j, n.x * cs.x + n.y * cs.y, n.z, tfl, best, V);
 #else
         /* The environment's window is the whole [-pi/2, pi/2]: the visible
          * band is (omega, pi/2], and its NLP vector needs only sin(omega)
@@ -178,10 +236,12 @@ void main()
     o_v2 = vec4(0.0);
     o_v3 = vec4(0.0);
 #else
+#ifndef HFS_SLICE /* the slices' V is already the occluded transfer */
     vec4 hemi[4];
     hfs_sh_hemisphere(n, hemi);
     for (int q = 0; q < 4; ++q)
         V[q] -= hemi[q];
+#endif
     o_v0 = hfs_f16v(V[0]);
     o_v1 = hfs_f16v(V[1]);
     o_v2 = hfs_f16v(V[2]);

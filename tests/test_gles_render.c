@@ -863,6 +863,68 @@ static int mode_sub(int argc, char **argv)
     return failures ? 1 : 0;
 }
 
+/* Exact slice lighting (--visibility slice, issue 15) on GLES against the
+ * CPU reference's (runtime/slice_light.c) at subsample 1: fp32 must match the
+ * algorithm, fp16 its storage.  meas: measured {mean, max} (fp16, fp32),
+ * llvmpipe, Mesa 22.3.6; the bound is 10x.  Then a turned environment on the
+ * kept slices (only the shading reruns) equals a fresh renderer's frame. */
+static int mode_slice(void)
+{
+    hfs_renderer *r = gles_or_skip(NULL);
+    struct {
+        const char *scene;
+        int n, keys;
+        double meas[2][2];
+    } cases[] = {
+        {"cones", 48, 0, {{3.5e-6, 4.3e-5}, {8.3e-8, 4.1e-7}}},
+        {"fractal", 48, 1, {{2.8e-5, 1.8e-4}, {1.4e-7, 3.5e-6}}},
+        {"dem", 40, 0, {{9.0e-6, 8.3e-5}, {1.1e-7, 6.1e-7}}},
+    };
+    for (size_t ci = 0; ci < sizeof cases / sizeof cases[0]; ++ci)
+        for (int prec = 0; prec < 2; ++prec) {
+            scene s;
+            if (scene_make(cases[ci].scene, cases[ci].n, HFS_DATA_DIR, &s))
+                return 1;
+            hfs_lighting l = scene_lighting(1, cases[ci].keys > 0);
+            l.n_key = cases[ci].keys;
+            hfs_quality q = quality(prec ? "fp32" : "fp16", "legendre", 1);
+            q.visibility = HFS_VIS_SLICE;
+            hfs_image g = {0}, c = {0};
+            if (!render(r, &s, &l, &q, &g) && !cpu_render(&s, &l, &q, &c)) {
+                hfs_metrics m = compare(&s, &l, &q, &g, &c);
+                const double bmean = 10.0 * cases[ci].meas[prec][0];
+                const double bmax = 10.0 * cases[ci].meas[prec][1];
+                printf("slice %-8s %2dx%-2d keys %d %s: mean %.2e max %.2e\n", cases[ci].scene,
+                       cases[ci].n, cases[ci].n, l.n_key, prec ? "fp32" : "fp16", m.mean_abs,
+                       m.max_abs);
+                CHECK(m.nonfinite == 0 && m.mean_abs <= bmean && m.max_abs <= bmax,
+                      "slice %s %s: mean %.3e (bound %.1e) max %.3e (bound %.1e)",
+                      cases[ci].scene, prec ? "fp32" : "fp16", m.mean_abs, bmean, m.max_abs, bmax);
+            } else {
+                CHECK(0, "slice %s: a render failed", cases[ci].scene);
+            }
+            if (!failures && prec == 0) { /* the environment turned: planned == fresh */
+                l.env_rotate += 0.7;
+                hfs_image planned = {0}, fresh = {0};
+                const hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES, .context = test_context};
+                hfs_renderer *r2 = gl_test_renderer(&d);
+                if (!render(r, &s, &l, &q, &planned) && !render(r2, &s, &l, &q, &fresh))
+                    CHECK(!memcmp(planned.rgb, fresh.rgb,
+                                  (size_t)s.f.width * s.f.height * 3 * sizeof *planned.rgb),
+                          "slice %s: the turned environment on kept slices differs from a "
+                          "fresh frame", cases[ci].scene);
+                hfs_renderer_destroy(r2);
+                hfs_image_free(&planned);
+                hfs_image_free(&fresh);
+            }
+            hfs_image_free(&g);
+            hfs_image_free(&c);
+            scene_free(&s);
+        }
+    hfs_renderer_destroy(r);
+    return failures ? 1 : 0;
+}
+
 int main(int argc, char **argv)
 {
     setvbuf(stdout, NULL, _IONBF, 0);
@@ -884,6 +946,8 @@ int main(int argc, char **argv)
         return mode_errors();
     if (!strcmp(argv[1], "variants"))
         return mode_variants();
+    if (!strcmp(argv[1], "slice"))
+        return mode_slice();
     if (!strcmp(argv[1], "sub"))
         return mode_sub(argc, argv);
     fprintf(stderr, "unknown mode %s\n", argv[1]);

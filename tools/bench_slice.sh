@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Exact slice lighting against the seeds' order-4 paths (issue 15): the CPU
-# reference's error against ground truth (SPEC's metrics, % of the
-# unshadowed maximum as `hfshade compare` prints them) with --visibility
-# legendre, wedge and slice, on the benchmark scenes (cones, fractal relief
+# Exact slice lighting against the seeds' order-4 paths (issue 15): the
+# error against ground truth (SPEC's metrics as `hfshade compare` prints
+# them: fractions of the unshadowed maximum) of the CPU reference with
+# --visibility legendre, wedge and slice, and of the GLES product path
+# (fp16) with legendre and slice at subsample 1 and 2, on the benchmark scenes (cones, fractal relief
 # 0.25, the DEM window), under the sky alone (the demo's courtyard sky at
 # order 4) and sky + the 2-degree sun.  Prints a Markdown table.
 #
@@ -28,8 +29,8 @@ scenes=("cones|$C/cones$N.pfm|--dx 1"
 lightings=("sky|--env-map data/courtyard.exr"
            "sky+sun|--env-map data/courtyard.exr --key 336,15,2,1500")
 seconds() { sed -n 's/.*, \([0-9.]*\) s$/\1/p' "$1" | tail -n 1; }
-echo "| scene (${N}x${N}) | lights | visibility | mean abs | p99 abs | max abs | cpu s |"
-echo "|---|---|---|---|---|---|---|"
+echo "| scene (${N}x${N}) | lights | backend | visibility | mean abs | p99 abs | max abs | s |"
+echo "|---|---|---|---|---|---|---|---|"
 for sc in "${scenes[@]}"; do
     IFS='|' read -r name hf extra <<<"$sc"
     for li in "${lightings[@]}"; do
@@ -40,15 +41,17 @@ for sc in "${scenes[@]}"; do
             "$HFS" render --height "$hf" $extra $LIGHT --backend truth --truth-samples 1024 \
                 --pfm "$truth" --quiet
         fi
-        for vis in legendre wedge slice; do
+        for run in "cpu|legendre|" "cpu|wedge|" "cpu|slice|" "gles|legendre|--subsample 1" \
+                   "gles|slice|--subsample 1" "gles|legendre|--subsample 2" "gles|slice|--subsample 2"; do
+            IFS='|' read -r be vis sub <<<"$run"
             out=$C/slice-$name$N.pfm
             # shellcheck disable=SC2086
-            "$HFS" render --height "$hf" $extra $LIGHT --backend cpu --visibility $vis \
+            "$HFS" render --height "$hf" $extra $LIGHT --backend $be --visibility $vis $sub \
                 "${FLAGS[@]}" --pfm "$out" 2>"$C/slice.log"
             # shellcheck disable=SC2086
             m=$("$HFS" compare --height "$hf" $extra $LIGHT "$out" "$truth")
             read -r _ mean _ _ _ p99 _ mx _ <<<"$m"
-            echo "| $name | $lname | $vis | $mean | $p99 | $mx | $(seconds "$C/slice.log") |"
+            echo "| $name | $lname | $be ${sub#--} | $vis | $mean | $p99 | $mx | $(seconds "$C/slice.log") |"
         done
     done
 done

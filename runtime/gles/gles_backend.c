@@ -97,6 +97,7 @@ void hfs_gles_destroy(hfs_gles *g)
     }
     hfs_gles_wedge_textures_free(&g->wedge, gl);
     hfs_visibility_destroy(g->env_vis);
+    hfs_slice_table_free(&g->env_slices);
     hfs_gl_context_destroy(g->ctx);
     free(g->terrain_z);
     free(g->last_img);

@@ -51,6 +51,7 @@ struct hfs_gles_frame {
     hfs_image *out;
     hfs_gles_layout L;
     int tables;                           /* the wedge-table visibility path */
+    int slice;                            /* exact slice lighting (slice_light.h) */
     int has_env, n_keys;
     hfs_gles_frame_key keys[HFS_MAX_KEY_LIGHTS];
     double l_env[3][HFS_SH_N];            /* rotated environment SH */
@@ -97,6 +98,8 @@ struct hfs_gles {
     size_t last_img_cap;
     hfs_visibility *env_vis;
     int env_vis_n;
+    hfs_slice_table env_slices;           /* --visibility slice: of env_vis's swath */
+    int env_slices_n;
 
     hfs_gles_timing timing;
     int stage_slot[HFS_PASS_COUNT];       /* first timing slot of each pass */

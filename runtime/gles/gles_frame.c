@@ -248,15 +248,13 @@ int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     const int fp32 = fr->q->precision == HFS_PRECISION_FP32;
     int rc;
-    if (fr->q->visibility == HFS_VIS_SLICE)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "visibility slice: not on the GLES path yet "
-                        "(issue 15); use --backend cpu, or --visibility legendre|wedge");
     if ((rc = hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL, fp32,
                                  g->strict_limits, &g->caps, err)) ||
         (rc = hfs_gles_layout_init(&fr->L, fr->f, fr->q, err)))
         return rc;
     hfs_gles_timing_select(&g->timing, g->caps.timer_query);
     fr->tables = fr->q->visibility == HFS_VIS_WEDGE_TABLE;
+    fr->slice = fr->q->visibility == HFS_VIS_SLICE;
     if ((rc = check_limits(g, fr, err)) || (rc = fit_resources(g, fr, err)))
         return rc;
     const size_t n_img = (size_t)fr->L.w * fr->L.h * 3;

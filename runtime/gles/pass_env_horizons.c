@@ -16,10 +16,17 @@ static int present(const hfs_gles_frame *fr)
     return fr->has_env;
 }
 
+/* HfsSwath: the Legendre/wedge swath, or the slices' (uniform_blocks.h). */
+static size_t block_vec4(const hfs_gles_frame *fr)
+{
+    return fr->slice ? hfs_gles_slices_vec4(fr->q->nphi_env)
+                     : hfs_gles_swath_vec4(fr->q->nphi_env);
+}
+
 /* The swath's block, or (too large for the profile's blocks) its texture. */
 static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
-    const size_t n4 = hfs_gles_swath_vec4(fr->q->nphi_env);
+    const size_t n4 = block_vec4(fr);
     fr->env_swath_tex = hfs_gles_block_too_big(&g->caps, n4);
     return fr->env_swath_tex
                ? hfs_gles_block_texture_check(&g->caps, n4, "environment swath (--nphi-env)", err)
@@ -45,11 +52,21 @@ static int prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     g->stats.offset_mismatches += hfs_gles_offset_mismatches(&fr->L, hfs_visibility_swath(g->env_vis));
     if (!fr->run[HFS_PASS_ENV_HORIZONS][0])
         return HFS_OK;
-    const size_t bytes = hfs_gles_swath_vec4(q->nphi_env) * 16;
+    const size_t bytes = block_vec4(fr) * 16;
+    if (fr->slice && g->env_slices_n != q->nphi_env) {
+        hfs_slice_table_free(&g->env_slices);
+        g->env_slices_n = 0;
+        if ((rc = hfs_slice_table_init(&g->env_slices, hfs_visibility_swath(g->env_vis), err)))
+            return rc;
+        g->env_slices_n = q->nphi_env;
+    }
     float *sw = hfs_gles_scratch(g, 2 * bytes); /* the block, then its texels */
     if (!sw)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
-    hfs_gles_pack_swath(&fr->L, g->env_vis, sw);
+    if (fr->slice)
+        hfs_gles_pack_slices(&fr->L, g->env_vis, &g->env_slices, sw);
+    else
+        hfs_gles_pack_swath(&fr->L, g->env_vis, sw);
     if (fr->env_swath_tex) {
         if ((rc = hfs_gles_block_texture_upload(&g->env_swath_tex, &g->gl, &g->caps, sw,
                                                 bytes / 16, (char *)sw + bytes,
@@ -75,7 +92,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, int count, hfs_error *err
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                 .n_dir = g->env_vis_n, .tables = fr->tables,
                                 .fp32 = g->caps.fp32, .count = count,
-                                .swath_tex = fr->env_swath_tex};
+                                .swath_tex = fr->env_swath_tex, .slice = fr->slice};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_HORIZONS, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)))

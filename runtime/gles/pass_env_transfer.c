@@ -22,7 +22,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     (void)which;
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
-    const hfs_gles_variant v = {.fp32 = g->caps.fp32};
+    const hfs_gles_variant v = {.fp32 = g->caps.fp32, .slice = fr->slice};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_TRANSFER, &v, &prog, err);
     if (rc ||

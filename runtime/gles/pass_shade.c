@@ -67,7 +67,10 @@ static void fill_block(const hfs_gles_frame *fr, double s, hfs_gles_shade_block 
         for (int c = 0; c < 3; ++c)
             sb->kle[i][c] = (float)(fr->rho_pi * fr->keys[i].k.le[c] *
                                     hfs_gles_key_emax(&fr->keys[i].k) * s);
-    hfs_gles_open_transfer(sb->topen);
+    if (fr->slice) /* exact slices: the open part is H(N) itself */
+        hfs_gles_cosine_transfer(sb->topen);
+    else
+        hfs_gles_open_transfer(sb->topen);
     for (int i = 0; i < fr->n_local; ++i)
         for (int c = 0; c < 3; ++c)
             sb->lle[i][c] = (float)(fr->local[i].radiance[c] * s);

@@ -110,6 +110,40 @@ void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, floa
     }
 }
 
+size_t hfs_gles_slices_vec4(int n)
+{
+    return (sizeof(hfs_gles_swath_head) + (size_t)n * sizeof(hfs_gles_swath_sample)) / 16 +
+           (size_t)n * 4 * HFS_SLICE_F;
+}
+
+void hfs_gles_pack_slices(const hfs_gles_layout *L, const hfs_visibility *v,
+                          const hfs_slice_table *t, float *dst)
+{
+    const hfs_swath *s = hfs_visibility_swath(v);
+    const int n = s->n;
+    memset(dst, 0, hfs_gles_slices_vec4(n) * 4 * sizeof *dst);
+    /* The head and the directions exactly as the swath block's. */
+    hfs_gles_swath_block b = hfs_gles_swath_view(dst, n);
+    b.head->elev_lo = (float)s->elev_lo;
+    b.head->elev_hi = (float)s->elev_hi;
+    b.head->n = (float)n;
+    b.head->full = (float)s->full;
+    for (int j = 0; j < n; ++j) {
+        float cs[2];
+        const hfs_swath one = {.n = 1, .full = s->full, .phi0 = hfs_swath_phi(s, j), .dphi = s->dphi};
+        hfs_gles_swath_float_dirs(L, &one, cs);
+        b.dir[j].cos = cs[0];
+        b.dir[j].sin = cs[1];
+    }
+    float *p = (float *)(b.dir + n);
+    for (int j = 0; j < n; ++j)
+        for (int m = 0; m < HFS_SLICE_F; ++m)
+            for (int k = 0; k < HFS_SH_N; ++k)
+                p[((size_t)j * HFS_SLICE_F + (size_t)m) * HFS_SH_N + (size_t)k] =
+                    (float)(t->dphi * t->p[((size_t)j * HFS_SH_N + (size_t)k) * HFS_SLICE_F +
+                                           (size_t)m]);
+}
+
 /* ---- offsets -------------------------------------------------------------------- */
 
 /* cpu_horizon.c split_offset. */
@@ -242,6 +276,18 @@ void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hf
     for (int c = 0; c < 16; ++c)
         rec->l_sh[c] = (float)k->l_sh[c];
     hfs_gles_pack_swath(L, v, (float *)(rec + 1));
+}
+
+void hfs_gles_cosine_transfer(float dst[16])
+{
+    double zc[HFS_ZH_N], c[HFS_SH_N];
+    hfs_zh_clamped_cosine(zc);
+    hfs_sh_rotate_zonal(zc, 0.0, 0.0, 1.0, c);
+    for (int l = 0; l * l < HFS_SH_N; ++l) {
+        const double k = c[l * (l + 1)] / sqrt((2.0 * l + 1.0) / (4.0 * 3.14159265358979323846));
+        for (int m = -l; m <= l; ++m)
+            dst[l * (l + 1) + m] = (float)k;
+    }
 }
 
 void hfs_gles_open_transfer(float dst[16])

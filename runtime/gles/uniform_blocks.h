@@ -25,6 +25,7 @@
 #include <stdint.h>
 
 #include "layout.h"
+#include "slice_light.h"
 #include "visibility.h"
 #include "hfshade.h"
 
@@ -86,6 +87,14 @@ void hfs_gles_wedge_rot_set(hfs_gles_wedge_rot *r, double a, int mirror);
 
 size_t hfs_gles_swath_vec4(int n);
 void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, float *dst);
+
+/* HfsSwath on the exact slice path (--visibility slice, slice_light.h):
+ * the head and u_dir[n] as above, then per slice j and slice function m
+ * (HFS_SLICE_F) the 16 coefficients dphi P_km(phi_j) as 4 vec4 (k = 4g ..
+ * 4g+3 in vec4 g): u_P[28 n], vec4 28 j + 4 m + g.  Total 2 + 29 n vec4. */
+size_t hfs_gles_slices_vec4(int n);
+void hfs_gles_pack_slices(const hfs_gles_layout *L, const hfs_visibility *v,
+                          const hfs_slice_table *t, float *dst);
 
 /* The direction (cos, sin) used for sample j, in double, snapped exactly as
  * cpu_horizon.c does (|c| < 1e-12 -> 0). */
@@ -149,6 +158,12 @@ void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hf
  * each of the 16 coefficients (std140: 4 vec4) for the shading pass, which
  * adds it to the stored occluded part (env_transfer.frag). */
 void hfs_gles_open_transfer(float dst[16]);
+
+/* The same for the exact slice path (--visibility slice): there the open
+ * part is the clamped cosine itself, H(N) (slice_light.h), whose (l, m)
+ * coefficient is k_l Y_lm(N) with k_l from the clamped cosine's zonal
+ * coefficients. */
+void hfs_gles_cosine_transfer(float dst[16]);
 
 /* The shading pass's uniform block HfsShade (shade.frag.glsl), std140,
  * by name: every member is a vec4 array there, so the C layout (floats,
