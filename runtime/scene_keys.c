@@ -245,6 +245,7 @@ void hfs_scene_key_allowed_text(const hfs_scene_key *k, char *buf, size_t size)
 static size_t word_at(const hfs_scene_key *k, int i, const char **start)
 {
     const char *p = k->arg;
+    *start = "";
     for (; i > 0 && p; --i) {
         p = strchr(p, '|');
         p = p ? p + 1 : NULL;
