@@ -8,7 +8,7 @@
  * ratio, and the passes the planned frames ran.
  *
  *   bench_plan [--frames N] [--size N] [--only NAME] [--passes 1]
- *                                                    (defaults 30, 512, 0)
+ *              [--visibility legendre|wedge|slice]  (defaults 30, 512, 0, legendre)
  * --passes 1 also prints, per sequence, where a planned frame's time goes:
  * the median time of each pass it ran (timing level 1 by glFinish + clock,
  * hfs_renderer_set_timing_finish: llvmpipe's timer queries miss deferred
@@ -76,6 +76,9 @@ static void sky(hfs_lighting *l)
     }
 }
 
+/* --visibility: the path every sequence renders with. */
+static hfs_visibility_path vis_path = HFS_VIS_LEGENDRE;
+
 static int setup(seq *s, const char *name, int n)
 {
     memset(s, 0, sizeof *s);
@@ -88,6 +91,7 @@ static int setup(seq *s, const char *name, int n)
     hfs_lighting_defaults(&s->l);
     s->l.albedo = 0.8;
     hfs_quality_defaults(&s->q);
+    s->q.visibility = vis_path;
     if (!strcmp(name, "local-move")) {
         hfs_terrain_panel(s->z, n, n);
         const double f = n / 128.0;
@@ -156,6 +160,7 @@ static void edit(seq *s, int t)
 
 int main(int argc, char **argv)
 {
+    static const char *const paths[] = {"legendre", "wedge", "slice"};
     int frames = 30, size = 512, passes_too = 0;
     const char *only = NULL;
     for (int i = 1; i + 1 < argc; i += 2) {
@@ -167,6 +172,17 @@ int main(int argc, char **argv)
             only = argv[i + 1];
         else if (!strcmp(argv[i], "--passes"))
             passes_too = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--visibility")) {
+            vis_path = 0;
+            for (int p = 0; p < 3; ++p)
+                if (!strcmp(argv[i + 1], paths[p]))
+                    vis_path = p == 0 ? HFS_VIS_LEGENDRE
+                                      : p == 1 ? HFS_VIS_WEDGE_TABLE : HFS_VIS_SLICE;
+        }
+    }
+    if (!vis_path) {
+        fprintf(stderr, "bench_plan: --visibility is legendre, wedge or slice\n");
+        return 2;
     }
     if (frames < 1 || size < 16 || size > 2048) {
         fprintf(stderr, "usage: bench_plan [--frames N >= 1] [--size 16..2048] [--only NAME] "

@@ -6,6 +6,8 @@
 # invalidated).  Prints the median frame ms of each build and the median of
 # the per-round ratios B / A, as a Markdown table.
 # usage: tools/bench_gles_ab.sh BUILD_A BUILD_B [ROUNDS] [FRAMES]   (defaults 5 5)
+# AB_FLAGS_A / AB_FLAGS_B: extra render flags for each side, e.g. the same
+# build twice with AB_FLAGS_B="--visibility slice" compares two paths.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 A=${1:?usage: bench_gles_ab.sh BUILD_A BUILD_B [ROUNDS] [FRAMES]}
@@ -36,9 +38,9 @@ for cfg in "256² env+key sub 2|$C/f256.pfm|$SKY $SUN --subsample 2" \
     : >"$C/a" && : >"$C/b" && : >"$C/r"
     for ((i = 0; i < R; ++i)); do
         # shellcheck disable=SC2086
-        a=$(frame_ms "$A" --height "$field" $args --backend gles)
+        a=$(frame_ms "$A" --height "$field" $args --backend gles ${AB_FLAGS_A:-})
         # shellcheck disable=SC2086
-        b=$(frame_ms "$B" --height "$field" $args --backend gles)
+        b=$(frame_ms "$B" --height "$field" $args --backend gles ${AB_FLAGS_B:-})
         echo "$a" >>"$C/a"
         echo "$b" >>"$C/b"
         awk -v a="$a" -v b="$b" 'BEGIN {print b / a}' >>"$C/r"
