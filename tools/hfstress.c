@@ -2,7 +2,8 @@
  * hfstress — numerical stability under extremes (issue 5; docs/STRESS.md).
  *
  *   hfstress [--fast] [--case NAME[,NAME...]] [--backend LIST] [--list]
- *            [--subsample 1|2|4] [--lights env,key,local] [-v]
+ *            [--subsample 1|2|4] [--lights env,key,local]
+ *            [--visibility legendre|wedge|slice] [-v]
  *
  * Runs the cases of the table (hfstress_cases.c) on the backends cpu,
  * gles-fp16, gles-fp32 (gles-es32-* for fields beyond ES 3.0's 2048
@@ -64,6 +65,8 @@ typedef struct options {
     int want[BK_COUNT];
     int lights;          /* LIGHTS_* kept (diagnosis)                       */
     int subsample;       /* GLES grid step; 0: the product's default        */
+    int visibility;      /* --visibility: every case on this path; 0: each
+                            case's own                                       */
     const char *only[64];
     int n_only;
 } options;
@@ -87,12 +90,14 @@ static double now_s(void)
 static void usage(FILE *to)
 {
     fprintf(to, "usage: hfstress [--fast] [--case NAME[,NAME...]] [--backend LIST] [--list]\n"
-                "                [--subsample 1|2|4] [--lights env,key,local] [-v]\n"
+                "                [--subsample 1|2|4] [--lights env,key,local]\n"
+                "                [--visibility legendre|wedge|slice] [-v]\n"
                 "  --fast       the CI subset (ctest label \"stress\")\n"
                 "  --backend    comma-separated: cpu, gles (every GLES backend), gles-fp16,\n"
                 "               gles-fp32, gles-es32-fp16, gles-es32-fp32, truth, all (default)\n"
                 "  --subsample  GLES visibility grid step (default: the product's 2)\n"
                 "  --lights     keep only these light kinds (diagnosis)\n"
+                "  --visibility every case on this visibility path (default: each case's)\n"
                 "  -v           also print where the worst bound violation is\n");
 }
 
@@ -147,6 +152,17 @@ static int parse_args(int argc, char **argv, options *o)
             o->subsample = atoi(v);
             if (o->subsample != 1 && o->subsample != 2 && o->subsample != 4) {
                 fprintf(stderr, "hfstress: --subsample: '%s' is not 1, 2 or 4\n", v);
+                return -1;
+            }
+            ++i;
+        } else if (!strcmp(a, "--visibility") && v) {
+            o->visibility = !strcmp(v, "legendre") ? HFS_VIS_LEGENDRE
+                            : !strcmp(v, "wedge")  ? HFS_VIS_WEDGE_TABLE
+                            : !strcmp(v, "slice")  ? HFS_VIS_SLICE
+                                                   : 0;
+            if (!o->visibility) {
+                fprintf(stderr, "hfstress: --visibility: '%s' is not legendre, wedge or slice\n",
+                        v);
                 return -1;
             }
             ++i;
@@ -235,6 +251,8 @@ static int build(const runner *rn, const stress_case *c, double s, stress_scene 
         sc->l.n_key = 0;
     if (!(rn->o->lights & LIGHTS_LOCAL))
         sc->l.n_local = 0;
+    if (rn->o->visibility)
+        sc->q.visibility = (hfs_visibility_path)rn->o->visibility;
     return 0;
 }
 

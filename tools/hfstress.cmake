@@ -4,6 +4,8 @@
 # CI subset, registered here as the ctest label "stress":
 #   stress_fast_cpu   CPU reference and ground truth (always runs)
 #   stress_fast_gles  GLES fp16 and fp32 (exit 77 = skipped without a context)
+#   stress_fast_slice every case on the exact slice path (issue 15), CPU and
+#                     GLES (exit 77 = skipped without a context)
 add_executable(hfstress
   ${CMAKE_CURRENT_SOURCE_DIR}/hfstress.c
   ${CMAKE_CURRENT_SOURCE_DIR}/hfstress_backends.c
@@ -13,10 +15,11 @@ target_link_libraries(hfstress PRIVATE hfshade_lib hfshade_io hfs_terrain_gen hf
 
 add_test(NAME stress_fast_cpu COMMAND hfstress --fast --backend cpu,truth)
 add_test(NAME stress_fast_gles COMMAND hfstress --fast --backend gles)
-set_tests_properties(stress_fast_cpu stress_fast_gles PROPERTIES
+add_test(NAME stress_fast_slice COMMAND hfstress --fast --visibility slice --backend cpu,gles)
+set_tests_properties(stress_fast_cpu stress_fast_gles stress_fast_slice PROPERTIES
                      LABELS stress TIMEOUT 600 SKIP_RETURN_CODE 77)
 if(HFS_SANITIZE)
   # Mesa/LLVM allocations LSan reports at exit (tests/lsan.supp, as tests/gles.cmake).
-  set_property(TEST stress_fast_gles APPEND PROPERTY ENVIRONMENT
+  set_property(TEST stress_fast_gles stress_fast_slice APPEND PROPERTY ENVIRONMENT
                "LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
 endif()
