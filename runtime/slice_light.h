@@ -24,8 +24,9 @@
  * has degree <= 5, integrated in closed form from x: only x, cos kx and
  * sin kx (k <= 5) per slice and receiver.
  *
- * Shared by the CPU reference and (later) the GLES path: no state but the
- * table, no I/O.
+ * Used by the CPU reference (cpu_render.c); the GLES path writes the same
+ * closed forms in env_horizons.frag and packs this table into its swath
+ * block (gles/uniform_blocks.c).  No state but the table, no I/O.
  */
 #ifndef HFS_SLICE_LIGHT_H
 #define HFS_SLICE_LIGHT_H
@@ -48,7 +49,9 @@ typedef struct hfs_slice_table {
 int hfs_slice_table_init(hfs_slice_table *t, const hfs_swath *s, hfs_error *err);
 void hfs_slice_table_free(hfs_slice_table *t);
 
-/* Adds slice j's exact transfer, dphi S_k(phi_j) for k < 16, to T: normal
+/* Adds slice j's whole transfer, dphi S_k(phi_j) for k < 16, to T (the
+ * tests check the open hemisphere's sum against H(N) with it; rendering
+ * uses hfs_slice_add_occluded below): normal
  * n (unit, n_z > 0), horizon elevation x in [-pi/2, pi/2] (clamped). */
 void hfs_slice_add(const hfs_slice_table *t, int j, const double n[3], double x,
                    double T[HFS_SH_N]);

@@ -69,26 +69,36 @@ void hfs_gles_wedge_rot_set(hfs_gles_wedge_rot *r, double a, int mirror)
     r->mirror = (float)mirror;
 }
 
+/* The head and each sample's direction: the part of HfsSwath the Legendre,
+ * wedge and slice layouts share. */
+static void pack_head_dirs(const hfs_gles_layout *L, const hfs_swath *s,
+                           const hfs_gles_swath_block *b)
+{
+    b->head->elev_lo = (float)s->elev_lo;
+    b->head->elev_hi = (float)s->elev_hi;
+    b->head->n = (float)s->n;
+    b->head->full = (float)s->full;
+    double occ[HFS_NLP_N];
+    hfs_nlp_occlusion(s->elev_hi, occ);
+    for (int c = 0; c < 4; ++c)
+        b->head->occ_top[c] = (float)occ[c];
+    for (int j = 0; j < s->n; ++j) {
+        float cs[2];
+        const hfs_swath one = {.n = 1, .full = s->full, .phi0 = hfs_swath_phi(s, j), .dphi = s->dphi};
+        hfs_gles_swath_float_dirs(L, &one, cs);
+        b->dir[j].cos = cs[0];
+        b->dir[j].sin = cs[1];
+    }
+}
+
 void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, float *dst)
 {
     const hfs_swath *s = hfs_visibility_swath(v);
     const int n = s->n;
     memset(dst, 0, hfs_gles_swath_vec4(n) * 4 * sizeof *dst);
     const hfs_gles_swath_block b = hfs_gles_swath_view(dst, n);
-    b.head->elev_lo = (float)s->elev_lo;
-    b.head->elev_hi = (float)s->elev_hi;
-    b.head->n = (float)n;
-    b.head->full = (float)s->full;
-    double occ[HFS_NLP_N];
-    hfs_nlp_occlusion(s->elev_hi, occ);
-    for (int c = 0; c < 4; ++c)
-        b.head->occ_top[c] = (float)occ[c];
+    pack_head_dirs(L, s, &b);
     for (int j = 0; j < n; ++j) {
-        float cs[2];
-        const hfs_swath one = {.n = 1, .full = s->full, .phi0 = hfs_swath_phi(s, j), .dphi = s->dphi};
-        hfs_gles_swath_float_dirs(L, &one, cs);
-        b.dir[j].cos = cs[0];
-        b.dir[j].sin = cs[1];
         const double *m = hfs_visibility_sample_matrix(v, j);
         double frob = 0.0;
         if (m)
@@ -122,19 +132,8 @@ void hfs_gles_pack_slices(const hfs_gles_layout *L, const hfs_visibility *v,
     const hfs_swath *s = hfs_visibility_swath(v);
     const int n = s->n;
     memset(dst, 0, hfs_gles_slices_vec4(n) * 4 * sizeof *dst);
-    /* The head and the directions exactly as the swath block's. */
-    hfs_gles_swath_block b = hfs_gles_swath_view(dst, n);
-    b.head->elev_lo = (float)s->elev_lo;
-    b.head->elev_hi = (float)s->elev_hi;
-    b.head->n = (float)n;
-    b.head->full = (float)s->full;
-    for (int j = 0; j < n; ++j) {
-        float cs[2];
-        const hfs_swath one = {.n = 1, .full = s->full, .phi0 = hfs_swath_phi(s, j), .dphi = s->dphi};
-        hfs_gles_swath_float_dirs(L, &one, cs);
-        b.dir[j].cos = cs[0];
-        b.dir[j].sin = cs[1];
-    }
+    const hfs_gles_swath_block b = hfs_gles_swath_view(dst, n);
+    pack_head_dirs(L, s, &b);
     float *p = (float *)(b.dir + n);
     for (int j = 0; j < n; ++j)
         for (int m = 0; m < HFS_SLICE_F; ++m)
