@@ -19,7 +19,7 @@
  *   4  sin 2e   Js2 / 2 + Js4 / 4                   (J0 - Jc4) / 4
  *   5  cos 3e   Jc1 / 4 + Jc3 / 2 + Jc5 / 4         (Js5 - Js1) / 4
  *   6  sin 3e   Js1 / 4 + Js3 / 2 + Js5 / 4         (Jc1 - Jc5) / 4
- * and g_m = a A_m + b B_m.  shaders_es/env_horizons.frag (HFS_SLICE) writes
+ * and g_m = a A_m + b B_m.  shaders_es/gles_lib.frag (hfs_slice_g) writes
  * the same table. */
 void hfs_slice_integrals(double a, double b, double x, double g[HFS_SLICE_F])
 {
@@ -49,6 +49,60 @@ void hfs_slice_integrals(double a, double b, double x, double g[HFS_SLICE_F])
         g[m] = a * A[m] + b * B[m];
 }
 
+/* p[k][m]: Y_k along the vertical great circle of direction (c, sn) in the
+ * basis f_m, by an exact DFT of the degree-3 trigonometric polynomial (8
+ * samples). */
+static void profile_at(double c, double sn, double *p)
+{
+    double y[8][HFS_SH_N];
+    for (int q = 0; q < 8; ++q) {
+        const double e = 2.0 * PI * q / 8.0;
+        hfs_sh_eval(cos(e) * c, cos(e) * sn, sin(e), y[q]);
+    }
+    for (int k = 0; k < HFS_SH_N; ++k) {
+        double sum0 = 0.0;
+        for (int q = 0; q < 8; ++q)
+            sum0 += y[q][k];
+        p[k * HFS_SLICE_F] = sum0 / 8.0;
+        for (int m = 1; m <= 3; ++m) {
+            double sc = 0.0, ss = 0.0;
+            for (int q = 0; q < 8; ++q) {
+                const double e = 2.0 * PI * q / 8.0;
+                sc += y[q][k] * cos(m * e);
+                ss += y[q][k] * sin(m * e);
+            }
+            p[k * HFS_SLICE_F + 2 * m - 1] = sc / 4.0;
+            p[k * HFS_SLICE_F + 2 * m] = ss / 4.0;
+        }
+    }
+}
+
+int hfs_slice_order(int k)
+{
+    const int l = (int)floor(sqrt((double)k) + 1e-9);
+    return k - l * (l + 1);
+}
+
+double hfs_slice_trig(int k, double phi)
+{
+    const int m = hfs_slice_order(k);
+    return m == 0 ? 1.0 : (m > 0 ? cos(m * phi) : sin(-m * phi));
+}
+
+void hfs_slice_profile(double a[HFS_SH_N][HFS_SLICE_F])
+{
+    for (int k = 0; k < HFS_SH_N; ++k) {
+        /* Where the azimuthal factor is 1: phi = 0 for cos(m phi) and the
+         * zonal ones, pi / (2|m|) for sin(|m| phi). */
+        const int m = hfs_slice_order(k);
+        const double phi = m < 0 ? PI / (2.0 * -m) : 0.0;
+        double p[HFS_SH_N * HFS_SLICE_F];
+        profile_at(cos(phi), sin(phi), p);
+        for (int f = 0; f < HFS_SLICE_F; ++f)
+            a[k][f] = p[k * HFS_SLICE_F + f];
+    }
+}
+
 int hfs_slice_table_init(hfs_slice_table *t, const hfs_swath *s, hfs_error *err)
 {
     t->n = s->n;
@@ -68,29 +122,7 @@ int hfs_slice_table_init(hfs_slice_table *t, const hfs_swath *s, hfs_error *err)
         sn = fabs(sn) < 1e-12 ? 0.0 : sn;
         t->dir[2 * j] = c;
         t->dir[2 * j + 1] = sn;
-        /* Exact DFT of a degree-3 trigonometric polynomial: 8 samples. */
-        double y[8][HFS_SH_N];
-        for (int q = 0; q < 8; ++q) {
-            const double e = 2.0 * PI * q / 8.0;
-            hfs_sh_eval(cos(e) * c, cos(e) * sn, sin(e), y[q]);
-        }
-        double *p = t->p + (size_t)j * HFS_SH_N * HFS_SLICE_F;
-        for (int k = 0; k < HFS_SH_N; ++k) {
-            double sum0 = 0.0;
-            for (int q = 0; q < 8; ++q)
-                sum0 += y[q][k];
-            p[k * HFS_SLICE_F] = sum0 / 8.0;
-            for (int m = 1; m <= 3; ++m) {
-                double sc = 0.0, ss = 0.0;
-                for (int q = 0; q < 8; ++q) {
-                    const double e = 2.0 * PI * q / 8.0;
-                    sc += y[q][k] * cos(m * e);
-                    ss += y[q][k] * sin(m * e);
-                }
-                p[k * HFS_SLICE_F + 2 * m - 1] = sc / 4.0;
-                p[k * HFS_SLICE_F + 2 * m] = ss / 4.0;
-            }
-        }
+        profile_at(c, sn, t->p + (size_t)j * HFS_SH_N * HFS_SLICE_F);
     }
     return HFS_OK;
 }

@@ -25,8 +25,9 @@
  * sin kx (k <= 5) per slice and receiver.
  *
  * Used by the CPU reference (cpu_render.c); the GLES path writes the same
- * closed forms in env_horizons.frag and packs this table into its swath
- * block (gles/uniform_blocks.c).  No state but the table, no I/O.
+ * closed forms (gles_lib.frag hfs_slice_g) and contracts them in the
+ * factored form below (env_slices.frag, gles/uniform_blocks.c).  No state
+ * but the table, no I/O.
  */
 #ifndef HFS_SLICE_LIGHT_H
 #define HFS_SLICE_LIGHT_H
@@ -63,6 +64,15 @@ void hfs_slice_add(const hfs_slice_table *t, int j, const double n[3], double x,
  * compute. */
 void hfs_slice_add_occluded(const hfs_slice_table *t, int j, const double n[3], double x,
                             double T[HFS_SH_N]);
+
+/* The factored form the GLES path uses (uniform_blocks.c, env_slices.frag):
+ * Y_k along the slice of azimuth phi is trig_k(phi) * sum_m a[k][m] f_m(e),
+ * trig_k = 1, cos(m phi) or sin(|m| phi) for k's order m = 0, > 0, < 0
+ * (real SH, SPEC), so P_km(phi) = trig_k(phi) a[k][m] (test_slice_light
+ * checks it).  a is sparse: each k's profile has at most two terms. */
+void hfs_slice_profile(double a[HFS_SH_N][HFS_SLICE_F]);
+int hfs_slice_order(int k);            /* m of k = l(l+1) + m */
+double hfs_slice_trig(int k, double phi);
 
 /* The 7 slice integrals g_m = Int_x^{pi/2} f_m(e) (a cos e + b sin e) cos e
  * de (exposed for the tests). */

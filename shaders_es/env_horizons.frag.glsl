@@ -24,6 +24,14 @@
  * only follows the normal is then exact at every texel, and only the
  * terrain's occlusion is interpolated.
  *
+ * HFS_SLICE (exact slice lighting, runtime/slice_light.h): instead of V,
+ * the horizon elevations themselves, directions [u_dir0, u_dir0 + 16),
+ * four per target (a layer each of the grid's horizon array); the
+ * full-resolution pass env_slices.frag integrates them with each texel's
+ * own normal.  On a sub-sampled grid the u_near finest scales are left to
+ * that pass too (they differ from texel to texel), and the search starts
+ * below any tangent plane, since the receivers that read it have their own.
+ *
  * HFS_COUNT: instead of V, write the number of texture fetches made
  * (o_v0 = (count mod 1024, floor(count / 1024), 0, 0)), for measurement.
  */
@@ -33,6 +41,7 @@
 // hfs-variant: HFS_SWATH_TEX 1, HFS_TABLES 1
 // hfs-variant: HFS_SLICE 1
 // hfs-variant: HFS_SLICE 1, HFS_SWATH_TEX 1
+// hfs-variant: HFS_SLICE 1, HFS_COUNT 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -81,6 +90,10 @@ uniform float u_vmax;                    /* largest normalized height, a hair up
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
 };
+#ifdef HFS_SLICE
+uniform int u_dir0;                      /* first direction of this draw */
+uniform int u_near;                      /* finest scales left to env_slices.frag */
+#endif
 #ifdef HFS_SWATH_TEX
 /* The same data from a texture (too large for a uniform block): vec4 i of
  * the block below is SW(i). */
@@ -92,20 +105,19 @@ uniform highp usampler2D u_swath_tex;
 #define SW_C(k) mat4(SW(2 + HFS_NDIR + 4 * (k)), SW(3 + HFS_NDIR + 4 * (k)), \
                      SW(4 + HFS_NDIR + 4 * (k)), SW(5 + HFS_NDIR + 4 * (k)))
 #define SW_ROT(i) SW(2 + 17 * HFS_NDIR + (i))
-#define SW_P(i) SW(2 + HFS_NDIR + (i))
 #else
 layout(std140) uniform HfsSwath {
     vec4 u_win;                          /* (elev_lo, elev_hi, n, full) */
     vec4 u_occtop;
     vec4 u_dir[HFS_NDIR];                /* (cos, sin, 0, 0) */
 #ifdef HFS_SLICE
-    vec4 u_P[28 * HFS_NDIR];             /* dphi P_km(phi_j): vec4 28 j + 4 m + k/4 */
+    vec4 u_coef[16];                     /* read by env_slices.frag */
+    vec4 u_nearw[3 * HFS_NDIR];
 #else
     mat4 u_C[HFS_NDIR * 4];              /* folded M_lin, rows as columns */
     vec4 u_rot[2 * HFS_NDIR + 2];        /* per wedge (cos ma, mirror), (sin ma) */
 #endif
 };
-#define SW_P(i) u_P[i]
 #define SW_OCCTOP u_occtop
 #define SW_DIR(j) u_dir[j]
 #define SW_C(k) u_C[k]
@@ -127,47 +139,62 @@ void add_wedge(inout vec4 V[4], float a, float b, int w)
 }
 #endif
 
-#ifdef HFS_SLICE
-/* Exact slice lighting (runtime/slice_light.h): g[m] = Int_x^{pi/2} f_m(e)
- * (a cos e + b sin e) cos e de, f = (1, cos e, sin e, cos 2e, sin 2e,
- * cos 3e, sin 3e), in closed form (the table of slice_light.c). */
-void slice_g(float a, float b, float x, out float g[7])
+
+/* The largest slope tan(omega) in direction cs over the scales from
+ * `first` (finest searched) to the coarsest in the grid, not below `best`;
+ * counts its fetches. */
+float horizon_tan(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], float best, int first,
+                  inout int fetches)
 {
-    float c1 = cos(x), s1 = sin(x);
-    float c2 = c1 * c1 - s1 * s1, s2 = 2.0 * s1 * c1;
-    float c3 = c2 * c1 - s2 * s1, s3 = s2 * c1 + c2 * s1;
-    float c4 = c3 * c1 - s3 * s1, s4 = s3 * c1 + c3 * s1;
-    float c5 = c4 * c1 - s4 * s1, s5 = s4 * c1 + c4 * s1;
-    float J0 = HFS_HALF_PI - x;
-    float Jc1 = 1.0 - s1, Js1 = c1;
-    float Jc2 = -s2 / 2.0, Js2 = (c2 + 1.0) / 2.0;
-    float Jc3 = (-1.0 - s3) / 3.0, Js3 = c3 / 3.0;
-    float Jc4 = -s4 / 4.0, Js4 = (c4 - 1.0) / 4.0;
-    float Jc5 = (1.0 - s5) / 5.0, Js5 = c5 / 5.0;
-    g[0] = a * (J0 + Jc2) / 2.0 + b * Js2 / 2.0;
-    g[1] = a * (3.0 * Jc1 + Jc3) / 4.0 + b * (Js1 + Js3) / 4.0;
-    g[2] = a * (Js1 + Js3) / 4.0 + b * (Jc1 - Jc3) / 4.0;
-    g[3] = a * (J0 / 4.0 + Jc2 / 2.0 + Jc4 / 4.0) + b * Js4 / 4.0;
-    g[4] = a * (Js2 / 2.0 + Js4 / 4.0) + b * (J0 - Jc4) / 4.0;
-    g[5] = a * (Jc1 / 4.0 + Jc3 / 2.0 + Jc5 / 4.0) + b * (Js5 - Js1) / 4.0;
-    g[6] = a * (Js1 / 4.0 + Js3 / 2.0 + Js5 / 4.0) + b * (Jc1 - Jc5) / 4.0;
+    for (int i = first; i >= 0; --i) {
+        vec4 sc = u_scale[i];
+        vec2 o;
+        if (!hfs_scale_offset(g, u_size, sc.x, cs, o))
+            break;
+        vec2 h = hx[int(sc.z)];
+        if ((u_vmax - hfs_h(h)) * sc.y <= best)
+            continue;
+        best = max(best, hfs_scale_slope(u_levels, g, u_size, o, sc, h));
+        ++fetches;
+    }
+    return best;
 }
 
-/* V += the occluded part of slice j: the transfer between the tangent
- * plane (tan tf) and the horizon (tan tx), negated. */
-void slice_add(int j, float a, float b, float tf, float tx, inout vec4 V[4])
+/* The fetch count (HFS_COUNT) in place of the pass's output. */
+void write_count(int fetches)
 {
-    float gx[7], gf[7];
-    slice_g(a, b, atan(tx), gx);
-    slice_g(a, b, atan(tf), gf);
-    for (int m = 0; m < 7; ++m) {
-        float d = gx[m] - gf[m];
-        int base = 28 * j + 4 * m;
-        V[0] += d * SW_P(base);
-        V[1] += d * SW_P(base + 1);
-        V[2] += d * SW_P(base + 2);
-        V[3] += d * SW_P(base + 3);
+    o_v0 = vec4(float(fetches % 1024), float(fetches / 1024), 0.0, 0.0);
+    o_v1 = vec4(0.0);
+    o_v2 = vec4(0.0);
+    o_v3 = vec4(0.0);
+}
+
+#ifdef HFS_SLICE
+/* Slice path: 16 horizon elevations, -pi/2 where nothing rises (and past
+ * the swath's last direction). */
+void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
+{
+    float om[16];
+    for (int q = 0; q < 16; ++q) {
+        om[q] = -HFS_HALF_PI;
+        int j = u_dir0 + q;
+        if (j >= HFS_NDIR)
+            continue;
+        vec2 cs = SW_DIR(j).xy;
+        /* A receiver that is its own grid point starts at its tangent
+         * plane (a slope below it never wins); the others below any. */
+        float best = u_sub == 1 ? -(n.x * cs.x + n.y * cs.y) / n.z : -1e30;
+        best = horizon_tan(g, cs, hx, best, HFS_NLEV - 1 - u_near, fetches);
+        om[q] = clamp(atan(best), -HFS_HALF_PI, HFS_HALF_PI);
     }
+#ifdef HFS_COUNT
+    write_count(fetches);
+#else
+    o_v0 = hfs_f16v(vec4(om[0], om[1], om[2], om[3]));
+    o_v1 = hfs_f16v(vec4(om[4], om[5], om[6], om[7]));
+    o_v2 = hfs_f16v(vec4(om[8], om[9], om[10], om[11]));
+    o_v3 = hfs_f16v(vec4(om[12], om[13], om[14], om[15]));
+#endif
 }
 #endif
 
@@ -178,7 +205,9 @@ void main()
     vec2 hx[HFS_NLAYERS];
     hfs_receiver_heights(u_levels, g, hx);
     int fetches = 1 + HFS_NLAYERS;
-
+#ifdef HFS_SLICE
+    write_horizons(g, n, hx, fetches);
+#else
     vec4 V[4];
     for (int q = 0; q < 4; ++q)
         V[q] = vec4(0.0);
@@ -188,18 +217,8 @@ void main()
     for (int j = 0; j < HFS_NDIR; ++j) {
         vec2 cs = SW_DIR(j).xy;
         /* Start at tan(floor): a slope below the tangent plane never wins. */
-        float best = -(n.x * cs.x + n.y * cs.y) / n.z;
-        for (int i = HFS_NLEV - 1; i >= 0; --i) {
-            vec4 sc = u_scale[i];
-            vec2 o;
-            if (!hfs_scale_offset(g, u_size, sc.x, cs, o))
-                break;
-            vec2 h = hx[int(sc.z)];
-            if ((u_vmax - hfs_h(h)) * sc.y <= best)
-                continue;
-            best = max(best, hfs_scale_slope(u_levels, g, u_size, o, sc, h));
-            ++fetches;
-        }
+        float best = horizon_tan(g, cs, hx, -(n.x * cs.x + n.y * cs.y) / n.z, HFS_NLEV - 1,
+                                 fetches);
 #ifdef HFS_TABLES
         float om = clamp(atan(best), -HFS_HALF_PI, HFS_HALF_PI);
         if (j == 0) {
@@ -209,12 +228,6 @@ void main()
             fetches += 4;
         }
         om_prev = om;
-#elif defined(HFS_SLICE)
-        /* Exact: only slices whose horizon rises above the tangent plane
-         * carry an occluded part (0 exactly elsewhere). */
-        float tfl = -(n.x * cs.x + n.y * cs.y) / n.z;
-        if (best > tfl)
-            slice_add(j, n.x * cs.x + n.y * cs.y, n.z, tfl, best, V);
 #else
         /* The environment's window is the whole [-pi/2, pi/2]: the visible
          * band is (omega, pi/2], and its NLP vector needs only sin(omega)
@@ -231,20 +244,16 @@ void main()
     fetches += 4;
 #endif
 #ifdef HFS_COUNT
-    o_v0 = vec4(float(fetches % 1024), float(fetches / 1024), 0.0, 0.0);
-    o_v1 = vec4(0.0);
-    o_v2 = vec4(0.0);
-    o_v3 = vec4(0.0);
+    write_count(fetches);
 #else
-#ifndef HFS_SLICE /* the slices' V is already the occluded transfer */
     vec4 hemi[4];
     hfs_sh_hemisphere(n, hemi);
     for (int q = 0; q < 4; ++q)
         V[q] -= hemi[q];
-#endif
     o_v0 = hfs_f16v(V[0]);
     o_v1 = hfs_f16v(V[1]);
     o_v2 = hfs_f16v(V[2]);
     o_v3 = hfs_f16v(V[3]);
+#endif
 #endif
 }

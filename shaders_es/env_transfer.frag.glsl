@@ -16,7 +16,6 @@
  * driver converts float to half.
  */
 // hfs-variant: HFS_FP32 1
-// hfs-variant: HFS_SLICE 1
 
 precision highp float;
 precision highp int;
@@ -55,16 +54,7 @@ void main()
     V[2] = texture(u_v2, uv);
     V[3] = texture(u_v3, uv);
     vec4 T[4];
-#ifdef HFS_SLICE
-    /* Exact slices: the grid holds the occluded transfer itself
-     * (env_horizons.frag), interpolated here. */
-    T[0] = V[0];
-    T[1] = V[1];
-    T[2] = V[2];
-    T[3] = V[3];
-#else
     hfs_sh_product(H, V, T);
-#endif
     o_t0 = hfs_f16v(T[0]);
     o_t1 = hfs_f16v(T[1]);
     o_t2 = hfs_f16v(T[2]);

@@ -810,6 +810,7 @@ static int mode_sub(int argc, char **argv)
     const int sub = atoi(argv[3]);
     const double max_grid = atof(argv[4]), max_mean = atof(argv[5]), max_max = atof(argv[6]);
     const char *lights = argc > 7 ? argv[7] : "both";
+    const int slice = argc > 8 && !strcmp(argv[8], "slice");
     const int n = !strcmp(name, "dem") ? 96 : 64;
     scene s;
     if (scene_make(name, n, HFS_DATA_DIR, &s))
@@ -817,6 +818,8 @@ static int mode_sub(int argc, char **argv)
     hfs_renderer *r = gles_or_skip(NULL);
     hfs_lighting l = scene_lighting(strcmp(lights, "key") != 0, strcmp(lights, "env") != 0);
     hfs_quality q1 = quality("fp16", "legendre", 1), qs = quality("fp16", "legendre", sub);
+    if (slice)
+        q1.visibility = qs.visibility = HFS_VIS_SLICE;
     hfs_image a = {0}, b = {0};
     if (!render(r, &s, &l, &q1, &a) && !render(r, &s, &l, &qs, &b)) {
         hfs_metrics m = compare(&s, &l, &q1, &b, &a);
@@ -840,9 +843,10 @@ static int mode_sub(int argc, char **argv)
                     differ += !eq;
                 }
             }
-        printf("%s %dx%d %s subsample %d vs 1: %ld of %ld grid texels bit-equal (largest "
+        printf("%s %dx%d %s%s subsample %d vs 1: %ld of %ld grid texels bit-equal (largest "
                "difference %.3e at (%d, %d), bound %.1e), %ld others differ; mean %.3e rmse %.3e "
-               "p99 %.3e max %.3e (bounds %.2e %.2e)\n", name, n, n, lights, sub, same, grid,
+               "p99 %.3e max %.3e (bounds %.2e %.2e)\n", name, n, n, lights, slice ? " slice" : "",
+               sub, same, grid,
                grid_max, gi, gj, max_grid, differ, m.mean_abs, m.rmse, m.p99_abs, m.max_abs,
                max_mean, max_max);
         CHECK(m.nonfinite == 0, "%ld non-finite outputs", m.nonfinite);

@@ -43,6 +43,46 @@ static void full_swath(int n, hfs_swath *s)
     hfs_swath_full(n, s);
 }
 
+/* The factored form the GLES path contracts (slice_light.h
+ * hfs_slice_profile): every slice's P_km(phi_j) is trig_k(phi_j) a[k][m],
+ * and a has no term outside the slots env_slices.frag accumulates for k's
+ * azimuthal factor (uniform_blocks.h: |m| 0 and 2: f 0, 2, 3, 6; |m| 1:
+ * f 1, 4, 5; |m| 3: f 1, 5). */
+static void check_profile(void)
+{
+    static const int slots[4][HFS_SLICE_F] = {{1, 0, 1, 1, 0, 0, 1}, {0, 1, 0, 0, 1, 1, 0},
+                                              {1, 0, 1, 1, 0, 0, 1}, {0, 1, 0, 0, 0, 1, 0}};
+    double a[HFS_SH_N][HFS_SLICE_F];
+    hfs_slice_profile(a);
+    double worst = 0.0, outside = 0.0;
+    for (int n = 3; n <= 37; n += 17) {
+        hfs_swath sw;
+        hfs_slice_table t;
+        hfs_error err;
+        full_swath(n, &sw);
+        if (hfs_slice_table_init(&t, &sw, &err)) {
+            CHECK(0, "slice table: %s", err.msg);
+            return;
+        }
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < HFS_SH_N; ++k)
+                for (int m = 0; m < HFS_SLICE_F; ++m) {
+                    const double p = t.p[((size_t)j * HFS_SH_N + k) * HFS_SLICE_F + m];
+                    const double f = hfs_slice_trig(k, hfs_swath_phi(&sw, j)) * a[k][m];
+                    worst = fmax(worst, fabs(p - f));
+                }
+        hfs_slice_table_free(&t);
+    }
+    for (int k = 0; k < HFS_SH_N; ++k)
+        for (int m = 0; m < HFS_SLICE_F; ++m)
+            if (!slots[abs(hfs_slice_order(k))][m])
+                outside = fmax(outside, fabs(a[k][m]));
+    printf("profile: max |P - trig a| %.3e, largest term outside the slots %.3e\n", worst,
+           outside);
+    CHECK(worst < 1e-14, "P_km(phi_j) != trig_k a_km: %.3e", worst);
+    CHECK(outside < 1e-15, "a profile term outside the shader's slots: %.3e", outside);
+}
+
 int main(void)
 {
     double gx[64], gw[64];
@@ -139,6 +179,7 @@ int main(void)
         hfs_slice_table_free(&t);
     }
     CHECK(prev < 1e-12, "open tilted receiver, 1024 slices: %.3e from H", prev);
+    check_profile();
     printf("slice light: %s\n", failures ? "FAILED" : "ok");
     return failures ? 1 : 0;
 }

@@ -52,6 +52,8 @@ struct hfs_gles_frame {
     hfs_gles_layout L;
     int tables;                           /* the wedge-table visibility path */
     int slice;                            /* exact slice lighting (slice_light.h) */
+    int hor_layers;                       /* slice path: grid horizon layers (4 dirs each) */
+    int env_near;                         /* slice path: 1 if the finest scale is per texel */
     int has_env, n_keys;
     hfs_gles_frame_key keys[HFS_MAX_KEY_LIGHTS];
     double l_env[3][HFS_SH_N];            /* rotated environment SH */
@@ -125,6 +127,10 @@ const char *hfs_gles_terrain_change(const hfs_gles *g, const hfs_field *f, const
 
 /* Binds the textures every grid pass reads (levels, normals) and the
  * per-scale constants, and sets the grid uniforms. */
+/* The environment's swath (HfsSwath, or its block texture) for prog
+ * (pass_env_horizons.c uploads it). */
+int hfs_gles_bind_env_swath(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_program *prog,
+                            hfs_error *err);
 int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
                               const hfs_gles_layout *L, hfs_error *err);
 /* Draws the bound program over the grid into `outs` layers of array

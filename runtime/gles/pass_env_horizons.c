@@ -3,13 +3,25 @@
  * grid (env_horizons.frag): per receiver the horizon in each direction of
  * the full swath (q->nphi_env), projected to order-4 SH (folded Legendre
  * matrices, or wedge tables on the table path), written as 4 RGBA targets
- * (DESIGN.md "Horizons", "GLES path").  Kept with the terrain while the
- * environment's settings do not change: a turned or re-tinted environment
- * does not rerun it.
+ * (DESIGN.md "Horizons", "GLES path"); on the slice path the horizon
+ * elevations themselves, 16 directions a draw into the grid's horizon
+ * array, for env_slices.frag (pass_env_transfer.c).  Kept with the terrain
+ * while the environment's settings do not change: a turned or re-tinted
+ * environment does not rerun it.
  */
 #include "gles_backend.h"
 
 #include "gl_util.h"
+
+#define SLICE_DIRS_PER_DRAW 16 /* 4 RGBA targets (ES 3.0's minimum) x 4 */
+
+/* Slice path on a sub-sampled grid: the finest scale (distance 1) is
+ * searched at each texel instead of at the grid (env_slices.frag says why;
+ * measured in BENCHMARKS.md, "Exact slice lighting"). */
+static int near_scales(const hfs_gles_layout *L)
+{
+    return L->sub > 1 && L->n_levels > 1 ? 1 : 0;
+}
 
 static int present(const hfs_gles_frame *fr)
 {
@@ -27,6 +39,17 @@ static size_t block_vec4(const hfs_gles_frame *fr)
 static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     const size_t n4 = block_vec4(fr);
+    int rc;
+    fr->hor_layers = 0;
+    fr->env_near = 0;
+    if (fr->slice) {
+        const int groups = (fr->q->nphi_env + SLICE_DIRS_PER_DRAW - 1) / SLICE_DIRS_PER_DRAW;
+        fr->hor_layers = groups * 4;
+        fr->env_near = near_scales(&fr->L);
+        if ((rc = hfs_gl_caps_check_texture(&g->caps, fr->L.vw, fr->L.vh, fr->hor_layers,
+                                            "environment horizons (--nphi-env)", err)))
+            return rc;
+    }
     fr->env_swath_tex = hfs_gles_block_too_big(&g->caps, n4);
     return fr->env_swath_tex
                ? hfs_gles_block_texture_check(&g->caps, n4, "environment swath (--nphi-env)", err)
@@ -84,9 +107,21 @@ static int prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
                               scratch, err);
 }
 
-/* The pass (count = 1: its counting twin) into the visibility targets. */
-static int draw(hfs_gles *g, const hfs_gles_frame *fr, int count, hfs_error *err)
+int hfs_gles_bind_env_swath(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_program *prog,
+                            hfs_error *err)
 {
+    if (fr->env_swath_tex)
+        return hfs_gles_program_texture(&g->gl, prog, "u_swath_tex", GL_TEXTURE_2D,
+                                        g->env_swath_tex.tex, err);
+    g->gl.BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SWATH, g->ubo[HFS_UBO_ENV_SWATH]);
+    return HFS_OK;
+}
+
+/* The pass (fetch_sum: its counting twin, the fetches added there) into
+ * the visibility targets, or the slice path's horizon layers. */
+static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_error *err)
+{
+    const int count = fetch_sum != NULL;
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
@@ -103,22 +138,27 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, int count, hfs_error *err
     /* A hair above the largest height: rounding in the pyramid's hi+lo
      * pairs and the bilinear filter must never make the bound too tight. */
     hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
-    if (fr->env_swath_tex)
-        rc = hfs_gles_program_texture(gl, prog, "u_swath_tex", GL_TEXTURE_2D,
-                                      g->env_swath_tex.tex, err);
-    else
-        gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SWATH, g->ubo[HFS_UBO_ENV_SWATH]);
-    if (rc)
+    if ((rc = hfs_gles_bind_env_swath(g, fr, prog, err)))
         return rc;
-    hfs_gles_draw(gl, g->r.venv_fbo, L->vw, L->vh);
+    if (!fr->slice) {
+        hfs_gles_draw(gl, g->r.venv_fbo, L->vw, L->vh);
+        if (fetch_sum)
+            rc = hfs_gles_sum_counts(g, L, g->r.venv_fbo, fetch_sum, err);
+    }
+    hfs_gles_set_i1(gl, prog, "u_near", fr->env_near);
+    for (int d0 = 0; fr->slice && !rc && d0 < g->env_vis_n; d0 += SLICE_DIRS_PER_DRAW) {
+        hfs_gles_set_i1(gl, prog, "u_dir0", d0);
+        rc = hfs_gles_draw_grid_layers(g, L, g->r.hor_fbo, g->r.hor, d0 / 4, 4,
+                                       "environment horizons", fetch_sum, err);
+    }
     gl->UseProgram(0);
-    return hfs_gl_check(gl, "backend gles: env pass", err);
+    return rc ? rc : hfs_gl_check(gl, "backend gles: env pass", err);
 }
 
 static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
 {
     (void)which;
-    int rc = draw(g, fr, 0, err);
+    int rc = draw(g, fr, NULL, err);
     if (!rc)
         g->stats.env_recomputed = 1;
     return rc;
@@ -126,8 +166,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
 
 static int count(hfs_gles *g, hfs_gles_frame *fr, double *fetches, hfs_error *err)
 {
-    int rc = draw(g, fr, 1, err);
-    return rc ? rc : hfs_gles_sum_counts(g, &fr->L, g->r.venv_fbo, fetches, err);
+    return draw(g, fr, fetches, err);
 }
 
 const hfs_gles_pass hfs_pass_env_horizons = {

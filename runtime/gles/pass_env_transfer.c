@@ -1,15 +1,17 @@
 /*
  * pass_env_transfer.c — the environment's transfer vectors at full
- * resolution (env_transfer.frag): per texel the occluded part of
- * T = H(N) * V_env, the SH product of its clamped cosine and the grid's
- * visibility interpolated to it.  Independent of the environment's radiance
- * and rotation: a turned or re-tinted sky costs the shading's dot products
- * only.
+ * resolution: per texel the occluded part of T = H(N) * V_env, the SH
+ * product of its clamped cosine and the grid's visibility interpolated to
+ * it (env_transfer.frag); on the slice path the exact slice integrals above
+ * the grid's horizons and the texel's own near ones (env_slices.frag).
+ * Independent of the environment's radiance and rotation: a turned or
+ * re-tinted sky costs the shading's dot products only.
  */
 #include "gles_backend.h"
 
 #include "gl_util.h"
 
+#include <math.h>
 #include <stdio.h>
 
 static int present(const hfs_gles_frame *fr)
@@ -17,12 +19,39 @@ static int present(const hfs_gles_frame *fr)
     return fr->has_env;
 }
 
+/* The slice path: env_slices.frag from the grid's horizons. */
+static int run_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    const hfs_gles_layout *L = &fr->L;
+    const hfs_gles_variant v = {.n_levels = L->n_levels, .n_dir = g->env_vis_n,
+                                .fp32 = g->caps.fp32, .swath_tex = fr->env_swath_tex};
+    const hfs_gles_program *prog;
+    int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_SLICES, &v, &prog, err);
+    if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_hor", GL_TEXTURE_2D_ARRAY, g->r.hor, err)) ||
+        (rc = hfs_gles_bind_env_swath(g, fr, prog, err)))
+        return rc;
+    hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
+    hfs_gles_set_i1(gl, prog, "u_near", fr->env_near);
+    hfs_gles_draw(gl, g->r.transfer_fbo, L->w, L->h);
+    gl->UseProgram(0);
+    /* Per texel: normal, a horizon layer per 4 directions, and with the
+     * near scale its own height and 9 neighbours. */
+    hfs_gles_stage_fetches(g, HFS_PASS_ENV_TRANSFER, 0,
+                           (double)L->w * L->h *
+                               (1.0 + ceil(g->env_vis_n / 4.0) + 10.0 * fr->env_near));
+    return hfs_gl_check(gl, "backend gles: slice transfer pass", err);
+}
+
 static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
 {
     (void)which;
+    if (fr->slice)
+        return run_slices(g, fr, err);
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
-    const hfs_gles_variant v = {.fp32 = g->caps.fp32, .slice = fr->slice};
+    const hfs_gles_variant v = {.fp32 = g->caps.fp32};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_TRANSFER, &v, &prog, err);
     if (rc ||

@@ -101,6 +101,9 @@ static void grid_free(hfs_gles_resources *r, const hfs_gl *gl)
     for (int i = 0; i < 4; ++i)
         hfs_gles_tex_delete(gl, &r->venv[i]);
     fbo_delete(gl, &r->venv_fbo);
+    hfs_gles_tex_delete(gl, &r->hor);
+    r->hor_layers = 0;
+    r->hor_bytes = 0;
     hfs_gles_tex_delete(gl, &r->keyhz);
     r->keyhz_layers = 0;
     r->keyhz_bytes = 0;
@@ -129,6 +132,7 @@ void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
     hfs_gles_tex_delete(gl, &r->out[1]);
     fbo_delete(gl, &r->out_fbo);
     fbo_delete(gl, &r->out_lo_fbo);
+    fbo_delete(gl, &r->hor_fbo);
     fbo_delete(gl, &r->keyhz_fbo);
     fbo_delete(gl, &r->localv_fbo);
     for (int i = 0; i < 4; ++i)
@@ -207,6 +211,7 @@ static int terrain_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_c
     if ((rc = hfs_gles_fbo_new(gl, &r->transfer_fbo, 4, r->transfer, NULL, "env transfer",
                                err)))
         return rc;
+    gl->GenFramebuffers(1, &r->hor_fbo);
     gl->GenFramebuffers(1, &r->kf_fbo);
     gl->GenFramebuffers(1, &r->keyhz_fbo);
     gl->GenFramebuffers(1, &r->localv_fbo);
@@ -214,10 +219,19 @@ static int terrain_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_c
     return HFS_OK;
 }
 
-/* Grows the layered textures that follow the light counts. */
+/* Grows the layered textures that follow the light counts and the
+ * environment's directions. */
 static void layers_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
-                          const hfs_gles_layout *L, int key_layers, int local_layers, int n_keys)
+                          const hfs_gles_layout *L, const hfs_gles_layers *n)
 {
+    const int key_layers = n->key < 1 ? 1 : n->key, local_layers = n->local, n_keys = n->n_keys;
+    if (r->hor_layers < n->hor) { /* the environment's visibility: lost with it */
+        hfs_gles_tex_delete(gl, &r->hor);
+        r->hor = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh, n->hor, 1);
+        r->hor_layers = n->hor;
+        ++r->grid_gen;
+        r->hor_bytes = (size_t)L->vw * L->vh * n->hor * c->bytes_rgba;
+    }
     if (r->keyhz_layers < key_layers) {
         hfs_gles_tex_delete(gl, &r->keyhz);
         r->keyhz = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh,
@@ -244,12 +258,10 @@ static void layers_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_
 }
 
 int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
-                              const hfs_gles_layout *L, int key_layers, int local_layers,
-                              int n_keys, hfs_error *err)
+                              const hfs_gles_layout *L, const hfs_gles_layers *n,
+                              hfs_error *err)
 {
     int rc;
-    if (key_layers < 1)
-        key_layers = 1;
     if (!(r->valid && r->w == L->w && r->h == L->h && r->n_levels == L->n_levels &&
           r->lmin == L->lmin && r->fp32 == c->fp32)) {
         hfs_gles_resources_free(r, gl);
@@ -266,12 +278,12 @@ int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs
         if ((rc = hfs_gles_fbo_new(gl, &r->venv_fbo, 4, r->venv, NULL, "visibility", err)))
             return rc;
     }
-    layers_ensure(r, gl, c, L, key_layers, local_layers, n_keys);
+    layers_ensure(r, gl, c, L, n);
     return hfs_gl_check(gl, "backend gles: allocating textures", err);
 }
 
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r, const hfs_gl_caps *c)
 {
-    return r->bytes + (size_t)4 * r->vw * r->vh * c->bytes_rgba + r->keyhz_bytes +
+    return r->bytes + (size_t)4 * r->vw * r->vh * c->bytes_rgba + r->hor_bytes + r->keyhz_bytes +
            r->localv_bytes + r->kf_bytes;
 }

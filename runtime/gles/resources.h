@@ -32,6 +32,8 @@ typedef struct hfs_gles_resources {
     GLuint arr_mrt_fbo[HFS_GLES_MAX_LEVELS];    /* layers 4g..4g+3 as 4 targets */
     GLuint normals, normals_fbo;
     GLuint venv[4], venv_fbo;                   /* SH visibility on the grid */
+    GLuint hor, hor_fbo;                        /* slice path: horizons, 4 directions a layer */
+    int hor_layers;
     GLuint keyhz, keyhz_fbo;                    /* key horizon excess, 2 directions a layer */
     int keyhz_layers;
     GLuint localv, localv_fbo;                  /* local-light ratios, 2 lights per layer */
@@ -41,15 +43,22 @@ typedef struct hfs_gles_resources {
     int kf_layers;
     GLuint out[2], out_fbo; /* RGB hi, lo: drawn together */
     GLuint out_lo_fbo;      /* lo alone as attachment 0, for the readback */
-    size_t bytes, keyhz_bytes, localv_bytes, kf_bytes;
+    size_t bytes, hor_bytes, keyhz_bytes, localv_bytes, kf_bytes;
     unsigned terrain_gen, grid_gen, keyhz_gen, localv_gen, kf_gen; /* bumped when reallocated */
 } hfs_gles_resources;
 
-/* Fits r to layout L: key_layers horizon layers, local_layers ratio
- * layers, n_keys factor layers (textures only grow). */
+/* What the layered textures must hold (they only grow). */
+typedef struct hfs_gles_layers {
+    int hor;    /* environment horizon layers (slice path; 0: none) */
+    int key;    /* key horizon layers */
+    int local;  /* local-light ratio layers */
+    int n_keys; /* key factor layers */
+} hfs_gles_layers;
+
+/* Fits r to layout L and the layer counts n. */
 int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
-                              const hfs_gles_layout *L, int key_layers, int local_layers,
-                              int n_keys, hfs_error *err);
+                              const hfs_gles_layout *L, const hfs_gles_layers *n,
+                              hfs_error *err);
 /* Deletes everything; the generations move on. */
 void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl);
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r, const hfs_gl_caps *c);

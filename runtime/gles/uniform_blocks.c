@@ -7,6 +7,7 @@
 #include "sh.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define PI 3.14159265358979323846
@@ -123,8 +124,37 @@ void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, floa
 size_t hfs_gles_slices_vec4(int n)
 {
     return (sizeof(hfs_gles_swath_head) + (size_t)n * sizeof(hfs_gles_swath_sample)) / 16 +
-           (size_t)n * 4 * HFS_SLICE_F;
+           HFS_SH_N + (size_t)n * 3;
 }
+
+/* The bilinear sample at offset (c, s) from a texel (the finest scale,
+ * distance 1) as weights on its 3 x 3 neighbourhood, row-major from
+ * (-1, -1); offsets split as the horizons' (cpu_horizon.c): an axis
+ * exactly, so only one neighbour is read there. */
+static void near_weights(double c, double s, float w[12])
+{
+    double o[2] = {c, s}, f[2];
+    int io[2];
+    for (int a = 0; a < 2; ++a) {
+        const double r = nearbyint(o[a]);
+        if (fabs(o[a] - r) < 1e-9)
+            o[a] = r;
+        io[a] = (int)floor(o[a]);
+        f[a] = o[a] - floor(o[a]);
+    }
+    memset(w, 0, 12 * sizeof *w);
+    for (int b = 0; b < 2; ++b)
+        for (int a = 0; a < 2; ++a) {
+            const double wt = (a ? f[0] : 1.0 - f[0]) * (b ? f[1] : 1.0 - f[1]);
+            const int x = io[0] + a + 1, y = io[1] + b + 1;
+            if (wt != 0.0) /* |c|, |s| <= 1: a weighted texel is in the 3 x 3 */
+                w[3 * y + x] = (float)wt;
+        }
+}
+
+/* The profile terms each azimuthal factor's slots hold (uniform_blocks.h),
+ * by |m|: 0 and 2 share one set. */
+static const int slot_terms[4][4] = {{0, 2, 3, 6}, {1, 4, 5, -1}, {0, 2, 3, 6}, {1, 5, -1, -1}};
 
 void hfs_gles_pack_slices(const hfs_gles_layout *L, const hfs_visibility *v,
                           const hfs_slice_table *t, float *dst)
@@ -134,13 +164,18 @@ void hfs_gles_pack_slices(const hfs_gles_layout *L, const hfs_visibility *v,
     memset(dst, 0, hfs_gles_slices_vec4(n) * 4 * sizeof *dst);
     const hfs_gles_swath_block b = hfs_gles_swath_view(dst, n);
     pack_head_dirs(L, s, &b);
-    float *p = (float *)(b.dir + n);
+    double a[HFS_SH_N][HFS_SLICE_F];
+    hfs_slice_profile(a);
+    float *coef = (float *)(b.dir + n);
+    for (int k = 0; k < HFS_SH_N; ++k) {
+        const int m = abs(hfs_slice_order(k));
+        for (int q = 0; q < 4; ++q)
+            if (slot_terms[m][q] >= 0)
+                coef[4 * k + q] = (float)(t->dphi * a[k][slot_terms[m][q]]);
+    }
+    float *nearw = coef + 4 * HFS_SH_N;
     for (int j = 0; j < n; ++j)
-        for (int m = 0; m < HFS_SLICE_F; ++m)
-            for (int k = 0; k < HFS_SH_N; ++k)
-                p[((size_t)j * HFS_SLICE_F + (size_t)m) * HFS_SH_N + (size_t)k] =
-                    (float)(t->dphi * t->p[((size_t)j * HFS_SH_N + (size_t)k) * HFS_SLICE_F +
-                                           (size_t)m]);
+        near_weights(b.dir[j].cos, b.dir[j].sin, nearw + 12 * j);
 }
 
 /* ---- offsets -------------------------------------------------------------------- */

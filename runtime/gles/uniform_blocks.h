@@ -88,10 +88,17 @@ void hfs_gles_wedge_rot_set(hfs_gles_wedge_rot *r, double a, int mirror);
 size_t hfs_gles_swath_vec4(int n);
 void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, float *dst);
 
-/* HfsSwath on the exact slice path (--visibility slice, slice_light.h):
- * the head and u_dir[n] as above, then per slice j and slice function m
- * (HFS_SLICE_F) the 16 coefficients dphi P_km(phi_j) as 4 vec4 (k = 4g ..
- * 4g+3 in vec4 g): u_P[28 n], vec4 28 j + 4 m + g.  Total 2 + 29 n vec4. */
+/* HfsSwath of the slice path (env_horizons.frag, env_slices.frag): the
+ * head and u_dir[n] as above, then u_coef[16]: per coefficient k, dphi
+ * times its profile's terms (slice_light.h hfs_slice_profile) on the slots
+ * of k's azimuthal factor, as env_slices.frag accumulates them:
+ *   factor 1, cos 2phi, sin 2phi: f_0, f_2, f_3, f_6
+ *   cos phi, sin phi:             f_1, f_4, f_5
+ *   cos 3phi, sin 3phi:           f_1, f_5
+ * (every other term of a profile is zero); then u_nearw[3 n]: per
+ * direction the finest scale's bilinear sample (distance 1) as weights on
+ * the 3 x 3 neighbourhood, row-major (9 floats in 3 vec4).  Total
+ * 2 + 16 + 4 n vec4. */
 size_t hfs_gles_slices_vec4(int n);
 void hfs_gles_pack_slices(const hfs_gles_layout *L, const hfs_visibility *v,
                           const hfs_slice_table *t, float *dst);

@@ -1,0 +1,181 @@
+/*
+ * env_slices.frag - exact slice lighting at full resolution (runtime/
+ * slice_light.h, DESIGN.md "Exact slice lighting"): per texel and azimuth
+ * slice, the horizon elevation x = max(the grid's far horizon read
+ * bilinearly, the near scales searched here at the texel itself, the
+ * texel's tangent plane), then the occluded part of the slice's transfer,
+ * Int_floor^x Y_k (a cos e + b sin e) cos e de, in closed form with the
+ * texel's own normal (a = N.d, b = N_z).  Writes T_occ, the transfer's
+ * occluded part, as 16 coefficients in 4 RGBA targets (the shading pass
+ * adds the open hemisphere H(N) exactly); like the seeds' transfer it does
+ * not depend on the environment's radiance or rotation.
+ *
+ * Why split the horizon: on a sub-sampled grid a texel's nearest
+ * occluders (a texel away) are not its grid neighbours' - interpolating
+ * those brightens pits and darkens peaks on rough relief - while far ones
+ * are shared.  With u_near = 1 the finest scale (distance 1 texel) is
+ * searched here, from the texel's 3 x 3 neighbourhood fetched once: the
+ * scale's bilinear sample in direction j is a fixed weighting of those 9
+ * heights (u_nearw, uniform_blocks.c), 9 fetches for every direction
+ * instead of 4 per direction.  u_near = 0 at subsample 1, where the grid
+ * is the texels themselves.
+ */
+// hfs-variant: HFS_FP32 1
+// hfs-variant: HFS_SWATH_TEX 1
+
+#ifndef HFS_NLEV
+#define HFS_NLEV 33
+#endif
+#ifndef HFS_NDIR
+#define HFS_NDIR 32
+#endif
+#ifndef HFS_HALF_PI
+#define HFS_HALF_PI 1.5707963267948966
+#endif
+
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+precision highp sampler2DArray;
+
+vec3 hfs_normal(vec4 t);
+vec4 hfs_f16v(vec4 v);
+vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
+float hfs_hdiff(vec2 a, vec2 b);
+void hfs_slice_g(float a, float b, float x, out float g[7]);
+
+uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
+uniform highp sampler2D u_normals;       /* full resolution */
+uniform highp sampler2DArray u_hor;      /* grid horizon elevations, 4 a layer, LINEAR */
+uniform ivec2 u_size;                    /* W, H */
+uniform ivec2 u_vsize;                   /* visibility grid size */
+uniform int u_sub;
+uniform int u_near;                      /* 1: the finest scale is searched here */
+
+layout(std140) uniform HfsScales {
+    vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
+};
+#ifdef HFS_SWATH_TEX
+vec4 hfs_block_vec4(highp usampler2D t, int i);
+uniform highp usampler2D u_swath_tex;
+#define SW_DIR(j) hfs_block_vec4(u_swath_tex, 2 + (j))
+#define SW_COEF(k) hfs_block_vec4(u_swath_tex, 2 + HFS_NDIR + (k))
+#define SW_NEARW(i) hfs_block_vec4(u_swath_tex, 18 + HFS_NDIR + (i))
+#else
+layout(std140) uniform HfsSwath {
+    vec4 u_win;
+    vec4 u_occtop;
+    vec4 u_dir[HFS_NDIR];                /* (cos, sin, 0, 0) */
+    vec4 u_coef[16];                     /* dphi x profile terms per k (see below) */
+    vec4 u_nearw[3 * HFS_NDIR];          /* per direction: 3 x 3 weights, row-major */
+};
+#define SW_NEARW(i) u_nearw[i]
+#define SW_DIR(j) u_dir[j]
+#define SW_COEF(k) u_coef[k]
+#endif
+
+layout(location = 0) out vec4 o_t0;
+layout(location = 1) out vec4 o_t1;
+layout(location = 2) out vec4 o_t2;
+layout(location = 3) out vec4 o_t3;
+
+/* Sums over the slices, by azimuthal factor: Y_k along slice j is
+ * trig_k(phi_j) sum_m a_km f_m(e) (runtime/slice_light.h
+ * hfs_slice_profile), so T_k = sum_m a_km sum_j trig_k(phi_j) d_jm, d_jm
+ * the slice's integral of f_m between its tangent plane and its horizon.
+ * Each factor needs only a few m (uniform_blocks.h): accumulating those
+ * per slice (22 products) and contracting with a once per texel costs a
+ * fifth of contracting each slice with its 16 x 7 coefficients. */
+struct Sums {
+    vec4 one, c2, s2;   /* factor 1, cos 2phi, sin 2phi: m = 0, 2, 3, 6 */
+    vec3 c1, s1;        /* cos phi, sin phi: m = 1, 4, 5 */
+    vec2 c3, s3;        /* cos 3phi, sin 3phi: m = 1, 5 */
+};
+
+/* Adds slice (cs = cos, sin phi)'s part between elevations xf and x. */
+void slice_add(vec2 cs, float a, float b, float xf, float x, inout Sums S)
+{
+    float gx[7], gf[7];
+    hfs_slice_g(a, b, x, gx);
+    hfs_slice_g(a, b, xf, gf);
+    vec4 d0236 = vec4(gx[0] - gf[0], gx[2] - gf[2], gx[3] - gf[3], gx[6] - gf[6]);
+    vec3 d145 = vec3(gx[1] - gf[1], gx[4] - gf[4], gx[5] - gf[5]);
+    vec2 d15 = d145.xz;
+    float c2 = cs.x * cs.x - cs.y * cs.y, s2 = 2.0 * cs.x * cs.y;
+    float c3 = c2 * cs.x - s2 * cs.y, s3 = s2 * cs.x + c2 * cs.y;
+    S.one += d0236;
+    S.c1 += cs.x * d145;
+    S.s1 += cs.y * d145;
+    S.c2 += c2 * d0236;
+    S.s2 += s2 * d0236;
+    S.c3 += c3 * d15;
+    S.s3 += s3 * d15;
+}
+
+/* T_k from the sums: k = l(l+1) + m, factor 1 (m = 0), cos(m phi) (m > 0),
+ * sin(|m| phi) (m < 0). */
+void contract(Sums S, out vec4 T[4])
+{
+    T[0] = vec4(dot(SW_COEF(0), S.one), dot(SW_COEF(1).xyz, S.s1),
+                dot(SW_COEF(2), S.one), dot(SW_COEF(3).xyz, S.c1));
+    T[1] = vec4(dot(SW_COEF(4), S.s2), dot(SW_COEF(5).xyz, S.s1),
+                dot(SW_COEF(6), S.one), dot(SW_COEF(7).xyz, S.c1));
+    T[2] = vec4(dot(SW_COEF(8), S.c2), dot(SW_COEF(9).xy, S.s3),
+                dot(SW_COEF(10), S.s2), dot(SW_COEF(11).xyz, S.s1));
+    T[3] = vec4(dot(SW_COEF(12), S.one), dot(SW_COEF(13).xyz, S.c1),
+                dot(SW_COEF(14), S.c2), dot(SW_COEF(15).xy, S.c3));
+}
+
+/* The finest scale's slopes to the 3 x 3 neighbours (row-major from
+ * (-1, -1)), -1e30 off the field: a sample that needs one never wins,
+ * as hfs_scale_offset would skip it. */
+void near_slopes(ivec2 p, out vec4 s0, out vec4 s1, out float s8)
+{
+    vec4 sc = u_scale[HFS_NLEV - 1];
+    int layer = int(sc.z);
+    vec2 h = texelFetch(u_levels, ivec3(p, layer), 0).xy;
+    float s[9];
+    for (int i = 0; i < 9; ++i) {
+        ivec2 q = p + ivec2(i % 3 - 1, i / 3 - 1);
+        bool in_field = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, u_size));
+        s[i] = in_field ? hfs_hdiff(texelFetch(u_levels, ivec3(q, layer), 0).xy, h) * sc.y
+                        : -1e30;
+    }
+    s0 = vec4(s[0], s[1], s[2], s[3]);
+    s1 = vec4(s[4], s[5], s[6], s[7]);
+    s8 = s[8];
+}
+
+void main()
+{
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec3 n = hfs_normal(texelFetch(u_normals, p, 0));
+    vec2 uv = hfs_grid_uv(p, u_sub, u_size, u_vsize);
+    vec4 s0 = vec4(-1e30), s1 = vec4(-1e30);
+    float s8 = -1e30;
+    if (u_near > 0)
+        near_slopes(p, s0, s1, s8);
+    Sums S = Sums(vec4(0.0), vec4(0.0), vec4(0.0), vec3(0.0), vec3(0.0), vec2(0.0), vec2(0.0));
+    vec4 far = vec4(0.0);
+    for (int j = 0; j < HFS_NDIR; ++j) {
+        if (j % 4 == 0)
+            far = texture(u_hor, vec3(uv, float(j / 4)));
+        vec2 cs = SW_DIR(j).xy;
+        float a = n.x * cs.x + n.y * cs.y;
+        float tf = -a / n.z;
+        float tn = max(tf, dot(SW_NEARW(3 * j), s0) + dot(SW_NEARW(3 * j + 1), s1) +
+                               SW_NEARW(3 * j + 2).x * s8);
+        float xf = atan(tf);
+        float x = max(far[j % 4], atan(tn));
+        /* Only slices whose horizon rises above the tangent plane carry an
+         * occluded part (0 exactly elsewhere). */
+        if (x > xf)
+            slice_add(cs, a, n.z, xf, x, S);
+    }
+    vec4 T[4];
+    contract(S, T);
+    o_t0 = hfs_f16v(T[0]);
+    o_t1 = hfs_f16v(T[1]);
+    o_t2 = hfs_f16v(T[2]);
+    o_t3 = hfs_f16v(T[3]);
+}
