@@ -25,7 +25,7 @@
  * terrain's occlusion is interpolated.
  *
  * HFS_SLICE (exact slice lighting, runtime/slice_light.h): instead of V,
- * the horizon elevations themselves, directions [u_dir0, u_dir0 + 16),
+ * the horizons themselves (as tan(omega / 2)), directions [u_dir0, u_dir0 + 16),
  * four per target (a layer each of the grid's horizon array); the
  * full-resolution pass env_slices.frag integrates them with each texel's
  * own normal.  On a sub-sampled grid the u_near finest scales are left to
@@ -170,13 +170,14 @@ void write_count(int fetches)
 }
 
 #ifdef HFS_SLICE
-/* Slice path: 16 horizon elevations, -pi/2 where nothing rises (and past
- * the swath's last direction). */
+/* Slice path: 16 horizons as tan(omega / 2) (bounded, monotonic in omega,
+ * and rational in cos, sin omega), -1 where nothing rises (and past the
+ * swath's last direction). */
 void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
 {
     float om[16];
     for (int q = 0; q < 16; ++q) {
-        om[q] = -HFS_HALF_PI;
+        om[q] = -1.0;
         int j = u_dir0 + q;
         if (j >= HFS_NDIR)
             continue;
@@ -184,8 +185,8 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
         /* A receiver that is its own grid point starts at its tangent
          * plane (a slope below it never wins); the others below any. */
         float best = u_sub == 1 ? -(n.x * cs.x + n.y * cs.y) / n.z : -1e30;
-        best = horizon_tan(g, cs, hx, best, HFS_NLEV - 1 - u_near, fetches);
-        om[q] = clamp(atan(best), -HFS_HALF_PI, HFS_HALF_PI);
+        best = clamp(horizon_tan(g, cs, hx, best, HFS_NLEV - 1 - u_near, fetches), -1e18, 1e18);
+        om[q] = best / (1.0 + sqrt(1.0 + best * best)); /* tan(omega / 2) */
     }
 #ifdef HFS_COUNT
     write_count(fetches);

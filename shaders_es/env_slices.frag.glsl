@@ -42,11 +42,10 @@ vec3 hfs_normal(vec4 t);
 vec4 hfs_f16v(vec4 v);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 float hfs_hdiff(vec2 a, vec2 b);
-void hfs_slice_g(float a, float b, float x, out float g[7]);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
 uniform highp sampler2D u_normals;       /* full resolution */
-uniform highp sampler2DArray u_hor;      /* grid horizon elevations, 4 a layer, LINEAR */
+uniform highp sampler2DArray u_hor;      /* grid horizons, tan(x / 2), 4 a layer, LINEAR */
 uniform ivec2 u_size;                    /* W, H */
 uniform ivec2 u_vsize;                   /* visibility grid size */
 uniform int u_sub;
@@ -92,14 +91,55 @@ struct Sums {
     vec2 c3, s3;        /* cos 3phi, sin 3phi: m = 1, 5 */
 };
 
-/* Adds slice (cs = cos, sin phi)'s part between elevations xf and x. */
-void slice_add(vec2 cs, float a, float b, float xf, float x, inout Sums S)
+/* cos kx, sin kx for k = 1..5 from (cos x, sin x). */
+void multiples(vec2 x, out float c[5], out float s[5])
 {
-    float gx[7], gf[7];
-    hfs_slice_g(a, b, x, gx);
-    hfs_slice_g(a, b, xf, gf);
-    vec4 d0236 = vec4(gx[0] - gf[0], gx[2] - gf[2], gx[3] - gf[3], gx[6] - gf[6]);
-    vec3 d145 = vec3(gx[1] - gf[1], gx[4] - gf[4], gx[5] - gf[5]);
+    c[0] = x.x;
+    s[0] = x.y;
+    for (int k = 1; k < 5; ++k) {
+        c[k] = c[k - 1] * x.x - s[k - 1] * x.y;
+        s[k] = s[k - 1] * x.x + c[k - 1] * x.y;
+    }
+}
+
+/* d_m = g_m(x) - g_m(xf), g_m(x) = Int_x^{pi/2} f_m(e) (a cos e + b sin e)
+ * cos e de (runtime/slice_light.c hfs_slice_integrals: the same closed
+ * forms, differenced): x and xf as (cos, sin), dj0 = xf - x.  With
+ * Jc_k = Int_x^{pi/2} cos ke de and Js_k = Int sin ke de, their
+ * differences need only cos kx, sin kx. */
+void slice_dg(float a, float b, vec2 x, vec2 xf, float dj0, out vec4 d0236, out vec3 d145)
+{
+    float cx[5], sx[5], cf[5], sf[5];
+    multiples(x, cx, sx);
+    multiples(xf, cf, sf);
+    float Jc[5], Js[5]; /* differences, index k - 1 */
+    for (int k = 0; k < 5; ++k) {
+        Jc[k] = (sf[k] - sx[k]) / float(k + 1);
+        Js[k] = (cx[k] - cf[k]) / float(k + 1);
+    }
+    float J0 = dj0;
+    d0236 = vec4(a * (J0 + Jc[1]) / 2.0 + b * Js[1] / 2.0,
+                 a * (Js[0] + Js[2]) / 4.0 + b * (Jc[0] - Jc[2]) / 4.0,
+                 a * (J0 / 4.0 + Jc[1] / 2.0 + Jc[3] / 4.0) + b * Js[3] / 4.0,
+                 a * (Js[0] / 4.0 + Js[2] / 2.0 + Js[4] / 4.0) + b * (Jc[0] - Jc[4]) / 4.0);
+    d145 = vec3(a * (3.0 * Jc[0] + Jc[2]) / 4.0 + b * (Js[0] + Js[2]) / 4.0,
+                a * (Js[1] / 2.0 + Js[3] / 4.0) + b * (J0 - Jc[3]) / 4.0,
+                a * (Jc[0] / 4.0 + Jc[2] / 2.0 + Jc[4] / 4.0) + b * (Js[4] - Js[0]) / 4.0);
+}
+
+/* Adds slice (cs = cos, sin phi)'s part between its tangent plane and its
+ * horizon, both as half-angle tangents u = tan(e / 2) (rational cos and
+ * sin; one atan for the angle between them). */
+void slice_add(vec2 cs, float a, float b, float uf, float ux, inout Sums S)
+{
+    float qx = 1.0 / (1.0 + ux * ux), qf = 1.0 / (1.0 + uf * uf);
+    vec2 x = vec2((1.0 - ux * ux) * qx, 2.0 * ux * qx);
+    vec2 xf = vec2((1.0 - uf * uf) * qf, 2.0 * uf * qf);
+    /* 1 + uf ux > 0: uf > -1 (N_z > 0) and ux <= 1. */
+    float dj0 = 2.0 * atan((uf - ux) / (1.0 + uf * ux));
+    vec4 d0236;
+    vec3 d145;
+    slice_dg(a, b, x, xf, dj0, d0236, d145);
     vec2 d15 = d145.xz;
     float c2 = cs.x * cs.x - cs.y * cs.y, s2 = 2.0 * cs.x * cs.y;
     float c3 = c2 * cs.x - s2 * cs.y, s3 = s2 * cs.x + c2 * cs.y;
@@ -162,15 +202,17 @@ void main()
             far = texture(u_hor, vec3(uv, float(j / 4)));
         vec2 cs = SW_DIR(j).xy;
         float a = n.x * cs.x + n.y * cs.y;
-        float tf = -a / n.z;
-        float tn = max(tf, dot(SW_NEARW(3 * j), s0) + dot(SW_NEARW(3 * j + 1), s1) +
-                               SW_NEARW(3 * j + 2).x * s8);
-        float xf = atan(tf);
-        float x = max(far[j % 4], atan(tn));
+        /* The tangent plane's elevation xf (tan xf = -a / N_z), the near
+         * slope, and the horizon, as half-angle tangents (monotonic in
+         * the elevation: the max is the max). */
+        float uf = -a / (n.z + sqrt(a * a + n.z * n.z));
+        float tn = clamp(dot(SW_NEARW(3 * j), s0) + dot(SW_NEARW(3 * j + 1), s1) +
+                             SW_NEARW(3 * j + 2).x * s8, -1e18, 1e18);
+        float ux = max(far[j % 4], tn / (1.0 + sqrt(1.0 + tn * tn)));
         /* Only slices whose horizon rises above the tangent plane carry an
          * occluded part (0 exactly elsewhere). */
-        if (x > xf)
-            slice_add(cs, a, n.z, xf, x, S);
+        if (ux > uf)
+            slice_add(cs, a, n.z, uf, ux, S);
     }
     vec4 T[4];
     contract(S, T);

@@ -413,28 +413,3 @@ vec4 hfs_block_vec4(highp usampler2D t, int i)
                 uintBitsToFloat((b.x << 16) | b.y), uintBitsToFloat((b.z << 16) | b.w));
 }
 #endif
-
-/* Exact slice lighting (runtime/slice_light.c hfs_slice_integrals, same
- * closed forms): g[m] = Int_x^{pi/2} f_m(e) (a cos e + b sin e) cos e de,
- * f = (1, cos e, sin e, cos 2e, sin 2e, cos 3e, sin 3e). */
-void hfs_slice_g(float a, float b, float x, out float g[7])
-{
-    float c1 = cos(x), s1 = sin(x);
-    float c2 = c1 * c1 - s1 * s1, s2 = 2.0 * s1 * c1;
-    float c3 = c2 * c1 - s2 * s1, s3 = s2 * c1 + c2 * s1;
-    float c4 = c3 * c1 - s3 * s1, s4 = s3 * c1 + c3 * s1;
-    float c5 = c4 * c1 - s4 * s1, s5 = s4 * c1 + c4 * s1;
-    float J0 = 1.5707963267948966 - x;
-    float Jc1 = 1.0 - s1, Js1 = c1;
-    float Jc2 = -s2 / 2.0, Js2 = (c2 + 1.0) / 2.0;
-    float Jc3 = (-1.0 - s3) / 3.0, Js3 = c3 / 3.0;
-    float Jc4 = -s4 / 4.0, Js4 = (c4 - 1.0) / 4.0;
-    float Jc5 = (1.0 - s5) / 5.0, Js5 = c5 / 5.0;
-    g[0] = a * (J0 + Jc2) / 2.0 + b * Js2 / 2.0;
-    g[1] = a * (3.0 * Jc1 + Jc3) / 4.0 + b * (Js1 + Js3) / 4.0;
-    g[2] = a * (Js1 + Js3) / 4.0 + b * (Jc1 - Jc3) / 4.0;
-    g[3] = a * (J0 / 4.0 + Jc2 / 2.0 + Jc4 / 4.0) + b * Js4 / 4.0;
-    g[4] = a * (Js2 / 2.0 + Js4 / 4.0) + b * (J0 - Jc4) / 4.0;
-    g[5] = a * (Jc1 / 4.0 + Jc3 / 2.0 + Jc5 / 4.0) + b * (Js5 - Js1) / 4.0;
-    g[6] = a * (Js1 / 4.0 + Js3 / 2.0 + Js5 / 4.0) + b * (Jc1 - Jc5) / 4.0;
-}

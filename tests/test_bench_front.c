@@ -76,6 +76,29 @@ int main(void)
     CHECK(pk.point[USE_PANEL] == 2 && pk.point[USE_KIOSK] == -1, "panel %d kiosk %d",
           pk.point[USE_PANEL], pk.point[USE_KIOSK]);
     free(pk.front);
+
+    /* Noise rules: 6 (80 ms, 0.0200) and 7 (50 ms, 0.0208) tie on error
+     * (within 5%): the kiosk takes the faster, 7; 8 (95 ms, 0.001) is
+     * within the budget but not its 10% margin.  Headless (bound 0.03):
+     * 9 (30 ms, 0.029) and 10 (31 ms, 0.0215) tie on time: the more
+     * accurate, 10. */
+    bench_point pts2[11];
+    memset(pts2, 0, sizeof pts2);
+    bench_result res3[2 * 5];
+    const double tm[5] = {80, 50, 95, 30, 31}, er[5] = {0.02, 0.0208, 0.001, 0.029, 0.0215};
+    for (int sc = 0; sc < 2; ++sc)
+        for (int i = 0; i < 5; ++i)
+            res3[5 * sc + i] = R(sc, 6 + i, tm[i], er[i], 1);
+    for (int p = 0; p < 11; ++p)
+        pts2[p].backend = HFS_BACKEND_GLES;
+    bench_budget b2 = {.kiosk_ms = 100, .panel_ms = 500, .headless_err = 0.03};
+    CHECK(bench_pick(res3, 10, 2, pts2, 11, &b2, &pk) == 0, "pick");
+    CHECK(pk.point[USE_KIOSK] == 7, "kiosk picks %d (want 7: ties 6 on error, faster; 8 is "
+          "over 90%% of the budget)", pk.point[USE_KIOSK]);
+    CHECK(pk.point[USE_HEADLESS] == 10, "headless picks %d (want 10: ties 9 on time, more "
+          "accurate)", pk.point[USE_HEADLESS]);
+    CHECK(pk.point[USE_PANEL] == 8, "panel picks %d (want 8)", pk.point[USE_PANEL]);
+    free(pk.front);
     printf("bench front: %s\n", failures ? "FAILED" : "ok");
     return failures ? 1 : 0;
 }

@@ -81,12 +81,14 @@ int main(int argc, char **argv)
             hfs_quality q;
             CHECK(hfs_quality_preset(&q, uses[u]) == 0, "preset %s", uses[u]);
             const int prec_fp32 = !strcmp(col[c_prec], "fp32");
-            const int wedge = !strcmp(col[c_vis], "wedge");
+            const hfs_visibility_path vis = !strcmp(col[c_vis], "wedge")   ? HFS_VIS_WEDGE_TABLE
+                                            : !strcmp(col[c_vis], "slice") ? HFS_VIS_SLICE
+                                                                           : HFS_VIS_LEGENDRE;
             CHECK(q.k == atoi(col[c_k]) && q.offset == atoi(col[c_o]) &&
                       q.nphi_env == atoi(col[c_e]) && q.nphi_key == atoi(col[c_key]) &&
                       q.subsample == atoi(col[c_sub]) &&
                       (q.precision == HFS_PRECISION_FP32) == prec_fp32 &&
-                      (q.visibility == HFS_VIS_WEDGE_TABLE) == wedge,
+                      q.visibility == vis,
                   "preset %s (k%d o%d e%d k%d sub%d) is not the measured pick (k%s o%s e%s k%s "
                   "sub%s %s %s)", uses[u], q.k, q.offset, q.nphi_env, q.nphi_key, q.subsample,
                   col[c_k], col[c_o], col[c_e], col[c_key], col[c_sub], col[c_prec], col[c_vis]);

@@ -13,6 +13,11 @@
  *             500 ms: a preview looked at closely, updated on demand);
  *   headless  the fastest setting whose worst mean error is at most the
  *             headless bound (default 0.03 of the unshadowed maximum).
+ * Against timing noise: a budget counts with BENCH_TIME_MARGIN of headroom
+ * (a pick 2% under its budget would flip from run to run), and settings
+ * within BENCH_TIE of the best candidate's error (kiosk, panel) or time
+ * (headless) tie: the faster (kiosk, panel) or more accurate (headless)
+ * of them is picked.
  */
 #ifndef HFS_BENCH_FRONT_H
 #define HFS_BENCH_FRONT_H
@@ -32,6 +37,9 @@ typedef struct bench_result {
     int pareto;              /* on its scene's front                     */
     char note[160];
 } bench_result;
+
+#define BENCH_TIME_MARGIN 0.9 /* a frame fits a budget B if it takes <= 0.9 B */
+#define BENCH_TIE 0.05         /* relative: errors or times this close tie */
 
 typedef struct bench_budget {
     double kiosk_ms, panel_ms, headless_err;

@@ -24,7 +24,9 @@ void bench_point_label(const hfs_quality *q, hfs_backend backend, char *out, siz
              backend == HFS_BACKEND_CPU ? "cpu" : "gles", q->k, q->offset, q->nphi_env,
              q->nphi_key, q->nphi_local, q->subsample,
              q->precision == HFS_PRECISION_FP32 ? "fp32" : "fp16",
-             q->visibility == HFS_VIS_WEDGE_TABLE ? "wedge" : "leg",
+             q->visibility == HFS_VIS_WEDGE_TABLE ? "wedge"
+             : q->visibility == HFS_VIS_SLICE     ? "slice"
+                                                  : "leg",
              q->local_full_swath ? "full" : "part");
 }
 

@@ -38,11 +38,14 @@
 #define MAX_SCENES 16
 
 /* The default sweep: the settings that move time and error most, on a grid
- * around the library's defaults, plus the precision and the visibility path
- * at the defaults. */
+ * around the library's defaults, plus the precision and the wedge-table
+ * path at the defaults, and the exact slice path on its own grid (its
+ * error falls with finer horizons, k and offset, and hardly with more
+ * environment directions: BENCHMARKS.md "Exact slice lighting"). */
 static const char *const DEFAULT_GRIDS[] = {
     "k=2,4,8 offset=1,2,3 nphi-env=16,32,48 nphi-key=3,5 subsample=1,2,4",
-    "precision=fp32", "visibility=wedge", NULL};
+    "precision=fp32", "visibility=wedge",
+    "visibility=slice k=2,3,4 offset=3,5 nphi-env=12,16 nphi-key=3,5 subsample=1,2", NULL};
 
 typedef struct options {
     const char *out_csv, *plots, *lights, *cache, *data;
