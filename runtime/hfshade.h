@@ -134,11 +134,11 @@ typedef enum hfs_backend {
 /* How horizons become SH visibility (docs/DESIGN.md). */
 typedef enum hfs_visibility_path {
     HFS_VIS_LEGENDRE = 1,    /* NS09: Legendre occlusion vector + M_lin,
-                                with the light's elevation window (default) */
+                                with the light's elevation window           */
     HFS_VIS_WEDGE_TABLE,     /* SN08: 2D/1D tabulated visibility wedges     */
     HFS_VIS_SLICE            /* exact per-slice lighting of the environment
-                                (slice_light.h, issue 15); key and local
-                                lights as HFS_VIS_LEGENDRE                 */
+                                (slice_light.h, issue 15; default); key and
+                                local lights as HFS_VIS_LEGENDRE           */
 } hfs_visibility_path;
 
 /* Texture precision of the GLES path: fp16 is the product (profile
@@ -151,13 +151,14 @@ typedef enum hfs_precision {
 /* Start from hfs_quality_defaults() (which sets EVERY field) and change what
  * you need; 0 is then a real value where a field allows it (offset = 0).
  * The defaults are the "kiosk" preset (hfs_quality_preset), picked from the
- * measured error/time front: k=2, offset=3, 16 env / 3 key directions,
- * subsample 2 (SN08/NS09 used k=4, offset=2, 32 directions: dominated on
- * every benchmark scene, BENCHMARKS.md "Run time against error"). */
+ * measured error/time front: the exact slice path, k=3, offset=5, 12 env /
+ * 3 key directions, subsample 2 (SN08/NS09 used Legendre at k=4, offset=2,
+ * 32 directions: dominated on every benchmark scene, BENCHMARKS.md "Run
+ * time against error"). */
 typedef struct hfs_quality {
-    int k;                   /* pyramid level step (levels per octave), 2   */
-    int offset;              /* level offset o (levels biased by k*o), 3    */
-    int nphi_env;            /* azimuth samples, environment (full swath) 16 */
+    int k;                   /* pyramid level step (levels per octave), 3   */
+    int offset;              /* level offset o (levels biased by k*o), 5    */
+    int nphi_env;            /* azimuth samples, environment (full swath) 12 */
     int nphi_key;            /* azimuth samples per key light swath, 3      */
     int nphi_local;          /* azimuth samples per local light's full swath, 16 */
     int local_full_swath;    /* 0: per-receiver partial swath where the light
@@ -166,7 +167,7 @@ typedef struct hfs_quality {
     int subsample;           /* visibility grid step 1|2|4 (GLES path: env,
                                 key and local-light visibility), 2          */
     hfs_precision precision; /* texture precision of the GLES path          */
-    hfs_visibility_path visibility;
+    hfs_visibility_path visibility; /* HFS_VIS_SLICE                        */
     int threads;             /* CPU/truth worker threads; 0 = all cores     */
 
     /* Ground truth only. */

@@ -70,13 +70,13 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                        {{NULL, HFS_UNIT_NONE, {0.0, 1.0, 0}, NULL}}, "1",
                        "Lambertian albedo"},
     [HFS_SK_K] = {"k", "N", HFS_FORM_INT, 1, 0, 0,
-                  {{NULL, HFS_UNIT_COUNT, {1, 16, 0}, NULL}}, "2",
+                  {{NULL, HFS_UNIT_COUNT, {1, 16, 0}, NULL}}, "3",
                   "pyramid level step, levels per octave"},
     [HFS_SK_OFFSET] = {"offset", "N", HFS_FORM_INT, 1, 0, 0,
-                       {{NULL, HFS_UNIT_COUNT, {0, 16, 0}, NULL}}, "3",
+                       {{NULL, HFS_UNIT_COUNT, {0, 16, 0}, NULL}}, "5",
                        "pyramid level offset"},
     [HFS_SK_NPHI_ENV] = {"nphi-env", "N", HFS_FORM_INT, 1, 0, 0,
-                         {{NULL, HFS_UNIT_COUNT, {3, 1024, 0}, NULL}}, "16",
+                         {{NULL, HFS_UNIT_COUNT, {3, 1024, 0}, NULL}}, "12",
                          "azimuth samples for the environment"},
     [HFS_SK_NPHI_KEY] = {"nphi-key", "N", HFS_FORM_INT, 1, 0, 0,
                          {{NULL, HFS_UNIT_COUNT, {1, 256, 0}, NULL}}, "3",
@@ -94,7 +94,7 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
     [HFS_SK_CONTEXT] = {"context", "surfaceless|osmesa|auto", HFS_FORM_WORD, 0, 0, 0, {{0}},
                         "surfaceless", "how the GLES context is made"},
     [HFS_SK_VISIBILITY] = {"visibility", "legendre|wedge|slice", HFS_FORM_WORD, 0, 0, 0, {{0}},
-                           "legendre", "visibility to SH: NS09 Legendre, SN08 wedge tables, "
+                           "slice", "visibility to SH: NS09 Legendre, SN08 wedge tables, "
                            "or exact slice lighting"},
     /* 0: as many as the machine has cores (at most 64, hfs_parallel). */
     [HFS_SK_THREADS] = {"threads", "N", HFS_FORM_INT, 1, 0, 0,

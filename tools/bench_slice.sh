@@ -4,8 +4,10 @@
 # them: fractions of the unshadowed maximum) of the CPU reference with
 # --visibility legendre, wedge and slice, and of the GLES product path
 # (fp16) with legendre and slice at subsample 1 and 2, on the benchmark scenes (cones, fractal relief
-# 0.25, the DEM window), under the sky alone (the demo's courtyard sky at
-# order 4) and sky + the 2-degree sun.  Prints a Markdown table.
+# 0.25, the DEM window) and the rough fractal (relief 1, where sub-sampling
+# costs most), under the sky alone (the demo's courtyard sky at order 4)
+# and sky + the 2-degree sun.  Prints a Markdown table, then the slice
+# path's fp16 output against its fp32 output (subsample 2) per scene.
 #
 # usage: tools/bench_slice.sh [BUILD_DIR] [SIZE] [FLAGS...]   (defaults: build 128)
 # FLAGS go to every CPU render (e.g. --k 8 --offset 4 --nphi-env 64).
@@ -22,6 +24,7 @@ C=$B/bench-cache
 mkdir -p "$C"
 "$GEN" cones --size ${N}x${N} -o "$C/cones$N.pfm"
 "$GEN" fractal --size ${N}x${N} --relief 0.25 -o "$C/fractal$N.pfm"
+"$GEN" fractal --size ${N}x${N} --relief 1 -o "$C/rough$N.pfm"
 # The DEM window of the benchmarks (tools/bench_scene.c): at 140,100 where it fits.
 x0=140; y0=100
 [ $((x0 + N)) -le 403 ] || x0=0
@@ -29,7 +32,8 @@ x0=140; y0=100
 "$GEN" crop data/jacksboro.png --rect $x0,$y0,$N,$N -o "$C/dem$N.pfm"
 scenes=("cones|$C/cones$N.pfm|--dx 1"
         "fractal|$C/fractal$N.pfm|--dx 1"
-        "dem|$C/dem$N.pfm|--dx 83 --zscale 2")
+        "dem|$C/dem$N.pfm|--dx 83 --zscale 2"
+        "rough|$C/rough$N.pfm|--dx 1")
 lightings=("sky|--env-map data/courtyard.exr"
            "sky+sun|--env-map data/courtyard.exr --key 336,15,2,1500")
 seconds() { sed -n 's/.*, \([0-9.]*\) s$/\1/p' "$1" | tail -n 1; }
@@ -57,5 +61,23 @@ for sc in "${scenes[@]}"; do
             read -r _ mean _ _ _ p99 _ mx _ <<<"$m"
             echo "| $name | $lname | $be ${sub#--} | $vis | $mean | $p99 | $mx | $(seconds "$C/slice.log") |"
         done
+    done
+done
+echo
+echo "| scene (${N}x${N}) | lights | slice, subsample 2: fp16 against fp32, mean abs | p99 abs | max abs |"
+echo "|---|---|---|---|---|"
+for sc in "${scenes[@]}"; do
+    IFS='|' read -r name hf extra <<<"$sc"
+    for li in "${lightings[@]}"; do
+        IFS='|' read -r lname LIGHT <<<"$li"
+        for prec in fp16 fp32; do
+            # shellcheck disable=SC2086
+            "$HFS" render --height "$hf" $extra $LIGHT --visibility slice --subsample 2 \
+                --precision $prec "${FLAGS[@]}" --pfm "$C/prec-$prec.pfm" --quiet
+        done
+        # shellcheck disable=SC2086
+        m=$("$HFS" compare --height "$hf" $extra $LIGHT "$C/prec-fp16.pfm" "$C/prec-fp32.pfm")
+        read -r _ mean _ _ _ p99 _ mx _ <<<"$m"
+        echo "| $name | $lname | $mean | $p99 | $mx |"
     done
 done
