@@ -29,9 +29,6 @@
 #ifndef HFS_NDIR
 #define HFS_NDIR 32
 #endif
-#ifndef HFS_HALF_PI
-#define HFS_HALF_PI 1.5707963267948966
-#endif
 
 precision highp float;
 precision highp int;
