@@ -3,8 +3,8 @@
  * grid (env_horizons.frag): per receiver the horizon in each direction of
  * the full swath (q->nphi_env), projected to order-4 SH (folded Legendre
  * matrices, or wedge tables on the table path), written as 4 RGBA targets
- * (DESIGN.md "Horizons", "GLES path"); on the slice path the horizon
- * elevations themselves, 16 directions a draw into the grid's horizon
+ * (DESIGN.md "Horizons", "GLES path"); on the slice path the horizons
+ * themselves (as tan(x/2)), 16 directions a draw into the grid's horizon
  * array, for env_slices.frag (pass_env_transfer.c).  Kept with the terrain
  * while the environment's settings do not change: a turned or re-tinted
  * environment does not rerun it.
