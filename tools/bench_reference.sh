@@ -26,13 +26,18 @@ scenes=("cones|$C/cones$N.pfm|--dx 1"
 lightings=("sky+sun|--env-map data/courtyard.exr --key 336,15,2,1500"
            "sun|--key 336,15,2,1500")
 
-# Quality settings: label and flags (k, offset, directions, visibility path).
-settings=("default k4 o2 32/3|--k 4 --offset 2 --nphi-env 32 --nphi-key 3"
+# Quality settings: label and flags (k, offset, directions, visibility path;
+# "default" is issue 2's, Legendre; the slice rows are issue 15's path, its
+# first at that issue's defaults).
+settings=("default k4 o2 32/3|--k 4 --offset 2 --nphi-env 32 --nphi-key 3 --visibility legendre"
           "default, wedge tables|--k 4 --offset 2 --nphi-env 32 --nphi-key 3 --visibility wedge"
-          "k8 o4 64/8|--k 8 --offset 4 --nphi-env 64 --nphi-key 8"
-          "k16 o8 128/16|--k 16 --offset 8 --nphi-env 128 --nphi-key 16")
+          "k8 o4 64/8|--k 8 --offset 4 --nphi-env 64 --nphi-key 8 --visibility legendre"
+          "k16 o8 128/16|--k 16 --offset 8 --nphi-env 128 --nphi-key 16 --visibility legendre"
+          "slice k3 o5 12/3|--k 3 --offset 5 --nphi-env 12 --nphi-key 3 --visibility slice"
+          "slice k16 o8 128/16|--k 16 --offset 8 --nphi-env 128 --nphi-key 16 --visibility slice")
 
-seconds() { sed -n 's/.*, \([0-9.]*\) s$/\1/p' "$1" | tail -n 1; }
+# (A truth cached by another script, tools/bench_slice.sh, has no log: "-".)
+seconds() { if [ -f "$1" ]; then sed -n 's/.*, \([0-9.]*\) s$/\1/p' "$1" | tail -n 1; else echo -; fi; }
 
 echo "| scene (${N}x${N}) | lights | settings | mean abs | RMSE | p99 abs | max abs | non-finite | cpu s | truth s |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
