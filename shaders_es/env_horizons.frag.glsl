@@ -113,6 +113,7 @@ layout(std140) uniform HfsSwath {
 #ifdef HFS_SLICE
     vec4 u_coef[16];                     /* read by env_slices.frag */
     vec4 u_nearw[3 * HFS_NDIR];
+    vec4 u_trig[HFS_NDIR];
 #else
     mat4 u_C[HFS_NDIR * 4];              /* folded M_lin, rows as columns */
     vec4 u_rot[2 * HFS_NDIR + 2];        /* per wedge (cos ma, mirror), (sin ma) */

@@ -57,6 +57,7 @@ uniform highp usampler2D u_swath_tex;
 #define SW_DIR(j) hfs_block_vec4(u_swath_tex, 2 + (j))
 #define SW_COEF(k) hfs_block_vec4(u_swath_tex, 2 + HFS_NDIR + (k))
 #define SW_NEARW(i) hfs_block_vec4(u_swath_tex, 18 + HFS_NDIR + (i))
+#define SW_TRIG(j) hfs_block_vec4(u_swath_tex, 18 + 4 * HFS_NDIR + (j))
 #else
 layout(std140) uniform HfsSwath {
     vec4 u_win;
@@ -64,8 +65,10 @@ layout(std140) uniform HfsSwath {
     vec4 u_dir[HFS_NDIR];                /* (cos, sin, 0, 0) */
     vec4 u_coef[16];                     /* dphi x profile terms per k (see below) */
     vec4 u_nearw[3 * HFS_NDIR];          /* per direction: 3 x 3 weights, row-major */
+    vec4 u_trig[HFS_NDIR];               /* (cos 2phi, sin 2phi, cos 3phi, sin 3phi) */
 };
 #define SW_NEARW(i) u_nearw[i]
+#define SW_TRIG(j) u_trig[j]
 #define SW_DIR(j) u_dir[j]
 #define SW_COEF(k) u_coef[k]
 #endif
@@ -124,10 +127,10 @@ void slice_dg(float a, float b, vec2 x, vec2 xf, float dj0, out vec4 d0236, out 
                 a * (Jc[0] / 4.0 + Jc[2] / 2.0 + Jc[4] / 4.0) + b * (Js[4] - Js[0]) / 4.0);
 }
 
-/* Adds slice (cs = cos, sin phi)'s part between its tangent plane and its
+/* Adds slice j's part (cs = cos, sin phi) between its tangent plane and its
  * horizon, both as half-angle tangents u = tan(e / 2) (rational cos and
  * sin; one atan for the angle between them). */
-void slice_add(vec2 cs, float a, float b, float uf, float ux, inout Sums S)
+void slice_add(int j, vec2 cs, float a, float b, float uf, float ux, inout Sums S)
 {
     float qx = 1.0 / (1.0 + ux * ux), qf = 1.0 / (1.0 + uf * uf);
     vec2 x = vec2((1.0 - ux * ux) * qx, 2.0 * ux * qx);
@@ -138,15 +141,14 @@ void slice_add(vec2 cs, float a, float b, float uf, float ux, inout Sums S)
     vec3 d145;
     slice_dg(a, b, x, xf, dj0, d0236, d145);
     vec2 d15 = d145.xz;
-    float c2 = cs.x * cs.x - cs.y * cs.y, s2 = 2.0 * cs.x * cs.y;
-    float c3 = c2 * cs.x - s2 * cs.y, s3 = s2 * cs.x + c2 * cs.y;
+    vec4 t = SW_TRIG(j); /* cos 2phi, sin 2phi, cos 3phi, sin 3phi */
     S.one += d0236;
     S.c1 += cs.x * d145;
     S.s1 += cs.y * d145;
-    S.c2 += c2 * d0236;
-    S.s2 += s2 * d0236;
-    S.c3 += c3 * d15;
-    S.s3 += s3 * d15;
+    S.c2 += t.x * d0236;
+    S.s2 += t.y * d0236;
+    S.c3 += t.z * d15;
+    S.s3 += t.w * d15;
 }
 
 /* T_k from the sums: k = l(l+1) + m, factor 1 (m = 0), cos(m phi) (m > 0),
@@ -209,7 +211,7 @@ void main()
         /* Only slices whose horizon rises above the tangent plane carry an
          * occluded part (0 exactly elsewhere). */
         if (ux > uf)
-            slice_add(cs, a, n.z, uf, ux, S);
+            slice_add(j, cs, a, n.z, uf, ux, S);
     }
     vec4 T[4];
     contract(S, T);

@@ -7,6 +7,8 @@
 # Truth renders are cached in $BUILD_DIR/bench-cache by scene and settings.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# shellcheck source=tools/bench_lib.sh
+. tools/bench_lib.sh
 B=${1:-build}
 N=${2:-128}
 HFS=$B/tools/hfshade
@@ -36,8 +38,6 @@ settings=("default k4 o2 32/3|--k 4 --offset 2 --nphi-env 32 --nphi-key 3 --visi
           "slice k3 o5 12/3|--k 3 --offset 5 --nphi-env 12 --nphi-key 3 --visibility slice"
           "slice k16 o8 128/16|--k 16 --offset 8 --nphi-env 128 --nphi-key 16 --visibility slice")
 
-# (A truth cached by another script, tools/bench_slice.sh, has no log: "-".)
-seconds() { if [ -f "$1" ]; then sed -n 's/.*, \([0-9.]*\) s$/\1/p' "$1" | tail -n 1; else echo -; fi; }
 
 echo "| scene (${N}x${N}) | lights | settings | mean abs | RMSE | p99 abs | max abs | non-finite | cpu s | truth s |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
@@ -46,17 +46,14 @@ for sc in "${scenes[@]}"; do
   for li in "${lightings[@]}"; do
     IFS='|' read -r lname LIGHT <<<"$li"
     truth=$C/truth-$name$N-$lname.pfm
-    tlog=$C/truth-$name$N-$lname.log
-    if [ ! -s "$truth" ]; then
-        "$HFS" render --height "$hf" $extra $LIGHT --backend truth --truth-samples 1024 \
-            --pfm "$truth" 2>"$tlog"
-    fi
-    tsec=$(seconds "$tlog")
+    # shellcheck disable=SC2086
+    bench_truth "$HFS" "$truth" --height "$hf" $extra $LIGHT
+    tsec=$(bench_seconds "${truth%.pfm}.log")
     for st in "${settings[@]}"; do
         IFS='|' read -r label flags <<<"$st"
         out=$C/cpu-$name$N.pfm
         "$HFS" render --height "$hf" $extra $LIGHT --backend cpu $flags --pfm "$out" 2>"$C/cpu.log"
-        csec=$(seconds "$C/cpu.log")
+        csec=$(bench_seconds "$C/cpu.log")
         m=$("$HFS" compare --height "$hf" $extra $LIGHT "$out" "$truth")
         read -r _ mean _ rmse _ p99 _ mx _ nf _ <<<"$m"
         echo "| $name | $lname | $label | $mean | $rmse | $p99 | $mx | $nf | $csec | $tsec |"

@@ -14,6 +14,8 @@
 # Truth renders are cached in $BUILD_DIR/bench-cache by scene and lighting.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# shellcheck source=tools/bench_lib.sh
+. tools/bench_lib.sh
 B=${1:-build}
 N=${2:-128}
 shift 2 || true
@@ -36,7 +38,6 @@ scenes=("cones|$C/cones$N.pfm|--dx 1"
         "rough|$C/rough$N.pfm|--dx 1")
 lightings=("sky|--env-map data/courtyard.exr"
            "sky+sun|--env-map data/courtyard.exr --key 336,15,2,1500")
-seconds() { sed -n 's/.*, \([0-9.]*\) s$/\1/p' "$1" | tail -n 1; }
 echo "| scene (${N}x${N}) | lights | backend | visibility | mean abs | p99 abs | max abs | s |"
 echo "|---|---|---|---|---|---|---|---|"
 for sc in "${scenes[@]}"; do
@@ -44,11 +45,8 @@ for sc in "${scenes[@]}"; do
     for li in "${lightings[@]}"; do
         IFS='|' read -r lname LIGHT <<<"$li"
         truth=$C/truth-$name$N-$lname.pfm
-        if [ ! -s "$truth" ]; then
-            # shellcheck disable=SC2086
-            "$HFS" render --height "$hf" $extra $LIGHT --backend truth --truth-samples 1024 \
-                --pfm "$truth" --quiet
-        fi
+        # shellcheck disable=SC2086
+        bench_truth "$HFS" "$truth" --height "$hf" $extra $LIGHT
         for run in "cpu|legendre|" "cpu|wedge|" "cpu|slice|" "gles|legendre|--subsample 1" \
                    "gles|slice|--subsample 1" "gles|legendre|--subsample 2" "gles|slice|--subsample 2"; do
             IFS='|' read -r be vis sub <<<"$run"
@@ -59,7 +57,7 @@ for sc in "${scenes[@]}"; do
             # shellcheck disable=SC2086
             m=$("$HFS" compare --height "$hf" $extra $LIGHT "$out" "$truth")
             read -r _ mean _ _ _ p99 _ mx _ <<<"$m"
-            echo "| $name | $lname | $be ${sub#--} | $vis | $mean | $p99 | $mx | $(seconds "$C/slice.log") |"
+            echo "| $name | $lname | $be ${sub#--} | $vis | $mean | $p99 | $mx | $(bench_seconds "$C/slice.log") |"
         done
     done
 done

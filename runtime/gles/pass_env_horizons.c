@@ -145,7 +145,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_er
         if (fetch_sum)
             rc = hfs_gles_sum_counts(g, L, g->r.venv_fbo, fetch_sum, err);
     }
-    hfs_gles_set_i1(gl, prog, "u_near", fr->env_near);
+    if (fr->slice)
+        hfs_gles_set_i1(gl, prog, "u_near", fr->env_near);
     for (int d0 = 0; fr->slice && !rc && d0 < g->env_vis_n; d0 += SLICE_DIRS_PER_DRAW) {
         hfs_gles_set_i1(gl, prog, "u_dir0", d0);
         rc = hfs_gles_draw_grid_layers(g, L, g->r.hor_fbo, g->r.hor, d0 / 4, 4,

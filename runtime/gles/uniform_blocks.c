@@ -124,7 +124,7 @@ void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, floa
 size_t hfs_gles_slices_vec4(int n)
 {
     return (sizeof(hfs_gles_swath_head) + (size_t)n * sizeof(hfs_gles_swath_sample)) / 16 +
-           HFS_SH_N + (size_t)n * 3;
+           HFS_SH_N + (size_t)n * 4;
 }
 
 /* The bilinear sample at offset (c, s) from a texel (the finest scale,
@@ -173,9 +173,17 @@ void hfs_gles_pack_slices(const hfs_gles_layout *L, const hfs_visibility *v,
             if (slot_terms[m][q] >= 0)
                 coef[4 * k + q] = (float)(t->dphi * a[k][slot_terms[m][q]]);
     }
-    float *nearw = coef + 4 * HFS_SH_N;
-    for (int j = 0; j < n; ++j)
+    float *nearw = coef + 4 * HFS_SH_N, *trig = nearw + 12 * (size_t)n;
+    for (int j = 0; j < n; ++j) {
         near_weights(b.dir[j].cos, b.dir[j].sin, nearw + 12 * j);
+        double c, sn; /* the slice's azimuthal factors, once per swath */
+        hfs_gles_swath_dir(s, j, &c, &sn);
+        const double c2 = c * c - sn * sn, s2 = 2.0 * c * sn;
+        trig[4 * j] = (float)c2;
+        trig[4 * j + 1] = (float)s2;
+        trig[4 * j + 2] = (float)(c2 * c - s2 * sn);
+        trig[4 * j + 3] = (float)(s2 * c + c2 * sn);
+    }
 }
 
 /* ---- offsets -------------------------------------------------------------------- */

@@ -97,8 +97,9 @@ void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, floa
  *   cos 3phi, sin 3phi:           f_1, f_5
  * (every other term of a profile is zero); then u_nearw[3 n]: per
  * direction the finest scale's bilinear sample (distance 1) as weights on
- * the 3 x 3 neighbourhood, row-major (9 floats in 3 vec4).  Total
- * 2 + 16 + 4 n vec4. */
+ * the 3 x 3 neighbourhood, row-major (9 floats in 3 vec4); then
+ * u_trig[n]: per direction (cos 2phi, sin 2phi, cos 3phi, sin 3phi).
+ * Total 2 + 16 + 5 n vec4. */
 size_t hfs_gles_slices_vec4(int n);
 void hfs_gles_pack_slices(const hfs_gles_layout *L, const hfs_visibility *v,
                           const hfs_slice_table *t, float *dst);
