@@ -16,3 +16,20 @@ bench_truth() {
     [ -s "$truth" ] ||
         "$hfs" render "$@" --backend truth --truth-samples 1024 --pfm "$truth" 2>"${truth%.pfm}.log"
 }
+
+# bench_scenes GEN CACHE N: the benchmark scenes at N x N (cones, the
+# fractal at relief 0.25, the DEM window at (140, 100) where it fits, as
+# tools/bench_scene.c takes it), made into CACHE; sets the array `scenes`
+# of "name|height file|scene flags".
+bench_scenes() {
+    local gen=$1 c=$2 n=$3 x0=140 y0=100
+    "$gen" cones --size "${n}x${n}" -o "$c/cones$n.pfm"
+    "$gen" fractal --size "${n}x${n}" --relief 0.25 -o "$c/fractal$n.pfm"
+    [ $((x0 + n)) -le 403 ] || x0=0
+    [ $((y0 + n)) -le 344 ] || y0=0
+    "$gen" crop data/jacksboro.png --rect "$x0,$y0,$n,$n" -o "$c/dem$n.pfm"
+    # shellcheck disable=SC2034 # the caller reads it
+    scenes=("cones|$c/cones$n.pfm|--dx 1"
+            "fractal|$c/fractal$n.pfm|--dx 1"
+            "dem|$c/dem$n.pfm|--dx 83 --zscale 2")
+}

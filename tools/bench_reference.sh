@@ -16,13 +16,8 @@ GEN=$B/tools/hfgen
 C=$B/bench-cache
 mkdir -p "$C"
 
-# Scenes: name, height file, extra scene flags.
-"$GEN" cones --size ${N}x${N} -o "$C/cones$N.pfm"
-"$GEN" fractal --size ${N}x${N} --relief 0.25 -o "$C/fractal$N.pfm"
-"$GEN" crop data/jacksboro.png --rect 140,100,$N,$N -o "$C/dem$N.pfm"
-scenes=("cones|$C/cones$N.pfm|--dx 1"
-        "fractal|$C/fractal$N.pfm|--dx 1"
-        "dem|$C/dem$N.pfm|--dx 83 --zscale 2")
+# Scenes (tools/bench_lib.sh): name, height file, extra scene flags.
+bench_scenes "$GEN" "$C" "$N"
 # Lightings: the demo scene's sky and low sun together, and the sun alone
 # (where horizon accuracy, not SH order, dominates the error).
 lightings=("sky+sun|--env-map data/courtyard.exr --key 336,15,2,1500"

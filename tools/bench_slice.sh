@@ -24,18 +24,9 @@ HFS=$B/tools/hfshade
 GEN=$B/tools/hfgen
 C=$B/bench-cache
 mkdir -p "$C"
-"$GEN" cones --size ${N}x${N} -o "$C/cones$N.pfm"
-"$GEN" fractal --size ${N}x${N} --relief 0.25 -o "$C/fractal$N.pfm"
-"$GEN" fractal --size ${N}x${N} --relief 1 -o "$C/rough$N.pfm"
-# The DEM window of the benchmarks (tools/bench_scene.c): at 140,100 where it fits.
-x0=140; y0=100
-[ $((x0 + N)) -le 403 ] || x0=0
-[ $((y0 + N)) -le 344 ] || y0=0
-"$GEN" crop data/jacksboro.png --rect $x0,$y0,$N,$N -o "$C/dem$N.pfm"
-scenes=("cones|$C/cones$N.pfm|--dx 1"
-        "fractal|$C/fractal$N.pfm|--dx 1"
-        "dem|$C/dem$N.pfm|--dx 83 --zscale 2"
-        "rough|$C/rough$N.pfm|--dx 1")
+bench_scenes "$GEN" "$C" "$N"
+"$GEN" fractal --size "${N}x${N}" --relief 1 -o "$C/rough$N.pfm"
+scenes+=("rough|$C/rough$N.pfm|--dx 1")
 lightings=("sky|--env-map data/courtyard.exr"
            "sky+sun|--env-map data/courtyard.exr --key 336,15,2,1500")
 echo "| scene (${N}x${N}) | lights | backend | visibility | mean abs | p99 abs | max abs | s |"
