@@ -375,6 +375,15 @@ float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, 
  * fine (i = HFS_NLEV - 1) to coarse, indices clamped (runtime/cpu_horizon.c
  * hfs_horizon_bspline_max, same expressions): after om[i] = a arrives,
  * w = om[i..i+3] and knot i+1 and midpoint i+1 are complete. */
+float hfs_bspline_knot(vec4 w)
+{
+    return w.y + ((w.x - w.y) + (w.z - w.y)) / 6.0;
+}
+float hfs_bspline_mid(vec4 w)
+{
+    return w.y + ((w.x - w.y) + 23.0 * (w.z - w.y) + (w.w - w.y)) / 48.0;
+}
+
 void hfs_bspline_push(inout float best, inout vec4 w, float a, int i)
 {
     if (i == HFS_NLEV - 1) {
@@ -382,18 +391,60 @@ void hfs_bspline_push(inout float best, inout vec4 w, float a, int i)
         return;
     }
     w = vec4(a, w.xyz);
-    best = max(best, w.y + ((w.x - w.y) + (w.z - w.y)) / 6.0);               /* knot i+1 */
+    best = max(best, hfs_bspline_knot(w));                               /* knot i+1 */
     if (i + 2 < HFS_NLEV)
-        best = max(best, w.y + ((w.x - w.y) + 23.0 * (w.z - w.y) + (w.w - w.y)) / 48.0);
+        best = max(best, hfs_bspline_mid(w));
 }
 
 /* Knot 0 and midpoint 0 (om[-1] clamps to om[0]), once every scale came in. */
 float hfs_bspline_close(float best, vec4 w)
 {
-    best = max(best, w.x + ((w.x - w.x) + (w.y - w.x)) / 6.0);
+    best = max(best, hfs_bspline_knot(w.xxyz));
     if (HFS_NLEV > 1)
-        best = max(best, w.x + ((w.x - w.x) + 23.0 * (w.y - w.x) + (w.z - w.x)) / 48.0);
+        best = max(best, hfs_bspline_mid(w.xxyz));
     return best;
+}
+
+/* The same max, also keeping where it was reached: bd is dk or dm of the
+ * winning knot or midpoint (the caller's tag for knot i+1 and midpoint i+1;
+ * at the close, for knot 0 and midpoint 0), unchanged while the seed value
+ * wins. */
+void hfs_bspline_push_at(inout float best, inout float bd, inout vec4 w, float a, int i,
+                         float dk, float dm)
+{
+    if (i == HFS_NLEV - 1) {
+        w = vec4(a);
+        return;
+    }
+    w = vec4(a, w.xyz);
+    float k = hfs_bspline_knot(w);
+    if (k > best) {
+        best = k;
+        bd = dk;
+    }
+    if (i + 2 < HFS_NLEV) {
+        float m = hfs_bspline_mid(w);
+        if (m > best) {
+            best = m;
+            bd = dm;
+        }
+    }
+}
+
+void hfs_bspline_close_at(inout float best, inout float bd, vec4 w, float dk, float dm)
+{
+    float k = hfs_bspline_knot(w.xxyz);
+    if (k > best) {
+        best = k;
+        bd = dk;
+    }
+    if (HFS_NLEV > 1) {
+        float m = hfs_bspline_mid(w.xxyz);
+        if (m > best) {
+            best = m;
+            bd = dm;
+        }
+    }
 }
 
 /* ---- uniform data carried by a texture (runtime/gles/block_texture.h) -- */

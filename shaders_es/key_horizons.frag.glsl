@@ -1,14 +1,27 @@
 /*
  * key_horizons.frag - key-light horizons on a swath (DESIGN.md "Horizons": the
  * B-spline max over scale).  One fragment per receiver of the visibility
- * grid; directions [u_dir0, u_dir0 + u_ndir) of the light's swath, two per
- * RGBA target, up to HFS_NOUT targets.  Per direction it writes the horizon
- * EXCESS over the receiver's floor, omega - floor >= 0 (0 where nothing
- * rises above the tangent plane), as an fp16 (hi, lo) pair: the shading
- * pass adds it to the floor of each full-resolution normal, so unoccluded
- * texels stay exactly unoccluded whatever the sub-sampling, and a key
- * light's narrow elevation window (a few degrees) does not see fp16's
- * 2^-11 rounding of the angle (DESIGN.md "GLES path").
+ * grid; directions [u_dir0, u_dir0 + u_ndir) of the light's swath, one per
+ * RGBA target, up to HFS_NOUT targets.  Per direction it writes
+ *   (omega hi, omega lo, D, 0) at subsample 1, (tan omega hi, lo, D, 0)
+ *   on a sub-sampled grid (omega clamped to +-HFS_KEY_TAN_ANGLE there):
+ * the horizon as an fp16 (hi, lo) pair (a key light's narrow elevation
+ * window, a few degrees, must not see fp16's 2^-11 rounding of the angle),
+ * and D, the distance in texels at which the B-spline max was reached (a
+ * knot's scale d_i, or the geometric mean of a midpoint's two; tracked as
+ * the code c = 2 (N-1-i) + 1 of knot i and c = 2 (N-1-i) of the midpoint
+ * between i and i + 1, D = 2^((c - 1) / 2k)), rounded to fp16 in every
+ * precision so that fp16 and fp32 frames correct alike; D = 0 where no
+ * scale's sample lies on the grid.  The max starts below every
+ * tangent plane (off-grid samples still enter the B-spline as the floor),
+ * so a texel whose own plane lies lower still finds the occluder; on a
+ * sub-sampled grid the u_near finest scales are left to the factor pass,
+ * which searches them per texel.  The key factor
+ * pass (key_visibility.frag) takes max(its own floor, omega) at subsample 1;
+ * between grid receivers it moves each neighbour's occluder, at height
+ * tan(omega) D above that receiver and D ahead of it, to the texel's own
+ * height and position (DESIGN.md "GLES path", "Key lights on the 2x2
+ * grid").
  *
  * Per scale omega_i = atan(D_i) in-grid and the floor off-grid; scales run
  * fine to coarse and stop fetching at the first off-grid sample (all
@@ -37,6 +50,8 @@
 #ifndef HFS_HALF_PI
 #define HFS_HALF_PI 1.5707963267948966
 #endif
+/* Horizons stored as tangents are clamped to this elevation (tan < 1e4). */
+#define HFS_KEY_TAN_ANGLE 1.5706963
 
 precision highp float;
 precision highp int;
@@ -50,15 +65,18 @@ void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_
 float hfs_floor(vec3 n, vec2 cs);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
-void hfs_bspline_push(inout float best, inout vec4 w, float a, int i);
-float hfs_bspline_close(float best, vec4 w);
+void hfs_bspline_push_at(inout float best, inout float bd, inout vec4 w, float a, int i,
+                         float dk, float dm);
+void hfs_bspline_close_at(inout float best, inout float bd, vec4 w, float dk, float dm);
 
 uniform highp sampler2DArray u_levels;
 uniform highp sampler2D u_normals;
 uniform ivec2 u_size;
 uniform int u_sub;
 uniform int u_dir0;                      /* first direction of this pass */
-uniform int u_ndir;                      /* directions in this pass, <= 2 * HFS_NOUT */
+uniform int u_ndir;                      /* directions in this pass, <= HFS_NOUT */
+uniform int u_near;                      /* finest scales left to key_visibility.frag */
+uniform float u_lk;                      /* the pyramid's levels per octave k */
 
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];
@@ -98,9 +116,9 @@ void main()
     hfs_receiver_heights(u_levels, g, hx);
     int fetches = 1 + HFS_NLAYERS;
 
-    float ex[2 * HFS_NOUT];
-    for (int q = 0; q < 2 * HFS_NOUT; ++q)
-        ex[q] = 0.0;
+    vec4 res[HFS_NOUT];
+    for (int q = 0; q < HFS_NOUT; ++q)
+        res[q] = vec4(0.0);
 
     for (int q = 0; q < u_ndir; ++q) {
         vec2 cs = SW_DIR(u_dir0 + q).xy;
@@ -108,10 +126,12 @@ void main()
         /* Per-scale angles from fine to coarse into the B-spline max.  Past
          * the grid every angle is the floor: three more steps flush the
          * window, then nothing can exceed the floor any more. */
-        float best = fl;
+        float best = -HFS_HALF_PI, bd = 0.0;
+        bool seen = false;
         vec4 w = vec4(fl);
         int tail = 3;
-        int i = HFS_NLEV - 1;
+        int top = HFS_NLEV - 1 - u_near;
+        int i = top;
         for (; i >= 0; --i) {
             float a = fl;
             if (tail == 3) {
@@ -121,17 +141,29 @@ void main()
                     --tail;
                 } else {
                     a = atan(hfs_scale_slope(u_levels, g, u_size, o, sc, hx[int(sc.z)]));
+                    seen = true;
                     ++fetches;
                 }
             } else if (--tail < 0) {
                 break;
             }
-            hfs_bspline_push(best, w, a, i);
+            if (i < top) {
+                float c = float(2 * (HFS_NLEV - 2 - i));
+                hfs_bspline_push_at(best, bd, w, a, i, c + 1.0, c);
+            } else {
+                w = vec4(a);
+            }
         }
-        if (i < 0)
-            best = hfs_bspline_close(best, w);
+        if (i < 0 && top >= 0) {
+            float c = float(2 * (HFS_NLEV - 1));
+            hfs_bspline_close_at(best, bd, w, c + 1.0, c);
+        }
         best = clamp(best, -HFS_HALF_PI, HFS_HALF_PI);
-        ex[q] = max(best - fl, 0.0);
+        float stored = u_near > 0 ? tan(clamp(best, -HFS_KEY_TAN_ANGLE, HFS_KEY_TAN_ANGLE)) : best;
+        /* D from its code, rounded to fp16 whatever the targets hold, so
+         * that fp16 and fp32 frames correct with the same distance */
+        float dist = unpackHalf2x16(packHalf2x16(vec2(exp2((bd - 1.0) / (2.0 * u_lk)), 0.0))).x;
+        res[q] = vec4(hfs_split(stored), seen ? dist : 0.0, 0.0);
     }
 #ifdef HFS_COUNT
     o_h0 = vec4(float(fetches % 1024), float(fetches / 1024), 0.0, 0.0);
@@ -145,15 +177,15 @@ void main()
     o_h3 = vec4(0.0);
 #endif
 #else
-    o_h0 = vec4(hfs_split(ex[0]), hfs_split(ex[1]));
+    o_h0 = res[0];
 #if HFS_NOUT > 1
-    o_h1 = vec4(hfs_split(ex[2]), hfs_split(ex[3]));
+    o_h1 = res[1];
 #endif
 #if HFS_NOUT > 2
-    o_h2 = vec4(hfs_split(ex[4]), hfs_split(ex[5]));
+    o_h2 = res[2];
 #endif
 #if HFS_NOUT > 3
-    o_h3 = vec4(hfs_split(ex[6]), hfs_split(ex[7]));
+    o_h3 = res[3];
 #endif
 #endif
 }

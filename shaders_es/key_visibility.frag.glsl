@@ -3,8 +3,9 @@
  * (DESIGN.md "Shading", "GLES path", "Frame planner"):
  *   f = E_cap(N.d, alpha) * clamp(num/den, 0, 1),
  *   num = V_key . (H * L_key), den = V_open . (H * L_key); the horizons are
- *   floor_j(N) + excess_j, the excess read bilinearly from the visibility
- *   grid (key_horizons.frag), and V_open uses the floors of this texel's normal.
+ *   max(floor_j(N), omega_j), omega_j from the visibility grid
+ *   (key_horizons.frag, key_horizon below), and V_open uses the floors of
+ *   this texel's normal.
  * The shading pass multiplies f by rho/pi Le: a re-tinted or dimmed key
  * light, or any change of the other lights, keeps f.  Stored as f / E_max
  * (u_emax = pi sin^2 alpha, f's largest value, so the stored value is in
@@ -42,11 +43,13 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
                    vec3 s, inout vec4 V[4]);
 float hfs_cap_irradiance(float cos_beta, float alpha);
 vec2 hfs_split(float v);
-vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
+float hfs_hdiff(vec2 a, vec2 b);
+bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 
 uniform highp sampler2D u_normals;       /* full resolution */
-uniform highp sampler2DArray u_keyhz;    /* key horizon excess (hi, lo) x 2, LINEAR */
+uniform highp sampler2DArray u_keyhz;    /* key horizons (hi, lo, D, 0), a direction a layer */
+uniform highp sampler2D u_height;        /* normalized heights (hi, lo), full resolution */
 #ifdef HFS_TABLES
 uniform highp sampler2DArray u_ktab;     /* interior tables, 4 layers per set */
 uniform highp sampler2DArray u_ktabb;    /* boundary tables (n x 1), 4 per set */
@@ -56,6 +59,9 @@ uniform ivec2 u_vsize;                   /* visibility grid size */
 uniform int u_sub;
 uniform int u_kb;                        /* this light's record in u_k */
 uniform float u_emax;                    /* pi sin^2 alpha */
+uniform float u_rise;                    /* normalized height to texels: hscale zscale / dx */
+uniform int u_near;                      /* 1: the finest scale is searched here, per texel */
+uniform float u_far;                     /* occluders this far (texels) move to each texel's height */
 
 #ifdef HFS_KEYS_TEX
 /* The records from a texture (too large for a uniform block). */
@@ -85,8 +91,93 @@ void tab_add(inout vec4 V[4], float a, float b, bool boundary, int rot, float se
 }
 #endif
 
+/* Texel p's horizon in direction cs above its floor fl, from layer `layer`
+ * of the grid.  At subsample 1 it is the grid's own.  Between grid receivers
+ * (DESIGN.md "Key lights on the 2x2 grid") each of the four neighbours g
+ * lends its occluder, tan(omega_g) D_g above its height and D_g ahead
+ * (D_g = 2^((c - 1) / 2k) from the stored code c): seen from p that is
+ * (tan(omega_g) D_g + rise (z_g - z_p)) / (D_g + (g - p).cs) (one that
+ * ends up less than a texel ahead of p, which the finest scale covers, or
+ * a neighbour with no sample on the grid, lends p's floor), and the four
+ * angles are blended with the bilinear weights. */
+/* The finest scale (distance 1) seen from texel p itself in direction cs,
+ * as a slope (tan of its elevation): the bilinear sample at p + cs from p's
+ * 3x3 neighbourhood, dz[k] = z(p + (k % 3 - 1, k / 3 - 1)) - z(p); tfl
+ * (the floor's) where it falls off the grid. */
+float near_slope(ivec2 p, vec2 cs, float tfl, float dz[9])
+{
+    vec2 o;
+    if (!hfs_scale_offset(p, u_size, 1.0, cs, o))
+        return tfl;
+    vec2 io = floor(o), fo = o - io;
+    ivec2 b = ivec2(io) + 1;
+    ivec2 b1 = min(b + 1, 2);
+    float top = mix(dz[3 * b.y + b.x], dz[3 * b.y + b1.x], fo.x);
+    float bot = mix(dz[3 * b1.y + b.x], dz[3 * b1.y + b1.x], fo.x);
+    return u_rise * mix(top, bot, fo.y);
+}
+
+/* What texel p needs of its grid cell, whatever the direction: the four
+ * neighbours' grid coordinates, offsets g - p, their height above p in
+ * texel units (rise (z_g - z_p)) and p's bilinear weights; at subsample 1
+ * only ga[0] = p. */
+struct Cell {
+    ivec2 ga[4];
+    vec2 rel[4];
+    float rz[4];
+    vec2 f;
+};
+
+Cell grid_cell(ivec2 p, vec2 zp)
+{
+    Cell c;
+    ivec2 a = p / u_sub;
+    ivec2 x0 = a * u_sub;
+    ivec2 x1 = min(x0 + u_sub, u_size - 1);
+    c.f = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
+    ivec2 a1 = min(a + 1, u_vsize - 1);
+    for (int k = 0; k < 4; ++k) {
+        c.ga[k] = ivec2(k % 2 == 0 ? a.x : a1.x, k < 2 ? a.y : a1.y);
+        ivec2 g = min(c.ga[k] * u_sub, u_size - 1);
+        c.rel[k] = vec2(g - p);
+        c.rz[k] = u_sub > 1 ? u_rise * hfs_hdiff(texelFetch(u_height, g, 0).xy, zp) : 0.0;
+    }
+    return c;
+}
+
+/* Texel p's horizon in direction cs above its floor fl (normal n), from
+ * layer `layer` of the grid.  At subsample 1 it is the grid's own.  Between
+ * grid receivers (DESIGN.md "Key lights on the 2x2 grid") each of the four
+ * neighbours g lends its occluder, t_g D_g above its height and D_g ahead
+ * (t_g and D_g as stored):
+ * seen from p its slope is (t_g D_g + rise (z_g - z_p)) / (D_g + (g - p).cs)
+ * (one that ends up less than a texel ahead of p, which the finest scale
+ * covers, or a neighbour with no sample on the grid, lends p's floor); the
+ * four slopes are blended with the bilinear weights, and the finest scale
+ * seen from p itself (u_near) can only raise the result: one atan. */
+float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float dz[9], ivec2 p)
+{
+    if (u_sub == 1) {
+        vec4 t = texelFetch(u_keyhz, ivec3(c.ga[0], int(layer)), 0);
+        return max(fl, t.x + t.y);
+    }
+    /* the floor's slope, tan(fl), as the stored tangents are clamped */
+    float tfl = clamp(-(n.x * cs.x + n.y * cs.y) / n.z, -1e4, 1e4);
+    float sl[4];
+    for (int k = 0; k < 4; ++k) {
+        vec4 t = texelFetch(u_keyhz, ivec3(c.ga[k], int(layer)), 0);
+        float ahead = t.z + dot(c.rel[k], cs);
+        float rz = t.z >= u_far ? c.rz[k] : 0.0;
+        sl[k] = t.z > 0.0 && ahead >= 1.0 ? max(tfl, ((t.x + t.y) * t.z + rz) / ahead) : tfl;
+    }
+    float s = mix(mix(sl[0], sl[1], c.f.x), mix(sl[2], sl[3], c.f.x), c.f.y);
+    if (u_near > 0)
+        s = max(s, near_slope(p, cs, tfl, dz));
+    return max(fl, atan(s));
+}
+
 /* E_cap * ratio for the key light whose record starts at b. */
-float key_factor(int b, vec3 n, vec4 H[4], vec2 uv)
+float key_factor(int b, vec3 n, vec4 H[4], ivec2 p, Cell cell, float dz[9])
 {
     vec4 h0 = KREC(b), h1 = KREC(b + 1), h2 = KREC(b + 2);
     float e_cap = hfs_cap_irradiance(dot(n, h1.xyz), h1.w);
@@ -118,14 +209,10 @@ float key_factor(int b, vec3 n, vec4 H[4], vec2 uv)
      * test 1e-12 |L| |V_open| calls zero is zero here too. */
     float num = 0.0, den = 0.0, vo_norm = 0.0;
 #endif
-    vec4 exv = vec4(0.0);
     for (int j = 0; j < nd; ++j) {
-        if (j % 2 == 0)
-            exv = texture(u_keyhz, vec3(uv, layer0 + float(j / 2)));
         vec4 dj = KREC(dirs + j);
         float fl = atan(-(n.x * dj.x + n.y * dj.y), n.z);
-        float ex = j % 2 == 0 ? exv.x + exv.y : exv.z + exv.w;
-        float om = min(fl + ex, HFS_HALF_PI);
+        float om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), dz, p), HFS_HALF_PI);
 #ifdef HFS_TABLES
         if (j == 0) {
             om_first = om;
@@ -179,7 +266,12 @@ void main()
     vec3 n = hfs_normal(texelFetch(u_normals, p, 0));
     vec4 H[4];
     hfs_sh_cosine(n, H);
-    vec2 uv = hfs_grid_uv(p, u_sub, u_size, u_vsize);
-    float f = clamp(key_factor(u_kb, n, H, uv) / u_emax, 0.0, 1.0);
+    vec2 zp = texelFetch(u_height, p, 0).xy;
+    float dz[9];
+    for (int k = 0; k < 9; ++k) {
+        ivec2 q = clamp(p + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), u_size - 1);
+        dz[k] = u_near > 0 ? hfs_hdiff(texelFetch(u_height, q, 0).xy, zp) : 0.0;
+    }
+    float f = clamp(key_factor(u_kb, n, H, p, grid_cell(p, zp), dz) / u_emax, 0.0, 1.0);
     o_f = vec4(hfs_split(f), 0.0, 1.0);
 }

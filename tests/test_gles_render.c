@@ -429,14 +429,15 @@ static int fc_in_grid(int gx, int gy, int w, int h, double d, double c, double s
     return 1;
 }
 
-/* In-grid scales of one direction, fine to coarse, up to distance `cut`;
- * *margin: the closest |d_i - cut| met (the GPU compares in float). */
-static long fc_scales(int gx, int gy, int w, int h, int n_lev, int k, double phi, double cut,
-                      double *margin)
+/* In-grid scales of one direction, fine to coarse from the near+1-th finest,
+ * up to distance `cut`; *margin: the closest |d_i - cut| met (the GPU
+ * compares in float). */
+static long fc_scales_from(int gx, int gy, int w, int h, int n_lev, int k, double phi,
+                           double cut, double *margin, int near)
 {
     const double c = cos(phi), s = sin(phi);
     long n = 0;
-    for (int i = n_lev - 1; i >= 0; --i) {
+    for (int i = n_lev - 1 - near; i >= 0; --i) {
         const double d = exp2((double)(n_lev - 1 - i) / k);
         if (margin && fabs(d - cut) < *margin)
             *margin = fabs(d - cut);
@@ -445,6 +446,12 @@ static long fc_scales(int gx, int gy, int w, int h, int n_lev, int k, double phi
         ++n;
     }
     return n;
+}
+
+static long fc_scales(int gx, int gy, int w, int h, int n_lev, int k, double phi, double cut,
+                      double *margin)
+{
+    return fc_scales_from(gx, gy, w, h, n_lev, k, phi, cut, margin, 0);
 }
 
 /* DESIGN.md "Azimuth swaths": the key light's sample azimuths. */
@@ -501,9 +508,12 @@ static fc_counts fc_expect(int w, int h, const hfs_quality *q, const hfs_lightin
             }
             for (int kq = 0; kq < l->n_key; ++kq) {
                 const int ns = fc_key_swath(&l->key[kq], q->nphi_key, q->nphi_env, phi);
-                e.key += (double)((ns + 7) / 8) * (1 + nl);
+                /* four directions a draw; on a sub-sampled grid the
+                 * finest scale is the factor pass's (hfs_gles_key_near) */
+                e.key += (double)((ns + 3) / 4) * (1 + nl);
                 for (int j = 0; j < ns; ++j)
-                    e.key += fc_scales(gx, gy, w, h, n_lev, k, phi[j], 1e300, NULL);
+                    e.key += fc_scales_from(gx, gy, w, h, n_lev, k, phi[j], 1e300, NULL,
+                                            sub > 1 && n_lev > 1);
             }
             if (l->n_local > 0)
                 e.local += (double)((l->n_local + 7) / 8) * (1 + nl);

@@ -1,8 +1,9 @@
 /*
- * pass_key_horizons.c — per key light, the horizon excess in each
- * direction of its swath (the azimuths about the light's direction,
- * visibility.h hfs_swath_key) on the sub-sampled grid (key_horizons.frag,
- * DIRS_PER_DRAW directions per draw, two per RGBA layer).  A light moved
+ * pass_key_horizons.c — per key light, the horizon and the distance it
+ * was found at in each direction of its swath (the azimuths about the
+ * light's direction, visibility.h hfs_swath_key) on the sub-sampled grid
+ * (key_horizons.frag, DIRS_PER_DRAW directions per draw, one per RGBA
+ * layer).  A light moved
  * inside its swath keeps them: only its visibility (pass_key_visibility.c)
  * runs again.  Also the key lights' uniform data: the swath blocks
  * (HfsSwath, one buffer bound by range) and the records (HfsKeys) the
@@ -14,7 +15,12 @@
 
 #include <string.h>
 
-#define DIRS_PER_DRAW 8 /* 4 RGBA targets (ES 3.0's minimum) x 2 (hi, lo) pairs */
+#define DIRS_PER_DRAW 4 /* 4 RGBA targets (ES 3.0's minimum), one direction each */
+
+int hfs_gles_key_near(const hfs_gles_layout *L)
+{
+    return L->sub > 1 && L->n_levels > 1 ? 1 : 0;
+}
 
 static int present(const hfs_gles_frame *fr)
 {
@@ -35,11 +41,11 @@ static size_t align_up(size_t v, size_t a)
  * layers (hz_layer is in the signature). */
 static void assign_layers(hfs_gles *g, hfs_gles_frame *fr)
 {
-    if (g->key_stride < (fr->q->nphi_key + 2) / 2)
-        g->key_stride = (fr->q->nphi_key + 2) / 2;
+    if (g->key_stride < fr->q->nphi_key + 1)
+        g->key_stride = fr->q->nphi_key + 1;
     for (int i = 0; i < fr->n_keys; ++i)
-        if (g->key_stride < (fr->keys[i].k.swath.n + 1) / 2)
-            g->key_stride = (fr->keys[i].k.swath.n + 1) / 2;
+        if (g->key_stride < fr->keys[i].k.swath.n)
+            g->key_stride = fr->keys[i].k.swath.n;
     for (int i = 0; i < fr->n_keys; ++i) {
         fr->keys[i].k.hz_layer = i * g->key_stride;
         fr->key_layers = (i + 1) * g->key_stride;
@@ -157,7 +163,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
         const int n = k->k.swath.n;
         for (int d0 = 0; d0 < n; d0 += DIRS_PER_DRAW) {
             const int cnt = n - d0 < DIRS_PER_DRAW ? n - d0 : DIRS_PER_DRAW;
-            const int outs = (cnt + 1) / 2;
+            const int outs = cnt;
             const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                         .n_out = outs, .n_dir = n, .fp32 = g->caps.fp32,
                                         .count = count, .swath_tex = fr->key_swath_tex};
@@ -168,6 +174,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
                 return rc;
             hfs_gles_set_i1(gl, prog, "u_dir0", d0);
             hfs_gles_set_i1(gl, prog, "u_ndir", cnt);
+            hfs_gles_set_i1(gl, prog, "u_near", hfs_gles_key_near(L));
+            hfs_gles_set_f1(gl, prog, "u_lk", (float)L->k);
             if (fr->key_swath_tex) {
                 if ((rc = hfs_gles_program_texture(gl, prog, "u_swath_tex", GL_TEXTURE_2D,
                                                    g->key_swath_tex.tex, err)))
@@ -179,7 +187,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
                                     (GLsizeiptr)k->swath_size);
             }
             if ((rc = hfs_gles_draw_grid_layers(g, L, g->r.keyhz_fbo, g->r.keyhz,
-                                                k->k.hz_layer + d0 / 2, outs, "key",
+                                                k->k.hz_layer + d0, outs, "key",
                                                 count ? fetch_sum : NULL, err)) ||
                 (rc = hfs_gl_check(gl, "backend gles: key pass", err)))
                 return rc;

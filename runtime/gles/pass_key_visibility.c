@@ -1,7 +1,7 @@
 /*
  * pass_key_visibility.c — per key light, its factor E_cap * ratio / E_max
  * at full resolution (key_visibility.frag): the disk's visible fraction
- * above this texel's horizons (the grid's horizon excess interpolated, the
+ * above this texel's horizons (the grid's occluders moved to the texel, the
  * light's SH visibility from the records HfsKeys), times the irradiance of
  * the visible cap, over the largest possible (pi sin^2 alpha) so the fp16
  * layer holds a value in [0, 1].  Layer q of the factor array; the shading
@@ -31,7 +31,8 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     const hfs_gles_layout *L = &fr->L;
     int rc;
     if ((rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, g->r.normals, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_keyhz", GL_TEXTURE_2D_ARRAY, g->r.keyhz, err)))
+        (rc = hfs_gles_program_texture(gl, prog, "u_keyhz", GL_TEXTURE_2D_ARRAY, g->r.keyhz, err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, g->r.input, err)))
         return rc;
     if (fr->tables &&
         ((rc = hfs_gles_program_texture(gl, prog, "u_ktab", GL_TEXTURE_2D_ARRAY, g->wedge.keys,
@@ -42,6 +43,9 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     hfs_gles_set_i1(gl, prog, "u_sub", L->sub);
+    hfs_gles_set_i1(gl, prog, "u_near", hfs_gles_key_near(L));
+    hfs_gles_set_f1(gl, prog, "u_far", (float)(2 * L->sub));
+    hfs_gles_set_f1(gl, prog, "u_rise", (float)(L->hscale * L->zscale / L->dx));
     if (fr->keys_tex)
         return hfs_gles_program_texture(gl, prog, "u_keys_tex", GL_TEXTURE_2D, g->keys_tex.tex,
                                         err);
@@ -69,7 +73,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
             return rc;
         hfs_gles_draw(gl, g->r.kf_fbo, L->w, L->h);
         hfs_gles_stage_fetches(g, HFS_PASS_KEY_VISIBILITY, 0,
-                               (double)L->w * L->h * (1 + (fr->keys[q].k.swath.n + 1) / 2));
+                               (double)L->w * L->h * (2 + (L->sub > 1 ? 8 : 1) * fr->keys[q].k.swath.n));
         if ((rc = hfs_gl_check(gl, "backend gles: key factor pass", err)))
             return rc;
     }

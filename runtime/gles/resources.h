@@ -34,7 +34,7 @@ typedef struct hfs_gles_resources {
     GLuint venv[4], venv_fbo;                   /* SH visibility on the grid */
     GLuint hor, hor_fbo;                        /* slice path: horizons, 4 directions a layer */
     int hor_layers;
-    GLuint keyhz, keyhz_fbo;                    /* key horizon excess, 2 directions a layer */
+    GLuint keyhz, keyhz_fbo;                    /* key horizons (hi, lo, D), a direction a layer */
     int keyhz_layers;
     GLuint localv, localv_fbo;                  /* local-light ratios, 2 lights per layer */
     int localv_layers;

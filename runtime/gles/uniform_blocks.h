@@ -140,7 +140,7 @@ typedef struct hfs_gles_key {
     hfs_swath swath;
     double dir[3], alpha, le[3];
     double l_sh[16], l_norm;  /* SH of the unit-radiance disk and its norm    */
-    int hz_layer;             /* first layer of its horizon excess texture    */
+    int hz_layer;             /* first layer of its horizon texture           */
     int table_set;            /* wedge table set (table path)                 */
 } hfs_gles_key;
 
