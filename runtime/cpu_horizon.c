@@ -233,6 +233,54 @@ double hfs_horizon_env_from_maxd(double maxd, double floor)
     return o > HALF_PI ? HALF_PI : (o < -HALF_PI ? -HALF_PI : o);
 }
 
+double hfs_horizon_refine_factor(int q, int refine, int k)
+{
+    return exp2((-1.0 + 2.0 * (q + 1) / (refine + 1)) / k);
+}
+
+double hfs_horizon_key_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
+                               const double *omega, size_t stride, double floor, int refine,
+                               double tie)
+{
+    const int n = hp->n_levels;
+    int best_s = -1;
+    double best = -HALF_PI, best_slope = 0.0;
+    for (int s = n - 1; s >= 0; --s) { /* fine to coarse; near-ties: the finest */
+        const double o = omega[(size_t)s * stride];
+        const double sl = tan(o);
+        if (best_s < 0 || sl > best_slope + HFS_HORIZON_TIE * fabs(best_slope) + tie) {
+            best_s = s;
+            best_slope = sl;
+        }
+        best = o > best ? o : best;
+    }
+    const hfs_horizon_tap *t = hfs_horizon_plan_taps(hp, dir) + best_s;
+    const double d0 = hfs_cpu_pyramid_spacing(hp->p, best_s);
+    const int k = hfs_cpu_pyramid_k(hp->p);
+    const double *r = hfs_cpu_pyramid_full(hp->p, t->read);
+    const double h0 = r[(size_t)j * hp->stride + (size_t)i];
+    double maxd = -DBL_MAX;
+    for (int q = 0; q < refine; ++q) {
+        const double f = hfs_horizon_refine_factor(q, refine, k);
+        int ix, iy, xlo, xhi, ylo, yhi;
+        double fx, fy;
+        split_offset(d0 * f * hp->cs[2 * dir], &ix, &fx);
+        split_offset(d0 * f * hp->cs[2 * dir + 1], &iy, &fy);
+        ingrid_range(ix, fx, hp->w, &xlo, &xhi);
+        ingrid_range(iy, fy, hp->h, &ylo, &yhi);
+        if (i < xlo || i > xhi || j < ylo || j > yhi)
+            continue;
+        const double v = tap_read(r + (size_t)(j + iy) * hp->stride + (size_t)(i + ix),
+                                  hp->stride, fx, fy);
+        const double d = (v - h0) * t->inv_run / f;
+        maxd = d > maxd ? d : maxd;
+    }
+    const double a = atan(maxd); /* atan(-DBL_MAX) = -pi/2 */
+    double o = a > best ? a : best;
+    o = o > floor ? o : floor;
+    return o > HALF_PI ? HALF_PI : (o < -HALF_PI ? -HALF_PI : o);
+}
+
 double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,
                                double floor)
 {

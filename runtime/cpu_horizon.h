@@ -93,9 +93,26 @@ void hfs_horizon_row(const hfs_horizon_plan *hp, int dir, int j,
 /* Environment horizon from the row form: max(floor, atan(maxd)). */
 double hfs_horizon_env_from_maxd(double maxd, double floor);
 
-/* Key-light horizon: max(floor, max over knots and midpoints of the cubic
- * B-spline of omega[0], omega[stride], ..., omega[(n-1)*stride]), clamped to
- * [-pi/2, pi/2]. */
+/* Key-light horizon with `refine` > 0 taps (DESIGN.md "Horizons", issue
+ * 15): the plain max of the per-scale angles omega[s * stride] (the row
+ * form's, floor off-grid), and `refine` more samples about the finest scale
+ * t* holding that max (slopes within HFS_HORIZON_TIE of it, relative, plus
+ * tie, absolute, count; pyramid_layout.h), at d_t* 2^(u/k), u = -1 + 2 (q + 1) / (refine + 1),
+ * read from t*'s level like t* itself (off-grid ones skipped); then
+ * max(floor, that), clamped to [-pi/2, pi/2].  Receiver (i, j), direction
+ * dir of hp.  The B-spline's smoothing over scale lowers peaks the sparse
+ * scales already under-sample; the refinement finds them between scales. */
+double hfs_horizon_key_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
+                               const double *omega, size_t stride, double floor, int refine,
+                               double tie);
+
+/* The distance factor 2^(u/k) of refinement tap q of `refine` (k levels
+ * per octave): one expression for every backend. */
+double hfs_horizon_refine_factor(int q, int refine, int k);
+
+/* Key-light horizon, SN08's: max(floor, max over knots and midpoints of the
+ * cubic B-spline of omega[0], omega[stride], ..., omega[(n-1)*stride]),
+ * clamped to [-pi/2, pi/2]. */
 double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,
                                double floor);
 

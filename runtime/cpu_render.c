@@ -58,6 +58,7 @@
 #include "field_geom.h"
 #include "lights.h"
 #include "parallel.h"
+#include "pyramid_layout.h"
 #include "sh.h"
 
 #include <float.h>
@@ -98,6 +99,8 @@ typedef struct render_ctx {
     const hfs_field *f;
     hfs_image *out;
     int w, h, n_levels;
+    int key_refine;            /* hfs_quality.key_refine */
+    double key_tie;            /* its absolute slope tie, hfs_horizon_tie_slope */
     double rho_pi;             /* albedo / pi */
     double h_zonal[HFS_ZH_N];  /* clamped cosine */
     double l_env[3][HFS_SH_N]; /* rotated environment */
@@ -143,12 +146,36 @@ static double norm16(const double v[HFS_SH_N])
     return sqrt(hfs_sh_dot(v, v));
 }
 
+/* hfs_horizon_tie_slope of field f. */
+static double key_tie_slope(const hfs_field *f)
+{
+    const size_t n = (size_t)f->width * (size_t)f->height;
+    double lo = f->z[0], hi = f->z[0];
+    for (size_t i = 1; i < n; ++i) {
+        lo = f->z[i] < lo ? f->z[i] : lo;
+        hi = f->z[i] > hi ? f->z[i] : hi;
+    }
+    return hfs_horizon_tie_slope(0.5 * hi - 0.5 * lo, f->zscale, f->dx);
+}
+
+/* A key light's horizon at receiver (i, j) in direction d of plan from the
+ * row's per-scale angles: SN08's B-spline max (key_refine 0) or the max
+ * refined between scales (cpu_horizon.h). */
+static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int d, int i,
+                          int j, const double *levels, double floor)
+{
+    if (c->key_refine <= 0)
+        return hfs_horizon_bspline_max(levels + i, c->n_levels, (size_t)c->w, floor);
+    return hfs_horizon_key_refined(plan, d, i, j, levels + i, (size_t)c->w, floor,
+                                   c->key_refine, c->key_tie);
+}
+
 /* Horizons of row j for every job: omega (and, for key lights, the floors
  * that make V_open).  Directions are traced one at a time over the whole row
  * so that each (direction, scale) streams through contiguous memory. */
 static void trace_row(const render_ctx *c, worker_scratch *s, int j)
 {
-    const int w = c->w, n_levels = c->n_levels;
+    const int w = c->w;
     for (int q = 0; q < c->n_jobs; ++q) {
         const swath_job *job = &c->jobs[q];
         if (job->shares_env)
@@ -167,7 +194,7 @@ static void trace_row(const render_ctx *c, worker_scratch *s, int j)
             double *om = omega + (size_t)d * w;
             if (!job->is_env) {
                 for (int i = 0; i < w; ++i)
-                    om[i] = hfs_horizon_bspline_max(s->levels + i, n_levels, (size_t)w, fl[i]);
+                    om[i] = key_horizon(c, job->plan, d, i, j, s->levels, fl[i]);
                 continue;
             }
             for (int i = 0; i < w; ++i)
@@ -180,7 +207,7 @@ static void trace_row(const render_ctx *c, worker_scratch *s, int j)
                 double *kfl = s->floors + c->omega_at[r] + (size_t)d * w;
                 for (int i = 0; i < w; ++i) {
                     kfl[i] = fl[i];
-                    kom[i] = hfs_horizon_bspline_max(s->levels + i, n_levels, (size_t)w, fl[i]);
+                    kom[i] = key_horizon(c, job->plan, d, i, j, s->levels, fl[i]);
                 }
             }
         }
@@ -491,6 +518,8 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     /* Pyramid, plans, visibility. */
     const int n_levels = hfs_pyramid_level_count(w, h, q->k);
     c.n_levels = n_levels;
+    c.key_refine = q->key_refine;
+    c.key_tie = key_tie_slope(f);
     rc = hfs_cpu_pyramid_create(f, q->k, hfs_pyramid_read_level(n_levels, q->k, q->offset, 0),
                                 threads, &pyr, err);
     if (rc)

@@ -42,3 +42,8 @@ int hfs_pyramid_read_level(int n_levels, int k, int offset, int level)
     return (int)r;
 }
 
+
+double hfs_horizon_tie_slope(double half_range, double zscale, double dx)
+{
+    return 1e-6 * (half_range > 0.0 ? half_range : 1.0) * zscale / dx;
+}

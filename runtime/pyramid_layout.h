@@ -29,4 +29,17 @@ void hfs_pyramid_level_size(int w, int h, int k, int level, int *lw, int *lh);
  * and never below 0. */
 int hfs_pyramid_read_level(int n_levels, int k, int offset, int level);
 
+/* Key-light horizons refined between scales (DESIGN.md "Horizons"): the
+ * scale to refine about is the finest whose slope is within
+ *   HFS_HORIZON_TIE |slope| + hfs_horizon_tie_slope(...)
+ * of the largest, so that a straight flank (equal slopes at every scale in
+ * exact arithmetic) or a flat plain (slopes of rounding noise) gives the
+ * same scale in float and double. */
+#define HFS_HORIZON_TIE 1e-5
+
+/* The absolute part: 1e-6 of the field's slope scale half_range * zscale /
+ * dx (half_range: half the height range, 1 for a flat field, as the GLES
+ * path normalizes heights). */
+double hfs_horizon_tie_slope(double half_range, double zscale, double dx);
+
 #endif /* HFS_PYRAMID_LAYOUT_H */

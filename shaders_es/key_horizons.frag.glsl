@@ -50,6 +50,9 @@
 #ifndef HFS_HALF_PI
 #define HFS_HALF_PI 1.5707963267948966
 #endif
+/* pyramid_layout.h HFS_HORIZON_TIE: relative slope differences that tie
+ * (u_tie: the absolute part, hfs_horizon_tie_slope). */
+#define HFS_HORIZON_TIE 1e-5
 /* Horizons stored as tangents are clamped to this elevation (tan < 1e4). */
 #define HFS_KEY_TAN_ANGLE 1.5706963
 
@@ -77,6 +80,8 @@ uniform int u_dir0;                      /* first direction of this pass */
 uniform int u_ndir;                      /* directions in this pass, <= HFS_NOUT */
 uniform int u_near;                      /* finest scales left to key_visibility.frag */
 uniform float u_lk;                      /* the pyramid's levels per octave k */
+uniform int u_refine;                    /* samples refining the max between scales; 0: B-spline */
+uniform float u_tie;                     /* hfs_horizon_tie_slope */
 
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];
@@ -108,6 +113,102 @@ layout(location = 2) out vec4 o_h2;
 layout(location = 3) out vec4 o_h3;
 #endif
 
+/* SN08's B-spline max over scale (u_refine 0): per-scale angles from fine
+ * to coarse into the B-spline max.  Past the grid every angle is the
+ * floor: three more steps flush the window, then nothing can exceed the
+ * floor any more.  The max starts below every tangent plane; *dist is the
+ * winning knot's (or midpoint's) distance. */
+float bspline_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout int fetches,
+                      out float dist, out bool seen)
+{
+    float best = -HFS_HALF_PI, bd = 0.0;
+    seen = false;
+    vec4 w = vec4(fl);
+    int tail = 3;
+    int top = HFS_NLEV - 1 - u_near;
+    int i = top;
+    for (; i >= 0; --i) {
+        float a = fl;
+        if (tail == 3) {
+            vec4 sc = u_scale[i];
+            vec2 o;
+            if (!hfs_scale_offset(g, u_size, sc.x, cs, o)) {
+                --tail;
+            } else {
+                a = atan(hfs_scale_slope(u_levels, g, u_size, o, sc, hx[int(sc.z)]));
+                seen = true;
+                ++fetches;
+            }
+        } else if (--tail < 0) {
+            break;
+        }
+        if (i < top) {
+            float c = float(2 * (HFS_NLEV - 2 - i));
+            hfs_bspline_push_at(best, bd, w, a, i, c + 1.0, c);
+        } else {
+            w = vec4(a);
+        }
+    }
+    if (i < 0 && top >= 0) {
+        float c = float(2 * (HFS_NLEV - 1));
+        hfs_bspline_close_at(best, bd, w, c + 1.0, c);
+    }
+    dist = exp2((bd - 1.0) / (2.0 * u_lk));
+    return best;
+}
+
+/* The max refined between scales (u_refine > 0; cpu_horizon.c
+ * hfs_horizon_key_refined): the plain max of the scales' slopes from fine
+ * to coarse (the first scale off the grid contributes the floor, and every
+ * coarser one is off the grid too), then u_refine samples about the finest
+ * scale t holding it (within HFS_HORIZON_TIE |slope| + u_tie), at d_t 2^(u/k), u = -1 + 2 (q + 1) / (u_refine + 1),
+ * from t's level.  Slopes, not angles, are compared: one atan. */
+float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout int fetches,
+                      out float dist, out bool seen)
+{
+    float tfl = clamp(tan(fl), -1e30, 1e30);
+    float best = -3e38, ref = 0.0;       /* the max; the slope at bi */
+    int bi = -1;
+    seen = false;
+    for (int i = HFS_NLEV - 1 - u_near; i >= 0; --i) {
+        vec4 sc = u_scale[i];
+        vec2 o;
+        float sl = tfl;
+        bool in_grid = hfs_scale_offset(g, u_size, sc.x, cs, o);
+        if (in_grid) {
+            sl = hfs_scale_slope(u_levels, g, u_size, o, sc, hx[int(sc.z)]);
+            seen = true;
+            ++fetches;
+        }
+        if (bi < 0 || sl > ref + HFS_HORIZON_TIE * abs(ref) + u_tie) { /* near-ties: the finest */
+            ref = sl;
+            bi = i;
+        }
+        best = max(best, sl);
+        if (!in_grid)
+            break;
+    }
+    if (bi < 0) {
+        dist = 0.0;
+        return fl;
+    }
+    vec4 sc = u_scale[bi];
+    dist = sc.x;
+    for (int q = 0; q < u_refine; ++q) {
+        float f = exp2((-1.0 + 2.0 * float(q + 1) / float(u_refine + 1)) / u_lk);
+        vec2 o;
+        if (!hfs_scale_offset(g, u_size, sc.x * f, cs, o))
+            continue;
+        float sl = hfs_scale_slope(u_levels, g, u_size, o, sc, hx[int(sc.z)]) / f;
+        ++fetches;
+        if (sl > best) {
+            best = sl;
+            dist = sc.x * f;
+        }
+    }
+    return atan(best);
+}
+
 void main()
 {
     ivec2 g = hfs_receiver(u_size, u_sub);
@@ -122,47 +223,15 @@ void main()
 
     for (int q = 0; q < u_ndir; ++q) {
         vec2 cs = SW_DIR(u_dir0 + q).xy;
-        float fl = hfs_floor(n, cs);
-        /* Per-scale angles from fine to coarse into the B-spline max.  Past
-         * the grid every angle is the floor: three more steps flush the
-         * window, then nothing can exceed the floor any more. */
-        float best = -HFS_HALF_PI, bd = 0.0;
-        bool seen = false;
-        vec4 w = vec4(fl);
-        int tail = 3;
-        int top = HFS_NLEV - 1 - u_near;
-        int i = top;
-        for (; i >= 0; --i) {
-            float a = fl;
-            if (tail == 3) {
-                vec4 sc = u_scale[i];
-                vec2 o;
-                if (!hfs_scale_offset(g, u_size, sc.x, cs, o)) {
-                    --tail;
-                } else {
-                    a = atan(hfs_scale_slope(u_levels, g, u_size, o, sc, hx[int(sc.z)]));
-                    seen = true;
-                    ++fetches;
-                }
-            } else if (--tail < 0) {
-                break;
-            }
-            if (i < top) {
-                float c = float(2 * (HFS_NLEV - 2 - i));
-                hfs_bspline_push_at(best, bd, w, a, i, c + 1.0, c);
-            } else {
-                w = vec4(a);
-            }
-        }
-        if (i < 0 && top >= 0) {
-            float c = float(2 * (HFS_NLEV - 1));
-            hfs_bspline_close_at(best, bd, w, c + 1.0, c);
-        }
+        float fl = hfs_floor(n, cs), dist;
+        bool seen;
+        float best = u_refine > 0 ? refined_horizon(g, cs, fl, hx, fetches, dist, seen)
+                                  : bspline_horizon(g, cs, fl, hx, fetches, dist, seen);
         best = clamp(best, -HFS_HALF_PI, HFS_HALF_PI);
         float stored = u_near > 0 ? tan(clamp(best, -HFS_KEY_TAN_ANGLE, HFS_KEY_TAN_ANGLE)) : best;
-        /* D from its code, rounded to fp16 whatever the targets hold, so
-         * that fp16 and fp32 frames correct with the same distance */
-        float dist = unpackHalf2x16(packHalf2x16(vec2(exp2((bd - 1.0) / (2.0 * u_lk)), 0.0))).x;
+        /* D rounded to fp16 whatever the targets hold, so that fp16 and
+         * fp32 frames correct with the same distance */
+        dist = unpackHalf2x16(packHalf2x16(vec2(dist, 0.0))).x;
         res[q] = vec4(hfs_split(stored), seen ? dist : 0.0, 0.0);
     }
 #ifdef HFS_COUNT

@@ -511,9 +511,17 @@ static fc_counts fc_expect(int w, int h, const hfs_quality *q, const hfs_lightin
                 /* four directions a draw; on a sub-sampled grid the
                  * finest scale is the factor pass's (hfs_gles_key_near) */
                 e.key += (double)((ns + 3) / 4) * (1 + nl);
-                for (int j = 0; j < ns; ++j)
-                    e.key += fc_scales_from(gx, gy, w, h, n_lev, k, phi[j], 1e300, NULL,
-                                            sub > 1 && n_lev > 1);
+                const int near = sub > 1 && n_lev > 1, top = n_lev - 1 - near;
+                for (int j = 0; j < ns; ++j) {
+                    e.key += fc_scales_from(gx, gy, w, h, n_lev, k, phi[j], 1e300, NULL, near);
+                    /* refinement about the finest scale searched: on the
+                     * flat field every slope ties (key_horizons.frag) */
+                    const double d0 = exp2((double)(n_lev - 1 - top) / k);
+                    for (int r = 0; r < q->key_refine && top >= 0; ++r) {
+                        const double fr = exp2((-1.0 + 2.0 * (r + 1) / (q->key_refine + 1)) / k);
+                        e.key += fc_in_grid(gx, gy, w, h, d0 * fr, cos(phi[j]), sin(phi[j]));
+                    }
+                }
             }
             if (l->n_local > 0)
                 e.local += (double)((l->n_local + 7) / 8) * (1 + nl);

@@ -12,6 +12,7 @@
 #include "gles_backend.h"
 
 #include "gl_util.h"
+#include "pyramid_layout.h"
 
 #include <string.h>
 
@@ -176,6 +177,9 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
             hfs_gles_set_i1(gl, prog, "u_ndir", cnt);
             hfs_gles_set_i1(gl, prog, "u_near", hfs_gles_key_near(L));
             hfs_gles_set_f1(gl, prog, "u_lk", (float)L->k);
+            hfs_gles_set_i1(gl, prog, "u_refine", fr->q->key_refine);
+            hfs_gles_set_f1(gl, prog, "u_tie",
+                            (float)hfs_horizon_tie_slope(L->hscale, L->zscale, L->dx));
             if (fr->key_swath_tex) {
                 if ((rc = hfs_gles_program_texture(gl, prog, "u_swath_tex", GL_TEXTURE_2D,
                                                    g->key_swath_tex.tex, err)))
