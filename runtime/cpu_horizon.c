@@ -238,13 +238,13 @@ double hfs_horizon_refine_factor(int q, int refine, int k)
     return exp2((-1.0 + 2.0 * (q + 1) / (refine + 1)) / k);
 }
 
-double hfs_horizon_key_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
-                               const double *omega, size_t stride, double floor, int refine,
-                               double tie)
+double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
+                           const double *omega, size_t stride, double floor, int refine,
+                           double tie, int seeded)
 {
     const int n = hp->n_levels;
-    int best_s = -1;
-    double best = -HALF_PI, best_slope = 0.0;
+    int best_s = seeded ? n - 1 : -1;
+    double best = -HALF_PI, best_slope = seeded ? tan(floor) : 0.0;
     for (int s = n - 1; s >= 0; --s) { /* fine to coarse; near-ties: the finest */
         const double o = omega[(size_t)s * stride];
         const double sl = tan(o);

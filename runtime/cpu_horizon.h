@@ -93,18 +93,24 @@ void hfs_horizon_row(const hfs_horizon_plan *hp, int dir, int j,
 /* Environment horizon from the row form: max(floor, atan(maxd)). */
 double hfs_horizon_env_from_maxd(double maxd, double floor);
 
-/* Key-light horizon with `refine` > 0 taps (DESIGN.md "Horizons", issue
- * 15): the plain max of the per-scale angles omega[s * stride] (the row
- * form's, floor off-grid), and `refine` more samples about the finest scale
- * t* holding that max (slopes within HFS_HORIZON_TIE of it, relative, plus
- * tie, absolute, count; pyramid_layout.h), at d_t* 2^(u/k), u = -1 + 2 (q + 1) / (refine + 1),
- * read from t*'s level like t* itself (off-grid ones skipped); then
- * max(floor, that), clamped to [-pi/2, pi/2].  Receiver (i, j), direction
- * dir of hp.  The B-spline's smoothing over scale lowers peaks the sparse
- * scales already under-sample; the refinement finds them between scales. */
-double hfs_horizon_key_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
-                               const double *omega, size_t stride, double floor, int refine,
-                               double tie);
+/* Environment or key-light horizon with `refine` > 0 taps (DESIGN.md
+ * "Horizons", issue 15): the plain max of the per-scale angles
+ * omega[s * stride] (the row form's, floor off-grid), and `refine` more
+ * samples about the scale t* holding that max, at d_t* 2^(u/k),
+ * u = -1 + 2 (q + 1) / (refine + 1), read from t*'s level like t* itself
+ * (off-grid ones skipped); then max(floor, that), clamped to [-pi/2,
+ * pi/2].  t*: going fine to coarse, a scale takes over when its slope
+ * exceeds the current one's by more than HFS_HORIZON_TIE of it plus tie
+ * (absolute; pyramid_layout.h), so near-ties go to the finer; `seeded`
+ * (the environment) starts from the floor's slope at the finest scale, so
+ * that a scale below the tangent plane never leads (the GLES pass skips
+ * what cannot beat it), otherwise (key lights) from the finest scale's own.
+ * Receiver (i, j), direction dir of hp.  Refining finds the peaks the
+ * sparse scales miss between them (SN08's B-spline max for key lights
+ * smooths over scale and lowers them further). */
+double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
+                           const double *omega, size_t stride, double floor, int refine,
+                           double tie, int seeded);
 
 /* The distance factor 2^(u/k) of refinement tap q of `refine` (k levels
  * per octave): one expression for every backend. */

@@ -99,8 +99,8 @@ typedef struct render_ctx {
     const hfs_field *f;
     hfs_image *out;
     int w, h, n_levels;
-    int key_refine;            /* hfs_quality.key_refine */
-    double key_tie;            /* its absolute slope tie, hfs_horizon_tie_slope */
+    int refine;                /* hfs_quality.refine */
+    double tie;                /* its absolute slope tie, hfs_horizon_tie_slope */
     double rho_pi;             /* albedo / pi */
     double h_zonal[HFS_ZH_N];  /* clamped cosine */
     double l_env[3][HFS_SH_N]; /* rotated environment */
@@ -147,7 +147,7 @@ static double norm16(const double v[HFS_SH_N])
 }
 
 /* hfs_horizon_tie_slope of field f. */
-static double key_tie_slope(const hfs_field *f)
+static double tie_slope(const hfs_field *f)
 {
     const size_t n = (size_t)f->width * (size_t)f->height;
     double lo = f->z[0], hi = f->z[0];
@@ -159,15 +159,15 @@ static double key_tie_slope(const hfs_field *f)
 }
 
 /* A key light's horizon at receiver (i, j) in direction d of plan from the
- * row's per-scale angles: SN08's B-spline max (key_refine 0) or the max
+ * row's per-scale angles: SN08's B-spline max (refine 0) or the max
  * refined between scales (cpu_horizon.h). */
 static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int d, int i,
                           int j, const double *levels, double floor)
 {
-    if (c->key_refine <= 0)
+    if (c->refine <= 0)
         return hfs_horizon_bspline_max(levels + i, c->n_levels, (size_t)c->w, floor);
-    return hfs_horizon_key_refined(plan, d, i, j, levels + i, (size_t)c->w, floor,
-                                   c->key_refine, c->key_tie);
+    return hfs_horizon_refined(plan, d, i, j, levels + i, (size_t)c->w, floor, c->refine,
+                               c->tie, 0);
 }
 
 /* Horizons of row j for every job: omega (and, for key lights, the floors
@@ -189,8 +189,9 @@ static void trace_row(const render_ctx *c, worker_scratch *s, int j)
             double *fl = job->is_env ? s->floor_row : floors + (size_t)d * w;
             for (int i = 0; i < w; ++i)
                 fl[i] = hfs_horizon_floor(s->normals + 3 * i, cs, sn);
-            hfs_horizon_row(job->plan, d, j, fl, job->is_env ? s->maxd : NULL,
-                            want_levels ? s->levels : NULL);
+            const int env_refined = job->is_env && c->refine > 0;
+            hfs_horizon_row(job->plan, d, j, fl, job->is_env && !env_refined ? s->maxd : NULL,
+                            want_levels || env_refined ? s->levels : NULL);
             double *om = omega + (size_t)d * w;
             if (!job->is_env) {
                 for (int i = 0; i < w; ++i)
@@ -198,7 +199,9 @@ static void trace_row(const render_ctx *c, worker_scratch *s, int j)
                 continue;
             }
             for (int i = 0; i < w; ++i)
-                om[i] = hfs_horizon_env_from_maxd(s->maxd[i], fl[i]);
+                om[i] = env_refined ? hfs_horizon_refined(job->plan, d, i, j, s->levels + i,
+                                                          (size_t)w, fl[i], c->refine, c->tie, 1)
+                                    : hfs_horizon_env_from_maxd(s->maxd[i], fl[i]);
             /* Key lights on the environment's swath: same reads, B-spline max. */
             for (int r = 0; r < c->n_jobs; ++r) {
                 if (!c->jobs[r].shares_env)
@@ -518,8 +521,8 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     /* Pyramid, plans, visibility. */
     const int n_levels = hfs_pyramid_level_count(w, h, q->k);
     c.n_levels = n_levels;
-    c.key_refine = q->key_refine;
-    c.key_tie = key_tie_slope(f);
+    c.refine = q->refine;
+    c.tie = tie_slope(f);
     rc = hfs_cpu_pyramid_create(f, q->k, hfs_pyramid_read_level(n_levels, q->k, q->offset, 0),
                                 threads, &pyr, err);
     if (rc)

@@ -152,7 +152,7 @@ typedef enum hfs_precision {
  * you need; 0 is then a real value where a field allows it (offset = 0).
  * The defaults are the "kiosk" preset (hfs_quality_preset), picked from the
  * measured error/time front: the exact slice path, k=3, offset=5, 12 env /
- * 3 key directions, 4 refining samples per key horizon, subsample 2 (SN08/NS09 used Legendre at k=4, offset=2,
+ * 3 key directions, 4 refining samples per horizon, subsample 2 (SN08/NS09 used Legendre at k=4, offset=2,
  * 32 directions: dominated on every benchmark scene, BENCHMARKS.md "Run
  * time against error"). */
 typedef struct hfs_quality {
@@ -160,9 +160,11 @@ typedef struct hfs_quality {
     int offset;              /* level offset o (levels biased by k*o), 5    */
     int nphi_env;            /* azimuth samples, environment (full swath) 12 */
     int nphi_key;            /* azimuth samples per key light swath, 3      */
-    int key_refine;          /* key lights: samples refining each horizon
-                                between scales about its highest one, 4;
-                                0: SN08's B-spline max over scale          */
+    int refine;              /* samples refining each environment and key-
+                                light horizon between the pyramid's scales,
+                                about the highest, 4; 0: the seeds' (plain
+                                max for the environment, SN08's B-spline
+                                max over scale for key lights)              */
     int nphi_local;          /* azimuth samples per local light's full swath, 16 */
     int local_full_swath;    /* 0: per-receiver partial swath where the light
                                 does not surround the receiver (default);

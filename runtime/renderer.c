@@ -317,7 +317,7 @@ int hfs_validate_quality(const hfs_quality *q, hfs_error *err)
         return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
     const struct { hfs_scene_key_id id; int value; } counts[] = {
         {HFS_SK_K, q->k}, {HFS_SK_OFFSET, q->offset}, {HFS_SK_NPHI_ENV, q->nphi_env},
-        {HFS_SK_NPHI_KEY, q->nphi_key}, {HFS_SK_KEY_REFINE, q->key_refine},
+        {HFS_SK_NPHI_KEY, q->nphi_key}, {HFS_SK_REFINE, q->refine},
         {HFS_SK_NPHI_LOCAL, q->nphi_local},
         {HFS_SK_SUBSAMPLE, q->subsample}, {HFS_SK_THREADS, q->threads},
         {HFS_SK_TRUTH_AZIMUTHS, q->truth_azimuths}, {HFS_SK_TRUTH_SAMPLES, q->truth_light_samples},

@@ -81,10 +81,10 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
     [HFS_SK_NPHI_KEY] = {"nphi-key", "N", HFS_FORM_INT, 1, 0, 0,
                          {{NULL, HFS_UNIT_COUNT, {1, 256, 0}, NULL}}, "3",
                          "azimuth samples per key light"},
-    [HFS_SK_KEY_REFINE] = {"key-refine", "N", HFS_FORM_INT, 1, 0, 0,
-                           {{NULL, HFS_UNIT_COUNT, {0, 16, 0}, NULL}}, "4",
-                           "key lights: samples refining each horizon between scales "
-                           "(0: SN08's B-spline max)"},
+    [HFS_SK_REFINE] = {"refine", "N", HFS_FORM_INT, 1, 0, 0,
+                       {{NULL, HFS_UNIT_COUNT, {0, 16, 0}, NULL}}, "4",
+                       "samples refining each environment and key-light horizon between "
+                       "scales (0: the seeds')"},
     [HFS_SK_NPHI_LOCAL] = {"nphi-local", "N", HFS_FORM_INT, 1, 0, 0,
                            {{NULL, HFS_UNIT_COUNT, {3, 1024, 0}, NULL}}, "16",
                            "azimuth samples per local light"},

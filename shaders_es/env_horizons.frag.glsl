@@ -90,6 +90,11 @@ uniform float u_vmax;                    /* largest normalized height, a hair up
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
 };
+uniform int u_refine;                    /* samples refining the max between scales */
+uniform float u_lk;                      /* the pyramid's levels per octave k */
+uniform float u_tie;                     /* hfs_horizon_tie_slope */
+/* pyramid_layout.h HFS_HORIZON_TIE: relative slope differences that tie. */
+#define HFS_HORIZON_TIE 1e-5
 #ifdef HFS_SLICE
 uniform int u_dir0;                      /* first direction of this draw */
 uniform int u_near;                      /* finest scales left to env_slices.frag */
@@ -142,11 +147,17 @@ void add_wedge(inout vec4 V[4], float a, float b, int w)
 
 
 /* The largest slope tan(omega) in direction cs over the scales from
- * `first` (finest searched) to the coarsest in the grid, not below `best`;
- * counts its fetches. */
+ * `first` (finest searched) to the coarsest in the grid, not below `best`,
+ * then (u_refine > 0) over u_refine samples about the scale holding it
+ * (cpu_horizon.h hfs_horizon_refined, seeded with `best`: a scale takes
+ * over when it beats the current one by more than the tie); counts its
+ * fetches.  A scale whose largest possible slope cannot beat `best` is
+ * skipped: it could not take over either. */
 float horizon_tan(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], float best, int first,
                   inout int fetches)
 {
+    float ref = best;
+    int bi = first;
     for (int i = first; i >= 0; --i) {
         vec4 sc = u_scale[i];
         vec2 o;
@@ -155,7 +166,23 @@ float horizon_tan(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], float best, int first,
         vec2 h = hx[int(sc.z)];
         if ((u_vmax - hfs_h(h)) * sc.y <= best)
             continue;
-        best = max(best, hfs_scale_slope(u_levels, g, u_size, o, sc, h));
+        float sl = hfs_scale_slope(u_levels, g, u_size, o, sc, h);
+        ++fetches;
+        if (sl > ref + HFS_HORIZON_TIE * abs(ref) + u_tie) {
+            ref = sl;
+            bi = i;
+        }
+        best = max(best, sl);
+    }
+    if (bi < 0)
+        return best;
+    vec4 sc = u_scale[bi];
+    for (int q = 0; q < u_refine; ++q) {
+        float f = exp2((-1.0 + 2.0 * float(q + 1) / float(u_refine + 1)) / u_lk);
+        vec2 o;
+        if (!hfs_scale_offset(g, u_size, sc.x * f, cs, o))
+            continue;
+        best = max(best, hfs_scale_slope(u_levels, g, u_size, o, sc, hx[int(sc.z)]) / f);
         ++fetches;
     }
     return best;

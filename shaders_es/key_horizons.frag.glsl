@@ -158,7 +158,7 @@ float bspline_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
 }
 
 /* The max refined between scales (u_refine > 0; cpu_horizon.c
- * hfs_horizon_key_refined): the plain max of the scales' slopes from fine
+ * hfs_horizon_refined): the plain max of the scales' slopes from fine
  * to coarse (the first scale off the grid contributes the floor, and every
  * coarser one is off the grid too), then u_refine samples about the finest
  * scale t holding it (within HFS_HORIZON_TIE |slope| + u_tie), at d_t 2^(u/k), u = -1 + 2 (q + 1) / (u_refine + 1),

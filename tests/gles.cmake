@@ -98,19 +98,24 @@ hfs_gles_test(test_gles_sub4_dem sub dem 4 4.23e-3 1.51e-2 0.249)
 hfs_gles_test(test_gles_sub2_dem_key sub dem 2 6.5e-2 4.5e-3 0.944 key)
 hfs_gles_test(test_gles_sub4_dem_key sub dem 4 2.2e-2 1.29e-2 1.07 key)
 hfs_gles_test(test_gles_sub2_fractal_key sub fractal 2 7.3e-2 1.13e-2 1.11 key)
-# The same on the exact slice path (sky alone): grid texels differ from
-# subsample 1 by the fp16 rounding of the stored horizon elevations (at
-# subsample 2 the finest scale is searched per texel in fp32; measured
-# 4.0e-5 / 3.2e-4 / 7.9e-5: bound 10x); elsewhere the interpolation of the
-# far horizons, measurement + 20% as above (Legendre's at subsample 2, for
-# comparison: 1.05e-3 / 3.14e-2 / 4.66e-3 mean):
-#   measured mean / max  cones   sub 2 4.15e-4 / 9.71e-3
-#                        fractal sub 2 1.24e-2 / 0.316  sub 4 2.92e-2 / 0.331
-#                        DEM     sub 2 2.20e-3 / 4.13e-2
-hfs_gles_test(test_gles_sub2_cones_slice sub cones 2 4e-4 5e-4 1.17e-2 env slice)
-hfs_gles_test(test_gles_sub2_fractal_slice sub fractal 2 3.2e-3 1.5e-2 0.38 env slice)
-hfs_gles_test(test_gles_sub4_fractal_slice sub fractal 4 1.6e-3 3.5e-2 0.4 env slice)
-hfs_gles_test(test_gles_sub2_dem_slice sub dem 2 8e-4 2.64e-3 5e-2 env slice)
+# The same on the exact slice path (sky alone).  Grid texels: at subsample
+# 2 and 4 the finest scale is searched per texel (env_slices.frag), so the
+# grid pass's refinement between scales (--refine) never starts from it,
+# where subsample 1's does when it holds the max: grid texels differ where
+# that refinement finds a higher peak about distance 1 (plus the fp16
+# rounding of the stored horizons, 4e-5 / 3.2e-4 / 7.9e-5 before
+# --refine); elsewhere the interpolation of the far horizons.  Bounds:
+# measurement + 20% as above:
+#   measured grid / mean / max  cones   sub 2 2.09e-3 / 4.05e-4 / 9.78e-3
+#                               fractal sub 2 3.69e-2 / 1.43e-2 / 0.349
+#                                       sub 4 2.83e-2 / 3.27e-2 / 0.467
+#                               DEM     sub 2 2.80e-3 / 2.26e-3 / 4.60e-2
+# (before --refine: mean 4.15e-4 / 1.24e-2 / 2.92e-2 / 2.20e-3; Legendre's
+# at subsample 2, for comparison: 1.05e-3 / 3.14e-2 / 4.66e-3.)
+hfs_gles_test(test_gles_sub2_cones_slice sub cones 2 2.5e-3 4.86e-4 1.17e-2 env slice)
+hfs_gles_test(test_gles_sub2_fractal_slice sub fractal 2 4.4e-2 1.71e-2 0.42 env slice)
+hfs_gles_test(test_gles_sub4_fractal_slice sub fractal 4 3.4e-2 3.93e-2 0.56 env slice)
+hfs_gles_test(test_gles_sub2_dem_slice sub dem 2 3.4e-3 2.72e-3 5.5e-2 env slice)
 foreach(mode determinism cache flat timing errors variants slice)
   hfs_gles_test(test_gles_${mode} ${mode})
 endforeach()

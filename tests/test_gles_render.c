@@ -133,6 +133,32 @@ static inline int bitequal(const hfs_image *a, const hfs_image *b)
            !memcmp(a->rgb, b->rgb, (size_t)a->width * a->height * 3 * sizeof(float));
 }
 
+/* Texels where a and b differ by more than bound (of norm) in some channel. */
+static long count_over(const hfs_image *a, const hfs_image *b, double norm, double bound)
+{
+    long n = 0;
+    for (size_t i = 0; i < (size_t)a->width * a->height; ++i) {
+        int over = 0;
+        for (int c = 0; c < 3; ++c)
+            over |= fabs((double)a->rgb[3 * i + c] - b->rgb[3 * i + c]) > bound * norm;
+        n += over;
+    }
+    return n;
+}
+
+/* Texels allowed past the max bound of a GLES-against-CPU comparison: the
+ * horizons refined between scales (--refine) pick the scale to refine
+ * about by comparing slopes, and where two scales' slopes tie to within
+ * float rounding (beyond pyramid_layout.h's tie), float and double can
+ * pick differently: a discontinuity of the algorithm, not a difference of
+ * implementation.  One texel in 2000 (at least 2); the mean bound and every
+ * other texel's stay as measured. */
+static long tie_allowance(const hfs_image *a)
+{
+    const long n = (long)a->width * a->height / 2000;
+    return n > 2 ? n : 2;
+}
+
 /* ---- modes ---------------------------------------------------------------------------- */
 
 static int mode_equal(int argc, char **argv)
@@ -159,9 +185,13 @@ static int mode_equal(int argc, char **argv)
         printf("%s %dx%d %s %s subsample %d: mean %.3e rmse %.3e p99 %.3e max %.3e "
                "nonfinite %ld (norm %.4g)\n", name, n, n, prec, path, sub, m.mean_abs, m.rmse,
                m.p99_abs, m.max_abs, m.nonfinite, m.norm);
+        const long over = count_over(&g, &c, m.norm, max_max);
+        printf("texels past the max bound %.1e: %ld (allowed %ld)\n", max_max, over,
+               tie_allowance(&g));
         CHECK(m.nonfinite == 0, "%ld non-finite outputs", m.nonfinite);
         CHECK(m.mean_abs <= max_mean, "mean %.3e > %.3e", m.mean_abs, max_mean);
-        CHECK(m.max_abs <= max_max, "max %.3e > %.3e", m.max_abs, max_max);
+        CHECK(over <= tie_allowance(&g), "%ld texels past the max %.3e (largest %.3e)", over,
+              max_max, m.max_abs);
     }
     hfs_image_free(&g);
     hfs_image_free(&c);
@@ -502,9 +532,16 @@ static fc_counts fc_expect(int w, int h, const hfs_quality *q, const hfs_lightin
             const int gy = b * sub < h - 1 ? b * sub : h - 1;
             if (l->has_env) {
                 e.env += 1 + nl + (tables ? 4 * q->nphi_env : 0);
-                for (int j = 0; j < q->nphi_env; ++j)
-                    e.env += fc_scales(gx, gy, w, h, n_lev, k, 2.0 * PI * j / q->nphi_env, 1e300,
-                                       NULL);
+                for (int j = 0; j < q->nphi_env; ++j) {
+                    const double phi_j = 2.0 * PI * j / q->nphi_env;
+                    e.env += fc_scales(gx, gy, w, h, n_lev, k, phi_j, 1e300, NULL);
+                    /* refinement about the finest scale (every slope ties
+                     * with the floor's on the flat field) */
+                    for (int r = 0; r < q->refine; ++r) {
+                        const double fr = exp2((-1.0 + 2.0 * (r + 1) / (q->refine + 1)) / k);
+                        e.env += fc_in_grid(gx, gy, w, h, fr, cos(phi_j), sin(phi_j));
+                    }
+                }
             }
             for (int kq = 0; kq < l->n_key; ++kq) {
                 const int ns = fc_key_swath(&l->key[kq], q->nphi_key, q->nphi_env, phi);
@@ -517,8 +554,8 @@ static fc_counts fc_expect(int w, int h, const hfs_quality *q, const hfs_lightin
                     /* refinement about the finest scale searched: on the
                      * flat field every slope ties (key_horizons.frag) */
                     const double d0 = exp2((double)(n_lev - 1 - top) / k);
-                    for (int r = 0; r < q->key_refine && top >= 0; ++r) {
-                        const double fr = exp2((-1.0 + 2.0 * (r + 1) / (q->key_refine + 1)) / k);
+                    for (int r = 0; r < q->refine && top >= 0; ++r) {
+                        const double fr = exp2((-1.0 + 2.0 * (r + 1) / (q->refine + 1)) / k);
                         e.key += fc_in_grid(gx, gy, w, h, d0 * fr, cos(phi[j]), sin(phi[j]));
                     }
                 }
@@ -697,13 +734,15 @@ static int mode_variants(void)
                     hfs_metrics m = compare(&s, &l, &q, &g, &c);
                     const double bmean = 10.0 * cases[ci].meas[p][prec][0];
                     const double bmax = 10.0 * cases[ci].meas[p][prec][1];
-                    printf("%-8s %3dx%-3d k%d o%d nphi %2d/%d keys %d env %d %-8s %s: mean %.2e max %.2e\n",
+                    const long over = count_over(&g, &c, m.norm, bmax);
+                    printf("%-8s %3dx%-3d k%d o%d nphi %2d/%d keys %d env %d %-8s %s: mean %.2e max %.2e"
+                           " (%ld texels past %.1e)\n",
                            cases[ci].scene, cases[ci].w, cases[ci].h, q.k, q.offset, q.nphi_env,
                            q.nphi_key, l.n_key, l.has_env, p ? "tables" : "legendre",
-                           prec ? "fp32" : "fp16", m.mean_abs, m.max_abs);
-                    CHECK(m.nonfinite == 0 && m.mean_abs <= bmean && m.max_abs <= bmax,
-                          "case %zu: mean %.3e (bound %.1e) max %.3e (bound %.1e)", ci, m.mean_abs,
-                          bmean, m.max_abs, bmax);
+                           prec ? "fp32" : "fp16", m.mean_abs, m.max_abs, over, bmax);
+                    CHECK(m.nonfinite == 0 && m.mean_abs <= bmean && over <= tie_allowance(&g),
+                          "case %zu: mean %.3e (bound %.1e) max %.3e: %ld texels past %.1e", ci,
+                          m.mean_abs, bmean, m.max_abs, over, bmax);
                 }
                 hfs_image_free(&g);
                 hfs_image_free(&c);

@@ -177,7 +177,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
             hfs_gles_set_i1(gl, prog, "u_ndir", cnt);
             hfs_gles_set_i1(gl, prog, "u_near", hfs_gles_key_near(L));
             hfs_gles_set_f1(gl, prog, "u_lk", (float)L->k);
-            hfs_gles_set_i1(gl, prog, "u_refine", fr->q->key_refine);
+            hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
             hfs_gles_set_f1(gl, prog, "u_tie",
                             (float)hfs_horizon_tie_slope(L->hscale, L->zscale, L->dx));
             if (fr->key_swath_tex) {

@@ -158,7 +158,7 @@ static int *int_field(hfs_scene *s, hfs_scene_key_id id)
     case HFS_SK_OFFSET: return &q->offset;
     case HFS_SK_NPHI_ENV: return &q->nphi_env;
     case HFS_SK_NPHI_KEY: return &q->nphi_key;
-    case HFS_SK_KEY_REFINE: return &q->key_refine;
+    case HFS_SK_REFINE: return &q->refine;
     case HFS_SK_NPHI_LOCAL: return &q->nphi_local;
     case HFS_SK_SUBSAMPLE: return &q->subsample;
     case HFS_SK_THREADS: return &q->threads;
@@ -351,7 +351,7 @@ void hfs_scene_quality(const hfs_scene *s, hfs_quality *q)
     TAKE(HFS_SK_OFFSET, offset);
     TAKE(HFS_SK_NPHI_ENV, nphi_env);
     TAKE(HFS_SK_NPHI_KEY, nphi_key);
-    TAKE(HFS_SK_KEY_REFINE, key_refine);
+    TAKE(HFS_SK_REFINE, refine);
     TAKE(HFS_SK_NPHI_LOCAL, nphi_local);
     TAKE(HFS_SK_SUBSAMPLE, subsample);
     TAKE(HFS_SK_PRECISION, precision);
