@@ -3,7 +3,7 @@
  * measurements with known answers: the per-scene Pareto front (ties and
  * dominated points), the all-scenes front over each setting's worst case,
  * a setting that failed on one scene never counts, and each use's pick
- * (the CPU backend never picked).
+ * (the CPU backend and fp32 never picked).
  */
 #include "bench_front.h"
 
@@ -98,6 +98,17 @@ int main(void)
     CHECK(pk.point[USE_HEADLESS] == 10, "headless picks %d (want 10: ties 9 on time, more "
           "accurate)", pk.point[USE_HEADLESS]);
     CHECK(pk.point[USE_PANEL] == 8, "panel picks %d (want 8)", pk.point[USE_PANEL]);
+    free(pk.front);
+
+    /* An fp32 twin of 7, a little faster by noise (45 ms), same error: not
+     * the product's profile, never on the front nor picked. */
+    pts2[9].q.precision = HFS_PRECISION_FP32;
+    res3[3].frame_ms = res3[8].frame_ms = 45;
+    res3[3].mean_abs = res3[8].mean_abs = 0.0208;
+    CHECK(bench_pick(res3, 10, 2, pts2, 11, &b2, &pk) == 0, "pick");
+    CHECK(!pk.front[9] && pk.point[USE_KIOSK] == 7 && pk.point[USE_HEADLESS] != 9,
+          "fp32 point: front %d, kiosk picks %d (want 7), headless %d", pk.front[9],
+          pk.point[USE_KIOSK], pk.point[USE_HEADLESS]);
     free(pk.front);
     printf("bench front: %s\n", failures ? "FAILED" : "ok");
     return failures ? 1 : 0;

@@ -68,6 +68,15 @@ static void pick_uses(bench_picks *picks, int n_points, const double *t, const d
             *h = p;
 }
 
+/* A setting the product can run: GLES, and not fp32 (EXT_color_buffer_float
+ * is outside the product's profile: the sweep measures fp32 for comparison
+ * only; with the same error it can still time a few % faster by noise and
+ * win a tie). */
+static int product(const bench_point *pt)
+{
+    return pt->backend != HFS_BACKEND_CPU && pt->q.precision != HFS_PRECISION_FP32;
+}
+
 int bench_pick(const bench_result *res, int n_res, int n_scenes, const bench_point *pts,
                int n_points, const bench_budget *b, bench_picks *picks)
 {
@@ -93,9 +102,9 @@ int bench_pick(const bench_result *res, int n_res, int n_scenes, const bench_poi
         p99[r->point] = fmax(p99[r->point], r->p99_abs);
     }
     for (int p = 0; p < n_points; ++p) {
-        picks->front[p] = seen[p] == n_scenes && pts[p].backend != HFS_BACKEND_CPU;
+        picks->front[p] = seen[p] == n_scenes && product(&pts[p]);
         for (int q = 0; q < n_points && picks->front[p]; ++q)
-            if (q != p && seen[q] == n_scenes && pts[q].backend != HFS_BACKEND_CPU &&
+            if (q != p && seen[q] == n_scenes && product(&pts[q]) &&
                 dominates(t[q], e[q], t[p], e[p]))
                 picks->front[p] = 0;
     }

@@ -4,8 +4,9 @@
  * setting's worst time and worst error over the scenes), the settings picked
  * from that front for each use, and the outputs (CSV, gnuplot plots).
  *
- * Uses (each a rule over the all-scenes front, GLES settings only: the
- * uses run the product; budgets are options):
+ * Uses (each a rule over the all-scenes front, GLES fp16 settings only:
+ * the uses run the product, and fp32 is outside its profile; budgets are
+ * options):
  *   kiosk     the most accurate setting whose worst full frame fits the
  *             kiosk budget (default 100 ms: 10 frames/s while the terrain
  *             changes; light-only frames cost far less);
