@@ -355,6 +355,7 @@ static void test_wall(void)
             z[j * w + i] = 12.0f;
     hfs_quality q;
     hfs_quality_defaults(&q);
+    q.k = 3, q.offset = 5, q.nphi_env = 12, q.nphi_key = 3; /* as measured (issue 15's defaults) */
     double worst[3][3] = {{0}};
     for (int path = HFS_VIS_LEGENDRE; path <= HFS_VIS_WEDGE_TABLE; ++path)
         for (int mode = 0; mode <= 1; ++mode) {
