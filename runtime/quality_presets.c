@@ -39,7 +39,7 @@ void hfs_quality_defaults(hfs_quality *q)
 {
     memset(q, 0, sizeof *q);
     q->nphi_local = 16;
-    q->refine = 4; /* BENCHMARKS.md "Horizons refined between scales" */
+    q->refine = 4; /* BENCHMARKS.md "... horizons refined between scales" */
     q->local_full_swath = 0;
     q->threads = 0;
     q->truth_azimuths = 720;
