@@ -233,7 +233,9 @@ double hfs_horizon_env_from_maxd(double maxd, double floor)
     return o > HALF_PI ? HALF_PI : (o < -HALF_PI ? -HALF_PI : o);
 }
 
-double hfs_horizon_refine_factor(int q, int refine, int k)
+/* The distance factor 2^(u/k) of refining sample q of `refine` (k levels
+ * per octave); gles_lib.frag hfs_refine_about spells the same. */
+static double refine_factor(int q, int refine, int k)
 {
     return exp2((-1.0 + 2.0 * (q + 1) / (refine + 1)) / k);
 }
@@ -261,7 +263,7 @@ double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
     const double h0 = r[(size_t)j * hp->stride + (size_t)i];
     double maxd = -DBL_MAX;
     for (int q = 0; q < refine; ++q) {
-        const double f = hfs_horizon_refine_factor(q, refine, k);
+        const double f = refine_factor(q, refine, k);
         int ix, iy, xlo, xhi, ylo, yhi;
         double fx, fy;
         split_offset(d0 * f * hp->cs[2 * dir], &ix, &fx);

@@ -112,10 +112,6 @@ double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
                            const double *omega, size_t stride, double floor, int refine,
                            double tie, int seeded);
 
-/* The distance factor 2^(u/k) of refinement tap q of `refine` (k levels
- * per octave): one expression for every backend. */
-double hfs_horizon_refine_factor(int q, int refine, int k);
-
 /* Key-light horizon, SN08's: max(floor, max over knots and midpoints of the
  * cubic B-spline of omega[0], omega[stride], ..., omega[(n-1)*stride]),
  * clamped to [-pi/2, pi/2]. */

@@ -149,12 +149,8 @@ static double norm16(const double v[HFS_SH_N])
 /* hfs_horizon_tie_slope of field f. */
 static double tie_slope(const hfs_field *f)
 {
-    const size_t n = (size_t)f->width * (size_t)f->height;
-    double lo = f->z[0], hi = f->z[0];
-    for (size_t i = 1; i < n; ++i) {
-        lo = f->z[i] < lo ? f->z[i] : lo;
-        hi = f->z[i] > hi ? f->z[i] : hi;
-    }
+    double lo, hi;
+    hfs_field_range(f, &lo, &hi);
     return hfs_horizon_tie_slope(0.5 * hi - 0.5 * lo, f->zscale, f->dx);
 }
 

@@ -46,3 +46,15 @@ void hfs_dir(double phi, double e, double s[3])
     s[1] = sin(phi) * ce;
     s[2] = sin(e);
 }
+
+void hfs_field_range(const hfs_field *f, double *lo, double *hi)
+{
+    const size_t n = (size_t)f->width * (size_t)f->height;
+    double a = f->z[0], b = f->z[0];
+    for (size_t i = 1; i < n; ++i) {
+        a = f->z[i] < a ? f->z[i] : a;
+        b = f->z[i] > b ? f->z[i] : b;
+    }
+    *lo = a;
+    *hi = b;
+}

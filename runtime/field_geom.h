@@ -23,6 +23,10 @@ int hfs_field_bilinear(const hfs_field *f, double gx, double gy, double *z);
  * at the border), N = normalize(-dz/dx, -dz/dy, 1). */
 void hfs_field_normal(const hfs_field *f, int i, int j, double n[3]);
 
+/* The smallest and largest height sample (the field's units, before
+ * zscale). */
+void hfs_field_range(const hfs_field *f, double *lo, double *hi);
+
 /* Direction s(phi, e) = (cos phi cos e, sin phi cos e, sin e). */
 void hfs_dir(double phi, double e, double s[3]);
 

@@ -71,6 +71,9 @@ ivec2 hfs_receiver(ivec2 size, int sub);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
+bool hfs_scale_takes_over(float sl, float ref, float tie);
+float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs, vec4 sc,
+                       vec2 h, int n, float k, float best, inout float dist, inout int fetches);
 vec4 hfs_nlp_occ_tan(float t);
 vec4 hfs_f16v(vec4 v);
 void hfs_sh_hemisphere(vec3 n, out vec4 h[4]);
@@ -93,8 +96,6 @@ layout(std140) uniform HfsScales {
 uniform int u_refine;                    /* samples refining the max between scales */
 uniform float u_lk;                      /* the pyramid's levels per octave k */
 uniform float u_tie;                     /* hfs_horizon_tie_slope */
-/* pyramid_layout.h HFS_HORIZON_TIE: relative slope differences that tie. */
-#define HFS_HORIZON_TIE 1e-5
 #ifdef HFS_SLICE
 uniform int u_dir0;                      /* first direction of this draw */
 uniform int u_near;                      /* finest scales left to env_slices.frag */
@@ -168,7 +169,7 @@ float horizon_tan(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], float best, int first,
             continue;
         float sl = hfs_scale_slope(u_levels, g, u_size, o, sc, h);
         ++fetches;
-        if (sl > ref + HFS_HORIZON_TIE * abs(ref) + u_tie) {
+        if (hfs_scale_takes_over(sl, ref, u_tie)) {
             ref = sl;
             bi = i;
         }
@@ -177,15 +178,9 @@ float horizon_tan(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], float best, int first,
     if (bi < 0)
         return best;
     vec4 sc = u_scale[bi];
-    for (int q = 0; q < u_refine; ++q) {
-        float f = exp2((-1.0 + 2.0 * float(q + 1) / float(u_refine + 1)) / u_lk);
-        vec2 o;
-        if (!hfs_scale_offset(g, u_size, sc.x * f, cs, o))
-            continue;
-        best = max(best, hfs_scale_slope(u_levels, g, u_size, o, sc, hx[int(sc.z)]) / f);
-        ++fetches;
-    }
-    return best;
+    float dist = 0.0;
+    return hfs_refine_about(u_levels, g, u_size, cs, sc, hx[int(sc.z)], u_refine, u_lk, best,
+                            dist, fetches);
 }
 
 /* The fetch count (HFS_COUNT) in place of the pass's output. */

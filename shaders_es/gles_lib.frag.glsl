@@ -371,6 +371,43 @@ float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, 
     return hfs_hdiff(t, h) * sc.y;
 }
 
+/* ---- horizons refined between scales (cpu_horizon.h hfs_horizon_refined) -- */
+
+/* pyramid_layout.h HFS_HORIZON_TIE: relative slope differences that tie. */
+#define HFS_HORIZON_TIE 1e-5
+
+/* Whether slope sl, met going fine to coarse, takes over from the current
+ * leading slope ref: it must beat it by more than the tie (relative, plus
+ * tie, hfs_horizon_tie_slope), so that near-ties go to the finer scale in
+ * float as in the CPU's double. */
+bool hfs_scale_takes_over(float sl, float ref, float tie)
+{
+    return sl > ref + HFS_HORIZON_TIE * abs(ref) + tie;
+}
+
+/* The n refining samples about scale sc = (d, inv_run, layer, 0) of
+ * receiver g (height h = R_layer(g)) in direction cs: at d 2^(u/k),
+ * u = -1 + 2 (q + 1) / (n + 1), strictly between sc's neighbouring scales,
+ * read from sc's level; returns max(best, their slopes), and sets *dist to
+ * the distance of a sample that raised it.  Counts its fetches. */
+float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs, vec4 sc,
+                       vec2 h, int n, float k, float best, inout float dist, inout int fetches)
+{
+    for (int q = 0; q < n; ++q) {
+        float f = exp2((-1.0 + 2.0 * float(q + 1) / float(n + 1)) / k);
+        vec2 o;
+        if (!hfs_scale_offset(g, size, sc.x * f, cs, o))
+            continue;
+        float sl = hfs_scale_slope(levels, g, size, o, sc, h) / f;
+        ++fetches;
+        if (sl > best) {
+            best = sl;
+            dist = sc.x * f;
+        }
+    }
+    return best;
+}
+
 /* B-spline max over the scale index on the fly, fed per-scale angles from
  * fine (i = HFS_NLEV - 1) to coarse, indices clamped (runtime/cpu_horizon.c
  * hfs_horizon_bspline_max, same expressions): after om[i] = a arrives,

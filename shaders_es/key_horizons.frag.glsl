@@ -50,9 +50,6 @@
 #ifndef HFS_HALF_PI
 #define HFS_HALF_PI 1.5707963267948966
 #endif
-/* pyramid_layout.h HFS_HORIZON_TIE: relative slope differences that tie
- * (u_tie: the absolute part, hfs_horizon_tie_slope). */
-#define HFS_HORIZON_TIE 1e-5
 /* Horizons stored as tangents are clamped to this elevation (tan < 1e4). */
 #define HFS_KEY_TAN_ANGLE 1.5706963
 
@@ -71,6 +68,9 @@ float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, 
 void hfs_bspline_push_at(inout float best, inout float bd, inout vec4 w, float a, int i,
                          float dk, float dm);
 void hfs_bspline_close_at(inout float best, inout float bd, vec4 w, float dk, float dm);
+bool hfs_scale_takes_over(float sl, float ref, float tie);
+float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs, vec4 sc,
+                       vec2 h, int n, float k, float best, inout float dist, inout int fetches);
 
 uniform highp sampler2DArray u_levels;
 uniform highp sampler2D u_normals;
@@ -161,8 +161,8 @@ float bspline_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
  * hfs_horizon_refined): the plain max of the scales' slopes from fine
  * to coarse (the first scale off the grid contributes the floor, and every
  * coarser one is off the grid too), then u_refine samples about the finest
- * scale t holding it (within HFS_HORIZON_TIE |slope| + u_tie), at d_t 2^(u/k), u = -1 + 2 (q + 1) / (u_refine + 1),
- * from t's level.  Slopes, not angles, are compared: one atan. */
+ * scale t holding it (hfs_scale_takes_over, hfs_refine_about).  Slopes,
+ * not angles, are compared: one atan. */
 float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout int fetches,
                       out float dist, out bool seen)
 {
@@ -180,7 +180,7 @@ float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
             seen = true;
             ++fetches;
         }
-        if (bi < 0 || sl > ref + HFS_HORIZON_TIE * abs(ref) + u_tie) { /* near-ties: the finest */
+        if (bi < 0 || hfs_scale_takes_over(sl, ref, u_tie)) {
             ref = sl;
             bi = i;
         }
@@ -194,18 +194,8 @@ float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
     }
     vec4 sc = u_scale[bi];
     dist = sc.x;
-    for (int q = 0; q < u_refine; ++q) {
-        float f = exp2((-1.0 + 2.0 * float(q + 1) / float(u_refine + 1)) / u_lk);
-        vec2 o;
-        if (!hfs_scale_offset(g, u_size, sc.x * f, cs, o))
-            continue;
-        float sl = hfs_scale_slope(u_levels, g, u_size, o, sc, hx[int(sc.z)]) / f;
-        ++fetches;
-        if (sl > best) {
-            best = sl;
-            dist = sc.x * f;
-        }
-    }
+    best = hfs_refine_about(u_levels, g, u_size, cs, sc, hx[int(sc.z)], u_refine, u_lk, best,
+                            dist, fetches);
     return atan(best);
 }
 

@@ -478,6 +478,19 @@ static long fc_scales_from(int gx, int gy, int w, int h, int n_lev, int k, doubl
     return n;
 }
 
+/* In-grid refining samples (key_horizons.frag, env_horizons.frag) about
+ * the scale at distance d0: on the flat field every slope ties, so the
+ * refinement is about the finest scale searched. */
+static long fc_refined(int gx, int gy, int w, int h, double d0, int refine, int k, double phi)
+{
+    long n = 0;
+    for (int r = 0; r < refine; ++r) {
+        const double f = exp2((-1.0 + 2.0 * (r + 1) / (refine + 1)) / k);
+        n += fc_in_grid(gx, gy, w, h, d0 * f, cos(phi), sin(phi));
+    }
+    return n;
+}
+
 static long fc_scales(int gx, int gy, int w, int h, int n_lev, int k, double phi, double cut,
                       double *margin)
 {
@@ -534,13 +547,8 @@ static fc_counts fc_expect(int w, int h, const hfs_quality *q, const hfs_lightin
                 e.env += 1 + nl + (tables ? 4 * q->nphi_env : 0);
                 for (int j = 0; j < q->nphi_env; ++j) {
                     const double phi_j = 2.0 * PI * j / q->nphi_env;
-                    e.env += fc_scales(gx, gy, w, h, n_lev, k, phi_j, 1e300, NULL);
-                    /* refinement about the finest scale (every slope ties
-                     * with the floor's on the flat field) */
-                    for (int r = 0; r < q->refine; ++r) {
-                        const double fr = exp2((-1.0 + 2.0 * (r + 1) / (q->refine + 1)) / k);
-                        e.env += fc_in_grid(gx, gy, w, h, fr, cos(phi_j), sin(phi_j));
-                    }
+                    e.env += fc_scales(gx, gy, w, h, n_lev, k, phi_j, 1e300, NULL) +
+                             fc_refined(gx, gy, w, h, 1.0, q->refine, k, phi_j);
                 }
             }
             for (int kq = 0; kq < l->n_key; ++kq) {
@@ -551,13 +559,9 @@ static fc_counts fc_expect(int w, int h, const hfs_quality *q, const hfs_lightin
                 const int near = sub > 1 && n_lev > 1, top = n_lev - 1 - near;
                 for (int j = 0; j < ns; ++j) {
                     e.key += fc_scales_from(gx, gy, w, h, n_lev, k, phi[j], 1e300, NULL, near);
-                    /* refinement about the finest scale searched: on the
-                     * flat field every slope ties (key_horizons.frag) */
-                    const double d0 = exp2((double)(n_lev - 1 - top) / k);
-                    for (int r = 0; r < q->refine && top >= 0; ++r) {
-                        const double fr = exp2((-1.0 + 2.0 * (r + 1) / (q->refine + 1)) / k);
-                        e.key += fc_in_grid(gx, gy, w, h, d0 * fr, cos(phi[j]), sin(phi[j]));
-                    }
+                    if (top >= 0)
+                        e.key += fc_refined(gx, gy, w, h, exp2((double)(n_lev - 1 - top) / k),
+                                            q->refine, k, phi[j]);
                 }
             }
             if (l->n_local > 0)

@@ -143,11 +143,12 @@ int hfs_gles_draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo,
 int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, double *sum,
                         hfs_error *err);
 
-/* A key light's irradiance at normal incidence, pi sin^2 alpha: the
- * largest value of its factor (never 0 in float). */
 /* 1 where the key horizons' finest scale (distance 1) is searched per texel
  * by the factor pass instead of on the grid (a sub-sampled grid). */
 int hfs_gles_key_near(const hfs_gles_layout *L);
+
+/* A key light's irradiance at normal incidence, pi sin^2 alpha: the
+ * largest value of its factor (never 0 in float). */
 double hfs_gles_key_emax(const hfs_gles_key *k);
 
 #endif /* HFS_GLES_BACKEND_H */

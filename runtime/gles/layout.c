@@ -3,10 +3,10 @@
  */
 #include "layout.h"
 
+#include "field_geom.h"
 #include "pyramid_layout.h"
 #include "gl_util.h"
 
-#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -43,13 +43,8 @@ int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quali
         L->spacing[i] = hfs_pyramid_spacing(L->n_levels, q->k, i);
         L->read_layer[i] = hfs_pyramid_read_level(L->n_levels, q->k, q->offset, i) - L->lmin;
     }
-    double lo = DBL_MAX, hi = -DBL_MAX;
-    const size_t n = (size_t)L->w * (size_t)L->h;
-    for (size_t i = 0; i < n; ++i) {
-        const double z = f->z[i];
-        lo = z < lo ? z : lo;
-        hi = z > hi ? z : hi;
-    }
+    double lo, hi;
+    hfs_field_range(f, &lo, &hi);
     L->base = 0.5 * lo + 0.5 * hi; /* no overflow for any float range */
     L->hscale = 0.5 * hi - 0.5 * lo;
     L->vmax = 1.0;

@@ -19,6 +19,17 @@ double hfs_gles_key_emax(const hfs_gles_key *k)
     return fmax(hfs_cap_irradiance(1.0, k->alpha), (double)FLT_MIN);
 }
 
+/* Texture fetches per texel of key_visibility.frag for a swath of n
+ * directions: normal and height; on a sub-sampled grid the four grid
+ * neighbours' heights, the 3x3 neighbourhood (u_near) and four horizon
+ * fetches per direction, else one. */
+static double factor_fetches(const hfs_gles_layout *L, int n)
+{
+    if (L->sub == 1)
+        return 2.0 + n;
+    return 2.0 + 4.0 + 9.0 * hfs_gles_key_near(L) + 4.0 * n;
+}
+
 static int present(const hfs_gles_frame *fr)
 {
     return fr->n_keys > 0;
@@ -73,7 +84,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
             return rc;
         hfs_gles_draw(gl, g->r.kf_fbo, L->w, L->h);
         hfs_gles_stage_fetches(g, HFS_PASS_KEY_VISIBILITY, 0,
-                               (double)L->w * L->h * (2 + (L->sub > 1 ? 8 : 1) * fr->keys[q].k.swath.n));
+                               (double)L->w * L->h * factor_fetches(L, fr->keys[q].k.swath.n));
         if ((rc = hfs_gl_check(gl, "backend gles: key factor pass", err)))
             return rc;
     }
