@@ -46,10 +46,13 @@ vec2 hfs_split(float v);
 float hfs_hdiff(vec2 a, vec2 b);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
+void hfs_sh_basis(vec3 d, out vec4 y[4]);
 
 uniform highp sampler2D u_normals;       /* full resolution */
 uniform highp sampler2DArray u_keyhz;    /* key horizons (hi, lo, D, 0), a direction a layer */
 uniform highp sampler2D u_height;        /* normalized heights (hi, lo), full resolution */
+uniform highp sampler2DArray u_levels;   /* the pyramid's layers; u_fine: the input's */
+uniform float u_fine;
 #ifdef HFS_TABLES
 uniform highp sampler2DArray u_ktab;     /* interior tables, 4 layers per set */
 uniform highp sampler2DArray u_ktabb;    /* boundary tables (n x 1), 4 per set */
@@ -60,8 +63,14 @@ uniform int u_sub;
 uniform int u_kb;                        /* this light's record in u_k */
 uniform float u_emax;                    /* pi sin^2 alpha */
 uniform float u_rise;                    /* normalized height to texels: hscale zscale / dx */
-uniform int u_near;                      /* 1: the finest scale is searched here, per texel */
 uniform float u_far;                     /* occluders this far (texels) move to each texel's height */
+/* The near search (runtime/gles/gles_backend.h hfs_gles_key_near): the
+ * u_near finest scales, within u_reach texels, along u_near_cs. */
+uniform int u_near;
+uniform float u_reach;
+uniform vec2 u_near_cs;
+uniform float u_lk;                      /* levels per octave: d_m = 2^(m / k) */
+uniform int u_refine;                    /* samples refining the near max */
 
 #ifdef HFS_KEYS_TEX
 /* The records from a texture (too large for a uniform block). */
@@ -91,30 +100,40 @@ void tab_add(inout vec4 V[4], float a, float b, bool boundary, int rot, float se
 }
 #endif
 
-/* Texel p's horizon in direction cs above its floor fl, from layer `layer`
- * of the grid.  At subsample 1 it is the grid's own.  Between grid receivers
- * (DESIGN.md "Key lights on the 2x2 grid") each of the four neighbours g
- * lends its occluder, tan(omega_g) D_g above its height and D_g ahead
- * (D_g = 2^((c - 1) / 2k) from the stored code c): seen from p that is
- * (tan(omega_g) D_g + rise (z_g - z_p)) / (D_g + (g - p).cs) (one that
- * ends up less than a texel ahead of p, which the finest scale covers, or
- * a neighbour with no sample on the grid, lends p's floor), and the four
- * angles are blended with the bilinear weights. */
-/* The finest scale (distance 1) seen from texel p itself in direction cs,
- * as a slope (tan of its elevation): the bilinear sample at p + cs from p's
- * 3x3 neighbourhood, dz[k] = z(p + (k % 3 - 1, k / 3 - 1)) - z(p); tfl
- * (the floor's) where it falls off the grid. */
-float near_slope(ivec2 p, vec2 cs, float tfl, float dz[9])
+/* The sample at distance d from texel p along the near search's azimuth,
+ * as a slope (tan of its elevation): the input level read bilinearly (the
+ * array is LINEAR), zp = the input at p; -1e30 (never the max) off the
+ * grid. */
+float near_slope(ivec2 p, float d, vec2 zp)
 {
     vec2 o;
-    if (!hfs_scale_offset(p, u_size, 1.0, cs, o))
-        return tfl;
-    vec2 io = floor(o), fo = o - io;
-    ivec2 b = ivec2(io) + 1;
-    ivec2 b1 = min(b + 1, 2);
-    float top = mix(dz[3 * b.y + b.x], dz[3 * b.y + b1.x], fo.x);
-    float bot = mix(dz[3 * b1.y + b.x], dz[3 * b1.y + b1.x], fo.x);
-    return u_rise * mix(top, bot, fo.y);
+    if (!hfs_scale_offset(p, u_size, d, u_near_cs, o))
+        return -1e30;
+    vec2 t = texture(u_levels, vec3((vec2(p) + 0.5 + o) / vec2(u_size), u_fine)).xy;
+    return u_rise * hfs_hdiff(t, zp) / d;
+}
+
+/* Texel p's near horizon on a sub-sampled grid (DESIGN.md "Key lights on
+ * the 2x2 grid"): the max over the u_near finest scales, then u_refine
+ * samples about the finest scale holding it, as the grid pass refines
+ * (hfs_refine_about); one search serves every direction of the swath.
+ * -1e30 when there is none (subsample 1, a full swath). */
+float near_horizon(ivec2 p, vec2 zp)
+{
+    float best = -1e30;
+    int bm = -1;
+    for (int m = 0; m < u_near; ++m) {
+        float sl = near_slope(p, exp2(float(m) / u_lk), zp);
+        if (sl > best) {
+            best = sl;
+            bm = m;
+        }
+    }
+    for (int q = 0; bm >= 0 && q < u_refine; ++q) {
+        float u = -1.0 + 2.0 * float(q + 1) / float(u_refine + 1);
+        best = max(best, near_slope(p, exp2((float(bm) + u) / u_lk), zp));
+    }
+    return best;
 }
 
 /* What texel p needs of its grid cell, whatever the direction: the four
@@ -151,11 +170,11 @@ Cell grid_cell(ivec2 p, vec2 zp)
  * neighbours g lends its occluder, t_g D_g above its height and D_g ahead
  * (t_g and D_g as stored):
  * seen from p its slope is (t_g D_g + rise (z_g - z_p)) / (D_g + (g - p).cs)
- * (one that ends up less than a texel ahead of p, which the finest scale
+ * (one that ends up less than u_reach ahead of p, which the near search
  * covers, or a neighbour with no sample on the grid, lends p's floor); the
- * four slopes are blended with the bilinear weights, and the finest scale
- * seen from p itself (u_near) can only raise the result: one atan. */
-float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float dz[9], ivec2 p)
+ * four slopes are blended with the bilinear weights, and p's own near
+ * horizon (slope `near`) can only raise the result: one atan. */
+float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near)
 {
     if (u_sub == 1) {
         vec4 t = texelFetch(u_keyhz, ivec3(c.ga[0], int(layer)), 0);
@@ -168,27 +187,31 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float dz[9], i
         vec4 t = texelFetch(u_keyhz, ivec3(c.ga[k], int(layer)), 0);
         float ahead = t.z + dot(c.rel[k], cs);
         float rz = t.z >= u_far ? c.rz[k] : 0.0;
-        sl[k] = t.z > 0.0 && ahead >= 1.0 ? max(tfl, ((t.x + t.y) * t.z + rz) / ahead) : tfl;
+        sl[k] = t.z > 0.0 && ahead >= u_reach ? max(tfl, ((t.x + t.y) * t.z + rz) / ahead) : tfl;
     }
     float s = mix(mix(sl[0], sl[1], c.f.x), mix(sl[2], sl[3], c.f.x), c.f.y);
-    if (u_near > 0)
-        s = max(s, near_slope(p, cs, tfl, dz));
-    return max(fl, atan(s));
+    return max(fl, atan(max(s, near)));
 }
 
 /* E_cap * ratio for the key light whose record starts at b. */
-float key_factor(int b, vec3 n, vec4 H[4], ivec2 p, Cell cell, float dz[9])
+float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
 {
     vec4 h0 = KREC(b), h1 = KREC(b + 1), h2 = KREC(b + 2);
     float e_cap = hfs_cap_irradiance(dot(n, h1.xyz), h1.w);
     if (!(e_cap > 0.0))
         return 0.0;
+#ifdef HFS_TABLES
     vec4 L[4];
     for (int g = 0; g < 4; ++g)
         L[g] = KREC(b + 3 + g);
     vec4 M[4];
     hfs_sh_product(H, L, M);
+#else
+    vec4 y[4];
+    hfs_sh_basis(n, y);
+#endif
 
+    float near = near_horizon(p, zp);
     int nd = int(h0.x);
     bool full = h0.y > 0.5;
     float layer0 = h0.z;
@@ -203,8 +226,10 @@ float key_factor(int b, vec3 n, vec4 H[4], ivec2 p, Cell cell, float dz[9])
     }
     float om_prev = 0.0, fl_prev = 0.0, om_first = 0.0, fl_first = 0.0;
 #else
-    /* V.M = sum_j v_j . (C_j^T M): one 16x4 product per direction serves
-     * num and den.  |V_open| (the threshold's scale) is bounded by
+    /* V.M = sum_j v_j . w_j, w_j = C_j^T M = A_j Y(N) (the swath's
+     * matrices come folded with the light and the clamped cosine,
+     * uniform_blocks.c fold_key_matrices: no SH product per texel, 9 terms
+     * a direction), serves num and den.  |V_open| (the threshold's scale) is bounded by
      * sum_j |C_j|_F |v_open_j| (KREC(dirs + j).z), so a den that the CPU's
      * test 1e-12 |L| |V_open| calls zero is zero here too. */
     float num = 0.0, den = 0.0, vo_norm = 0.0;
@@ -212,7 +237,7 @@ float key_factor(int b, vec3 n, vec4 H[4], ivec2 p, Cell cell, float dz[9])
     for (int j = 0; j < nd; ++j) {
         vec4 dj = KREC(dirs + j);
         float fl = atan(-(n.x * dj.x + n.y * dj.y), n.z);
-        float om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), dz, p), HFS_HALF_PI);
+        float om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), near), HFS_HALF_PI);
 #ifdef HFS_TABLES
         if (j == 0) {
             om_first = om;
@@ -230,12 +255,9 @@ float key_factor(int b, vec3 n, vec4 H[4], ivec2 p, Cell cell, float dz[9])
         fl_prev = fl;
 #else
         int c = cm + 16 * j;
-        vec4 w = M[0].x * KREC(c) + M[0].y * KREC(c + 1) + M[0].z * KREC(c + 2) +
-                 M[0].w * KREC(c + 3) + M[1].x * KREC(c + 4) + M[1].y * KREC(c + 5) +
-                 M[1].z * KREC(c + 6) + M[1].w * KREC(c + 7) + M[2].x * KREC(c + 8) +
-                 M[2].y * KREC(c + 9) + M[2].z * KREC(c + 10) + M[2].w * KREC(c + 11) +
-                 M[3].x * KREC(c + 12) + M[3].y * KREC(c + 13) + M[3].z * KREC(c + 14) +
-                 M[3].w * KREC(c + 15);
+        vec4 w = y[0].x * KREC(c) + y[0].y * KREC(c + 1) + y[0].z * KREC(c + 2) +
+                 y[0].w * KREC(c + 3) + y[1].x * KREC(c + 4) + y[1].y * KREC(c + 5) +
+                 y[1].z * KREC(c + 6) + y[1].w * KREC(c + 7) + y[2].x * KREC(c + 8);
         vec4 vo = hfs_visible(fl, win, occtop);
         num += dot(hfs_visible(om, win, occtop), w);
         den += dot(vo, w);
@@ -267,11 +289,6 @@ void main()
     vec4 H[4];
     hfs_sh_cosine(n, H);
     vec2 zp = texelFetch(u_height, p, 0).xy;
-    float dz[9];
-    for (int k = 0; k < 9; ++k) {
-        ivec2 q = clamp(p + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), u_size - 1);
-        dz[k] = u_near > 0 ? hfs_hdiff(texelFetch(u_height, q, 0).xy, zp) : 0.0;
-    }
-    float f = clamp(key_factor(u_kb, n, H, p, grid_cell(p, zp), dz) / u_emax, 0.0, 1.0);
+    float f = clamp(key_factor(u_kb, n, H, grid_cell(p, zp), p, zp) / u_emax, 0.0, 1.0);
     o_f = vec4(hfs_split(f), 0.0, 1.0);
 }

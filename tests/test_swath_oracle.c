@@ -403,6 +403,44 @@ static double ulpf(float f)
 }
 
 /* The GLES std140 swath block of s against the closed form (k0, N). */
+/* A key record's swath block (hfs_gles_pack_key) against the light's own
+ * (b, hfs_gles_pack_swath): the same but for the direction matrices, which
+ * come folded with the light and the clamped cosine (uniform_blocks.c
+ * fold_key_matrices): for normals N, sum_i Y_i(N) A_j[i] must equal
+ * C_j^T (H(N) * L), H(N) the clamped cosine about N, as the CPU forms it. */
+static void check_key_swath(const float *kb, const float *b, int n, const hfs_gles_key *k,
+                            const char *id)
+{
+    const size_t head = 2 + (size_t)n, mat = 16 * (size_t)n, all = hfs_gles_swath_vec4(n);
+    CHECK(!memcmp(kb, b, head * 4 * sizeof *b) &&
+              !memcmp(kb + (head + mat) * 4, b + (head + mat) * 4,
+                      (all - head - mat) * 4 * sizeof *b),
+          "gles: key record's swath block outside its matrices (%s)", id);
+    static const double normals[3][3] = {{0.0, 0.0, 1.0}, {0.6, -0.3, 0.74}, {-0.9, 0.1, 0.42}};
+    double zc[HFS_ZH_N], worst = 0.0, scale = 0.0;
+    hfs_zh_clamped_cosine(zc);
+    for (int t = 0; t < 3; ++t) {
+        const double *nv = normals[t], len = sqrt(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
+        double h[HFS_SH_N], m[HFS_SH_N], y[HFS_SH_N];
+        hfs_sh_rotate_zonal(zc, nv[0] / len, nv[1] / len, nv[2] / len, h);
+        hfs_sh_product(h, k->l_sh, m);
+        hfs_sh_eval(nv[0] / len, nv[1] / len, nv[2] / len, y);
+        for (int j = 0; j < n; ++j)
+            for (int q = 0; q < 4; ++q) {
+                double want = 0.0, got = 0.0;
+                for (int r = 0; r < HFS_SH_N; ++r) {
+                    want += b[(head + 16 * j + r) * 4 + q] * m[r];
+                    got += kb[(head + 16 * j + r) * 4 + q] * y[r];
+                    scale = fmax(scale, fabs(b[(head + 16 * j + r) * 4 + q] * m[r]));
+                }
+                worst = fmax(worst, fabs(got - want));
+            }
+    }
+    /* float storage of both matrices (2^-24 relative) over 16-term sums */
+    CHECK(worst <= 1e-5 * fmax(scale, 1e-30), "gles: key record's folded matrices off by %.3g "
+          "(of terms up to %.3g) (%s)", worst, scale, id);
+}
+
 static void check_gles_block(const hfs_gles_layout *L, const hfs_swath *s, long long k0, double N,
                              const expect *x_or_null, int is_env, const char *id)
 {
@@ -495,8 +533,7 @@ static void check_gles_block(const hfs_gles_layout *L, const hfs_swath *s, long 
         CHECK(kr[4] == 0.25f && kr[5] == -0.5f && kr[6] == 0.75f && kr[7] == 0.01f && kr[8] == 1.0f &&
                   kr[10] == 3.0f && kr[11] == 4.5f && kr[12] == -7.5f && kr[27] == 7.5f,
               "gles: key record body (%s)", id);
-        CHECK(!memcmp(kr + 7 * 4, b, hfs_gles_swath_vec4(n) * 4 * sizeof *b), "gles: key record's swath block (%s)",
-              id);
+        check_key_swath(kr + 7 * 4, b, n, &k, id);
         free(kr);
     }
     free(b);

@@ -143,9 +143,22 @@ int hfs_gles_draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo,
 int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, double *sum,
                         hfs_error *err);
 
-/* 1 where the key horizons' finest scale (distance 1) is searched per texel
- * by the factor pass instead of on the grid (a sub-sampled grid). */
-int hfs_gles_key_near(const hfs_gles_layout *L);
+/* A key light's near search on a sub-sampled grid (DESIGN.md "Key lights
+ * on the 2x2 grid"): its n finest scales, those within `reach` texels, are
+ * searched by the factor pass at every texel, along the swath's centre
+ * azimuth cs (shared by the swath's directions: none lies more than
+ * HFS_GLES_KEY_NEAR_SIDE texel sideways of it at that reach), and refined
+ * there; the grid pass leaves them out.  n = 0 (reach 1) at subsample 1
+ * and for a full swath.  A function of the layout and the swath only, so
+ * horizons kept for a swath stay consistent with it. */
+#define HFS_GLES_KEY_NEAR_SIDE 0.5
+#define HFS_GLES_KEY_NEAR_REACH 16.0
+typedef struct hfs_gles_key_near {
+    int n;
+    float reach;
+    float cs[2];
+} hfs_gles_key_near;
+hfs_gles_key_near hfs_gles_key_near_make(const hfs_gles_layout *L, const hfs_swath *s);
 
 /* A key light's irradiance at normal incidence, pi sin^2 alpha: the
  * largest value of its factor (never 0 in float). */

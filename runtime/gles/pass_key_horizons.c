@@ -14,13 +14,29 @@
 #include "gl_util.h"
 #include "pyramid_layout.h"
 
+#include <math.h>
 #include <string.h>
 
 #define DIRS_PER_DRAW 4 /* 4 RGBA targets (ES 3.0's minimum), one direction each */
 
-int hfs_gles_key_near(const hfs_gles_layout *L)
+hfs_gles_key_near hfs_gles_key_near_make(const hfs_gles_layout *L, const hfs_swath *s)
 {
-    return L->sub > 1 && L->n_levels > 1 ? 1 : 0;
+    hfs_gles_key_near nr = {0, 1.0f, {1.0f, 0.0f}};
+    if (L->sub == 1 || L->n_levels < 2 || s->full)
+        return nr;
+    const double span = 0.5 * (s->n - 1) * s->dphi, centre = s->phi0 + span;
+    double reach = HFS_GLES_KEY_NEAR_REACH;
+    if (sin(span) * reach > HFS_GLES_KEY_NEAR_SIDE)
+        reach = HFS_GLES_KEY_NEAR_SIDE / sin(span);
+    /* scales d_m = 2^(m / k) <= reach, at least the finest */
+    int n = reach > 1.0 ? (int)floor(L->k * log2(reach) + 1e-9) + 1 : 1;
+    if (n > L->n_levels - 1)
+        n = L->n_levels - 1;
+    nr.n = n;
+    nr.reach = (float)exp2((double)(n - 1) / L->k);
+    nr.cs[0] = (float)cos(centre);
+    nr.cs[1] = (float)sin(centre);
+    return nr;
 }
 
 static int present(const hfs_gles_frame *fr)
@@ -175,7 +191,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
                 return rc;
             hfs_gles_set_i1(gl, prog, "u_dir0", d0);
             hfs_gles_set_i1(gl, prog, "u_ndir", cnt);
-            hfs_gles_set_i1(gl, prog, "u_near", hfs_gles_key_near(L));
+            hfs_gles_set_i1(gl, prog, "u_near", hfs_gles_key_near_make(L, &k->k.swath).n);
             hfs_gles_set_f1(gl, prog, "u_lk", (float)L->k);
             hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
             hfs_gles_set_f1(gl, prog, "u_tie",

@@ -19,15 +19,16 @@ double hfs_gles_key_emax(const hfs_gles_key *k)
     return fmax(hfs_cap_irradiance(1.0, k->alpha), (double)FLT_MIN);
 }
 
-/* Texture fetches per texel of key_visibility.frag for a swath of n
- * directions: normal and height; on a sub-sampled grid the four grid
- * neighbours' heights, the 3x3 neighbourhood (u_near) and four horizon
- * fetches per direction, else one. */
-static double factor_fetches(const hfs_gles_layout *L, int n)
+/* Texture fetches per texel of key_visibility.frag for swath s: normal
+ * and height; on a sub-sampled grid the four grid neighbours' heights, the
+ * near scales and their refinement (at most; fewer near the edges), and
+ * four horizon fetches per direction, else one. */
+static double factor_fetches(const hfs_gles_layout *L, const hfs_swath *s, int refine)
 {
     if (L->sub == 1)
-        return 2.0 + n;
-    return 2.0 + 4.0 + 9.0 * hfs_gles_key_near(L) + 4.0 * n;
+        return 2.0 + s->n;
+    const hfs_gles_key_near nr = hfs_gles_key_near_make(L, s);
+    return 2.0 + 4.0 + (nr.n > 0 ? nr.n + refine : 0) + 4.0 * s->n;
 }
 
 static int present(const hfs_gles_frame *fr)
@@ -43,7 +44,8 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     int rc;
     if ((rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, g->r.normals, err)) ||
         (rc = hfs_gles_program_texture(gl, prog, "u_keyhz", GL_TEXTURE_2D_ARRAY, g->r.keyhz, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, g->r.input, err)))
+        (rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, g->r.input, err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_levels", GL_TEXTURE_2D_ARRAY, g->r.arr, err)))
         return rc;
     if (fr->tables &&
         ((rc = hfs_gles_program_texture(gl, prog, "u_ktab", GL_TEXTURE_2D_ARRAY, g->wedge.keys,
@@ -54,7 +56,9 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     hfs_gles_set_i1(gl, prog, "u_sub", L->sub);
-    hfs_gles_set_i1(gl, prog, "u_near", hfs_gles_key_near(L));
+    hfs_gles_set_f1(gl, prog, "u_lk", (float)L->k);
+    hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
+    hfs_gles_set_f1(gl, prog, "u_fine", (float)(L->n_layers - 1));
     hfs_gles_set_f1(gl, prog, "u_far", (float)(2 * L->sub));
     hfs_gles_set_f1(gl, prog, "u_rise", (float)(L->hscale * L->zscale / L->dx));
     if (fr->keys_tex)
@@ -79,12 +83,17 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
         if (!which[q])
             continue;
         hfs_gles_set_i1(gl, prog, "u_kb", fr->keys[q].rec_off);
+        const hfs_gles_key_near nr = hfs_gles_key_near_make(L, &fr->keys[q].k.swath);
         hfs_gles_set_f1(gl, prog, "u_emax", (float)hfs_gles_key_emax(&fr->keys[q].k));
+        hfs_gles_set_i1(gl, prog, "u_near", nr.n);
+        hfs_gles_set_f1(gl, prog, "u_reach", nr.reach);
+        hfs_gles_set_f2(gl, prog, "u_near_cs", nr.cs[0], nr.cs[1]);
         if ((rc = hfs_gles_fbo_layers(gl, g->r.kf_fbo, g->r.kf, q, 1, "key factor", err)))
             return rc;
         hfs_gles_draw(gl, g->r.kf_fbo, L->w, L->h);
         hfs_gles_stage_fetches(g, HFS_PASS_KEY_VISIBILITY, 0,
-                               (double)L->w * L->h * factor_fetches(L, fr->keys[q].k.swath.n));
+                               (double)L->w * L->h *
+                                   factor_fetches(L, &fr->keys[q].k.swath, fr->q->refine));
         if ((rc = hfs_gl_check(gl, "backend gles: key factor pass", err)))
             return rc;
     }

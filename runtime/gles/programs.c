@@ -246,3 +246,11 @@ void hfs_gles_set_f1(const hfs_gl *gl, const hfs_gles_program *p, const char *na
     if (loc >= 0)
         gl->Uniform1f(loc, a);
 }
+
+void hfs_gles_set_f2(const hfs_gl *gl, const hfs_gles_program *p, const char *name, float a,
+                     float b)
+{
+    GLint loc = gl->GetUniformLocation(p->name, name);
+    if (loc >= 0)
+        gl->Uniform2f(loc, a, b);
+}

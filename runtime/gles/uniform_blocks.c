@@ -294,6 +294,42 @@ long hfs_gles_offset_mismatches(const hfs_gles_layout *L, const hfs_swath *s)
 
 /* ---- key lights ------------------------------------------------------------------- */
 
+/* The Legendre path's per-direction weights w_j = C_j^T (H(N) * L) are
+ * linear in the basis functions at the normal: the clamped cosine about N
+ * is H_i(N) = k_l Y_i(N) (k_3 = 0), so w_j = sum_{i < 9} Y_i(N) A_j[i] with
+ * A_j[i] = k_l(i) C_j^T (e_i * L), e_i the i-th unit coefficient vector.
+ * Rows 0..8 of the light's matrices become A_j (rows 9..15 zero): the
+ * factor pass needs no SH product per texel, and 9 terms per direction
+ * instead of 16.  c_norm keeps |C_j|_F for the zero test of den. */
+static void fold_key_matrices(const hfs_gles_key *k, const hfs_visibility *v, float *swath)
+{
+    const int n = hfs_visibility_swath(v)->n;
+    const hfs_gles_swath_block b = hfs_gles_swath_view(swath, n);
+    double zc[HFS_ZH_N], c[HFS_SH_N], kl[HFS_ZH_N];
+    hfs_zh_clamped_cosine(zc);
+    hfs_sh_rotate_zonal(zc, 0.0, 0.0, 1.0, c);
+    for (int l = 0; l < HFS_ZH_N; ++l)
+        kl[l] = c[l * (l + 1)] / sqrt((2.0 * l + 1.0) / (4.0 * 3.14159265358979323846));
+    double pl[HFS_SH_N][HFS_SH_N]; /* pl[i] = e_i * L */
+    for (int i = 0; i < HFS_SH_N; ++i) {
+        double e[HFS_SH_N] = {0.0};
+        e[i] = 1.0;
+        hfs_sh_product(e, k->l_sh, pl[i]);
+    }
+    for (int j = 0; j < n; ++j) {
+        const double *m = hfs_visibility_sample_matrix(v, j);
+        for (int i = 0; i < HFS_SH_N; ++i) {
+            const int l = i < 1 ? 0 : i < 4 ? 1 : i < 9 ? 2 : 3;
+            for (int q = 0; q < HFS_NLP_N; ++q) {
+                double a = 0.0;
+                for (int r = 0; r < HFS_SH_N && l < 3; ++r)
+                    a += m[r * HFS_NLP_N + q] * pl[i][r];
+                b.matrix[j].row[i][q] = (float)(kl[l] * a);
+            }
+        }
+    }
+}
+
 size_t hfs_gles_key_vec4(int n)
 {
     return sizeof(hfs_gles_key_record) / 16 + hfs_gles_swath_vec4(n);
@@ -318,6 +354,8 @@ void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hf
     for (int c = 0; c < 16; ++c)
         rec->l_sh[c] = (float)k->l_sh[c];
     hfs_gles_pack_swath(L, v, (float *)(rec + 1));
+    if (s->n > 0 && hfs_visibility_sample_matrix(v, 0))
+        fold_key_matrices(k, v, (float *)(rec + 1));
 }
 
 void hfs_gles_cosine_transfer(float dst[16])
