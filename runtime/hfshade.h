@@ -151,15 +151,16 @@ typedef enum hfs_precision {
 /* Start from hfs_quality_defaults() (which sets EVERY field) and change what
  * you need; 0 is then a real value where a field allows it (offset = 0).
  * The defaults are the "kiosk" preset (hfs_quality_preset), picked from the
- * measured error/time front: the exact slice path, k=2, offset=5, 12 env /
- * 5 key directions, 4 refining samples per horizon, subsample 2 (SN08/NS09
+ * measured error/time front: the exact slice path, k=2, offset=8 (every
+ * scale within 256 texels reads the heights themselves), 12 env / 3 key
+ * directions, 4 refining samples per horizon, subsample 2 (SN08/NS09
  * used Legendre at k=4, offset=2, 32 directions: dominated on every
  * benchmark scene, BENCHMARKS.md "Run time against error"). */
 typedef struct hfs_quality {
     int k;                   /* pyramid level step (levels per octave), 2   */
-    int offset;              /* level offset o (levels biased by k*o), 5    */
+    int offset;              /* level offset o (levels biased by k*o), 8    */
     int nphi_env;            /* azimuth samples, environment (full swath) 12 */
-    int nphi_key;            /* azimuth samples per key light swath, 5      */
+    int nphi_key;            /* azimuth samples per key light swath, 3      */
     int refine;              /* samples refining each environment and key-
                                 light horizon between the pyramid's scales,
                                 about the highest, 4; 0: the seeds' (plain

@@ -65,8 +65,10 @@ uniform float u_emax;                    /* pi sin^2 alpha */
 uniform float u_rise;                    /* normalized height to texels: hscale zscale / dx */
 uniform float u_far;                     /* occluders this far (texels) move to each texel's height */
 /* The near search (runtime/gles/gles_backend.h hfs_gles_key_near): the
- * u_near finest scales, within u_reach texels, along u_near_cs. */
+ * u_near finest scales, within u_reach texels, along u_near_cs, or (u_near_dir,
+ * a full swath) in each direction. */
 uniform int u_near;
+uniform int u_near_dir;
 uniform float u_reach;
 uniform vec2 u_near_cs;
 uniform float u_lk;                      /* levels per octave: d_m = 2^(m / k) */
@@ -100,14 +102,13 @@ void tab_add(inout vec4 V[4], float a, float b, bool boundary, int rot, float se
 }
 #endif
 
-/* The sample at distance d from texel p along the near search's azimuth,
- * as a slope (tan of its elevation): the input level read bilinearly (the
- * array is LINEAR), zp = the input at p; -1e30 (never the max) off the
- * grid. */
-float near_slope(ivec2 p, float d, vec2 zp)
+/* The sample at distance d from texel p in direction cs, as a slope (tan
+ * of its elevation): the input level read bilinearly (the array is
+ * LINEAR), zp = the input at p; -1e30 (never the max) off the grid. */
+float near_slope(ivec2 p, vec2 cs, float d, vec2 zp)
 {
     vec2 o;
-    if (!hfs_scale_offset(p, u_size, d, u_near_cs, o))
+    if (!hfs_scale_offset(p, u_size, d, cs, o))
         return -1e30;
     vec2 t = texture(u_levels, vec3((vec2(p) + 0.5 + o) / vec2(u_size), u_fine)).xy;
     return u_rise * hfs_hdiff(t, zp) / d;
@@ -122,8 +123,8 @@ float near_horizon(ivec2 p, vec2 zp)
 {
     float best = -1e30;
     int bm = -1;
-    for (int m = 0; m < u_near; ++m) {
-        float sl = near_slope(p, exp2(float(m) / u_lk), zp);
+    for (int m = 0; u_near_dir == 0 && m < u_near; ++m) {
+        float sl = near_slope(p, u_near_cs, exp2(float(m) / u_lk), zp);
         if (sl > best) {
             best = sl;
             bm = m;
@@ -131,7 +132,7 @@ float near_horizon(ivec2 p, vec2 zp)
     }
     for (int q = 0; bm >= 0 && q < u_refine; ++q) {
         float u = -1.0 + 2.0 * float(q + 1) / float(u_refine + 1);
-        best = max(best, near_slope(p, exp2((float(bm) + u) / u_lk), zp));
+        best = max(best, near_slope(p, u_near_cs, exp2((float(bm) + u) / u_lk), zp));
     }
     return best;
 }
@@ -174,7 +175,7 @@ Cell grid_cell(ivec2 p, vec2 zp)
  * covers, or a neighbour with no sample on the grid, lends p's floor); the
  * four slopes are blended with the bilinear weights, and p's own near
  * horizon (slope `near`) can only raise the result: one atan. */
-float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near)
+float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, ivec2 p, vec2 zp)
 {
     if (u_sub == 1) {
         vec4 t = texelFetch(u_keyhz, ivec3(c.ga[0], int(layer)), 0);
@@ -190,6 +191,8 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near)
         sl[k] = t.z > 0.0 && ahead >= u_reach ? max(tfl, ((t.x + t.y) * t.z + rz) / ahead) : tfl;
     }
     float s = mix(mix(sl[0], sl[1], c.f.x), mix(sl[2], sl[3], c.f.x), c.f.y);
+    for (int m = 0; u_near_dir > 0 && m < u_near; ++m)
+        near = max(near, near_slope(p, cs, exp2(float(m) / u_lk), zp));
     return max(fl, atan(max(s, near)));
 }
 
@@ -237,7 +240,7 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
     for (int j = 0; j < nd; ++j) {
         vec4 dj = KREC(dirs + j);
         float fl = atan(-(n.x * dj.x + n.y * dj.y), n.z);
-        float om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), near), HFS_HALF_PI);
+        float om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), near, p, zp), HFS_HALF_PI);
 #ifdef HFS_TABLES
         if (j == 0) {
             om_first = om;

@@ -529,11 +529,14 @@ static int fc_key_swath(const hfs_key_light *kl, int nphi_key, int nphi_env, dou
 
 /* DESIGN.md "Key lights on the 2x2 grid": on a sub-sampled grid a partial
  * swath's finest scales within min(16, 0.5 / sin(half its extent)) texels
- * (at least one) are the factor pass's; none otherwise. */
+ * (at least one) are the factor pass's, a full swath's finest; none at
+ * subsample 1. */
 static int fc_key_near(int sub, int n_lev, int k, int full, int ns, const double *phi)
 {
-    if (sub == 1 || n_lev < 2 || full)
+    if (sub == 1 || n_lev < 2)
         return 0;
+    if (full)
+        return 1;
     const double span = 0.5 * (phi[ns - 1] - phi[0]);
     const double reach = sin(span) * 16.0 > 0.5 ? 0.5 / sin(span) : 16.0;
     int near = 1;

@@ -41,13 +41,44 @@ void bench_mark_fronts(bench_result *res, int n_res, int n_scenes)
  * BENCH_TIME_MARGIN of headroom, and between settings whose error (kiosk,
  * panel) or time (headless) is within BENCH_TIE of the best candidate's,
  * the cheaper one (kiosk, panel) or the more accurate one (headless) wins. */
+/* The fastest of the candidates (cand[p]), 5% ties going to the more
+ * accurate; -1 if there is none. */
+static int fastest_of(const int *cand, int n_points, const double *t, const double *e)
+{
+    double fastest = HUGE_VAL;
+    for (int p = 0; p < n_points; ++p)
+        if (cand[p] && t[p] < fastest)
+            fastest = t[p];
+    int pick = -1;
+    for (int p = 0; p < n_points; ++p)
+        if (cand[p] && t[p] <= fastest * (1.0 + BENCH_TIE) && (pick < 0 || e[p] < e[pick]))
+            pick = p;
+    return pick;
+}
+
+/* The kiosk's: the fastest setting the product can run (ok[p]) that meets
+ * the accuracy target within the budget; -1 if none does. */
+static int kiosk_target(const int *ok, int n_points, const double *t, const double *e,
+                        const double *p99, const bench_budget *b, int *cand)
+{
+    if (!(b->kiosk_err > 0.0) || !(b->kiosk_p99 > 0.0))
+        return -1;
+    for (int p = 0; p < n_points; ++p)
+        cand[p] = ok[p] && t[p] <= b->kiosk_ms * BENCH_TIME_MARGIN && e[p] <= b->kiosk_err &&
+                  p99[p] <= b->kiosk_p99;
+    return fastest_of(cand, n_points, t, e);
+}
+
 static void pick_uses(bench_picks *picks, int n_points, const double *t, const double *e,
-                      const bench_budget *b)
+                      const double *p99, const int *ok, const bench_budget *b, int *cand)
 {
     const double lim[2] = {b->kiosk_ms * BENCH_TIME_MARGIN, b->panel_ms * BENCH_TIME_MARGIN};
     for (int u = 0; u < USE_COUNT; ++u)
         picks->point[u] = -1;
+    picks->point[USE_KIOSK] = kiosk_target(ok, n_points, t, e, p99, b, cand);
     for (int u = USE_KIOSK; u <= USE_PANEL; ++u) {
+        if (picks->point[u] >= 0)
+            continue;
         double best = HUGE_VAL;
         for (int p = 0; p < n_points; ++p)
             if (picks->front[p] && t[p] <= lim[u] && e[p] < best)
@@ -57,15 +88,9 @@ static void pick_uses(bench_picks *picks, int n_points, const double *t, const d
                 (picks->point[u] < 0 || t[p] < t[picks->point[u]]))
                 picks->point[u] = p;
     }
-    double fastest = HUGE_VAL;
     for (int p = 0; p < n_points; ++p)
-        if (picks->front[p] && e[p] <= b->headless_err && t[p] < fastest)
-            fastest = t[p];
-    int *h = &picks->point[USE_HEADLESS];
-    for (int p = 0; p < n_points; ++p)
-        if (picks->front[p] && e[p] <= b->headless_err && t[p] <= fastest * (1.0 + BENCH_TIE) &&
-            (*h < 0 || e[p] < e[*h]))
-            *h = p;
+        cand[p] = picks->front[p] && e[p] <= b->headless_err;
+    picks->point[USE_HEADLESS] = fastest_of(cand, n_points, t, e);
 }
 
 /* A setting the product can run: GLES, and not fp32 (EXT_color_buffer_float
@@ -84,9 +109,10 @@ int bench_pick(const bench_result *res, int n_res, int n_scenes, const bench_poi
     double *t = calloc((size_t)n_points, sizeof *t), *e = calloc((size_t)n_points, sizeof *e);
     double *p99 = calloc((size_t)n_points, sizeof *p99);
     int *seen = calloc((size_t)n_points, sizeof *seen);
+    int *ok = calloc((size_t)n_points, sizeof *ok), *cand = calloc((size_t)n_points, sizeof *cand);
     picks->front = calloc((size_t)n_points, sizeof *picks->front);
-    if (!t || !e || !p99 || !seen || !picks->front) {
-        free(t), free(e), free(p99), free(seen), free(picks->front);
+    if (!t || !e || !p99 || !seen || !ok || !cand || !picks->front) {
+        free(t), free(e), free(p99), free(seen), free(ok), free(cand), free(picks->front);
         picks->front = NULL;
         return HFS_E_NOMEM;
     }
@@ -101,21 +127,23 @@ int bench_pick(const bench_result *res, int n_res, int n_scenes, const bench_poi
         e[r->point] = fmax(e[r->point], r->mean_abs);
         p99[r->point] = fmax(p99[r->point], r->p99_abs);
     }
+    for (int p = 0; p < n_points; ++p)
+        ok[p] = seen[p] == n_scenes && product(&pts[p]);
     for (int p = 0; p < n_points; ++p) {
-        picks->front[p] = seen[p] == n_scenes && product(&pts[p]);
+        picks->front[p] = ok[p];
         for (int q = 0; q < n_points && picks->front[p]; ++q)
             if (q != p && seen[q] == n_scenes && product(&pts[q]) &&
                 dominates(t[q], e[q], t[p], e[p]))
                 picks->front[p] = 0;
     }
-    pick_uses(picks, n_points, t, e, b);
+    pick_uses(picks, n_points, t, e, p99, ok, b, cand);
     for (int u = 0; u < USE_COUNT; ++u)
         if (picks->point[u] >= 0) {
             picks->worst_ms[u] = t[picks->point[u]];
             picks->worst_mean[u] = e[picks->point[u]];
             picks->worst_p99[u] = p99[picks->point[u]];
         }
-    free(t), free(e), free(p99), free(seen);
+    free(t), free(e), free(p99), free(seen), free(ok), free(cand);
     return HFS_OK;
 }
 

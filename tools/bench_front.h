@@ -7,18 +7,24 @@
  * Uses (each a rule over the all-scenes front, GLES fp16 settings only:
  * the uses run the product, and fp32 is outside its profile; budgets are
  * options):
- *   kiosk     the most accurate setting whose worst full frame fits the
- *             kiosk budget (default 100 ms: 10 frames/s while the terrain
- *             changes; light-only frames cost far less);
+ *   kiosk     the fastest setting that meets the kiosk's accuracy target
+ *             (worst mean error <= kiosk_err, worst p99 <= kiosk_p99;
+ *             defaults 0.01 and 0.10, issue 15's bounds for the product
+ *             defaults under sky + sun) within the kiosk budget (default
+ *             100 ms: 10 frames/s while the terrain changes; light-only
+ *             frames cost far less); where none meets the target, the most
+ *             accurate setting within the budget.  Not restricted to the
+ *             front: the target's p99 can exclude a setting that dominates
+ *             on time and mean;
  *   panel     the most accurate setting within the panel budget (default
  *             500 ms: a preview looked at closely, updated on demand);
  *   headless  the fastest setting whose worst mean error is at most the
  *             headless bound (default 0.03 of the unshadowed maximum).
  * Against timing noise: a budget counts with BENCH_TIME_MARGIN of headroom
  * (a pick 2% under its budget would flip from run to run), and settings
- * within BENCH_TIE of the best candidate's error (kiosk, panel) or time
- * (headless) tie: the faster (kiosk, panel) or more accurate (headless)
- * of them is picked.
+ * within BENCH_TIE of the best candidate's error (panel, kiosk without a
+ * target) or time (kiosk, headless) tie: the faster (panel) or more
+ * accurate (kiosk, headless) of them is picked.
  */
 #ifndef HFS_BENCH_FRONT_H
 #define HFS_BENCH_FRONT_H
@@ -44,6 +50,7 @@ typedef struct bench_result {
 
 typedef struct bench_budget {
     double kiosk_ms, panel_ms, headless_err;
+    double kiosk_err, kiosk_p99; /* the kiosk's accuracy target (0: none) */
 } bench_budget;
 
 enum { USE_KIOSK, USE_PANEL, USE_HEADLESS, USE_COUNT };

@@ -148,13 +148,15 @@ int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, doubl
  * searched by the factor pass at every texel, along the swath's centre
  * azimuth cs (shared by the swath's directions: none lies more than
  * HFS_GLES_KEY_NEAR_SIDE texel sideways of it at that reach), and refined
- * there; the grid pass leaves them out.  n = 0 (reach 1) at subsample 1
- * and for a full swath.  A function of the layout and the swath only, so
- * horizons kept for a swath stay consistent with it. */
+ * there; the grid pass leaves them out.  A full swath (a disk over the
+ * pole) has no centre: its finest scale alone (reach 1) is searched in
+ * each of its directions (per_dir), unrefined.  n = 0 (reach 1) at
+ * subsample 1.  A function of the layout and the swath only, so horizons
+ * kept for a swath stay consistent with it. */
 #define HFS_GLES_KEY_NEAR_SIDE 0.5
 #define HFS_GLES_KEY_NEAR_REACH 16.0
 typedef struct hfs_gles_key_near {
-    int n;
+    int n, per_dir;
     float reach;
     float cs[2];
 } hfs_gles_key_near;

@@ -21,9 +21,13 @@
 
 hfs_gles_key_near hfs_gles_key_near_make(const hfs_gles_layout *L, const hfs_swath *s)
 {
-    hfs_gles_key_near nr = {0, 1.0f, {1.0f, 0.0f}};
-    if (L->sub == 1 || L->n_levels < 2 || s->full)
+    hfs_gles_key_near nr = {0, 0, 1.0f, {1.0f, 0.0f}};
+    if (L->sub == 1 || L->n_levels < 2)
         return nr;
+    if (s->full) {
+        nr.n = nr.per_dir = 1;
+        return nr;
+    }
     const double span = 0.5 * (s->n - 1) * s->dphi, centre = s->phi0 + span;
     double reach = HFS_GLES_KEY_NEAR_REACH;
     if (sin(span) * reach > HFS_GLES_KEY_NEAR_SIDE)
