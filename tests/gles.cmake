@@ -6,7 +6,9 @@
 #     sub2_/sub4_SCENE       subsample 2/4 against subsample 1 on the GPU
 #                            (fp16, Legendre): grid texels equal, the rest
 #                            within the interpolation error
-#     determinism, cache, flat, timing, errors  (see test_gles_render.c)
+#     determinism, cache, flat, errors, variants  (test_gles_render.c)
+#     timing                 the fetch counts (test_gles_fetch.c)
+#     sub*, slice            the visibility grid, the slice path (test_gles_grid.c)
 #   *_es30   MESA_GLES_VERSION_OVERRIDE=3.0 (an ES 3.0 context, as on boards)
 #   *_sse41  GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 (llvmpipe without AVX)
 # A context that cannot be made exits 77 (skipped, with the reason).
@@ -23,9 +25,13 @@ add_library(hfs_test_gles_scenes STATIC ${CMAKE_CURRENT_LIST_DIR}/test_gles_scen
 target_include_directories(hfs_test_gles_scenes PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(hfs_test_gles_scenes PUBLIC hfshade_lib hfshade_io hfs_terrain_gen m)
 
-add_executable(test_gles_render ${CMAKE_CURRENT_LIST_DIR}/test_gles_render.c)
-target_link_libraries(test_gles_render PRIVATE hfs_test_gles_scenes)
-target_compile_definitions(test_gles_render PRIVATE HFS_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
+# Three programs share tests/gles_render_util.h; hfs_gles_test picks the
+# program by the mode (its first argument).
+foreach(prog test_gles_render test_gles_fetch test_gles_grid)
+  add_executable(${prog} ${CMAKE_CURRENT_LIST_DIR}/${prog}.c)
+  target_link_libraries(${prog} PRIVATE hfs_test_gles_scenes)
+  target_compile_definitions(${prog} PRIVATE HFS_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
+endforeach()
 
 # Measurement tool (not a test): see the header of test_gles_bench.c.
 add_executable(gles_bench ${CMAKE_CURRENT_LIST_DIR}/test_gles_bench.c)
@@ -36,8 +42,15 @@ hfs_add_test(test_gles_units LABEL unit TIMEOUT 120
              SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gles_units.c LIBS hfs_gles m)
 
 set(hfs_gles_tests "")
-function(hfs_gles_test name)
-  add_test(NAME ${name} COMMAND test_gles_render ${ARGN})
+function(hfs_gles_test name mode)
+  if(mode STREQUAL "timing")
+    set(prog test_gles_fetch)
+  elseif(mode STREQUAL "sub" OR mode STREQUAL "slice")
+    set(prog test_gles_grid)
+  else()
+    set(prog test_gles_render)
+  endif()
+  add_test(NAME ${name} COMMAND ${prog} ${mode} ${ARGN})
   set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 600)
   set(hfs_gles_tests ${hfs_gles_tests} ${name} PARENT_SCOPE)
 endfunction()
