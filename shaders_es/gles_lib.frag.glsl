@@ -385,6 +385,14 @@ bool hfs_scale_takes_over(float sl, float ref, float tie)
     return sl > ref + HFS_HORIZON_TIE * abs(ref) + tie;
 }
 
+/* The distance factor 2^(u/k), u = -1 + 2 (q + 1) / (n + 1), of refining
+ * sample q of n (cpu_horizon.c refine_factor): strictly between a scale's
+ * neighbours. */
+float hfs_refine_factor(int q, int n, float k)
+{
+    return exp2((-1.0 + 2.0 * float(q + 1) / float(n + 1)) / k);
+}
+
 /* The n refining samples about scale sc = (d, inv_run, layer, 0) of
  * receiver g (height h = R_layer(g)) in direction cs: at d 2^(u/k),
  * u = -1 + 2 (q + 1) / (n + 1), strictly between sc's neighbouring scales,
@@ -394,7 +402,7 @@ float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs
                        vec2 h, int n, float k, float best, inout float dist, inout int fetches)
 {
     for (int q = 0; q < n; ++q) {
-        float f = exp2((-1.0 + 2.0 * float(q + 1) / float(n + 1)) / k);
+        float f = hfs_refine_factor(q, n, k);
         vec2 o;
         if (!hfs_scale_offset(g, size, sc.x * f, cs, o))
             continue;

@@ -47,12 +47,11 @@ float hfs_hdiff(vec2 a, vec2 b);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
+float hfs_refine_factor(int q, int n, float k);
 
 uniform highp sampler2D u_normals;       /* full resolution */
 uniform highp sampler2DArray u_keyhz;    /* key horizons (hi, lo, D, 0), a direction a layer */
-uniform highp sampler2D u_height;        /* normalized heights (hi, lo), full resolution */
-uniform highp sampler2DArray u_levels;   /* the pyramid's layers; u_fine: the input's */
-uniform float u_fine;
+uniform highp sampler2D u_height;        /* normalized heights (hi, lo), full resolution, LINEAR */
 #ifdef HFS_TABLES
 uniform highp sampler2DArray u_ktab;     /* interior tables, 4 layers per set */
 uniform highp sampler2DArray u_ktabb;    /* boundary tables (n x 1), 4 per set */
@@ -103,14 +102,15 @@ void tab_add(inout vec4 V[4], float a, float b, bool boundary, int rot, float se
 #endif
 
 /* The sample at distance d from texel p in direction cs, as a slope (tan
- * of its elevation): the input level read bilinearly (the array is
- * LINEAR), zp = the input at p; -1e30 (never the max) off the grid. */
+ * of its elevation): the heights read bilinearly (the pyramid's input
+ * level, the same values), zp = the height at p; -1e30 (never the max)
+ * off the grid. */
 float near_slope(ivec2 p, vec2 cs, float d, vec2 zp)
 {
     vec2 o;
     if (!hfs_scale_offset(p, u_size, d, cs, o))
         return -1e30;
-    vec2 t = texture(u_levels, vec3((vec2(p) + 0.5 + o) / vec2(u_size), u_fine)).xy;
+    vec2 t = texture(u_height, (vec2(p) + 0.5 + o) / vec2(u_size)).xy;
     return u_rise * hfs_hdiff(t, zp) / d;
 }
 
@@ -130,10 +130,9 @@ float near_horizon(ivec2 p, vec2 zp)
             bm = m;
         }
     }
-    for (int q = 0; bm >= 0 && q < u_refine; ++q) {
-        float u = -1.0 + 2.0 * float(q + 1) / float(u_refine + 1);
-        best = max(best, near_slope(p, u_near_cs, exp2((float(bm) + u) / u_lk), zp));
-    }
+    float d = exp2(float(bm) / u_lk);
+    for (int q = 0; bm >= 0 && q < u_refine; ++q)
+        best = max(best, near_slope(p, u_near_cs, d * hfs_refine_factor(q, u_refine, u_lk), zp));
     return best;
 }
 

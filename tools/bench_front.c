@@ -36,11 +36,6 @@ void bench_mark_fronts(bench_result *res, int n_res, int n_scenes)
         }
 }
 
-/* The rules of bench_front.h, made robust to timing noise (shared machines
- * vary +-10% run to run; errors do not vary): a budget counts with a
- * BENCH_TIME_MARGIN of headroom, and between settings whose error (kiosk,
- * panel) or time (headless) is within BENCH_TIE of the best candidate's,
- * the cheaper one (kiosk, panel) or the more accurate one (headless) wins. */
 /* The fastest of the candidates (cand[p]), 5% ties going to the more
  * accurate; -1 if there is none. */
 static int fastest_of(const int *cand, int n_points, const double *t, const double *e)
@@ -69,6 +64,12 @@ static int kiosk_target(const int *ok, int n_points, const double *t, const doub
     return fastest_of(cand, n_points, t, e);
 }
 
+/* The rules of bench_front.h, made robust to timing noise (shared machines
+ * vary +-10% run to run; errors do not vary): a budget counts with a
+ * BENCH_TIME_MARGIN of headroom, and between settings whose error (panel,
+ * kiosk without a target) or time (kiosk, headless) is within BENCH_TIE of
+ * the best candidate's, the faster (panel) or the more accurate (kiosk,
+ * headless) wins.  cand: scratch for n_points flags. */
 static void pick_uses(bench_picks *picks, int n_points, const double *t, const double *e,
                       const double *p99, const int *ok, const bench_budget *b, int *cand)
 {
@@ -132,8 +133,7 @@ int bench_pick(const bench_result *res, int n_res, int n_scenes, const bench_poi
     for (int p = 0; p < n_points; ++p) {
         picks->front[p] = ok[p];
         for (int q = 0; q < n_points && picks->front[p]; ++q)
-            if (q != p && seen[q] == n_scenes && product(&pts[q]) &&
-                dominates(t[q], e[q], t[p], e[p]))
+            if (q != p && ok[q] && dominates(t[q], e[q], t[p], e[p]))
                 picks->front[p] = 0;
     }
     pick_uses(picks, n_points, t, e, p99, ok, b, cand);

@@ -69,6 +69,21 @@ static void usage(void)
             "               [--panel-ms MS] [--headless-err E] [--quiet]\n");
 }
 
+/* The budget a flag sets (bench_front.h bench_budget), or NULL. */
+static double *budget_field(bench_budget *b, const char *flag)
+{
+    const struct {
+        const char *flag;
+        double *field;
+    } t[] = {{"--kiosk-ms", &b->kiosk_ms},     {"--kiosk-err", &b->kiosk_err},
+             {"--kiosk-p99", &b->kiosk_p99},   {"--panel-ms", &b->panel_ms},
+             {"--headless-err", &b->headless_err}};
+    for (size_t i = 0; i < sizeof t / sizeof t[0]; ++i)
+        if (!strcmp(flag, t[i].flag))
+            return t[i].field;
+    return NULL;
+}
+
 static int parse_number(const char *flag, const char *v, double lo, double hi, double *out)
 {
     char *end;
@@ -137,20 +152,8 @@ static int parse_args(int argc, char **argv, options *o)
             if (parse_number(a, v, r->lo, r->hi, &x))
                 return -1;
             o->truth_samples = (int)x;
-        } else if (!strcmp(a, "--kiosk-ms")) {
-            if (parse_number(a, v, 0, 1e9, &o->budget.kiosk_ms))
-                return -1;
-        } else if (!strcmp(a, "--kiosk-err")) {
-            if (parse_number(a, v, 0, 1e9, &o->budget.kiosk_err))
-                return -1;
-        } else if (!strcmp(a, "--kiosk-p99")) {
-            if (parse_number(a, v, 0, 1e9, &o->budget.kiosk_p99))
-                return -1;
-        } else if (!strcmp(a, "--panel-ms")) {
-            if (parse_number(a, v, 0, 1e9, &o->budget.panel_ms))
-                return -1;
-        } else if (!strcmp(a, "--headless-err")) {
-            if (parse_number(a, v, 0, 1e9, &o->budget.headless_err))
+        } else if (budget_field(&o->budget, a)) {
+            if (parse_number(a, v, 0, 1e9, budget_field(&o->budget, a)))
                 return -1;
         } else {
             fprintf(stderr, "hfbench: %s: unknown flag\n", a);

@@ -46,8 +46,7 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     int rc;
     if ((rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, g->r.normals, err)) ||
         (rc = hfs_gles_program_texture(gl, prog, "u_keyhz", GL_TEXTURE_2D_ARRAY, g->r.keyhz, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, g->r.input, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_levels", GL_TEXTURE_2D_ARRAY, g->r.arr, err)))
+        (rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, g->r.input, err)))
         return rc;
     if (fr->tables &&
         ((rc = hfs_gles_program_texture(gl, prog, "u_ktab", GL_TEXTURE_2D_ARRAY, g->wedge.keys,
@@ -60,7 +59,6 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     hfs_gles_set_i1(gl, prog, "u_sub", L->sub);
     hfs_gles_set_f1(gl, prog, "u_lk", (float)L->k);
     hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
-    hfs_gles_set_f1(gl, prog, "u_fine", (float)(L->n_layers - 1));
     hfs_gles_set_f1(gl, prog, "u_far", (float)(2 * L->sub));
     hfs_gles_set_f1(gl, prog, "u_rise", (float)(L->hscale * L->zscale / L->dx));
     if (fr->keys_tex)

@@ -294,6 +294,17 @@ long hfs_gles_offset_mismatches(const hfs_gles_layout *L, const hfs_swath *s)
 
 /* ---- key lights ------------------------------------------------------------------- */
 
+/* The clamped cosine about N as SH: its (l, m) coefficient is k_l Y_lm(N)
+ * (a zonal function rotated to N); k_l per band, k_3 = 0. */
+static void cosine_band_factors(double kl[HFS_ZH_N])
+{
+    double zc[HFS_ZH_N], c[HFS_SH_N];
+    hfs_zh_clamped_cosine(zc);
+    hfs_sh_rotate_zonal(zc, 0.0, 0.0, 1.0, c);
+    for (int l = 0; l < HFS_ZH_N; ++l)
+        kl[l] = c[l * (l + 1)] / sqrt((2.0 * l + 1.0) / (4.0 * 3.14159265358979323846));
+}
+
 /* The Legendre path's per-direction weights w_j = C_j^T (H(N) * L) are
  * linear in the basis functions at the normal: the clamped cosine about N
  * is H_i(N) = k_l Y_i(N) (k_3 = 0), so w_j = sum_{i < 9} Y_i(N) A_j[i] with
@@ -305,11 +316,8 @@ static void fold_key_matrices(const hfs_gles_key *k, const hfs_visibility *v, fl
 {
     const int n = hfs_visibility_swath(v)->n;
     const hfs_gles_swath_block b = hfs_gles_swath_view(swath, n);
-    double zc[HFS_ZH_N], c[HFS_SH_N], kl[HFS_ZH_N];
-    hfs_zh_clamped_cosine(zc);
-    hfs_sh_rotate_zonal(zc, 0.0, 0.0, 1.0, c);
-    for (int l = 0; l < HFS_ZH_N; ++l)
-        kl[l] = c[l * (l + 1)] / sqrt((2.0 * l + 1.0) / (4.0 * 3.14159265358979323846));
+    double kl[HFS_ZH_N];
+    cosine_band_factors(kl);
     double pl[HFS_SH_N][HFS_SH_N]; /* pl[i] = e_i * L */
     for (int i = 0; i < HFS_SH_N; ++i) {
         double e[HFS_SH_N] = {0.0};
@@ -360,14 +368,11 @@ void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hf
 
 void hfs_gles_cosine_transfer(float dst[16])
 {
-    double zc[HFS_ZH_N], c[HFS_SH_N];
-    hfs_zh_clamped_cosine(zc);
-    hfs_sh_rotate_zonal(zc, 0.0, 0.0, 1.0, c);
-    for (int l = 0; l * l < HFS_SH_N; ++l) {
-        const double k = c[l * (l + 1)] / sqrt((2.0 * l + 1.0) / (4.0 * 3.14159265358979323846));
+    double kl[HFS_ZH_N];
+    cosine_band_factors(kl);
+    for (int l = 0; l * l < HFS_SH_N; ++l)
         for (int m = -l; m <= l; ++m)
-            dst[l * (l + 1) + m] = (float)k;
-    }
+            dst[l * (l + 1) + m] = (float)kl[l];
 }
 
 void hfs_gles_open_transfer(float dst[16])
