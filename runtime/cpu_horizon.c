@@ -242,9 +242,9 @@ static double refine_factor(int q, int refine, int k)
 
 double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
                            const double *omega, size_t stride, double floor, int refine,
-                           double tie, int seeded)
+                           double tie, int seeded, int skip)
 {
-    const int n = hp->n_levels;
+    const int n = hp->n_levels - skip;
     int best_s = seeded ? n - 1 : -1;
     double best = -HALF_PI, best_slope = seeded ? tan(floor) : 0.0;
     for (int s = n - 1; s >= 0; --s) { /* fine to coarse; near-ties: the finest */
@@ -256,6 +256,8 @@ double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
         }
         best = o > best ? o : best;
     }
+    if (best_s < 0) /* every scale skipped */
+        return floor > HALF_PI ? HALF_PI : (floor < -HALF_PI ? -HALF_PI : floor);
     const hfs_horizon_tap *t = hfs_horizon_plan_taps(hp, dir) + best_s;
     const double d0 = hfs_cpu_pyramid_spacing(hp->p, best_s);
     const int k = hfs_cpu_pyramid_k(hp->p);

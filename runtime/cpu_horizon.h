@@ -105,12 +105,13 @@ double hfs_horizon_env_from_maxd(double maxd, double floor);
  * (the environment) starts from the floor's slope at the finest scale, so
  * that a scale below the tangent plane never leads (the GLES pass skips
  * what cannot beat it), otherwise (key lights) from the finest scale's own.
- * Receiver (i, j), direction dir of hp.  Refining finds the peaks the
+ * The `skip` finest scales are left out (the caller searches them; 0 or 1,
+ * and 0 unless the plan has more scales).  Receiver (i, j), direction dir of hp.  Refining finds the peaks the
  * sparse scales miss between them (SN08's B-spline max for key lights
  * smooths over scale and lowers them further). */
 double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
                            const double *omega, size_t stride, double floor, int refine,
-                           double tie, int seeded);
+                           double tie, int seeded, int skip);
 
 /* Key-light horizon, SN08's: max(floor, max over knots and midpoints of the
  * cubic B-spline of omega[0], omega[stride], ..., omega[(n-1)*stride]),

@@ -163,7 +163,7 @@ static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int
     if (c->refine <= 0)
         return hfs_horizon_bspline_max(levels + i, c->n_levels, (size_t)c->w, floor);
     return hfs_horizon_refined(plan, d, i, j, levels + i, (size_t)c->w, floor, c->refine,
-                               c->tie, 0);
+                               c->tie, 0, 0);
 }
 
 /* Horizons of row j for every job: omega (and, for key lights, the floors
@@ -194,10 +194,17 @@ static void trace_row(const render_ctx *c, worker_scratch *s, int j)
                     om[i] = key_horizon(c, job->plan, d, i, j, s->levels, fl[i]);
                 continue;
             }
+            /* Exact slices search the receiver's own cell exactly instead
+             * of the finest scale, which lies in it (as the GLES path). */
+            const int own_cell = c->slices.p != NULL;
             for (int i = 0; i < w; ++i)
                 om[i] = env_refined ? hfs_horizon_refined(job->plan, d, i, j, s->levels + i,
-                                                          (size_t)w, fl[i], c->refine, c->tie, 1)
+                                                          (size_t)w, fl[i], c->refine, c->tie, 1,
+                                                          own_cell)
                                     : hfs_horizon_env_from_maxd(s->maxd[i], fl[i]);
+            if (own_cell)
+                for (int i = 0; i < w; ++i)
+                    om[i] = fmax(om[i], atan(hfs_field_first_cell_slope(c->f, i, j, cs, sn)));
             /* Key lights on the environment's swath: same reads, B-spline max. */
             for (int r = 0; r < c->n_jobs; ++r) {
                 if (!c->jobs[r].shares_env)

@@ -3,6 +3,7 @@
  */
 #include "field_geom.h"
 
+#include <float.h>
 #include <math.h>
 
 int hfs_field_bilinear(const hfs_field *f, double gx, double gy, double *z)
@@ -20,6 +21,31 @@ int hfs_field_bilinear(const hfs_field *f, double gx, double gy, double *z)
     const double z01 = hfs_field_z(f, i, j + 1), z11 = hfs_field_z(f, i + 1, j + 1);
     *z = (z00 * (1.0 - fx) + z10 * fx) * (1.0 - fy) + (z01 * (1.0 - fx) + z11 * fx) * fy;
     return 1;
+}
+
+double hfs_field_first_cell_slope(const hfs_field *f, int i, int j, double c, double s)
+{
+    const double ac = fabs(c) < 1e-12 ? 0.0 : fabs(c), as = fabs(s) < 1e-12 ? 0.0 : fabs(s);
+    const int sx = c > 0.0 ? 1 : -1, sy = s > 0.0 ? 1 : -1;
+    const int x = ac > 0.0 ? i + sx : i, y = as > 0.0 ? j + sy : j;
+    if (x < 0 || y < 0 || x >= f->width || y >= f->height)
+        return -DBL_MAX;
+    const double z0 = hfs_field_z(f, i, j);
+    /* t -> 0: the cell's edges' slopes, weighted by the direction. */
+    const double near = ac * (hfs_field_z(f, x, j) - z0) + as * (hfs_field_z(f, i, y) - z0);
+    /* The far edge: an integer in the dominant axis, the other fraction
+     * linear along that edge. */
+    double zf, run;
+    if (ac >= as) {
+        const double fy = as / ac;
+        zf = hfs_field_z(f, x, j) * (1.0 - fy) + hfs_field_z(f, x, y) * fy;
+        run = 1.0 / ac;
+    } else {
+        const double fx = ac / as;
+        zf = hfs_field_z(f, i, y) * (1.0 - fx) + hfs_field_z(f, x, y) * fx;
+        run = 1.0 / as;
+    }
+    return fmax(near, (zf - z0) / run) / f->dx;
 }
 
 void hfs_field_normal(const hfs_field *f, int i, int j, double n[3])

@@ -23,6 +23,18 @@ int hfs_field_bilinear(const hfs_field *f, double gx, double gy, double *z);
  * at the border), N = normalize(-dz/dx, -dz/dy, 1). */
 void hfs_field_normal(const hfs_field *f, int i, int j, double n[3]);
 
+/* The highest slope (tangent of the elevation, world units) of the bilinear
+ * surface seen from grid point (i, j) toward unit direction (c, s) within
+ * (i, j)'s own cell, the one the ray crosses first (SPEC: the surface
+ * includes the receiver's own cells).  Along the ray z(t) - z(0) =
+ * t (A + B t) there (A: the one-sided slopes, B: the cell's twist), so the
+ * slope A + B t is highest at one end: t -> 0 or the cell's far edge at
+ * t = 1 / max(|c|, |s|).  Multi-scale horizons sample distances >= 1 texel
+ * only and miss the first (a receiver on a twisted cell, e.g. a saddle,
+ * sees its steepest occluder arbitrarily close).  -DBL_MAX when the cell
+ * lies off the grid.  c, s with |c| or |s| < 1e-12 count as 0. */
+double hfs_field_first_cell_slope(const hfs_field *f, int i, int j, double c, double s);
+
 /* The smallest and largest height sample (the field's units, before
  * zscale). */
 void hfs_field_range(const hfs_field *f, double *lo, double *hi);

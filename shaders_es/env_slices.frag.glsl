@@ -13,12 +13,14 @@
  * Why split the horizon: on a sub-sampled grid a texel's nearest
  * occluders (a texel away) are not its grid neighbours' - interpolating
  * those brightens pits and darkens peaks on rough relief - while far ones
- * are shared.  With u_near = 1 the finest scale (distance 1 texel) is
- * searched here, from the texel's 3 x 3 neighbourhood fetched once: the
- * scale's bilinear sample in direction j is a fixed weighting of those 9
- * heights (u_nearw, uniform_blocks.c), 9 fetches for every direction
- * instead of 4 per direction.  u_near = 0 at subsample 1, where the grid
- * is the texels themselves.
+ * are shared.  With u_near = 1 (the grid pass leaves the finest scale out)
+ * the texel's own cell is searched here exactly, from its 3 x 3
+ * neighbourhood fetched once (hfs_field_first_cell_slope: the bilinear
+ * surface's slope along the ray there is linear in the distance, so its
+ * max is at the cell's near end, the one-sided slopes weighted by |cos|,
+ * |sin|, or at its far edge, a fixed weighting of the 9 heights per
+ * direction, u_nearw, uniform_blocks.c): 9 fetches for every direction.
+ * u_near = 0 only on a one-level layout.
  */
 // hfs-variant: HFS_FP32 1
 // hfs-variant: HFS_SWATH_TEX 1
@@ -165,7 +167,7 @@ void contract(Sums S, out vec4 T[4])
                 dot(SW_COEF(14), S.c2), dot(SW_COEF(15).xy, S.c3));
 }
 
-/* The finest scale's slopes to the 3 x 3 neighbours (row-major from
+/* The slopes to the 3 x 3 neighbours over 1 texel (row-major from
  * (-1, -1)), -1e30 off the field: a sample that needs one never wins,
  * as hfs_scale_offset would skip it. */
 void near_slopes(ivec2 p, out vec4 s0, out vec4 s1, out float s8)
@@ -205,8 +207,12 @@ void main()
          * slope, and the horizon, as half-angle tangents (monotonic in
          * the elevation: the max is the max). */
         float uf = -a / (n.z + sqrt(a * a + n.z * n.z));
-        float tn = clamp(dot(SW_NEARW(3 * j), s0) + dot(SW_NEARW(3 * j + 1), s1) +
-                             SW_NEARW(3 * j + 2).x * s8, -1e18, 1e18);
+        float tn = dot(SW_NEARW(3 * j), s0) + dot(SW_NEARW(3 * j + 1), s1) +
+                   SW_NEARW(3 * j + 2).x * s8;
+        /* The cell's near end: the slopes to (+-1, 0) and (0, +-1). */
+        tn = clamp(max(tn, abs(cs.x) * (cs.x > 0.0 ? s1.y : s0.w) +
+                               abs(cs.y) * (cs.y > 0.0 ? s1.w : s0.y)),
+                   -1e18, 1e18);
         float ux = max(far[j % 4], tn / (1.0 + sqrt(1.0 + tn * tn)));
         /* Only slices whose horizon rises above the tangent plane carry an
          * occluded part (0 exactly elsewhere). */

@@ -6,6 +6,8 @@
  *   ray_tree_vs_plain  quadtree-accelerated rays == plain DDA, bit for bit
  *   horizon_fast       accelerated horizon march == plain march, bit for bit
  *   horizon_analytic   horizons of a plane and of a wall vs closed forms
+ *   first_cell         hfs_field_first_cell_slope vs a dense march over the
+ *                      receiver's own cell, and a saddle in closed form
  * Exit 0 on success, 1 on failure (file:line and values printed; a failing
  * check returns from its test at once, leaking that test's buffers).
  */
@@ -14,6 +16,7 @@
 #include "test_util.h"
 #include "truth_raycast.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -359,6 +362,61 @@ static void test_horizon_analytic(void)
     }
 }
 
+/* The highest slope over t in (0, tcell] by dense march: -DBL_MAX when the
+ * cell leaves the grid (its first point off the grid). */
+static double first_cell_march(const hfs_field *f, int i, int j, double c, double s)
+{
+    const double tc = 1.0 / fmax(fabs(c), fabs(s)), z0 = hfs_field_z(f, i, j);
+    double m = -DBL_MAX, z;
+    for (int k = 0; k <= 4000; ++k) {
+        /* the far end a hair inside: i + tc c may round past the border */
+        const double t = k == 0 ? 1e-7 : tc * (1.0 - 1e-12) * k / 4000.0;
+        if (!hfs_field_bilinear(f, i + t * c, j + t * s, &z))
+            return -DBL_MAX;
+        m = fmax(m, (z - z0) / (t * f->dx));
+    }
+    return m;
+}
+
+static void test_first_cell(void)
+{
+    const int w = 6, h = 5;
+    float *z = random_heights(w, h, 3.0);
+    const hfs_field f = {w, h, z, 0.5, 1.5};
+    double worst = 0.0;
+    for (int r = 0; r < 600; ++r) {
+        const int i = r % w, j = (r / w) % h;
+        /* axes, diagonals, then arbitrary azimuths */
+        const double phi = r < 240 ? (r % 8) * PI / 4 : 2 * PI * urand();
+        double c = cos(phi), s = sin(phi);
+        c = fabs(c) < 1e-12 ? 0.0 : c;
+        s = fabs(s) < 1e-12 ? 0.0 : s;
+        const double got = hfs_field_first_cell_slope(&f, i, j, c, s);
+        const double want = first_cell_march(&f, i, j, c, s);
+        if (want == -DBL_MAX) {
+            REQUIRE(got == -DBL_MAX, "(%d,%d) phi %.4f: cell off the grid, got %g", i, j, phi,
+                    got);
+            continue;
+        }
+        /* The march samples the same linear function: it never exceeds the
+         * ends and reaches them to its step's rounding. */
+        const double e = fabs(got - want) / fmax(1.0, fabs(want));
+        worst = e > worst ? e : worst;
+        REQUIRE(e < 1e-5, "(%d,%d) phi %.4f: %.12f want %.12f", i, j, phi, got, want);
+    }
+    free(z);
+    /* A saddle: the receiver and the diagonal neighbour low, the two edge
+     * neighbours 1 high.  Along 45 degrees the slope falls from sqrt(2)
+     * at the receiver to 0 at the far corner: the distance-1 sample sees
+     * sqrt(2) - 1, the cell sqrt(2). */
+    float sz[4] = {0.0f, 1.0f, 1.0f, 0.0f};
+    const hfs_field sf = {2, 2, sz, 1.0, 1.0};
+    const double d = sqrt(0.5), got = hfs_field_first_cell_slope(&sf, 0, 0, d, d);
+    REQUIRE(fabs(got - sqrt(2.0)) < 1e-12, "saddle: %.15f want sqrt(2)", got);
+    printf("first_cell: 600 receivers and azimuths within %.1e of a dense march; saddle exact\n",
+           worst);
+}
+
 int main(void)
 {
     test_cap_irradiance();
@@ -366,5 +424,6 @@ int main(void)
     test_ray_tree_vs_plain();
     test_horizon_fast();
     test_horizon_analytic();
+    test_first_cell();
     return finish_checks("test_truth_geom");
 }

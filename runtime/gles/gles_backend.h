@@ -53,7 +53,7 @@ struct hfs_gles_frame {
     int tables;                           /* the wedge-table visibility path */
     int slice;                            /* exact slice lighting (slice_light.h) */
     int hor_layers;                       /* slice path: grid horizon layers (4 dirs each) */
-    int env_near;                         /* slice path: 1 if the finest scale is per texel */
+    int env_near;                         /* slice path: 1, the texel's own cell is per texel */
     int has_env, n_keys;
     hfs_gles_frame_key keys[HFS_MAX_KEY_LIGHTS];
     double l_env[3][HFS_SH_N];            /* rotated environment SH */

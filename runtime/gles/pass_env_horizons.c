@@ -16,14 +16,6 @@
 
 #define SLICE_DIRS_PER_DRAW 16 /* 4 RGBA targets (ES 3.0's minimum) x 4 */
 
-/* Slice path on a sub-sampled grid: the finest scale (distance 1) is
- * searched at each texel instead of at the grid (env_slices.frag says why;
- * measured in BENCHMARKS.md, "Exact slice lighting"). */
-static int near_scales(const hfs_gles_layout *L)
-{
-    return L->sub > 1 && L->n_levels > 1 ? 1 : 0;
-}
-
 static int present(const hfs_gles_frame *fr)
 {
     return fr->has_env;
@@ -46,7 +38,10 @@ static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     if (fr->slice) {
         const int groups = (fr->q->nphi_env + SLICE_DIRS_PER_DRAW - 1) / SLICE_DIRS_PER_DRAW;
         fr->hor_layers = groups * 4;
-        fr->env_near = near_scales(&fr->L);
+        /* The texel's own cell (holding the finest scale, distance 1) is
+         * searched at each texel, not at the grid (env_slices.frag says
+         * why; BENCHMARKS.md, "Exact slice lighting"). */
+        fr->env_near = 1;
         if ((rc = hfs_gl_caps_check_texture(&g->caps, fr->L.vw, fr->L.vh, fr->hor_layers,
                                             "environment horizons (--nphi-env)", err)))
             return rc;

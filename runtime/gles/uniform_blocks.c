@@ -127,13 +127,16 @@ size_t hfs_gles_slices_vec4(int n)
            HFS_SH_N + (size_t)n * 4;
 }
 
-/* The bilinear sample at offset (c, s) from a texel (the finest scale,
- * distance 1) as weights on its 3 x 3 neighbourhood, row-major from
- * (-1, -1); offsets split as the horizons' (cpu_horizon.c): an axis
- * exactly, so only one neighbour is read there. */
+/* The slope to the far edge of the texel's own cell in direction (c, s),
+ * at t = 1 / max(|c|, |s|) texels (hfs_field_first_cell_slope), as weights
+ * on the slopes to its 3 x 3 neighbourhood (differences over 1 texel),
+ * row-major from (-1, -1); offsets split as the horizons' (cpu_horizon.c):
+ * an axis exactly, so only one neighbour is read there.  The sample at
+ * distance 1 lies between the cell's ends and never beats both. */
 static void near_weights(double c, double s, float w[12])
 {
-    double o[2] = {c, s}, f[2];
+    const double t = 1.0 / fmax(fabs(c), fabs(s));
+    double o[2] = {c * t, s * t}, f[2];
     int io[2];
     for (int a = 0; a < 2; ++a) {
         const double r = nearbyint(o[a]);
@@ -148,7 +151,7 @@ static void near_weights(double c, double s, float w[12])
             const double wt = (a ? f[0] : 1.0 - f[0]) * (b ? f[1] : 1.0 - f[1]);
             const int x = io[0] + a + 1, y = io[1] + b + 1;
             if (wt != 0.0) /* |c|, |s| <= 1: a weighted texel is in the 3 x 3 */
-                w[3 * y + x] = (float)wt;
+                w[3 * y + x] = (float)(wt / t);
         }
 }
 
