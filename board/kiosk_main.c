@@ -176,7 +176,8 @@ static int check_stats_path(const kiosk_opts *o, const hfs_scene *s, hfs_error *
 {
     hfs_outputs *outs = NULL;
     int rc = hfs_outputs_create(&outs, err);
-    const char *inputs[] = {o->scene_path, o->input_path, o->replay_path, s->height, s->env_map};
+    const char *inputs[] = {o->scene_path, o->input_path, o->replay_path, s->height, s->env_map,
+                            s->albedo_map};
     for (size_t i = 0; i < sizeof inputs / sizeof inputs[0] && !rc; ++i)
         rc = hfs_outputs_input(outs, inputs[i], err);
     if (!rc)

@@ -48,6 +48,7 @@
  * last.  hfs_cpu_render_with (cpu_local.h) takes the local-light options;
  * hfs_cpu_render uses the defaults.
  */
+#include "albedo.h"
 #include "backends.h"
 #include "cpu_horizon.h"
 #include "cpu_local.h"
@@ -552,6 +553,7 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         goto done;
 
     hfs_parallel_rows(h, threads, render_row, &c, progress, user);
+    hfs_albedo_map_apply(l->albedo_map, out);
 
 done:
     hfs_cpu_local_destroy((hfs_cpu_local *)c.local); /* local lights (issue 4) */

@@ -120,6 +120,11 @@ typedef struct hfs_lighting {
     hfs_local_light local[HFS_MAX_LOCAL_LIGHTS];
 
     double albedo;           /* Lambertian albedo rho, default 1 */
+    /* Per-texel albedo (SPEC "Albedo"): NULL (default) or W*H*3 linear RGB
+     * values in [0, 1], row-major like the heights (row j = 0 first); the
+     * albedo of texel (i, j) is then albedo * albedo_map[3 (j W + i) + c].
+     * Read during hfs_renderer_render only; the caller owns it. */
+    const float *albedo_map;
 } hfs_lighting;
 
 /* ---- quality settings ----------------------------------------------------- */

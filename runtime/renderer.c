@@ -5,6 +5,7 @@
  * table of scene keys (scene_keys.h); the heights are scanned once per
  * change when the caller names their changes (hfs_renderer_set_field_serial).
  */
+#include "albedo.h"
 #include "backends.h"
 #include "scene_keys.h"
 
@@ -361,6 +362,8 @@ static int validate(const hfs_field *f, const hfs_lighting *l, const hfs_quality
         rc = check_heights(f, err);
     if (!rc)
         rc = hfs_validate_lighting(l, err);
+    if (!rc)
+        rc = hfs_albedo_map_check(l->albedo_map, f->width, f->height, err);
     return rc ? rc : hfs_validate_quality(q, err);
 }
 

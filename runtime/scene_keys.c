@@ -69,6 +69,8 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
     [HFS_SK_ALBEDO] = {"albedo", "F", HFS_FORM_REALS, 1, 0, 0,
                        {{NULL, HFS_UNIT_NONE, {0.0, 1.0, 0}, NULL}}, "1",
                        "Lambertian albedo"},
+    [HFS_SK_ALBEDO_MAP] = {"albedo-map", "FILE", HFS_FORM_PATH, 0, 0, 0, {{0}}, NULL,
+                           "per-texel RGB albedo times --albedo: PNG, PFM, .exr, .hdr, the heights' size"},
     [HFS_SK_K] = {"k", "N", HFS_FORM_INT, 1, 0, 0,
                   {{NULL, HFS_UNIT_COUNT, {1, 16, 0}, NULL}}, "2",
                   "pyramid level step, levels per octave"},

@@ -17,6 +17,7 @@
  * the output is bit identical for any thread count.  Nothing here prints; progress goes
  * through the caller's callback (hfs_parallel_rows, calling thread).
  */
+#include "albedo.h"
 #include "backends.h"
 #include "field_geom.h"
 #include "lights.h"
@@ -430,6 +431,7 @@ int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
         goto done;
     }
     hfs_parallel_rows(f->height, q->threads, truth_row, x, progress, user);
+    hfs_albedo_map_apply(l->albedo_map, out);
 
 done:
     hfs_truth_grid_free(&x->grid);

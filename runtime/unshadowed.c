@@ -10,6 +10,7 @@
  *                the sphere E = pi; radius 0 (a point) contributes 0.
  * Cheap (a few hundred flops per texel), so single-threaded.
  */
+#include "albedo.h"
 #include "backends.h"
 #include "field_geom.h"
 #include "lights.h"
@@ -82,5 +83,6 @@ int hfs_unshadowed_render(const hfs_field *f, const hfs_lighting *l,
             }
         }
     }
+    hfs_albedo_map_apply(l->albedo_map, out);
     return HFS_OK;
 }

@@ -26,6 +26,7 @@
 // hfs-variant: HFS_NKEYS 2
 // hfs-variant: HFS_LOCAL 1
 // hfs-variant: HFS_ENV 1, HFS_LOCAL 1, HFS_FP32 1
+// hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_ALBEDO_MAP 1
 
 #ifndef HFS_PI
 #define HFS_PI 3.14159265358979
@@ -53,6 +54,9 @@ uniform highp sampler2DArray u_kf;       /* key factors f / E_max (hi, lo), a la
 uniform ivec2 u_size;                    /* W, H */
 uniform ivec2 u_vsize;                   /* visibility grid size */
 uniform int u_sub;
+#ifdef HFS_ALBEDO_MAP
+uniform highp sampler2D u_albedo;        /* albedo map (RGB in [0, 1]), full resolution */
+#endif
 #ifndef HFS_NKEYS
 #define HFS_NKEYS 0
 #endif
@@ -176,6 +180,9 @@ void main()
 #ifdef HFS_LOCAL
     vec2 uv = hfs_grid_uv(p, u_sub, u_size, u_vsize);
     lo += local_lights(p, n, uv);
+#endif
+#ifdef HFS_ALBEDO_MAP
+    lo *= texelFetch(u_albedo, p, 0).rgb; /* in [0, 1]: bounds and clamps still hold */
 #endif
     vec3 v = lo * u_misc.y;
     /* Never NaN/Inf in the target (fp16 saturates at 65504). */

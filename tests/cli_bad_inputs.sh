@@ -45,6 +45,11 @@ expect_fail bad-key "--key" $R --height "$tmp/flat.pfm" --key 10,100,2,1
 expect_fail bad-env-sh "--env-sh" $R --height "$tmp/flat.pfm" --env-sh 1,2
 expect_fail nan-albedo "--albedo" $R --height "$tmp/flat.pfm" --albedo nan
 expect_fail missing-env-map "nope.exr" $R --height "$tmp/flat.pfm" --env-map "$tmp/nope.exr"
+"$HFGEN" flat --size 4x4 -o "$tmp/alb4.pfm" || { echo "FAIL: hfgen"; exit 1; }
+"$HFGEN" cones --size 16x12 -o "$tmp/cones.pfm" || { echo "FAIL: hfgen"; exit 1; }
+expect_fail albedo-map-size "albedo map is 4x4, the heights are 16x12" $R --height "$tmp/flat.pfm" --env-sh $sky --albedo-map "$tmp/alb4.pfm"
+expect_fail albedo-map-range "outside [0, 1]" $R --height "$tmp/flat.pfm" --env-sh $sky --albedo-map "$tmp/cones.pfm"
+expect_fail albedo-map-missing "nope.png" $R --height "$tmp/flat.pfm" --env-sh $sky --albedo-map "$tmp/nope.png"
 expect_fail both-envs "both env-sh and env-map" $R --height "$tmp/flat.pfm" --env-sh $sky --env-map "$tmp/x.hdr"
 expect_fail missing-value "--dx" $R --height "$tmp/flat.pfm" --dx
 expect_fail bad-colormap "--colormap" $R --height "$tmp/flat.pfm" --env-sh $sky --colormap rainbow

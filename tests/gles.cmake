@@ -168,9 +168,18 @@ foreach(variant es30 sse41)
   endforeach()
 endforeach()
 
+# The albedo map (issue 16): cpu/truth/unshadowed linear in it, refused
+# values, and on GLES against the CPU, planned == fresh (test_albedo_map.c).
+add_executable(test_albedo_map ${CMAKE_CURRENT_LIST_DIR}/test_albedo_map.c)
+target_link_libraries(test_albedo_map PRIVATE hfs_test_gles_scenes)
+add_test(NAME test_albedo_map COMMAND test_albedo_map gles)
+set_tests_properties(test_albedo_map PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
+set(hfs_gles_tests ${hfs_gles_tests} test_albedo_map)
+
 if(HFS_SANITIZE)
   foreach(t IN LISTS hfs_gles_tests)
     set_property(TEST ${t} APPEND PROPERTY ENVIRONMENT
                  "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
   endforeach()
 endif()
+

@@ -3,6 +3,8 @@
 if(TARGET hfshade_io)
   hfs_add_test(test_io_height LABEL io TIMEOUT 300 SOURCES test_io_height.c
                LIBS hfshade_io PkgConfig::HFS_PNG)
+  hfs_add_test(test_io_albedo LABEL io TIMEOUT 300 SOURCES test_io_albedo.c
+               LIBS hfshade_io PkgConfig::HFS_PNG m)
   hfs_add_test(test_io_fill LABEL io TIMEOUT 300 SOURCES test_io_fill.c LIBS hfshade_io m)
   hfs_add_test(test_io_write LABEL io TIMEOUT 300 SOURCES test_io_write.c
                LIBS hfshade_io PkgConfig::HFS_PNG m)

@@ -102,6 +102,8 @@ int main(void)
     EXPECT("key 0 radiance", s.key[0].le[1] = 5.0, shade);
     EXPECT("environment light", s.l_env[2][3] = 0.5, shade);
     EXPECT("albedo", s.rho_pi = 0.2, shade);
+    EXPECT("albedo map given", (s.albedo_map = 1, s.albedo_gen = 1), shade);
+    EXPECT("albedo map contents", s.albedo_gen = 7, shade);
     EXPECT("local radiance", s.local[1].le[2] = 3.0f, shade);
     /* Local lights, the environment's settings, the grid. */
     EXPECT("local 1 moved", s.local[1].pos[1] = 2.0, "local 1 shade readback ");

@@ -317,6 +317,8 @@ static int plan_outputs(const cli *c, hfs_outputs **o, hfs_error *err)
         rc = hfs_outputs_input(*o, c->scene.height, err);
     if (!rc)
         rc = hfs_outputs_input(*o, c->scene.env_map, err);
+    if (!rc)
+        rc = hfs_outputs_input(*o, c->scene.albedo_map, err);
     if (!rc && c->out_pfm)
         rc = hfs_outputs_add(*o, c->out_pfm, err);
     if (!rc && c->out_png)

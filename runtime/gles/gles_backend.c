@@ -96,6 +96,7 @@ void hfs_gles_destroy(hfs_gles *g)
         hfs_gles_block_texture_free(&g->local_tex, gl);
     }
     hfs_gles_wedge_textures_free(&g->wedge, gl);
+    hfs_gles_albedo_texture_free(&g->albedo, gl);
     hfs_visibility_destroy(g->env_vis);
     hfs_slice_table_free(&g->env_slices);
     hfs_gl_context_destroy(g->ctx);
@@ -175,6 +176,7 @@ static void frame_lights(const hfs_lighting *l, const hfs_quality *q, hfs_gles_f
         if (hfs_local_light_contributes(&l->local[i]))
             fr->local[fr->n_local++] = l->local[i];
     fr->rho_pi = l->albedo / PI;
+    fr->albedo = l->albedo_map;
     if (fr->has_env)
         hfs_env_rotated(l, fr->l_env);
 }
@@ -192,7 +194,7 @@ static void report_timings(hfs_gles *g, double t_start)
     hfs_gles_timing_report(&g->timing, t);
     t->texture_bytes = hfs_gles_resources_bytes(&g->r, &g->caps) + g->wedge.bytes +
                        g->env_swath_tex.bytes + g->key_swath_tex.bytes + g->keys_tex.bytes +
-                       g->local_tex.bytes;
+                       g->local_tex.bytes + g->albedo.bytes;
     snprintf(t->method, sizeof t->method, "%s",
              g->timing.use_queries ? "timer-query" : "finish-clock");
     snprintf(t->device, sizeof t->device, "%s (%s)", hfs_gl_context_describe(g->ctx),

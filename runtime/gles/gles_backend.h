@@ -17,6 +17,7 @@
 #ifndef HFS_GLES_BACKEND_H
 #define HFS_GLES_BACKEND_H
 
+#include "albedo_texture.h"
 #include "backends.h"
 #include "block_texture.h"
 #include "gl_caps.h"
@@ -58,6 +59,8 @@ struct hfs_gles_frame {
     hfs_gles_frame_key keys[HFS_MAX_KEY_LIGHTS];
     double l_env[3][HFS_SH_N];            /* rotated environment SH */
     double rho_pi;
+    const float *albedo;                  /* the lighting's albedo map, or NULL */
+    unsigned albedo_gen;                  /* g->albedo's contents' generation */
     int key_layers;                       /* horizon layers the keys use */
     size_t key_swath_bytes;               /* HFS_UBO_KEY_SWATHS size */
     int key_rec_block;                    /* HfsKeys declared size, vec4 */
@@ -83,6 +86,7 @@ struct hfs_gles {
     hfs_gles_programs programs;
     hfs_gles_resources r;
     hfs_gles_wedge_textures wedge;
+    hfs_gles_albedo_texture albedo;       /* the lighting's albedo map, if any */
     hfs_gles_block_texture env_swath_tex, key_swath_tex, keys_tex, local_tex;
 
     /* Terrain cache: what the terrain pass computed from. */

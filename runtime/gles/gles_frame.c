@@ -119,7 +119,10 @@ static int fit_resources(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     hfs_gles_plan_lost(&g->plan, r->grid_gen != gens[1], r->keyhz_gen != gens[2],
                        r->localv_gen != gens[3], r->kf_gen != gens[4]);
     hfs_gles_wedge_textures_follow(&g->wedge, &g->gl, &g->caps);
-    return HFS_OK;
+    rc = hfs_gles_albedo_texture_follow(&g->albedo, &g->gl, &g->caps, fr->albedo, fr->f->width,
+                                        fr->f->height, err);
+    fr->albedo_gen = g->albedo.gen;
+    return rc;
 }
 
 /* What this frame's passes are computed from, for the planner. */
@@ -134,6 +137,8 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     if (fr->has_env)
         memcpy(s->l_env, fr->l_env, sizeof s->l_env);
     s->rho_pi = fr->rho_pi;
+    s->albedo_map = fr->albedo != NULL;
+    s->albedo_gen = fr->albedo_gen;
     s->n_keys = fr->n_keys;
     for (int i = 0; i < fr->n_keys && i < HFS_GLES_PLAN_KEYS; ++i) {
         const hfs_gles_key *k = &fr->keys[i].k;

@@ -3,7 +3,8 @@
  * fp16 hi + lo targets: the environment (H(N) . L_env from the kept
  * transfer vectors, clamped against order-4 ringing), each key light
  * (rho/pi Le E_max times its factor) and each local light (E_cap at the
- * texel times its interpolated ratio), times the albedo.
+ * texel times its interpolated ratio), times the albedo (and the texel's
+ * albedo map value, HFS_ALBEDO_MAP).
  *
  * Every radiance reaches the shader already multiplied by the frame's
  * output scale, a power of two that puts the largest value the frame can
@@ -100,6 +101,9 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
             return rc;
         gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_LOCAL, g->ubo[HFS_UBO_LOCAL]);
     }
+    if (fr->albedo &&
+        (rc = hfs_gles_program_texture(gl, prog, "u_albedo", GL_TEXTURE_2D, g->albedo.tex, err)))
+        return rc;
     hfs_gles_set_i2(gl, prog, "u_size", fr->L.w, fr->L.h);
     hfs_gles_set_i2(gl, prog, "u_vsize", fr->L.vw, fr->L.vh);
     hfs_gles_set_i1(gl, prog, "u_sub", fr->L.sub);
@@ -125,14 +129,15 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     const hfs_gles_variant v = {.n_keys = fr->n_keys, .env = fr->has_env, .local = local,
                                 .n_layers = local ? L->n_layers : 0,
                                 .local_dirs = local ? fr->q->nphi_local : 0,
-                                .n_local = fr->n_local, .fp32 = g->caps.fp32};
+                                .n_local = fr->n_local, .fp32 = g->caps.fp32,
+                                .albedo_map = fr->albedo != NULL};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_SHADE, &v, &prog, err);
     if (rc || (rc = bind_inputs(g, fr, prog, err)))
         return rc;
     hfs_gles_draw(gl, g->r.out_fbo, L->w, L->h);
     gl->UseProgram(0);
-    double fetches = (double)L->w * L->h * (1 + 4 * fr->has_env + fr->n_keys);
+    double fetches = (double)L->w * L->h * (1 + 4 * fr->has_env + fr->n_keys + (fr->albedo != NULL));
     if (local) /* the texel's height, one ratio layer per two lights */
         fetches += (double)L->w * L->h * (1 + (fr->n_local + 1) / 2);
     hfs_gles_stage_fetches(g, HFS_PASS_SHADE, 0, fetches);

@@ -130,6 +130,8 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
         hfs_plan_change(p, gp->in_env_light, "environment light changed (rotation, tint)");
     if (a->rho_pi != b->rho_pi)
         hfs_plan_change(p, gp->in_albedo, "albedo changed");
+    else if (a->albedo_map != b->albedo_map || a->albedo_gen != b->albedo_gen)
+        hfs_plan_change(p, gp->in_albedo, "albedo map changed");
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         const int ha = i < a->n_keys, hb = i < b->n_keys;
         if (!ha && !hb)

@@ -55,6 +55,8 @@ typedef struct hfs_gles_frame_sig {
     int has_env, nphi_env, vis_path;
     double l_env[3][HFS_SH_COEFFS];
     double rho_pi;
+    unsigned albedo_gen;          /* the albedo map's contents (0: none yet) */
+    int albedo_map;
     int n_keys;
     struct {
         hfs_swath swath;

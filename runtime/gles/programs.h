@@ -47,6 +47,7 @@ typedef struct hfs_gles_variant {
     int swath_tex;  /* HFS_SWATH_TEX 1: HfsSwath from a texture (block_texture.h) */
     int keys_tex;   /* HFS_KEYS_TEX 1: HfsKeys from a texture                */
     int local_tex;  /* HFS_LOCAL_TEX 1: HfsLocal's swath from a texture      */
+    int albedo_map; /* HFS_ALBEDO_MAP 1: the shading reads u_albedo          */
     int slice;      /* HFS_SLICE 1: exact slice lighting (slice_light.h)     */
 } hfs_gles_variant;
 

@@ -184,6 +184,27 @@ HFS_API int hfs_envmap_load(const char *path, hfs_envmap *out, hfs_error *err);
 /* Frees m->rgb and zeroes *m.  NULL-safe. */
 HFS_API void hfs_envmap_free(hfs_envmap *m);
 
+/* ---- albedo maps ------------------------------------------------------------- */
+
+/*
+ * Loads an albedo map for a width x height field (hfs_lighting albedo_map)
+ * into *rgb (width*height*3 linear floats, row j = 0 first like the
+ * heights; the caller frees it with free()), chosen by content:
+ *   PNG   any colour type and bit depth through libpng's simplified API:
+ *         16-bit files are linear; 8-bit files sRGB-encoded (libpng
+ *         converts one whose gAMA/sRGB/iCCP chunks say otherwise) and
+ *         decoded by the exact sRGB curve, as hfs_png_write encodes; grey
+ *         is R = G = B; alpha is ignored;
+ *   PFM   "PF" or "Pf" (R = G = B), linear, first row = row j = 0;
+ *   .exr / .hdr  linear, as hfs_envmap_load reads them (first row = j = 0).
+ * Errors (one line naming the file): a size other than the field's
+ * ("PATH: albedo map is 64x64, the heights are 128x128"), a value outside
+ * [0, 1] or not finite ("PATH: albedo texel (3, 7) G is 1.5, outside
+ * [0, 1]"), and every error of the readers.  *rgb is NULL on failure.
+ */
+HFS_API int hfs_albedo_load(const char *path, int width, int height, float **rgb,
+                            hfs_error *err);
+
 /* ---- writers ------------------------------------------------------------------ */
 
 /*

@@ -31,6 +31,7 @@ add_library(hfshade_io STATIC
   ${HFS_IO_DIR}/hole_fill.c
   ${HFS_IO_DIR}/envmap.c
   ${HFS_IO_DIR}/envmap_exr.c
+  ${HFS_IO_DIR}/albedo_load.c
   ${HFS_IO_DIR}/image_write.c)
 target_include_directories(hfshade_io PUBLIC ${HFS_IO_DIR})
 target_compile_definitions(hfshade_io PRIVATE HFS_BUILDING_LIBRARY)

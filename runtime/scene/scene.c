@@ -273,8 +273,10 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
     int rc;
     switch (k->form) {
     case HFS_FORM_PATH:
-        return set_path(id == HFS_SK_HEIGHT ? s->height : s->env_map, value, base_dir, where, key,
-                        err);
+        return set_path(id == HFS_SK_HEIGHT ? s->height
+                        : id == HFS_SK_ENV_MAP ? s->env_map
+                                               : s->albedo_map,
+                        value, base_dir, where, key, err);
     case HFS_FORM_SIZE:
         return set_size(s, value, where, err);
     case HFS_FORM_REALS:

@@ -8,6 +8,7 @@
 #include "scene_load.h"
 
 #include <stdatomic.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "sh.h"
@@ -22,6 +23,7 @@ void hfs_scene_inputs_free(hfs_scene_inputs *in)
     if (!in)
         return;
     hfs_heightmap_free(&in->hm);
+    free(in->albedo_map);
     memset(in, 0, sizeof *in);
 }
 
@@ -32,6 +34,7 @@ int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error
     hfs_scene_lighting(s, in->has_env_map ? (const double(*)[HFS_SH_COEFFS])in->env_map_sh : NULL,
                        &l);
     hfs_scene_quality(s, &q);
+    l.albedo_map = in->albedo_map; /* checked by its loader */
     /* The field does not change here: hfs_scene_inputs_load checked it. */
     int rc = hfs_validate_lighting(&l, err);
     if (!rc)
@@ -73,6 +76,10 @@ int hfs_scene_inputs_load(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *e
         memcpy(in->env_map_sh, sh, sizeof in->env_map_sh);
         in->has_env_map = 1;
     }
+    if (s->albedo_map[0] &&
+        (rc = hfs_albedo_load(s->albedo_map, in->field.width, in->field.height, &in->albedo_map,
+                              err)))
+        goto fail;
     if ((rc = hfs_validate_field(&in->field, err)) || (rc = hfs_scene_inputs_relight(s, in, err)))
         goto fail;
     in->serial = (uint64_t)atomic_fetch_add(&last_serial, 1) + 1;
