@@ -34,10 +34,19 @@ typedef struct backend_ops {
     void (*frame_report)(const void *state, hfs_frame_report *out);
 } backend_ops;
 
+/* Indirect light is the truth's alone so far (issue 16). */
+static int no_bounces(const char *backend, const hfs_lighting *l, hfs_error *err)
+{
+    return hfs_fail(err, HFS_E_UNSUPPORTED, "bounces %d: backend %s has no indirect light yet "
+                    "(--backend truth computes it)", l->bounces, backend);
+}
+
 static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                       hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
 {
     (void)state;
+    if (l->bounces > 0)
+        return no_bounces("cpu", l, err);
     return hfs_cpu_render(f, l, q, out, progress, user, err);
 }
 
@@ -62,6 +71,8 @@ static void gles_destroy(void *state) { hfs_gles_destroy(state); }
 static int gles_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                        hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
 {
+    if (l->bounces > 0)
+        return no_bounces("gles", l, err);
     const int rc = hfs_gles_render(state, f, l, q, out, err);
     if (!rc && progress)
         progress(user, 1.0); /* one GPU frame: no finer progress to report */
@@ -304,6 +315,8 @@ int hfs_validate_lighting(const hfs_lighting *l, hfs_error *err)
     if (!l)
         return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
     int rc = CHECK_LIB(HFS_SK_ALBEDO, 0, l->albedo, "albedo");
+    if (!rc)
+        rc = CHECK_LIB(HFS_SK_BOUNCES, 0, l->bounces, "bounces");
     for (int c = 0; c < 3 && l->has_env && !rc; ++c)
         for (int k = 0; k < HFS_SH_COEFFS && !rc; ++k)
             rc = CHECK_LIB(HFS_SK_ENV_SH, k, l->env_sh[c][k], "env-sh");

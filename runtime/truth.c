@@ -23,12 +23,15 @@
 #include "lights.h"
 #include "parallel.h"
 #include "sh.h"
+#include "truth_bounce.h"
 #include "truth_raycast.h"
+#include "truth_sampling.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define PI 3.14159265358979323846
 #define LIFT 1e-4          /* receiver lift, in units of dx (SPEC)          */
@@ -76,45 +79,6 @@ typedef struct truth_ctx {
 
     float *out;
 } truth_ctx;
-
-/* ---- deterministic jitter --------------------------------------------------- */
-
-static inline uint64_t mix64(uint64_t x)
-{
-    x ^= x >> 30;
-    x *= 0xbf58476d1ce4e5b9ULL;
-    x ^= x >> 27;
-    x *= 0x94d049bb133111ebULL;
-    x ^= x >> 31;
-    return x;
-}
-
-/* splitmix64 stream seeded by (receiver, light slot). */
-static inline uint64_t rng_seed(uint64_t receiver, int slot)
-{
-    return mix64(receiver * 0x9e3779b97f4a7c15ULL + (uint64_t)slot * 0xd1b54a32d192ed03ULL + 1);
-}
-
-static inline double rng_uniform(uint64_t *state)
-{
-    *state += 0x9e3779b97f4a7c15ULL;
-    return (double)(mix64(*state) >> 11) * (1.0 / 9007199254740992.0); /* [0, 1) */
-}
-
-/* ---- helpers ------------------------------------------------------------------ */
-
-static void frame_around(const double d[3], double t1[3], double t2[3])
-{
-    /* Helper axis least aligned with d. */
-    const double h[3] = {fabs(d[2]) < 0.9 ? 0.0 : 1.0, 0.0, fabs(d[2]) < 0.9 ? 1.0 : 0.0};
-    double a[3] = {h[1] * d[2] - h[2] * d[1], h[2] * d[0] - h[0] * d[2], h[0] * d[1] - h[1] * d[0]};
-    const double len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    for (int k = 0; k < 3; ++k)
-        t1[k] = a[k] / len;
-    t2[0] = d[1] * t1[2] - d[2] * t1[1];
-    t2[1] = d[2] * t1[0] - d[0] * t1[2];
-    t2[2] = d[0] * t1[1] - d[1] * t1[0];
-}
 
 static int radiance_zero(const float le[3])
 {
@@ -359,6 +323,48 @@ static int env_setup(truth_ctx *x, const hfs_lighting *l, int n_az)
     return HFS_OK;
 }
 
+/* The caller's progress over stages: stage k of n reports [k/n, (k+1)/n]. */
+typedef struct progress_span {
+    hfs_progress_fn fn;
+    void *user;
+    double base, width;
+} progress_span;
+
+static void span_progress(void *user, double fraction)
+{
+    const progress_span *s = user;
+    s->fn(s->user, s->base + s->width * fraction);
+}
+
+/* out (Lo_0, the albedo map applied) += Lo_1 + ... + Lo_B (truth_bounce.h):
+ * each bounce gathers the one before. */
+static int add_bounces(const hfs_truth_grid *g, const hfs_lighting *l, const hfs_quality *q,
+                       hfs_image *out, progress_span *span, hfs_error *err)
+{
+    const size_t n = (size_t)out->width * (size_t)out->height * 3;
+    float *prev = malloc(n * sizeof *prev), *cur = malloc(n * sizeof *cur);
+    if (!prev || !cur) {
+        free(prev);
+        free(cur);
+        return hfs_fail(err, HFS_E_NOMEM, "truth: out of memory for %d bounces", l->bounces);
+    }
+    memcpy(prev, out->rgb, n * sizeof *prev);
+    for (int b = 1; b <= l->bounces; ++b) {
+        const hfs_truth_bounce_in in = {g, prev, l->albedo, l->albedo_map,
+                                        q->truth_light_samples, b, q->threads};
+        span->base = b * span->width;
+        hfs_truth_bounce(&in, cur, span->fn ? span_progress : NULL, span);
+        for (size_t i = 0; i < n; ++i)
+            out->rgb[i] += cur[i];
+        float *t = prev;
+        prev = cur;
+        cur = t;
+    }
+    free(prev);
+    free(cur);
+    return HFS_OK;
+}
+
 int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
                      const hfs_quality *q, hfs_image *out,
                      hfs_progress_fn progress, void *user, hfs_error *err)
@@ -430,8 +436,12 @@ int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
                       f->width, f->height);
         goto done;
     }
-    hfs_parallel_rows(f->height, q->threads, truth_row, x, progress, user);
+    progress_span span = {progress, user, 0.0, 1.0 / (1 + l->bounces)};
+    hfs_parallel_rows(f->height, q->threads, truth_row, x, progress ? span_progress : NULL,
+                      &span);
     hfs_albedo_map_apply(l->albedo_map, out);
+    if (l->bounces > 0)
+        rc = add_bounces(&x->grid, l, q, out, &span, err);
 
 done:
     hfs_truth_grid_free(&x->grid);

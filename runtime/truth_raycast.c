@@ -328,8 +328,49 @@ static int cell_hit(const hfs_field *f, int ci, int cj, const double o[3],
     return 0;
 }
 
+/* The smallest s in [0, len] with c0 + b s + a s^2 <= 0, for a segment
+ * cell_hit found hitting (so one exists up to rounding, which the
+ * fallbacks absorb: the vertex, else the end). */
+static double first_root(double c0, double b, double a, double len)
+{
+    if (c0 <= 0.0)
+        return 0.0;
+    double best = INFINITY;
+    if (a == 0.0) {
+        if (b < 0.0)
+            best = -c0 / b;
+    } else {
+        const double disc = b * b - 4.0 * a * c0;
+        if (disc >= 0.0) {
+            const double q = -0.5 * (b + copysign(sqrt(disc), b));
+            const double r[2] = {q / a, q != 0.0 ? c0 / q : INFINITY};
+            for (int k = 0; k < 2; ++k)
+                if (r[k] >= 0.0 && r[k] < best)
+                    best = r[k];
+        } else if (a > 0.0) {
+            best = -b / (2.0 * a); /* the minimum only touches 0 */
+        }
+    }
+    return best <= len ? best : len;
+}
+
+/* cell_hit's segment, its first hit as a ray parameter t. */
+static double cell_first_t(const hfs_field *f, int ci, int cj, const double o[3], double u,
+                           double v, double w, double ta, double tb)
+{
+    const double z00 = hfs_field_z(f, ci, cj), z10 = hfs_field_z(f, ci + 1, cj);
+    const double z01 = hfs_field_z(f, ci, cj + 1), z11 = hfs_field_z(f, ci + 1, cj + 1);
+    const double ex = z10 - z00, ey = z01 - z00, exy = (z11 - z10) - (z01 - z00);
+    const double fx = (o[0] - ci) + ta * u, fy = (o[1] - cj) + ta * v;
+    const double c0 = (o[2] + ta * w) - (z00 + ex * fx + ey * fy + exy * fx * fy);
+    const double b = w - (ex * u + ey * v + exy * (fx * v + fy * u));
+    return ta + first_root(c0, b, -exy * u * v, tb - ta);
+}
+
+/* Walks the ray's cells in order; the first that hits holds the first hit
+ * (its parameter into *t_hit when non-NULL). */
 static int ray_walk(const hfs_truth_grid *g, const double o[3], const double d[3],
-                    double tmax, int use_tree)
+                    double tmax, int use_tree, double *t_hit)
 {
     const hfs_field *f = g->f;
     const int ncx = g->w - 1, ncy = g->h - 1;
@@ -365,13 +406,18 @@ static int ray_walk(const hfs_truth_grid *g, const double o[3], const double d[3
                     --level;
                     continue;
                 }
-                if (cell_hit(f, ci, cj, o, u, v, w, t, tend))
+                if (cell_hit(f, ci, cj, o, u, v, w, t, tend)) {
+                    if (t_hit)
+                        *t_hit = cell_first_t(f, ci, cj, o, u, v, w, t, tend);
                     return 1;
+                }
             } else if (level < top) {
                 ++level; /* skipped: climb (the node below is still addressed by ci, cj) */
                 /* the jump below uses this node's bounds x0..y1 */
             }
         } else if (cell_hit(f, ci, cj, o, u, v, w, t, tend)) {
+            if (t_hit)
+                *t_hit = cell_first_t(f, ci, cj, o, u, v, w, t, tend);
             return 1;
         }
 
@@ -401,11 +447,17 @@ static int ray_walk(const hfs_truth_grid *g, const double o[3], const double d[3
 int hfs_truth_ray_hits(const hfs_truth_grid *g, const double o[3],
                        const double d[3], double tmax)
 {
-    return ray_walk(g, o, d, tmax, 1);
+    return ray_walk(g, o, d, tmax, 1, NULL);
+}
+
+int hfs_truth_ray_first_hit(const hfs_truth_grid *g, const double o[3], const double d[3],
+                            double tmax, double *t)
+{
+    return ray_walk(g, o, d, tmax, 1, t);
 }
 
 int hfs_truth_ray_hits_plain(const hfs_truth_grid *g, const double o[3],
                              const double d[3], double tmax)
 {
-    return ray_walk(g, o, d, tmax, 0);
+    return ray_walk(g, o, d, tmax, 0, NULL);
 }

@@ -78,6 +78,13 @@ double hfs_truth_horizon(const hfs_truth_grid *g, int i, int j, double z0,
 int hfs_truth_ray_hits(const hfs_truth_grid *g, const double o[3],
                        const double d[3], double tmax);
 
+/* The same, and where: on a hit *t is the smallest world distance in
+ * [0, tmax] at which the ray is at or below the surface (the first
+ * crossing cell's quadratic solved in closed form; the bounces' gather
+ * reads the previous bounce's radiance there). */
+int hfs_truth_ray_first_hit(const hfs_truth_grid *g, const double o[3], const double d[3],
+                            double tmax, double *t);
+
 /* The same without the quadtree (every crossed cell is solved): for tests. */
 int hfs_truth_ray_hits_plain(const hfs_truth_grid *g, const double o[3],
                              const double d[3], double tmax);

@@ -9,3 +9,7 @@ target_link_libraries(bench_truth PRIVATE hfs_truth)
 # SPEC error metrics (runtime/metrics.c) on hand-worked distributions.
 hfs_add_test(test_metrics SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_metrics.c
              LIBS hfshade_lib m LABEL unit TIMEOUT 30)
+# Indirect light in the truth: first-hit rays, flat plane, wall closed form,
+# white furnace (test_truth_bounce.c).
+hfs_add_test(test_truth_bounce SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_bounce.c
+             LIBS hfs_truth LABEL unit TIMEOUT 300)

@@ -164,6 +164,7 @@ static int *int_field(hfs_scene *s, hfs_scene_key_id id)
     case HFS_SK_THREADS: return &q->threads;
     case HFS_SK_TRUTH_AZIMUTHS: return &q->truth_azimuths;
     case HFS_SK_TRUTH_SAMPLES: return &q->truth_light_samples;
+    case HFS_SK_BOUNCES: return &s->bounces;
     default: return NULL;
     }
 }
@@ -334,6 +335,7 @@ void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS
     }
     if (s->albedo_given)
         l->albedo = s->albedo;
+    l->bounces = s->bounces;
 #undef RAD
 }
 

@@ -58,6 +58,7 @@ typedef struct hfs_scene {
     double albedo;                   /* 0 = not given (default 1)           */
     int albedo_given;
     char albedo_map[HFS_PATH_MAX];   /* "" = none                           */
+    int bounces;                     /* indirect bounces, 0 = not given     */
 
     hfs_quality quality;             /* values of the quality keys given    */
     char preset[16];                 /* "" or a hfs_quality_preset() use    */
