@@ -21,6 +21,7 @@ add_library(hfs_cpu STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_pyramid.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_horizon.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_render.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/cpu_bounce.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_local.c)   # local lights (issue 4)
 target_compile_definitions(hfs_cpu PRIVATE HFS_BUILDING_LIBRARY)
 target_include_directories(hfs_cpu PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})

@@ -56,6 +56,7 @@
 #include "key_setup.h"
 #include "slice_light.h"
 #include "visibility.h"
+#include "cpu_bounce.h"
 #include "field_geom.h"
 #include "lights.h"
 #include "parallel.h"
@@ -334,7 +335,10 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
     hfs_cpu_local_options lo;
     hfs_cpu_local_options_default(&lo);
     lo.swath = q->local_full_swath ? HFS_LOCAL_SWATH_FULL : HFS_LOCAL_SWATH_PARTIAL;
-    return hfs_cpu_render_with(f, l, q, &lo, out, progress, user, err);
+    int rc = hfs_cpu_render_with(f, l, q, &lo, out, l->bounces > 0 ? NULL : progress, user, err);
+    if (!rc && l->bounces > 0) /* indirect light (cpu_bounce.h) */
+        rc = hfs_cpu_bounces(f, l, q, l->bounces, out->rgb, progress, user, err);
+    return rc;
 }
 
 /* The swath jobs: the environment's (jobs[0]) and each contributing key

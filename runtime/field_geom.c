@@ -84,3 +84,17 @@ void hfs_field_range(const hfs_field *f, double *lo, double *hi)
     *lo = a;
     *hi = b;
 }
+
+void hfs_rgb_bilinear(const float *rgb, int w, int h, double gx, double gy, double out[3])
+{
+    gx = fmin(fmax(gx, 0.0), w - 1.0);
+    gy = fmin(fmax(gy, 0.0), h - 1.0);
+    int i = (int)gx, j = (int)gy;
+    i = i > w - 2 ? w - 2 : i;
+    j = j > h - 2 ? h - 2 : j;
+    const double fx = gx - i, fy = gy - j;
+    const float *p00 = rgb + 3 * ((size_t)j * (size_t)w + (size_t)i), *p01 = p00 + 3 * (size_t)w;
+    for (int c = 0; c < 3; ++c)
+        out[c] = (p00[c] * (1.0 - fx) + p00[3 + c] * fx) * (1.0 - fy) +
+                 (p01[c] * (1.0 - fx) + p01[3 + c] * fx) * fy;
+}

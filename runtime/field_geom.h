@@ -35,6 +35,12 @@ void hfs_field_normal(const hfs_field *f, int i, int j, double n[3]);
  * lies off the grid.  c, s with |c| or |s| < 1e-12 count as 0. */
 double hfs_field_first_cell_slope(const hfs_field *f, int i, int j, double c, double s);
 
+/* Bilinear value of a W x H grid of RGB triples (rgb, row-major, row j = 0
+ * first) at grid coordinates (gx, gy), clamped into the grid: the exit
+ * radiance a bounce reads where a ray or a horizon sample meets the
+ * terrain (SPEC "Indirect light"). */
+void hfs_rgb_bilinear(const float *rgb, int w, int h, double gx, double gy, double out[3]);
+
 /* The smallest and largest height sample (the field's units, before
  * zscale). */
 void hfs_field_range(const hfs_field *f, double *lo, double *hi);

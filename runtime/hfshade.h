@@ -125,9 +125,9 @@ typedef struct hfs_lighting {
      * albedo of texel (i, j) is then albedo * albedo_map[3 (j W + i) + c].
      * Read during hfs_renderer_render only; the caller owns it. */
     const float *albedo_map;
-    /* Indirect diffuse bounces (SPEC "Indirect light"), 0..3, default 0.
-     * So far only the ground truth computes them; the CPU and GLES
-     * backends refuse bounces > 0 (HFS_E_UNSUPPORTED). */
+    /* Indirect diffuse bounces (SPEC "Indirect light"), 0..3, default 0:
+     * the ground truth and the CPU reference compute them; the GLES
+     * backend does not yet and refuses bounces > 0 (HFS_E_UNSUPPORTED). */
     int bounces;
 } hfs_lighting;
 

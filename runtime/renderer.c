@@ -38,15 +38,13 @@ typedef struct backend_ops {
 static int no_bounces(const char *backend, const hfs_lighting *l, hfs_error *err)
 {
     return hfs_fail(err, HFS_E_UNSUPPORTED, "bounces %d: backend %s has no indirect light yet "
-                    "(--backend truth computes it)", l->bounces, backend);
+                    "(--backend cpu or truth computes it)", l->bounces, backend);
 }
 
 static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                       hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
 {
     (void)state;
-    if (l->bounces > 0)
-        return no_bounces("cpu", l, err);
     return hfs_cpu_render(f, l, q, out, progress, user, err);
 }
 

@@ -71,7 +71,7 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                        "Lambertian albedo"},
     [HFS_SK_BOUNCES] = {"bounces", "N", HFS_FORM_INT, 1, 0, 0,
                         {{NULL, HFS_UNIT_COUNT, {0, 3, 0}, NULL}}, "0",
-                        "indirect diffuse bounces (so far --backend truth only)"},
+                        "indirect diffuse bounces (so far --backend cpu and truth)"},
     [HFS_SK_ALBEDO_MAP] = {"albedo-map", "FILE", HFS_FORM_PATH, 0, 0, 0, {{0}}, NULL,
                            "per-texel RGB albedo times --albedo: PNG, PFM, .exr, .hdr, the heights' size"},
     [HFS_SK_K] = {"k", "N", HFS_FORM_INT, 1, 0, 0,

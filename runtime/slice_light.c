@@ -168,3 +168,8 @@ void hfs_slice_add(const hfs_slice_table *t, int j, const double n[3], double x,
         T[k] += t->dphi * s;
     }
 }
+
+double hfs_slice_cosine(double a, double b, double x)
+{
+    return 0.5 * a * (0.5 * PI - x - 0.5 * sin(2.0 * x)) + 0.25 * b * (1.0 + cos(2.0 * x));
+}

@@ -74,6 +74,14 @@ void hfs_slice_profile(double a[HFS_SH_N][HFS_SLICE_F]);
 int hfs_slice_order(int k);            /* m of k = l(l+1) + m */
 double hfs_slice_trig(int k, double phi);
 
+/* The clamped cosine's weight of the slice's elevations above x:
+ * Int_x^{pi/2} (a cos e + b sin e) cos e de
+ *   = (a/2)(pi/2 - x - sin(2x)/2) + (b/4)(1 + cos 2x)
+ * (a = N.d(phi), b = N_z).  With uniform radiance 1, (1/pi) sum_j dphi of
+ * it from each slice's tangent plane is 1 on an open plane; a band (x1, x2]
+ * weighs hfs_slice_cosine(x1) - hfs_slice_cosine(x2). */
+double hfs_slice_cosine(double a, double b, double x);
+
 /* The 7 slice integrals g_m = Int_x^{pi/2} f_m(e) (a cos e + b sin e) cos e
  * de (exposed for the tests). */
 void hfs_slice_integrals(double a, double b, double x, double g[HFS_SLICE_F]);

@@ -29,21 +29,6 @@ static int strata(int samples)
     return k < 1 ? 1 : k;
 }
 
-/* prev's bilinear interpolant at grid position (gx, gy), in the grid. */
-static void prev_at(const hfs_truth_bounce_in *in, double gx, double gy, double lo[3])
-{
-    const hfs_field *f = in->grid->f;
-    const int w = f->width;
-    int i = (int)gx, j = (int)gy;
-    i = i > w - 2 ? w - 2 : (i < 0 ? 0 : i);
-    j = j > f->height - 2 ? f->height - 2 : (j < 0 ? 0 : j);
-    const double fx = fmin(fmax(gx - i, 0.0), 1.0), fy = fmin(fmax(gy - j, 0.0), 1.0);
-    const float *p00 = in->prev + 3 * ((size_t)j * (size_t)w + (size_t)i), *p01 = p00 + 3 * (size_t)w;
-    for (int c = 0; c < 3; ++c)
-        lo[c] = (p00[c] * (1.0 - fx) + p00[3 + c] * fx) * (1.0 - fy) +
-                (p01[c] * (1.0 - fx) + p01[3 + c] * fx) * fy;
-}
-
 /* Mean of Lo_{b-1} over the receiver's k x k cosine-weighted strata. */
 static void gather(const hfs_truth_bounce_in *in, int i, int j, double mean[3])
 {
@@ -68,7 +53,8 @@ static void gather(const hfs_truth_bounce_in *in, int i, int j, double mean[3])
             if (!hfs_truth_ray_first_hit(in->grid, o, d, INFINITY, &t))
                 continue;
             double lo[3];
-            prev_at(in, o[0] + t * d[0] / f->dx, o[1] + t * d[1] / f->dx, lo);
+            hfs_rgb_bilinear(in->prev, f->width, f->height, o[0] + t * d[0] / f->dx,
+                             o[1] + t * d[1] / f->dx, lo);
             for (int c = 0; c < 3; ++c)
                 mean[c] += lo[c];
         }

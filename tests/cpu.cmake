@@ -3,3 +3,10 @@ foreach(t pyramid horizon visibility render)
   hfs_add_test(test_cpu_${t} SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_${t}.c
                LIBS hfs_cpu m LABEL unit TIMEOUT 120)
 endforeach()
+# Indirect light in the CPU reference against closed forms and the truth.
+hfs_add_test(test_cpu_bounce SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_bounce.c
+             LIBS hfs_cpu hfs_truth m LABEL unit TIMEOUT 300)
+# Indirect light against the truth on one scene (not a test):
+# build/tests/bench_bounce NAME KEY=VALUE... (tools/bench_bounce.sh).
+add_executable(bench_bounce ${CMAKE_CURRENT_SOURCE_DIR}/bench_bounce.c)
+target_link_libraries(bench_bounce PRIVATE hfshade_scene_load hfshade_lib m)

@@ -27,6 +27,7 @@
  *               sampling error (below) at every texel
  */
 #include "backends.h"
+#include "bounce_scenes.h"
 #include "field_geom.h"
 #include "test_util.h"
 #include "truth_bounce.h"
@@ -100,15 +101,6 @@ static void render(const hfs_field *f, hfs_lighting *l, int bounces, int samples
     }
 }
 
-static hfs_lighting uniform_sky(void)
-{
-    hfs_lighting l;
-    hfs_lighting_defaults(&l);
-    l.has_env = 1;
-    for (int c = 0; c < 3; ++c)
-        l.env_sh[c][0] = sqrt(4.0 * PI); /* radiance 1 */
-    return l;
-}
 
 static void test_flat(void)
 {
@@ -116,7 +108,7 @@ static void test_flat(void)
     float *z = calloc((size_t)w * h, sizeof *z), *a = malloc(sizeof(float) * w * h * 3),
           *b = malloc(sizeof(float) * w * h * 3);
     const hfs_field f = {w, h, z, 1.0, 1.0};
-    hfs_lighting l = uniform_sky();
+    hfs_lighting l = bounce_uniform_sky();
     render(&f, &l, 0, 16, a);
     render(&f, &l, 2, 16, b);
     CHECK(!memcmp(a, b, sizeof(float) * w * h * 3));
@@ -124,37 +116,13 @@ static void test_flat(void)
     free(z), free(a), free(b);
 }
 
-/* Lambert: F from a point with normal n to the polygon v (relative to the
- * point, counter-clockwise or not: the sign is dropped). */
-static double polygon_view_factor(const double v[][3], int nv, const double n[3])
-{
-    double sum = 0.0;
-    for (int k = 0; k < nv; ++k) {
-        const double *a = v[k], *b = v[(k + 1) % nv];
-        const double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-        const double lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-        const double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                             a[0] * b[1] - a[1] * b[0]};
-        const double lc = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-        const double ang = atan2(lc, a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
-        (void)la, (void)lb;
-        if (lc > 0.0)
-            sum += ang * (c[0] * n[0] + c[1] * n[1] + c[2] * n[2]) / lc;
-    }
-    return fabs(sum) / (2.0 * PI);
-}
 
 static void test_wall(void)
 {
     const int w = 120, h = 401, X = 100; /* wall texels x >= X, height Hw */
     const double hw = 20.0, lw = 2.0, rho = 0.75;
-    float *z = calloc((size_t)w * h, sizeof *z), *prev = calloc((size_t)w * h * 3, sizeof *prev);
-    for (int j = 0; j < h; ++j)
-        for (int i = 0; i < w; ++i) {
-            z[j * w + i] = i >= X ? (float)hw : 0.0f;
-            for (int c = 0; c < 3 && i >= X - 1; ++c)
-                prev[3 * (j * w + i) + c] = (float)lw; /* the ramp's both ends */
-        }
+    float *z, *prev;
+    bounce_wall(w, h, X, hw, lw, &z, &prev);
     const hfs_field f = {w, h, z, 1.0, 1.0};
     hfs_truth_grid g;
     REQUIRE(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid");
@@ -163,11 +131,8 @@ static void test_wall(void)
     const int foot[5] = {2, 4, 8, 16, 40};
     for (int k = 0; k < 5; ++k) {
         const int i = X - 1 - foot[k];
-        const double D = X - i, lift = 1e-4;
-        const double v[4][3] = {{D, -jc, -lift}, {D, h - 1 - jc, -lift}, {D, h - 1 - jc, hw - lift},
-                                {D, -jc, hw - lift}};
-        const double up[3] = {0, 0, 1};
-        const double F = polygon_view_factor(v, 4, up);
+        const double D = X - i;
+        const double F = bounce_wall_view_factor(i, jc, h, X, hw);
         const double F_inf = 0.5 * (1.0 - D / sqrt(D * D + hw * hw));
         double lo[3];
         hfs_truth_bounce_at(&in, i, jc, lo);
@@ -183,12 +148,9 @@ static void test_wall(void)
 static void test_furnace(void)
 {
     const int w = 33, h = 48, samples = 256;
-    float *z = malloc((size_t)w * h * sizeof *z);
-    for (int j = 0; j < h; ++j)
-        for (int i = 0; i < w; ++i)
-            z[j * w + i] = (float)(1.5 * fabs(i - 16.0)); /* a V, 1.5 slope, long in y */
+    float *z = bounce_groove(w, h);
     const hfs_field f = {w, h, z, 1.0, 1.0};
-    hfs_lighting l = uniform_sky();
+    hfs_lighting l = bounce_uniform_sky();
     float *lo[4];
     for (int b = 0; b < 4; ++b) {
         lo[b] = malloc(sizeof(float) * w * h * 3);

@@ -1,0 +1,191 @@
+/*
+ * cpu_bounce.c — see cpu_bounce.h.
+ */
+#include "cpu_bounce.h"
+
+#include "cpu_horizon.h"
+#include "cpu_pyramid.h"
+#include "field_geom.h"
+#include "parallel.h"
+#include "pyramid_layout.h"
+#include "slice_light.h"
+#include "visibility.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+typedef struct bounce_ctx {
+    const hfs_field *f;
+    const hfs_lighting *l;
+    const hfs_cpu_pyramid *pyr;
+    const hfs_horizon_plan *plan;
+    int n_dirs, n_levels, k, refine;
+    double dphi;
+    double tie;           /* hfs_horizon_tie_slope, as the direct light's */
+    double *omega;        /* per worker: n_levels angles */
+    const float *prev;    /* Lo_{b-1} */
+    float *cur;           /* Lo_b */
+} bounce_ctx;
+
+/* The band (top, e] cast by the sample at (gx, gy), when e rises above
+ * top: its radiance times its cosine weight into acc; returns the new top. */
+static double cast(const bounce_ctx *b, double a, double nz, double top, double e, double gx,
+                   double gy, double acc[3])
+{
+    if (!(e > top))
+        return top;
+    double lo[3];
+    hfs_rgb_bilinear(b->prev, b->f->width, b->f->height, gx, gy, lo);
+    const double wgt = hfs_slice_cosine(a, nz, top) - hfs_slice_cosine(a, nz, e);
+    for (int c = 0; c < 3; ++c)
+        acc[c] += lo[c] * wgt;
+    return e;
+}
+
+/* The sample at distance dist (texels) along (c, s) from receiver (i, j),
+ * read from level `read` as the horizons read it: its elevation into *e
+ * and its grid position; 0 when it lies off the grid. */
+static int sample(const bounce_ctx *b, int read, int i, int j, double c, double s, double dist,
+                  double *e, double *gx, double *gy)
+{
+    const hfs_field *f = b->f;
+    *gx = i + dist * c, *gy = j + dist * s;
+    const double slack = 1e-9 * (1.0 + dist); /* the plans snap offsets as fine */
+    if (*gx < -slack || *gy < -slack || *gx > f->width - 1.0 + slack ||
+        *gy > f->height - 1.0 + slack)
+        return 0;
+    const double dz = hfs_cpu_pyramid_sample(b->pyr, read, *gx, *gy) -
+                      hfs_cpu_pyramid_sample(b->pyr, read, i, j);
+    *e = atan(dz * f->zscale / (dist * f->dx));
+    return 1;
+}
+
+/* The direct light's horizon of slice d at (i, j) (cpu_render.c: the
+ * refined scales and the own cell): the bands stop there, so that the
+ * light a receiver gathers and the sky it sees never overlap (with albedo
+ * <= 1 nothing exceeds the unshadowed maximum). */
+static double direct_horizon(const bounce_ctx *b, double *omega, int d, int i, int j,
+                             const double n[3], double c, double s, double first_cell)
+{
+    const double fl = hfs_horizon_floor(n, c, s);
+    hfs_horizon_point(b->plan, d, i, j, fl, NULL, NULL, omega);
+    const double e = hfs_horizon_refined(b->plan, d, i, j, omega, 1, fl, b->refine, b->tie, 1,
+                                         b->n_levels > 1);
+    return fmax(e, atan(first_cell));
+}
+
+/* sum_bands Lo_{b-1} W over slice d at receiver (i, j): the receiver's own
+ * cell, then each scale's sample and `refine` more between it and the next
+ * (the spacing the refined horizons reach about their max; here
+ * everywhere, since every new top casts a band), nearest first. */
+static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j,
+                         const double n[3], double acc[3])
+{
+    double c, s;
+    hfs_horizon_plan_dir(b->plan, d, &c, &s);
+    const double a = n[0] * c + n[1] * s;
+    double top = atan2(-a, n[2]); /* the tangent plane */
+    const double m1 = hfs_field_first_cell_slope(b->f, i, j, c, s);
+    const double cap = direct_horizon(b, omega, d, i, j, n, c, s, m1);
+    /* The receiver's own cell; its band takes the far edge's radiance. */
+    const double tc = 1.0 / fmax(fabs(c), fabs(s));
+    if (m1 > -DBL_MAX)
+        top = cast(b, a, n[2], top, fmin(atan(m1), cap), i + c * tc, j + s * tc, acc);
+    const hfs_horizon_tap *taps = hfs_horizon_plan_taps(b->plan, d);
+    const int sub = b->refine + 1;
+    for (int sc = b->n_levels - 1; sc >= 0; --sc) {
+        const double d0 = hfs_cpu_pyramid_spacing(b->pyr, sc);
+        for (int q = 0; q < sub; ++q) {
+            double e, gx, gy;
+            const double dist = d0 * exp2((double)q / (sub * b->k));
+            if (sample(b, taps[sc].read, i, j, c, s, dist, &e, &gx, &gy))
+                top = cast(b, a, n[2], top, fmin(e, cap), gx, gy, acc);
+        }
+    }
+}
+
+static void bounce_row(void *ctx, int j, int worker)
+{
+    const bounce_ctx *b = ctx;
+    const hfs_field *f = b->f;
+    double *omega = b->omega + (size_t)worker * (size_t)b->n_levels;
+    for (int i = 0; i < f->width; ++i) {
+        double n[3], acc[3] = {0.0, 0.0, 0.0};
+        hfs_field_normal(f, i, j, n);
+        for (int d = 0; d < b->n_dirs; ++d)
+            slice_gather(b, omega, d, i, j, n, acc);
+        const size_t p = 3 * ((size_t)j * (size_t)f->width + (size_t)i);
+        for (int c = 0; c < 3; ++c) {
+            const double rho = b->l->albedo * (b->l->albedo_map ? b->l->albedo_map[p + c] : 1.0);
+            b->cur[p + c] = (float)(rho / PI * b->dphi * acc[c]);
+        }
+    }
+}
+
+static int make_plan(const hfs_field *f, const hfs_quality *q, hfs_cpu_pyramid **pyr,
+                     hfs_horizon_plan **plan, hfs_error *err)
+{
+    const int n_levels = hfs_pyramid_level_count(f->width, f->height, q->k);
+    int rc = hfs_cpu_pyramid_create(f, q->k, hfs_pyramid_read_level(n_levels, q->k, q->offset, 0),
+                                    q->threads, pyr, err);
+    if (rc)
+        return rc;
+    hfs_swath sw;
+    hfs_swath_full(q->nphi_env, &sw);
+    double *phi = malloc((size_t)sw.n * sizeof *phi);
+    if (!phi)
+        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the bounces");
+    for (int d = 0; d < sw.n; ++d)
+        phi[d] = hfs_swath_phi(&sw, d);
+    rc = hfs_horizon_plan_create(*pyr, f->dx, f->zscale, q->offset, phi, sw.n, plan, err);
+    free(phi);
+    return rc;
+}
+
+int hfs_cpu_bounces(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                    int bounces, float *out, hfs_progress_fn progress, void *user,
+                    hfs_error *err)
+{
+    const size_t n = (size_t)f->width * (size_t)f->height * 3;
+    const int threads = q->threads > 0 ? q->threads : hfs_parallel_default_threads();
+    hfs_cpu_pyramid *pyr = NULL;
+    hfs_horizon_plan *plan = NULL;
+    float *prev = malloc(n * sizeof *prev), *cur = malloc(n * sizeof *cur);
+    bounce_ctx b = {.f = f, .l = l, .dphi = 2.0 * PI / q->nphi_env, .k = q->k,
+                    .refine = q->refine};
+    int rc = (!prev || !cur) ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for "
+                                        "the bounces")
+                             : make_plan(f, q, &pyr, &plan, err);
+    if (!rc) {
+        b.pyr = pyr, b.plan = plan, b.n_dirs = hfs_horizon_plan_dirs(plan);
+        b.n_levels = hfs_horizon_plan_levels(plan);
+        double lo, hi;
+        hfs_field_range(f, &lo, &hi);
+        b.tie = hfs_horizon_tie_slope(0.5 * hi - 0.5 * lo, f->zscale, f->dx);
+        b.omega = malloc((size_t)threads * (size_t)b.n_levels * sizeof *b.omega);
+        if (!b.omega)
+            rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the bounces");
+    }
+    if (!rc)
+        memcpy(prev, out, n * sizeof *prev);
+    for (int k = 1; k <= bounces && !rc; ++k) {
+        b.prev = prev, b.cur = cur;
+        hfs_parallel_rows(f->height, threads, bounce_row, &b, k == bounces ? progress : NULL,
+                          user);
+        for (size_t i = 0; i < n; ++i)
+            out[i] += cur[i];
+        float *t = prev;
+        prev = cur;
+        cur = t;
+    }
+    free(b.omega);
+    hfs_horizon_plan_destroy(plan);
+    hfs_cpu_pyramid_destroy(pyr);
+    free(prev);
+    free(cur);
+    return rc;
+}

@@ -1,0 +1,174 @@
+/*
+ * test_cpu_bounce.c — indirect light in the CPU reference (cpu_bounce.h):
+ *   flat      a plane casts no band: bounces = 2 is bounces = 0 bit for bit
+ *   wall      a floor beside a long wall of uniform exit radiance Lw (as
+ *             test_truth_bounce: the view factor to the wall, the bilinear
+ *             ramp subtending a vertical wall at its top edge, the finite
+ *             wall by Lambert's polygon formula): the slices' bands within
+ *             the bound below of rho Lw F, never above it
+ *   furnace   a V-groove, albedo 1, sky 1: every bounce >= 0 exactly (band
+ *             weights and radiances are >= 0, no order-4 ringing) and
+ *             direct + 3 bounces <= 1 + 1e-9
+ *   truth     cones 48^2, sky + sun, one bounce: the indirect part's mean
+ *             error against the truth's, relative to the truth's largest
+ *             indirect value, within the bound below
+ */
+#include "backends.h"
+#include "bounce_scenes.h"
+#include "cpu_bounce.h"
+#include "test_util.h"
+
+#include <math.h>
+
+#define PI 3.14159265358979323846
+
+typedef int (*hfs_backend_fn)(const hfs_field *, const hfs_lighting *, const hfs_quality *,
+                              hfs_image *, hfs_progress_fn, void *, hfs_error *);
+
+static void render(hfs_backend_fn fn, const hfs_field *f, hfs_lighting *l, int bounces,
+                   float *out);
+
+
+static void test_flat(void)
+{
+    const int w = 12, h = 9;
+    float *z = calloc((size_t)w * h, sizeof *z), *a = malloc(sizeof(float) * w * h * 3),
+          *b = malloc(sizeof(float) * w * h * 3);
+    const hfs_field f = {w, h, z, 1.0, 1.0};
+    hfs_lighting l = bounce_uniform_sky();
+    render(hfs_cpu_render, &f, &l, 0, a);
+    render(hfs_cpu_render, &f, &l, 2, b);
+    CHECK(!memcmp(a, b, sizeof(float) * w * h * 3));
+    printf("flat: no indirect light, bit for bit\n");
+    free(z), free(a), free(b);
+}
+
+
+/* Bound: the bands stop at the direct light's horizon (energy), which
+ * samples the distance at the scales refined about their max (k2 o8,
+ * refine 4: at D = 41 the wall's top lies between samples and is seen
+ * 2 degrees low), and the azimuth at 12 slices (at D = 3 the wall's
+ * elevation falls steeply near the azimuth along it).  Measured, always
+ * low: 7.2%, 4.7%, 1.8%, 8.0%, 9.5% of F at D = 3, 5, 9, 17, 41; bound
+ * 12%.  (Without the cap the bands reach 0.7-7%, but direct + bounces
+ * then exceed 1 by 3% in the furnace below.) */
+#define WALL_REL 0.12
+
+static void test_wall(void)
+{
+    const int w = 120, h = 401, X = 100;
+    const double hw = 20.0, lw = 2.0, rho = 0.75;
+    float *z, *lo;
+    bounce_wall(w, h, X, hw, lw, &z, &lo);
+    const hfs_field f = {w, h, z, 1.0, 1.0};
+    hfs_lighting l = bounce_uniform_sky();
+    l.albedo = rho;
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    float *direct = malloc(sizeof(float) * w * h * 3);
+    memcpy(direct, lo, sizeof(float) * w * h * 3);
+    hfs_error err = {""};
+    REQUIRE(hfs_cpu_bounces(&f, &l, &q, 1, lo, NULL, NULL, &err) == HFS_OK, "%s", err.msg);
+    const int jc = h / 2, foot[5] = {2, 4, 8, 16, 40};
+    double worst = 0.0;
+    for (int k = 0; k < 5; ++k) {
+        const int i = X - 1 - foot[k];
+        const double D = X - i;
+        const double F = bounce_wall_view_factor(i, jc, h, X, hw);
+        const size_t p = 3 * ((size_t)jc * w + i);
+        const double got = (lo[p] - direct[p]) / (rho * lw);
+        printf("wall: D %4.0f  F %.5f  cpu %.5f  (%+.2f%%)\n", D, F, got, 100 * (got / F - 1));
+        worst = fmax(worst, fabs(got / F - 1));
+        CHECK(got <= F * (1.0 + 1e-6)); /* capped at the direct horizon: never above */
+    }
+    CHECK(worst <= WALL_REL);
+    free(z), free(lo), free(direct);
+}
+
+static void test_furnace(void)
+{
+    const int w = 33, h = 48;
+    float *z = bounce_groove(w, h);
+    const hfs_field f = {w, h, z, 1.0, 1.0};
+    hfs_lighting l = bounce_uniform_sky();
+    float *lo[4];
+    for (int b = 0; b < 4; ++b) {
+        lo[b] = malloc(sizeof(float) * w * h * 3);
+        render(hfs_cpu_render, &f, &l, b, lo[b]);
+    }
+    double worst_total = 0.0, worst_neg = 0.0;
+    for (int p = 0; p < w * h * 3; ++p) {
+        for (int b = 1; b < 4; ++b)
+            worst_neg = fmin(worst_neg, (double)lo[b][p] - lo[b - 1][p]);
+        worst_total = fmax(worst_total, lo[3][p]);
+    }
+    CHECK(worst_neg >= 0.0 && worst_total <= 1.0 + 1e-9);
+    printf("furnace: every bounce >= 0 (min %.2e), direct + 3 bounces <= %.4f\n", worst_neg,
+           worst_total);
+    for (int b = 0; b < 4; ++b)
+        free(lo[b]);
+    free(z);
+}
+
+/* Bound: measured 1.8% here (2.2% on the benchmark cones at 128^2); bound
+ * 5% of the truth's largest indirect value (issue 16 asks 10% at the
+ * defaults). */
+#define TRUTH_REL 0.05
+
+static void test_truth(void)
+{
+    const int n = 48;
+    float *z = malloc((size_t)n * n * sizeof *z);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) { /* two cones */
+            const double r1 = hypot(i - 15.0, j - 18.0), r2 = hypot(i - 33.0, j - 28.0);
+            z[j * n + i] = (float)fmax(0.0, fmax(12.0 - r1, 9.0 - 0.8 * r2));
+        }
+    const hfs_field f = {n, n, z, 1.0, 1.0};
+    hfs_lighting l = bounce_uniform_sky();
+    l.n_key = 1;
+    l.key[0] = (hfs_key_light){336 * PI / 180, 15 * PI / 180, 2 * PI / 180, {300, 300, 300}, 0};
+    float *c[2], *t[2];
+    for (int b = 0; b < 2; ++b) {
+        c[b] = malloc(sizeof(float) * n * n * 3), t[b] = malloc(sizeof(float) * n * n * 3);
+        render(hfs_cpu_render, &f, &l, b, c[b]);
+        render(hfs_truth_render, &f, &l, b, t[b]);
+    }
+    double sum = 0.0, tmax = 0.0, tsum = 0.0;
+    for (int p = 0; p < n * n * 3; ++p) {
+        const double ci = c[1][p] - c[0][p], ti = t[1][p] - t[0][p];
+        sum += fabs(ci - ti);
+        tmax = fmax(tmax, ti);
+        tsum += ti;
+    }
+    const double rel = sum / (n * n * 3) / tmax;
+    printf("truth: one bounce on two cones: indirect mean %.4f, max %.4f; cpu error %.2f%% of "
+           "the max (bound %.0f%%)\n", tsum / (n * n * 3), tmax, 100 * rel, 100 * TRUTH_REL);
+    CHECK(tmax > 0.0 && rel <= TRUTH_REL);
+    for (int b = 0; b < 2; ++b)
+        free(c[b]), free(t[b]);
+    free(z);
+}
+
+static void render(hfs_backend_fn fn, const hfs_field *f, hfs_lighting *l, int bounces,
+                   float *out)
+{
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    l->bounces = bounces;
+    hfs_image img = {f->width, f->height, out};
+    hfs_error err = {""};
+    if (fn(f, l, &q, &img, NULL, NULL, &err) != HFS_OK) {
+        fprintf(stderr, "render: %s\n", err.msg);
+        exit(1);
+    }
+}
+
+int main(void)
+{
+    test_flat();
+    test_wall();
+    test_furnace();
+    test_truth();
+    return finish_checks("test_cpu_bounce");
+}

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Indirect light against the ground truth (issue 16): for bounces 0..3 on
+# the benchmark scenes (cones, the fractal at relief 0.25, the DEM window)
+# under the demo's sky + sun, the CPU reference against the truth with the
+# same bounces: the whole image's mean and p99 error (fractions of the
+# unshadowed maximum), the indirect part alone (image(B) - image(0))
+# against the truth's (mean error over its largest value), and the wall
+# time of each (this machine's cores).  Prints a Markdown table.
+# usage: tools/bench_bounce.sh [BUILD_DIR] [SIZE] [TRUTH_SAMPLES]   (defaults: build 128 256)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+# shellcheck source=tools/bench_lib.sh
+. tools/bench_lib.sh
+B=${1:-build}
+N=${2:-128}
+S=${3:-256}
+C=$B/bench-cache
+mkdir -p "$C"
+bench_scenes "$B/tools/hfgen" "$C" "$N"
+echo "| scene (${N}x${N}) | bounces | mean abs | p99 abs | indirect alone | cpu s | truth s |"
+echo "|---|---|---|---|---|---|---|"
+for sc in "${scenes[@]}"; do
+    IFS='|' read -r name hf extra <<<"$sc"
+    keys=()
+    read -r -a flags <<<"$extra"
+    for ((i = 0; i < ${#flags[@]}; i += 2)); do keys+=("${flags[i]#--}=${flags[i + 1]}"); done
+    "$B/tests/bench_bounce" "$name" "height=$hf" "${keys[@]}" env-map=data/courtyard.exr \
+        key=336,15,2,1500 "truth-samples=$S"
+done
