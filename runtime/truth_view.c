@@ -1,0 +1,105 @@
+/*
+ * truth_view.c — see truth_view.h.
+ */
+#include "truth_view.h"
+
+#include "field_geom.h"
+#include "parallel.h"
+#include "sh.h"
+#include "truth_raycast.h"
+
+#include <math.h>
+
+typedef struct view_ctx {
+    const hfs_field *f;       /* exaggerated copy's view */
+    const hfs_truth_grid *g;
+    const float *lit;
+    const hfs_camera_frame *fr;
+    int has_env;
+    double env[3][HFS_SH_N];
+    int w, h;
+    float *view;
+} view_ctx;
+
+/* The parameter range [t0, t1] in which the ray's xy lies inside the
+ * grid's rectangle [0, W-1] x [0, H-1] (grid units); 0 when it never does. */
+static int grid_span(const hfs_field *f, const double o[2], const double d[2], double *t0,
+                     double *t1)
+{
+    double lo = 0.0, hi = INFINITY;
+    const double lim[2] = {f->width - 1.0, f->height - 1.0};
+    for (int a = 0; a < 2; ++a) {
+        if (d[a] == 0.0) {
+            if (o[a] < 0.0 || o[a] > lim[a])
+                return 0;
+            continue;
+        }
+        double ta = (0.0 - o[a]) / d[a], tb = (lim[a] - o[a]) / d[a];
+        if (ta > tb) {
+            const double t = ta;
+            ta = tb, tb = t;
+        }
+        lo = fmax(lo, ta), hi = fmin(hi, tb);
+    }
+    *t0 = lo, *t1 = hi;
+    return lo <= hi;
+}
+
+static void shade_pixel(const view_ctx *v, int px, int py, float *rgb)
+{
+    const hfs_field *f = v->f;
+    double d[3];
+    hfs_camera_ray(v->fr, v->w, v->h, px, py, d);
+    /* The ray in grid units for xy, world for z and t. */
+    const double og[2] = {v->fr->eye[0] / f->dx, v->fr->eye[1] / f->dx};
+    const double dg[2] = {d[0] / f->dx, d[1] / f->dx};
+    double t0, t1, t;
+    if (grid_span(f, og, dg, &t0, &t1)) {
+        /* Start just inside the rectangle: the ray tests need an origin
+         * in the grid. */
+        const double ts = t0 + 1e-9 * (1.0 + t0);
+        const double o[3] = {fmin(fmax(og[0] + ts * dg[0], 0.0), f->width - 1.0),
+                             fmin(fmax(og[1] + ts * dg[1], 0.0), f->height - 1.0),
+                             v->fr->eye[2] + ts * d[2]};
+        if (ts <= t1 && hfs_truth_ray_first_hit(v->g, o, d, INFINITY, &t)) {
+            double lo[3];
+            hfs_rgb_bilinear(v->lit, f->width, f->height, o[0] + t * dg[0], o[1] + t * dg[1],
+                             lo);
+            for (int c = 0; c < 3; ++c)
+                rgb[c] = (float)lo[c];
+            return;
+        }
+    }
+    double y[HFS_SH_N];
+    hfs_sh_eval(d[0], d[1], d[2], y);
+    for (int c = 0; c < 3; ++c)
+        rgb[c] = v->has_env ? (float)hfs_sh_dot(y, v->env[c]) : 0.0f;
+}
+
+static void view_row(void *ctx, int py, int worker)
+{
+    (void)worker;
+    const view_ctx *v = ctx;
+    for (int px = 0; px < v->w; ++px)
+        shade_pixel(v, px, py, v->view + 3 * ((size_t)py * (size_t)v->w + (size_t)px));
+}
+
+int hfs_truth_view(const hfs_field *f, const float *lit, const hfs_lighting *l,
+                   const hfs_camera *cam, int w, int h, float *view, int threads,
+                   hfs_error *err)
+{
+    /* The view's terrain: the same heights, zscale times the exaggeration. */
+    const hfs_field fe = {f->width, f->height, f->z, f->dx, f->zscale * cam->exaggeration};
+    hfs_truth_grid g;
+    if (hfs_truth_grid_init(&g, &fe) != HFS_OK)
+        return hfs_fail(err, HFS_E_NOMEM, "truth view: out of memory for the height tree");
+    hfs_camera_frame fr;
+    hfs_camera_frame_make(cam, &fr);
+    view_ctx v = {.f = &fe, .g = &g, .lit = lit, .fr = &fr, .has_env = l->has_env, .w = w,
+                  .h = h, .view = view};
+    for (int c = 0; c < 3 && l->has_env; ++c)
+        hfs_sh_rotate_z(l->env_sh[c], l->env_rotate, v.env[c]);
+    hfs_parallel_rows(h, threads, view_row, &v, NULL, NULL);
+    hfs_truth_grid_free(&g);
+    return HFS_OK;
+}
