@@ -17,6 +17,7 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
+#define HFS_BOUNCE_MAX_REFINE 16 /* the refine key's range */
 
 typedef struct bounce_ctx {
     const hfs_field *f;
@@ -26,6 +27,7 @@ typedef struct bounce_ctx {
     int n_dirs, n_levels, k, refine;
     double dphi;
     double tie;           /* hfs_horizon_tie_slope, as the direct light's */
+    double step[HFS_BOUNCE_MAX_REFINE + 1]; /* 2^(q / ((refine + 1) k)): samples per scale */
     double *omega;        /* per worker: n_levels angles */
     const float *prev;    /* Lo_{b-1} */
     float *cur;           /* Lo_b */
@@ -47,10 +49,11 @@ static double cast(const bounce_ctx *b, double a, double nz, double top, double 
 }
 
 /* The sample at distance dist (texels) along (c, s) from receiver (i, j),
- * read from level `read` as the horizons read it: its elevation into *e
- * and its grid position; 0 when it lies off the grid. */
-static int sample(const bounce_ctx *b, int read, int i, int j, double c, double s, double dist,
-                  double *e, double *gx, double *gy)
+ * read from level `read` as the horizons read it (h0: the receiver's value
+ * there): its elevation into *e and its grid position; 0 when it lies off
+ * the grid. */
+static int sample(const bounce_ctx *b, int read, double h0, int i, int j, double c, double s,
+                  double dist, double *e, double *gx, double *gy)
 {
     const hfs_field *f = b->f;
     *gx = i + dist * c, *gy = j + dist * s;
@@ -58,8 +61,7 @@ static int sample(const bounce_ctx *b, int read, int i, int j, double c, double 
     if (*gx < -slack || *gy < -slack || *gx > f->width - 1.0 + slack ||
         *gy > f->height - 1.0 + slack)
         return 0;
-    const double dz = hfs_cpu_pyramid_sample(b->pyr, read, *gx, *gy) -
-                      hfs_cpu_pyramid_sample(b->pyr, read, i, j);
+    const double dz = hfs_cpu_pyramid_sample(b->pyr, read, *gx, *gy) - h0;
     *e = atan(dz * f->zscale / (dist * f->dx));
     return 1;
 }
@@ -96,13 +98,13 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
     if (m1 > -DBL_MAX)
         top = cast(b, a, n[2], top, fmin(atan(m1), cap), i + c * tc, j + s * tc, acc);
     const hfs_horizon_tap *taps = hfs_horizon_plan_taps(b->plan, d);
-    const int sub = b->refine + 1;
-    for (int sc = b->n_levels - 1; sc >= 0; --sc) {
+    /* Once the top reaches the cap nothing farther can cast a band. */
+    for (int sc = b->n_levels - 1; sc >= 0 && top < cap; --sc) {
         const double d0 = hfs_cpu_pyramid_spacing(b->pyr, sc);
-        for (int q = 0; q < sub; ++q) {
+        const double h0 = hfs_cpu_pyramid_sample(b->pyr, taps[sc].read, i, j);
+        for (int q = 0; q <= b->refine && top < cap; ++q) {
             double e, gx, gy;
-            const double dist = d0 * exp2((double)q / (sub * b->k));
-            if (sample(b, taps[sc].read, i, j, c, s, dist, &e, &gx, &gy))
+            if (sample(b, taps[sc].read, h0, i, j, c, s, d0 * b->step[q], &e, &gx, &gy))
                 top = cast(b, a, n[2], top, fmin(e, cap), gx, gy, acc);
         }
     }
@@ -156,7 +158,10 @@ int hfs_cpu_bounces(const hfs_field *f, const hfs_lighting *l, const hfs_quality
     hfs_horizon_plan *plan = NULL;
     float *prev = malloc(n * sizeof *prev), *cur = malloc(n * sizeof *cur);
     bounce_ctx b = {.f = f, .l = l, .dphi = 2.0 * PI / q->nphi_env, .k = q->k,
-                    .refine = q->refine};
+                    .refine = q->refine < HFS_BOUNCE_MAX_REFINE ? q->refine
+                                                                : HFS_BOUNCE_MAX_REFINE};
+    for (int k = 0; k <= b.refine; ++k)
+        b.step[k] = exp2((double)k / ((b.refine + 1) * b.k));
     int rc = (!prev || !cur) ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for "
                                         "the bounces")
                              : make_plan(f, q, &pyr, &plan, err);

@@ -34,13 +34,6 @@ typedef struct backend_ops {
     void (*frame_report)(const void *state, hfs_frame_report *out);
 } backend_ops;
 
-/* Indirect light is the truth's alone so far (issue 16). */
-static int no_bounces(const char *backend, const hfs_lighting *l, hfs_error *err)
-{
-    return hfs_fail(err, HFS_E_UNSUPPORTED, "bounces %d: backend %s has no indirect light yet "
-                    "(--backend cpu or truth computes it)", l->bounces, backend);
-}
-
 static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                       hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
 {
@@ -69,8 +62,9 @@ static void gles_destroy(void *state) { hfs_gles_destroy(state); }
 static int gles_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                        hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
 {
-    if (l->bounces > 0)
-        return no_bounces("gles", l, err);
+    if (l->bounces > 0) /* indirect light: the cpu and truth backends only, so far */
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "bounces %d: backend gles has no indirect "
+                        "light yet (--backend cpu or truth computes it)", l->bounces);
     const int rc = hfs_gles_render(state, f, l, q, out, err);
     if (!rc && progress)
         progress(user, 1.0); /* one GPU frame: no finer progress to report */

@@ -300,36 +300,8 @@ static inline int cell_of(double p, double dir, int ncell)
     return c < 0 ? 0 : (c > ncell - 1 ? ncell - 1 : c);
 }
 
-/* Exact test of the ray segment t in [ta, tb] against the bilinear patch of
- * cell (ci, cj).  With s = t - ta and the cell-local position (fx, fy) at ta,
- * g(s) = ray z - surface z = C + B s + A s^2; hit iff min over [0, tb-ta]
- * of g is <= 0 (end points and, for A > 0, the vertex). */
-static int cell_hit(const hfs_field *f, int ci, int cj, const double o[3],
-                    double u, double v, double w, double ta, double tb)
-{
-    const double z00 = hfs_field_z(f, ci, cj), z10 = hfs_field_z(f, ci + 1, cj);
-    const double z01 = hfs_field_z(f, ci, cj + 1), z11 = hfs_field_z(f, ci + 1, cj + 1);
-    const double ex = z10 - z00, ey = z01 - z00, exy = (z11 - z10) - (z01 - z00);
-    const double fx = (o[0] - ci) + ta * u, fy = (o[1] - cj) + ta * v;
-    const double c0 = (o[2] + ta * w) - (z00 + ex * fx + ey * fy + exy * fx * fy);
-    if (c0 <= 0.0)
-        return 1;
-    const double b = w - (ex * u + ey * v + exy * (fx * v + fy * u));
-    const double a = -exy * u * v;
-    const double len = tb - ta;
-    if (isinf(len))
-        return a < 0.0 || (a == 0.0 && b < 0.0);
-    if (!(len > 0.0))
-        return 0;
-    if (c0 + len * (b + len * a) <= 0.0)
-        return 1;
-    if (a > 0.0 && b < 0.0 && -b < 2.0 * a * len && c0 - b * b / (4.0 * a) <= 0.0)
-        return 1;
-    return 0;
-}
-
 /* The smallest s in [0, len] with c0 + b s + a s^2 <= 0, for a segment
- * cell_hit found hitting (so one exists up to rounding, which the
+ * cell_hit finds hitting (so one exists up to rounding, which the
  * fallbacks absorb: the vertex, else the end). */
 static double first_root(double c0, double b, double a, double len)
 {
@@ -354,17 +326,38 @@ static double first_root(double c0, double b, double a, double len)
     return best <= len ? best : len;
 }
 
-/* cell_hit's segment, its first hit as a ray parameter t. */
-static double cell_first_t(const hfs_field *f, int ci, int cj, const double o[3], double u,
-                           double v, double w, double ta, double tb)
+/* Exact test of the ray segment t in [ta, tb] against the bilinear patch of
+ * cell (ci, cj).  With s = t - ta and the cell-local position (fx, fy) at ta,
+ * g(s) = ray z - surface z = C + B s + A s^2; hit iff min over [0, tb-ta]
+ * of g is <= 0 (end points and, for A > 0, the vertex).  On a hit, *t_hit
+ * (when non-NULL) gets the first t where g <= 0 (first_root). */
+static int cell_hit(const hfs_field *f, int ci, int cj, const double o[3],
+                    double u, double v, double w, double ta, double tb, double *t_hit)
 {
     const double z00 = hfs_field_z(f, ci, cj), z10 = hfs_field_z(f, ci + 1, cj);
     const double z01 = hfs_field_z(f, ci, cj + 1), z11 = hfs_field_z(f, ci + 1, cj + 1);
     const double ex = z10 - z00, ey = z01 - z00, exy = (z11 - z10) - (z01 - z00);
     const double fx = (o[0] - ci) + ta * u, fy = (o[1] - cj) + ta * v;
     const double c0 = (o[2] + ta * w) - (z00 + ex * fx + ey * fy + exy * fx * fy);
+    if (c0 <= 0.0) {
+        if (t_hit)
+            *t_hit = ta;
+        return 1;
+    }
     const double b = w - (ex * u + ey * v + exy * (fx * v + fy * u));
-    return ta + first_root(c0, b, -exy * u * v, tb - ta);
+    const double a = -exy * u * v;
+    const double len = tb - ta;
+    int hit;
+    if (isinf(len))
+        hit = a < 0.0 || (a == 0.0 && b < 0.0);
+    else if (!(len > 0.0))
+        hit = 0;
+    else
+        hit = c0 + len * (b + len * a) <= 0.0 ||
+              (a > 0.0 && b < 0.0 && -b < 2.0 * a * len && c0 - b * b / (4.0 * a) <= 0.0);
+    if (hit && t_hit)
+        *t_hit = ta + first_root(c0, b, a, len);
+    return hit;
 }
 
 /* Walks the ray's cells in order; the first that hits holds the first hit
@@ -406,18 +399,13 @@ static int ray_walk(const hfs_truth_grid *g, const double o[3], const double d[3
                     --level;
                     continue;
                 }
-                if (cell_hit(f, ci, cj, o, u, v, w, t, tend)) {
-                    if (t_hit)
-                        *t_hit = cell_first_t(f, ci, cj, o, u, v, w, t, tend);
+                if (cell_hit(f, ci, cj, o, u, v, w, t, tend, t_hit))
                     return 1;
-                }
             } else if (level < top) {
                 ++level; /* skipped: climb (the node below is still addressed by ci, cj) */
                 /* the jump below uses this node's bounds x0..y1 */
             }
-        } else if (cell_hit(f, ci, cj, o, u, v, w, t, tend)) {
-            if (t_hit)
-                *t_hit = cell_first_t(f, ci, cj, o, u, v, w, t, tend);
+        } else if (cell_hit(f, ci, cj, o, u, v, w, t, tend, t_hit)) {
             return 1;
         }
 

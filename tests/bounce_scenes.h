@@ -11,6 +11,8 @@
  *                               at its top edge (x = X), of the grid's
  *                               length, by Lambert's polygon formula
  *   bounce_groove(...)          a V-groove along y, slope 1.5
+ *   bounce_furnace(...)         over images with 0..3 bounces: the most
+ *                               negative bounce and the largest total
  */
 #ifndef HFS_TEST_BOUNCE_SCENES_H
 #define HFS_TEST_BOUNCE_SCENES_H
@@ -79,6 +81,19 @@ static inline float *bounce_groove(int w, int h)
         for (int i = 0; i < w; ++i)
             z[j * w + i] = (float)(1.5 * fabs(i - 0.5 * (w - 1)));
     return z;
+}
+
+/* lo[b] (n floats each) rendered with b = 0..3 bounces: the smallest
+ * lo[b] - lo[b-1] (a bounce's own light, >= 0 when right) into *neg and
+ * the largest lo[3] into *total. */
+static inline void bounce_furnace(float *const lo[4], size_t n, double *neg, double *total)
+{
+    *neg = 0.0, *total = 0.0;
+    for (size_t p = 0; p < n; ++p) {
+        for (int b = 1; b < 4; ++b)
+            *neg = fmin(*neg, (double)lo[b][p] - lo[b - 1][p]);
+        *total = fmax(*total, lo[3][p]);
+    }
 }
 
 #endif /* HFS_TEST_BOUNCE_SCENES_H */

@@ -96,12 +96,8 @@ static void test_furnace(void)
         lo[b] = malloc(sizeof(float) * w * h * 3);
         render(hfs_cpu_render, &f, &l, b, lo[b]);
     }
-    double worst_total = 0.0, worst_neg = 0.0;
-    for (int p = 0; p < w * h * 3; ++p) {
-        for (int b = 1; b < 4; ++b)
-            worst_neg = fmin(worst_neg, (double)lo[b][p] - lo[b - 1][p]);
-        worst_total = fmax(worst_total, lo[3][p]);
-    }
+    double worst_total, worst_neg;
+    bounce_furnace(lo, (size_t)w * h * 3, &worst_neg, &worst_total);
     CHECK(worst_neg >= 0.0 && worst_total <= 1.0 + 1e-9);
     printf("furnace: every bounce >= 0 (min %.2e), direct + 3 bounces <= %.4f\n", worst_neg,
            worst_total);
