@@ -6,6 +6,7 @@
 #include "cpu_horizon.h"
 #include "cpu_pyramid.h"
 #include "field_geom.h"
+#include "lights.h"
 #include "parallel.h"
 #include "pyramid_layout.h"
 #include "slice_light.h"
@@ -27,6 +28,7 @@ typedef struct bounce_ctx {
     int n_dirs, n_levels, k, refine;
     double dphi;
     double tie;           /* hfs_horizon_tie_slope, as the direct light's */
+    int capped;           /* bands stop at the direct horizon (hfs_bounce_capped) */
     double step[HFS_BOUNCE_MAX_REFINE + 1]; /* 2^(q / ((refine + 1) k)): samples per scale */
     double *omega;        /* per worker: n_levels angles */
     const float *prev;    /* Lo_{b-1} */
@@ -92,7 +94,7 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
     const double a = n[0] * c + n[1] * s;
     double top = atan2(-a, n[2]); /* the tangent plane */
     const double m1 = hfs_field_first_cell_slope(b->f, i, j, c, s);
-    const double cap = direct_horizon(b, omega, d, i, j, n, c, s, m1);
+    const double cap = b->capped ? direct_horizon(b, omega, d, i, j, n, c, s, m1) : 0.5 * PI;
     /* The receiver's own cell; its band takes the far edge's radiance. */
     const double tc = 1.0 / fmax(fabs(c), fabs(s));
     if (m1 > -DBL_MAX)
@@ -158,6 +160,7 @@ int hfs_cpu_bounces(const hfs_field *f, const hfs_lighting *l, const hfs_quality
     hfs_horizon_plan *plan = NULL;
     float *prev = malloc(n * sizeof *prev), *cur = malloc(n * sizeof *cur);
     bounce_ctx b = {.f = f, .l = l, .dphi = 2.0 * PI / q->nphi_env, .k = q->k,
+                    .capped = hfs_bounce_capped(l, q),
                     .refine = q->refine < HFS_BOUNCE_MAX_REFINE ? q->refine
                                                                 : HFS_BOUNCE_MAX_REFINE};
     for (int k = 0; k <= b.refine; ++k)

@@ -17,11 +17,15 @@
  * resolution image (every scale within 2^offset texels reads the heights
  * there too; farther scales read prefiltered heights, the radiance stays a
  * point sample: the approximation for fields above 2^offset + 1).
- * The bands stop at the slice's horizon as the direct light computes it
- * (refined scales and own cell): what a receiver gathers and the sky it
- * sees never overlap, so with albedo <= 1 direct + bounces never exceed
- * the unshadowed maximum (without the cap, 3% over in a white furnace);
- * every band weight and radiance is >= 0, so no bounce is negative.
+ * Under an environment on the exact-slice path the bands stop at the
+ * slice's horizon as the direct light computes it (refined scales and own
+ * cell; lights.h hfs_bounce_capped): what a receiver gathers and the sky it sees
+ * never overlap, so with albedo <= 1 direct + bounces never exceed the
+ * unshadowed maximum (without the cap, 3% over in a white furnace).
+ * Without an environment there is no sky to overlap, and on the seeds'
+ * paths the GLES backend has no per-direction horizon to cap with: there
+ * the bands run to the walk's own top (everything the walk sees).
+ * Every band weight and radiance is >= 0, so no bounce is negative.
  * Light leaving the field brings nothing.
  */
 #ifndef HFS_CPU_BOUNCE_H

@@ -498,11 +498,7 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     int rc = HFS_OK;
 
     /* Which lights contribute. */
-    int has_env = 0;
-    if (l->has_env)
-        for (int ch = 0; ch < 3; ++ch)
-            for (int k = 0; k < HFS_SH_COEFFS; ++k)
-                has_env |= l->env_sh[ch][k] != 0.0;
+    const int has_env = hfs_env_contributes(l);
     int n_key = 0;
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i)
         n_key += hfs_key_light_contributes(&l->key[i], l->albedo);

@@ -12,6 +12,21 @@ int hfs_local_light_contributes(const hfs_local_light *l)
     return l->radiance[0] > 0.0f || l->radiance[1] > 0.0f || l->radiance[2] > 0.0f;
 }
 
+int hfs_env_contributes(const hfs_lighting *l)
+{
+    int on = 0;
+    if (l->has_env)
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < HFS_SH_COEFFS; ++k)
+                on |= l->env_sh[c][k] != 0.0;
+    return on;
+}
+
+int hfs_bounce_capped(const hfs_lighting *l, const hfs_quality *q)
+{
+    return hfs_env_contributes(l) && q->visibility == HFS_VIS_SLICE;
+}
+
 double hfs_key_vis_alpha(double alpha)
 {
     return alpha > HFS_MIN_VIS_ALPHA ? alpha : HFS_MIN_VIS_ALPHA;

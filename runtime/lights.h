@@ -21,6 +21,16 @@ double hfs_cap_irradiance(double cos_beta, double alpha);
  * their output is 0 in any case. */
 int hfs_key_light_contributes(const hfs_key_light *k, double albedo);
 
+/* The environment contributes iff it is on and one of its SH coefficients
+ * is not zero (every backend). */
+int hfs_env_contributes(const hfs_lighting *l);
+
+/* Whether indirect bounces stop at the direct light's horizon in each
+ * slice (cpu_bounce.h): under an environment that contributes, on the
+ * exact-slice path, where the GLES grid keeps that horizon per direction.
+ * Every backend that gathers bounces follows this. */
+int hfs_bounce_capped(const hfs_lighting *l, const hfs_quality *q);
+
 /* A local light costs something iff it is enabled, has a positive radiance
  * channel and a positive radius (a point has zero solid angle: 0, as the
  * truth).  Every backend skips exactly the same lights. */

@@ -62,9 +62,6 @@ static void gles_destroy(void *state) { hfs_gles_destroy(state); }
 static int gles_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                        hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
 {
-    if (l->bounces > 0) /* indirect light: the cpu and truth backends only, so far */
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "bounces %d: backend gles has no indirect "
-                        "light yet (--backend cpu or truth computes it)", l->bounces);
     const int rc = hfs_gles_render(state, f, l, q, out, err);
     if (!rc && progress)
         progress(user, 1.0); /* one GPU frame: no finer progress to report */

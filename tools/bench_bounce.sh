@@ -6,7 +6,8 @@
 # unshadowed maximum), the indirect part alone (image(B) - image(0))
 # against the truth's (mean error over its largest value), and the wall
 # time of each (this machine's cores).  Prints a Markdown table.
-# usage: tools/bench_bounce.sh [BUILD_DIR] [SIZE] [TRUTH_SAMPLES]   (defaults: build 128 256)
+# usage: tools/bench_bounce.sh [BUILD_DIR] [SIZE] [TRUTH_SAMPLES] [BACKENDS] [MAX_BOUNCES]
+#        (defaults: build 128 256 cpu 3; BACKENDS e.g. cpu,gles: each against the same truth)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=tools/bench_lib.sh
@@ -14,16 +15,18 @@ cd "$(dirname "$0")/.."
 B=${1:-build}
 N=${2:-128}
 S=${3:-256}
+BE=${4:-cpu}
+MB=${5:-3}
 C=$B/bench-cache
 mkdir -p "$C"
 bench_scenes "$B/tools/hfgen" "$C" "$N"
-echo "| scene (${N}x${N}) | bounces | mean abs | p99 abs | indirect alone | cpu s | truth s |"
-echo "|---|---|---|---|---|---|---|"
+echo "| scene (${N}x${N}) | backend | bounces | mean abs | p99 abs | indirect alone | backend s | truth s |"
+echo "|---|---|---|---|---|---|---|---|"
 for sc in "${scenes[@]}"; do
     IFS='|' read -r name hf extra <<<"$sc"
     keys=()
     read -r -a flags <<<"$extra"
     for ((i = 0; i < ${#flags[@]}; i += 2)); do keys+=("${flags[i]#--}=${flags[i + 1]}"); done
-    "$B/tests/bench_bounce" "$name" "height=$hf" "${keys[@]}" env-map=data/courtyard.exr \
+    "$B/tests/bench_bounce" "$name" "backends=$BE" "max-bounces=$MB" "height=$hf" "${keys[@]}" env-map=data/courtyard.exr \
         key=336,15,2,1500 "truth-samples=$S"
 done

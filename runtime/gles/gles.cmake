@@ -132,6 +132,8 @@ add_library(hfs_gles STATIC
   ${CMAKE_CURRENT_LIST_DIR}/pass_env_transfer.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_key_visibility.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_shade.c
+  ${CMAKE_CURRENT_LIST_DIR}/pass_bounce.c
+  ${CMAKE_CURRENT_LIST_DIR}/bounce_targets.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_readback.c
   ${CMAKE_CURRENT_LIST_DIR}/gles_frame.c
   ${CMAKE_CURRENT_LIST_DIR}/gles_backend.c

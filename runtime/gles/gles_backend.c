@@ -13,6 +13,7 @@
 
 #include "gl_util.h"
 #include "key_setup.h"
+#include "lights.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -97,6 +98,7 @@ void hfs_gles_destroy(hfs_gles *g)
     }
     hfs_gles_wedge_textures_free(&g->wedge, gl);
     hfs_gles_albedo_texture_free(&g->albedo, gl);
+    hfs_gles_bounce_targets_free(&g->bounce, gl);
     hfs_visibility_destroy(g->env_vis);
     hfs_slice_table_free(&g->env_slices);
     hfs_gl_context_destroy(g->ctx);
@@ -155,10 +157,7 @@ void hfs_gles_get_stats(const hfs_gles *g, hfs_gles_stats *s)
 /* The frame's lights: those that contribute, exactly as cpu_render.c. */
 static void frame_lights(const hfs_lighting *l, const hfs_quality *q, hfs_gles_frame *fr)
 {
-    if (l->has_env)
-        for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < HFS_SH_COEFFS; ++k)
-                fr->has_env |= l->env_sh[c][k] != 0.0;
+    fr->has_env = hfs_env_contributes(l);
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i) {
         if (!hfs_key_light_contributes(&l->key[i], l->albedo))
             continue;
@@ -176,6 +175,8 @@ static void frame_lights(const hfs_lighting *l, const hfs_quality *q, hfs_gles_f
         if (hfs_local_light_contributes(&l->local[i]))
             fr->local[fr->n_local++] = l->local[i];
     fr->rho_pi = l->albedo / PI;
+    fr->bounces = l->bounces;
+    fr->capped = hfs_bounce_capped(l, q);
     fr->albedo = l->albedo_map;
     if (fr->has_env)
         hfs_env_rotated(l, fr->l_env);
@@ -194,7 +195,7 @@ static void report_timings(hfs_gles *g, double t_start)
     hfs_gles_timing_report(&g->timing, t);
     t->texture_bytes = hfs_gles_resources_bytes(&g->r, &g->caps) + g->wedge.bytes +
                        g->env_swath_tex.bytes + g->key_swath_tex.bytes + g->keys_tex.bytes +
-                       g->local_tex.bytes + g->albedo.bytes;
+                       g->local_tex.bytes + g->albedo.bytes + g->bounce.bytes;
     snprintf(t->method, sizeof t->method, "%s",
              g->timing.use_queries ? "timer-query" : "finish-clock");
     snprintf(t->device, sizeof t->device, "%s (%s)", hfs_gl_context_describe(g->ctx),

@@ -20,6 +20,7 @@
 #include "albedo_texture.h"
 #include "backends.h"
 #include "block_texture.h"
+#include "bounce_targets.h"
 #include "gl_caps.h"
 #include "gl_context.h"
 #include "lights.h"
@@ -34,7 +35,7 @@
 /* Uniform buffers (one per block content; the key swaths and records are
  * two buffers, bound by range). */
 enum { HFS_UBO_SCALES, HFS_UBO_ENV_SWATH, HFS_UBO_KEY_SWATHS, HFS_UBO_SHADE, HFS_UBO_KEYS,
-       HFS_UBO_LOCAL, HFS_UBO_COUNT };
+       HFS_UBO_LOCAL, HFS_UBO_BOUNCE, HFS_UBO_COUNT };
 
 /* One key light of the frame. */
 typedef struct hfs_gles_frame_key {
@@ -68,6 +69,8 @@ struct hfs_gles_frame {
     hfs_local_light local[HFS_MAX_LOCAL_LIGHTS];
     int local_open[HFS_MAX_LOCAL_LIGHTS]; /* beyond the shadow range: ratio 1 */
     double out_scale;                     /* power of two (pass_shade.c) */
+    int bounces;                          /* indirect bounces (pass_bounce.c) */
+    int capped;                           /* their bands stop at the grid's horizons */
     /* Uniform data too large for the profile's blocks, carried by textures
      * instead (block_texture.h): decided by the passes' layout hooks. */
     int env_swath_tex, key_swath_tex, keys_tex, local_tex;
@@ -87,6 +90,7 @@ struct hfs_gles {
     hfs_gles_resources r;
     hfs_gles_wedge_textures wedge;
     hfs_gles_albedo_texture albedo;       /* the lighting's albedo map, if any */
+    hfs_gles_bounce_targets bounce;       /* the bounce pass's textures, once used */
     hfs_gles_block_texture env_swath_tex, key_swath_tex, keys_tex, local_tex;
 
     /* Terrain cache: what the terrain pass computed from. */
@@ -114,6 +118,11 @@ struct hfs_gles {
     char *scratch;
     size_t scratch_cap;
 };
+
+/* The frame's lit result as textures (hi, lo; RGB times fr->out_scale):
+ * the shading pass's output, or direct + indirect when the frame has
+ * bounces.  What the read-back and any later pass read. */
+void hfs_gles_lit_targets(const hfs_gles *g, const hfs_gles_frame *fr, GLuint tex[2]);
 
 /* Scratch memory of at least `bytes`, kept between frames (NULL: none). */
 void *hfs_gles_scratch(hfs_gles *g, size_t bytes);

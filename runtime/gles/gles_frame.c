@@ -23,6 +23,12 @@ void *hfs_gles_scratch(hfs_gles *g, size_t bytes)
     return g->scratch;
 }
 
+void hfs_gles_lit_targets(const hfs_gles *g, const hfs_gles_frame *fr, GLuint tex[2])
+{
+    const GLuint *t = fr->bounces > 0 ? g->bounce.fin : g->r.out;
+    tex[0] = t[0], tex[1] = t[1];
+}
+
 void hfs_gles_stage_begin(hfs_gles *g, hfs_gles_pass_id p, int stage)
 {
     hfs_gles_timing_begin(&g->timing, &g->gl, g->stage_slot[p] + stage);
@@ -148,6 +154,10 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
         s->key[i].alpha = k->alpha;
         memcpy(s->key[i].le, k->le, sizeof k->le);
     }
+    s->bounces = fr->bounces;
+    s->bounce_dirs = fr->bounces > 0 ? q->nphi_env : 0;
+    s->refine = fr->bounces > 0 ? q->refine : 0;
+    s->capped = fr->bounces > 0 && fr->capped;
     s->n_local = fr->n_local;
     s->nphi_local = q->nphi_local;
     s->local_full = q->local_full_swath;

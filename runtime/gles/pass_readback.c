@@ -1,5 +1,5 @@
 /*
- * pass_readback.c — the output targets (hi, lo) read back, summed in
+ * pass_readback.c — the lit targets (hi, lo: hfs_gles_lit_targets) read back, summed in
  * double, the output scale divided out (pass_shade.c), into the caller's
  * image; the image is also kept, handed out again while nothing changes.
  */
@@ -21,11 +21,12 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     if (!px)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the readback");
     float *lo = px + npx * 4;
+    /* The lit result (hfs_gles_lit_targets): hi, then lo alone. */
+    const GLuint hi_fbo = fr->bounces > 0 ? g->bounce.fin_fbo : g->r.out_fbo;
+    const GLuint lo_fbo = fr->bounces > 0 ? g->bounce.fin_lo_fbo : g->r.out_lo_fbo;
     int rc;
-    if ((rc = hfs_gl_read_rgba(gl, g->r.out_fbo, 0, 0, L->w, L->h, HFS_GL_READ_AUTO, px, NULL,
-                               err)) ||
-        (rc = hfs_gl_read_rgba(gl, g->r.out_lo_fbo, 0, 0, L->w, L->h, HFS_GL_READ_AUTO, lo, NULL,
-                               err)))
+    if ((rc = hfs_gl_read_rgba(gl, hi_fbo, 0, 0, L->w, L->h, HFS_GL_READ_AUTO, px, NULL, err)) ||
+        (rc = hfs_gl_read_rgba(gl, lo_fbo, 0, 0, L->w, L->h, HFS_GL_READ_AUTO, lo, NULL, err)))
         return rc;
     const double inv = 1.0 / fr->out_scale;
     float *rgb = fr->out->rgb;
@@ -49,7 +50,8 @@ const hfs_gles_pass hfs_pass_readback = {
     .id = HFS_PASS_READBACK,
     .plan_name = "readback",
     .scope = HFS_SCOPE_FRAME,
-    .reads = {"output targets"},
+    /* And the bounced targets when the frame has bounces (plan.c). */
+    .reads = {"output targets", "bounce settings"},
     .writes = {"image"},
     .stages = {"readback"},
     .run = run,

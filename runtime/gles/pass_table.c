@@ -12,6 +12,7 @@ const hfs_gles_pass *const hfs_gles_pass_table[HFS_PASS_COUNT] = {
     [HFS_PASS_ENV_TRANSFER] = &hfs_pass_env_transfer,
     [HFS_PASS_KEY_VISIBILITY] = &hfs_pass_key_visibility,
     [HFS_PASS_SHADE] = &hfs_pass_shade,
+    [HFS_PASS_BOUNCE] = &hfs_pass_bounce,
     [HFS_PASS_READBACK] = &hfs_pass_readback,
 };
 

@@ -34,6 +34,7 @@ static void declare_inputs(hfs_gles_plan *gp)
     }
     gp->in_local_rad = hfs_plan_input(p, "local radiance");
     gp->in_light_set = hfs_plan_input(p, "light set");
+    gp->in_bounce = hfs_plan_input(p, "bounce settings");
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         snprintf(name, sizeof name, "key %d swath", i);
         gp->in_key_geom[i] = hfs_plan_input(p, name);
@@ -97,8 +98,9 @@ int hfs_gles_plan_init(hfs_gles_plan *gp, hfs_error *err)
     gp->pr_transfer = node_find(p, "env transfer", 0);
     gp->pr_targets = node_find(p, "output targets", 0);
     gp->pr_image = node_find(p, "image", 0);
+    gp->pr_bounced = node_find(p, "bounced targets", 0);
     int ok = gp->pr_pyramid >= 0 && gp->pr_env >= 0 && gp->pr_transfer >= 0 &&
-             gp->pr_targets >= 0 && gp->pr_image >= 0;
+             gp->pr_targets >= 0 && gp->pr_image >= 0 && gp->pr_bounced >= 0;
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         ok &= (gp->pr_key[i] = node_find(p, "key %d horizons", i)) >= 0;
         ok &= (gp->pr_kfactor[i] = node_find(p, "key %d factor", i)) >= 0;
@@ -172,6 +174,33 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
     }
     if (rad)
         hfs_plan_change(p, gp->in_local_rad, "local radiance changed");
+    if (a->bounces != b->bounces || a->bounce_dirs != b->bounce_dirs || a->refine != b->refine ||
+        a->capped != b->capped)
+        hfs_plan_change(p, gp->in_bounce, "bounce settings changed");
+}
+
+/* The bounce pass reads the grid's horizons when they cap its bands, and
+ * the read-back the bounced targets when the frame has bounces. */
+static void bounce_reads(hfs_gles_plan *gp, const hfs_gles_frame_sig *now)
+{
+    hfs_plan *p = &gp->p;
+    int reads[8], n = 0;
+    reads[n++] = gp->pr_targets;
+    reads[n++] = gp->pr_pyramid;
+    reads[n++] = gp->in_grid;
+    reads[n++] = gp->in_albedo;
+    reads[n++] = gp->in_bounce;
+    if (now->capped)
+        reads[n++] = gp->pr_env;
+    reads[n] = -1;
+    hfs_plan_pass_reads(p, gp->pass[HFS_PASS_BOUNCE][0], reads);
+    n = 0;
+    reads[n++] = gp->pr_targets;
+    reads[n++] = gp->in_bounce;
+    if (now->bounces > 0)
+        reads[n++] = gp->pr_bounced;
+    reads[n] = -1;
+    hfs_plan_pass_reads(p, gp->pass[HFS_PASS_READBACK][0], reads);
 }
 
 int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const char *terrain_why)
@@ -207,6 +236,7 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
     }
     reads[n] = -1;
     hfs_plan_pass_reads(p, gp->pass[HFS_PASS_SHADE][0], reads);
+    bounce_reads(gp, now);
 
     hfs_plan_set need = {{0}};
     hfs_plan_set_add(&need, gp->pr_image);

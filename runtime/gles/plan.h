@@ -13,7 +13,8 @@
  *            window), key i radiance, local settings (nphi_local, swath
  *            mode, path), local i geometry (centre, radius, and whether the
  *            terrain can shadow it at all: lights.h hfs_local_light_open),
- *            local radiance
+ *            local radiance, bounce settings (bounces, their directions and
+ *            samples, whether the grid's horizons cap them)
  *   passes   terrain -> env -> key i -> local i -> transfer -> key i factor
  *            -> shade -> readback
  *            terrain  reads terrain                 writes pyramid
@@ -29,7 +30,11 @@
  *                     factor + key i radiance, local i ratios (of the lights
  *                     the terrain can shadow) + local radiance; albedo
  *                                                   writes the output targets
- *            readback reads the output targets      writes the image
+ *            bounce   reads the output targets, pyramid, grid, albedo, bounce
+ *                     settings (and env visibility when the grid's horizons
+ *                     cap the bands)        writes the bounced targets
+ *            readback reads the output targets, bounce settings (and the
+ *                     bounced targets with bounces)   writes the image
  * A key light's horizons depend only on its swath (the sample directions):
  * moved inside it, the light costs its factor pass and the shading; the
  * environment's transfer vectors and the key factors do not depend on
@@ -63,6 +68,7 @@ typedef struct hfs_gles_frame_sig {
         int hz_layer;
         double dir[3], alpha, le[3];
     } key[HFS_GLES_PLAN_KEYS];
+    int bounces, bounce_dirs, refine, capped; /* the bounce pass's settings */
     int n_local, nphi_local, local_full;
     struct {
         double pos[3], radius;
@@ -80,9 +86,10 @@ typedef struct hfs_gles_plan {
     int in_terrain, in_grid, in_env_set, in_env_light, in_albedo, in_local_set, in_local_rad;
     int in_local_geom[HFS_MAX_LOCAL_LIGHTS];
     int in_light_set;             /* which light kinds / how many lights */
+    int in_bounce;                /* bounce settings */
     int in_key_geom[HFS_GLES_PLAN_KEYS], in_key_dir[HFS_GLES_PLAN_KEYS];
     int in_key_rad[HFS_GLES_PLAN_KEYS];
-    int pr_pyramid, pr_env, pr_transfer, pr_targets, pr_image;
+    int pr_pyramid, pr_env, pr_transfer, pr_targets, pr_image, pr_bounced;
     int pr_local[HFS_MAX_LOCAL_LIGHTS];
     int pr_key[HFS_GLES_PLAN_KEYS], pr_kfactor[HFS_GLES_PLAN_KEYS];
     /* frame_plan pass id of each (pass, instance); -1 past the pass's

@@ -31,7 +31,8 @@ static const program_row rows[HFS_PROG_COUNT] = {
 
 static const char *const block_names[HFS_BLOCK_COUNT] = {
     [HFS_BLOCK_SCALES] = "HfsScales", [HFS_BLOCK_SWATH] = "HfsSwath",
-    [HFS_BLOCK_SHADE] = "HfsShade", [HFS_BLOCK_KEYS] = "HfsKeys", [HFS_BLOCK_LOCAL] = "HfsLocal"};
+    [HFS_BLOCK_SHADE] = "HfsShade", [HFS_BLOCK_KEYS] = "HfsKeys", [HFS_BLOCK_LOCAL] = "HfsLocal",
+    [HFS_BLOCK_BOUNCE] = "HfsBounce"};
 
 const char *hfs_gles_program_shader(hfs_gles_program_id id)
 {

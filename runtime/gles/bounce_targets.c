@@ -1,0 +1,49 @@
+/*
+ * bounce_targets.c — see bounce_targets.h.
+ */
+#include "bounce_targets.h"
+
+#include "gl_util.h"
+#include "resources.h"
+
+void hfs_gles_bounce_targets_free(hfs_gles_bounce_targets *t, const hfs_gl *gl)
+{
+    if (t->rad)
+        ++t->gen;
+    const GLuint fbos[4] = {t->rad_fbo, t->e_fbo, t->fin_fbo, t->fin_lo_fbo};
+    for (int i = 0; i < 4; ++i)
+        if (fbos[i])
+            gl->DeleteFramebuffers(1, &fbos[i]);
+    t->rad_fbo = t->e_fbo = t->fin_fbo = t->fin_lo_fbo = 0;
+    hfs_gles_tex_delete(gl, &t->rad);
+    hfs_gles_tex_delete(gl, &t->e);
+    hfs_gles_tex_delete(gl, &t->fin[0]);
+    hfs_gles_tex_delete(gl, &t->fin[1]);
+    t->w = t->h = t->vw = t->vh = 0;
+    t->bytes = 0;
+}
+
+int hfs_gles_bounce_targets_ensure(hfs_gles_bounce_targets *t, const hfs_gl *gl,
+                                   const hfs_gl_caps *c, const hfs_gles_layout *L,
+                                   hfs_error *err)
+{
+    if (t->rad && t->w == L->w && t->h == L->h && t->vw == L->vw && t->vh == L->vh &&
+        t->fp32 == c->fp32)
+        return HFS_OK;
+    hfs_gles_bounce_targets_free(t, gl);
+    t->w = L->w, t->h = L->h, t->vw = L->vw, t->vh = L->vh, t->fp32 = c->fp32;
+    t->rad = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->w, L->h, 1, 1);
+    t->e = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh,
+                            HFS_GLES_MAX_BOUNCES, 1);
+    t->fin[0] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->w, L->h, 1, 0);
+    t->fin[1] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->w, L->h, 1, 0);
+    t->bytes = (size_t)3 * L->w * L->h * c->bytes_rgba +
+               (size_t)HFS_GLES_MAX_BOUNCES * L->vw * L->vh * c->bytes_rgba;
+    gl->GenFramebuffers(1, &t->e_fbo);
+    int rc;
+    if ((rc = hfs_gles_fbo_new(gl, &t->rad_fbo, 1, &t->rad, NULL, "bounce radiance", err)) ||
+        (rc = hfs_gles_fbo_new(gl, &t->fin_fbo, 2, t->fin, NULL, "bounce output", err)) ||
+        (rc = hfs_gles_fbo_new(gl, &t->fin_lo_fbo, 1, &t->fin[1], NULL, "bounce output", err)))
+        return rc;
+    return hfs_gl_check(gl, "backend gles: allocating the bounce targets", err);
+}

@@ -1,0 +1,40 @@
+/*
+ * bounce_targets.h — the textures of the indirect-light pass
+ * (pass_bounce.c), allocated on the first frame with bounces and kept
+ * while the sizes and precision hold; none exist for a scene without
+ * bounces:
+ *   rad      full resolution, RGBA, LINEAR: the exit radiance the next
+ *            bounce gathers (Lo_{b-1}, times the frame's output scale);
+ *   e        the visibility grid, 3 layers, LINEAR: each bounce's gathered
+ *            irradiance over pi, E_b (Lo_b = rho(x) E_b at each texel);
+ *   fin      full resolution hi + lo pair: direct + indirect, what the
+ *            read-back (and any later pass) takes instead of the shading
+ *            pass's output.
+ */
+#ifndef HFS_GLES_BOUNCE_TARGETS_H
+#define HFS_GLES_BOUNCE_TARGETS_H
+
+#include "gl_api.h"
+#include "gl_caps.h"
+#include "hfshade.h"
+#include "layout.h"
+
+#define HFS_GLES_MAX_BOUNCES 3
+
+typedef struct hfs_gles_bounce_targets {
+    GLuint rad, rad_fbo;
+    GLuint e, e_fbo;            /* e_fbo: one layer attached at a time */
+    GLuint fin[2], fin_fbo;     /* hi, lo drawn together */
+    GLuint fin_lo_fbo;          /* lo alone, for the read-back */
+    int w, h, vw, vh, fp32;
+    unsigned gen;               /* bumped when reallocated (contents lost) */
+    size_t bytes;
+} hfs_gles_bounce_targets;
+
+/* Fits t to layout L at the caps' precision (a no-op while they hold). */
+int hfs_gles_bounce_targets_ensure(hfs_gles_bounce_targets *t, const hfs_gl *gl,
+                                   const hfs_gl_caps *c, const hfs_gles_layout *L,
+                                   hfs_error *err);
+void hfs_gles_bounce_targets_free(hfs_gles_bounce_targets *t, const hfs_gl *gl);
+
+#endif /* HFS_GLES_BOUNCE_TARGETS_H */

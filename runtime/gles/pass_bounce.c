@@ -1,0 +1,154 @@
+/*
+ * pass_bounce.c — indirect diffuse bounces on the GLES path (issue 16;
+ * the CPU reference's walk, cpu_bounce.h; DESIGN.md "Indirect light"):
+ * per bounce b, the radiance it gathers (the shading pass's output, or
+ * rho E_{b-1}) into a full-resolution texture (bounce_light.frag), then
+ * the walk on the visibility grid into E_b (bounce_gather.frag); last,
+ * direct + rho sum E_b into the frame's final targets, which the
+ * read-back takes (hfs_gles_lit_targets).  Each bounce's E stays on the
+ * grid, interpolated at each texel like the local lights' ratios, and
+ * multiplied by the texel's own albedo.
+ *
+ * A bounce depends on the radiance of every light, so the pass reruns
+ * whenever the shading does, and when its own settings change (plan.h
+ * "bounce settings"); its textures exist only once a frame has bounces
+ * (bounce_targets.h).
+ */
+#include "gles_backend.h"
+
+#include "gl_util.h"
+#include "lights.h"
+
+#include <math.h>
+
+#define PI 3.14159265358979323846
+
+static int present(const hfs_gles_frame *fr)
+{
+    return fr->bounces > 0;
+}
+
+static size_t block_bytes(const hfs_gles_frame *fr)
+{
+    return sizeof(hfs_gles_bounce_head) + (size_t)fr->q->nphi_env * 16;
+}
+
+static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+{
+    int rc;
+    if (fr->bounces > HFS_GLES_MAX_BOUNCES)
+        return hfs_fail(err, HFS_E_INVALID, "bounces %d: at most %d", fr->bounces,
+                        HFS_GLES_MAX_BOUNCES);
+    if ((rc = hfs_gl_caps_check_texture(&g->caps, fr->L.vw, fr->L.vh, HFS_GLES_MAX_BOUNCES,
+                                        "bounces (the grid's irradiance)", err)))
+        return rc;
+    return hfs_gl_caps_check_uniform_block(&g->caps, block_bytes(fr),
+                                           "bounce directions (--nphi-env)", err);
+}
+
+/* HfsBounce: dphi / pi, k, the slice directions. */
+static int upload_block(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
+{
+    const int n = fr->q->nphi_env;
+    float *blk = hfs_gles_scratch(g, block_bytes(fr) + (size_t)n * 2 * sizeof(float));
+    if (!blk)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the bounces");
+    hfs_gles_bounce_head *head = (hfs_gles_bounce_head *)blk;
+    *head = (hfs_gles_bounce_head){.weight = (float)(2.0 / n), .k = (float)fr->L.k};
+    float *dirs = blk + 4, *cs = dirs + 4 * n;
+    hfs_swath s;
+    hfs_swath_full(n, &s);
+    hfs_gles_swath_float_dirs(&fr->L, &s, cs);
+    for (int j = 0; j < n; ++j) {
+        dirs[4 * j] = cs[2 * j], dirs[4 * j + 1] = cs[2 * j + 1];
+        dirs[4 * j + 2] = dirs[4 * j + 3] = 0.0f;
+    }
+    hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_BOUNCE], blk, block_bytes(fr));
+    return HFS_OK;
+}
+
+/* bounce_light.frag into fbo (w x h): direct (0/1) + rho sum of E layers
+ * [first, first + count). */
+static int light(hfs_gles *g, const hfs_gles_frame *fr, GLuint fbo, int direct, int first,
+                 int count, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    const hfs_gles_layout *L = &fr->L;
+    const hfs_gles_variant v = {.fp32 = g->caps.fp32, .albedo_map = fr->albedo != NULL};
+    const hfs_gles_program *prog;
+    int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_LIGHT, &v, &prog, err);
+    if (rc || (rc = hfs_gles_program_texture(gl, prog, "u_hi", GL_TEXTURE_2D, g->r.out[0], err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_lo", GL_TEXTURE_2D, g->r.out[1], err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_e", GL_TEXTURE_2D_ARRAY, g->bounce.e, err)))
+        return rc;
+    if (fr->albedo &&
+        (rc = hfs_gles_program_texture(gl, prog, "u_albedo", GL_TEXTURE_2D, g->albedo.tex, err)))
+        return rc;
+    hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
+    hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
+    hfs_gles_set_i1(gl, prog, "u_sub", L->sub);
+    hfs_gles_set_f1(gl, prog, "u_direct", (float)direct);
+    hfs_gles_set_f1(gl, prog, "u_rho", (float)(fr->rho_pi * PI));
+    hfs_gles_set_i1(gl, prog, "u_first", first);
+    hfs_gles_set_i1(gl, prog, "u_count", count);
+    hfs_gles_draw(gl, fbo, L->w, L->h);
+    return HFS_OK;
+}
+
+/* bounce_gather.frag over the grid into layer `layer` of E. */
+static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    const hfs_gles_layout *L = &fr->L;
+    const int capped = fr->capped;
+    const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
+                                .n_dir = fr->q->nphi_env, .fp32 = g->caps.fp32,
+                                .slice = capped};
+    const hfs_gles_program *prog;
+    int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_GATHER, &v, &prog, err);
+    if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_rad", GL_TEXTURE_2D, g->bounce.rad, err)))
+        return rc;
+    if (capped &&
+        (rc = hfs_gles_program_texture(gl, prog, "u_hor", GL_TEXTURE_2D_ARRAY, g->r.hor, err)))
+        return rc;
+    hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
+    hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_BOUNCE, g->ubo[HFS_UBO_BOUNCE]);
+    return hfs_gles_draw_grid_layers(g, L, g->bounce.e_fbo, g->bounce.e, layer, 1,
+                                     "bounce irradiance", NULL, err);
+}
+
+static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
+{
+    (void)which;
+    const hfs_gl *gl = &g->gl;
+    int rc;
+    if ((rc = hfs_gles_bounce_targets_ensure(&g->bounce, gl, &g->caps, &fr->L, err)) ||
+        (rc = upload_block(g, fr, err)))
+        return rc;
+    for (int b = 1; b <= fr->bounces && !rc; ++b) {
+        /* Lo_{b-1}: the direct light, or rho E_{b-1}. */
+        if ((rc = light(g, fr, g->bounce.rad_fbo, b == 1, b - 2, b == 1 ? 0 : 1, err)))
+            break;
+        rc = gather(g, fr, b - 1, err);
+    }
+    if (!rc)
+        rc = light(g, fr, g->bounce.fin_fbo, 1, 0, fr->bounces, err);
+    gl->UseProgram(0);
+    return rc ? rc : hfs_gl_check(gl, "backend gles: bounce pass", err);
+}
+
+const hfs_gles_pass hfs_pass_bounce = {
+    .id = HFS_PASS_BOUNCE,
+    .plan_name = "bounce",
+    .scope = HFS_SCOPE_FRAME,
+    /* Also the grid's horizons when they cap the bands; plan.c sets that
+     * each frame (hfs_gles_plan_frame). */
+    .reads = {"output targets", "pyramid", "subsample", "albedo", "bounce settings"},
+    .writes = {"bounced targets"},
+    .stages = {"bounce"},
+    .present = present,
+    .layout = layout,
+    .run = run,
+};

@@ -1,0 +1,190 @@
+/*
+ * bounce_gather.frag - one indirect bounce on the visibility grid
+ * (runtime/cpu_bounce.h, DESIGN.md "Indirect light"), the CPU reference's
+ * walk at each grid receiver g: along each of the environment's azimuth
+ * slices, outward from the receiver's tangent plane, its own cell (the
+ * near end's one-sided slopes or the far edge, whichever rises more:
+ * field_geom.h hfs_field_first_cell_slope), then each scale of the pyramid
+ * and u_refine samples between it and the next, read as the horizons read
+ * them.  A sample rising above everything nearer casts the band of
+ * elevations between the old top and its own, lit by the previous
+ * bounce's exit radiance at the sample (u_rad, bilinear) and weighted by
+ * the clamped cosine's exact integral over the band (slice_cosine, as
+ * slice_light.c hfs_slice_cosine).  HFS_SLICE: the bands stop at the
+ * direct light's horizon of the slice (the grid's horizons of
+ * env_horizons.frag, and the own cell), so what a receiver gathers and the
+ * sky it sees never overlap (lights.h hfs_bounce_capped).
+ * Writes E_b = dphi / pi * sum over slices and bands; the exit radiance
+ * of the bounce is rho(x) E_b (bounce_light.frag).
+ * Samples whose best case (the field's largest height, u_vmax) cannot
+ * rise above the current top are skipped without a fetch: they could not
+ * cast a band.
+ */
+// hfs-variant: HFS_SLICE 1
+// hfs-variant: HFS_FP32 1
+
+#ifndef HFS_NLEV
+#define HFS_NLEV 33
+#endif
+#ifndef HFS_NLAYERS
+#define HFS_NLAYERS 25
+#endif
+#ifndef HFS_NDIR
+#define HFS_NDIR 32
+#endif
+#ifndef HFS_HALF_PI
+#define HFS_HALF_PI 1.5707963267948966
+#endif
+
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+precision highp sampler2DArray;
+
+float hfs_h(vec2 t);
+float hfs_hdiff(vec2 a, vec2 b);
+vec3 hfs_normal(vec4 t);
+ivec2 hfs_receiver(ivec2 size, int sub);
+void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
+bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
+float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
+
+uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
+uniform highp sampler2D u_normals;       /* full resolution */
+uniform highp sampler2D u_rad;           /* Lo_{b-1}, full resolution, LINEAR */
+#ifdef HFS_SLICE
+uniform highp sampler2DArray u_hor;      /* grid horizons, tan(x / 2), 4 a layer */
+#endif
+uniform ivec2 u_size;                    /* W, H */
+uniform int u_sub;
+uniform float u_vmax;                    /* largest normalized height, a hair up */
+uniform int u_refine;                    /* samples per scale besides the scale's own */
+
+layout(std140) uniform HfsScales {
+    vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
+};
+layout(std140) uniform HfsBounce {
+    vec4 u_bhead;                        /* (dphi / pi, levels per octave k, 0, 0) */
+    vec4 u_bdir[HFS_NDIR];               /* (cos, sin, 0, 0) */
+};
+
+out vec4 o_e;
+
+/* Int_x^{pi/2} (a cos e + b sin e) cos e de (slice_light.h). */
+float slice_cosine(float a, float b, float x)
+{
+    return 0.5 * a * (HFS_HALF_PI - x - 0.5 * sin(2.0 * x)) + 0.25 * b * (1.0 + cos(2.0 * x));
+}
+
+/* The walk's state along one slice.  The top is kept as a slope (samples
+ * compare slopes: no atan per sample) and as its elevation's cosine
+ * integral (one slice_cosine per band). */
+struct Walk {
+    float a, b;      /* N.d, N_z */
+    float t_top;     /* slope of the highest sample so far */
+    float s_top;     /* slice_cosine at its elevation */
+    float t_cap;     /* the slope where the bands stop */
+    vec3 acc;        /* sum of Lo_{b-1} W */
+};
+
+/* A sample at grid position g + o rising to slope t: casts the band
+ * (top, min(t, cap)] lit by the radiance there. */
+void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
+{
+    t = min(t, w.t_cap);
+    if (!(t > w.t_top))
+        return;
+    vec3 lo = texture(u_rad, (vec2(g) + o + 0.5) / vec2(u_size)).rgb;
+    float s = slice_cosine(w.a, w.b, atan(t));
+    w.acc += lo * (w.s_top - s);
+    w.t_top = t;
+    w.s_top = s;
+}
+
+/* The receiver's own cell along cs: the elevation of the max of the near
+ * end's slope (the axis neighbours' one-sided slopes, weighted by |cos|,
+ * |sin|; ns = (+x, -x, +y, -y)) and the far edge's (bilinear on the finest
+ * level) as a slope t, at the far edge's offset o; false when the cell
+ * leaves the field. */
+bool own_cell(ivec2 g, vec2 cs, vec4 ns, vec4 sc, vec2 h0, out float t, out vec2 o)
+{
+    float tc = 1.0 / max(abs(cs.x), abs(cs.y));
+    t = -1e30;
+    if (!hfs_scale_offset(g, u_size, tc, cs, o))
+        return false;
+    float near = abs(cs.x) * (cs.x > 0.0 ? ns.x : ns.y) + abs(cs.y) * (cs.y > 0.0 ? ns.z : ns.w);
+    float far = hfs_scale_slope(u_levels, g, u_size, o, sc, h0) * sc.x / tc;
+    t = max(near, far);
+    return true;
+}
+
+/* The scales, nearest first, and u_refine samples after each (distances
+ * d 2^(q / ((refine + 1) k))), until the top reaches the cap or a sample
+ * leaves the grid (then all farther ones do: the grid is convex). */
+void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
+{
+    float step = exp2(1.0 / (float(u_refine + 1) * u_bhead.y));
+    for (int i = HFS_NLEV - 1; i >= 0 && w.t_top < w.t_cap; --i) {
+        vec4 sc = u_scale[i];
+        vec2 h = hx[int(sc.z)];
+        float best = (u_vmax - hfs_h(h)) * sc.y; /* the largest slope at distance d */
+        float f = 1.0;
+        for (int q = 0; q <= u_refine && w.t_top < w.t_cap; ++q, f *= step) {
+            vec2 o;
+            if (!hfs_scale_offset(g, u_size, sc.x * f, cs, o))
+                return;
+            if (best <= w.t_top * f)
+                continue;
+            cast_band(w, hfs_scale_slope(u_levels, g, u_size, o, sc, h) / f, g, o);
+        }
+    }
+}
+
+void main()
+{
+    ivec2 g = hfs_receiver(u_size, u_sub);
+    vec3 n = hfs_normal(texelFetch(u_normals, g, 0));
+    vec2 hx[HFS_NLAYERS];
+    hfs_receiver_heights(u_levels, g, hx);
+    vec4 fine = u_scale[HFS_NLEV - 1];
+    vec2 h0 = hx[int(fine.z)];
+    vec4 ns = vec4(-1e30); /* one-sided slopes to (+x, -x, +y, -y), -1e30 off the field */
+    ivec2 nb[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+    for (int k = 0; k < 4; ++k) {
+        ivec2 q = g + nb[k];
+        if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, u_size)))
+            ns[k] = hfs_hdiff(texelFetch(u_levels, ivec3(q, int(fine.z)), 0).xy, h0) * fine.y *
+                    fine.x;
+    }
+    vec3 acc = vec3(0.0);
+#ifdef HFS_SLICE
+    vec4 hor = vec4(0.0);
+#endif
+    for (int j = 0; j < HFS_NDIR; ++j) {
+        vec2 cs = u_bdir[j].xy;
+        Walk w;
+        w.a = n.x * cs.x + n.y * cs.y;
+        w.b = n.z;
+        w.t_top = -w.a / n.z;
+        w.s_top = slice_cosine(w.a, w.b, atan(-w.a, n.z));
+        w.t_cap = 1e30;
+        w.acc = vec3(0.0);
+        /* The own cell's band, then the cap: the direct horizon is the
+         * grid's far one or the own cell, whichever is higher. */
+        float t1;
+        vec2 o1;
+        if (own_cell(g, cs, ns, fine, h0, t1, o1))
+            cast_band(w, t1, g, o1);
+#ifdef HFS_SLICE
+        if (j % 4 == 0)
+            hor = texelFetch(u_hor, ivec3(ivec2(gl_FragCoord.xy), j / 4), 0);
+        float u = hor[j % 4]; /* tan(x / 2) -> tan x */
+        w.t_cap = max(u > -1.0 ? 2.0 * u / max(1.0 - u * u, 1e-30) : -1e30, t1);
+#endif
+        walk_scales(w, g, cs, hx);
+        acc += w.acc;
+    }
+    vec3 e = acc * u_bhead.x;
+    e = clamp(e, vec3(0.0), vec3(65504.0));
+    o_e = vec4(mix(vec3(0.0), e, equal(e, e)), 1.0);
+}

@@ -1,0 +1,60 @@
+/*
+ * bounce_light.frag - exit radiance at full resolution from the shading
+ * pass's output and the bounces gathered on the grid (pass_bounce.c):
+ *   v = u_direct * (hi + lo) + rho(x) * sum_{l in [u_first, u_first +
+ *       u_count)} E_l(x),
+ * E_l read bilinearly from the grid like the local lights' ratios
+ * (hfs_grid_uv) and rho(x) = the albedo times the texel's albedo map
+ * (HFS_ALBEDO_MAP).  Drawn twice over: as the radiance the next bounce
+ * gathers (the direct light alone, or rho E of the last bounce; one
+ * target) and as the frame's result (direct + every bounce, an fp16 hi +
+ * lo pair like the shading pass's).  Radiances carry the frame's output
+ * scale (pass_shade.c).
+ */
+// hfs-variant: HFS_ALBEDO_MAP 1
+// hfs-variant: HFS_FP32 1
+
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+precision highp sampler2DArray;
+
+vec2 hfs_split(float v);
+vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
+
+uniform highp sampler2D u_hi;            /* the shading pass's output, hi */
+uniform highp sampler2D u_lo;            /* and lo */
+uniform highp sampler2DArray u_e;        /* E_b on the grid, a layer a bounce, LINEAR */
+#ifdef HFS_ALBEDO_MAP
+uniform highp sampler2D u_albedo;        /* albedo map (RGB in [0, 1]), full resolution */
+#endif
+uniform ivec2 u_size;                    /* W, H */
+uniform ivec2 u_vsize;                   /* visibility grid size */
+uniform int u_sub;
+uniform float u_direct;                  /* 1: the direct light is part of v */
+uniform float u_rho;                     /* the uniform albedo */
+uniform int u_first;                     /* the bounces summed: layers [first, first + count) */
+uniform int u_count;
+
+layout(location = 0) out vec4 o_hi;
+layout(location = 1) out vec4 o_lo;
+
+void main()
+{
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec3 v = u_direct * (texelFetch(u_hi, p, 0).rgb + texelFetch(u_lo, p, 0).rgb);
+    vec3 rho = vec3(u_rho);
+#ifdef HFS_ALBEDO_MAP
+    rho *= texelFetch(u_albedo, p, 0).rgb;
+#endif
+    vec2 uv = hfs_grid_uv(p, u_sub, u_size, u_vsize);
+    vec3 e = vec3(0.0);
+    for (int l = 0; l < u_count; ++l)
+        e += texture(u_e, vec3(uv, float(u_first + l))).rgb;
+    v += rho * e;
+    v = clamp(v, vec3(-65504.0), vec3(65504.0));
+    v = mix(vec3(0.0), v, equal(v, v));
+    vec2 r = hfs_split(v.r), g = hfs_split(v.g), b = hfs_split(v.b);
+    o_hi = vec4(r.x, g.x, b.x, 1.0);
+    o_lo = vec4(r.y, g.y, b.y, 0.0);
+}
