@@ -35,6 +35,7 @@ typedef enum hfs_gles_pass_id {
     HFS_PASS_KEY_VISIBILITY, /* pass_key_visibility.c: key factor, per key         */
     HFS_PASS_SHADE,          /* pass_shade.c: exit radiance (hi, lo)               */
     HFS_PASS_READBACK,       /* pass_readback.c: the image                         */
+    HFS_PASS_VIEW,           /* pass_view.c: the 3-D view and its read-back        */
     HFS_PASS_COUNT
 } hfs_gles_pass_id;
 
@@ -75,5 +76,6 @@ int hfs_gles_pass_max_instances(const hfs_gles_pass *p);
 extern const hfs_gles_pass hfs_pass_terrain, hfs_pass_env_horizons, hfs_pass_key_horizons,
     hfs_pass_local_lights, hfs_pass_env_transfer, hfs_pass_key_visibility, hfs_pass_shade,
     hfs_pass_readback;
+extern const hfs_gles_pass hfs_pass_view;
 
 #endif /* HFS_GLES_PASS_H */

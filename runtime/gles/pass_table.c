@@ -13,6 +13,7 @@ const hfs_gles_pass *const hfs_gles_pass_table[HFS_PASS_COUNT] = {
     [HFS_PASS_KEY_VISIBILITY] = &hfs_pass_key_visibility,
     [HFS_PASS_SHADE] = &hfs_pass_shade,
     [HFS_PASS_READBACK] = &hfs_pass_readback,
+    [HFS_PASS_VIEW] = &hfs_pass_view,
 };
 
 int hfs_gles_pass_max_instances(const hfs_gles_pass *p)
