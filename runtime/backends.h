@@ -11,6 +11,7 @@
 #define HFS_BACKENDS_H
 
 #include "hfshade.h"
+#include "view_camera.h"
 
 /* CPU reference (cpu_*.c): the GPU algorithm in double precision. */
 int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
@@ -38,6 +39,11 @@ const char *hfs_gles_context_name(const hfs_gles *g);
 const char *hfs_gles_describe(const hfs_gles *g);
 int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                     const hfs_quality *q, hfs_image *out, hfs_error *err);
+/* The same frame and its 3-D view from camera cam into view (w x h RGB,
+ * row 0 at the top; runtime/gles/pass_view.c). */
+int hfs_gles_render_view(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
+                         const hfs_quality *q, const hfs_camera *cam, int w, int h,
+                         hfs_image *out, float *view, hfs_error *err);
 void hfs_gles_set_timing(hfs_gles *g, int level);
 void hfs_gles_set_amortize(hfs_gles *g, int passes_per_frame); /* hfshade.h */
 void hfs_gles_set_timing_finish(hfs_gles *g, int finish);        /* hfshade.h */

@@ -140,6 +140,7 @@ extern "C" {
     X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                     \
     X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                           \
     X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)                     \
+    X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, RenderbufferStorageMultisample) \
     /* buffers, vertex arrays, drawing */                                    \
     X(PFNGLGENBUFFERSPROC, GenBuffers)                                       \
     X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                 \

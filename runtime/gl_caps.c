@@ -16,6 +16,9 @@
 #define ES30_MAX_UNIFORM_BUFFER_BINDINGS 24
 #define ES30_MAX_TEXTURE_IMAGE_UNITS 16
 #define ES30_UNIFORM_BUFFER_OFFSET_ALIGNMENT 256 /* the largest allowed value */
+#define ES30_MAX_RENDERBUFFER_SIZE 2048
+#define ES30_MAX_VERTEX_TEXTURE_IMAGE_UNITS 16
+#define VIEW_MAX_SAMPLES 4 /* more costs fill rate for little on a terrain view */
 
 static int geti(const hfs_gl *gl, GLenum pname)
 {
@@ -52,6 +55,16 @@ void hfs_gl_caps_query(const hfs_gl *gl, hfs_gl_driver *d)
     d->max_uniform_buffer_bindings = geti(gl, GL_MAX_UNIFORM_BUFFER_BINDINGS);
     d->max_texture_image_units = geti(gl, GL_MAX_TEXTURE_IMAGE_UNITS);
     d->uniform_buffer_offset_alignment = geti(gl, GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT);
+    d->max_renderbuffer_size = geti(gl, GL_MAX_RENDERBUFFER_SIZE);
+    gl->GetIntegerv(GL_MAX_VIEWPORT_DIMS, d->max_viewport);
+    d->max_vertex_texture_image_units = geti(gl, GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS);
+    /* Multisampling of the view's RGBA16F target: the format's own answer
+     * (ES 3.0 core does not make RGBA16F renderable; the extension may or
+     * may not allow samples), never more than GL_MAX_SAMPLES. */
+    GLint samples = 0;
+    gl->GetInternalformativ(GL_RENDERBUFFER, GL_RGBA16F, GL_SAMPLES, 1, &samples);
+    const int max_samples = geti(gl, GL_MAX_SAMPLES);
+    d->samples_rgba16f = samples < max_samples ? samples : max_samples;
     for (int i = 0; i < 16 && gl->GetError() != GL_NO_ERROR; ++i)
         ; /* an unknown pname on an odd driver must not leak an error */
 }
@@ -142,6 +155,15 @@ int hfs_gl_caps_select(const hfs_gl_driver *d, const char *profile, int want_fp3
     if (out.uniform_buffer_offset_alignment < 1)
         out.uniform_buffer_offset_alignment = 1;
     out.timer_query = d->timer_query;
+    out.max_renderbuffer_size = cap(d->max_renderbuffer_size, strict ? ES30_MAX_RENDERBUFFER_SIZE : 0);
+    for (int a = 0; a < 2; ++a) /* the viewport bounds the view too */
+        if (d->max_viewport[a] > 0 && d->max_viewport[a] < out.max_renderbuffer_size)
+            out.max_renderbuffer_size = d->max_viewport[a];
+    out.max_vertex_texture_image_units =
+        cap(d->max_vertex_texture_image_units, strict ? ES30_MAX_VERTEX_TEXTURE_IMAGE_UNITS : 0);
+    out.view_samples = d->samples_rgba16f < VIEW_MAX_SAMPLES ? d->samples_rgba16f : VIEW_MAX_SAMPLES;
+    if (out.view_samples < 1)
+        out.view_samples = 1;
     if (out.max_texture_size < 1 || out.max_array_texture_layers < 1 || out.max_draw_buffers < 1 ||
         out.max_uniform_block_size < 1 || out.max_texture_image_units < 1)
         return hfs_fail(err, HFS_E_UNSUPPORTED, "profile %s: the driver reports no usable "
@@ -214,5 +236,22 @@ int hfs_gl_caps_check_samplers(const hfs_gl_caps *c, int n, const char *what, hf
                         limit_text(c, c->max_texture_image_units,
                                    c->driver.max_texture_image_units,
                                    "GL_MAX_TEXTURE_IMAGE_UNITS", t, sizeof t));
+    return HFS_OK;
+}
+
+int hfs_gl_caps_check_view(const hfs_gl_caps *c, int w, int h, int vtex, hfs_error *err)
+{
+    char t[160];
+    if (w > c->max_renderbuffer_size || h > c->max_renderbuffer_size)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "view: a %dx%d image exceeds %s", w, h,
+                        limit_text(c, c->max_renderbuffer_size, c->driver.max_renderbuffer_size,
+                                   "GL_MAX_RENDERBUFFER_SIZE / GL_MAX_VIEWPORT_DIMS", t,
+                                   sizeof t));
+    if (vtex > c->max_vertex_texture_image_units)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "view: the vertex shader needs %d texture "
+                        "units, over %s", vtex,
+                        limit_text(c, c->max_vertex_texture_image_units,
+                                   c->driver.max_vertex_texture_image_units,
+                                   "GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS", t, sizeof t));
     return HFS_OK;
 }

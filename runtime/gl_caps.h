@@ -58,6 +58,13 @@ typedef struct hfs_gl_driver {
     int max_uniform_buffer_bindings;
     int max_texture_image_units; /* fragment stage                          */
     int uniform_buffer_offset_alignment;
+    int max_renderbuffer_size;   /* the 3-D view's targets                  */
+    int max_viewport[2];         /* GL_MAX_VIEWPORT_DIMS                    */
+    int max_vertex_texture_image_units; /* the view's vertex shader reads heights */
+    int samples_rgba16f;         /* most samples of an RGBA16F renderbuffer
+                                    (GL_SAMPLES of glGetInternalformativ; 0:
+                                    none, e.g. ES 3.0 core without the
+                                    extension's multisample support)         */
 } hfs_gl_driver;
 
 /* The effective capabilities under a profile. */
@@ -86,6 +93,10 @@ typedef struct hfs_gl_caps {
     int max_texture_image_units;
     int uniform_buffer_offset_alignment;
     int timer_query;             /* GPU timestamps usable                   */
+    int max_renderbuffer_size;   /* the 3-D view's colour and depth targets */
+    int max_vertex_texture_image_units;
+    int view_samples;            /* samples of the view's RGBA16F target: the
+                                    driver's, at most 4; 1 = no multisampling */
 } hfs_gl_caps;
 
 /* Reads what the current context offers (the context gl was loaded from
@@ -114,6 +125,10 @@ int hfs_gl_caps_check_uniform_block(const hfs_gl_caps *c, size_t bytes, const ch
 /* n simultaneous colour outputs (MRT). */
 int hfs_gl_caps_check_draw_buffers(const hfs_gl_caps *c, int n, const char *what,
                                    hfs_error *err);
+/* The 3-D view (runtime/gles/pass_view.c): a w x h RGBA16F colour and
+ * depth target (renderbuffer size, viewport) and a vertex shader that
+ * reads `vtex` textures. */
+int hfs_gl_caps_check_view(const hfs_gl_caps *c, int w, int h, int vtex, hfs_error *err);
 /* n samplers in one fragment shader. */
 int hfs_gl_caps_check_samplers(const hfs_gl_caps *c, int n, const char *what,
                                hfs_error *err);

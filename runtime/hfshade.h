@@ -286,6 +286,57 @@ HFS_API int hfs_renderer_render(hfs_renderer *r, const hfs_field *field,
  * hfs_renderer_invalidate forgets what was checked.  Kept until changed. */
 HFS_API void hfs_renderer_set_field_serial(hfs_renderer *r, uint64_t serial);
 
+/* ---- the 3-D view (issue 16) -------------------------------------------------- */
+
+/* A picture of the lit field seen from a camera, instead of its grid dump
+ * (docs/DESIGN.md "The 3-D view's truth", "GLES path"): the field drawn
+ * with its exit radiance (diffuse: the same from every direction), the
+ * environment's SH sky where a pixel sees no terrain (black without an
+ * environment).  World coordinates are SPEC's, x = i dx, y = j dx,
+ * z = zscale H times the view's exaggeration.  The camera orbits
+ * `target`: it stands `distance` away in the direction (azimuth,
+ * elevation) seen from the target (SPEC's azimuth, from +x toward +y) and
+ * looks at it; screen up is +z, and straight down (elevation 90 degrees)
+ * +x is to the right and row j = 0 at the top, as in the dumps. */
+typedef enum hfs_view_mode {
+    HFS_VIEW_PERSPECTIVE = 0,
+    HFS_VIEW_ORTHO           /* parallel rays; the view is 2 distance tan(fov/2)
+                                high at every depth (what perspective shows at
+                                the target), nothing behind the eye's plane  */
+} hfs_view_mode;
+
+typedef struct hfs_view {
+    hfs_view_mode mode;
+    double azimuth, elevation; /* radians; elevation in [-pi/2, pi/2]        */
+    double distance;           /* world units, > 0                           */
+    double fov;                /* vertical field of view, radians, (0, pi)    */
+    double target[3];          /* world point looked at                      */
+    double exaggeration;       /* vertical exaggeration of the terrain, > 0  */
+    int width, height;         /* the view image, pixels, 1..8192            */
+} hfs_view;
+
+/* A view of field f: straight down (azimuth 90, elevation 90 degrees),
+ * ortho, fov 30 degrees, exaggeration 1, 512 x 512 pixels, the target at
+ * the field's centre at mid height and the distance that frames the field
+ * (hfs_view_frame). */
+HFS_API void hfs_view_defaults(hfs_view *v, const hfs_field *f);
+/* Sets v->distance so that the whole field (its box, with the view's
+ * exaggeration) is in view around v->target. */
+HFS_API void hfs_view_frame(hfs_view *v, const hfs_field *f);
+
+/* Renders the lit field (as hfs_renderer_render, into `lit` when it is not
+ * NULL: W x H like the field) and its view into `view` (allocated to
+ * v->width x v->height, row 0 at the top).  The GLES backend draws the
+ * field as a triangle mesh on the GPU, multisampled where the driver
+ * allows it; a camera move then costs the view alone (the lighting is
+ * kept: hfs_renderer_frame_report).  The CPU reference and the ground
+ * truth cast one exact ray per pixel centre over the bilinear surface of
+ * their lit image.  Same error conventions as hfs_renderer_render. */
+HFS_API int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *field,
+                                     const hfs_lighting *lighting,
+                                     const hfs_quality *quality, const hfs_view *view,
+                                     hfs_image *lit, hfs_image *out, hfs_error *err);
+
 /* ---- measurement ------------------------------------------------------------ */
 
 #define HFS_MAX_PASSES 16

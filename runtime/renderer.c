@@ -8,6 +8,8 @@
 #include "albedo.h"
 #include "backends.h"
 #include "scene_keys.h"
+#include "truth_view.h"
+#include "view_params.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -32,6 +34,11 @@ typedef struct backend_ops {
     void (*timings)(const void *state, hfs_timings *out);
     void (*invalidate)(void *state);
     void (*frame_report)(const void *state, hfs_frame_report *out);
+    /* The lit frame and its 3-D view in one go (NULL: the lit image's
+     * ray-cast view, hfs_truth_view). */
+    int (*render_view)(void *state, const hfs_field *f, const hfs_lighting *l,
+                       const hfs_quality *q, const hfs_camera *cam, int w, int h,
+                       hfs_image *lit, float *view, hfs_error *err);
 } backend_ops;
 
 static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
@@ -76,11 +83,20 @@ static void gles_frame_report(const void *state, hfs_frame_report *out)
 {
     hfs_gles_frame_report(state, out);
 }
+static int gles_render_view(void *state, const hfs_field *f, const hfs_lighting *l,
+                            const hfs_quality *q, const hfs_camera *cam, int w, int h,
+                            hfs_image *lit, float *view, hfs_error *err)
+{
+    if (l->bounces > 0)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "bounces %d: backend gles has no indirect "
+                        "light yet (--backend cpu or truth computes it)", l->bounces);
+    return hfs_gles_render_view(state, f, l, q, cam, w, h, lit, view, err);
+}
 
 static const backend_ops backends[] = {
     [HFS_BACKEND_GLES] = {"gles", gles_create, gles_destroy, gles_render, gles_set_timing,
                           gles_set_amortize, gles_set_timing_finish, gles_timings,
-                          gles_invalidate, gles_frame_report},
+                          gles_invalidate, gles_frame_report, gles_render_view},
     [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL},
     [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL, NULL},
 };
@@ -437,4 +453,57 @@ int hfs_render_unshadowed(const hfs_field *f, const hfs_lighting *l, const hfs_q
     if (rc)
         return rc;
     return check_output(out, "unshadowed", err);
+}
+
+/* The view of the lit image: the backend's own, or the ray-cast one. */
+static int render_view(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
+                       const hfs_quality *q, const hfs_camera *cam, const hfs_view *v,
+                       hfs_image *lit, hfs_image *out, hfs_error *err)
+{
+    if (r->ops->render_view)
+        return r->ops->render_view(r->state, f, l, q, cam, v->width, v->height, lit, out->rgb,
+                                   err);
+    int rc = r->ops->render(r->state, f, l, q, lit, NULL, NULL, err);
+    if (!rc)
+        rc = check_output(lit, r->ops->name, err);
+    return rc ? rc : hfs_truth_view(f, lit->rgb, l, cam, v->width, v->height, out->rgb,
+                                    q->threads, err);
+}
+
+int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
+                             const hfs_quality *q, const hfs_view *v, hfs_image *lit,
+                             hfs_image *out, hfs_error *err)
+{
+    int rc = validate_frame(r, f, l, q, err);
+    if (rc || (rc = hfs_view_check(v, err)))
+        return rc;
+    if (!out || !out->rgb || out->width != v->width || out->height != v->height)
+        return hfs_fail(err, HFS_E_INVALID, "render: view image is not %dx%d", v->width,
+                        v->height);
+    if (lit && (!lit->rgb || lit->width != f->width || lit->height != f->height))
+        return hfs_fail(err, HFS_E_INVALID, "render: output image is not %dx%d", f->width,
+                        f->height);
+    hfs_image own = {0};
+    if (!lit && (rc = hfs_image_alloc(&own, f->width, f->height, err)))
+        return rc;
+    hfs_camera cam;
+    hfs_view_camera(v, &cam);
+    const double t0 = wall_ms();
+    rc = render_view(r, f, l, q, &cam, v, lit ? lit : &own, out, err);
+    if (!rc && r->timing && !r->ops->timings) {
+        hfs_timings *t = &r->timings;
+        memset(t, 0, sizeof *t);
+        t->n_passes = 1;
+        snprintf(t->pass[0].name, sizeof t->pass[0].name, "render+view");
+        t->pass[0].ms = t->gpu_ms = t->frame_ms = wall_ms() - t0;
+        t->pass[0].fetches = -1.0;
+        snprintf(t->method, sizeof t->method, "wall");
+        snprintf(t->device, sizeof t->device, "%s", r->ops->name);
+    }
+    if (!rc)
+        rc = check_output(lit ? lit : &own, r->ops->name, err);
+    if (!rc)
+        rc = check_output(out, r->ops->name, err);
+    hfs_image_free(&own);
+    return rc;
 }

@@ -48,10 +48,10 @@ static int grid_span(const hfs_field *f, const double o[2], const double d[2], d
 static void shade_pixel(const view_ctx *v, int px, int py, float *rgb)
 {
     const hfs_field *f = v->f;
-    double d[3];
-    hfs_camera_ray(v->fr, v->w, v->h, px, py, d);
+    double d[3], org[3];
+    hfs_camera_ray_at(v->fr, v->w, v->h, px, py, org, d);
     /* The ray in grid units for xy, world for z and t. */
-    const double og[2] = {v->fr->eye[0] / f->dx, v->fr->eye[1] / f->dx};
+    const double og[2] = {org[0] / f->dx, org[1] / f->dx};
     const double dg[2] = {d[0] / f->dx, d[1] / f->dx};
     double t0, t1, t;
     if (grid_span(f, og, dg, &t0, &t1)) {
@@ -60,7 +60,7 @@ static void shade_pixel(const view_ctx *v, int px, int py, float *rgb)
         const double ts = t0 + 1e-9 * (1.0 + t0);
         const double o[3] = {fmin(fmax(og[0] + ts * dg[0], 0.0), f->width - 1.0),
                              fmin(fmax(og[1] + ts * dg[1], 0.0), f->height - 1.0),
-                             v->fr->eye[2] + ts * d[2]};
+                             org[2] + ts * d[2]};
         if (ts <= t1 && hfs_truth_ray_first_hit(v->g, o, d, INFINITY, &t)) {
             double lo[3];
             hfs_rgb_bilinear(v->lit, f->width, f->height, o[0] + t * dg[0], o[1] + t * dg[1],

@@ -14,6 +14,13 @@
  * 90) shows the field as its dumps do: +x to the right, row j = 0 at the
  * top.  Pixel (px, py) of a W x H image, py = 0 at the top, is sampled at
  * its centre.
+ *
+ * Orthographic (ortho = 1): parallel rays along `forward`, from the plane
+ * through the eye perpendicular to it (nothing behind that plane is seen,
+ * as nothing behind a perspective eye is), covering a view of height
+ * 2 distance tan(fov / 2) at every depth: what the perspective camera
+ * shows at the target's depth.  Straight down it shows the field as its
+ * dumps do, without perspective.
  */
 #ifndef HFS_VIEW_CAMERA_H
 #define HFS_VIEW_CAMERA_H
@@ -24,6 +31,7 @@ typedef struct hfs_camera {
     double fov;                /* vertical field of view, radians, in (0, pi) */
     double target[3];          /* world point looked at */
     double exaggeration;       /* vertical scale of the terrain in the view, > 0 */
+    int ortho;                 /* 1: parallel projection (see above)              */
 } hfs_camera;
 
 /* The camera's eye and its orthonormal basis: forward (eye -> target),
@@ -31,6 +39,8 @@ typedef struct hfs_camera {
 typedef struct hfs_camera_frame {
     double eye[3], forward[3], right[3], up[3];
     double tan_half;           /* tan(fov / 2) */
+    int ortho;
+    double half_height;        /* ortho: half the view's height, world units */
 } hfs_camera_frame;
 
 void hfs_camera_frame_make(const hfs_camera *c, hfs_camera_frame *fr);
@@ -38,5 +48,17 @@ void hfs_camera_frame_make(const hfs_camera *c, hfs_camera_frame *fr);
 /* The unit world direction of the ray through pixel (px, py) of a w x h
  * image (square pixels). */
 void hfs_camera_ray(const hfs_camera_frame *fr, int w, int h, int px, int py, double dir[3]);
+
+/* The ray through pixel (px, py) for either projection: its origin (the
+ * eye, or ortho the pixel's point on the eye's plane) and unit direction. */
+void hfs_camera_ray_at(const hfs_camera_frame *fr, int w, int h, int px, int py,
+                       double org[3], double dir[3]);
+
+/* A distance from the target at which the camera frames a box of
+ * half-diagonal `radius` (world units) centred on it in a w x h view:
+ * the box's bounding sphere fits the narrower of the two fields of view
+ * (perspective), or the view's height and width (ortho, with the eye's
+ * plane outside the sphere). */
+double hfs_camera_framing_distance(const hfs_camera *c, double radius, int w, int h);
 
 #endif /* HFS_VIEW_CAMERA_H */

@@ -79,6 +79,18 @@ expect_fail check-range "--k" $C --height "$tmp/flat.pfm" --env-sh $sky --k 0
 expect_fail check-missing "nope.pfm" $C --height "$tmp/nope.pfm" --env-sh $sky
 expect_fail check-clash "flat.pfm" $C --height "$tmp/flat.pfm" --env-sh $sky --pfm "$tmp/flat.pfm"
 expect_fail check-twice "--check" $C --check --height "$tmp/flat.pfm" --env-sh $sky
+# The 3-D view's flags (issue 16).
+V="$R --height $tmp/flat.pfm --env-sh $sky"
+expect_fail view-mode "--view: 'side'" $V --view side
+expect_fail camera-short "--camera: '10,20'" $V --view ortho --camera 10,20
+expect_fail camera-nan "--camera: 'a,20,5,30'" $V --view ortho --camera a,20,5,30
+expect_fail camera-elev "--camera: elevation 95" $V --view perspective --camera 0,95,5,30
+expect_fail camera-dist "--camera: distance -5" $V --view perspective --camera 0,45,-5,30
+expect_fail camera-fov "--camera: field of view 180" $V --view perspective --camera 0,45,5,180
+expect_fail view-size "--view-size: '0x10'" $V --view ortho --view-size 0x10
+expect_fail view-size-form "--view-size: '64'" $V --view ortho --view-size 64
+expect_fail exaggeration "--exaggeration: '0'" $V --view ortho --exaggeration 0
+expect_fail camera-no-view "--camera: needs --view" $V --camera 0,45,5,30
 "$HFGEN" cones --size 2100x3 -o "$tmp/wide.pfm" >/dev/null || { echo "FAIL: hfgen"; exit 1; }
 if "$HFSHADE" info >/dev/null 2>&1; then # a GLES refusal needs a context to refuse
     HFS_GL_STRICT_LIMITS=1 expect_fail check-refused "GL_MAX_TEXTURE_SIZE" render --check \

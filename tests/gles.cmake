@@ -176,6 +176,22 @@ add_test(NAME test_albedo_map COMMAND test_albedo_map gles)
 set_tests_properties(test_albedo_map PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
 set(hfs_gles_tests ${hfs_gles_tests} test_albedo_map)
 
+# The 3-D view (issue 16): GLES against the truth's ray-cast view of the
+# same lit image, fp16 and fp32, on an ES 3.0 context too; a camera move
+# reruns the view alone (test_gles_view.c states the bounds and why).
+add_executable(test_gles_view ${CMAKE_CURRENT_LIST_DIR}/test_gles_view.c)
+target_link_libraries(test_gles_view PRIVATE hfshade_lib m)
+foreach(args "compare;fp16" "compare;fp32" "plan")
+  string(REPLACE ";" "_" tname "test_gles_view_${args}")
+  add_test(NAME ${tname} COMMAND test_gles_view ${args})
+  set_tests_properties(${tname} PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
+  set(hfs_gles_tests ${hfs_gles_tests} ${tname})
+endforeach()
+add_test(NAME test_gles_view_compare_fp16_es30 COMMAND test_gles_view compare fp16)
+set_tests_properties(test_gles_view_compare_fp16_es30 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
+                     TIMEOUT 300 ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
+set(hfs_gles_tests ${hfs_gles_tests} test_gles_view_compare_fp16_es30)
+
 if(HFS_SANITIZE)
   foreach(t IN LISTS hfs_gles_tests)
     set_property(TEST ${t} APPEND PROPERTY ENVIRONMENT

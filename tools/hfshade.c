@@ -16,6 +16,7 @@
 #include "scene.h"
 #include "scene_load.h"
 #include "median.h"
+#include "cli_view.h"
 
 #include <float.h>
 #include <math.h>
@@ -39,6 +40,7 @@ typedef struct cli {
     int colormap; /* 0 none, 1 terrain */
     int quiet;
     int check;    /* --check: everything a render does but write the outputs */
+    cli_view v;   /* --view, --camera, --exaggeration, --view-size */
     hfs_scene scene;
 } cli;
 
@@ -52,6 +54,9 @@ static void usage(FILE *f)
             "options: --exposure F (PNG only, default 1), --colormap none|terrain (PNG only),\n"
             "         --time N (render N full frames after a warm-up; print per-pass medians),\n"
             "         --check (load, validate and render one frame off screen; write nothing),\n"
+            "         --view ortho|perspective (the outputs are the 3-D view, not the grid),\n"
+            "         --camera AZ,EL,DIST,FOV[,TX,TY,TZ] (degrees; DIST empty: frame the field),\n"
+            "         --exaggeration E, --view-size WxH (default 512x512),\n"
             "         --quiet, --help\n"
             "scene keys (also accepted in SCENE.ini as KEY = VALUE): run 'hfshade keys'\n");
 }
@@ -187,7 +192,10 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
         if (i + 1 >= argc)
             return hfs_fail(err, HFS_E_INVALID, "%s: missing value", a);
         const char *v = argv[++i];
-        if (!strcmp(name, "o")) {
+        if (cli_view_flag(&c->v, name, v, &rc, err)) {
+            if (rc)
+                return rc;
+        } else if (!strcmp(name, "o")) {
             c->out_png = v;
         } else if (!strcmp(name, "pfm")) {
             c->out_pfm = v;
@@ -272,8 +280,20 @@ static void apply_terrain_colormap(hfs_image *img, const hfs_heightmap *hm)
 /* --time N: one warm-up frame, then N full frames (caches invalidated so every
  * pass runs), per-pass medians on stdout.  The image of the last frame is
  * what gets written. */
-static int time_frames(const cli *c, hfs_renderer *r, const scene_inputs *in, hfs_image *img,
+/* One frame: the lit grid, and with a view (v not NULL) its view too. */
+static int render_once(hfs_renderer *r, const scene_inputs *in, const hfs_view *v,
+                       hfs_image *img, hfs_image *vimg, hfs_progress_fn progress, void *user,
                        hfs_error *err)
+{
+    if (v)
+        return hfs_renderer_render_view(r, &in->field, &in->lighting, &in->quality, v, img, vimg,
+                                        err);
+    return hfs_renderer_render(r, &in->field, &in->lighting, &in->quality, img, progress, user,
+                               err);
+}
+
+static int time_frames(const cli *c, hfs_renderer *r, const scene_inputs *in, const hfs_view *v,
+                       hfs_image *img, hfs_image *vimg, hfs_error *err)
 {
     const int n = c->time_frames;
     double *ms = calloc((size_t)n * (HFS_MAX_PASSES + 2), sizeof *ms);
@@ -283,7 +303,7 @@ static int time_frames(const cli *c, hfs_renderer *r, const scene_inputs *in, hf
     int rc = hfs_renderer_set_timing(r, 1);
     for (int f = -1; f < n && !rc; ++f) {
         hfs_renderer_invalidate(r);
-        rc = hfs_renderer_render(r, &in->field, &in->lighting, &in->quality, img, NULL, NULL, err);
+        rc = render_once(r, in, v, img, vimg, NULL, NULL, err);
         if (rc || f < 0)
             continue;
         hfs_renderer_timings(r, &t);
@@ -328,6 +348,12 @@ static int plan_outputs(const cli *c, hfs_outputs **o, hfs_error *err)
 
 static int cmd_render(const cli *c, hfs_error *err)
 {
+    int rc = cli_view_check(&c->v, err);
+    if (rc)
+        return rc;
+    if (c->v.view && c->colormap)
+        return hfs_fail(err, HFS_E_INVALID, "--colormap: colours the grid, not the 3-D view "
+                        "(--view)");
     if (!c->out_png && !c->out_pfm && !c->check)
         return hfs_fail(err, HFS_E_INVALID, "render: no output (give -o OUT.png and/or --pfm OUT.pfm)");
     if (c->n_positional)
@@ -335,9 +361,10 @@ static int cmd_render(const cli *c, hfs_error *err)
 
     scene_inputs in = {0};
     hfs_renderer *r = NULL;
-    hfs_image img = {0};
+    hfs_image img = {0}, vimg = {0};
+    hfs_view view;
     hfs_outputs *outs = NULL;
-    int rc = plan_outputs(c, &outs, err);
+    rc = plan_outputs(c, &outs, err);
     if (rc || (rc = load_inputs(c, &in, err)))
         goto out;
     hfs_renderer_desc desc = {.backend = c->scene.backend,
@@ -346,14 +373,20 @@ static int cmd_render(const cli *c, hfs_error *err)
         goto out;
     if ((rc = hfs_image_alloc(&img, in.field.width, in.field.height, err)))
         goto out;
+    if (c->v.view) {
+        view = cli_view_make(&c->v, &in.field);
+        if ((rc = hfs_image_alloc(&vimg, view.width, view.height, err)))
+            goto out;
+    }
+    const hfs_view *vp = c->v.view ? &view : NULL;
+    hfs_image *shown = c->v.view ? &vimg : &img; /* what the outputs hold */
     int last_pct = -1;
     const int show = !c->quiet && isatty(STDERR_FILENO);
     const double t0 = now_seconds();
     if (c->time_frames)
-        rc = time_frames(c, r, &in, &img, err);
+        rc = time_frames(c, r, &in, vp, &img, &vimg, err);
     else
-        rc = hfs_renderer_render(r, &in.field, &in.lighting, &in.quality, &img,
-                                 show ? progress_bar : NULL, &last_pct, err);
+        rc = render_once(r, &in, vp, &img, &vimg, show ? progress_bar : NULL, &last_pct, err);
     const double t1 = now_seconds();
     if (rc)
         goto out;
@@ -366,14 +399,14 @@ static int cmd_render(const cli *c, hfs_error *err)
     }
     /* Both files are written to temporaries first and renamed together:
      * a failure leaves neither, and removes nothing that was there. */
-    if (c->out_pfm && (rc = hfs_pfm_write_to(outs, c->out_pfm, &img, 0, err)))
+    if (c->out_pfm && (rc = hfs_pfm_write_to(outs, c->out_pfm, shown, 0, err)))
         goto out;
     if (c->out_png) {
         hfs_png_opts po = {0};
         po.exposure = c->exposure; /* 0 = default 1 */
         if (c->colormap)
             apply_terrain_colormap(&img, &in.hm); /* after the PFM: display only */
-        if ((rc = hfs_png_write_to(outs, c->out_png, &img, &po, err)))
+        if ((rc = hfs_png_write_to(outs, c->out_png, shown, &po, err)))
             goto out;
     }
     if ((rc = hfs_outputs_commit(outs, err)))
@@ -384,6 +417,7 @@ static int cmd_render(const cli *c, hfs_error *err)
 out:
     hfs_outputs_destroy(outs);
     hfs_image_free(&img);
+    hfs_image_free(&vimg);
     hfs_renderer_destroy(r);
     scene_inputs_free(&in);
     return rc;

@@ -13,7 +13,9 @@
 #       -DPRODUCT=<inc or empty> -DINPUT=<pass> -DSTAMP=<file>
 #       the pass exactly as the runtime composes it (lib + [product] + pass,
 #       "#line" markers), once per "// hfs-variant:" line and once plain,
-#       compiled AND linked as GLSL ES 3.00 (gl.cmake checks each file alone).
+#       compiled AND linked as GLSL ES 3.00 (gl.cmake checks each file alone);
+#       with -DVERT=<x.vert.glsl> (an HFS_PROGRAM_VS row) linked with that
+#       vertex shader, so the two stages' interfaces are checked together.
 
 if(CMAKE_SCRIPT_MODE_FILE)
   if(MODE STREQUAL "embed_product")
@@ -49,9 +51,16 @@ const char hfs_gles_sh_product_src[] = {
       endif()
       set(tmp "${stamp_dir}/${name}.composed.${index}.frag")
       file(WRITE "${tmp}" "${prefix}#line 1 1\n${lib}\n#line 1 2\n${prod}\n#line 1 0\n${text}")
-      execute_process(COMMAND "${VALIDATOR}" -l -S frag "${tmp}"
+      set(stages "${tmp}")
+      if(VERT)
+        file(READ "${VERT}" vtext)
+        set(vtmp "${stamp_dir}/${name}.composed.${index}.vert")
+        file(WRITE "${vtmp}" "${prefix}#line 1 0\n${vtext}")
+        set(stages "${vtmp};${tmp}")
+      endif()
+      execute_process(COMMAND "${VALIDATOR}" -l ${stages}
                       RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE out)
-      file(REMOVE "${tmp}")
+      file(REMOVE ${stages})
       if(NOT result EQUAL 0)
         message(FATAL_ERROR "${INPUT}: composed with gles_lib (and the SH product) it is not "
                             "valid GLSL ES 3.00 (variant: ${variant}; source 1 = gles_lib, "
@@ -84,18 +93,25 @@ add_custom_command(
 set(HFS_GLES_STAMPS "")
 set(HFS_GLES_PROGRAMS ${CMAKE_CURRENT_LIST_DIR}/programs.def)
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${HFS_GLES_PROGRAMS})
-file(STRINGS ${HFS_GLES_PROGRAMS} program_rows REGEX "^HFS_PROGRAM\\(")
+file(STRINGS ${HFS_GLES_PROGRAMS} program_rows REGEX "^HFS_PROGRAM(_VS)?\\(")
 if(NOT program_rows)
   message(FATAL_ERROR "${HFS_GLES_PROGRAMS}: no HFS_PROGRAM rows")
 endif()
 if(HFS_GLSLANG_VALIDATOR)
   foreach(row IN LISTS program_rows)
-    if(NOT row MATCHES "^HFS_PROGRAM\\([A-Z0-9_]+, *([a-z0-9_]+), *([01]),")
+    set(vert "")
+    if(row MATCHES "^HFS_PROGRAM_VS\\([A-Z0-9_]+, *([a-z0-9_]+), *([a-z0-9_]+), *([01]),")
+      set(vert ${HFS_SHADER_DIR}/${CMAKE_MATCH_1}.vert.glsl)
+      set(pass ${CMAKE_MATCH_2})
+      set(has_product ${CMAKE_MATCH_3})
+    elseif(row MATCHES "^HFS_PROGRAM\\([A-Z0-9_]+, *([a-z0-9_]+), *([01]),")
+      set(pass ${CMAKE_MATCH_1})
+      set(has_product ${CMAKE_MATCH_2})
+    else()
       message(FATAL_ERROR "${HFS_GLES_PROGRAMS}: cannot read the row: ${row}")
     endif()
-    set(pass ${CMAKE_MATCH_1})
     set(product "")
-    if(CMAKE_MATCH_2 STREQUAL "1")
+    if(has_product STREQUAL "1")
       set(product ${HFS_SH_GLSL_PRODUCT})
     endif()
     set(stamp ${HFS_GLES_GEN}/${pass}.composed.ok)
@@ -103,8 +119,9 @@ if(HFS_GLSLANG_VALIDATOR)
       OUTPUT ${stamp}
       COMMAND ${CMAKE_COMMAND} -DMODE=validate_pass -DVALIDATOR=${HFS_GLSLANG_VALIDATOR}
               -DLIB=${HFS_SHADER_DIR}/gles_lib.frag.glsl "-DPRODUCT=${product}"
-              -DINPUT=${HFS_SHADER_DIR}/${pass}.frag.glsl -DSTAMP=${stamp} -P ${HFS_GLES_SCRIPT}
-      DEPENDS ${HFS_SHADER_DIR}/${pass}.frag.glsl ${HFS_SHADER_DIR}/gles_lib.frag.glsl
+              -DINPUT=${HFS_SHADER_DIR}/${pass}.frag.glsl -DSTAMP=${stamp} "-DVERT=${vert}"
+              -P ${HFS_GLES_SCRIPT}
+      DEPENDS ${HFS_SHADER_DIR}/${pass}.frag.glsl ${HFS_SHADER_DIR}/gles_lib.frag.glsl ${vert}
               ${HFS_GLES_SCRIPT} ${HFS_SH_GLSL_PRODUCT} hfs_sh_tables ${HFS_GLES_PROGRAMS}
       COMMENT "Validating ${pass}.frag as composed at run time (GLSL ES 3.00, linked)"
       VERBATIM)
@@ -135,6 +152,7 @@ add_library(hfs_gles STATIC
   ${CMAKE_CURRENT_LIST_DIR}/pass_bounce.c
   ${CMAKE_CURRENT_LIST_DIR}/bounce_targets.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_readback.c
+  ${CMAKE_CURRENT_LIST_DIR}/pass_view.c
   ${CMAKE_CURRENT_LIST_DIR}/gles_frame.c
   ${CMAKE_CURRENT_LIST_DIR}/gles_backend.c
   ${HFS_GLES_GEN}/gles_sh_product.c)

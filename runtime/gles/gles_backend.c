@@ -95,6 +95,7 @@ void hfs_gles_destroy(hfs_gles *g)
         hfs_gles_block_texture_free(&g->key_swath_tex, gl);
         hfs_gles_block_texture_free(&g->keys_tex, gl);
         hfs_gles_block_texture_free(&g->local_tex, gl);
+        hfs_gles_view_free(g);
     }
     hfs_gles_wedge_textures_free(&g->wedge, gl);
     hfs_gles_albedo_texture_free(&g->albedo, gl);
@@ -203,8 +204,10 @@ static void report_timings(hfs_gles *g, double t_start)
     t->frame_ms = hfs_gles_now_ms() - t_start;
 }
 
-int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
-                    const hfs_quality *q, hfs_image *out, hfs_error *err)
+/* One frame, with a view from cam when cam is not NULL. */
+static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
+                        const hfs_quality *q, hfs_image *out, const hfs_camera *cam, int w,
+                        int h, float *view, hfs_error *err)
 {
     const double t_start = hfs_gles_now_ms();
     int rc = hfs_gl_context_make_current(g->ctx, err);
@@ -218,8 +221,10 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
     static const hfs_gles_frame empty;
     hfs_gles_frame fr = empty;
     fr.f = f, fr.q = q, fr.out = out;
+    fr.cam = cam, fr.view_w = w, fr.view_h = h, fr.view_rgb = view;
     frame_lights(l, q, &fr);
-    if ((!fr.has_env && fr.n_keys == 0 && fr.n_local == 0) || !(l->albedo > 0.0)) {
+    /* A black field still has a view (its sky): that frame runs. */
+    if (!cam && ((!fr.has_env && fr.n_keys == 0 && fr.n_local == 0) || !(l->albedo > 0.0))) {
         /* Black without a pass; the planner keeps the last lit frame's state
          * (its image is still right for that scene). */
         memset(out->rgb, 0, (size_t)out->width * out->height * 3 * sizeof *out->rgb);
@@ -242,4 +247,17 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
     if (g->timing.level)
         report_timings(g, t_start);
     return HFS_OK;
+}
+
+int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
+                    const hfs_quality *q, hfs_image *out, hfs_error *err)
+{
+    return render_frame(g, f, l, q, out, NULL, 0, 0, NULL, err);
+}
+
+int hfs_gles_render_view(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
+                         const hfs_quality *q, const hfs_camera *cam, int w, int h,
+                         hfs_image *out, float *view, hfs_error *err)
+{
+    return render_frame(g, f, l, q, out, cam, w, h, view, err);
 }

@@ -35,7 +35,7 @@
 /* Uniform buffers (one per block content; the key swaths and records are
  * two buffers, bound by range). */
 enum { HFS_UBO_SCALES, HFS_UBO_ENV_SWATH, HFS_UBO_KEY_SWATHS, HFS_UBO_SHADE, HFS_UBO_KEYS,
-       HFS_UBO_LOCAL, HFS_UBO_BOUNCE, HFS_UBO_COUNT };
+       HFS_UBO_LOCAL, HFS_UBO_BOUNCE, HFS_UBO_VIEW, HFS_UBO_COUNT };
 
 /* One key light of the frame. */
 typedef struct hfs_gles_frame_key {
@@ -75,7 +75,13 @@ struct hfs_gles_frame {
      * instead (block_texture.h): decided by the passes' layout hooks. */
     int env_swath_tex, key_swath_tex, keys_tex, local_tex;
     const int *run[HFS_PASS_COUNT];       /* the plan: run[p][instance] */
+    /* The 3-D view (pass_view.c): NULL cam when the frame has none. */
+    const hfs_camera *cam;
+    int view_w, view_h;
+    float *view_rgb;                      /* view_w * view_h * 3, row 0 at the top */
 };
+
+typedef struct hfs_gles_view_state hfs_gles_view_state; /* pass_view.c */
 
 struct hfs_gles {
     hfs_gl_context *ctx;
@@ -111,6 +117,9 @@ struct hfs_gles {
     hfs_slice_table env_slices;           /* --visibility slice: of env_vis's swath */
     int env_slices_n;
 
+    double lit_scale;                     /* out_scale of the last shaded frame */
+    hfs_gles_view_state *view;            /* the 3-D view's targets (pass_view.c) */
+
     hfs_gles_timing timing;
     int stage_slot[HFS_PASS_COUNT];       /* first timing slot of each pass */
     hfs_timings last;
@@ -123,6 +132,10 @@ struct hfs_gles {
  * the shading pass's output, or direct + indirect when the frame has
  * bounces.  What the read-back and any later pass read. */
 void hfs_gles_lit_targets(const hfs_gles *g, const hfs_gles_frame *fr, GLuint tex[2]);
+/* The view's kept image (1) copied into fr->view_rgb, or 0 when there is
+ * none of that size; and the view's GL objects freed (pass_view.c). */
+int hfs_gles_view_copy_kept(const hfs_gles *g, hfs_gles_frame *fr);
+void hfs_gles_view_free(hfs_gles *g);
 
 /* Scratch memory of at least `bytes`, kept between frames (NULL: none). */
 void *hfs_gles_scratch(hfs_gles *g, size_t bytes);

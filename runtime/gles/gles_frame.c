@@ -167,6 +167,11 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
         memcpy(s->local[i].le, fr->local[i].radiance, sizeof fr->local[i].radiance);
         s->local[i].open = fr->local_open[i];
     }
+    if (fr->cam) {
+        s->view = 1;
+        s->cam = *fr->cam;
+        s->view_w = fr->view_w, s->view_h = fr->view_h;
+    }
 }
 
 /* Plans the frame; 0 when no pass needs to run (the kept image holds). */
@@ -188,8 +193,11 @@ static int plan(hfs_gles *g, hfs_gles_frame *fr)
     frame_signature(fr, &sig);
     const size_t n_img = (size_t)fr->L.w * fr->L.h * 3;
     const int kept = g->last_img && g->last_img_cap >= n_img;
-    if (hfs_gles_plan_frame(&g->plan, &sig, terrain_why) == 0 && kept)
+    const int view_kept = !fr->cam || hfs_gles_view_copy_kept(g, fr);
+    if (hfs_gles_plan_frame(&g->plan, &sig, terrain_why) == 0 && kept && view_kept)
         return 0;
+    if (!view_kept) /* e.g. the first view after a failed one */
+        g->plan.run[HFS_PASS_VIEW][0] = 1;
     /* The readback needs this frame's output scale, and a shaded frame is
      * read back: the two go together (as does a frame without a kept
      * image, e.g. the first after a failure). */
@@ -277,20 +285,26 @@ int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     if (!plan(g, fr)) { /* nothing changed: no pass; the last image again */
         memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
         for (int p = 0; p < HFS_PASS_COUNT; ++p)
-            mark_cached(g, p);
-        return HFS_OK;
+            if (p != HFS_PASS_VIEW || fr->cam)
+                mark_cached(g, p);
+        return HFS_OK; /* plan() copied the kept view */
     }
     g->stats.offset_mismatches = 0;
     for (int p = 0; p < HFS_PASS_COUNT; ++p) {
         if (p == HFS_PASS_SHADE && !fr->run[p][0]) {
-            /* Neither shading nor read-back: the kept image holds. */
+            /* Neither shading nor read-back: the kept image holds; the
+             * passes after the read-back (the view) may still run. */
             memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
             mark_cached(g, HFS_PASS_SHADE);
+            mark_cached(g, HFS_PASS_BOUNCE);
             mark_cached(g, HFS_PASS_READBACK);
-            return HFS_OK;
+            p = HFS_PASS_READBACK;
+            continue;
         }
         if ((rc = run_pass(g, fr, p, err)))
             return rc;
+        if (p == HFS_PASS_SHADE) /* what the lit targets hold, for later views */
+            g->lit_scale = fr->out_scale;
     }
     return count_fetches(g, fr, err);
 }

@@ -35,6 +35,7 @@ static void declare_inputs(hfs_gles_plan *gp)
     gp->in_local_rad = hfs_plan_input(p, "local radiance");
     gp->in_light_set = hfs_plan_input(p, "light set");
     gp->in_bounce = hfs_plan_input(p, "bounce settings");
+    gp->in_camera = hfs_plan_input(p, "camera");
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         snprintf(name, sizeof name, "key %d swath", i);
         gp->in_key_geom[i] = hfs_plan_input(p, name);
@@ -99,8 +100,10 @@ int hfs_gles_plan_init(hfs_gles_plan *gp, hfs_error *err)
     gp->pr_targets = node_find(p, "output targets", 0);
     gp->pr_image = node_find(p, "image", 0);
     gp->pr_bounced = node_find(p, "bounced targets", 0);
+    gp->pr_view = node_find(p, "view image", 0);
     int ok = gp->pr_pyramid >= 0 && gp->pr_env >= 0 && gp->pr_transfer >= 0 &&
              gp->pr_targets >= 0 && gp->pr_image >= 0 && gp->pr_bounced >= 0;
+    ok &= gp->pr_view >= 0;
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         ok &= (gp->pr_key[i] = node_find(p, "key %d horizons", i)) >= 0;
         ok &= (gp->pr_kfactor[i] = node_find(p, "key %d factor", i)) >= 0;
@@ -114,6 +117,14 @@ int hfs_gles_plan_init(hfs_gles_plan *gp, hfs_error *err)
 static int swath_equal(const hfs_swath *a, const hfs_swath *b)
 {
     return a->n == b->n && a->full == b->full && a->phi0 == b->phi0 && a->dphi == b->dphi;
+}
+
+static int camera_equal(const hfs_camera *a, const hfs_camera *b)
+{
+    return a->azimuth == b->azimuth && a->elevation == b->elevation &&
+           a->distance == b->distance && a->fov == b->fov && a->target[0] == b->target[0] &&
+           a->target[1] == b->target[1] && a->target[2] == b->target[2] &&
+           a->exaggeration == b->exaggeration && a->ortho == b->ortho;
 }
 
 /* Marks the inputs that differ between the last frame and now. */
@@ -174,13 +185,17 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
     }
     if (rad)
         hfs_plan_change(p, gp->in_local_rad, "local radiance changed");
+    if (a->view != b->view || a->view_w != b->view_w || a->view_h != b->view_h ||
+        (b->view && !camera_equal(&a->cam, &b->cam)))
+        hfs_plan_change(p, gp->in_camera, "camera or view size changed");
     if (a->bounces != b->bounces || a->bounce_dirs != b->bounce_dirs || a->refine != b->refine ||
         a->capped != b->capped)
         hfs_plan_change(p, gp->in_bounce, "bounce settings changed");
 }
 
 /* The bounce pass reads the grid's horizons when they cap its bands, and
- * the read-back the bounced targets when the frame has bounces. */
+ * the read-back and the view the bounced targets when the frame has
+ * bounces. */
 static void bounce_reads(hfs_gles_plan *gp, const hfs_gles_frame_sig *now)
 {
     hfs_plan *p = &gp->p;
@@ -201,6 +216,16 @@ static void bounce_reads(hfs_gles_plan *gp, const hfs_gles_frame_sig *now)
         reads[n++] = gp->pr_bounced;
     reads[n] = -1;
     hfs_plan_pass_reads(p, gp->pass[HFS_PASS_READBACK][0], reads);
+    n = 0;
+    reads[n++] = gp->pr_pyramid;
+    reads[n++] = gp->pr_targets;
+    reads[n++] = gp->in_env_light;
+    reads[n++] = gp->in_light_set;
+    reads[n++] = gp->in_camera;
+    if (now->bounces > 0)
+        reads[n++] = gp->pr_bounced;
+    reads[n] = -1;
+    hfs_plan_pass_reads(p, gp->pass[HFS_PASS_VIEW][0], reads);
 }
 
 int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const char *terrain_why)
@@ -240,6 +265,8 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
 
     hfs_plan_set need = {{0}};
     hfs_plan_set_add(&need, gp->pr_image);
+    if (now->view)
+        hfs_plan_set_add(&need, gp->pr_view);
     gp->deferred = 0;
     if (gp->amortize > 0 && !terrain_why)
         gp->n_run = hfs_plan_frame_amortized(p, &need, gp->amortize, gp->steps, &gp->deferred);
@@ -306,6 +333,8 @@ void hfs_gles_plan_report(const hfs_gles_plan *gp, hfs_frame_report *out)
         if (!s->run && !strcmp(s->reason, "not needed") &&
             (!strncmp(gp->p.pass[i].name, "key ", 4) || !strncmp(gp->p.pass[i].name, "local ", 6)))
             continue;
+        if (!s->run && !strcmp(s->reason, "not needed") && !strcmp(gp->p.pass[i].name, "view"))
+            continue; /* a frame without a view */
         hfs_frame_step *o = &out->step[out->n_steps++];
         snprintf(o->pass, sizeof o->pass, "%s", gp->p.pass[i].name);
         o->ran = s->run;

@@ -35,6 +35,11 @@
  *                     cap the bands)        writes the bounced targets
  *            readback reads the output targets, bounce settings (and the
  *                     bounced targets with bounces)   writes the image
+ *            view     reads pyramid, output targets (and the bounced
+ *                     targets with bounces), env light, light set,
+ *                     camera (camera and view size)  writes view image
+ *                     (needed only by frames with a view: a camera move
+ *                     reruns the view alone)
  * A key light's horizons depend only on its swath (the sample directions):
  * moved inside it, the light costs its factor pass and the shading; the
  * environment's transfer vectors and the key factors do not depend on
@@ -50,6 +55,7 @@
 #include "frame_plan.h"
 #include "hfshade.h"
 #include "pass.h"
+#include "view_camera.h"
 
 #define HFS_GLES_PLAN_KEYS HFS_MAX_KEY_LIGHTS
 
@@ -75,6 +81,9 @@ typedef struct hfs_gles_frame_sig {
         float le[3];
         int open;                 /* hfs_local_light_open: no ratios needed */
     } local[HFS_MAX_LOCAL_LIGHTS];
+    int view;                     /* the frame has a 3-D view: */
+    hfs_camera cam;               /* its camera */
+    int view_w, view_h;           /* and size */
 } hfs_gles_frame_sig;
 
 /* Instances of a pass: at most this many (the most lights of a kind). */
@@ -87,6 +96,7 @@ typedef struct hfs_gles_plan {
     int in_local_geom[HFS_MAX_LOCAL_LIGHTS];
     int in_light_set;             /* which light kinds / how many lights */
     int in_bounce;                /* bounce settings */
+    int in_camera, pr_view;       /* the 3-D view: camera and size; its image */
     int in_key_geom[HFS_GLES_PLAN_KEYS], in_key_dir[HFS_GLES_PLAN_KEYS];
     int in_key_rad[HFS_GLES_PLAN_KEYS];
     int pr_pyramid, pr_env, pr_transfer, pr_targets, pr_image, pr_bounced;

@@ -17,6 +17,7 @@ extern const char hfs_gles_sh_product_src[];
 
 typedef struct program_row {
     const char *shader;   /* "env_horizons.frag" */
+    const char *vert;     /* "fullscreen.vert", or the row's own (HFS_PROGRAM_VS) */
     int product;
     const char *samplers; /* space-separated, unit = position */
     const char *blocks;
@@ -24,15 +25,19 @@ typedef struct program_row {
 
 static const program_row rows[HFS_PROG_COUNT] = {
 #define HFS_PROGRAM(id, shader, product, samplers, blocks) \
-    [id] = {#shader ".frag", product, samplers, blocks},
+    [id] = {#shader ".frag", "fullscreen.vert", product, samplers, blocks},
+#define HFS_PROGRAM_VS(id, vert, shader, product, samplers, blocks) \
+    [id] = {#shader ".frag", #vert ".vert", product, samplers, blocks},
 #include "programs.def"
 #undef HFS_PROGRAM
+#undef HFS_PROGRAM_VS
 };
 
 static const char *const block_names[HFS_BLOCK_COUNT] = {
     [HFS_BLOCK_SCALES] = "HfsScales", [HFS_BLOCK_SWATH] = "HfsSwath",
     [HFS_BLOCK_SHADE] = "HfsShade", [HFS_BLOCK_KEYS] = "HfsKeys", [HFS_BLOCK_LOCAL] = "HfsLocal",
-    [HFS_BLOCK_BOUNCE] = "HfsBounce"};
+    [HFS_BLOCK_BOUNCE] = "HfsBounce",
+    [HFS_BLOCK_VIEW] = "HfsView"};
 
 const char *hfs_gles_program_shader(hfs_gles_program_id id)
 {
@@ -145,13 +150,13 @@ static int bind_interface(const hfs_gl *gl, GLuint id, const program_row *row, h
     return HFS_OK;
 }
 
-/* "gles_lib + [product] + pass", linked with fullscreen.vert. */
+/* "gles_lib + [product] + pass", linked with the row's vertex shader. */
 static int build(const hfs_gl *gl, const program_row *row, const hfs_gles_variant *v,
                  GLuint *out, hfs_error *err)
 {
     const char *lib = hfs_shader_source("gles_lib.frag");
     const char *pass = hfs_shader_source(row->shader);
-    const char *vert = hfs_shader_source("fullscreen.vert");
+    const char *vert = hfs_shader_source(row->vert);
     if (!lib || !pass || !vert)
         return hfs_fail(err, HFS_E_INVALID, "backend gles: shader %s not embedded", row->shader);
     const char *prod = row->product ? hfs_gles_sh_product_src : "";
@@ -168,7 +173,7 @@ static int build(const hfs_gl *gl, const program_row *row, const hfs_gles_varian
     char bufs[HFS_GLES_MAX_DEFINES][32];
     const char *defs[HFS_GLES_MAX_DEFINES + 1];
     hfs_gles_variant_defines(v, bufs, defs);
-    int rc = hfs_gl_program_from_sources(gl, "fullscreen.vert", vert, row->shader, src, defs,
+    int rc = hfs_gl_program_from_sources(gl, row->vert, vert, row->shader, src, defs,
                                          out, err);
     free(src);
     if (rc)

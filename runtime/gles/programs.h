@@ -25,7 +25,8 @@ typedef enum hfs_gles_program_id {
 
 /* Uniform blocks: fixed binding points (the names of programs.def). */
 enum hfs_gles_block { HFS_BLOCK_SCALES, HFS_BLOCK_SWATH, HFS_BLOCK_SHADE, HFS_BLOCK_KEYS,
-                      HFS_BLOCK_LOCAL, HFS_BLOCK_BOUNCE, HFS_BLOCK_COUNT };
+                      HFS_BLOCK_LOCAL, HFS_BLOCK_BOUNCE, HFS_BLOCK_VIEW,
+                      HFS_BLOCK_COUNT };
 
 /* The variant of a program: each field is one #define of the shaders
  * (0 = not defined; the shaders' defaults then apply). */

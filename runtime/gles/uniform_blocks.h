@@ -10,6 +10,7 @@
  *   HfsKeys     key-light records                              (key_visibility)
  *   HfsShade    the shading constants                                   (shade)
  *   HfsLocal    local lights                         (local_visibility, shade)
+ *   HfsView     the 3-D view's camera and sky                  (view, view_sky)
  *   offsets     the shader's float form of the sample offsets and a check
  *               that it classifies every (direction, scale) sample as the
  *               CPU reference's double form does (DESIGN.md, "GLES path").
@@ -221,5 +222,27 @@ typedef struct hfs_gles_bounce_head {
     float pad[2];
 } hfs_gles_bounce_head;
 _Static_assert(sizeof(hfs_gles_bounce_head) == 16, "HfsBounce.u_bhead is one vec4");
+
+/* HfsView (view.vert.glsl, view.frag.glsl, view_sky.frag.glsl; filled by
+ * runtime/gles/pass_view.c), std140, by name. */
+typedef struct hfs_gles_view_block {
+    float mvp[16];      /* u_mvp: eye-relative world -> clip, column-major     */
+    float eye[4];       /* u_eye: eye (world), 1 for ortho                     */
+    float zmap[4];      /* u_zmap: (z per normalized height, z offset, dx,
+                           lit texture scale -> view scale)                    */
+    float sizes[4];     /* u_sizes: (W, H, view w, view h)                     */
+    float fwd[4];       /* u_fwd: forward, then the side walls' bottom z       */
+    float right[4];     /* u_right: right * tan(fov/2) * w/h                   */
+    float up[4];        /* u_up: up * tan(fov/2)                               */
+    float env[3][16];   /* u_env[12]: sky SH times the view scale, per channel */
+} hfs_gles_view_block;
+_Static_assert(offsetof(hfs_gles_view_block, eye) == 4 * 16, "HfsView.u_eye");
+_Static_assert(offsetof(hfs_gles_view_block, zmap) == 5 * 16, "HfsView.u_zmap");
+_Static_assert(offsetof(hfs_gles_view_block, sizes) == 6 * 16, "HfsView.u_sizes");
+_Static_assert(offsetof(hfs_gles_view_block, fwd) == 7 * 16, "HfsView.u_fwd");
+_Static_assert(offsetof(hfs_gles_view_block, right) == 8 * 16, "HfsView.u_right");
+_Static_assert(offsetof(hfs_gles_view_block, up) == 9 * 16, "HfsView.u_up");
+_Static_assert(offsetof(hfs_gles_view_block, env) == 10 * 16, "HfsView.u_env");
+_Static_assert(sizeof(hfs_gles_view_block) == 22 * 16, "HfsView size");
 
 #endif /* HFS_GLES_UNIFORM_BLOCKS_H */
