@@ -87,9 +87,6 @@ static int gles_render_view(void *state, const hfs_field *f, const hfs_lighting 
                             const hfs_quality *q, const hfs_camera *cam, int w, int h,
                             hfs_image *lit, float *view, hfs_error *err)
 {
-    if (l->bounces > 0)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "bounces %d: backend gles has no indirect "
-                        "light yet (--backend cpu or truth computes it)", l->bounces);
     return hfs_gles_render_view(state, f, l, q, cam, w, h, lit, view, err);
 }
 

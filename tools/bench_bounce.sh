@@ -4,7 +4,8 @@
 # under the demo's sky + sun, the CPU reference against the truth with the
 # same bounces: the whole image's mean and p99 error (fractions of the
 # unshadowed maximum), the indirect part alone (image(B) - image(0))
-# against the truth's (mean error over its largest value), and the wall
+# against the truth's (mean error over its largest value, and the mean
+# signed error over the same: its bias), and the wall
 # time of each (this machine's cores).  Prints a Markdown table.
 # usage: tools/bench_bounce.sh [BUILD_DIR] [SIZE] [TRUTH_SAMPLES] [BACKENDS] [MAX_BOUNCES]
 #        (defaults: build 128 256 cpu 3; BACKENDS e.g. cpu,gles: each against the same truth)
@@ -20,8 +21,8 @@ MB=${5:-3}
 C=$B/bench-cache
 mkdir -p "$C"
 bench_scenes "$B/tools/hfgen" "$C" "$N"
-echo "| scene (${N}x${N}) | backend | bounces | mean abs | p99 abs | indirect alone | backend s | truth s |"
-echo "|---|---|---|---|---|---|---|---|"
+echo "| scene (${N}x${N}) | backend | bounces | mean abs | p99 abs | indirect alone | its bias | backend s | truth s |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for sc in "${scenes[@]}"; do
     IFS='|' read -r name hf extra <<<"$sc"
     keys=()
