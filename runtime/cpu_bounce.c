@@ -84,8 +84,9 @@ static double direct_horizon(const bounce_ctx *b, double *omega, int d, int i, i
 
 /* sum_bands Lo_{b-1} W over slice d at receiver (i, j): the receiver's own
  * cell, then each scale's sample and `refine` more between it and the next
- * (the spacing the refined horizons reach about their max; here
- * everywhere, since every new top casts a band), nearest first. */
+ * (the spacing the refined horizons reach about their max), nearest first;
+ * the highest sample of each scale's group casts one band, lit at its
+ * position (bounce_gather.frag says why). */
 static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j,
                          const double n[3], double acc[3])
 {
@@ -104,11 +105,17 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
     for (int sc = b->n_levels - 1; sc >= 0 && top < cap; --sc) {
         const double d0 = hfs_cpu_pyramid_spacing(b->pyr, sc);
         const double h0 = hfs_cpu_pyramid_sample(b->pyr, taps[sc].read, i, j);
-        for (int q = 0; q <= b->refine && top < cap; ++q) {
+        double best = top, bx = 0.0, by = 0.0;
+        int off = 0;
+        for (int q = 0; q <= b->refine && !off; ++q) {
             double e, gx, gy;
-            if (sample(b, taps[sc].read, h0, i, j, c, s, d0 * b->step[q], &e, &gx, &gy))
-                top = cast(b, a, n[2], top, fmin(e, cap), gx, gy, acc);
+            if (!(off = !sample(b, taps[sc].read, h0, i, j, c, s, d0 * b->step[q], &e, &gx, &gy)) &&
+                e > best)
+                best = e, bx = gx, by = gy;
         }
+        top = cast(b, a, n[2], top, fmin(best, cap), bx, by, acc);
+        if (off)
+            break; /* the grid is convex: every farther sample is off too */
     }
 }
 

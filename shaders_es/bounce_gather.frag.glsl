@@ -118,25 +118,39 @@ bool own_cell(ivec2 g, vec2 cs, vec4 ns, vec4 sc, vec2 h0, out float t, out vec2
     return true;
 }
 
-/* The scales, nearest first, and u_refine samples after each (distances
- * d 2^(q / ((refine + 1) k))), until the top reaches the cap or a sample
- * leaves the grid (then all farther ones do: the grid is convex). */
+/* The scales, nearest first, each with u_refine samples after it
+ * (distances d 2^(q / ((refine + 1) k))): the highest of a scale's group
+ * casts one band, lit at its position, until the top reaches the cap or a
+ * sample leaves the grid (then all farther ones do: the grid is convex).
+ * One band per scale, not per sample: the samples between scales find the
+ * peaks the scales miss (the band's top), while the radiance a band takes
+ * changes little within an octave's fraction, and each band costs a
+ * radiance fetch and an atan. */
 void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
 {
     float step = exp2(1.0 / (float(u_refine + 1) * u_bhead.y));
-    for (int i = HFS_NLEV - 1; i >= 0 && w.t_top < w.t_cap; --i) {
+    bool in_grid = true;
+    for (int i = HFS_NLEV - 1; i >= 0 && in_grid && w.t_top < w.t_cap; --i) {
         vec4 sc = u_scale[i];
         vec2 h = hx[int(sc.z)];
-        float best = (u_vmax - hfs_h(h)) * sc.y; /* the largest slope at distance d */
-        float f = 1.0;
-        for (int q = 0; q <= u_refine && w.t_top < w.t_cap; ++q, f *= step) {
+        float most = (u_vmax - hfs_h(h)) * sc.y; /* the largest slope at distance d */
+        float f = 1.0, t_best = w.t_top;
+        vec2 o_best = vec2(0.0);
+        for (int q = 0; q <= u_refine; ++q, f *= step) {
             vec2 o;
-            if (!hfs_scale_offset(g, u_size, sc.x * f, cs, o))
-                return;
-            if (best <= w.t_top * f)
-                continue;
-            cast_band(w, hfs_scale_slope(u_levels, g, u_size, o, sc, h) / f, g, o);
+            if (!hfs_scale_offset(g, u_size, sc.x * f, cs, o)) {
+                in_grid = false;
+                break;
+            }
+            if (most <= t_best * f)
+                continue; /* cannot rise above the group's best */
+            float t = hfs_scale_slope(u_levels, g, u_size, o, sc, h) / f;
+            if (t > t_best) {
+                t_best = t;
+                o_best = o;
+            }
         }
+        cast_band(w, t_best, g, o_best);
     }
 }
 
