@@ -14,8 +14,11 @@
  * direct light's horizon of the slice (the grid's horizons of
  * env_horizons.frag, and the own cell), so what a receiver gathers and the
  * sky it sees never overlap (lights.h hfs_bounce_capped).
- * Writes E_b = dphi / pi * sum over slices and bands; the exit radiance
- * of the bounce is rho(x) E_b (bounce_light.frag).
+ * Writes E_b = dphi / pi * sum over slices and bands (RGB); HFS_SLICE also
+ * the receiver's occluded part over pi, W = dphi / pi sum over slices of
+ * the clamped cosine's integral below the direct horizon (alpha: 1 would
+ * be the whole hemisphere), by which bounce_light.frag scales E to each
+ * texel's own.
  * Samples whose best case (the field's largest height, u_vmax) cannot
  * rise above the current top are skipped without a fetch: they could not
  * cast a band.
@@ -171,6 +174,7 @@ void main()
                     fine.x;
     }
     vec3 acc = vec3(0.0);
+    float w_occ = 0.0;
 #ifdef HFS_SLICE
     vec4 hor = vec4(0.0);
 #endif
@@ -181,6 +185,7 @@ void main()
         w.b = n.z;
         w.t_top = -w.a / n.z;
         w.s_top = slice_cosine(w.a, w.b, atan(-w.a, n.z));
+        float s0 = w.s_top;
         w.t_cap = 1e30;
         w.acc = vec3(0.0);
         /* The own cell's band, then the cap: the direct horizon is the
@@ -197,8 +202,12 @@ void main()
 #endif
         walk_scales(w, g, cs, hx);
         acc += w.acc;
+#ifdef HFS_SLICE
+        if (w.t_cap > -w.a / n.z) /* the occluded part below the direct horizon */
+            w_occ += s0 - slice_cosine(w.a, w.b, atan(w.t_cap));
+#endif
     }
     vec3 e = acc * u_bhead.x;
     e = clamp(e, vec3(0.0), vec3(65504.0));
-    o_e = vec4(mix(vec3(0.0), e, equal(e, e)), 1.0);
+    o_e = vec4(mix(vec3(0.0), e, equal(e, e)), clamp(w_occ * u_bhead.x, 0.0, 1.0));
 }

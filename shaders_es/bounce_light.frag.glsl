@@ -5,14 +5,29 @@
  *       u_count)} E_l(x),
  * E_l read bilinearly from the grid like the local lights' ratios
  * (hfs_grid_uv) and rho(x) = the albedo times the texel's albedo map
- * (HFS_ALBEDO_MAP).  Drawn twice over: as the radiance the next bounce
+ * (HFS_ALBEDO_MAP).  HFS_SLICE (the bands stop at the direct horizon):
+ * E_l times this texel's own occluded part of the hemisphere over the
+ * receivers' (W_l in the alpha, interpolated like E), the occluded part
+ * being the cosine-weighted solid angle below the direct horizons over pi
+ * (here -2 / sqrt(pi) T_occ,0: the constant coefficient of the slices'
+ * occluded transfer, env_slices.frag).  Between receivers the terrain a
+ * texel sees follows its own normal and horizons, not only its
+ * neighbours' (on rough relief: the indirect part's error at subsample 2
+ * 3.6% -> 2.4% of its largest value on the DEM, BENCHMARKS.md); at a
+ * receiver itself the ratio is 1 up to fp16.  Where W_l < 1e-3 (almost no
+ * terrain seen; fp16 keeps W's digits above that) E_l is taken as it is.  Drawn twice over: as the radiance the next bounce
  * gathers (the direct light alone, or rho E of the last bounce; one
  * target) and as the frame's result (direct + every bounce, an fp16 hi +
  * lo pair like the shading pass's).  Radiances carry the frame's output
  * scale (pass_shade.c).
  */
 // hfs-variant: HFS_ALBEDO_MAP 1
+// hfs-variant: HFS_SLICE 1
 // hfs-variant: HFS_FP32 1
+
+#ifndef HFS_PI
+#define HFS_PI 3.14159265358979
+#endif
 
 precision highp float;
 precision highp int;
@@ -24,7 +39,10 @@ vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 
 uniform highp sampler2D u_hi;            /* the shading pass's output, hi */
 uniform highp sampler2D u_lo;            /* and lo */
-uniform highp sampler2DArray u_e;        /* E_b on the grid, a layer a bounce, LINEAR */
+uniform highp sampler2DArray u_e;        /* (E_b, W_b) on the grid, a layer a bounce, LINEAR */
+#ifdef HFS_SLICE
+uniform highp sampler2D u_t0;            /* the slices' occluded transfer, coefficients 0-3 */
+#endif
 #ifdef HFS_ALBEDO_MAP
 uniform highp sampler2D u_albedo;        /* albedo map (RGB in [0, 1]), full resolution */
 #endif
@@ -48,9 +66,18 @@ void main()
     rho *= texelFetch(u_albedo, p, 0).rgb;
 #endif
     vec2 uv = hfs_grid_uv(p, u_sub, u_size, u_vsize);
+#ifdef HFS_SLICE
+    float w_occ = -texelFetch(u_t0, p, 0).x * (2.0 / sqrt(HFS_PI)); /* over pi */
+#endif
     vec3 e = vec3(0.0);
-    for (int l = 0; l < u_count; ++l)
-        e += texture(u_e, vec3(uv, float(u_first + l))).rgb;
+    for (int l = 0; l < u_count; ++l) {
+        vec4 eb = texture(u_e, vec3(uv, float(u_first + l)));
+#ifdef HFS_SLICE
+        if (eb.a >= 1e-3)
+            eb.rgb *= max(w_occ, 0.0) / eb.a;
+#endif
+        e += eb.rgb;
+    }
     v += rho * e;
     v = clamp(v, vec3(-65504.0), vec3(65504.0));
     v = mix(vec3(0.0), v, equal(v, v));

@@ -74,7 +74,8 @@ static int light(hfs_gles *g, const hfs_gles_frame *fr, GLuint fbo, int direct, 
 {
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
-    const hfs_gles_variant v = {.fp32 = g->caps.fp32, .albedo_map = fr->albedo != NULL};
+    const hfs_gles_variant v = {.fp32 = g->caps.fp32, .albedo_map = fr->albedo != NULL,
+                                .slice = fr->capped};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_LIGHT, &v, &prog, err);
     if (rc || (rc = hfs_gles_program_texture(gl, prog, "u_hi", GL_TEXTURE_2D, g->r.out[0], err)) ||
@@ -83,6 +84,9 @@ static int light(hfs_gles *g, const hfs_gles_frame *fr, GLuint fbo, int direct, 
         return rc;
     if (fr->albedo &&
         (rc = hfs_gles_program_texture(gl, prog, "u_albedo", GL_TEXTURE_2D, g->albedo.tex, err)))
+        return rc;
+    if (fr->capped && (rc = hfs_gles_program_texture(gl, prog, "u_t0", GL_TEXTURE_2D,
+                                                     g->r.transfer[0], err)))
         return rc;
     hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);

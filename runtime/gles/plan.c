@@ -199,14 +199,16 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
 static void bounce_reads(hfs_gles_plan *gp, const hfs_gles_frame_sig *now)
 {
     hfs_plan *p = &gp->p;
-    int reads[8], n = 0;
+    int reads[10], n = 0;
     reads[n++] = gp->pr_targets;
     reads[n++] = gp->pr_pyramid;
     reads[n++] = gp->in_grid;
     reads[n++] = gp->in_albedo;
     reads[n++] = gp->in_bounce;
-    if (now->capped)
+    if (now->capped) { /* the grid's horizons, each texel's occluded part */
         reads[n++] = gp->pr_env;
+        reads[n++] = gp->pr_transfer;
+    }
     reads[n] = -1;
     hfs_plan_pass_reads(p, gp->pass[HFS_PASS_BOUNCE][0], reads);
     n = 0;

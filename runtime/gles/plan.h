@@ -31,8 +31,8 @@
  *                     the terrain can shadow) + local radiance; albedo
  *                                                   writes the output targets
  *            bounce   reads the output targets, pyramid, grid, albedo, bounce
- *                     settings (and env visibility when the grid's horizons
- *                     cap the bands)        writes the bounced targets
+ *                     settings (and env visibility and transfer when the
+ *                     grid's horizons cap the bands)  writes the bounced targets
  *            readback reads the output targets, bounce settings (and the
  *                     bounced targets with bounces)   writes the image
  *            view     reads pyramid, output targets (and the bounced
