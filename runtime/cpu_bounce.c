@@ -25,7 +25,9 @@ typedef struct bounce_ctx {
     const hfs_lighting *l;
     const hfs_cpu_pyramid *pyr;
     const hfs_horizon_plan *plan;
-    int n_dirs, n_levels, k, refine;
+    int n_dirs, n_levels, k, refine; /* refine: the walk's samples after each scale */
+    int direct_refine;    /* the direct light's horizons' (q->refine) */
+    int stride;           /* the bounces' directions: every stride-th of the plan's */
     double dphi;
     double tie;           /* hfs_horizon_tie_slope, as the direct light's */
     int capped;           /* bands stop at the direct horizon (hfs_bounce_capped) */
@@ -36,17 +38,17 @@ typedef struct bounce_ctx {
 } bounce_ctx;
 
 /* The band (top, e] cast by the sample at (gx, gy), when e rises above
- * top: its radiance times its cosine weight into acc; returns the new top. */
+ * top: its radiance (kept in last) times its cosine weight into acc;
+ * returns the new top. */
 static double cast(const bounce_ctx *b, double a, double nz, double top, double e, double gx,
-                   double gy, double acc[3])
+                   double gy, double acc[3], double last[3])
 {
     if (!(e > top))
         return top;
-    double lo[3];
-    hfs_rgb_bilinear(b->prev, b->f->width, b->f->height, gx, gy, lo);
+    hfs_rgb_bilinear(b->prev, b->f->width, b->f->height, gx, gy, last);
     const double wgt = hfs_slice_cosine(a, nz, top) - hfs_slice_cosine(a, nz, e);
     for (int c = 0; c < 3; ++c)
-        acc[c] += lo[c] * wgt;
+        acc[c] += last[c] * wgt;
     return e;
 }
 
@@ -77,7 +79,7 @@ static double direct_horizon(const bounce_ctx *b, double *omega, int d, int i, i
 {
     const double fl = hfs_horizon_floor(n, c, s);
     hfs_horizon_point(b->plan, d, i, j, fl, NULL, NULL, omega);
-    const double e = hfs_horizon_refined(b->plan, d, i, j, omega, 1, fl, b->refine, b->tie, 1,
+    const double e = hfs_horizon_refined(b->plan, d, i, j, omega, 1, fl, b->direct_refine, b->tie, 1,
                                          b->n_levels > 1);
     return fmax(e, atan(first_cell));
 }
@@ -94,12 +96,14 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
     hfs_horizon_plan_dir(b->plan, d, &c, &s);
     const double a = n[0] * c + n[1] * s;
     double top = atan2(-a, n[2]); /* the tangent plane */
+    const double top0 = top;
+    double last[3] = {0.0, 0.0, 0.0};
     const double m1 = hfs_field_first_cell_slope(b->f, i, j, c, s);
     const double cap = b->capped ? direct_horizon(b, omega, d, i, j, n, c, s, m1) : 0.5 * PI;
     /* The receiver's own cell; its band takes the far edge's radiance. */
     const double tc = 1.0 / fmax(fabs(c), fabs(s));
     if (m1 > -DBL_MAX)
-        top = cast(b, a, n[2], top, fmin(atan(m1), cap), i + c * tc, j + s * tc, acc);
+        top = cast(b, a, n[2], top, fmin(atan(m1), cap), i + c * tc, j + s * tc, acc, last);
     const hfs_horizon_tap *taps = hfs_horizon_plan_taps(b->plan, d);
     /* Once the top reaches the cap nothing farther can cast a band. */
     for (int sc = b->n_levels - 1; sc >= 0 && top < cap; --sc) {
@@ -113,9 +117,17 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
                 e > best)
                 best = e, bx = gx, by = gy;
         }
-        top = cast(b, a, n[2], top, fmin(best, cap), bx, by, acc);
+        top = cast(b, a, n[2], top, fmin(best, cap), bx, by, acc, last);
         if (off)
             break; /* the grid is convex: every farther sample is off too */
+    }
+    /* Capped: the terrain reaches the direct horizon, which the sparser
+     * walk may not (a peak between its samples): the last band's radiance
+     * fills the rest. */
+    if (b->capped && top > top0 && top < cap) {
+        const double wgt = hfs_slice_cosine(a, n[2], top) - hfs_slice_cosine(a, n[2], cap);
+        for (int k = 0; k < 3; ++k)
+            acc[k] += last[k] * wgt;
     }
 }
 
@@ -127,7 +139,7 @@ static void bounce_row(void *ctx, int j, int worker)
     for (int i = 0; i < f->width; ++i) {
         double n[3], acc[3] = {0.0, 0.0, 0.0};
         hfs_field_normal(f, i, j, n);
-        for (int d = 0; d < b->n_dirs; ++d)
+        for (int d = 0; d < b->n_dirs; d += b->stride)
             slice_gather(b, omega, d, i, j, n, acc);
         const size_t p = 3 * ((size_t)j * (size_t)f->width + (size_t)i);
         for (int c = 0; c < 3; ++c) {
@@ -166,10 +178,12 @@ int hfs_cpu_bounces(const hfs_field *f, const hfs_lighting *l, const hfs_quality
     hfs_cpu_pyramid *pyr = NULL;
     hfs_horizon_plan *plan = NULL;
     float *prev = malloc(n * sizeof *prev), *cur = malloc(n * sizeof *cur);
-    bounce_ctx b = {.f = f, .l = l, .dphi = 2.0 * PI / q->nphi_env, .k = q->k,
-                    .capped = hfs_bounce_capped(l, q),
-                    .refine = q->refine < HFS_BOUNCE_MAX_REFINE ? q->refine
-                                                                : HFS_BOUNCE_MAX_REFINE};
+    const int nb = hfs_bounce_dirs(q);
+    bounce_ctx b = {.f = f, .l = l, .dphi = 2.0 * PI / nb, .k = q->k,
+                    .stride = q->nphi_env / nb, .capped = hfs_bounce_capped(l, q),
+                    .direct_refine = q->refine,
+                    .refine = q->bounce_refine < HFS_BOUNCE_MAX_REFINE ? q->bounce_refine
+                                                                       : HFS_BOUNCE_MAX_REFINE};
     for (int k = 0; k <= b.refine; ++k)
         b.step[k] = exp2((double)k / ((b.refine + 1) * b.k));
     int rc = (!prev || !cur) ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for "

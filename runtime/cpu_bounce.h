@@ -2,15 +2,19 @@
  * cpu_bounce.h — indirect diffuse light in the CPU reference (issue 16;
  * NS09 sections 4-6 with the exact per-slice weights of issue 15).
  *
- * Bounce b at receiver x: along each of the environment's nphi_env azimuth
- * slices, the horizon is walked outward from the tangent plane: the
- * receiver's own cell (hfs_field_first_cell_slope), then each scale of the
- * multi-scale horizons (cpu_horizon.h) and `refine` samples between it and
+ * Bounce b at receiver x: along hfs_bounce_dirs(q) azimuth slices (every
+ * (nphi_env / that)-th of the environment's directions, lights.h), the
+ * horizon is walked outward from the tangent plane: the receiver's own
+ * cell (hfs_field_first_cell_slope), then each scale of the multi-scale
+ * horizons (cpu_horizon.h) with q->bounce_refine samples after it towards
  * the next (read as the scale reads), nearest first.  A sample that rises
  * above everything nearer casts the band of elevations between the old top
  * and its own: those directions hit the terrain between the two samples,
  * and the band takes the sample's radiance Lo_{b-1} (NS09's casting set,
- * the occluder's exit radiance for its band).  The band's weight is the
+ * the occluder's exit radiance for its band); of a scale's group of
+ * samples the highest casts one band (the samples find the peaks between
+ * scales, the band's radiance changes little within the group, and each
+ * band costs the GLES gather a fetch and an atan).  The band's weight is the
  * clamped cosine's exact integral over it (hfs_slice_cosine), so
  *   Lo_b(x) = rho(x) / pi * sum_j dphi sum_bands Lo_{b-1}(y_i) W(band_i).
  * Lo_{b-1} is read bilinearly at the sample's grid position from the full

@@ -175,6 +175,17 @@ typedef struct hfs_quality {
                                 about the highest, 4; 0: the seeds' (plain
                                 max for the environment, SN08's B-spline
                                 max over scale for key lights)              */
+    int nphi_bounce;         /* azimuths the indirect bounces gather along:
+                                the largest divisor of nphi_env not above
+                                it, every (nphi_env / that)-th environment
+                                direction (so that the direct horizons cap
+                                them), 12                                   */
+    int bounce_refine;       /* samples after each scale of the bounces'
+                                walk, 1                                     */
+    int bounce_subsample;    /* grid step of the GLES path's bounce gather
+                                1|2|4|8, at least subsample's (the gathered
+                                light is scaled to each texel's own
+                                occluded part), 4                           */
     int nphi_local;          /* azimuth samples per local light's full swath, 16 */
     int local_full_swath;    /* 0: per-receiver partial swath where the light
                                 does not surround the receiver (default);

@@ -27,6 +27,14 @@ int hfs_bounce_capped(const hfs_lighting *l, const hfs_quality *q)
     return hfs_env_contributes(l) && q->visibility == HFS_VIS_SLICE;
 }
 
+int hfs_bounce_dirs(const hfs_quality *q)
+{
+    int n = q->nphi_bounce < q->nphi_env ? q->nphi_bounce : q->nphi_env;
+    while (n > 1 && q->nphi_env % n)
+        --n;
+    return n > 0 ? n : 1;
+}
+
 double hfs_key_vis_alpha(double alpha)
 {
     return alpha > HFS_MIN_VIS_ALPHA ? alpha : HFS_MIN_VIS_ALPHA;

@@ -31,6 +31,11 @@ int hfs_env_contributes(const hfs_lighting *l);
  * Every backend that gathers bounces follows this. */
 int hfs_bounce_capped(const hfs_lighting *l, const hfs_quality *q);
 
+/* The bounces' azimuths: the largest divisor of q->nphi_env not above
+ * q->nphi_bounce (at least 1); they are every (nphi_env / n)-th of the
+ * environment's directions, from its first. */
+int hfs_bounce_dirs(const hfs_quality *q);
+
 /* A local light costs something iff it is enabled, has a positive radiance
  * channel and a positive radius (a point has zero solid angle: 0, as the
  * truth).  Every backend skips exactly the same lights. */

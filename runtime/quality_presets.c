@@ -40,6 +40,9 @@ void hfs_quality_defaults(hfs_quality *q)
     memset(q, 0, sizeof *q);
     q->nphi_local = 16;
     q->refine = 4; /* BENCHMARKS.md "... horizons refined between scales" */
+    q->nphi_bounce = 12; /* BENCHMARKS.md "Indirect light" */
+    q->bounce_refine = 1;
+    q->bounce_subsample = 4;
     q->local_full_swath = 0;
     q->threads = 0;
     q->truth_azimuths = 720;

@@ -334,6 +334,8 @@ int hfs_validate_quality(const hfs_quality *q, hfs_error *err)
     const struct { hfs_scene_key_id id; int value; } counts[] = {
         {HFS_SK_K, q->k}, {HFS_SK_OFFSET, q->offset}, {HFS_SK_NPHI_ENV, q->nphi_env},
         {HFS_SK_NPHI_KEY, q->nphi_key}, {HFS_SK_REFINE, q->refine},
+        {HFS_SK_NPHI_BOUNCE, q->nphi_bounce}, {HFS_SK_BOUNCE_REFINE, q->bounce_refine},
+        {HFS_SK_BOUNCE_SUBSAMPLE, q->bounce_subsample},
         {HFS_SK_NPHI_LOCAL, q->nphi_local},
         {HFS_SK_SUBSAMPLE, q->subsample}, {HFS_SK_THREADS, q->threads},
         {HFS_SK_TRUTH_AZIMUTHS, q->truth_azimuths}, {HFS_SK_TRUTH_SAMPLES, q->truth_light_samples},

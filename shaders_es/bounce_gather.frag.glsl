@@ -1,13 +1,14 @@
 /*
  * bounce_gather.frag - one indirect bounce on the visibility grid
  * (runtime/cpu_bounce.h, DESIGN.md "Indirect light"), the CPU reference's
- * walk at each grid receiver g: along each of the environment's azimuth
- * slices, outward from the receiver's tangent plane, its own cell (the
- * near end's one-sided slopes or the far edge, whichever rises more:
- * field_geom.h hfs_field_first_cell_slope), then each scale of the pyramid
- * and u_refine samples between it and the next, read as the horizons read
- * them.  A sample rising above everything nearer casts the band of
- * elevations between the old top and its own, lit by the previous
+ * walk at each grid receiver g: along each bounce azimuth (u_edir[j * u_bhead.z]: every
+ * u_bhead.z-th of the environment's), outward from the receiver's tangent
+ * plane, its own cell (the near end's one-sided slopes or the far edge,
+ * whichever rises more: field_geom.h hfs_field_first_cell_slope), then
+ * each scale of the pyramid and u_refine samples after it, read as the
+ * horizons read them.  The highest sample of a scale's group, when it
+ * rises above everything nearer, casts the band of elevations between the
+ * old top and its own, lit by the previous
  * bounce's exit radiance at the sample (u_rad, bilinear) and weighted by
  * the clamped cosine's exact integral over the band (slice_cosine, as
  * slice_light.c hfs_slice_cosine).  HFS_SLICE: the bands stop at the
@@ -15,10 +16,10 @@
  * env_horizons.frag, and the own cell), so what a receiver gathers and the
  * sky it sees never overlap (lights.h hfs_bounce_capped).
  * Writes E_b = dphi / pi * sum over slices and bands (RGB); HFS_SLICE also
- * the receiver's occluded part over pi, W = dphi / pi sum over slices of
- * the clamped cosine's integral below the direct horizon (alpha: 1 would
- * be the whole hemisphere), by which bounce_light.frag scales E to each
- * texel's own.
+ * the receiver's occluded part over pi, W = dphi / pi sum over all of the
+ * environment's slices of the clamped cosine's integral below the direct
+ * horizon (alpha: 1 would be the whole hemisphere), by which
+ * bounce_light.frag scales E to each texel's own.
  * Samples whose best case (the field's largest height, u_vmax) cannot
  * rise above the current top are skipped without a fetch: they could not
  * cast a band.
@@ -33,7 +34,10 @@
 #define HFS_NLAYERS 25
 #endif
 #ifndef HFS_NDIR
-#define HFS_NDIR 32
+#define HFS_NDIR 32                      /* the environment's directions */
+#endif
+#ifndef HFS_NBDIR
+#define HFS_NBDIR 16                     /* the bounces': every u_bhead.z-th of those */
 #endif
 #ifndef HFS_HALF_PI
 #define HFS_HALF_PI 1.5707963267948966
@@ -59,7 +63,11 @@ uniform highp sampler2D u_rad;           /* Lo_{b-1}, full resolution, LINEAR */
 uniform highp sampler2DArray u_hor;      /* grid horizons, tan(x / 2), 4 a layer */
 #endif
 uniform ivec2 u_size;                    /* W, H */
-uniform int u_sub;
+uniform int u_sub;                       /* the bounce grid's step */
+#ifdef HFS_SLICE
+uniform int u_vsub;                      /* the visibility grid's (u_hor's) step */
+uniform ivec2 u_vsize;                   /* and size */
+#endif
 uniform float u_vmax;                    /* largest normalized height, a hair up */
 uniform int u_refine;                    /* samples per scale besides the scale's own */
 
@@ -67,8 +75,8 @@ layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
 };
 layout(std140) uniform HfsBounce {
-    vec4 u_bhead;                        /* (dphi / pi, levels per octave k, 0, 0) */
-    vec4 u_bdir[HFS_NDIR];               /* (cos, sin, 0, 0) */
+    vec4 u_bhead;                        /* (dphi / pi, levels per octave k, stride, 0) */
+    vec4 u_edir[HFS_NDIR];               /* the environment's (cos, sin, 0, 0) */
 };
 
 out vec4 o_e;
@@ -88,6 +96,7 @@ struct Walk {
     float s_top;     /* slice_cosine at its elevation */
     float t_cap;     /* the slope where the bands stop */
     vec3 acc;        /* sum of Lo_{b-1} W */
+    vec3 last;       /* the last band's radiance */
 };
 
 /* A sample at grid position g + o rising to slope t: casts the band
@@ -100,6 +109,7 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
     vec3 lo = texture(u_rad, (vec2(g) + o + 0.5) / vec2(u_size)).rgb;
     float s = slice_cosine(w.a, w.b, atan(t));
     w.acc += lo * (w.s_top - s);
+    w.last = lo;
     w.t_top = t;
     w.s_top = s;
 }
@@ -157,6 +167,39 @@ void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
     }
 }
 
+#ifdef HFS_SLICE
+/* The direct horizon's slope along environment direction je: the grid's
+ * far horizon (tan(x / 2) in u_hor) or the own cell's slope t1, whichever
+ * is higher. */
+float direct_horizon(ivec2 g, int je, float t1)
+{
+    /* g is a visibility receiver: a multiple of u_vsub, or the last. */
+    ivec2 v = ivec2(g.x == u_size.x - 1 ? u_vsize.x - 1 : g.x / u_vsub,
+                    g.y == u_size.y - 1 ? u_vsize.y - 1 : g.y / u_vsub);
+    float u = texelFetch(u_hor, ivec3(v, je / 4), 0)[je % 4];
+    return max(u > -1.0 ? 2.0 * u / max(1.0 - u * u, 1e-30) : -1e30, t1);
+}
+
+/* The receiver's occluded part over pi: dphi / pi sum over all of the
+ * environment's directions of the clamped cosine's integral between the
+ * tangent plane and the direct horizon (what env_slices.frag's T_occ,0
+ * holds per texel, so that their ratio is 1 at a receiver). */
+float occluded_weight(ivec2 g, vec3 n, vec4 ns, vec4 fine, vec2 h0)
+{
+    float w = 0.0;
+    for (int je = 0; je < HFS_NDIR; ++je) {
+        vec2 cs = u_edir[je].xy;
+        float a = n.x * cs.x + n.y * cs.y, t1;
+        vec2 o1;
+        own_cell(g, cs, ns, fine, h0, t1, o1);
+        float t_cap = direct_horizon(g, je, t1);
+        if (t_cap > -a / n.z)
+            w += slice_cosine(a, n.z, atan(-a, n.z)) - slice_cosine(a, n.z, atan(t_cap));
+    }
+    return w * (2.0 / float(HFS_NDIR));
+}
+#endif
+
 void main()
 {
     ivec2 g = hfs_receiver(u_size, u_sub);
@@ -174,40 +217,41 @@ void main()
                     fine.x;
     }
     vec3 acc = vec3(0.0);
-    float w_occ = 0.0;
-#ifdef HFS_SLICE
-    vec4 hor = vec4(0.0);
-#endif
-    for (int j = 0; j < HFS_NDIR; ++j) {
-        vec2 cs = u_bdir[j].xy;
+    for (int j = 0; j < HFS_NBDIR; ++j) {
+        int je = j * int(u_bhead.z); /* the environment's direction */
+        vec2 cs = u_edir[je].xy;
         Walk w;
         w.a = n.x * cs.x + n.y * cs.y;
         w.b = n.z;
-        w.t_top = -w.a / n.z;
+        w.t_top = -w.a / n.z; /* the tangent plane */
         w.s_top = slice_cosine(w.a, w.b, atan(-w.a, n.z));
-        float s0 = w.s_top;
         w.t_cap = 1e30;
         w.acc = vec3(0.0);
-        /* The own cell's band, then the cap: the direct horizon is the
-         * grid's far one or the own cell, whichever is higher. */
+        w.last = vec3(0.0);
+        float s0 = w.s_top;
+        /* The own cell's band, then the cap: the direct horizon. */
         float t1;
         vec2 o1;
         if (own_cell(g, cs, ns, fine, h0, t1, o1))
             cast_band(w, t1, g, o1);
 #ifdef HFS_SLICE
-        if (j % 4 == 0)
-            hor = texelFetch(u_hor, ivec3(ivec2(gl_FragCoord.xy), j / 4), 0);
-        float u = hor[j % 4]; /* tan(x / 2) -> tan x */
-        w.t_cap = max(u > -1.0 ? 2.0 * u / max(1.0 - u * u, 1e-30) : -1e30, t1);
+        w.t_cap = direct_horizon(g, je, t1);
 #endif
         walk_scales(w, g, cs, hx);
-        acc += w.acc;
 #ifdef HFS_SLICE
-        if (w.t_cap > -w.a / n.z) /* the occluded part below the direct horizon */
-            w_occ += s0 - slice_cosine(w.a, w.b, atan(w.t_cap));
+        /* The terrain reaches the direct horizon, which the sparser walk
+         * may not (a peak between its samples): the last band's radiance
+         * fills the rest (cpu_bounce.c slice_gather). */
+        if (w.s_top < s0 && w.t_top < w.t_cap)
+            w.acc += w.last * (w.s_top - slice_cosine(w.a, w.b, atan(w.t_cap)));
 #endif
+        acc += w.acc;
     }
+    float w_occ = 0.0;
+#ifdef HFS_SLICE
+    w_occ = occluded_weight(g, n, ns, fine, h0);
+#endif
     vec3 e = acc * u_bhead.x;
     e = clamp(e, vec3(0.0), vec3(65504.0));
-    o_e = vec4(mix(vec3(0.0), e, equal(e, e)), clamp(w_occ * u_bhead.x, 0.0, 1.0));
+    o_e = vec4(mix(vec3(0.0), e, equal(e, e)), clamp(w_occ, 0.0, 1.0));
 }

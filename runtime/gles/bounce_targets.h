@@ -5,8 +5,9 @@
  * bounces:
  *   rad      full resolution, RGBA, LINEAR: the exit radiance the next
  *            bounce gathers (Lo_{b-1}, times the frame's output scale);
- *   e        the visibility grid, 3 layers, LINEAR: each bounce's gathered
- *            irradiance over pi, E_b (Lo_b = rho(x) E_b at each texel);
+ *   e        the bounce grid (quality bounce_subsample), 3 layers, LINEAR:
+ *            each bounce's gathered irradiance over pi, E_b, and the
+ *            receivers' occluded part (pass_bounce.c);
  *   fin      full resolution hi + lo pair: direct + indirect, what the
  *            read-back (and any later pass) takes instead of the shading
  *            pass's output.
@@ -26,14 +27,15 @@ typedef struct hfs_gles_bounce_targets {
     GLuint e, e_fbo;            /* e_fbo: one layer attached at a time */
     GLuint fin[2], fin_fbo;     /* hi, lo drawn together */
     GLuint fin_lo_fbo;          /* lo alone, for the read-back */
-    int w, h, vw, vh, fp32;
+    int w, h, bw, bh, fp32;
     unsigned gen;               /* bumped when reallocated (contents lost) */
     size_t bytes;
 } hfs_gles_bounce_targets;
 
-/* Fits t to layout L at the caps' precision (a no-op while they hold). */
+/* Fits t to a w x h field and a bw x bh bounce grid at the caps'
+ * precision (a no-op while they hold). */
 int hfs_gles_bounce_targets_ensure(hfs_gles_bounce_targets *t, const hfs_gl *gl,
-                                   const hfs_gl_caps *c, const hfs_gles_layout *L,
+                                   const hfs_gl_caps *c, int w, int h, int bw, int bh,
                                    hfs_error *err);
 void hfs_gles_bounce_targets_free(hfs_gles_bounce_targets *t, const hfs_gl *gl);
 

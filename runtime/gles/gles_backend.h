@@ -71,6 +71,7 @@ struct hfs_gles_frame {
     double out_scale;                     /* power of two (pass_shade.c) */
     int bounces;                          /* indirect bounces (pass_bounce.c) */
     int capped;                           /* their bands stop at the grid's horizons */
+    int bsub, bw, bh;                     /* their grid: step (a multiple of L.sub), size */
     /* Uniform data too large for the profile's blocks, carried by textures
      * instead (block_texture.h): decided by the passes' layout hooks. */
     int env_swath_tex, key_swath_tex, keys_tex, local_tex;

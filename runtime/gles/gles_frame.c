@@ -7,6 +7,7 @@
 #include "gles_backend.h"
 
 #include "gl_util.h"
+#include "lights.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -155,9 +156,11 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
         memcpy(s->key[i].le, k->le, sizeof k->le);
     }
     s->bounces = fr->bounces;
-    s->bounce_dirs = fr->bounces > 0 ? q->nphi_env : 0;
-    s->refine = fr->bounces > 0 ? q->refine : 0;
+    s->bounce_dirs = fr->bounces > 0 ? hfs_bounce_dirs(q) : 0;
+    s->bounce_stride = fr->bounces > 0 ? q->nphi_env / hfs_bounce_dirs(q) : 0;
+    s->refine = fr->bounces > 0 ? q->bounce_refine : 0;
     s->capped = fr->bounces > 0 && fr->capped;
+    s->bsub = fr->bounces > 0 ? fr->bsub : 0;
     s->n_local = fr->n_local;
     s->nphi_local = q->nphi_local;
     s->local_full = q->local_full_swath;

@@ -36,30 +36,37 @@ static size_t block_bytes(const hfs_gles_frame *fr)
 static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     int rc;
+    /* The bounce grid's receivers are visibility receivers (their horizons
+     * cap the bands): its step is a multiple of the visibility grid's. */
+    fr->bsub = fr->q->bounce_subsample > fr->L.sub ? fr->q->bounce_subsample : fr->L.sub;
+    fr->bw = hfs_gles_grid_size(fr->L.w, fr->bsub);
+    fr->bh = hfs_gles_grid_size(fr->L.h, fr->bsub);
     if (fr->bounces > HFS_GLES_MAX_BOUNCES)
         return hfs_fail(err, HFS_E_INVALID, "bounces %d: at most %d", fr->bounces,
                         HFS_GLES_MAX_BOUNCES);
-    if ((rc = hfs_gl_caps_check_texture(&g->caps, fr->L.vw, fr->L.vh, HFS_GLES_MAX_BOUNCES,
+    if ((rc = hfs_gl_caps_check_texture(&g->caps, fr->bw, fr->bh, HFS_GLES_MAX_BOUNCES,
                                         "bounces (the grid's irradiance)", err)))
         return rc;
     return hfs_gl_caps_check_uniform_block(&g->caps, block_bytes(fr),
                                            "bounce directions (--nphi-env)", err);
 }
 
-/* HfsBounce: dphi / pi, k, the slice directions. */
+/* HfsBounce: dphi / pi, k, the stride, the environment's directions
+ * (the bounces' are every stride-th). */
 static int upload_block(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
 {
-    const int n = fr->q->nphi_env;
-    float *blk = hfs_gles_scratch(g, block_bytes(fr) + (size_t)n * 2 * sizeof(float));
+    const int n_env = fr->q->nphi_env, n = hfs_bounce_dirs(fr->q), stride = n_env / n;
+    float *blk = hfs_gles_scratch(g, block_bytes(fr) + (size_t)n_env * 2 * sizeof(float));
     if (!blk)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the bounces");
     hfs_gles_bounce_head *head = (hfs_gles_bounce_head *)blk;
-    *head = (hfs_gles_bounce_head){.weight = (float)(2.0 / n), .k = (float)fr->L.k};
-    float *dirs = blk + 4, *cs = dirs + 4 * n;
+    *head = (hfs_gles_bounce_head){.weight = (float)(2.0 / n), .k = (float)fr->L.k,
+                                   .stride = (float)stride};
+    float *dirs = blk + 4, *cs = dirs + 4 * n_env;
     hfs_swath s;
-    hfs_swath_full(n, &s);
+    hfs_swath_full(n_env, &s);
     hfs_gles_swath_float_dirs(&fr->L, &s, cs);
-    for (int j = 0; j < n; ++j) {
+    for (int j = 0; j < n_env; ++j) {
         dirs[4 * j] = cs[2 * j], dirs[4 * j + 1] = cs[2 * j + 1];
         dirs[4 * j + 2] = dirs[4 * j + 3] = 0.0f;
     }
@@ -89,8 +96,8 @@ static int light(hfs_gles *g, const hfs_gles_frame *fr, GLuint fbo, int direct, 
                                                      g->r.transfer[0], err)))
         return rc;
     hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
-    hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
-    hfs_gles_set_i1(gl, prog, "u_sub", L->sub);
+    hfs_gles_set_i2(gl, prog, "u_vsize", fr->bw, fr->bh);
+    hfs_gles_set_i1(gl, prog, "u_sub", fr->bsub);
     hfs_gles_set_f1(gl, prog, "u_direct", (float)direct);
     hfs_gles_set_f1(gl, prog, "u_rho", (float)(fr->rho_pi * PI));
     hfs_gles_set_i1(gl, prog, "u_first", first);
@@ -106,7 +113,8 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
     const hfs_gles_layout *L = &fr->L;
     const int capped = fr->capped;
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
-                                .n_dir = fr->q->nphi_env, .fp32 = g->caps.fp32,
+                                .n_dir = fr->q->nphi_env, .n_bdir = hfs_bounce_dirs(fr->q),
+                                .fp32 = g->caps.fp32,
                                 .slice = capped};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_GATHER, &v, &prog, err);
@@ -117,10 +125,16 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
         (rc = hfs_gles_program_texture(gl, prog, "u_hor", GL_TEXTURE_2D_ARRAY, g->r.hor, err)))
         return rc;
     hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
-    hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
+    hfs_gles_set_i1(gl, prog, "u_refine", fr->q->bounce_refine);
+    hfs_gles_set_i1(gl, prog, "u_sub", fr->bsub); /* the bounce grid's receivers */
+    hfs_gles_set_i1(gl, prog, "u_vsub", L->sub);  /* the visibility grid's, for u_hor */
+    hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_BOUNCE, g->ubo[HFS_UBO_BOUNCE]);
-    return hfs_gles_draw_grid_layers(g, L, g->bounce.e_fbo, g->bounce.e, layer, 1,
-                                     "bounce irradiance", NULL, err);
+    int rc2 = hfs_gles_fbo_layers(gl, g->bounce.e_fbo, g->bounce.e, layer, 1, "bounce irradiance",
+                                  err);
+    if (!rc2)
+        hfs_gles_draw(gl, g->bounce.e_fbo, fr->bw, fr->bh);
+    return rc2;
 }
 
 static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
@@ -128,7 +142,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     (void)which;
     const hfs_gl *gl = &g->gl;
     int rc;
-    if ((rc = hfs_gles_bounce_targets_ensure(&g->bounce, gl, &g->caps, &fr->L, err)) ||
+    if ((rc = hfs_gles_bounce_targets_ensure(&g->bounce, gl, &g->caps, fr->L.w, fr->L.h, fr->bw,
+                                             fr->bh, err)) ||
         (rc = upload_block(g, fr, err)))
         return rc;
     for (int b = 1; b <= fr->bounces && !rc; ++b) {

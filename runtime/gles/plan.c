@@ -188,8 +188,9 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
     if (a->view != b->view || a->view_w != b->view_w || a->view_h != b->view_h ||
         (b->view && !camera_equal(&a->cam, &b->cam)))
         hfs_plan_change(p, gp->in_camera, "camera or view size changed");
-    if (a->bounces != b->bounces || a->bounce_dirs != b->bounce_dirs || a->refine != b->refine ||
-        a->capped != b->capped)
+    if (a->bounces != b->bounces || a->bounce_dirs != b->bounce_dirs ||
+        a->bounce_stride != b->bounce_stride || a->refine != b->refine ||
+        a->capped != b->capped || a->bsub != b->bsub)
         hfs_plan_change(p, gp->in_bounce, "bounce settings changed");
 }
 

@@ -212,14 +212,16 @@ _Static_assert(offsetof(hfs_gles_local_block, swath) == 17 * 16, "HfsLocal.u_lq"
 _Static_assert(offsetof(hfs_gles_local_block, lights) == 18 * 16, "HfsLocal.u_lights");
 _Static_assert(sizeof(hfs_gles_local_block) == (18 + 2 * 16) * 16, "HfsLocal head size");
 
-/* The head of HfsBounce (bounce_gather.frag.glsl), std140; u_bdir[n]
+/* The head of HfsBounce (bounce_gather.frag.glsl), std140; u_edir[n]
  * follows it, one vec4 (cos, sin, 0, 0) per direction of the
  * environment's full swath as hfs_gles_swath_float_dirs gives them (the
- * directions of the grid's horizons, which cap the bands). */
+ * directions of the grid's horizons, which cap the bands); the bounces
+ * gather along every stride-th (lights.h hfs_bounce_dirs). */
 typedef struct hfs_gles_bounce_head {
-    float weight;   /* dphi / pi                                   */
+    float weight;   /* dphi / pi of the bounce directions          */
     float k;        /* the pyramid's levels per octave             */
-    float pad[2];
+    float stride;   /* environment directions per bounce direction */
+    float pad;
 } hfs_gles_bounce_head;
 _Static_assert(sizeof(hfs_gles_bounce_head) == 16, "HfsBounce.u_bhead is one vec4");
 

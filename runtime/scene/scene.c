@@ -159,6 +159,9 @@ static int *int_field(hfs_scene *s, hfs_scene_key_id id)
     case HFS_SK_NPHI_ENV: return &q->nphi_env;
     case HFS_SK_NPHI_KEY: return &q->nphi_key;
     case HFS_SK_REFINE: return &q->refine;
+    case HFS_SK_NPHI_BOUNCE: return &q->nphi_bounce;
+    case HFS_SK_BOUNCE_REFINE: return &q->bounce_refine;
+    case HFS_SK_BOUNCE_SUBSAMPLE: return &q->bounce_subsample;
     case HFS_SK_NPHI_LOCAL: return &q->nphi_local;
     case HFS_SK_SUBSAMPLE: return &q->subsample;
     case HFS_SK_THREADS: return &q->threads;
@@ -356,6 +359,9 @@ void hfs_scene_quality(const hfs_scene *s, hfs_quality *q)
     TAKE(HFS_SK_NPHI_ENV, nphi_env);
     TAKE(HFS_SK_NPHI_KEY, nphi_key);
     TAKE(HFS_SK_REFINE, refine);
+    TAKE(HFS_SK_NPHI_BOUNCE, nphi_bounce);
+    TAKE(HFS_SK_BOUNCE_REFINE, bounce_refine);
+    TAKE(HFS_SK_BOUNCE_SUBSAMPLE, bounce_subsample);
     TAKE(HFS_SK_NPHI_LOCAL, nphi_local);
     TAKE(HFS_SK_SUBSAMPLE, subsample);
     TAKE(HFS_SK_PRECISION, precision);
