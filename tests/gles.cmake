@@ -176,6 +176,22 @@ add_test(NAME test_albedo_map COMMAND test_albedo_map gles)
 set_tests_properties(test_albedo_map PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
 set(hfs_gles_tests ${hfs_gles_tests} test_albedo_map)
 
+# Indirect bounces on GLES (issue 16): equal to the CPU reference at
+# subsample 1 (1 and 2 bounces; capped, uncapped, albedo map), the white
+# furnace at the defaults, the planner (test_gles_bounce.c); fp16, fp32
+# and on an ES 3.0 context.
+add_executable(test_gles_bounce ${CMAKE_CURRENT_LIST_DIR}/test_gles_bounce.c)
+target_link_libraries(test_gles_bounce PRIVATE hfs_test_gles_scenes)
+foreach(p fp16 fp32)
+  add_test(NAME test_gles_bounce_${p} COMMAND test_gles_bounce ${p})
+  set_tests_properties(test_gles_bounce_${p} PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
+  set(hfs_gles_tests ${hfs_gles_tests} test_gles_bounce_${p})
+endforeach()
+add_test(NAME test_gles_bounce_fp16_es30 COMMAND test_gles_bounce fp16)
+set_tests_properties(test_gles_bounce_fp16_es30 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300
+                     ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
+set(hfs_gles_tests ${hfs_gles_tests} test_gles_bounce_fp16_es30)
+
 # The 3-D view (issue 16): GLES against the truth's ray-cast view of the
 # same lit image, fp16 and fp32, on an ES 3.0 context too; a camera move
 # reruns the view alone (test_gles_view.c states the bounds and why).
