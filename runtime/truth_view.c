@@ -16,6 +16,7 @@ typedef struct view_ctx {
     const float *lit;
     const hfs_camera_frame *fr;
     int has_env;
+    double base;              /* the block's bottom: the lowest height (world z) */
     double env[3][HFS_SH_N];
     int w, h;
     float *view;
@@ -53,8 +54,12 @@ static void shade_pixel(const view_ctx *v, int px, int py, float *rgb)
     /* The ray in grid units for xy, world for z and t. */
     const double og[2] = {org[0] / f->dx, org[1] / f->dx};
     const double dg[2] = {d[0] / f->dx, d[1] / f->dx};
-    double t0, t1, t;
-    if (grid_span(f, og, dg, &t0, &t1)) {
+    double t0 = 1.0, t1 = 0.0, t; /* empty unless the ray crosses the rectangle */
+    /* The field is a block down to its lowest height: a ray below that
+     * enters it, if at all, through the bottom (rising). */
+    if (grid_span(f, og, dg, &t0, &t1) && org[2] + t0 * d[2] < v->base)
+        t0 = d[2] > 0.0 ? (v->base - org[2]) / d[2] : INFINITY;
+    if (t0 <= t1) {
         /* Start just inside the rectangle: the ray tests need an origin
          * in the grid. */
         const double ts = t0 + 1e-9 * (1.0 + t0);
@@ -95,8 +100,10 @@ int hfs_truth_view(const hfs_field *f, const float *lit, const hfs_lighting *l,
         return hfs_fail(err, HFS_E_NOMEM, "truth view: out of memory for the height tree");
     hfs_camera_frame fr;
     hfs_camera_frame_make(cam, &fr);
+    double lo, hi;
+    hfs_field_range(&fe, &lo, &hi);
     view_ctx v = {.f = &fe, .g = &g, .lit = lit, .fr = &fr, .has_env = l->has_env, .w = w,
-                  .h = h, .view = view};
+                  .h = h, .view = view, .base = lo * fe.zscale};
     for (int c = 0; c < 3 && l->has_env; ++c)
         hfs_sh_rotate_z(l->env_sh[c], l->env_rotate, v.env[c]);
     hfs_parallel_rows(h, threads, view_row, &v, NULL, NULL);

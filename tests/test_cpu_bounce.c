@@ -16,6 +16,7 @@
 #include "backends.h"
 #include "bounce_scenes.h"
 #include "cpu_bounce.h"
+#include "lights.h"
 #include "test_util.h"
 
 #include <math.h>
@@ -160,8 +161,25 @@ static void render(hfs_backend_fn fn, const hfs_field *f, hfs_lighting *l, int b
     }
 }
 
+/* The bounces' azimuths are the environment's every (nphi_env / n)-th, n
+ * the largest divisor of nphi_env not above nphi_bounce: then each has
+ * the direct light's horizon to stop at. */
+static void test_bounce_dirs(void)
+{
+    const int cases[][3] = {{12, 12, 12}, {12, 5, 4}, {12, 100, 12}, {32, 12, 8}, {7, 3, 1},
+                            {12, 1, 1}, {30, 7, 6}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        hfs_quality q;
+        hfs_quality_defaults(&q);
+        q.nphi_env = cases[k][0], q.nphi_bounce = cases[k][1];
+        CHECK(hfs_bounce_dirs(&q) == cases[k][2]);
+    }
+    printf("bounce azimuths: the largest divisor of nphi-env not above nphi-bounce\n");
+}
+
 int main(void)
 {
+    test_bounce_dirs();
     test_flat();
     test_wall();
     test_furnace();

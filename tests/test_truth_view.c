@@ -138,9 +138,10 @@ static void test_exaggeration(void)
         hits += a[3 * i + 1] != 0.0f;
     CHECK(hits > vw * vh / 4); /* the ramp fills much of the view */
     /* Against a dense march of each ray over the exaggerated ramp (0.005
-     * world steps): the colour where it first dips below the surface,
-     * black where it never does; a few pixels may differ at silhouettes,
-     * where the march steps past a grazing hit. */
+     * world steps): the colour where it first enters the solid block under
+     * the surface (down to the lowest height, 0 here), black where it
+     * never does; a few pixels may differ at silhouettes, where the march
+     * steps past a grazing hit. */
     hfs_camera_frame fr;
     c.exaggeration = 2.0;
     hfs_camera_frame_make(&c, &fr);
@@ -150,7 +151,8 @@ static void test_exaggeration(void)
         hfs_camera_ray(&fr, vw, vh, p % vw, p / vw, d);
         for (double t = 0.0; t < 200.0; t += 0.005) {
             const double x = fr.eye[0] + t * d[0], y = fr.eye[1] + t * d[1];
-            if (hfs_field_bilinear(&f2, x, y, &zs) && fr.eye[2] + t * d[2] <= zs) {
+            const double zr = fr.eye[2] + t * d[2];
+            if (hfs_field_bilinear(&f2, x, y, &zs) && zr <= zs && zr >= 0.0) {
                 hfs_rgb_bilinear(lit, w, h, x, y, want);
                 break;
             }

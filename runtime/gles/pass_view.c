@@ -10,10 +10,11 @@
  *          buffer), heights from the terrain pass's input texture, the lit
  *          exit radiance (hfs_gles_lit_targets) bilinear at each fragment's
  *          grid position; depth-tested; then the four side walls down to
- *          below anything in view (the truth's rays start testing where
- *          they enter the grid, so one entering under the surface hits
- *          there: the field is a solid block, its walls showing their
- *          edge's radiance);
+ *          the field's lowest height (the truth's rays start testing where
+ *          they enter the grid above that height, so one entering under
+ *          the surface hits there: the field is a solid block down to its
+ *          lowest point, its walls showing their edge's radiance; below
+ *          it the sky);
  *   target RGBA16F + 24-bit depth, multisampled with the capability
  *          layer's sample count (the format's own GL_SAMPLES, at most 4;
  *          1 where the driver offers none) and resolved by a blit;
@@ -136,16 +137,13 @@ static int ensure_targets(hfs_gles *g, int w, int h, hfs_error *err)
     return hfs_gl_check(gl, "backend gles: view targets", err);
 }
 
-/* The side walls' bottom: below the field by more than the eye's height
- * above it plus the field's diagonal, so that a wall reaches every ray
- * that enters the grid under the surface within the view's depth range. */
+/* The side walls' bottom: the field's lowest height (the block the
+ * truth's view shows, truth_view.c; below it the sky). */
 static double wall_bottom(const hfs_gles_frame *fr, const hfs_camera_frame *cf)
 {
+    (void)cf;
     const hfs_gles_layout *L = &fr->L;
-    const double zs = L->zscale * fr->cam->exaggeration;
-    const double zmin = zs * (L->base - L->hscale), zmax = zs * (L->base + L->hscale);
-    const double diag = hypot((L->w - 1) * L->dx, (L->h - 1) * L->dx);
-    return zmin - 2.0 * (diag + fabs(cf->eye[2] - zmin) + (zmax - zmin));
+    return L->zscale * fr->cam->exaggeration * (L->base - L->hscale);
 }
 
 /* Near and far planes around the field's box (exaggerated heights, down
