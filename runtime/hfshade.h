@@ -126,8 +126,9 @@ typedef struct hfs_lighting {
      * Read during hfs_renderer_render only; the caller owns it. */
     const float *albedo_map;
     /* Indirect diffuse bounces (SPEC "Indirect light"), 0..3, default 0:
-     * the ground truth and the CPU reference compute them; the GLES
-     * backend does not yet and refuses bounces > 0 (HFS_E_UNSUPPORTED). */
+     * the ground truth path-traces them, the CPU reference and the GLES
+     * backend gather them along the environment's azimuths (quality
+     * nphi_bounce, bounce_refine; GLES on the bounce_subsample grid). */
     int bounces;
 } hfs_lighting;
 

@@ -47,8 +47,8 @@ uniform highp sampler2D u_t0;            /* the slices' occluded transfer, coeff
 uniform highp sampler2D u_albedo;        /* albedo map (RGB in [0, 1]), full resolution */
 #endif
 uniform ivec2 u_size;                    /* W, H */
-uniform ivec2 u_vsize;                   /* visibility grid size */
-uniform int u_sub;
+uniform ivec2 u_vsize;                   /* the bounce grid's size */
+uniform int u_sub;                       /* and step */
 uniform float u_direct;                  /* 1: the direct light is part of v */
 uniform float u_rho;                     /* the uniform albedo */
 uniform int u_first;                     /* the bounces summed: layers [first, first + count) */

@@ -3,11 +3,13 @@
  * the CPU reference's walk, cpu_bounce.h; DESIGN.md "Indirect light"):
  * per bounce b, the radiance it gathers (the shading pass's output, or
  * rho E_{b-1}) into a full-resolution texture (bounce_light.frag), then
- * the walk on the visibility grid into E_b (bounce_gather.frag); last,
- * direct + rho sum E_b into the frame's final targets, which the
- * read-back takes (hfs_gles_lit_targets).  Each bounce's E stays on the
- * grid, interpolated at each texel like the local lights' ratios, and
- * multiplied by the texel's own albedo.
+ * the walk on the bounce grid (every fr->bsub texels, quality
+ * bounce_subsample) into E_b and the receivers' occluded part
+ * (bounce_gather.frag); last, direct + rho sum E_b into the frame's final
+ * targets, which the read-back and the view take (hfs_gles_lit_targets).
+ * Each bounce's E stays on the grid, interpolated at each texel like the
+ * local lights' ratios, scaled to the texel's own occluded part (slice
+ * path) and multiplied by its own albedo.
  *
  * A bounce depends on the radiance of every light, so the pass reruns
  * whenever the shading does, and when its own settings change (plan.h
@@ -106,7 +108,7 @@ static int light(hfs_gles *g, const hfs_gles_frame *fr, GLuint fbo, int direct, 
     return HFS_OK;
 }
 
-/* bounce_gather.frag over the grid into layer `layer` of E. */
+/* bounce_gather.frag over the bounce grid into layer `layer` of E. */
 static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
@@ -130,11 +132,11 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
     hfs_gles_set_i1(gl, prog, "u_vsub", L->sub);  /* the visibility grid's, for u_hor */
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_BOUNCE, g->ubo[HFS_UBO_BOUNCE]);
-    int rc2 = hfs_gles_fbo_layers(gl, g->bounce.e_fbo, g->bounce.e, layer, 1, "bounce irradiance",
-                                  err);
-    if (!rc2)
-        hfs_gles_draw(gl, g->bounce.e_fbo, fr->bw, fr->bh);
-    return rc2;
+    if ((rc = hfs_gles_fbo_layers(gl, g->bounce.e_fbo, g->bounce.e, layer, 1,
+                                  "bounce irradiance", err)))
+        return rc;
+    hfs_gles_draw(gl, g->bounce.e_fbo, fr->bw, fr->bh);
+    return HFS_OK;
 }
 
 static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
