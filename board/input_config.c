@@ -62,6 +62,14 @@ static const hfs_action_info actions[] = {
      1.0, 0.0, 0.0, 1, HFS_SK_COUNT, 0},
     {HFS_ACTION_OVERLAY, "overlay.toggle", 0, 1, HFS_TARGET_NONE, 0, 0,
      1.0, 0.0, 0.0, 0, HFS_SK_COUNT, 0},
+    {HFS_ACTION_CAMERA_AZIMUTH, "camera.azimuth", 1, 0, HFS_TARGET_NONE, 1, 0,
+     5.0, 0.0, 360.0, 1, HFS_SK_COUNT, 0},
+    {HFS_ACTION_CAMERA_ELEVATION, "camera.elevation", 1, 0, HFS_TARGET_NONE, 1, 0,
+     2.0, 5.0, 90.0, 0, HFS_SK_COUNT, 0},
+    {HFS_ACTION_CAMERA_ZOOM, "camera.zoom", 1, 0, HFS_TARGET_NONE, 1, 1,
+     1.1, 0.1, 10.0, 0, HFS_SK_COUNT, 0},
+    {HFS_ACTION_VIEW, "view.toggle", 0, 1, HFS_TARGET_NONE, 0, 0,
+     1.0, 0.0, 0.0, 0, HFS_SK_COUNT, 0},
 };
 #define N_ACTIONS ((int)(sizeof actions / sizeof actions[0]))
 
@@ -75,6 +83,8 @@ const hfs_action_info *hfs_action_get(hfs_action action)
 
 hfs_key_range hfs_action_range(const hfs_action_info *a)
 {
+    if (a->continuous && a->key == HFS_SK_COUNT) /* the kiosk's own state: its defaults */
+        return (hfs_key_range){a->min, a->max, 0};
     const hfs_key_number *n = hfs_scene_key_number(a->key, a->number);
     if (!n)
         return (hfs_key_range){0.0, 0.0, 1}; /* holds nothing */

@@ -56,6 +56,10 @@ typedef enum hfs_action {
     HFS_ACTION_LIGHT_SELECT,    /* knob: step through lights; button: next */
     HFS_ACTION_PRESET,          /* knob/button: next quality preset        */
     HFS_ACTION_OVERLAY,         /* button: frame-time overlay on/off       */
+    HFS_ACTION_CAMERA_AZIMUTH,  /* 3-D view: where the camera stands, degrees */
+    HFS_ACTION_CAMERA_ELEVATION,
+    HFS_ACTION_CAMERA_ZOOM,     /* distance over the framing one (multiplies) */
+    HFS_ACTION_VIEW,            /* button: the 3-D view on/off             */
     HFS_ACTION_COUNT
 } hfs_action;
 
@@ -119,7 +123,8 @@ typedef struct hfs_action_info {
     double step, min, max;      /* defaults                                 */
     int wrap;                   /* default                                  */
     hfs_scene_key_id key;       /* continuous: the scene key and the number */
-    int number;                 /* in it that the action edits              */
+    int number;                 /* in it that the action edits (HFS_SK_COUNT:
+                                   the kiosk's own state, accepting [min, max]) */
 } hfs_action_info;
 
 /* The entry for action, or NULL (HFS_ACTION_NONE, out of range). */

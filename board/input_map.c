@@ -22,6 +22,9 @@ const char *hfs_input_preset_name(int index)
 void hfs_input_state_init(hfs_input_state *st, const hfs_scene *scene)
 {
     memset(st, 0, sizeof *st);
+    st->cam_azimuth = HFS_INPUT_CAMERA_AZIMUTH;
+    st->cam_elevation = HFS_INPUT_CAMERA_ELEVATION;
+    st->cam_zoom = 1.0;
     for (int i = 0; i < HFS_INPUT_N_PRESETS; ++i)
         if (scene && !strcmp(scene->preset, preset_names[i]))
             st->preset = i;
@@ -38,8 +41,7 @@ double hfs_input_gain(const hfs_control_config *k, int64_t dt_ns, int delta)
 }
 
 /* The value a continuous action edits, or NULL (no such light now). */
-static double *target_value(const hfs_control_config *k, const hfs_input_state *st,
-                            hfs_scene *s)
+static double *target_value(const hfs_control_config *k, hfs_input_state *st, hfs_scene *s)
 {
     int key = -1, local = -1;
     const hfs_action_info *a = hfs_action_get(k->action);
@@ -63,6 +65,9 @@ static double *target_value(const hfs_control_config *k, const hfs_input_state *
     case HFS_ACTION_LOCAL_RADIUS: return &s->local[local].r;
     case HFS_ACTION_LOCAL_RADIANCE: return &s->local[local].le;
     case HFS_ACTION_ENV_ROTATE: return &s->env_rotate_deg;
+    case HFS_ACTION_CAMERA_AZIMUTH: return &st->cam_azimuth;
+    case HFS_ACTION_CAMERA_ELEVATION: return &st->cam_elevation;
+    case HFS_ACTION_CAMERA_ZOOM: return &st->cam_zoom;
     default: return NULL;
     }
 }
@@ -155,6 +160,9 @@ int hfs_input_apply(const hfs_input_config *cfg, hfs_input_state *st,
         return next_preset(st, scene, delta);
     case HFS_ACTION_OVERLAY:
         st->overlay = !st->overlay;
+        return 1;
+    case HFS_ACTION_VIEW:
+        st->view = !st->view;
         return 1;
     case HFS_ACTION_NONE:
     case HFS_ACTION_COUNT:

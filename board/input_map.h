@@ -42,6 +42,9 @@ typedef struct hfs_input_state {
     int selected;       /* selected light, in the numbering above          */
     int preset;         /* 0..HFS_INPUT_N_PRESETS-1 (kiosk, panel, headless) */
     int overlay;        /* frame-time overlay shown (overlay.toggle)       */
+    int view;           /* the 3-D view shown (view.toggle)                 */
+    double cam_azimuth, cam_elevation; /* degrees (camera.azimuth, .elevation) */
+    double cam_zoom;    /* distance over the framing one (camera.zoom)     */
     /* Per control (same index as cfg->control): the last turn, for
      * acceleration.  Bookkeeping only: it does not count as a change. */
     struct {
@@ -50,7 +53,11 @@ typedef struct hfs_input_state {
     } last_turn[HFS_MAX_CONTROLS];
 } hfs_input_state;
 
-/* Light 0 selected, the scene's preset ("" = kiosk), overlay off. */
+/* Light 0 selected, the scene's preset ("" = kiosk), overlay and view
+ * off, the camera at HFS_INPUT_CAMERA_* (a view from the south-west, 38
+ * degrees up, framing the field). */
+#define HFS_INPUT_CAMERA_AZIMUTH 250.0
+#define HFS_INPUT_CAMERA_ELEVATION 38.0
 void hfs_input_state_init(hfs_input_state *st, const hfs_scene *scene);
 
 /* Applies one event.  Returns 1 if the scene or the state (selection,

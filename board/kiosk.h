@@ -60,6 +60,7 @@ typedef struct kiosk_opts {
     int width, height;             /* --size (x11 window, headless canvas)   */
     double exposure;               /* --exposure, default 1                  */
     int overlay;                   /* --overlay: start with the overlay on   */
+    int view;                      /* --view: start in the 3-D view          */
     int exit_after_replay;         /* --exit-after-replay                    */
     int no_devices;                /* --no-devices: configured devices are
                                       not opened (replay or demo only)       */
@@ -108,6 +109,7 @@ typedef struct kiosk_frame {
     /* Last frame, for the overlay and the stats. */
     double render_ms;
     int passes_ran, passes_total;
+    int view_w, view_h;            /* the 3-D view's size: --size, or 800x480 */
     int64_t present_ns;            /* CLOCK_MONOTONIC after present returned */
 } kiosk_frame;
 
@@ -130,10 +132,14 @@ int kiosk_frame_admit(hfs_renderer *r, int amortize, const hfs_scene *scene,
                       const hfs_scene_inputs *in, hfs_error *err);
 void kiosk_frame_free(kiosk_frame *f);
 
-/* Renders in, makes the picture, draws the overlay when asked, presents it
- * and fills the "last frame" fields. */
-int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, int overlay,
+/* Renders in (its grid dump, or with st->view the 3-D view from st's
+ * camera: view_camera), makes the picture, draws the overlay when st asks,
+ * presents it and fills the "last frame" fields. */
+int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_state *st,
                      const char *preset, hfs_display *d, hfs_error *err);
+/* The 3-D view st's camera shows of field (perspective, 40 degrees high,
+ * framing the field times st->cam_zoom), w x h pixels. */
+hfs_view kiosk_view_camera(const hfs_input_state *st, const hfs_field *field, int w, int h);
 
 /* ---- stats (kiosk_stats.c) -------------------------------------------------- */
 

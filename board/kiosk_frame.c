@@ -131,20 +131,49 @@ static void draw_overlay(kiosk_frame *f, const char *preset)
     hfs_overlay_text(f->rgba, w, h, 2, 2, scale, text, fg, bg);
 }
 
-int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, int overlay,
-                     const char *preset, hfs_display *d, hfs_error *err)
+hfs_view kiosk_view_camera(const hfs_input_state *st, const hfs_field *field, int w, int h)
 {
-    int rc = ensure_buffers(f, in->field.width, in->field.height, err);
+    const double deg = 3.14159265358979323846 / 180.0;
+    hfs_view v;
+    hfs_view_defaults(&v, field);
+    v.mode = HFS_VIEW_PERSPECTIVE;
+    v.azimuth = st->cam_azimuth * deg;
+    v.elevation = st->cam_elevation * deg;
+    v.fov = 40.0 * deg;
+    v.width = w, v.height = h;
+    hfs_view_frame(&v, field);
+    v.distance *= st->cam_zoom;
+    return v;
+}
+
+/* The frame's image into f->img: the grid dump, or the 3-D view. */
+static int render(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_state *st,
+                  hfs_error *err)
+{
+    const int view = st->view;
+    const int w = view ? f->view_w : in->field.width, h = view ? f->view_h : in->field.height;
+    int rc = ensure_buffers(f, w, h, err);
     if (rc)
         return rc;
-    const int64_t t0 = hfs_input_now_ns();
     /* The world's heights never change after loading: their serial spares
      * the renderer a pass over them every frame (the knobs' lighting and
      * quality were validated by kiosk_world_relight; the renderer checks
      * them again, which costs nothing next to a frame). */
     hfs_renderer_set_field_serial(f->renderer, in->serial);
-    rc = hfs_renderer_render(f->renderer, &in->field, &in->lighting, &in->quality, &f->img,
-                             NULL, NULL, err);
+    if (!view)
+        return hfs_renderer_render(f->renderer, &in->field, &in->lighting, &in->quality, &f->img,
+                                   NULL, NULL, err);
+    /* A camera move costs the view pass alone (the lighting is kept). */
+    const hfs_view v = kiosk_view_camera(st, &in->field, w, h);
+    return hfs_renderer_render_view(f->renderer, &in->field, &in->lighting, &in->quality, &v, NULL,
+                                    &f->img, err);
+}
+
+int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_state *st,
+                     const char *preset, hfs_display *d, hfs_error *err)
+{
+    const int64_t t0 = hfs_input_now_ns();
+    int rc = render(f, in, st, err);
     if (rc)
         return rc;
     f->render_ms = (double)(hfs_input_now_ns() - t0) / 1e6;
@@ -164,7 +193,7 @@ int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, int overlay,
     }
     if ((rc = hfs_frame_to_rgba8(pic, &po, f->rgba, err)))
         return rc;
-    if (overlay)
+    if (st->overlay)
         draw_overlay(f, preset);
     if ((rc = hfs_display_present(d, f->rgba, pic->width, pic->height, err)))
         return rc;

@@ -144,7 +144,7 @@ static int show(kiosk *k, int events)
 {
     hfs_error err = {{0}};
     kiosk_world *w = k->world;
-    if (kiosk_frame_show(&k->frame, &w->in, w->st.overlay, w->scene.preset, k->display, &err)) {
+    if (kiosk_frame_show(&k->frame, &w->in, &w->st, w->scene.preset, k->display, &err)) {
         kiosk_log(KIOSK_ERR, "frame: %s", err.msg);
         return -1;
     }
@@ -258,7 +258,12 @@ static int reload(kiosk *k, int admitted)
         }
     }
     kiosk_frame_adopt(&k->frame, r, &nw->scene);
-    nw->st.overlay = k->world->st.overlay; /* a display choice, not the scene's */
+    /* Display choices, not the scene's: the overlay and the 3-D view. */
+    const hfs_input_state *old = &k->world->st;
+    nw->st.overlay = old->overlay;
+    nw->st.view = old->view;
+    nw->st.cam_azimuth = old->cam_azimuth, nw->st.cam_elevation = old->cam_elevation;
+    nw->st.cam_zoom = old->cam_zoom;
     kiosk_world_free(k->world);
     k->world = nw;
     kiosk_log(KIOSK_INFO, "reloaded %s%s%s", k->opt.scene_path,

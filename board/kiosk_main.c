@@ -48,6 +48,8 @@ static void usage(FILE *f)
             "  --out PATTERN.png     headless: write each frame, e.g. frame-%%04d.png\n"
             "  --exposure F          linear exposure of the picture (default 1)\n"
             "  --overlay             start with the frame-time overlay shown\n"
+            "  --view                start in the 3-D view (a view.toggle button switches;\n"
+            "                        camera.* knobs turn it; its size is --size or 800x480)\n"
             "  --no-devices          do not open the configured devices (replay, demos)\n"
             "  --exit-after-replay   exit 0 once the last replayed event is shown\n"
             "  --stats FILE          per frame and per input event: times, latency, CPU\n"
@@ -92,6 +94,7 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
             if (!strcmp(argv[j], a))
                 return usage_error("%s: given twice (once is allowed)", a);
         int *flag = !strcmp(a, "--overlay")             ? &o->overlay
+                    : !strcmp(a, "--view")              ? &o->view
                     : !strcmp(a, "--no-devices")        ? &o->no_devices
                     : !strcmp(a, "--exit-after-replay") ? &o->exit_after_replay
                     : !strcmp(a, "--check")             ? &o->check
@@ -252,7 +255,10 @@ static int start(kiosk *k)
         return 1;
     }
     k->world->st.overlay = o->overlay;
-    if (kiosk_frame_show(&k->frame, &w->in, w->st.overlay, w->scene.preset, k->display, &err)) {
+    k->world->st.view = o->view;
+    k->frame.view_w = o->width > 0 ? o->width : 800;
+    k->frame.view_h = o->height > 0 ? o->height : 480;
+    if (kiosk_frame_show(&k->frame, &w->in, &w->st, w->scene.preset, k->display, &err)) {
         kiosk_log(KIOSK_ERR, "frame: %s", err.msg);
         return 1;
     }

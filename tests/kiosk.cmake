@@ -12,6 +12,8 @@
 #   test_kiosk_signals     SIGHUP reload (good and broken scene), journal
 #                          priorities, SIGTERM exit 0 ("gl")
 #   test_kiosk_idle        3 s without events: no frame, < 5% of a core ("gl")
+#   test_kiosk_view        a button turns the 3-D view on, knobs turn the
+#                          camera: last frame == the library's view ("gl")
 #   test_kiosk_example     board/kiosk.ini driving data/demo.ini ("gl")
 #   test_kiosk_large       a 2100x40 field (wider than any display) shown
 #                          shrunk to 1050x20, equal to the library's render
@@ -32,8 +34,8 @@ if(TARGET hfshade-kiosk)
                         PkgConfig::HFS_PNG m)
   add_dependencies(test_kiosk hfshade-kiosk hfgen)
   set(hfs_kiosk_gl_tests test_kiosk_replay test_kiosk_amortize test_kiosk_signals
-      test_kiosk_idle test_kiosk_example)
-  foreach(mode replay amortize signals idle)
+      test_kiosk_idle test_kiosk_example test_kiosk_view)
+  foreach(mode replay amortize signals idle view)
     add_test(NAME test_kiosk_${mode}
              COMMAND test_kiosk ${mode} $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen>)
   endforeach()

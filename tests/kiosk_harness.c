@@ -184,8 +184,10 @@ void kh_require_gl(void)
     hfs_renderer_destroy(gl_test_renderer(&(hfs_renderer_desc){0}));
 }
 
-uint8_t *kh_direct_frame(const char *scene_path, double key_phi, double key_elev, int *w,
-                         int *h, int *no_gl)
+/* The frame (view NULL: the grid dump) the library renders for the scene
+ * with key 0 at (key_phi, key_elev) unless NaN, as sRGB bytes. */
+static uint8_t *direct(const char *scene_path, double key_phi, double key_elev,
+                       const hfs_view *view, double zoom, int *w, int *h, int *no_gl)
 {
     *no_gl = 0;
     hfs_error err = {{0}};
@@ -209,8 +211,21 @@ uint8_t *kh_direct_frame(const char *scene_path, double key_phi, double key_elev
         *no_gl = rc == HFS_E_CONTEXT;
         goto out;
     }
-    if (hfs_image_alloc(&img, in.field.width, in.field.height, &err) ||
-        hfs_renderer_render(r, &in.field, &in.lighting, &in.quality, &img, NULL, NULL, &err))
+    hfs_view v = {0};
+    if (view) {
+        hfs_view_defaults(&v, &in.field);
+        v.mode = HFS_VIEW_PERSPECTIVE;
+        v.azimuth = view->azimuth, v.elevation = view->elevation, v.fov = view->fov;
+        v.width = view->width, v.height = view->height;
+        hfs_view_frame(&v, &in.field);
+        v.distance *= zoom;
+    }
+    if (hfs_image_alloc(&img, view ? v.width : in.field.width,
+                        view ? v.height : in.field.height, &err) ||
+        (view ? hfs_renderer_render_view(r, &in.field, &in.lighting, &in.quality, &v, NULL, &img,
+                                         &err)
+              : hfs_renderer_render(r, &in.field, &in.lighting, &in.quality, &img, NULL, NULL,
+                                    &err)))
         goto out;
     px = malloc((size_t)img.width * (size_t)img.height * 4);
     if (px && hfs_frame_to_rgba8(&img, &(hfs_png_opts){.exposure = 1.0}, px, &err)) {
@@ -226,4 +241,20 @@ out:
     hfs_renderer_destroy(r);
     hfs_scene_inputs_free(&in);
     return px;
+}
+
+uint8_t *kh_direct_frame(const char *scene_path, double key_phi, double key_elev, int *w,
+                         int *h, int *no_gl)
+{
+    return direct(scene_path, key_phi, key_elev, NULL, 1.0, w, h, no_gl);
+}
+
+uint8_t *kh_direct_view(const char *scene_path, double az, double el, double zoom, int vw,
+                        int vh, int *no_gl)
+{
+    const double deg = 3.14159265358979323846 / 180.0;
+    const hfs_view v = {.azimuth = az * deg, .elevation = el * deg, .fov = 40.0 * deg,
+                        .width = vw, .height = vh};
+    int w, h;
+    return direct(scene_path, NAN, NAN, &v, zoom, &w, &h, no_gl);
 }

@@ -48,6 +48,12 @@ uint8_t *kh_png_rgba(const char *path, int *w, int *h);
  * context could be made. */
 uint8_t *kh_direct_frame(const char *scene_path, double key_phi, double key_elev, int *w,
                          int *h, int *no_gl);
+/* As kh_direct_frame, the scene's 3-D view as the kiosk's camera makes it
+ * (board/KIOSK.md "3-D view": perspective, 40 degrees high, from azimuth
+ * and elevation az, el in degrees, at zoom times the distance that frames
+ * the field), vw x vh pixels. */
+uint8_t *kh_direct_view(const char *scene_path, double az, double el, double zoom, int vw,
+                        int vh, int *no_gl);
 
 /* Returns when a GLES renderer can be made here; otherwise exits 77 when no
  * GLES context of any kind can be made, 1 when the renderer is broken

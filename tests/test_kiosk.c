@@ -100,6 +100,64 @@ static void dump(const char *path)
     free(s);
 }
 
+/* ---- 3-D view ---------------------------------------------------------------- */
+
+/* A button turns the 3-D view on, knobs turn the camera: the frame after
+ * the button and the last frame are the library's views from those
+ * cameras, byte for byte (board/KIOSK.md), and a camera move runs the view
+ * pass alone (the stats' passes column). */
+static void view(const char *kiosk, const char *hfgen)
+{
+    make_scene(hfgen, "30,20,3,100");
+    kh_write(kh_path("c.ini"), "[button v]\naction = view.toggle\n"
+                               "[knob caz]\naction = camera.azimuth\n"
+                               "[knob czoom]\naction = camera.zoom\n");
+    kh_write(kh_path("r.txt"), "100 v press\n"
+                               "350 caz turn 4      # 250 + 20 = 270\n"
+                               "600 czoom turn -2   # 1.1^-2\n");
+    char *const argv[] = {(char *)kiosk, (char *)kh_path("scene.ini"), "--input",
+                          (char *)kh_path("c.ini"), "--replay", (char *)kh_path("r.txt"),
+                          "--display", "headless", "--size", "96x64", "--out",
+                          (char *)kh_path("f-%02d.png"), "--stats", (char *)kh_path("stats.txt"),
+                          "--exit-after-replay", NULL};
+    pid_t pid = kh_spawn(argv, kh_path("err.txt"));
+    const int st = pid > 0 ? kh_wait(pid, 120) : -1;
+    CHECK(exited_ok(st), "view run: status %d", st);
+    const int frames = kh_count_lines(kh_path("stats.txt"), "frame ");
+    CHECK(frames == 4, "%d frames, want 4 (the first, then one per event)", frames);
+    const struct { const char *file; double az, zoom; } shown[2] = {
+        {"f-01.png", 250.0, 1.0}, {"f-03.png", 270.0, 1.0 / (1.1 * 1.1)}};
+    for (int k = 0; k < 2; ++k) {
+        int w = 0, h = 0, no_gl = 0;
+        uint8_t *got = kh_png_rgba(kh_path(shown[k].file), &w, &h);
+        uint8_t *want = kh_direct_view(kh_path("scene.ini"), shown[k].az, 38.0, shown[k].zoom, 96,
+                                       64, &no_gl);
+        CHECK(got && want && w == 96 && h == 64 && !memcmp(got, want, (size_t)96 * 64 * 4),
+              "%s (%dx%d) != the library's view from azimuth %g, elevation 38, zoom %g",
+              shown[k].file, w, h, shown[k].az, shown[k].zoom);
+        free(got);
+        free(want);
+    }
+    /* "frame N T RENDER_MS PASSES_RAN ...": the camera moves (frames 2, 3)
+     * ran one pass, the view. */
+    char *s = kh_read(kh_path("stats.txt"));
+    int ran[4] = {-1, -1, -1, -1};
+    for (char *line = s; line && *line; line = strchr(line, '\n') ? strchr(line, '\n') + 1 : NULL) {
+        int n, r;
+        long long t;
+        double ms;
+        if (sscanf(line, "frame %d %lld %lf %d", &n, &t, &ms, &r) == 4 && n >= 0 && n < 4)
+            ran[n] = r;
+    }
+    free(s);
+    CHECK(ran[2] == 1 && ran[3] == 1, "camera moves ran %d and %d passes, want 1 (the view)",
+          ran[2], ran[3]);
+    if (failures) {
+        dump(kh_path("err.txt"));
+        dump(kh_path("stats.txt"));
+    }
+}
+
 /* ---- replay ------------------------------------------------------------------ */
 
 static const char *const config =
@@ -398,6 +456,8 @@ int main(int argc, char **argv)
     const char *mode = argv[1];
     if (!strcmp(mode, "replay"))
         replay(argv[2], argv[3], 0);
+    else if (!strcmp(mode, "view"))
+        view(argv[2], argv[3]);
     else if (!strcmp(mode, "amortize"))
         replay(argv[2], argv[3], 1);
     else if (!strcmp(mode, "signals"))
