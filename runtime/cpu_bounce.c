@@ -87,8 +87,8 @@ static double direct_horizon(const bounce_ctx *b, double *omega, int d, int i, i
 /* sum_bands Lo_{b-1} W over slice d at receiver (i, j): the receiver's own
  * cell, then each scale's sample and `refine` more between it and the next
  * (the spacing the refined horizons reach about their max), nearest first;
- * the highest sample of each scale's group casts one band, lit at its
- * position (bounce_gather.frag says why). */
+ * each scale's group casts one band up to its highest sample, lit at the
+ * first sample that rose (bounce_gather.frag walk_scales says why). */
 static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j,
                          const double n[3], double acc[3])
 {
@@ -114,8 +114,11 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
         for (int q = 0; q <= b->refine && !off; ++q) {
             double e, gx, gy;
             if (!(off = !sample(b, taps[sc].read, h0, i, j, c, s, d0 * b->step[q], &e, &gx, &gy)) &&
-                e > best)
-                best = e, bx = gx, by = gy;
+                e > best) {
+                if (best == top)
+                    bx = gx, by = gy;
+                best = e;
+            }
         }
         top = cast(b, a, n[2], top, fmin(best, cap), bx, by, acc, last);
         if (off)

@@ -11,10 +11,10 @@
  * above everything nearer casts the band of elevations between the old top
  * and its own: those directions hit the terrain between the two samples,
  * and the band takes the sample's radiance Lo_{b-1} (NS09's casting set,
- * the occluder's exit radiance for its band); of a scale's group of
- * samples the highest casts one band (the samples find the peaks between
- * scales, the band's radiance changes little within the group, and each
- * band costs the GLES gather a fetch and an atan).  The band's weight is the
+ * the occluder's exit radiance for its band); a scale's group of samples
+ * casts one band, up to its highest sample and lit at the first one that
+ * rose (the samples find the peaks between scales, and each band costs the
+ * GLES gather a fetch and an atan).  The band's weight is the
  * clamped cosine's exact integral over it (hfs_slice_cosine), so
  *   Lo_b(x) = rho(x) / pi * sum_j dphi sum_bands Lo_{b-1}(y_i) W(band_i).
  * Lo_{b-1} is read bilinearly at the sample's grid position from the full
