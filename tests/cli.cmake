@@ -23,3 +23,9 @@ if(HFS_SANITIZE)
                "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/lsan.supp:print_suppressions=0")
 endif()
 endif()
+
+# hfgen albedo: the benchmarks' albedo maps (tools/bench_bounce.sh ALBEDO=map).
+add_test(NAME hfgen_albedo
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/hfgen_albedo.sh
+                 $<TARGET_FILE:hfgen> $<TARGET_FILE:hfshade>)
+set_tests_properties(hfgen_albedo PROPERTIES LABELS io TIMEOUT 60)

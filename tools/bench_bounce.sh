@@ -7,8 +7,10 @@
 # against the truth's (mean error over its largest value, and the mean
 # signed error over the same: its bias), and the wall
 # time of each (this machine's cores).  Prints a Markdown table.
-# usage: tools/bench_bounce.sh [BUILD_DIR] [SIZE] [TRUTH_SAMPLES] [BACKENDS] [MAX_BOUNCES]
-#        (defaults: build 128 256 cpu 3; BACKENDS e.g. cpu,gles: each against the same truth)
+# usage: tools/bench_bounce.sh [BUILD_DIR] [SIZE] [TRUTH_SAMPLES] [BACKENDS] [MAX_BOUNCES] [ALBEDO]
+#        (defaults: build 128 256 cpu 3 uniform; BACKENDS e.g. cpu,gles: each against the
+#        same truth; ALBEDO "map": each scene lit with `hfgen albedo` of its heights,
+#        vegetation below and rock above, instead of albedo 1)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=tools/bench_lib.sh
@@ -18,6 +20,7 @@ N=${2:-128}
 S=${3:-256}
 BE=${4:-cpu}
 MB=${5:-3}
+AL=${6:-uniform}
 C=$B/bench-cache
 mkdir -p "$C"
 bench_scenes "$B/tools/hfgen" "$C" "$N"
@@ -28,6 +31,10 @@ for sc in "${scenes[@]}"; do
     keys=()
     read -r -a flags <<<"$extra"
     for ((i = 0; i < ${#flags[@]}; i += 2)); do keys+=("${flags[i]#--}=${flags[i + 1]}"); done
+    if [ "$AL" = map ]; then
+        "$B/tools/hfgen" albedo "$hf" -o "${hf%.pfm}-albedo.pfm"
+        keys+=("albedo-map=${hf%.pfm}-albedo.pfm")
+    fi
     "$B/tests/bench_bounce" "$name" "backends=$BE" "max-bounces=$MB" "height=$hf" "${keys[@]}" env-map=data/courtyard.exr \
         key=336,15,2,1500 "truth-samples=$S"
 done

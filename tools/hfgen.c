@@ -7,6 +7,13 @@
  *              eggtray | city (blocks, vertical walls) | spike (one texel) |
  *              cliff | fractal (--seed, --relief) | panel (grooved, embossed)
  *   hfgen crop    IN --rect X,Y,W,H -o OUT.pfm   (any loadable height file)
+ *   hfgen albedo  IN -o OUT.pfm                  (an albedo map for IN's heights)
+ *
+ * The albedo map (RGB PFM, the heights' size; what tools/bench_bounce.sh
+ * lights its scenes with) is vegetation below and bare rock above:
+ * (0.10, 0.16, 0.07) to (0.42, 0.40, 0.36) over the middle half of the
+ * height range (a smoothstep of the normalized height), so an indirect
+ * bounce carries colour and the albedo varies from texel to texel.
  *
  * Heights are in texel units (use dx = 1, zscale = 1 to keep proportions);
  * the same arguments give the same file, bit for bit, on any machine
@@ -24,7 +31,39 @@
 static void usage(void)
 {
     fprintf(stderr, "usage: hfgen %s --size WxH -o OUT.pfm [--seed N] [--relief R]\n"
-                    "       hfgen crop IN --rect X,Y,W,H -o OUT.pfm\n", hfs_terrain_names());
+                    "       hfgen crop IN --rect X,Y,W,H -o OUT.pfm\n"
+                    "       hfgen albedo IN -o OUT.pfm\n", hfs_terrain_names());
+}
+
+/* hfgen albedo: the map described above, written as RGB PFM. */
+static int albedo_map(const char *in, const char *out)
+{
+    hfs_error err = {{0}};
+    hfs_heightmap hm;
+    if (hfs_height_load(in, NULL, &hm, &err)) {
+        fprintf(stderr, "hfgen: %s\n", err.msg);
+        return 1;
+    }
+    const size_t n = (size_t)hm.width * hm.height;
+    float lo = hm.z[0], hi = hm.z[0];
+    for (size_t i = 1; i < n; ++i)
+        lo = hm.z[i] < lo ? hm.z[i] : lo, hi = hm.z[i] > hi ? hm.z[i] : hi;
+    hfs_image img;
+    int rc = hfs_image_alloc(&img, hm.width, hm.height, &err);
+    static const float veg[3] = {0.10f, 0.16f, 0.07f}, rock[3] = {0.42f, 0.40f, 0.36f};
+    for (size_t i = 0; i < n && !rc; ++i) {
+        const double t = hi > lo ? (hm.z[i] - lo) / (hi - lo) : 0.0;
+        const double u = fmin(fmax((t - 0.25) / 0.5, 0.0), 1.0), s = u * u * (3.0 - 2.0 * u);
+        for (int c = 0; c < 3; ++c)
+            img.rgb[3 * i + (size_t)c] = (float)(veg[c] + s * (rock[c] - veg[c]));
+    }
+    if (!rc)
+        rc = hfs_pfm_write(out, &img, 0, &err);
+    if (rc)
+        fprintf(stderr, "hfgen: %s\n", err.msg);
+    hfs_image_free(&img);
+    hfs_heightmap_free(&hm);
+    return rc ? 1 : 0;
 }
 
 int main(int argc, char **argv)
@@ -73,6 +112,13 @@ int main(int argc, char **argv)
     if (!out) {
         usage();
         return 2;
+    }
+    if (!strcmp(kind, "albedo")) {
+        if (!in) {
+            usage();
+            return 2;
+        }
+        return albedo_map(in, out);
     }
     hfs_error err = {{0}};
     float *z = NULL;
