@@ -373,6 +373,13 @@ static void check_actions(void)
         const hfs_action_info *info = hfs_action_get((hfs_action)a);
         if (!info->continuous)
             continue;
+        if (info->key == HFS_SK_COUNT) { /* the kiosk's own state (the 3-D view's camera) */
+            const hfs_key_range r = hfs_action_range(info);
+            CHECK(r.lo == info->min && r.hi == info->max && !r.lo_open,
+                  "%s: the kiosk's own value does not accept exactly its default [min, max]",
+                  info->name);
+            continue;
+        }
         const hfs_key_number *n = hfs_scene_key_number(info->key, info->number);
         CHECK(n != NULL, "%s: no scene number", info->name);
         if (!n)
