@@ -9,8 +9,7 @@ add_library(hfs_shared STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/pyramid_layout.c
   ${CMAKE_CURRENT_SOURCE_DIR}/local_geometry.c
   ${CMAKE_CURRENT_SOURCE_DIR}/key_setup.c
-  ${CMAKE_CURRENT_SOURCE_DIR}/slice_light.c
-  ${CMAKE_CURRENT_SOURCE_DIR}/gloss.c)
+  ${CMAKE_CURRENT_SOURCE_DIR}/slice_light.c)
 target_compile_definitions(hfs_shared PRIVATE HFS_BUILDING_LIBRARY)
 target_include_directories(hfs_shared PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(hfs_shared PUBLIC hfs_base hfs_sh)
