@@ -314,10 +314,14 @@ static int check_lights(const hfs_lighting *l, hfs_error *err)
 
 /* Glossy surfaces: specular and gloss in their keys' ranges, albedo +
  * specular <= 1 (the lobe and the Lambertian term share the energy), a
- * unit view direction above the horizon. */
+ * unit view direction above the horizon.  gloss and view_dir are checked
+ * only when specular > 0: a lighting zeroed by its caller (no
+ * hfs_lighting_defaults) stays the valid diffuse one it was. */
 static int check_gloss(const hfs_lighting *l, hfs_error *err)
 {
     int rc = CHECK_LIB(HFS_SK_SPECULAR, 0, l->specular, "specular");
+    if (rc || l->specular == 0.0)
+        return rc;
     if (!rc)
         rc = CHECK_LIB(HFS_SK_GLOSS, 0, l->gloss, "gloss");
     if (!rc && !(l->albedo + l->specular <= 1.0 + 1e-12))
