@@ -18,6 +18,7 @@
  * (wedge tables) V and V_open from the full swath's table object.
  */
 #include "cpu_local.h"
+#include "gloss.h"
 
 #include "local_geometry.h"
 
@@ -67,6 +68,7 @@ struct hfs_cpu_local {
     hfs_visibility_path path;
     int row_pass;              /* full mode: horizons of the fixed directions per row */
     double rho;                /* albedo */
+    hfs_gloss gloss;           /* glossy surfaces (gloss.h) */
     double h_zonal[HFS_ZH_N];
     double E[HFS_SH_N * HFS_NLP_N];
     int n_src;
@@ -141,6 +143,7 @@ int hfs_cpu_local_create(const hfs_field *f, const hfs_lighting *l, const hfs_qu
     lc->path = q->visibility == HFS_VIS_WEDGE_TABLE ? HFS_VIS_WEDGE_TABLE : HFS_VIS_LEGENDRE;
     lc->row_pass = lc->mode == HFS_LOCAL_SWATH_FULL || lc->path == HFS_VIS_WEDGE_TABLE;
     lc->rho = l->albedo;
+    hfs_gloss_make(l, &lc->gloss);
     hfs_zh_clamped_cosine(lc->h_zonal);
     hfs_wedge_elevation_moments(lc->E);
     hfs_field_extent ext;
@@ -369,19 +372,41 @@ static void legendre_sums(const hfs_cpu_local *lc, const hfs_local_swath *sw,
     }
 }
 
-/* One light at one receiver: adds to lo[3]. */
+/* The ratio form's visible fraction (DESIGN.md "Local lights"). */
+static double visible_ratio(double num, double den, double den_scale)
+{
+    if (num == den)
+        return 1.0; /* no horizon above its floor: the unshadowed value */
+    if (den > 1e-12 * den_scale)
+        return fmin(1.0, fmax(0.0, num / den));
+    return 0.0;
+}
+
+/* Adds w Le to the glossy term sp (NULL: not glossy). */
+static void add_spec(double *sp, double w, const local_src *src)
+{
+    for (int ch = 0; sp && ch < 3; ++ch)
+        sp[ch] += w * src->le[ch];
+}
+
+/* One light at one receiver: adds to lo[3] and, when glossy (r: R with
+ * N.R = nr > 0), to sp[3] (may be NULL). */
 static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *src, int i,
                   int j, const double p[3], const double n[3], const double hn[HFS_SH_N],
-                  double lo[3])
+                  const double r[3], double nr, double lo[3], double *sp)
 {
     hfs_local_view lv;
     hfs_local_view_make(&src->light, p, &lv);
     if (lv.inside) {
-        /* E = pi over the whole sphere, nothing in between (SPEC). */
+        /* E = pi over the whole sphere, nothing in between (SPEC); the lobe
+         * times the cosine integrates to at most 1: ks Le (exact at R = N). */
         for (int ch = 0; ch < 3; ++ch)
             lo[ch] += lc->rho * src->le[ch];
+        add_spec(sp, nr > 0.0 ? lc->gloss.ks : 0.0, src);
         return;
     }
+    /* The glossy term's weight per unit E_cap ratio: the lobe at the centre. */
+    const double gl = nr > 0.0 ? lc->gloss.ks * hfs_gloss_lobe(&lc->gloss, r, lv.dir) : 0.0;
     const double cos_beta = n[0] * lv.dir[0] + n[1] * lv.dir[1] + n[2] * lv.dir[2];
     const double e_cap = hfs_cap_irradiance(cos_beta, lv.alpha);
     if (!(e_cap > 0.0))
@@ -389,6 +414,7 @@ static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *sr
     if (src->open) { /* nothing can shadow it: the unshadowed value */
         for (int ch = 0; ch < 3; ++ch)
             lo[ch] += lc->rho / PI * e_cap * src->le[ch];
+        add_spec(sp, gl * e_cap, src);
         return;
     }
 
@@ -477,25 +503,22 @@ static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *sr
         den = hfs_sh_dot(vo, m);
         den_scale = sqrt(hfs_sh_dot(m, m) * hfs_sh_dot(vo, vo));
     }
-    double ratio;
-    if (num == den)
-        ratio = 1.0; /* no horizon above its floor: the unshadowed value */
-    else if (den > 1e-12 * den_scale)
-        ratio = fmin(1.0, fmax(0.0, num / den));
-    else
-        ratio = 0.0;
+    const double ratio = visible_ratio(num, den, den_scale);
     const double scale = lc->rho / PI * e_cap * ratio;
     for (int ch = 0; ch < 3; ++ch)
         lo[ch] += scale * src->le[ch];
+    add_spec(sp, gl * e_cap * ratio, src);
 }
 
 void hfs_cpu_local_row(const hfs_cpu_local *lc, int worker, int j, const double *normals,
-                       double *lo_row)
+                       double *lo_row, double *sp_row)
 {
     local_scratch *s = &lc->scratch[worker];
     const hfs_field *f = lc->f;
     for (int x = 0; x < 3 * lc->w; ++x)
         lo_row[x] = 0.0;
+    for (int x = 0; sp_row && x < 3 * lc->w; ++x)
+        sp_row[x] = 0.0;
     if (lc->row_pass)
         row_pass(lc, s, j, normals);
     for (int i = 0; i < lc->w; ++i) {
@@ -503,7 +526,10 @@ void hfs_cpu_local_row(const hfs_cpu_local *lc, int worker, int j, const double 
         const double p[3] = {i * f->dx, j * f->dx, hfs_field_z(f, i, j) + LIFT * f->dx};
         double hn[HFS_SH_N];
         hfs_sh_rotate_zonal(lc->h_zonal, n[0], n[1], n[2], hn);
+        double r[3];
+        const double nr = sp_row ? hfs_gloss_reflect(&lc->gloss, n, r) : 0.0;
         for (int q = 0; q < lc->n_src; ++q)
-            shade(lc, s, &lc->src[q], i, j, p, n, hn, lo_row + 3 * i);
+            shade(lc, s, &lc->src[q], i, j, p, n, hn, r, nr, lo_row + 3 * i,
+                  sp_row ? sp_row + 3 * i : NULL);
     }
 }

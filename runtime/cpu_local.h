@@ -69,9 +69,11 @@ void hfs_cpu_local_destroy(hfs_cpu_local *lc);
 
 /* Exit radiance of every local light at receivers (0..W-1, j): lo_row
  * (W x 3 doubles) is overwritten.  normals: the row's unit normals (W x 3).
- * worker in 0..threads-1 selects the scratch. */
+ * worker in 0..threads-1 selects the scratch.  sp_row (W x 3, or NULL when
+ * the lighting is not glossy) gets the lights' glossy term (gloss.h): ks Le
+ * E_cap ratio times the lobe at the light's centre, ks Le inside a light. */
 void hfs_cpu_local_row(const hfs_cpu_local *lc, int worker, int j, const double *normals,
-                       double *lo_row);
+                       double *lo_row, double *sp_row);
 
 /* hfs_cpu_render (backends.h) with explicit local-light options (NULL =
  * defaults); defined in cpu_render.c. */

@@ -28,18 +28,14 @@
  *   parallel, ~0.1 s each).
  *
  * Memory: (N - min(k*o, N-1)) reconstructed levels of (W+1)(H+1) doubles
- * (29 levels, 61 MB at 512^2 with k=4, o=2) plus, per worker, a few rows of
- * horizons (N x W and sum of swath sizes x W doubles).
+ * plus, per worker, rows of horizons; a glossy frame its W x H x 3 term.
+ * Glossy surfaces (gloss.h): each texel's lobe term goes to c->spec, added
+ * after the albedo map (the lobe is not the albedo's).
  *
- * Deliberate choices where DESIGN.md is silent or would misbehave (each is
- * also in the report to the lead):
- *   - den is treated as zero when den <= 1e-12 * |L_key| * |V_open| (DESIGN:
- *     1e-12 * |L_key|), so the test scales with the swath: a tiny alpha has a
- *     tiny swath and tiny V_open, and must not lose its light.
- *   - a key light whose disk lies entirely below the receiver's tangent plane
- *     (E_cap = 0) skips the visibility work: its contribution is exactly 0.
- *   - quality.subsample and quality.precision belong to the GLES path; the
- *     reference always works at full resolution in double.
+ * Deliberate choices (also in DESIGN.md "Shading"): den counts as zero when
+ * den <= 1e-12 |L_key| |V_open| (scales with the swath, so a tiny alpha keeps
+ * its light); a disk wholly below the tangent plane (E_cap = 0) skips the
+ * visibility work; subsample and precision are the GLES path's only.
  *
  * Local lights (issue 4) live in cpu_local.c (DESIGN.md "Local lights"); this
  * file only hooks them in, marked "local lights (issue 4)": the module is
@@ -58,6 +54,7 @@
 #include "visibility.h"
 #include "cpu_bounce.h"
 #include "field_geom.h"
+#include "gloss.h"
 #include "lights.h"
 #include "parallel.h"
 #include "pyramid_layout.h"
@@ -95,6 +92,7 @@ typedef struct worker_scratch {
     double *floors;            /* per key job: n_j x W (V_open) */
     double *om, *fl;           /* gathered per texel: max n */
     double *local_lo;          /* local lights (issue 4): W x 3, or NULL */
+    double *local_sp;          /* their glossy term: W x 3 when glossy, or NULL */
 } worker_scratch;
 
 typedef struct render_ctx {
@@ -115,6 +113,8 @@ typedef struct render_ctx {
     worker_scratch *scratch;
     const hfs_cpu_local *local; /* local lights (issue 4), NULL if none */
     hfs_slice_table slices;    /* HFS_VIS_SLICE: the environment's slices (p NULL otherwise) */
+    hfs_gloss gloss;           /* glossy surfaces (gloss.h) */
+    float *spec;               /* W x H x 3 glossy term when gloss.on, added after the map */
 } render_ctx;
 
 
@@ -232,7 +232,7 @@ static void render_row(void *ctx, int j, int worker)
         hfs_field_normal(c->f, i, j, s->normals + 3 * i);
     trace_row(c, s, j);
     if (c->local) /* local lights (issue 4) */
-        hfs_cpu_local_row(c->local, worker, j, s->normals, s->local_lo);
+        hfs_cpu_local_row(c->local, worker, j, s->normals, s->local_lo, s->local_sp);
 
     float *dst = c->out->rgb + (size_t)j * (size_t)w * 3;
     for (int i = 0; i < w; ++i) {
@@ -240,6 +240,8 @@ static void render_row(void *ctx, int j, int worker)
         double hn[HFS_SH_N];
         hfs_sh_rotate_zonal(c->h_zonal, n[0], n[1], n[2], hn);
         double lo[3] = {0.0, 0.0, 0.0};
+        double r[3], sp[3] = {0.0, 0.0, 0.0}; /* glossy: R and the term */
+        const double nr = c->gloss.on ? hfs_gloss_reflect(&c->gloss, n, r) : 0.0;
         for (int q = 0; q < c->n_jobs; ++q) {
             const swath_job *job = &c->jobs[q];
             const int nd = job->swath.n;
@@ -260,6 +262,8 @@ static void render_row(void *ctx, int j, int worker)
                 for (int ch = 0; ch < 3; ++ch)
                     lo[ch] += env_clamp(c->rho_pi * hfs_sh_dot(t, c->l_env[ch]),
                                         c->rho_pi * hfs_sh_dot(hn, c->l_env[ch]), c->env_neg[ch]);
+                if (nr > 0.0)
+                    hfs_gloss_env(&c->gloss, nr, r, t, hn, c->l_env, sp);
                 continue;
             }
             const double cos_beta = n[0] * job->dir[0] + n[1] * job->dir[1] + n[2] * job->dir[2];
@@ -283,12 +287,21 @@ static void render_row(void *ctx, int j, int worker)
             }
             for (int ch = 0; ch < 3; ++ch)
                 lo[ch] += c->rho_pi * job->le[ch] * e_cap * ratio;
+            /* Glossy: the lobe at the disk's centre times its visible
+             * cosine-weighted solid angle (DESIGN.md "Glossy surfaces"). */
+            const double gk = nr > 0.0 ? c->gloss.ks * e_cap * ratio *
+                                         hfs_gloss_lobe(&c->gloss, r, job->dir) : 0.0;
+            for (int ch = 0; ch < 3; ++ch)
+                sp[ch] += gk * job->le[ch];
         }
         if (c->local) /* local lights (issue 4) */
             for (int ch = 0; ch < 3; ++ch)
                 lo[ch] += s->local_lo[3 * i + ch];
         for (int ch = 0; ch < 3; ++ch)
             dst[3 * i + ch] = to_output(lo[ch]);
+        for (int ch = 0; ch < 3 && c->spec; ++ch)
+            c->spec[3 * ((size_t)j * w + i) + ch] =
+                to_output(sp[ch] + (s->local_sp ? s->local_sp[3 * i + ch] : 0.0));
     }
 }
 
@@ -326,6 +339,7 @@ static void free_scratch(worker_scratch *s)
     free(s->om);
     free(s->fl);
     free(s->local_lo);
+    free(s->local_sp);
 }
 
 int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
@@ -356,7 +370,7 @@ static void add_jobs(render_ctx *c, const hfs_lighting *l, const hfs_quality *q)
     }
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i) {
         const hfs_key_light *k = &l->key[i];
-        if (!hfs_key_light_contributes(k, l->albedo))
+        if (!hfs_key_light_contributes(k, l->albedo + l->specular))
             continue;
         swath_job *job = &c->jobs[c->n_jobs++];
         job->vis_of = -1;
@@ -461,8 +475,11 @@ static int alloc_scratch(render_ctx *c, int threads, int max_n, hfs_error *err)
         s->fl = malloc((size_t)max_n * sizeof(double));
         if (local) /* local lights (issue 4) */
             s->local_lo = malloc((size_t)w * 3 * sizeof(double));
+        if (local && c->gloss.on)
+            s->local_sp = malloc((size_t)w * 3 * sizeof(double));
         if (!s->normals || !s->floor_row || !s->maxd || !s->levels || !s->omega ||
-            !s->floors || !s->om || !s->fl || (local && !s->local_lo))
+            !s->floors || !s->om || !s->fl || (local && !s->local_lo) ||
+            (local && c->gloss.on && !s->local_sp))
             return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for %d workers",
                             threads);
     }
@@ -501,11 +518,12 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     const int has_env = hfs_env_contributes(l);
     int n_key = 0;
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i)
-        n_key += hfs_key_light_contributes(&l->key[i], l->albedo);
+        n_key += hfs_key_light_contributes(&l->key[i], l->albedo + l->specular);
     int n_local = 0; /* local lights (issue 4) */
     for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i)
         n_local += hfs_local_light_contributes(&l->local[i]);
-    if ((!has_env && n_key == 0 && n_local == 0) || !(l->albedo > 0.0)) {
+    hfs_gloss_make(l, &c.gloss);
+    if ((!has_env && n_key == 0 && n_local == 0) || !(l->albedo > 0.0 || c.gloss.on)) {
         memset(out->rgb, 0, (size_t)w * (size_t)h * 3 * sizeof *out->rgb);
         if (progress)
             progress(user, 1.0);
@@ -552,8 +570,14 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     if ((rc = alloc_scratch(&c, threads, max_n, err)))
         goto done;
 
+    if (c.gloss.on && !(c.spec = malloc((size_t)w * (size_t)h * 3 * sizeof *c.spec))) {
+        rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the glossy term");
+        goto done;
+    }
     hfs_parallel_rows(h, threads, render_row, &c, progress, user);
     hfs_albedo_map_apply(l->albedo_map, out);
+    for (size_t p = 0; c.spec && p < (size_t)w * (size_t)h * 3; ++p)
+        out->rgb[p] += c.spec[p]; /* the lobe is not the albedo's */
 
 done:
     hfs_cpu_local_destroy((hfs_cpu_local *)c.local); /* local lights (issue 4) */
@@ -567,6 +591,7 @@ done:
             hfs_visibility_destroy(c.jobs[j].vis);
     }
     hfs_slice_table_free(&c.slices);
+    free(c.spec);
     free(c.jobs);
     free(c.omega_at);
     hfs_cpu_pyramid_destroy(pyr);

@@ -130,6 +130,16 @@ typedef struct hfs_lighting {
      * backend gather them along the environment's azimuths (quality
      * nphi_bounce, bounce_refine; GLES on the bounce_subsample grid). */
     int bounces;
+    /* Glossy surfaces (SPEC "Glossy", DESIGN.md "Glossy surfaces"): an
+     * energy-normalized Phong lobe beside the Lambertian term,
+     * f_s = specular (gloss+2)/(2 pi) max(0, R.w)^gloss, R the view
+     * direction reflected about the texel's normal.  specular in [0, 1]
+     * (albedo + specular <= 1), default 0 = diffuse only (the old output,
+     * bit for bit); gloss >= 1, default 32; view_dir: unit vector towards
+     * the viewer, z > 0, default (0, 0, 1).  Not multiplied by albedo_map. */
+    double specular;
+    double gloss;
+    double view_dir[3];
 } hfs_lighting;
 
 /* ---- quality settings ----------------------------------------------------- */

@@ -312,6 +312,29 @@ static int check_lights(const hfs_lighting *l, hfs_error *err)
     return rc;
 }
 
+/* Glossy surfaces: specular and gloss in their keys' ranges, albedo +
+ * specular <= 1 (the lobe and the Lambertian term share the energy), a
+ * unit view direction above the horizon.  gloss and view_dir are checked
+ * only when specular > 0: a lighting zeroed by its caller (no
+ * hfs_lighting_defaults) stays the valid diffuse one it was. */
+static int check_gloss(const hfs_lighting *l, hfs_error *err)
+{
+    int rc = CHECK_LIB(HFS_SK_SPECULAR, 0, l->specular, "specular");
+    if (rc || l->specular == 0.0)
+        return rc;
+    if (!rc)
+        rc = CHECK_LIB(HFS_SK_GLOSS, 0, l->gloss, "gloss");
+    if (!rc && !(l->albedo + l->specular <= 1.0 + 1e-12))
+        return hfs_fail(err, HFS_E_INVALID, "albedo %g + specular %g is above 1 (energy)",
+                        l->albedo, l->specular);
+    const double *v = l->view_dir;
+    const double len2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    if (!rc && !(fabs(len2 - 1.0) <= 1e-9 && v[2] > 0.0))
+        return hfs_fail(err, HFS_E_INVALID, "view-dir: (%g, %g, %g) is not a unit vector above "
+                        "the horizon (elevation in (0, 90] degrees)", v[0], v[1], v[2]);
+    return rc;
+}
+
 int hfs_validate_lighting(const hfs_lighting *l, hfs_error *err)
 {
     if (!l)
@@ -324,6 +347,8 @@ int hfs_validate_lighting(const hfs_lighting *l, hfs_error *err)
             rc = CHECK_LIB(HFS_SK_ENV_SH, k, l->env_sh[c][k], "env-sh");
     if (!rc && l->has_env)
         rc = CHECK_LIB(HFS_SK_ENV_ROTATE, 0, l->env_rotate, "env-rotate");
+    if (!rc)
+        rc = check_gloss(l, err);
     return rc ? rc : check_lights(l, err);
 }
 

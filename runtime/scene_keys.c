@@ -129,6 +129,20 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                             "partial", "local lights: per-receiver partial swath or full"},
     [HFS_SK_PRESET] = {"preset", "kiosk|panel|headless", HFS_FORM_WORD, 0, 0, 0, {{0}}, "kiosk",
                        "quality settings per use (BENCHMARKS.md); other quality keys override it"},
+    /* Glossy surfaces (DESIGN.md "Glossy surfaces"); albedo + specular <= 1
+     * is checked with the lighting (hfs_validate_lighting). */
+    [HFS_SK_SPECULAR] = {"specular", "F", HFS_FORM_REALS, 1, 0, 0,
+                         {{NULL, HFS_UNIT_NONE, {0.0, 1.0, 0}, NULL}}, "0",
+                         "specular albedo of the Phong lobe (0: diffuse only)"},
+    [HFS_SK_GLOSS] = {"gloss", "S", HFS_FORM_REALS, 1, 0, 0,
+                      {{NULL, HFS_UNIT_NONE, {1.0, 10000.0, 0}, NULL}}, "32",
+                      "Phong exponent of the specular lobe"},
+    /* The library takes a unit vector (hfs_lighting.view_dir): no field per
+     * number, its own check in renderer.c. */
+    [HFS_SK_VIEW_DIR] = {"view-dir", "AZ,EL", HFS_FORM_REALS, 2, 0, 0,
+                         {{"azimuth", HFS_UNIT_DEGREES, {-3600.0, 3600.0, 0}, NULL},
+                          {"elevation", HFS_UNIT_DEGREES, {0.0, 90.0, 1}, NULL}},
+                         "0,90", "direction towards the viewer of glossy grid dumps, degrees"},
 };
 
 const hfs_scene_key *hfs_scene_key_get(hfs_scene_key_id id)

@@ -42,6 +42,8 @@ void hfs_lighting_defaults(hfs_lighting *l)
 {
     memset(l, 0, sizeof *l);
     l->albedo = 1.0;
+    l->gloss = 32.0;      /* glossy surfaces: specular 0 = off */
+    l->view_dir[2] = 1.0; /* seen from +z (SPEC "Glossy") */
 }
 
 int hfs_image_alloc(hfs_image *img, int width, int height, hfs_error *err)

@@ -24,6 +24,7 @@
 #include "parallel.h"
 #include "sh.h"
 #include "truth_bounce.h"
+#include "truth_gloss.h"
 #include "truth_raycast.h"
 #include "truth_sampling.h"
 
@@ -38,6 +39,7 @@
 #define MARCH_STEP 0.25    /* horizon march step, texels                    */
 #define TRIG_N 7           /* L along a vertical great circle: degree-3 trig */
 #define LOCAL_SLOT0 64     /* RNG stream ids of local lights start here     */
+#define GLOSS_SLOT 4096    /* RNG stream id of the glossy environment term  */
 
 /* L_c(phi_a, e) = t[0] + sum_{n=1..3} t[2n-1] cos(n e) + t[2n] sin(n e):
  * exact, since L is a cubic polynomial in s and s(phi, e) is linear in
@@ -78,6 +80,10 @@ typedef struct truth_ctx {
     local_prep local[HFS_MAX_LOCAL_LIGHTS];
 
     float *out;
+    hfs_gloss gloss;           /* glossy surfaces (gloss.h) */
+    float *spec;               /* W x H x 3 glossy term when gloss.on */
+    double env_rot[3][HFS_SH_N]; /* the rotated sky, for the glossy term */
+    int env_samples;           /* lobe samples per receiver (truth-samples) */
 } truth_ctx;
 
 static int radiance_zero(const float le[3])
@@ -87,14 +93,16 @@ static int radiance_zero(const float le[3])
 
 /* Sum over the stratified samples of the cap (axis d, frame t1/t2,
  * 1 - cos alpha = omc) of V(s) max(0, N.s); times Omega/n it estimates the
- * integral over the cap.  V from an exact ray from o (grid xy, world z) up to
+ * integral over the cap.  r non-NULL (glossy): *lobe_sum += the same sum
+ * weighted by the lobe (S+2)/(2 pi) max(0, r.s)^S.  V from an exact ray from o (grid xy, world z) up to
  * the grid edge (key: sphere_c NULL) or to the sphere's surface (local). */
 static double cap_visible_irradiance(const truth_ctx *x, const double o[3],
                                      const double p_world[3], const double n[3],
                                      const double d[3], const double t1[3],
                                      const double t2[3], double omc,
                                      const double *sphere_c, double sphere_r2,
-                                     uint64_t rng)
+                                     uint64_t rng, const hfs_gloss *gl, const double *r,
+                                     double *lobe_sum)
 {
     const int nt = x->n_theta, np = x->n_psi;
     double sum = 0.0;
@@ -128,8 +136,11 @@ static double cap_visible_irradiance(const truth_ctx *x, const double o[3],
                 if (tmax < 0.0)
                     tmax = 0.0;
             }
-            if (!hfs_truth_ray_hits(&x->grid, o, s, tmax))
+            if (!hfs_truth_ray_hits(&x->grid, o, s, tmax)) {
                 sum += ns;
+                if (r) /* glossy: the same visible sample, weighted by the lobe */
+                    *lobe_sum += ns * hfs_gloss_lobe(gl, r, s);
+            }
         }
     }
     return sum;
@@ -215,21 +226,30 @@ static void truth_row(void *vctx, int j, int worker)
         const double o[3] = {(double)i, (double)j, z0};        /* grid xy, world z */
         const double pw[3] = {i * f->dx, j * f->dx, z0};       /* world */
         double lo[3] = {0.0, 0.0, 0.0};
+        double rv[3], sp[3] = {0.0, 0.0, 0.0}; /* glossy: R and the term */
+        const double *r = x->gloss.on && hfs_gloss_reflect(&x->gloss, n, rv) > 0.0 ? rv : NULL;
 
         if (x->n_az > 0)
             env_receiver(x, i, j, z0, n, lo);
+        if (x->n_az > 0 && r)
+            hfs_truth_gloss_env(&x->grid, &x->gloss, x->env_rot, x->env_samples, o, n, r,
+                                rng_seed(rid, GLOSS_SLOT), sp);
 
         for (int k = 0; k < x->n_key; ++k) {
             const key_prep *kp = &x->key[k];
             /* Whole cap below the tangent plane: every sample gives 0. */
             if (n[0] * kp->d[0] + n[1] * kp->d[1] + n[2] * kp->d[2] <= -kp->sin_a)
                 continue;
+            double lobe = 0.0;
             const double e = cap_visible_irradiance(x, o, pw, n, kp->d, kp->t1, kp->t2,
                                                     kp->omc, NULL, 0.0,
-                                                    rng_seed(rid, kp->slot));
+                                                    rng_seed(rid, kp->slot), &x->gloss, r, &lobe);
             const double scale = x->rho / PI * (2.0 * PI * kp->omc) / ns * e;
-            for (int ch = 0; ch < 3; ++ch)
+            const double gs = x->gloss.ks * (2.0 * PI * kp->omc) / ns * lobe;
+            for (int ch = 0; ch < 3; ++ch) {
                 lo[ch] += scale * kp->le[ch];
+                sp[ch] += gs * kp->le[ch];
+            }
         }
 
         for (int k = 0; k < x->n_local; ++k) {
@@ -239,8 +259,10 @@ static void truth_row(void *vctx, int j, int worker)
             if (hfs_local_light_cap(L, pw, d, &dist, &alpha)) {
                 /* Inside the sphere: light from every direction, nothing
                  * between: E = integral max(0, N.s) over the sphere = pi. */
-                for (int ch = 0; ch < 3; ++ch)
+                for (int ch = 0; ch < 3; ++ch) { /* glossy: ks Le, as the CPU */
                     lo[ch] += x->rho * lp->le[ch];
+                    sp[ch] += r ? x->gloss.ks * lp->le[ch] : 0.0;
+                }
                 continue;
             }
             const double sa = L->radius / dist;
@@ -249,12 +271,16 @@ static void truth_row(void *vctx, int j, int worker)
             const double omc = sa * sa / (1.0 + sqrt(fmax(0.0, 1.0 - sa * sa)));
             double t1[3], t2[3];
             frame_around(d, t1, t2);
+            double lobe = 0.0;
             const double e = cap_visible_irradiance(x, o, pw, n, d, t1, t2, omc, L->pos,
                                                     L->radius * L->radius,
-                                                    rng_seed(rid, lp->slot));
+                                                    rng_seed(rid, lp->slot), &x->gloss, r, &lobe);
             const double scale = x->rho / PI * (2.0 * PI * omc) / ns * e;
-            for (int ch = 0; ch < 3; ++ch)
+            const double gs = x->gloss.ks * (2.0 * PI * omc) / ns * lobe;
+            for (int ch = 0; ch < 3; ++ch) {
                 lo[ch] += scale * lp->le[ch];
+                sp[ch] += gs * lp->le[ch];
+            }
         }
 
         float *px = x->out + 3 * rid;
@@ -263,6 +289,8 @@ static void truth_row(void *vctx, int j, int worker)
             if (!(v == v))
                 v = 0.0; /* unreachable for valid inputs; never emit NaN */
             px[ch] = (float)fmin(fmax(v, -FLT_MAX), FLT_MAX);
+            if (x->spec) /* never NaN: finite sums of finite terms */
+                x->spec[3 * rid + ch] = (float)fmin(fmax(sp[ch], -FLT_MAX), FLT_MAX);
         }
     }
 }
@@ -280,6 +308,7 @@ static int env_setup(truth_ctx *x, const hfs_lighting *l, int n_az)
     }
     if (!any)
         return HFS_OK; /* a black environment costs nothing */
+    memcpy(x->env_rot, rot, sizeof x->env_rot);
     x->env_grey = 1;
     for (int k = 0; k < HFS_SH_N; ++k)
         x->env_grey &= l->env_sh[1][k] == l->env_sh[0][k] && l->env_sh[2][k] == l->env_sh[0][k];
@@ -383,6 +412,13 @@ int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
     x->rho = l->albedo;
     x->out = out->rgb;
     int rc = HFS_OK;
+    hfs_gloss_make(l, &x->gloss);
+    x->env_samples = q->truth_light_samples;
+    if (x->gloss.on &&
+        !(x->spec = malloc((size_t)f->width * (size_t)f->height * 3 * sizeof *x->spec))) {
+        rc = hfs_fail(err, HFS_E_NOMEM, "truth: out of memory for the glossy term");
+        goto done;
+    }
 
     x->n_gl = q->truth_elev_order;
     if (hfs_gauss_legendre(x->n_gl, x->gl_x, x->gl_w) != 0) {
@@ -440,11 +476,14 @@ int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
     hfs_parallel_rows(f->height, q->threads, truth_row, x, progress ? span_progress : NULL,
                       &span);
     hfs_albedo_map_apply(l->albedo_map, out);
+    for (size_t p = 0; x->spec && p < (size_t)f->width * (size_t)f->height * 3; ++p)
+        out->rgb[p] += x->spec[p]; /* after the map (not the albedo's), before bounces */
     if (l->bounces > 0)
         rc = add_bounces(&x->grid, l, q, out, &span, err);
 
 done:
     hfs_truth_grid_free(&x->grid);
+    free(x->spec);
     free(x->az);
     free(x);
     return rc;

@@ -12,6 +12,12 @@
  *   local lights (HFS_LOCAL) Lo += rho/pi * Le * E_cap * ratio, E_cap at
  *                the texel, the ratio read bilinearly from the grid of
  *                local_visibility.frag (local_lights below).
+ *   glossy (HFS_GLOSSY, runtime/gloss.h; DESIGN.md "Glossy surfaces") the
+ *                Phong lobe about R = 2 (N.V) N - V, added after the albedo
+ *                map: each key/local light's lobe at its centre times its
+ *                factor E_cap ratio, the environment's ks (N.R) v L*lobe(R)
+ *                with v = clamp(T.Q / H.Q, 0, 1), Q the lobe's ZH at R.
+ *                Without it the program is the diffuse one, unchanged.
  * Everything that depends on the visibility was computed by those passes,
  * so this pass is what a turned or re-tinted environment or a change of
  * radiance costs.
@@ -27,6 +33,8 @@
 // hfs-variant: HFS_LOCAL 1
 // hfs-variant: HFS_ENV 1, HFS_LOCAL 1, HFS_FP32 1
 // hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_ALBEDO_MAP 1
+// hfs-variant: HFS_ENV 1, HFS_NKEYS 2, HFS_LOCAL 1, HFS_GLOSSY 1
+// hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_ALBEDO_MAP 1, HFS_GLOSSY 1, HFS_FP32 1
 
 #ifndef HFS_PI
 #define HFS_PI 3.14159265358979
@@ -69,6 +77,13 @@ layout(std140) uniform HfsShade {
     vec4 u_topen[4];                     /* k_l per coefficient: H * hemisphere(N)
                                             = k_l Y_lm(N) */
     vec4 u_lle[16];                      /* per local light: Le (rgb) */
+#ifdef HFS_GLOSSY
+    vec4 u_gview;                        /* (V towards the viewer, ks) */
+    vec4 u_gpar;                         /* (S, ks (S+2)/(2 pi), 0, 0) */
+    vec4 u_gzh[4];                       /* the lobe's g_l per coefficient */
+    vec4 u_kspec[8];                     /* per key light: ks (S+2)/(2 pi) Le E_max */
+    vec4 u_kdir[8];                      /* per key light: unit direction */
+#endif
 };
 /* Every radiance above (u_env, u_env_neg, u_kle, u_lle) comes multiplied by
  * the frame's power-of-two output scale (runtime/gles/pass_shade.c): no product here
@@ -76,6 +91,19 @@ layout(std140) uniform HfsShade {
 
 layout(location = 0) out vec4 o_hi;       /* RGB hi (fp16-exact), 1 */
 layout(location = 1) out vec4 o_lo;       /* RGB lo: hi + lo = value */
+
+#ifdef HFS_GLOSSY
+vec3 g_r;                                /* R = 2 (N.V) N - V (gloss.h hfs_gloss_reflect) */
+float g_nr;                              /* N.R; 0: no glossy term at this texel */
+vec3 g_spec;                             /* the glossy term, not the albedo map's */
+
+/* max(0, R.d)^S: the lobe over its peak (S+2)/(2 pi), in u_gpar.y. */
+float gloss_lobe(vec3 d)
+{
+    float c = dot(g_r, d);
+    return c > 0.0 && g_nr > 0.0 ? pow(c, u_gpar.x) : 0.0; /* 0 where N.V <= 0 */
+}
+#endif
 
 #ifdef HFS_LOCAL
 /* ---- local spherical lights (DESIGN.md "Local lights", "GLES path"):
@@ -126,6 +154,9 @@ vec3 local_lights(ivec2 p, vec3 n, vec2 uv)
         float c_tan = (rho2 - r * r) + v.z * v.z;  /* as local_visibility.frag */
         if (!(c_tan > 0.0)) {
             sum += u_misc.x * HFS_PI * u_lle[q].rgb;
+#ifdef HFS_GLOSSY
+            g_spec += g_nr > 0.0 ? u_gview.w * u_lle[q].rgb : vec3(0.0); /* as cpu_local.c */
+#endif
             continue;
         }
         float d = length(v);
@@ -135,6 +166,9 @@ vec3 local_lights(ivec2 p, vec3 n, vec2 uv)
         /* l1.w: the terrain cannot shadow this light (ratio 1, none stored). */
         float ratio = l1.w > 0.5 ? 1.0 : clamp(q % 2 == 0 ? rv.x + rv.y : rv.z + rv.w, 0.0, 1.0);
         sum += u_misc.x * u_lle[q].rgb * (e_cap * ratio);
+#ifdef HFS_GLOSSY
+        g_spec += u_gpar.y * u_lle[q].rgb * (e_cap * ratio * gloss_lobe(v / d));
+#endif
     }
     return sum;
 }
@@ -145,6 +179,14 @@ void main()
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec3 n = hfs_normal(texelFetch(u_normals, p, 0));
     vec3 lo = vec3(0.0);
+#ifdef HFS_GLOSSY
+    {
+        float nv = dot(n, u_gview.xyz);
+        g_nr = max(nv, 0.0);
+        g_r = nv > 0.0 ? 2.0 * nv * n - u_gview.xyz : n;
+        g_spec = vec3(0.0);
+    }
+#endif
 #ifdef HFS_ENV
     /* Compiled in only when the scene has an environment: llvmpipe pays
      * for this block even behind a uniform branch that skips it (the 512^2
@@ -169,6 +211,23 @@ void main()
             float open = u_misc.x * hfs_sh_dot(H, L);
             lo[c] += clamp(u_misc.x * hfs_sh_dot(T, L), -u_env_neg[c], open + u_env_neg[c]);
         }
+#ifdef HFS_GLOSSY
+        /* gloss.c hfs_gloss_env: the lobe's order-4 visible fraction v. */
+        if (g_nr > 0.0) {
+            vec4 Q[4];
+            hfs_sh_basis(g_r, Q);
+            for (int g = 0; g < 4; ++g)
+                Q[g] *= u_gzh[g];
+            float num = hfs_sh_dot(T, Q), den = hfs_sh_dot(H, Q);
+            float v = den > 1e-9 * sqrt(hfs_sh_dot(H, H) * hfs_sh_dot(Q, Q))
+                          ? clamp(num / den, 0.0, 1.0) : 0.0;
+            for (int c = 0; c < 3; ++c) {
+                for (int g = 0; g < 4; ++g)
+                    L[g] = u_env[4 * c + g];
+                g_spec[c] += u_gview.w * g_nr * v * hfs_sh_dot(L, Q);
+            }
+        }
+#endif
     }
 #endif
     /* The frame's key-light count is compiled in: llvmpipe runs a loop
@@ -176,6 +235,9 @@ void main()
     for (int q = 0; q < HFS_NKEYS; ++q) {
         vec4 f = texelFetch(u_kf, ivec3(p, q), 0);
         lo += u_kle[q].rgb * (f.x + f.y);
+#ifdef HFS_GLOSSY
+        g_spec += u_kspec[q].rgb * ((f.x + f.y) * gloss_lobe(u_kdir[q].xyz));
+#endif
     }
 #ifdef HFS_LOCAL
     vec2 uv = hfs_grid_uv(p, u_sub, u_size, u_vsize);
@@ -183,6 +245,9 @@ void main()
 #endif
 #ifdef HFS_ALBEDO_MAP
     lo *= texelFetch(u_albedo, p, 0).rgb; /* in [0, 1]: bounds and clamps still hold */
+#endif
+#ifdef HFS_GLOSSY
+    lo += g_spec; /* after the map: the lobe is not the albedo's */
 #endif
     vec3 v = lo * u_misc.y;
     /* Never NaN/Inf in the target (fp16 saturates at 65504). */

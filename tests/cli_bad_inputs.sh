@@ -50,6 +50,10 @@ expect_fail missing-env-map "nope.exr" $R --height "$tmp/flat.pfm" --env-map "$t
 expect_fail albedo-map-size "albedo map is 4x4, the heights are 16x12" $R --height "$tmp/flat.pfm" --env-sh $sky --albedo-map "$tmp/alb4.pfm"
 expect_fail albedo-map-range "outside [0, 1]" $R --height "$tmp/flat.pfm" --env-sh $sky --albedo-map "$tmp/cones.pfm"
 expect_fail albedo-map-missing "nope.png" $R --height "$tmp/flat.pfm" --env-sh $sky --albedo-map "$tmp/nope.png"
+expect_fail specular-range "specular: 2 is out of range" $R --height "$tmp/flat.pfm" --env-sh $sky --specular 2
+expect_fail gloss-range "gloss: 0 is out of range" $R --height "$tmp/flat.pfm" --env-sh $sky --gloss 0
+expect_fail view-below "elevation -10 is out of range" $R --height "$tmp/flat.pfm" --env-sh $sky --view-dir 0,-10
+expect_fail gloss-energy "albedo 0.8 + specular 0.5 is above 1" $R --height "$tmp/flat.pfm" --env-sh $sky --albedo 0.8 --specular 0.5
 expect_fail both-envs "both env-sh and env-map" $R --height "$tmp/flat.pfm" --env-sh $sky --env-map "$tmp/x.hdr"
 expect_fail missing-value "--dx" $R --height "$tmp/flat.pfm" --dx
 expect_fail bad-colormap "--colormap" $R --height "$tmp/flat.pfm" --env-sh $sky --colormap rainbow

@@ -208,10 +208,21 @@ set_tests_properties(test_gles_view_compare_fp16_es30 PROPERTIES SKIP_RETURN_COD
                      TIMEOUT 300 ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
 set(hfs_gles_tests ${hfs_gles_tests} test_gles_view_compare_fp16_es30)
 
+# Glossy surfaces (issue 16): specular 0 = the diffuse output bit for bit,
+# the closed form on a flat plane (cpu, truth), energy, GLES = CPU at
+# subsample 1, a new view reshades only (test_gloss.c).
+add_executable(test_gloss ${CMAKE_CURRENT_LIST_DIR}/test_gloss.c)
+target_link_libraries(test_gloss PRIVATE hfs_test_gles_scenes)
+add_test(NAME test_gloss COMMAND test_gloss gles)
+set_tests_properties(test_gloss PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
+set(hfs_gles_tests ${hfs_gles_tests} test_gloss)
+
+
 if(HFS_SANITIZE)
   foreach(t IN LISTS hfs_gles_tests)
     set_property(TEST ${t} APPEND PROPERTY ENVIRONMENT
                  "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
   endforeach()
 endif()
+
 

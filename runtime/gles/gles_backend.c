@@ -160,7 +160,7 @@ static void frame_lights(const hfs_lighting *l, const hfs_quality *q, hfs_gles_f
 {
     fr->has_env = hfs_env_contributes(l);
     for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i) {
-        if (!hfs_key_light_contributes(&l->key[i], l->albedo))
+        if (!hfs_key_light_contributes(&l->key[i], l->albedo + l->specular))
             continue;
         hfs_gles_key *k = &fr->keys[fr->n_keys++].k;
         hfs_key_setup ks;
@@ -179,6 +179,7 @@ static void frame_lights(const hfs_lighting *l, const hfs_quality *q, hfs_gles_f
     fr->bounces = l->bounces;
     fr->capped = hfs_bounce_capped(l, q);
     fr->albedo = l->albedo_map;
+    hfs_gloss_make(l, &fr->gloss);
     if (fr->has_env)
         hfs_env_rotated(l, fr->l_env);
 }
@@ -224,7 +225,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
     fr.cam = cam, fr.view_w = w, fr.view_h = h, fr.view_rgb = view;
     frame_lights(l, q, &fr);
     /* A black field still has a view (its sky): that frame runs. */
-    if (!cam && ((!fr.has_env && fr.n_keys == 0 && fr.n_local == 0) || !(l->albedo > 0.0))) {
+    if (!cam && ((!fr.has_env && fr.n_keys == 0 && fr.n_local == 0) || !(l->albedo > 0.0 || fr.gloss.on))) {
         /* Black without a pass; the planner keeps the last lit frame's state
          * (its image is still right for that scene). */
         memset(out->rgb, 0, (size_t)out->width * out->height * 3 * sizeof *out->rgb);

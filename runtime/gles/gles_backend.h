@@ -23,6 +23,7 @@
 #include "bounce_targets.h"
 #include "gl_caps.h"
 #include "gl_context.h"
+#include "gloss.h"
 #include "lights.h"
 #include "pass.h"
 #include "plan.h"
@@ -62,6 +63,7 @@ struct hfs_gles_frame {
     double rho_pi;
     const float *albedo;                  /* the lighting's albedo map, or NULL */
     unsigned albedo_gen;                  /* g->albedo's contents' generation */
+    hfs_gloss gloss;                      /* glossy surfaces: on = HFS_GLOSSY shading */
     int key_layers;                       /* horizon layers the keys use */
     size_t key_swath_bytes;               /* HFS_UBO_KEY_SWATHS size */
     int key_rec_block;                    /* HfsKeys declared size, vec4 */

@@ -146,6 +146,11 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     s->rho_pi = fr->rho_pi;
     s->albedo_map = fr->albedo != NULL;
     s->albedo_gen = fr->albedo_gen;
+    if (fr->gloss.on) {
+        const double gsig[5] = {fr->gloss.ks, fr->gloss.s, fr->gloss.view[0], fr->gloss.view[1],
+                                fr->gloss.view[2]};
+        memcpy(s->gloss, gsig, sizeof gsig);
+    }
     s->n_keys = fr->n_keys;
     for (int i = 0; i < fr->n_keys && i < HFS_GLES_PLAN_KEYS; ++i) {
         const hfs_gles_key *k = &fr->keys[i].k;

@@ -23,6 +23,53 @@
 
 #define PI 3.14159265358979323846
 
+/* The largest glossy term the frame's lights can give (gloss.h): the
+ * environment's |L . Q| <= 4 sum |L_k| (as the diffuse bound), a key or
+ * local light's lobe peak (S+2)/(2 pi) times its largest E_cap, ks Le
+ * inside a local light.  0 when not glossy: the diffuse frame's scale. */
+static double gloss_bound(const hfs_gles_frame *fr)
+{
+    const hfs_gloss *gl = &fr->gloss;
+    if (!gl->on)
+        return 0.0;
+    double b = 0.0;
+    for (int c = 0; c < 3 && fr->has_env; ++c) {
+        double s = 0.0;
+        for (int k = 0; k < HFS_SH_N; ++k)
+            s += fabs(fr->l_env[c][k]);
+        b = fmax(b, 4.0 * s);
+    }
+    for (int i = 0; i < fr->n_keys; ++i)
+        b += fmax(fr->keys[i].k.le[0], fmax(fr->keys[i].k.le[1], fr->keys[i].k.le[2])) *
+             gl->norm * hfs_cap_irradiance(1.0, fr->keys[i].k.alpha);
+    for (int i = 0; i < fr->n_local; ++i)
+        b += fmax(fr->local[i].radiance[0], fmax(fr->local[i].radiance[1],
+                                                 fr->local[i].radiance[2])) *
+             fmax(1.0, gl->norm * hfs_gles_local_max_irradiance(&fr->L, &fr->local[i]));
+    return gl->ks * b;
+}
+
+/* HfsShade's glossy tail (u_gview ... u_kdir), radiances times s. */
+static void fill_gloss(const hfs_gles_frame *fr, double s, hfs_gles_shade_block *sb)
+{
+    const hfs_gloss *gl = &fr->gloss;
+    for (int k = 0; k < 3; ++k)
+        sb->gview[k] = (float)gl->view[k];
+    sb->gview[3] = (float)gl->ks;
+    sb->gpar[0] = (float)gl->s;
+    sb->gpar[1] = (float)(gl->ks * gl->norm);
+    /* g_l per coefficient k = l(l+1)+m: bands 0 | 1 1 1 | 2 x5 | 3 x7. */
+    for (int k = 0; k < HFS_SH_N; ++k)
+        sb->gzh[k] = (float)gl->zh[k < 1 ? 0 : k < 4 ? 1 : k < 9 ? 2 : 3];
+    for (int i = 0; i < fr->n_keys; ++i) { /* times the key factor E_cap ratio / E_max */
+        for (int c = 0; c < 3; ++c)
+            sb->kspec[i][c] = (float)(gl->ks * gl->norm * fr->keys[i].k.le[c] *
+                                      hfs_gles_key_emax(&fr->keys[i].k) * s);
+        for (int c = 0; c < 3; ++c)
+            sb->kdir[i][c] = (float)fr->keys[i].k.dir[c];
+    }
+}
+
 /* The largest exit radiance the frame's lights can give. */
 static double radiance_bound(const hfs_gles_frame *fr)
 {
@@ -49,7 +96,7 @@ static double radiance_bound(const hfs_gles_frame *fr)
         bound += fmax(fr->local[i].radiance[0],
                       fmax(fr->local[i].radiance[1], fr->local[i].radiance[2])) *
                  hfs_gles_local_max_irradiance(&fr->L, &fr->local[i]);
-    return bound * fr->rho_pi;
+    return bound * fr->rho_pi + gloss_bound(fr);
 }
 
 /* HfsShade, every radiance times the output scale s. */
@@ -75,6 +122,8 @@ static void fill_block(const hfs_gles_frame *fr, double s, hfs_gles_shade_block 
     for (int i = 0; i < fr->n_local; ++i)
         for (int c = 0; c < 3; ++c)
             sb->lle[i][c] = (float)(fr->local[i].radiance[c] * s);
+    if (fr->gloss.on)
+        fill_gloss(fr, s, sb);
 }
 
 static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_program *prog,
@@ -130,7 +179,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
                                 .n_layers = local ? L->n_layers : 0,
                                 .local_dirs = local ? fr->q->nphi_local : 0,
                                 .n_local = fr->n_local, .fp32 = g->caps.fp32,
-                                .albedo_map = fr->albedo != NULL};
+                                .albedo_map = fr->albedo != NULL, .glossy = fr->gloss.on};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_SHADE, &v, &prog, err);
     if (rc || (rc = bind_inputs(g, fr, prog, err)))

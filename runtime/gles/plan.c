@@ -145,6 +145,8 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
         hfs_plan_change(p, gp->in_albedo, "albedo changed");
     else if (a->albedo_map != b->albedo_map || a->albedo_gen != b->albedo_gen)
         hfs_plan_change(p, gp->in_albedo, "albedo map changed");
+    else if (memcmp(a->gloss, b->gloss, sizeof a->gloss)) /* reshades, as the albedo */
+        hfs_plan_change(p, gp->in_albedo, "glossy surface or view direction changed");
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         const int ha = i < a->n_keys, hb = i < b->n_keys;
         if (!ha && !hb)

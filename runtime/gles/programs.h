@@ -51,6 +51,7 @@ typedef struct hfs_gles_variant {
     int albedo_map; /* HFS_ALBEDO_MAP 1: the shading reads u_albedo          */
     int slice;      /* HFS_SLICE 1: exact slice lighting (slice_light.h)     */
     int n_bdir;     /* HFS_NBDIR: the bounces' directions                    */
+    int glossy;     /* HFS_GLOSSY 1: the shading adds the Phong lobe (gloss.h) */
 } hfs_gles_variant;
 
 #define HFS_GLES_MAX_PROGRAMS 64
@@ -88,7 +89,7 @@ void hfs_gles_set_f2(const hfs_gl *gl, const hfs_gles_program *p, const char *na
 
 /* The "#define NAME VALUE" strings of variant v (NULL-terminated; bufs
  * holds their text).  Exposed for tests. */
-#define HFS_GLES_MAX_DEFINES 21
+#define HFS_GLES_MAX_DEFINES 22
 void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
                               const char *defs[HFS_GLES_MAX_DEFINES + 1]);
 

@@ -186,6 +186,13 @@ typedef struct hfs_gles_shade_block {
     float kle[HFS_MAX_KEY_LIGHTS][4];   /* u_kle[8]: rho/pi Le E_max per key      */
     float topen[16];                    /* u_topen[4]: k_l per coefficient        */
     float lle[HFS_MAX_LOCAL_LIGHTS][4]; /* u_lle[16]: Le per local light          */
+    /* Glossy surfaces (gloss.h), read only by the HFS_GLOSSY variant (the
+     * others declare the block up to u_lle: a prefix). */
+    float gview[4];                     /* u_gview: (V, ks)                      */
+    float gpar[4];                      /* u_gpar: (S, ks (S+2)/(2 pi), 0, 0)    */
+    float gzh[16];                      /* u_gzh[4]: g_l per coefficient         */
+    float kspec[HFS_MAX_KEY_LIGHTS][4]; /* u_kspec[8]: ks (S+2)/(2pi) Le E_max   */
+    float kdir[HFS_MAX_KEY_LIGHTS][4];  /* u_kdir[8]: the disk's centre, unit    */
 } hfs_gles_shade_block;
 _Static_assert(HFS_MAX_KEY_LIGHTS == 8 && HFS_MAX_LOCAL_LIGHTS == 16,
                "shade.frag.glsl declares u_kle[8] and u_lle[16]");
@@ -194,7 +201,12 @@ _Static_assert(offsetof(hfs_gles_shade_block, env_neg) == 13 * 16, "HfsShade.u_e
 _Static_assert(offsetof(hfs_gles_shade_block, kle) == 14 * 16, "HfsShade.u_kle");
 _Static_assert(offsetof(hfs_gles_shade_block, topen) == 22 * 16, "HfsShade.u_topen");
 _Static_assert(offsetof(hfs_gles_shade_block, lle) == 26 * 16, "HfsShade.u_lle");
-_Static_assert(sizeof(hfs_gles_shade_block) == 42 * 16, "HfsShade size");
+_Static_assert(offsetof(hfs_gles_shade_block, gview) == 42 * 16, "HfsShade.u_gview");
+_Static_assert(offsetof(hfs_gles_shade_block, gpar) == 43 * 16, "HfsShade.u_gpar");
+_Static_assert(offsetof(hfs_gles_shade_block, gzh) == 44 * 16, "HfsShade.u_gzh");
+_Static_assert(offsetof(hfs_gles_shade_block, kspec) == 48 * 16, "HfsShade.u_kspec");
+_Static_assert(offsetof(hfs_gles_shade_block, kdir) == 56 * 16, "HfsShade.u_kdir");
+_Static_assert(sizeof(hfs_gles_shade_block) == 64 * 16, "HfsShade size");
 
 /* The fixed head of the local-light block HfsLocal (local_visibility.frag.glsl and
  * shade.frag.glsl), std140, by name; u_ldir[nphi_local] follows it,

@@ -217,6 +217,9 @@ static int store_reals(hfs_scene *s, hfs_scene_source src, hfs_scene_key_id id, 
     case HFS_SK_ENV_SH: memcpy(s->env_sh, d, sizeof s->env_sh); s->has_env_sh = 1; break;
     case HFS_SK_ENV_ROTATE: s->env_rotate_deg = d[0]; break;
     case HFS_SK_ALBEDO: s->albedo = d[0]; s->albedo_given = 1; break;
+    case HFS_SK_SPECULAR: s->specular = d[0]; s->specular_given = 1; break;
+    case HFS_SK_GLOSS: s->gloss = d[0]; s->gloss_given = 1; break;
+    case HFS_SK_VIEW_DIR: s->view_az = d[0]; s->view_el = d[1]; s->view_given = 1; break;
     case HFS_SK_KEY:
         if ((rc = add_light(src, &s->key_from_flags, &s->n_key, HFS_MAX_KEY_LIGHTS, where, "key",
                             err)))
@@ -339,6 +342,16 @@ void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS
     if (s->albedo_given)
         l->albedo = s->albedo;
     l->bounces = s->bounces;
+    if (s->specular_given)
+        l->specular = s->specular;
+    if (s->gloss_given)
+        l->gloss = s->gloss;
+    if (s->view_given) { /* SPEC's s(phi, e) */
+        const double az = RAD(s->view_az), el = RAD(s->view_el);
+        l->view_dir[0] = cos(az) * cos(el);
+        l->view_dir[1] = sin(az) * cos(el);
+        l->view_dir[2] = sin(el);
+    }
 #undef RAD
 }
 

@@ -59,6 +59,10 @@ typedef struct hfs_scene {
     int albedo_given;
     char albedo_map[HFS_PATH_MAX];   /* "" = none                           */
     int bounces;                     /* indirect bounces, 0 = not given     */
+    double specular, gloss;          /* glossy surfaces, when given         */
+    int specular_given, gloss_given;
+    double view_az, view_el;         /* view-dir, degrees, when given       */
+    int view_given;
 
     hfs_quality quality;             /* values of the quality keys given    */
     char preset[16];                 /* "" or a hfs_quality_preset() use    */
