@@ -170,14 +170,14 @@ int bench_write_csv(const char *path, const bench_result *res, int n_res,
     fprintf(f, "scene,size,lights,backend,k,offset,nphi_env,nphi_key,nphi_local,local_swath,"
                "subsample,precision,visibility,frame_ms,gpu_ms,pyramid_ms,env_ms,key_ms,"
                "local_ms,shade_ms,texture_bytes,mean_abs,rmse,p99_abs,max_abs,nonfinite,"
-               "default,pareto,all_scenes_front,use,note\n");
+               "default,pareto,all_scenes_front,use,note,setting\n");
     for (int i = 0; i < n_res; ++i) {
         const bench_result *r = &res[i];
         const bench_point *p = &pts[r->point];
         const hfs_quality *q = &p->q;
         char uses[64];
         fprintf(f, "%s,%d,%s,%s,%d,%d,%d,%d,%d,%s,%d,%s,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,"
-                   "%zu,%.4e,%.4e,%.4e,%.4e,%ld,%d,%d,%d,%s,%s\n",
+                   "%zu,%.4e,%.4e,%.4e,%.4e,%ld,%d,%d,%d,%s,%s,%s\n",
                 scene_names[r->scene], size, lights,
                 p->backend == HFS_BACKEND_CPU ? "cpu" : "gles", q->k, q->offset, q->nphi_env,
                 q->nphi_key, q->nphi_local, q->local_full_swath ? "full" : "partial",
@@ -189,7 +189,7 @@ int bench_write_csv(const char *path, const bench_result *res, int n_res,
                 r->gpu_ms, r->pyramid_ms, r->env_ms, r->key_ms, r->local_ms, r->shade_ms,
                 r->texture_bytes, r->mean_abs, r->rmse, r->p99_abs, r->max_abs, r->nonfinite,
                 p->is_default, r->pareto, picks->front ? picks->front[r->point] : 0,
-                uses_of(picks, r->point, uses, sizeof uses), r->ok ? "" : r->note);
+                uses_of(picks, r->point, uses, sizeof uses), r->ok ? "" : r->note, p->label);
     }
     const int bad = ferror(f);
     if (fclose(f) != 0 || bad || rename(tmp, path) != 0) {

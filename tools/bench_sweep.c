@@ -20,14 +20,23 @@ typedef struct axis {
 
 void bench_point_label(const hfs_quality *q, hfs_backend backend, char *out, size_t cap)
 {
-    snprintf(out, cap, "%s k%d o%d e%d k%d l%d sub%d %s %s %s",
-             backend == HFS_BACKEND_CPU ? "cpu" : "gles", q->k, q->offset, q->nphi_env,
-             q->nphi_key, q->nphi_local, q->subsample,
-             q->precision == HFS_PRECISION_FP32 ? "fp32" : "fp16",
-             q->visibility == HFS_VIS_WEDGE_TABLE ? "wedge"
-             : q->visibility == HFS_VIS_SLICE     ? "slice"
-                                                  : "leg",
-             q->local_full_swath ? "full" : "part");
+    const int n = snprintf(out, cap, "%s k%d o%d e%d k%d l%d sub%d %s %s %s",
+                           backend == HFS_BACKEND_CPU ? "cpu" : "gles", q->k, q->offset,
+                           q->nphi_env, q->nphi_key, q->nphi_local, q->subsample,
+                           q->precision == HFS_PRECISION_FP32 ? "fp32" : "fp16",
+                           q->visibility == HFS_VIS_WEDGE_TABLE ? "wedge"
+                           : q->visibility == HFS_VIS_SLICE     ? "slice"
+                                                                : "leg",
+                           q->local_full_swath ? "full" : "part");
+    /* The bounces' settings only where they differ from the defaults (the
+     * labels of direct-light sweeps, and the CSVs that hold them, stay). */
+    hfs_quality d;
+    hfs_quality_defaults(&d);
+    if (n > 0 && (size_t)n < cap &&
+        (q->nphi_bounce != d.nphi_bounce || q->bounce_refine != d.bounce_refine ||
+         q->bounce_subsample != d.bounce_subsample))
+        snprintf(out + n, cap - (size_t)n, " b%d/%d/%d", q->nphi_bounce, q->bounce_refine,
+                 q->bounce_subsample);
 }
 
 /* Splits "key=v1,v2 key=v3" into axes. */

@@ -38,7 +38,7 @@ unsigned long long bench_truth_hash(const hfs_field *f, const hfs_lighting *l,
                                     const hfs_quality *q)
 {
     fnv s = {0xcbf29ce484222325ull};
-    fnv_int(&s, 1); /* cache format version */
+    fnv_int(&s, 2); /* cache format version (2: bounces and gloss) */
     fnv_int(&s, f->width);
     fnv_int(&s, f->height);
     fnv_double(&s, f->dx);
@@ -71,6 +71,15 @@ unsigned long long bench_truth_hash(const hfs_field *f, const hfs_lighting *l,
         fnv_int(&s, p->disabled);
     }
     fnv_double(&s, l->albedo);
+    if (l->albedo_map)
+        fnv_bytes(&s, l->albedo_map, (size_t)f->width * f->height * 3 * sizeof *l->albedo_map);
+    fnv_int(&s, l->bounces);
+    fnv_double(&s, l->specular);
+    if (l->specular > 0.0) {
+        fnv_double(&s, l->gloss);
+        for (int c = 0; c < 3; ++c)
+            fnv_double(&s, l->view_dir[c]);
+    }
     fnv_int(&s, q->truth_azimuths);
     fnv_int(&s, q->truth_elev_order);
     fnv_int(&s, q->truth_light_samples);

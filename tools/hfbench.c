@@ -9,7 +9,7 @@
  * picks from the all-scenes front).
  *
  *   hfbench -o OUT.csv [--plots DIR] [--scenes cones,fractal,dem] [--size 256]
- *           [--lights sky+sun|sky|sun|local] [--grid "key=v1,v2 ..."]...
+ *           [--lights sky+sun|sky|sun|local] [--bounces B] [--grid "key=v1,v2 ..."]...
  *           [--frames 3] [--cache DIR] [--data DIR] [--truth-samples 1024]
  *           [--kiosk-ms 100] [--kiosk-err 0.01] [--kiosk-p99 0.1] [--panel-ms 500]
  *           [--headless-err 0.03] [--quiet]
@@ -54,6 +54,7 @@ typedef struct options {
     const char *out_csv, *plots, *lights, *cache, *data;
     char scenes[MAX_SCENES][32];
     int n_scenes, size, frames, truth_samples, quiet;
+    int bounces;             /* --bounces: every scene's (and its truth's) */
     const char *grids[32];
     int n_grids;
     bench_budget budget;
@@ -63,7 +64,7 @@ static void usage(void)
 {
     fprintf(stderr,
             "usage: hfbench -o OUT.csv [--plots DIR] [--scenes a,b,c] [--size N] [--lights "
-            "sky+sun|sky|sun|local]\n"
+            "sky+sun|sky|sun|local] [--bounces B]\n"
             "               [--grid \"key=v1,v2 ...\"]... [--frames N] [--cache DIR] [--data DIR]\n"
             "               [--truth-samples N] [--kiosk-ms MS] [--kiosk-err E] [--kiosk-p99 E]\n"
             "               [--panel-ms MS] [--headless-err E] [--quiet]\n");
@@ -143,6 +144,11 @@ static int parse_args(int argc, char **argv, options *o)
             if (parse_number(a, v, 2, 16384, &x))
                 return -1;
             o->size = (int)x;
+        } else if (!strcmp(a, "--bounces")) { /* the scene key's range */
+            const hfs_key_range *r = &hfs_scene_key_number(HFS_SK_BOUNCES, 0)->range;
+            if (parse_number(a, v, r->lo, r->hi, &x))
+                return -1;
+            o->bounces = (int)x;
         } else if (!strcmp(a, "--frames")) {
             if (parse_number(a, v, 1, 1000, &x))
                 return -1;
@@ -261,6 +267,7 @@ static int prepare_scene(run *R, int s, hfs_error *err)
     int rc = bench_scene_make(o->scenes[s], o->size, o->lights, o->data, &R->scenes[s], err);
     if (rc)
         return rc;
+    R->scenes[s].lighting.bounces = o->bounces; /* the truth's too: error against their sum */
     const bench_scene *sc = &R->scenes[s];
     hfs_quality tq;
     hfs_quality_defaults(&tq);
@@ -414,11 +421,13 @@ int main(int argc, char **argv)
     const char *names[MAX_SCENES];
     for (int s = 0; s < o->n_scenes; ++s)
         names[s] = o->scenes[s];
+    char lights[48]; /* "sky+sun", "sky+sun+1b" with one bounce */
+    snprintf(lights, sizeof lights, o->bounces ? "%s+%db" : "%s", o->lights, o->bounces);
     if (!rc)
-        rc = bench_write_csv(o->out_csv, R.res, R.n_res, names, o->lights, o->size,
+        rc = bench_write_csv(o->out_csv, R.res, R.n_res, names, lights, o->size,
                              R.sweep.pts, &pk, &err);
     if (!rc && o->plots)
-        rc = bench_plot(o->plots, R.res, R.n_res, names, o->n_scenes, o->lights, o->size,
+        rc = bench_plot(o->plots, R.res, R.n_res, names, o->n_scenes, lights, o->size,
                         R.sweep.pts, &pk, &err);
     if (!rc)
         print_summary(&R, &pk);
