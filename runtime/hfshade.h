@@ -351,9 +351,11 @@ HFS_API void hfs_view_frame(hfs_view *v, const hfs_field *f);
  * v->width x v->height, row 0 at the top).  The GLES backend draws the
  * field as a triangle mesh on the GPU, multisampled where the driver
  * allows it; a camera move then costs the view alone (the lighting is
- * kept: hfs_renderer_frame_report).  The CPU reference and the ground
- * truth cast one exact ray per pixel centre over the bilinear surface of
- * their lit image.  Same error conventions as hfs_renderer_render. */
+ * kept: hfs_renderer_frame_report; for a glossy surface, lit for the
+ * direction towards the camera instead of lighting->view_dir, it reshades
+ * too).  The CPU reference and the ground truth cast one exact ray per
+ * pixel centre over the bilinear surface of their lit image.  Same error
+ * conventions as hfs_renderer_render. */
 HFS_API int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *field,
                                      const hfs_lighting *lighting,
                                      const hfs_quality *quality, const hfs_view *view,

@@ -512,8 +512,18 @@ int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *f, const hfs_ligh
         return rc;
     hfs_camera cam;
     hfs_view_camera(v, &cam);
+    /* Glossy surfaces are seen from the camera: the lobe is evaluated for
+     * the direction towards it (every pixel's for an ortho view; the
+     * centre ray's for a perspective one, where the view vector varies
+     * over the picture). */
+    hfs_lighting seen = *l;
+    if (l->specular > 0.0) {
+        seen.view_dir[0] = cos(v->elevation) * cos(v->azimuth);
+        seen.view_dir[1] = cos(v->elevation) * sin(v->azimuth);
+        seen.view_dir[2] = sin(v->elevation);
+    }
     const double t0 = wall_ms();
-    rc = render_view(r, f, l, q, &cam, v, lit ? lit : &own, out, err);
+    rc = render_view(r, f, &seen, q, &cam, v, lit ? lit : &own, out, err);
     if (!rc && r->timing && !r->ops->timings) {
         hfs_timings *t = &r->timings;
         memset(t, 0, sizeof *t);

@@ -9,6 +9,9 @@
  *            highlight's peak
  *   energy   albedo + ks = 1 under a uniform sky of 1 on rough terrain:
  *            every output <= 1 (the unshadowed maximum) + a bound
+ *   view     the 3-D view sees a glossy surface from the camera: the lit
+ *            image hfs_renderer_render_view hands back is the render with
+ *            view_dir towards the camera, bit for bit (cpu)
  *   gles     (skipped with 77 without a context) GLES against the cpu at
  *            subsample 1 with sky, key and local lights; a changed view
  *            direction reshades only and equals a fresh frame bit for bit
@@ -190,6 +193,37 @@ static void check_gles(const scene *s)
     hfs_image_free(&g), hfs_image_free(&c), hfs_image_free(&f);
 }
 
+static void check_view(const scene *s)
+{
+    hfs_renderer_desc d = {.backend = HFS_BACKEND_CPU};
+    hfs_renderer *r = NULL;
+    hfs_error err = {""};
+    CHECK(hfs_renderer_create(&d, &r, &err) == HFS_OK, "create: %s", err.msg);
+    hfs_lighting l = scene_lighting(1, 1);
+    l.albedo = 0.5, l.specular = 0.4, l.gloss = 24.0;
+    hfs_quality q;
+    quality(&q);
+    hfs_view v;
+    hfs_view_defaults(&v, &s->f);
+    v.azimuth = 30.0 * PI / 180.0, v.elevation = 55.0 * PI / 180.0;
+    v.width = v.height = 8;
+    hfs_image lit, view, want;
+    hfs_image_alloc(&lit, N, N, &err), hfs_image_alloc(&view, 8, 8, &err);
+    hfs_image_alloc(&want, N, N, &err);
+    int rc = hfs_renderer_render_view(r, &s->f, &l, &q, &v, &lit, &view, &err);
+    CHECK(rc == HFS_OK, "render_view: %s", err.msg);
+    const double c[3] = {cos(v.elevation) * cos(v.azimuth), cos(v.elevation) * sin(v.azimuth),
+                         sin(v.elevation)};
+    for (int k = 0; k < 3; ++k)
+        l.view_dir[k] = c[k];
+    rc |= render(HFS_BACKEND_CPU, s, &l, &q, &want);
+    CHECK(!rc && !memcmp(lit.rgb, want.rgb, sizeof(float) * N * N * 3),
+          "the view's lit image is not the render seen from the camera");
+    printf("view: a glossy surface in the 3-D view is lit for the camera's direction\n");
+    hfs_image_free(&lit), hfs_image_free(&view), hfs_image_free(&want);
+    hfs_renderer_destroy(r);
+}
+
 int main(int argc, char **argv)
 {
     scene s;
@@ -206,6 +240,7 @@ int main(int argc, char **argv)
     }
     check_energy(HFS_BACKEND_CPU, "cpu", &s, 1e-6);
     check_energy(HFS_BACKEND_TRUTH, "truth", &s, 3e-3);
+    check_view(&s);
     if (argc > 1 && !strcmp(argv[1], "gles"))
         check_gles(&s);
     scene_free(&s);
