@@ -70,6 +70,12 @@ static const hfs_action_info actions[] = {
      1.1, 0.1, 10.0, 0, HFS_SK_COUNT, 0},
     {HFS_ACTION_VIEW, "view.toggle", 0, 1, HFS_TARGET_NONE, 0, 0,
      1.0, 0.0, 0.0, 0, HFS_SK_COUNT, 0},
+    {HFS_ACTION_SURFACE_ALBEDO, "surface.albedo", 1, 0, HFS_TARGET_NONE, 1, 0,
+     0.05, 0.0, 1.0, 0, HFS_SK_ALBEDO, 0},
+    {HFS_ACTION_SURFACE_SPECULAR, "surface.specular", 1, 0, HFS_TARGET_NONE, 1, 0,
+     0.05, 0.0, 1.0, 0, HFS_SK_SPECULAR, 0},
+    {HFS_ACTION_SURFACE_GLOSS, "surface.gloss", 1, 0, HFS_TARGET_NONE, 1, 1,
+     1.25, 1.0, 10000.0, 0, HFS_SK_GLOSS, 0},
 };
 #define N_ACTIONS ((int)(sizeof actions / sizeof actions[0]))
 

@@ -60,6 +60,9 @@ typedef enum hfs_action {
     HFS_ACTION_CAMERA_ELEVATION,
     HFS_ACTION_CAMERA_ZOOM,     /* distance over the framing one (multiplies) */
     HFS_ACTION_VIEW,            /* button: the 3-D view on/off             */
+    HFS_ACTION_SURFACE_ALBEDO,  /* the Lambertian albedo                   */
+    HFS_ACTION_SURFACE_SPECULAR, /* the Phong lobe's specular albedo       */
+    HFS_ACTION_SURFACE_GLOSS,   /* the Phong exponent (multiplies)         */
     HFS_ACTION_COUNT
 } hfs_action;
 

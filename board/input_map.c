@@ -40,6 +40,37 @@ double hfs_input_gain(const hfs_control_config *k, int64_t dt_ns, int delta)
     return 1.0 + (k->accel - 1.0) * (1.0 - spacing_ms / k->accel_ms);
 }
 
+/* The surface value a surface.* action edits, given from now on (the
+ * lighting's default where the scene named none). */
+static double *surface_value(hfs_action a, hfs_scene *s)
+{
+    hfs_lighting d;
+    hfs_lighting_defaults(&d);
+    double *v = a == HFS_ACTION_SURFACE_ALBEDO     ? &s->albedo
+                : a == HFS_ACTION_SURFACE_SPECULAR ? &s->specular
+                                                   : &s->gloss;
+    int *given = a == HFS_ACTION_SURFACE_ALBEDO     ? &s->albedo_given
+                 : a == HFS_ACTION_SURFACE_SPECULAR ? &s->specular_given
+                                                    : &s->gloss_given;
+    if (!*given)
+        *v = a == HFS_ACTION_SURFACE_ALBEDO     ? d.albedo
+             : a == HFS_ACTION_SURFACE_SPECULAR ? d.specular
+                                                : d.gloss;
+    *given = 1;
+    return v;
+}
+
+/* albedo + specular <= 1 (energy; the renderer refuses more): the knob
+ * that would pass it stops there. */
+static double surface_energy(hfs_action a, const hfs_scene *s, double x)
+{
+    if (a == HFS_ACTION_SURFACE_ALBEDO && s->specular_given)
+        return fmin(x, 1.0 - s->specular);
+    if (a == HFS_ACTION_SURFACE_SPECULAR)
+        return fmin(x, 1.0 - (s->albedo_given ? s->albedo : 1.0));
+    return x;
+}
+
 /* The value a continuous action edits, or NULL (no such light now). */
 static double *target_value(const hfs_control_config *k, hfs_input_state *st, hfs_scene *s)
 {
@@ -68,6 +99,9 @@ static double *target_value(const hfs_control_config *k, hfs_input_state *st, hf
     case HFS_ACTION_CAMERA_AZIMUTH: return &st->cam_azimuth;
     case HFS_ACTION_CAMERA_ELEVATION: return &st->cam_elevation;
     case HFS_ACTION_CAMERA_ZOOM: return &st->cam_zoom;
+    case HFS_ACTION_SURFACE_ALBEDO:
+    case HFS_ACTION_SURFACE_SPECULAR:
+    case HFS_ACTION_SURFACE_GLOSS: return surface_value(k->action, s);
     default: return NULL;
     }
 }
@@ -103,7 +137,7 @@ static int turn_value(const hfs_control_config *k, int index, hfs_input_state *s
     double x = hfs_action_get(k->action)->multiplicative
                    ? old * pow(k->step, ev->delta * gain)
                    : old + ev->delta * k->step * gain;
-    x = limit(k, x);
+    x = surface_energy(k->action, s, limit(k, x));
     if (!isfinite(x) || x == old)
         return 0;
     *v = x;

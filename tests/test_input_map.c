@@ -223,6 +223,24 @@ static void bad_events(void)
     CHECK(turn("az", 0, 0) == 0, "a zero turn changes nothing");
 }
 
+/* surface.*: a value the scene did not name starts from the lighting's
+ * default and is given from then on; albedo + specular never passes 1
+ * (the renderer would refuse the scene); gloss multiplies. */
+static void surface(void)
+{
+    reset_scene();
+    CHECK(turn("alb", -2, 0) == 1 && scene.albedo_given && NEAR(scene.albedo, 0.9),
+          "albedo from the default 1 - 2 x 0.05: %g", scene.albedo);
+    CHECK(turn("spec", 3, 1000) == 1 && scene.specular_given && NEAR(scene.specular, 0.1),
+          "specular 0.15 stops at 1 - albedo = 0.1: %g", scene.specular);
+    CHECK(turn("spec", 1, 2000) == 0, "specular at 1 - albedo: no change");
+    CHECK(turn("alb", 1, 3000) == 0 && NEAR(scene.albedo, 0.9), "albedo at 1 - specular");
+    CHECK(turn("alb", -4, 4000) == 1 && NEAR(scene.albedo, 0.7), "albedo down: %g",
+          scene.albedo);
+    CHECK(turn("gl", 2, 5000) == 1 && scene.gloss_given && NEAR(scene.gloss, 32 * 1.5625),
+          "gloss 32 x 1.25^2: %g", scene.gloss);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -241,6 +259,7 @@ int main(int argc, char **argv)
     every_action();
     selection();
     presets_and_overlay();
+    surface();
     bad_events();
     if (failures)
         fprintf(stderr, "test_input_map: %d failure(s)\n", failures);
