@@ -23,7 +23,7 @@ static void kiosk(const char *path)
     CHECK(rc == 0, "kiosk.ini: %s", err.msg);
     if (rc)
         return;
-    CHECK(cfg.n_controls == 9, "kiosk.ini: %d controls", cfg.n_controls);
+    CHECK(cfg.n_controls == 14, "kiosk.ini: %d controls", cfg.n_controls);
     const hfs_control_config *az = hfs_input_config_find(&cfg, "azimuth");
     CHECK(az && az->kind == HFS_CONTROL_KNOB && az->device == HFS_DEVICE_GPIO &&
               !strcmp(az->path, "gpiochip0") && az->lines[0] == 17 && az->lines[1] == 18 &&
@@ -54,6 +54,14 @@ static void kiosk(const char *path)
     const hfs_control_config *lx = hfs_input_config_find(&cfg, "local_x");
     CHECK(lx && lx->device == HFS_DEVICE_NONE && lx->light == -1 && lx->min == -100,
           "kiosk.ini: local_x (replay only)");
+    const hfs_control_config *view = hfs_input_config_find(&cfg, "view");
+    CHECK(view && view->kind == HFS_CONTROL_BUTTON && view->evdev_code == KEY_V &&
+              view->action == HFS_ACTION_VIEW,
+          "kiosk.ini: view");
+    const hfs_control_config *zoom = hfs_input_config_find(&cfg, "camera_zoom");
+    CHECK(zoom && zoom->device == HFS_DEVICE_NONE && zoom->action == HFS_ACTION_CAMERA_ZOOM &&
+              zoom->step == 1.1 && zoom->min == 0.1 && zoom->max == 10.0,
+          "kiosk.ini: camera_zoom (replay only, the action's defaults)");
     CHECK(hfs_input_config_find(&cfg, "nope") == NULL, "find: unknown name");
 }
 
