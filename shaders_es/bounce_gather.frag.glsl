@@ -184,23 +184,32 @@ float direct_horizon(ivec2 g, int je, float t1)
     return max(u > -1.0 ? 2.0 * u / max(1.0 - u * u, 1e-30) : -1e30, t1);
 }
 
-/* The receiver's occluded part over pi: dphi / pi sum over all of the
- * environment's directions of the clamped cosine's integral between the
- * tangent plane and the direct horizon (what env_slices.frag's T_occ,0
- * holds per texel, so that their ratio is 1 at a receiver). */
-float occluded_weight(ivec2 g, vec3 n, vec4 ns, vec4 fine, vec2 h0)
+/* The clamped cosine's integral between the tangent plane and the direct
+ * horizon t_cap of one slice (a = N.d), 0 where the horizon is below it. */
+float slice_occluded(float a, float nz, float t_cap)
+{
+    return t_cap > -a / nz ? slice_cosine(a, nz, atan(-a, nz)) - slice_cosine(a, nz, atan(t_cap))
+                           : 0.0;
+}
+
+/* The sum of slice_occluded over the environment's directions the bounces
+ * skip (the walk adds its own directions'): with the walk's, dphi / pi
+ * times it is the receiver's occluded part over pi, what env_slices.frag's
+ * T_occ,0 holds per texel, so that their ratio is 1 at a receiver. */
+float skipped_occluded(ivec2 g, vec3 n, vec4 ns, vec4 fine, vec2 h0)
 {
     float w = 0.0;
+    int stride = int(u_bhead.z);
     for (int je = 0; je < HFS_NDIR; ++je) {
+        if (je % stride == 0)
+            continue;
         vec2 cs = u_edir[je].xy;
-        float a = n.x * cs.x + n.y * cs.y, t1;
+        float t1;
         vec2 o1;
         own_cell(g, cs, ns, fine, h0, t1, o1);
-        float t_cap = direct_horizon(g, je, t1);
-        if (t_cap > -a / n.z)
-            w += slice_cosine(a, n.z, atan(-a, n.z)) - slice_cosine(a, n.z, atan(t_cap));
+        w += slice_occluded(n.x * cs.x + n.y * cs.y, n.z, direct_horizon(g, je, t1));
     }
-    return w * (2.0 / float(HFS_NDIR));
+    return w;
 }
 #endif
 
@@ -221,6 +230,7 @@ void main()
                     fine.x;
     }
     vec3 acc = vec3(0.0);
+    float w_occ = 0.0; /* slice_occluded summed over the environment's directions */
     for (int j = 0; j < HFS_NBDIR; ++j) {
         int je = j * int(u_bhead.z); /* the environment's direction */
         vec2 cs = u_edir[je].xy;
@@ -246,14 +256,15 @@ void main()
         /* The terrain reaches the direct horizon, which the sparser walk
          * may not (a peak between its samples): the last band's radiance
          * fills the rest (cpu_bounce.c slice_gather). */
-        if (w.s_top < s0 && w.t_top < w.t_cap)
-            w.acc += w.last * (w.s_top - slice_cosine(w.a, w.b, atan(w.t_cap)));
+        float occ = slice_occluded(w.a, w.b, w.t_cap);
+        if (w.s_top < s0 && w.t_top < w.t_cap) /* s0 - occ: the cap's slice_cosine */
+            w.acc += w.last * (w.s_top - (s0 - occ));
+        w_occ += occ;
 #endif
         acc += w.acc;
     }
-    float w_occ = 0.0;
 #ifdef HFS_SLICE
-    w_occ = occluded_weight(g, n, ns, fine, h0);
+    w_occ = (w_occ + skipped_occluded(g, n, ns, fine, h0)) * (2.0 / float(HFS_NDIR));
 #endif
     vec3 e = acc * u_bhead.x;
     e = clamp(e, vec3(0.0), vec3(65504.0));
