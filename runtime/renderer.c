@@ -440,6 +440,20 @@ static int validate_frame(hfs_renderer *r, const hfs_field *f, const hfs_lightin
     return rc;
 }
 
+/* A backend without its own timings is timed as one pass by the wall
+ * clock, from t0 (ms). */
+static void wall_timings(hfs_renderer *r, const char *pass, double t0)
+{
+    hfs_timings *t = &r->timings;
+    memset(t, 0, sizeof *t);
+    t->n_passes = 1;
+    snprintf(t->pass[0].name, sizeof t->pass[0].name, "%s", pass);
+    t->pass[0].ms = t->gpu_ms = t->frame_ms = wall_ms() - t0;
+    t->pass[0].fetches = -1.0;
+    snprintf(t->method, sizeof t->method, "wall");
+    snprintf(t->device, sizeof t->device, "%s", r->ops->name);
+}
+
 int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
                         const hfs_quality *q, hfs_image *out, hfs_progress_fn progress,
                         void *user, hfs_error *err)
@@ -452,16 +466,8 @@ int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
     const double t0 = wall_ms();
     if ((rc = r->ops->render(r->state, f, l, q, out, progress, user, err)))
         return rc;
-    if (r->timing && !r->ops->timings) {
-        hfs_timings *t = &r->timings;
-        memset(t, 0, sizeof *t);
-        t->n_passes = 1;
-        snprintf(t->pass[0].name, sizeof t->pass[0].name, "render");
-        t->pass[0].ms = t->gpu_ms = t->frame_ms = wall_ms() - t0;
-        t->pass[0].fetches = -1.0;
-        snprintf(t->method, sizeof t->method, "wall");
-        snprintf(t->device, sizeof t->device, "%s", r->ops->name);
-    }
+    if (r->timing && !r->ops->timings)
+        wall_timings(r, "render", t0);
     return check_output(out, r->ops->name, err);
 }
 
@@ -524,16 +530,8 @@ int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *f, const hfs_ligh
     }
     const double t0 = wall_ms();
     rc = render_view(r, f, &seen, q, &cam, v, lit ? lit : &own, out, err);
-    if (!rc && r->timing && !r->ops->timings) {
-        hfs_timings *t = &r->timings;
-        memset(t, 0, sizeof *t);
-        t->n_passes = 1;
-        snprintf(t->pass[0].name, sizeof t->pass[0].name, "render+view");
-        t->pass[0].ms = t->gpu_ms = t->frame_ms = wall_ms() - t0;
-        t->pass[0].fetches = -1.0;
-        snprintf(t->method, sizeof t->method, "wall");
-        snprintf(t->device, sizeof t->device, "%s", r->ops->name);
-    }
+    if (!rc && r->timing && !r->ops->timings)
+        wall_timings(r, "render+view", t0);
     if (!rc)
         rc = check_output(lit ? lit : &own, r->ops->name, err);
     if (!rc)
