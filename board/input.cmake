@@ -11,6 +11,7 @@ add_library(hfs_input STATIC
   ${CMAKE_CURRENT_LIST_DIR}/quadrature.c
   ${CMAKE_CURRENT_LIST_DIR}/debounce.c
   ${CMAKE_CURRENT_LIST_DIR}/input_config.c
+  ${CMAKE_CURRENT_LIST_DIR}/input_actions.c
   ${CMAKE_CURRENT_LIST_DIR}/input_map.c
   ${CMAKE_CURRENT_LIST_DIR}/input_replay.c
   ${CMAKE_CURRENT_LIST_DIR}/input_clock.c)

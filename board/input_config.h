@@ -140,6 +140,8 @@ hfs_key_range hfs_action_range(const hfs_action_info *a);
 
 /* The action written name ("env.rotate"), or HFS_ACTION_NONE. */
 hfs_action hfs_action_from_name(const char *name);
+/* The actions' names, ", "-separated, into buf (for messages). */
+void hfs_action_names(char *buf, size_t size);
 
 /* Reads an input configuration; 0, or HFS_E_IO / HFS_E_FORMAT with
  * "PATH:LINE: problem".  *cfg is complete and checked on success. */
