@@ -527,7 +527,7 @@ void hfs_cpu_local_row(const hfs_cpu_local *lc, int worker, int j, const double 
         double hn[HFS_SH_N];
         hfs_sh_rotate_zonal(lc->h_zonal, n[0], n[1], n[2], hn);
         double r[3];
-        const double nr = sp_row ? hfs_gloss_reflect(&lc->gloss, n, r) : 0.0;
+        const double nr = sp_row ? hfs_gloss_reflect(&lc->gloss, p, n, r) : 0.0;
         for (int q = 0; q < lc->n_src; ++q)
             shade(lc, s, &lc->src[q], i, j, p, n, hn, r, nr, lo_row + 3 * i,
                   sp_row ? sp_row + 3 * i : NULL);

@@ -29,6 +29,8 @@ typedef struct hfs_gloss {
     int on;             /* specular > 0: the glossy term exists          */
     double ks, s;       /* specular albedo, Phong exponent               */
     double view[3];     /* unit, towards the viewer                      */
+    int at_eye;         /* 1: each point looks towards eye, not view      */
+    double eye[3];      /* the viewer's point (world units), at_eye = 1   */
     double norm;        /* (S+2)/(2 pi)                                  */
     double zh[HFS_ZH_N];/* the lobe's convolution ZH, hfs_gloss_zh       */
 } hfs_gloss;
@@ -55,17 +57,40 @@ static inline void hfs_gloss_make(const hfs_lighting *l, hfs_gloss *g)
                             l->view_dir[2] * l->view_dir[2]);
     for (int k = 0; k < 3; ++k)
         g->view[k] = len > 0.0 ? l->view_dir[k] / len : (k == 2);
+    g->at_eye = g->on && l->view_from_eye != 0;
+    for (int k = 0; k < 3; ++k)
+        g->eye[k] = g->at_eye ? l->view_eye[k] : 0.0;
     g->norm = (l->gloss + 2.0) / (2.0 * 3.14159265358979323846);
     hfs_gloss_zh(l->gloss, g->zh);
 }
 
-/* R = 2 (N.V) N - V for unit n; returns N.V (= N.R), or 0 with r = N when
- * the viewer is below the tangent plane (no glossy term there). */
-static inline double hfs_gloss_reflect(const hfs_gloss *g, const double n[3], double r[3])
+/* The unit direction towards the viewer from world point p (x = i dx,
+ * y = j dx, z = zscale h): the view direction, or towards the eye of a
+ * perspective viewer (straight up at the eye itself). */
+static inline void hfs_gloss_view_at(const hfs_gloss *g, const double p[3], double v[3])
 {
-    const double nv = n[0] * g->view[0] + n[1] * g->view[1] + n[2] * g->view[2];
+    if (!g->at_eye) {
+        for (int k = 0; k < 3; ++k)
+            v[k] = g->view[k];
+        return;
+    }
+    const double d[3] = {g->eye[0] - p[0], g->eye[1] - p[1], g->eye[2] - p[2]};
+    const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     for (int k = 0; k < 3; ++k)
-        r[k] = nv > 0.0 ? 2.0 * nv * n[k] - g->view[k] : n[k];
+        v[k] = len > 0.0 ? d[k] / len : (k == 2);
+}
+
+/* R = 2 (N.V) N - V for unit n at world point p (V = hfs_gloss_view_at);
+ * returns N.V (= N.R), or 0 with r = N when the viewer is below the
+ * tangent plane (no glossy term there). */
+static inline double hfs_gloss_reflect(const hfs_gloss *g, const double p[3], const double n[3],
+                                       double r[3])
+{
+    double v[3];
+    hfs_gloss_view_at(g, p, v);
+    const double nv = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+    for (int k = 0; k < 3; ++k)
+        r[k] = nv > 0.0 ? 2.0 * nv * n[k] - v[k] : n[k];
     return nv > 0.0 ? nv : 0.0;
 }
 

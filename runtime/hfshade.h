@@ -136,10 +136,16 @@ typedef struct hfs_lighting {
      * direction reflected about the texel's normal.  specular in [0, 1]
      * (albedo + specular <= 1), default 0 = diffuse only (the old output,
      * bit for bit); gloss >= 1, default 32; view_dir: unit vector towards
-     * the viewer, z > 0, default (0, 0, 1).  Not multiplied by albedo_map. */
+     * the viewer, z > 0, default (0, 0, 1).  Not multiplied by albedo_map.
+     * view_from_eye non-zero: a viewer at a point instead (a perspective
+     * camera; hfs_renderer_render_view sets it), each texel's view
+     * direction towards view_eye (world units: x = i dx, y = j dx,
+     * z = zscale h); view_dir is then unused (still checked). */
     double specular;
     double gloss;
     double view_dir[3];
+    int view_from_eye;
+    double view_eye[3];
 } hfs_lighting;
 
 /* ---- quality settings ----------------------------------------------------- */
@@ -351,9 +357,10 @@ HFS_API void hfs_view_frame(hfs_view *v, const hfs_field *f);
  * v->width x v->height, row 0 at the top).  The GLES backend draws the
  * field as a triangle mesh on the GPU, multisampled where the driver
  * allows it; a camera move then costs the view alone (the lighting is
- * kept: hfs_renderer_frame_report; for a glossy surface, lit for the
- * direction towards the camera instead of lighting->view_dir, it reshades
- * too).  The CPU reference and the ground truth cast one exact ray per
+ * kept: hfs_renderer_frame_report; a glossy surface is lit for the
+ * camera instead of lighting->view_dir, the direction towards it in an
+ * ortho view, each texel's own vector towards its eye in a perspective
+ * one (view_from_eye), so a camera move reshades it too).  The CPU reference and the ground truth cast one exact ray per
  * pixel centre over the bilinear surface of their lit image.  Same error
  * conventions as hfs_renderer_render. */
 HFS_API int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *field,

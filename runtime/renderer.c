@@ -332,6 +332,10 @@ static int check_gloss(const hfs_lighting *l, hfs_error *err)
     if (!rc && !(fabs(len2 - 1.0) <= 1e-9 && v[2] > 0.0))
         return hfs_fail(err, HFS_E_INVALID, "view-dir: (%g, %g, %g) is not a unit vector above "
                         "the horizon (elevation in (0, 90] degrees)", v[0], v[1], v[2]);
+    const double *e = l->view_eye;
+    if (!rc && l->view_from_eye && !(isfinite(e[0]) && isfinite(e[1]) && isfinite(e[2])))
+        return hfs_fail(err, HFS_E_INVALID, "view eye: (%g, %g, %g) is not a finite point",
+                        e[0], e[1], e[2]);
     return rc;
 }
 
@@ -500,6 +504,30 @@ static int render_view(hfs_renderer *r, const hfs_field *f, const hfs_lighting *
                                     q->threads, err);
 }
 
+/* Glossy surfaces are seen from the camera: an ortho view's direction
+ * towards it for every texel, a perspective view's eye for each texel's
+ * own view vector (the lighting products stay on the grid; the view
+ * resamples them).  The view's exaggeration scales z for display only, so
+ * the viewer is mapped back into the lighting's space, z / exaggeration
+ * (an affine map of the whole scene: the surface the lighting sees, looked
+ * at from where the camera stands in it). */
+static void glossy_viewer(const hfs_camera *cam, hfs_lighting *seen)
+{
+    hfs_camera_frame fr;
+    hfs_camera_frame_make(cam, &fr);
+    if (cam->ortho) {
+        const double d[3] = {-fr.forward[0], -fr.forward[1], -fr.forward[2] / cam->exaggeration};
+        const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (int k = 0; k < 3; ++k)
+            seen->view_dir[k] = d[k] / len;
+        return;
+    }
+    seen->view_from_eye = 1;
+    seen->view_eye[0] = fr.eye[0];
+    seen->view_eye[1] = fr.eye[1];
+    seen->view_eye[2] = fr.eye[2] / cam->exaggeration;
+}
+
 int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
                              const hfs_quality *q, const hfs_view *v, hfs_image *lit,
                              hfs_image *out, hfs_error *err)
@@ -518,16 +546,9 @@ int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *f, const hfs_ligh
         return rc;
     hfs_camera cam;
     hfs_view_camera(v, &cam);
-    /* Glossy surfaces are seen from the camera: the lobe is evaluated for
-     * the direction towards it (every pixel's for an ortho view; the
-     * centre ray's for a perspective one, where the view vector varies
-     * over the picture). */
     hfs_lighting seen = *l;
-    if (l->specular > 0.0) {
-        seen.view_dir[0] = cos(v->elevation) * cos(v->azimuth);
-        seen.view_dir[1] = cos(v->elevation) * sin(v->azimuth);
-        seen.view_dir[2] = sin(v->elevation);
-    }
+    if (l->specular > 0.0)
+        glossy_viewer(&cam, &seen);
     const double t0 = wall_ms();
     rc = render_view(r, f, &seen, q, &cam, v, lit ? lit : &own, out, err);
     if (!rc && r->timing && !r->ops->timings)

@@ -227,7 +227,7 @@ static void truth_row(void *vctx, int j, int worker)
         const double pw[3] = {i * f->dx, j * f->dx, z0};       /* world */
         double lo[3] = {0.0, 0.0, 0.0};
         double rv[3], sp[3] = {0.0, 0.0, 0.0}; /* glossy: R and the term */
-        const double *r = x->gloss.on && hfs_gloss_reflect(&x->gloss, n, rv) > 0.0 ? rv : NULL;
+        const double *r = x->gloss.on && hfs_gloss_reflect(&x->gloss, pw, n, rv) > 0.0 ? rv : NULL;
 
         if (x->n_az > 0)
             env_receiver(x, i, j, z0, n, lo);

@@ -32,7 +32,8 @@ static void gloss_unshadowed(const hfs_field *f, const hfs_lighting *l, const hf
 {
     double n[3], r[3];
     hfs_field_normal(f, i, j, n);
-    const double nr = hfs_gloss_reflect(g, n, r);
+    const double pw[3] = {i * f->dx, j * f->dx, hfs_field_z(f, i, j) + LIFT * f->dx};
+    const double nr = hfs_gloss_reflect(g, pw, n, r);
     if (!(nr > 0.0))
         return;
     if (has_env) {
@@ -41,7 +42,6 @@ static void gloss_unshadowed(const hfs_field *f, const hfs_lighting *l, const hf
         hfs_sh_rotate_zonal(zh, n[0], n[1], n[2], h);
         hfs_gloss_env(g, nr, r, h, h, env, sp);
     }
-    const double pw[3] = {i * f->dx, j * f->dx, hfs_field_z(f, i, j) + LIFT * f->dx};
     for (int k = 0; k < l->n_key; ++k) {
         const hfs_key_light *kl = &l->key[k];
         double d[3];

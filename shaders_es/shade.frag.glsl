@@ -17,6 +17,8 @@
  *                map: each key/local light's lobe at its centre times its
  *                factor E_cap ratio, the environment's ks (N.R) v L*lobe(R)
  *                with v = clamp(T.Q / H.Q, 0, 1), Q the lobe's ZH at R.
+ *                HFS_GLOSSY 2: a viewer at a point (a perspective camera),
+ *                V towards it from the texel's own point.
  *                Without it the program is the diffuse one, unchanged.
  * Everything that depends on the visibility was computed by those passes,
  * so this pass is what a turned or re-tinted environment or a change of
@@ -35,6 +37,8 @@
 // hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_ALBEDO_MAP 1
 // hfs-variant: HFS_ENV 1, HFS_NKEYS 2, HFS_LOCAL 1, HFS_GLOSSY 1
 // hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_ALBEDO_MAP 1, HFS_GLOSSY 1, HFS_FP32 1
+// hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_GLOSSY 2
+// hfs-variant: HFS_NKEYS 1, HFS_LOCAL 1, HFS_GLOSSY 2
 
 #ifndef HFS_PI
 #define HFS_PI 3.14159265358979
@@ -68,6 +72,18 @@ uniform highp sampler2D u_albedo;        /* albedo map (RGB in [0, 1]), full res
 #ifndef HFS_NKEYS
 #define HFS_NKEYS 0
 #endif
+#ifdef HFS_GLOSSY
+#if HFS_GLOSSY == 2
+#define HFS_GLOSS_EYE 1                  /* each texel's own view vector */
+#endif
+#endif
+#if defined(HFS_LOCAL) || defined(HFS_GLOSS_EYE)
+#ifndef HFS_NLAYERS
+#define HFS_NLAYERS 25
+#endif
+float hfs_h(vec2 t);
+uniform highp sampler2DArray u_levels;   /* the heights, full resolution in the last layer */
+#endif
 
 layout(std140) uniform HfsShade {
     vec4 u_env[12];                      /* L_env, 4 vec4 per channel */
@@ -83,6 +99,8 @@ layout(std140) uniform HfsShade {
     vec4 u_gzh[4];                       /* the lobe's g_l per coefficient */
     vec4 u_kspec[8];                     /* per key light: ks (S+2)/(2 pi) Le E_max */
     vec4 u_kdir[8];                      /* per key light: unit direction */
+    vec4 u_geye;                         /* HFS_GLOSSY 2: the eye, texel units */
+    vec4 u_ghgt;                         /* (base, hscale, zscale / dx, 0) */
 #endif
 };
 /* Every radiance above (u_env, u_env_neg, u_kle, u_lle) comes multiplied by
@@ -111,9 +129,6 @@ float gloss_lobe(vec3 d)
  * (lifted by 1e-4 dx, as the CPU) and normal, the visibility ratio read
  * bilinearly from the grid written by local_visibility.frag (two lights per layer
  * as (hi, lo) pairs).  A texel inside the sphere gets rho Le (E = pi). */
-#ifndef HFS_NLAYERS
-#define HFS_NLAYERS 25
-#endif
 #ifndef HFS_LOCAL_DIRS
 #define HFS_LOCAL_DIRS 16
 #endif
@@ -121,9 +136,6 @@ float gloss_lobe(vec3 d)
 #define HFS_LOCAL_MAX 16
 #endif
 
-float hfs_h(vec2 t);
-
-uniform highp sampler2DArray u_levels;
 uniform highp sampler2DArray u_localv;  /* ratio (hi, lo) x 2 per layer, LINEAR */
 #ifndef HFS_NLOCAL
 #define HFS_NLOCAL 1
@@ -181,9 +193,19 @@ void main()
     vec3 lo = vec3(0.0);
 #ifdef HFS_GLOSSY
     {
-        float nv = dot(n, u_gview.xyz);
+        vec3 view = u_gview.xyz;
+#ifdef HFS_GLOSS_EYE
+        /* gloss.h hfs_gloss_view_at, in texel units (the texel's point as
+         * the heights give it; straight up at the eye itself). */
+        float z = u_ghgt.z * (u_ghgt.x + u_ghgt.y * hfs_h(texelFetch(u_levels,
+                                                              ivec3(p, HFS_NLAYERS - 1), 0).xy));
+        vec3 d = u_geye.xyz - vec3(vec2(p), z);
+        float len = length(d);
+        view = len > 0.0 ? d / len : vec3(0.0, 0.0, 1.0);
+#endif
+        float nv = dot(n, view);
         g_nr = max(nv, 0.0);
-        g_r = nv > 0.0 ? 2.0 * nv * n - u_gview.xyz : n;
+        g_r = nv > 0.0 ? 2.0 * nv * n - view : n;
         g_spec = vec3(0.0);
     }
 #endif

@@ -7,8 +7,10 @@
  * highp here rather than by the texture unit, whose weights may be 8-bit
  * fixed point on some GPUs; the radiance is the shading pass's fp16
  * (hi, lo) pair.  A diffuse surface looks the same from everywhere, so the
- * view only resamples the lighting; v_world and the view vector are kept
- * for the glossy term to come.
+ * view only resamples the lighting; a glossy one was shaded for this
+ * camera (renderer.c glossy_viewer: an ortho view's direction, or each
+ * texel's own vector towards a perspective eye), so its highlight is
+ * resampled as well: exact at the texels, bilinear between them.
  * Output: RGB times the view's power-of-two scale (u_zmap.w converts the
  * lit textures' scale into it), which keeps sky and terrain in fp16's
  * range; the read-back divides it out.
@@ -32,7 +34,6 @@ layout(std140) uniform HfsView {
 };
 
 in highp vec2 v_grid;
-in highp vec3 v_world;
 
 layout(location = 0) out vec4 o_color;
 
@@ -50,7 +51,5 @@ void main()
     vec3 a = lit_at(c) * (1.0 - f.x) + lit_at(c + ivec2(1, 0)) * f.x;
     vec3 b = lit_at(c + ivec2(0, 1)) * (1.0 - f.x) + lit_at(c + ivec2(1, 1)) * f.x;
     vec3 rgb = (a * (1.0 - f.y) + b * f.y) * u_zmap.w;
-    /* The view vector, for the glossy term to come (diffuse needs none). */
-    vec3 to_eye = u_eye.w > 0.5 ? -u_fwd.xyz : u_eye.xyz - v_world;
     o_color = vec4(rgb, 1.0);
 }

@@ -35,7 +35,6 @@ layout(std140) uniform HfsView {
 };
 
 out highp vec2 v_grid;                  /* grid position (i, j) */
-out highp vec3 v_world;                 /* world position (for view-dependent shading) */
 
 void main()
 {
@@ -52,6 +51,5 @@ void main()
     float z = bottom ? u_fwd.w : u_zmap.y + u_zmap.x * (h.x + h.y);
     vec3 w = vec3(float(p.x) * u_zmap.z, float(p.y) * u_zmap.z, z);
     v_grid = vec2(p);
-    v_world = w;
     gl_Position = u_mvp * vec4(w - u_eye.xyz, 1.0);
 }

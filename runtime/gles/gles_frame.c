@@ -147,8 +147,9 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     s->albedo_map = fr->albedo != NULL;
     s->albedo_gen = fr->albedo_gen;
     if (fr->gloss.on) {
-        const double gsig[5] = {fr->gloss.ks, fr->gloss.s, fr->gloss.view[0], fr->gloss.view[1],
-                                fr->gloss.view[2]};
+        const hfs_gloss *g = &fr->gloss;
+        const double gsig[9] = {g->ks, g->s, g->view[0], g->view[1], g->view[2], g->at_eye,
+                                g->eye[0], g->eye[1], g->eye[2]};
         memcpy(s->gloss, gsig, sizeof gsig);
     }
     s->n_keys = fr->n_keys;

@@ -68,6 +68,12 @@ static void fill_gloss(const hfs_gles_frame *fr, double s, hfs_gles_shade_block 
         for (int c = 0; c < 3; ++c)
             sb->kdir[i][c] = (float)fr->keys[i].k.dir[c];
     }
+    const hfs_gles_layout *L = &fr->L;
+    for (int k = 0; k < 3 && gl->at_eye; ++k) /* texel units, as the heights' z */
+        sb->geye[k] = (float)(gl->eye[k] / L->dx);
+    sb->ghgt[0] = (float)L->base;
+    sb->ghgt[1] = (float)L->hscale;
+    sb->ghgt[2] = (float)(L->zscale / L->dx);
 }
 
 /* The largest exit radiance the frame's lights can give. */
@@ -142,10 +148,11 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     }
     if ((rc = hfs_gles_program_texture(gl, prog, "u_kf", GL_TEXTURE_2D_ARRAY, r->kf, err)))
         return rc;
+    if ((fr->n_local > 0 || fr->gloss.at_eye) && /* the texels' heights */
+        (rc = hfs_gles_program_texture(gl, prog, "u_levels", GL_TEXTURE_2D_ARRAY, r->arr, err)))
+        return rc;
     if (fr->n_local > 0) {
-        if ((rc = hfs_gles_program_texture(gl, prog, "u_levels", GL_TEXTURE_2D_ARRAY, r->arr,
-                                           err)) ||
-            (rc = hfs_gles_program_texture(gl, prog, "u_localv", GL_TEXTURE_2D_ARRAY, r->localv,
+        if ((rc = hfs_gles_program_texture(gl, prog, "u_localv", GL_TEXTURE_2D_ARRAY, r->localv,
                                            err)))
             return rc;
         gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_LOCAL, g->ubo[HFS_UBO_LOCAL]);
@@ -176,10 +183,10 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
 
     const int local = fr->n_local > 0;
     const hfs_gles_variant v = {.n_keys = fr->n_keys, .env = fr->has_env, .local = local,
-                                .n_layers = local ? L->n_layers : 0,
+                                .n_layers = local || fr->gloss.at_eye ? L->n_layers : 0,
                                 .local_dirs = local ? fr->q->nphi_local : 0,
                                 .n_local = fr->n_local, .fp32 = g->caps.fp32,
-                                .albedo_map = fr->albedo != NULL, .glossy = fr->gloss.on};
+                                .albedo_map = fr->albedo != NULL, .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_SHADE, &v, &prog, err);
     if (rc || (rc = bind_inputs(g, fr, prog, err)))
@@ -189,6 +196,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     double fetches = (double)L->w * L->h * (1 + 4 * fr->has_env + fr->n_keys + (fr->albedo != NULL));
     if (local) /* the texel's height, one ratio layer per two lights */
         fetches += (double)L->w * L->h * (1 + (fr->n_local + 1) / 2);
+    if (fr->gloss.on && fr->gloss.at_eye) /* the texel's height for its view vector */
+        fetches += (double)L->w * L->h;
     hfs_gles_stage_fetches(g, HFS_PASS_SHADE, 0, fetches);
     return hfs_gl_check(gl, "backend gles: shading pass", err);
 }

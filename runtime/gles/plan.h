@@ -68,7 +68,8 @@ typedef struct hfs_gles_frame_sig {
     double rho_pi;
     unsigned albedo_gen;          /* the albedo map's contents (0: none yet) */
     int albedo_map;
-    double gloss[5];              /* glossy: specular, exponent, view (0: off) */
+    double gloss[9];              /* glossy: specular, exponent, view, at eye,
+                                     eye (0: off) */
     int n_keys;
     struct {
         hfs_swath swath;

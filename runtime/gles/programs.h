@@ -51,7 +51,8 @@ typedef struct hfs_gles_variant {
     int albedo_map; /* HFS_ALBEDO_MAP 1: the shading reads u_albedo          */
     int slice;      /* HFS_SLICE 1: exact slice lighting (slice_light.h)     */
     int n_bdir;     /* HFS_NBDIR: the bounces' directions                    */
-    int glossy;     /* HFS_GLOSSY 1: the shading adds the Phong lobe (gloss.h) */
+    int glossy;     /* HFS_GLOSSY 1: the shading adds the Phong lobe (gloss.h);
+                       2: for a viewer at a point (each texel's own V)       */
 } hfs_gles_variant;
 
 #define HFS_GLES_MAX_PROGRAMS 64

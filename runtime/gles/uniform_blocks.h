@@ -193,6 +193,9 @@ typedef struct hfs_gles_shade_block {
     float gzh[16];                      /* u_gzh[4]: g_l per coefficient         */
     float kspec[HFS_MAX_KEY_LIGHTS][4]; /* u_kspec[8]: ks (S+2)/(2pi) Le E_max   */
     float kdir[HFS_MAX_KEY_LIGHTS][4];  /* u_kdir[8]: the disk's centre, unit    */
+    /* A viewer at a point (HFS_GLOSSY 2, gloss.h at_eye), texel units. */
+    float geye[4];                      /* u_geye: (eye x/dx, y/dx, z/dx, 0)     */
+    float ghgt[4];                      /* u_ghgt: (base, hscale, zscale/dx, 0)  */
 } hfs_gles_shade_block;
 _Static_assert(HFS_MAX_KEY_LIGHTS == 8 && HFS_MAX_LOCAL_LIGHTS == 16,
                "shade.frag.glsl declares u_kle[8] and u_lle[16]");
@@ -206,7 +209,9 @@ _Static_assert(offsetof(hfs_gles_shade_block, gpar) == 43 * 16, "HfsShade.u_gpar
 _Static_assert(offsetof(hfs_gles_shade_block, gzh) == 44 * 16, "HfsShade.u_gzh");
 _Static_assert(offsetof(hfs_gles_shade_block, kspec) == 48 * 16, "HfsShade.u_kspec");
 _Static_assert(offsetof(hfs_gles_shade_block, kdir) == 56 * 16, "HfsShade.u_kdir");
-_Static_assert(sizeof(hfs_gles_shade_block) == 64 * 16, "HfsShade size");
+_Static_assert(offsetof(hfs_gles_shade_block, geye) == 64 * 16, "HfsShade.u_geye");
+_Static_assert(offsetof(hfs_gles_shade_block, ghgt) == 65 * 16, "HfsShade.u_ghgt");
+_Static_assert(sizeof(hfs_gles_shade_block) == 66 * 16, "HfsShade size");
 
 /* The fixed head of the local-light block HfsLocal (local_visibility.frag.glsl and
  * shade.frag.glsl), std140, by name; u_ldir[nphi_local] follows it,
