@@ -6,6 +6,7 @@
 #include "cpu_horizon.h"
 #include "cpu_pyramid.h"
 #include "field_geom.h"
+#include "gloss.h"
 #include "lights.h"
 #include "parallel.h"
 #include "pyramid_layout.h"
@@ -32,23 +33,47 @@ typedef struct bounce_ctx {
     double tie;           /* hfs_horizon_tie_slope, as the direct light's */
     int capped;           /* bands stop at the direct horizon (hfs_bounce_capped) */
     double step[HFS_BOUNCE_MAX_REFINE + 1]; /* 2^(q / ((refine + 1) k)): samples per scale */
+    hfs_gloss gloss;      /* glossy receivers: the lobe's weight of each band too */
+    double lobe[4];       /* hfs_gloss_lobe_poly */
     double *omega;        /* per worker: n_levels angles */
     const float *prev;    /* Lo_{b-1} */
     float *cur;           /* Lo_b */
 } bounce_ctx;
 
+/* One slice's sums at a receiver: the cosine's weights (a = N.d, nz =
+ * N_z) and, glossy, the lobe's (ra = R.d, rz = R_z). */
+typedef struct slice_sums {
+    double a, nz, ra, rz;
+    int glossy;
+    double acc[3];  /* sum Lo_{b-1} W_cos */
+    double gacc[3]; /* sum Lo_{b-1} W_lobe */
+    double last[3]; /* the last band's radiance */
+} slice_sums;
+
+/* Adds the band (top, e] lit by radiance lo. */
+static void add_band(const bounce_ctx *b, slice_sums *ss, double top, double e,
+                     const double lo[3])
+{
+    const double wgt = hfs_slice_cosine(ss->a, ss->nz, top) - hfs_slice_cosine(ss->a, ss->nz, e);
+    const double wg = ss->glossy ? hfs_slice_lobe(b->lobe, ss->ra, ss->rz, top) -
+                                       hfs_slice_lobe(b->lobe, ss->ra, ss->rz, e)
+                                 : 0.0;
+    for (int c = 0; c < 3; ++c) {
+        ss->acc[c] += lo[c] * wgt;
+        ss->gacc[c] += lo[c] * wg;
+    }
+}
+
 /* The band (top, e] cast by the sample at (gx, gy), when e rises above
- * top: its radiance (kept in last) times its cosine weight into acc;
- * returns the new top. */
-static double cast(const bounce_ctx *b, double a, double nz, double top, double e, double gx,
-                   double gy, double acc[3], double last[3])
+ * top: its radiance (kept in ss->last) into the sums; returns the new
+ * top. */
+static double cast(const bounce_ctx *b, slice_sums *ss, double top, double e, double gx,
+                   double gy)
 {
     if (!(e > top))
         return top;
-    hfs_rgb_bilinear(b->prev, b->f->width, b->f->height, gx, gy, last);
-    const double wgt = hfs_slice_cosine(a, nz, top) - hfs_slice_cosine(a, nz, e);
-    for (int c = 0; c < 3; ++c)
-        acc[c] += last[c] * wgt;
+    hfs_rgb_bilinear(b->prev, b->f->width, b->f->height, gx, gy, ss->last);
+    add_band(b, ss, top, e, ss->last);
     return e;
 }
 
@@ -84,26 +109,30 @@ static double direct_horizon(const bounce_ctx *b, double *omega, int d, int i, i
     return fmax(e, atan(first_cell));
 }
 
-/* sum_bands Lo_{b-1} W over slice d at receiver (i, j): the receiver's own
+/* sum_bands Lo_{b-1} W over slice d at receiver (i, j) into ss (its
+ * normal's and R's weights set): the receiver's own
  * cell, then each scale's sample and `refine` more between it and the next
  * (the spacing the refined horizons reach about their max), nearest first;
  * each scale's group casts one band up to its highest sample, lit at the
  * first sample that rose (bounce_gather.frag walk_scales says why). */
 static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j,
-                         const double n[3], double acc[3])
+                         const double n[3], const double r[3], slice_sums *ss)
 {
     double c, s;
     hfs_horizon_plan_dir(b->plan, d, &c, &s);
     const double a = n[0] * c + n[1] * s;
+    ss->a = a, ss->nz = n[2];
+    ss->ra = r[0] * c + r[1] * s, ss->rz = r[2];
+    for (int k = 0; k < 3; ++k)
+        ss->last[k] = 0.0;
     double top = atan2(-a, n[2]); /* the tangent plane */
     const double top0 = top;
-    double last[3] = {0.0, 0.0, 0.0};
     const double m1 = hfs_field_first_cell_slope(b->f, i, j, c, s);
     const double cap = b->capped ? direct_horizon(b, omega, d, i, j, n, c, s, m1) : 0.5 * PI;
     /* The receiver's own cell; its band takes the far edge's radiance. */
     const double tc = 1.0 / fmax(fabs(c), fabs(s));
     if (m1 > -DBL_MAX)
-        top = cast(b, a, n[2], top, fmin(atan(m1), cap), i + c * tc, j + s * tc, acc, last);
+        top = cast(b, ss, top, fmin(atan(m1), cap), i + c * tc, j + s * tc);
     const hfs_horizon_tap *taps = hfs_horizon_plan_taps(b->plan, d);
     /* Once the top reaches the cap nothing farther can cast a band. */
     for (int sc = b->n_levels - 1; sc >= 0 && top < cap; --sc) {
@@ -120,18 +149,15 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
                 best = e;
             }
         }
-        top = cast(b, a, n[2], top, fmin(best, cap), bx, by, acc, last);
+        top = cast(b, ss, top, fmin(best, cap), bx, by);
         if (off)
             break; /* the grid is convex: every farther sample is off too */
     }
     /* Capped: the terrain reaches the direct horizon, which the sparser
      * walk may not (a peak between its samples): the last band's radiance
      * fills the rest. */
-    if (b->capped && top > top0 && top < cap) {
-        const double wgt = hfs_slice_cosine(a, n[2], top) - hfs_slice_cosine(a, n[2], cap);
-        for (int k = 0; k < 3; ++k)
-            acc[k] += last[k] * wgt;
-    }
+    if (b->capped && top > top0 && top < cap)
+        add_band(b, ss, top, cap, ss->last);
 }
 
 static void bounce_row(void *ctx, int j, int worker)
@@ -140,14 +166,19 @@ static void bounce_row(void *ctx, int j, int worker)
     const hfs_field *f = b->f;
     double *omega = b->omega + (size_t)worker * (size_t)b->n_levels;
     for (int i = 0; i < f->width; ++i) {
-        double n[3], acc[3] = {0.0, 0.0, 0.0};
+        double n[3], r[3] = {0.0, 0.0, 1.0};
         hfs_field_normal(f, i, j, n);
+        const double pw[3] = {i * f->dx, j * f->dx, hfs_field_z(f, i, j)};
+        const double nr = b->gloss.on ? hfs_gloss_reflect(&b->gloss, pw, n, r) : 0.0;
+        slice_sums ss = {.glossy = nr > 0.0};
         for (int d = 0; d < b->n_dirs; d += b->stride)
-            slice_gather(b, omega, d, i, j, n, acc);
+            slice_gather(b, omega, d, i, j, n, r, &ss);
         const size_t p = 3 * ((size_t)j * (size_t)f->width + (size_t)i);
         for (int c = 0; c < 3; ++c) {
             const double rho = b->l->albedo * (b->l->albedo_map ? b->l->albedo_map[p + c] : 1.0);
-            b->cur[p + c] = (float)(rho / PI * b->dphi * acc[c]);
+            /* The lobe's order-4 ringing can weigh a band below 0: clamp. */
+            const double gl = fmax(0.0, b->gloss.ks * nr * b->dphi * ss.gacc[c]);
+            b->cur[p + c] = (float)(rho / PI * b->dphi * ss.acc[c] + gl);
         }
     }
 }
@@ -189,6 +220,8 @@ int hfs_cpu_bounces(const hfs_field *f, const hfs_lighting *l, const hfs_quality
                                                                        : HFS_BOUNCE_MAX_REFINE};
     for (int k = 0; k <= b.refine; ++k)
         b.step[k] = exp2((double)k / ((b.refine + 1) * b.k));
+    hfs_gloss_make(l, &b.gloss);
+    hfs_gloss_lobe_poly(&b.gloss, b.lobe);
     int rc = (!prev || !cur) ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for "
                                         "the bounces")
                              : make_plan(f, q, &pyr, &plan, err);

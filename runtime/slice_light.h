@@ -82,6 +82,15 @@ double hfs_slice_trig(int k, double phi);
  * weighs hfs_slice_cosine(x1) - hfs_slice_cosine(x2). */
 double hfs_slice_cosine(double a, double b, double x);
 
+/* The glossy lobe's weight of the slice's elevations above x (issue 16,
+ * glossy indirect light): Int_x^{pi/2} q(A cos e + B sin e) cos e de for
+ * the cubic q(t) = c[0] + c[1] t + c[2] t^2 + c[3] t^3 (gloss.h
+ * hfs_gloss_lobe_poly: the order-4 lobe as a function of t = R.w, A =
+ * R.d(phi), B = R_z).  Closed form through t = rho cos(e - eps) and the
+ * antiderivatives of cos^k; a band (x1, x2] weighs the difference, as
+ * hfs_slice_cosine's bands.  bounce_gather.frag mirrors it. */
+double hfs_slice_lobe(const double c[4], double A, double B, double x);
+
 /* The 7 slice integrals g_m = Int_x^{pi/2} f_m(e) (a cos e + b sin e) cos e
  * de (exposed for the tests). */
 void hfs_slice_integrals(double a, double b, double x, double g[HFS_SLICE_F]);

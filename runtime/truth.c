@@ -378,9 +378,11 @@ static int add_bounces(const hfs_truth_grid *g, const hfs_lighting *l, const hfs
         return hfs_fail(err, HFS_E_NOMEM, "truth: out of memory for %d bounces", l->bounces);
     }
     memcpy(prev, out->rgb, n * sizeof *prev);
+    hfs_gloss gloss;
+    hfs_gloss_make(l, &gloss);
     for (int b = 1; b <= l->bounces; ++b) {
         const hfs_truth_bounce_in in = {g, prev, l->albedo, l->albedo_map,
-                                        q->truth_light_samples, b, q->threads};
+                                        q->truth_light_samples, b, q->threads, &gloss};
         span->base = b * span->width;
         hfs_truth_bounce(&in, cur, span->fn ? span_progress : NULL, span);
         for (size_t i = 0; i < n; ++i)

@@ -12,13 +12,19 @@
  * radiance is Lo_{b-1}'s bilinear interpolant at y's grid position; a ray
  * that leaves the grid brings nothing.  Directions below the horizontal
  * are sampled too where the tangent plane allows (they hit the terrain).
- * rho(x) = albedo * albedo_map(x) (albedo.h).  Deterministic: the jitter
+ * rho(x) = albedo * albedo_map(x) (albedo.h).  A glossy receiver
+ * (gloss.h) adds the lobe's share,
+ *   ks (S+2)/(S+1) E[Lo_{b-1}(y(x, s)) max(0, N.s)] over s from the lobe
+ *   about R (truth_sampling.h lobe_direction, k x k strata as the
+ *   cosine's), R for the view at x (hfs_gloss_reflect); 0 where N.V <= 0.
+ * Deterministic: the jitter
  * is seeded per receiver and bounce (truth_sampling.h), so the output is
  * bit identical for any thread count.
  */
 #ifndef HFS_TRUTH_BOUNCE_H
 #define HFS_TRUTH_BOUNCE_H
 
+#include "gloss.h"
 #include "hfshade.h"
 #include "truth_raycast.h"
 
@@ -30,6 +36,7 @@ typedef struct hfs_truth_bounce_in {
     int samples;                 /* rays per receiver: the largest k^2 <= it  */
     int bounce;                  /* b >= 1: seeds the jitter                  */
     int threads;
+    const hfs_gloss *gloss;      /* NULL or off: diffuse receivers            */
 } hfs_truth_bounce_in;
 
 /* Lo_b at receiver (i, j), in double. */

@@ -9,7 +9,6 @@
 
 #include <math.h>
 
-#define PI 3.14159265358979323846
 
 void hfs_truth_gloss_env(const hfs_truth_grid *g, const hfs_gloss *gl,
                          const double env[3][HFS_SH_N], int n_samples, const double o[3],
@@ -23,15 +22,10 @@ void hfs_truth_gloss_env(const hfs_truth_grid *g, const hfs_gloss *gl,
     double sum[3] = {0.0, 0.0, 0.0};
     for (int a = 0; a < k; ++a)
         for (int b = 0; b < k; ++b) {
-            /* CDF of (S+1) cos^S theta sin theta: 1 - cos^(S+1) theta. */
             const double u1 = ((double)a + rng_uniform(&rng)) / k;
             const double u2 = ((double)b + rng_uniform(&rng)) / k;
-            const double ct = pow(1.0 - u1, inv);
-            const double st = sqrt(fmax(0.0, 1.0 - ct * ct));
-            const double psi = 2.0 * PI * u2, cp = cos(psi), sp = sin(psi);
             double s[3];
-            for (int q = 0; q < 3; ++q)
-                s[q] = ct * r[q] + st * (cp * t1[q] + sp * t2[q]);
+            lobe_direction(r, t1, t2, inv, u1, u2, s);
             const double ns = n[0] * s[0] + n[1] * s[1] + n[2] * s[2];
             if (!(ns > 0.0) || hfs_truth_ray_hits(g, o, s, INFINITY))
                 continue;

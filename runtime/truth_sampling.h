@@ -47,4 +47,17 @@ static inline void frame_around(const double d[3], double t1[3], double t2[3])
     t2[2] = d[0] * t1[1] - d[1] * t1[0];
 }
 
+/* The direction of the Phong lobe about unit r (frame t1, t2) at (u1, u2)
+ * in [0, 1)^2: the inverse CDF of (S+1) cos^S theta sin theta, 1 -
+ * cos^(S+1) theta = u1 (inv_s1 = 1/(S+1)), and psi = 2 pi u2. */
+static inline void lobe_direction(const double r[3], const double t1[3], const double t2[3],
+                                  double inv_s1, double u1, double u2, double s[3])
+{
+    const double ct = pow(1.0 - u1, inv_s1);
+    const double st = sqrt(fmax(0.0, 1.0 - ct * ct));
+    const double psi = 2.0 * 3.14159265358979323846 * u2, cp = cos(psi), sp = sin(psi);
+    for (int q = 0; q < 3; ++q)
+        s[q] = ct * r[q] + st * (cp * t1[q] + sp * t2[q]);
+}
+
 #endif /* HFS_TRUTH_SAMPLING_H */

@@ -23,9 +23,16 @@
  * Samples whose best case (the field's largest height, u_vmax) cannot
  * rise above the current top are skipped without a fetch: they could not
  * cast a band.
+ * HFS_GLOSSY (a glossy receiver, gloss.h): each band is also weighed by
+ * the order-4 lobe about the receiver's R (slice_lobe, as slice_light.c
+ * hfs_slice_lobe), written as G = ks (N.R) dphi sum Lo W_lobe into the
+ * second target (HFS_GLOSSY 2: R for the view from u_geye, the receiver's
+ * own point).
  */
 // hfs-variant: HFS_SLICE 1
 // hfs-variant: HFS_FP32 1
+// hfs-variant: HFS_SLICE 1, HFS_GLOSSY 1
+// hfs-variant: HFS_SLICE 1, HFS_GLOSSY 2, HFS_FP32 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -70,6 +77,12 @@ uniform ivec2 u_vsize;                   /* and size */
 #endif
 uniform float u_vmax;                    /* largest normalized height, a hair up */
 uniform int u_refine;                    /* samples per scale besides the scale's own */
+#ifdef HFS_GLOSSY
+uniform vec4 u_globe;                    /* the lobe's cubic q(t) (gloss.h hfs_gloss_lobe_poly) */
+uniform vec4 u_gview;                    /* (V towards the viewer, ks dphi) */
+uniform vec4 u_geye;                     /* HFS_GLOSSY 2: the eye, texel units */
+uniform vec4 u_ghgt;                     /* (base, hscale, zscale / dx, 0) */
+#endif
 
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
@@ -79,13 +92,51 @@ layout(std140) uniform HfsBounce {
     vec4 u_edir[HFS_NDIR];               /* the environment's (cos, sin, 0, 0) */
 };
 
-out vec4 o_e;
+layout(location = 0) out vec4 o_e;
+#ifdef HFS_GLOSSY
+layout(location = 1) out vec4 o_g;       /* G (RGB) */
+#endif
 
 /* Int_x^{pi/2} (a cos e + b sin e) cos e de (slice_light.h). */
 float slice_cosine(float a, float b, float x)
 {
     return 0.5 * a * (HFS_HALF_PI - x - 0.5 * sin(2.0 * x)) + 0.25 * b * (1.0 + cos(2.0 * x));
 }
+
+#ifdef HFS_GLOSSY
+/* Antiderivative of cos^m u, m = 1..4 (slice_light.c cos_power_integral). */
+float cos_power(int m, float u, float su, float cu)
+{
+    if (m == 1)
+        return su;
+    if (m == 2)
+        return 0.5 * u + 0.5 * su * cu;
+    if (m == 3)
+        return su - su * su * su / 3.0;
+    return 0.375 * u + 0.5 * su * cu + 0.125 * su * cu * (cu * cu - su * su);
+}
+
+/* Int_x^{pi/2} q(A cos e + B sin e) cos e de (slice_light.c hfs_slice_lobe). */
+float slice_lobe(float A, float B, float x)
+{
+    float rho = sqrt(A * A + B * B);
+    if (!(rho > 0.0))
+        return u_globe.x * (1.0 - sin(x));
+    float ce = A / rho, se = B / rho, eps = atan(B, A);
+    float u0 = x - eps, u1 = HFS_HALF_PI - eps;
+    float s0 = sin(u0), c0 = cos(u0), s1 = sin(u1), c1 = cos(u1);
+    float sum = 0.0, rk = 1.0, p0 = c0, p1 = c1;
+    for (int k = 0; k < 4; ++k) {
+        float a = cos_power(k + 1, u1, s1, c1) - cos_power(k + 1, u0, s0, c0);
+        float b = (p0 - p1) / float(k + 1);
+        sum += u_globe[k] * rk * (ce * a - se * b);
+        rk *= rho;
+        p0 *= c0;
+        p1 *= c1;
+    }
+    return sum;
+}
+#endif
 
 /* The walk's state along one slice.  The top is kept as a slope (samples
  * compare slopes: no atan per sample) and as its elevation's cosine
@@ -97,6 +148,11 @@ struct Walk {
     float t_cap;     /* the slope where the bands stop */
     vec3 acc;        /* sum of Lo_{b-1} W */
     vec3 last;       /* the last band's radiance */
+#ifdef HFS_GLOSSY
+    float ra, rb;    /* R.d, R_z; rb > 1.5: no glossy term */
+    float g_top;     /* slice_lobe at the top's elevation */
+    vec3 gacc;       /* sum of Lo_{b-1} W_lobe */
+#endif
 };
 
 /* A sample at grid position g + o rising to slope t: casts the band
@@ -107,8 +163,16 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
     if (!(t > w.t_top))
         return;
     vec3 lo = texture(u_rad, (vec2(g) + o + 0.5) / vec2(u_size)).rgb;
-    float s = slice_cosine(w.a, w.b, atan(t));
+    float x = atan(t);
+    float s = slice_cosine(w.a, w.b, x);
     w.acc += lo * (w.s_top - s);
+#ifdef HFS_GLOSSY
+    if (w.rb < 1.5) {
+        float q = slice_lobe(w.ra, w.rb, x);
+        w.gacc += lo * (w.g_top - q);
+        w.g_top = q;
+    }
+#endif
     w.last = lo;
     w.t_top = t;
     w.s_top = s;
@@ -231,6 +295,17 @@ void main()
     }
     vec3 acc = vec3(0.0);
     float w_occ = 0.0; /* slice_occluded summed over the environment's directions */
+#ifdef HFS_GLOSSY
+    /* R at the receiver (gloss.h hfs_gloss_reflect); nv <= 0: no lobe. */
+    vec3 view = u_gview.xyz;
+#if HFS_GLOSSY == 2
+    vec3 d = u_geye.xyz - vec3(vec2(g), u_ghgt.z * (u_ghgt.x + u_ghgt.y * hfs_h(h0)));
+    view = length(d) > 0.0 ? normalize(d) : vec3(0.0, 0.0, 1.0);
+#endif
+    float nv = dot(n, view);
+    vec3 r = 2.0 * nv * n - view;
+    vec3 gacc = vec3(0.0);
+#endif
     for (int j = 0; j < HFS_NBDIR; ++j) {
         int je = j * int(u_bhead.z); /* the environment's direction */
         vec2 cs = u_edir[je].xy;
@@ -243,6 +318,12 @@ void main()
         w.acc = vec3(0.0);
         w.last = vec3(0.0);
         float s0 = w.s_top;
+#ifdef HFS_GLOSSY
+        w.ra = dot(r.xy, cs);
+        w.rb = nv > 0.0 ? r.z : 2.0;
+        w.g_top = w.rb < 1.5 ? slice_lobe(w.ra, w.rb, atan(-w.a, n.z)) : 0.0;
+        w.gacc = vec3(0.0);
+#endif
         /* The own cell's band, then the cap: the direct horizon. */
         float t1;
         vec2 o1;
@@ -257,11 +338,19 @@ void main()
          * may not (a peak between its samples): the last band's radiance
          * fills the rest (cpu_bounce.c slice_gather). */
         float occ = slice_occluded(w.a, w.b, w.t_cap);
-        if (w.s_top < s0 && w.t_top < w.t_cap) /* s0 - occ: the cap's slice_cosine */
+        if (w.s_top < s0 && w.t_top < w.t_cap) { /* s0 - occ: the cap's slice_cosine */
             w.acc += w.last * (w.s_top - (s0 - occ));
+#ifdef HFS_GLOSSY
+            if (w.rb < 1.5)
+                w.gacc += w.last * (w.g_top - slice_lobe(w.ra, w.rb, atan(w.t_cap)));
+#endif
+        }
         w_occ += occ;
 #endif
         acc += w.acc;
+#ifdef HFS_GLOSSY
+        gacc += w.gacc;
+#endif
     }
 #ifdef HFS_SLICE
     w_occ = (w_occ + skipped_occluded(g, n, ns, fine, h0)) * (2.0 / float(HFS_NDIR));
@@ -269,4 +358,9 @@ void main()
     vec3 e = acc * u_bhead.x;
     e = clamp(e, vec3(0.0), vec3(65504.0));
     o_e = vec4(mix(vec3(0.0), e, equal(e, e)), clamp(w_occ, 0.0, 1.0));
+#ifdef HFS_GLOSSY
+    /* The lobe's order-4 ringing can weigh a band below 0: clamp. */
+    vec3 gs = clamp(gacc * (u_gview.w * max(nv, 0.0)), vec3(0.0), vec3(65504.0));
+    o_g = vec4(mix(vec3(0.0), gs, equal(gs, gs)), 0.0);
+#endif
 }

@@ -20,10 +20,14 @@
  * target) and as the frame's result (direct + every bounce, an fp16 hi +
  * lo pair like the shading pass's).  Radiances carry the frame's output
  * scale (pass_shade.c).
+ * HFS_GLOSSY: a glossy receiver's lobe of each bounce, G_l (layer 2 l + 1;
+ * E_l is then at 2 l), read and scaled like E_l, is added after the
+ * albedo (not the albedo map's, as the direct lobe).
  */
 // hfs-variant: HFS_ALBEDO_MAP 1
 // hfs-variant: HFS_SLICE 1
 // hfs-variant: HFS_FP32 1
+// hfs-variant: HFS_SLICE 1, HFS_GLOSSY 1
 
 #ifndef HFS_PI
 #define HFS_PI 3.14159265358979
@@ -69,16 +73,26 @@ void main()
 #ifdef HFS_SLICE
     float w_occ = -texelFetch(u_t0, p, 0).x * (2.0 / sqrt(HFS_PI)); /* over pi */
 #endif
-    vec3 e = vec3(0.0);
+    vec3 e = vec3(0.0), gs = vec3(0.0);
     for (int l = 0; l < u_count; ++l) {
+#ifdef HFS_GLOSSY
+        vec4 eb = texture(u_e, vec3(uv, float(2 * (u_first + l))));
+        vec3 gb = texture(u_e, vec3(uv, float(2 * (u_first + l) + 1))).rgb;
+#else
         vec4 eb = texture(u_e, vec3(uv, float(u_first + l)));
+        vec3 gb = vec3(0.0);
+#endif
 #ifdef HFS_SLICE
-        if (eb.a >= 1e-3)
-            eb.rgb *= max(w_occ, 0.0) / eb.a;
+        if (eb.a >= 1e-3) {
+            float ratio = max(w_occ, 0.0) / eb.a;
+            eb.rgb *= ratio;
+            gb *= ratio;
+        }
 #endif
         e += eb.rgb;
+        gs += gb;
     }
-    v += rho * e;
+    v += rho * e + gs;
     v = clamp(v, vec3(-65504.0), vec3(65504.0));
     v = mix(vec3(0.0), v, equal(v, v));
     vec2 r = hfs_split(v.r), g = hfs_split(v.g), b = hfs_split(v.b);

@@ -6,8 +6,9 @@
  *            bounces, the indirect part (image(B) - image(0)) compared
  *            against the CPU's, on the fractal under sky + sun (the bands
  *            capped at the direct horizons), the sun alone (uncapped) and
- *            with an albedo map; at the frame's precision (argv[2]: fp16
- *            or fp32)
+ *            with an albedo map, and a glossy surface (the receivers' lobe
+ *            over the bands, seen along a direction and from an eye); at
+ *            the frame's precision (argv[2]: fp16 or fp32)
  *   furnace  albedo 1 under a uniform sky in a V-groove, the defaults
  *            (subsample 2, bounce-subsample 4): every bounce >= 0 and
  *            direct + 3 bounces <= 1 (fp16 margin)
@@ -63,8 +64,9 @@ static double indirect_error(const hfs_image *a, const hfs_image *a0, const hfs_
  * by percents). */
 #define EQUAL_REL 2e-3
 
+/* glossy: 0 diffuse, 1 seen along a direction, 2 from an eye. */
 static void check_equal(const scene *s, hfs_precision precision, const char *what, int env,
-                        const float *map, int nphi_bounce)
+                        const float *map, int nphi_bounce, int glossy)
 {
     hfs_renderer *g = gl_test_gles(), *cpu = NULL;
     hfs_renderer_desc cd = {.backend = HFS_BACKEND_CPU};
@@ -72,6 +74,12 @@ static void check_equal(const scene *s, hfs_precision precision, const char *wha
     hfs_renderer_create(&cd, &cpu, &err);
     hfs_lighting l = scene_lighting(env, 1);
     l.albedo_map = map;
+    if (glossy) {
+        l.albedo = 0.6, l.specular = 0.35, l.gloss = 12.0;
+        l.view_dir[0] = -0.6, l.view_dir[1] = 0.0, l.view_dir[2] = 0.8;
+        l.view_from_eye = glossy == 2;
+        l.view_eye[0] = 55.0, l.view_eye[1] = 10.0, l.view_eye[2] = 30.0;
+    }
     hfs_quality q;
     hfs_quality_defaults(&q);
     q.subsample = 1, q.bounce_subsample = 1, q.precision = precision;
@@ -226,9 +234,11 @@ int main(int argc, char **argv)
     if (scene_make("fractal25", N, NULL, &s))
         return 1;
     float *map = make_map(N, N);
-    check_equal(&s, p, "sky + sun", 1, NULL, 12);
-    check_equal(&s, p, "sun alone, 6 of 12 azimuths", 0, NULL, 6);
-    check_equal(&s, p, "sky + sun, albedo map, 4 of 12 azimuths", 1, map, 4);
+    check_equal(&s, p, "sky + sun", 1, NULL, 12, 0);
+    check_equal(&s, p, "sun alone, 6 of 12 azimuths", 0, NULL, 6, 0);
+    check_equal(&s, p, "sky + sun, albedo map, 4 of 12 azimuths", 1, map, 4, 0);
+    check_equal(&s, p, "glossy, sky + sun", 1, NULL, 12, 1);
+    check_equal(&s, p, "glossy seen from an eye, sun alone, 6 of 12", 0, NULL, 6, 2);
     check_grid(&s);
     check_furnace();
     check_planner(&s);

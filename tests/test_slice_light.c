@@ -12,8 +12,14 @@
  *              as the slices get finer;
  *   shadow     a receiver under a uniform horizon at elevation x0 on a flat
  *              plane: E = pi cos^2 x0 (the closed form of the cap) under
- *              L = 1.
+ *              L = 1;
+ *   lobe       hfs_slice_lobe (the glossy bounces' band weights) against
+ *              64-point quadrature of q(A cos e + B sin e) cos e for random
+ *              cubics, R and x (R straight up and along the slice
+ *              included); and gloss.h's lobe polynomial integrates to 1
+ *              over the sphere and to q's Legendre form.
  */
+#include "gloss.h"
 #include "slice_light.h"
 
 #include <math.h>
@@ -81,6 +87,55 @@ static void check_profile(void)
            outside);
     CHECK(worst < 1e-14, "P_km(phi_j) != trig_k a_km: %.3e", worst);
     CHECK(outside < 1e-15, "a profile term outside the shader's slots: %.3e", outside);
+}
+
+static void check_lobe(const double *gx, const double *gw)
+{
+    unsigned seed = 777;
+    double worst = 0.0;
+    for (int trial = 0; trial < 300; ++trial) {
+        double c[4];
+        for (int k = 0; k < 4; ++k)
+            c[k] = 2.0 * frand(&seed) - 1.0;
+        const double th = PI * frand(&seed); /* R = (sin th d + cos th z) */
+        double A = sin(th) * (2.0 * frand(&seed) - 1.0), B = cos(th);
+        if (trial == 0)
+            A = 0.0, B = 1.0;
+        if (trial == 1)
+            A = 1.0, B = 0.0;
+        const double x = -0.5 * PI + PI * frand(&seed);
+        double q = 0.0;
+        for (int i = 0; i < 64; ++i) {
+            const double e = x + (0.5 * PI - x) * 0.5 * (gx[i] + 1.0);
+            const double t = A * cos(e) + B * sin(e);
+            q += gw[i] * 0.5 * (0.5 * PI - x) * (c[0] + t * (c[1] + t * (c[2] + t * c[3]))) *
+                 cos(e);
+        }
+        worst = fmax(worst, fabs(q - hfs_slice_lobe(c, A, B, x)));
+    }
+    printf("lobe: worst |closed form - quadrature| %.3e\n", worst);
+    CHECK(worst < 1e-13, "slice lobe off by %.3e", worst);
+    /* q against sum_l g_l (2l+1)/(4 pi) P_l, and Int q = 1 (2 pi Int_-1^1 q dt). */
+    hfs_lighting l;
+    hfs_lighting_defaults(&l);
+    l.specular = 0.2, l.gloss = 17.0;
+    hfs_gloss g;
+    hfs_gloss_make(&l, &g);
+    double c[4], d = 0.0, total = 0.0;
+    hfs_gloss_lobe_poly(&g, c);
+    for (int i = 0; i < 64; ++i) {
+        const double t = gx[i];
+        const double p[4] = {1.0, t, 0.5 * (3.0 * t * t - 1.0), 0.5 * (5.0 * t * t * t - 3.0 * t)};
+        double want = 0.0;
+        for (int k = 0; k < 4; ++k)
+            want += g.zh[k] * (2.0 * k + 1.0) / (4.0 * PI) * p[k];
+        const double got = c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+        d = fmax(d, fabs(got - want));
+        total += gw[i] * 2.0 * PI * got;
+    }
+    printf("lobe: polynomial against Legendre %.3e, integral over the sphere %.15f\n", d, total);
+    CHECK(d < 1e-14 && fabs(total - 1.0) < 1e-13, "lobe polynomial: %.3e, integral %.15f", d,
+          total);
 }
 
 int main(void)
@@ -180,6 +235,7 @@ int main(void)
     }
     CHECK(prev < 1e-12, "open tilted receiver, 1024 slices: %.3e from H", prev);
     check_profile();
+    check_lobe(gx, gw);
     printf("slice light: %s\n", failures ? "FAILED" : "ok");
     return failures ? 1 : 0;
 }

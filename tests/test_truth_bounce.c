@@ -127,7 +127,7 @@ static void test_wall(void)
     hfs_truth_grid g;
     REQUIRE(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid");
     const int samples = 128 * 128, jc = h / 2;
-    const hfs_truth_bounce_in in = {&g, prev, rho, NULL, samples, 1, 1};
+    const hfs_truth_bounce_in in = {&g, prev, rho, NULL, samples, 1, 1, NULL};
     const int foot[5] = {2, 4, 8, 16, 40};
     for (int k = 0; k < 5; ++k) {
         const int i = X - 1 - foot[k];

@@ -25,18 +25,21 @@ void hfs_gles_bounce_targets_free(hfs_gles_bounce_targets *t, const hfs_gl *gl)
 
 int hfs_gles_bounce_targets_ensure(hfs_gles_bounce_targets *t, const hfs_gl *gl,
                                    const hfs_gl_caps *c, int w, int h, int bw, int bh,
-                                   hfs_error *err)
+                                   int glossy, hfs_error *err)
 {
-    if (t->rad && t->w == w && t->h == h && t->bw == bw && t->bh == bh && t->fp32 == c->fp32)
+    glossy = glossy != 0;
+    if (t->rad && t->w == w && t->h == h && t->bw == bw && t->bh == bh && t->fp32 == c->fp32 &&
+        t->glossy == glossy)
         return HFS_OK;
     hfs_gles_bounce_targets_free(t, gl);
-    t->w = w, t->h = h, t->bw = bw, t->bh = bh, t->fp32 = c->fp32;
+    t->w = w, t->h = h, t->bw = bw, t->bh = bh, t->fp32 = c->fp32, t->glossy = glossy;
+    const int layers = (1 + glossy) * HFS_GLES_MAX_BOUNCES;
     t->rad = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 1);
-    t->e = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, bw, bh, HFS_GLES_MAX_BOUNCES, 1);
+    t->e = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, bw, bh, layers, 1);
     t->fin[0] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
     t->fin[1] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
     t->bytes = (size_t)3 * w * h * c->bytes_rgba +
-               (size_t)HFS_GLES_MAX_BOUNCES * bw * bh * c->bytes_rgba;
+               (size_t)layers * bw * bh * c->bytes_rgba;
     gl->GenFramebuffers(1, &t->e_fbo);
     int rc;
     if ((rc = hfs_gles_fbo_new(gl, &t->rad_fbo, 1, &t->rad, NULL, "bounce radiance", err)) ||

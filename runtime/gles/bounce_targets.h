@@ -7,7 +7,8 @@
  *            bounce gathers (Lo_{b-1}, times the frame's output scale);
  *   e        the bounce grid (quality bounce_subsample), 3 layers, LINEAR:
  *            each bounce's gathered irradiance over pi, E_b, and the
- *            receivers' occluded part (pass_bounce.c);
+ *            receivers' occluded part (pass_bounce.c); 6 for a glossy
+ *            surface, E_b at 2 (b-1) and the lobe's G_b after it;
  *   fin      full resolution hi + lo pair: direct + indirect, what the
  *            read-back (and any later pass) takes instead of the shading
  *            pass's output.
@@ -27,16 +28,16 @@ typedef struct hfs_gles_bounce_targets {
     GLuint e, e_fbo;            /* e_fbo: one layer attached at a time */
     GLuint fin[2], fin_fbo;     /* hi, lo drawn together */
     GLuint fin_lo_fbo;          /* lo alone, for the read-back */
-    int w, h, bw, bh, fp32;
+    int w, h, bw, bh, fp32, glossy;
     unsigned gen;               /* bumped when reallocated (contents lost) */
     size_t bytes;
 } hfs_gles_bounce_targets;
 
 /* Fits t to a w x h field and a bw x bh bounce grid at the caps'
- * precision (a no-op while they hold). */
+ * precision, with the glossy layers or not (a no-op while they hold). */
 int hfs_gles_bounce_targets_ensure(hfs_gles_bounce_targets *t, const hfs_gl *gl,
                                    const hfs_gl_caps *c, int w, int h, int bw, int bh,
-                                   hfs_error *err);
+                                   int glossy, hfs_error *err);
 void hfs_gles_bounce_targets_free(hfs_gles_bounce_targets *t, const hfs_gl *gl);
 
 #endif /* HFS_GLES_BOUNCE_TARGETS_H */

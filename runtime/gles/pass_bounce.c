@@ -9,7 +9,9 @@
  * targets, which the read-back and the view take (hfs_gles_lit_targets).
  * Each bounce's E stays on the grid, interpolated at each texel like the
  * local lights' ratios, scaled to the texel's own occluded part (slice
- * path) and multiplied by its own albedo.
+ * path) and multiplied by its own albedo.  A glossy surface's receivers
+ * also weigh each band by the lobe about their R (G_b beside E_b, added
+ * after the albedo).
  *
  * A bounce depends on the radiance of every light, so the pass reruns
  * whenever the shading does, and when its own settings change (plan.h
@@ -84,7 +86,7 @@ static int light(hfs_gles *g, const hfs_gles_frame *fr, GLuint fbo, int direct, 
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.fp32 = g->caps.fp32, .albedo_map = fr->albedo != NULL,
-                                .slice = fr->capped};
+                                .slice = fr->capped, .glossy = fr->gloss.on};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_LIGHT, &v, &prog, err);
     if (rc || (rc = hfs_gles_program_texture(gl, prog, "u_hi", GL_TEXTURE_2D, g->r.out[0], err)) ||
@@ -108,7 +110,25 @@ static int light(hfs_gles *g, const hfs_gles_frame *fr, GLuint fbo, int direct, 
     return HFS_OK;
 }
 
-/* bounce_gather.frag over the bounce grid into layer `layer` of E. */
+/* The glossy receivers' uniforms (bounce_gather.frag HFS_GLOSSY). */
+static void set_gloss(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_gles_frame *fr)
+{
+    const hfs_gloss *gs = &fr->gloss;
+    const hfs_gles_layout *L = &fr->L;
+    double c[4];
+    hfs_gloss_lobe_poly(gs, c);
+    const double view[4] = {gs->view[0], gs->view[1], gs->view[2],
+                            gs->ks * 2.0 * PI / hfs_bounce_dirs(fr->q)};
+    const double eye[4] = {gs->eye[0] / L->dx, gs->eye[1] / L->dx, gs->eye[2] / L->dx, 0.0};
+    const double hgt[4] = {L->base, L->hscale, L->zscale / L->dx, 0.0};
+    hfs_gles_set_f4(gl, prog, "u_globe", c);
+    hfs_gles_set_f4(gl, prog, "u_gview", view);
+    hfs_gles_set_f4(gl, prog, "u_geye", eye);
+    hfs_gles_set_f4(gl, prog, "u_ghgt", hgt);
+}
+
+/* bounce_gather.frag over the bounce grid into layer `layer` of E (and
+ * the next, G, for a glossy surface). */
 static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
@@ -116,8 +136,8 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
     const int capped = fr->capped;
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                 .n_dir = fr->q->nphi_env, .n_bdir = hfs_bounce_dirs(fr->q),
-                                .fp32 = g->caps.fp32,
-                                .slice = capped};
+                                .fp32 = g->caps.fp32, .slice = capped,
+                                .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_GATHER, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
@@ -132,8 +152,11 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
     hfs_gles_set_i1(gl, prog, "u_vsub", L->sub);  /* the visibility grid's, for u_hor */
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_BOUNCE, g->ubo[HFS_UBO_BOUNCE]);
-    if ((rc = hfs_gles_fbo_layers(gl, g->bounce.e_fbo, g->bounce.e, layer, 1,
-                                  "bounce irradiance", err)))
+    const int glossy = fr->gloss.on;
+    if (glossy)
+        set_gloss(gl, prog, fr);
+    if ((rc = hfs_gles_fbo_layers(gl, g->bounce.e_fbo, g->bounce.e, (1 + glossy) * layer,
+                                  1 + glossy, "bounce irradiance", err)))
         return rc;
     hfs_gles_draw(gl, g->bounce.e_fbo, fr->bw, fr->bh);
     return HFS_OK;
@@ -145,7 +168,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     const hfs_gl *gl = &g->gl;
     int rc;
     if ((rc = hfs_gles_bounce_targets_ensure(&g->bounce, gl, &g->caps, fr->L.w, fr->L.h, fr->bw,
-                                             fr->bh, err)) ||
+                                             fr->bh, fr->gloss.on, err)) ||
         (rc = upload_block(g, fr, err)))
         return rc;
     for (int b = 1; b <= fr->bounces && !rc; ++b) {

@@ -262,3 +262,11 @@ void hfs_gles_set_f2(const hfs_gl *gl, const hfs_gles_program *p, const char *na
     if (loc >= 0)
         gl->Uniform2f(loc, a, b);
 }
+
+void hfs_gles_set_f4(const hfs_gl *gl, const hfs_gles_program *p, const char *name,
+                     const double v[4])
+{
+    GLint loc = gl->GetUniformLocation(p->name, name);
+    if (loc >= 0)
+        gl->Uniform4f(loc, (float)v[0], (float)v[1], (float)v[2], (float)v[3]);
+}

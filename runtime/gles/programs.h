@@ -87,6 +87,8 @@ void hfs_gles_set_i2(const hfs_gl *gl, const hfs_gles_program *p, const char *na
 void hfs_gles_set_f1(const hfs_gl *gl, const hfs_gles_program *p, const char *name, float a);
 void hfs_gles_set_f2(const hfs_gl *gl, const hfs_gles_program *p, const char *name, float a,
                      float b);
+void hfs_gles_set_f4(const hfs_gl *gl, const hfs_gles_program *p, const char *name,
+                     const double v[4]);
 
 /* The "#define NAME VALUE" strings of variant v (NULL-terminated; bufs
  * holds their text).  Exposed for tests. */
