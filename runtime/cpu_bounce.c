@@ -34,30 +34,27 @@ typedef struct bounce_ctx {
     int capped;           /* bands stop at the direct horizon (hfs_bounce_capped) */
     double step[HFS_BOUNCE_MAX_REFINE + 1]; /* 2^(q / ((refine + 1) k)): samples per scale */
     hfs_gloss gloss;      /* glossy receivers: the lobe's weight of each band too */
-    double lobe[4];       /* hfs_gloss_lobe_poly */
     double *omega;        /* per worker: n_levels angles */
     const float *prev;    /* Lo_{b-1} */
     float *cur;           /* Lo_b */
 } bounce_ctx;
 
 /* One slice's sums at a receiver: the cosine's weights (a = N.d, nz =
- * N_z) and, glossy, the lobe's (ra = R.d, rz = R_z). */
+ * N_z) and, glossy, the lobe's (slice_light.h hfs_lobe_slice). */
 typedef struct slice_sums {
-    double a, nz, ra, rz;
+    double a, nz;
     int glossy;
+    hfs_lobe_slice ls;
     double acc[3];  /* sum Lo_{b-1} W_cos */
     double gacc[3]; /* sum Lo_{b-1} W_lobe */
     double last[3]; /* the last band's radiance */
 } slice_sums;
 
 /* Adds the band (top, e] lit by radiance lo. */
-static void add_band(const bounce_ctx *b, slice_sums *ss, double top, double e,
-                     const double lo[3])
+static void add_band(slice_sums *ss, double top, double e, const double lo[3])
 {
     const double wgt = hfs_slice_cosine(ss->a, ss->nz, top) - hfs_slice_cosine(ss->a, ss->nz, e);
-    const double wg = ss->glossy ? hfs_slice_lobe(b->lobe, ss->ra, ss->rz, top) -
-                                       hfs_slice_lobe(b->lobe, ss->ra, ss->rz, e)
-                                 : 0.0;
+    const double wg = ss->glossy ? hfs_lobe_slice_band(&ss->ls, top, e) : 0.0;
     for (int c = 0; c < 3; ++c) {
         ss->acc[c] += lo[c] * wgt;
         ss->gacc[c] += lo[c] * wg;
@@ -73,7 +70,7 @@ static double cast(const bounce_ctx *b, slice_sums *ss, double top, double e, do
     if (!(e > top))
         return top;
     hfs_rgb_bilinear(b->prev, b->f->width, b->f->height, gx, gy, ss->last);
-    add_band(b, ss, top, e, ss->last);
+    add_band(ss, top, e, ss->last);
     return e;
 }
 
@@ -122,7 +119,8 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
     hfs_horizon_plan_dir(b->plan, d, &c, &s);
     const double a = n[0] * c + n[1] * s;
     ss->a = a, ss->nz = n[2];
-    ss->ra = r[0] * c + r[1] * s, ss->rz = r[2];
+    if (ss->glossy)
+        hfs_lobe_slice_init(&ss->ls, r, n, c, s, b->gloss.s);
     for (int k = 0; k < 3; ++k)
         ss->last[k] = 0.0;
     double top = atan2(-a, n[2]); /* the tangent plane */
@@ -157,7 +155,7 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
      * walk may not (a peak between its samples): the last band's radiance
      * fills the rest. */
     if (b->capped && top > top0 && top < cap)
-        add_band(b, ss, top, cap, ss->last);
+        add_band(ss, top, cap, ss->last);
 }
 
 static void bounce_row(void *ctx, int j, int worker)
@@ -176,8 +174,7 @@ static void bounce_row(void *ctx, int j, int worker)
         const size_t p = 3 * ((size_t)j * (size_t)f->width + (size_t)i);
         for (int c = 0; c < 3; ++c) {
             const double rho = b->l->albedo * (b->l->albedo_map ? b->l->albedo_map[p + c] : 1.0);
-            /* The lobe's order-4 ringing can weigh a band below 0: clamp. */
-            const double gl = fmax(0.0, b->gloss.ks * nr * b->dphi * ss.gacc[c]);
+            const double gl = b->gloss.ks * b->gloss.norm * b->dphi * ss.gacc[c];
             b->cur[p + c] = (float)(rho / PI * b->dphi * ss.acc[c] + gl);
         }
     }
@@ -221,7 +218,6 @@ int hfs_cpu_bounces(const hfs_field *f, const hfs_lighting *l, const hfs_quality
     for (int k = 0; k <= b.refine; ++k)
         b.step[k] = exp2((double)k / ((b.refine + 1) * b.k));
     hfs_gloss_make(l, &b.gloss);
-    hfs_gloss_lobe_poly(&b.gloss, b.lobe);
     int rc = (!prev || !cur) ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for "
                                         "the bounces")
                              : make_plan(f, q, &pyr, &plan, err);

@@ -101,20 +101,6 @@ static inline double hfs_gloss_lobe(const hfs_gloss *g, const double r[3], const
     return c > 0.0 ? g->norm * pow(c, g->s) : 0.0;
 }
 
-/* The order-4 lobe of hfs_gloss_env as a function of t = R.w:
- * q(t) = sum_l g_l (2l+1)/(4 pi) P_l(t) = c[0] + c[1] t + c[2] t^2 +
- * c[3] t^3, so that Int L(w) q(R.w) dw = L*lobe(R) of any radiance L
- * (Int q = g_0 = 1 over the sphere).  The bounces weigh their bands by it
- * (slice_light.h hfs_slice_lobe). */
-static inline void hfs_gloss_lobe_poly(const hfs_gloss *g, double c[4])
-{
-    const double k = 1.0 / (8.0 * 3.14159265358979323846);
-    c[0] = (2.0 * g->zh[0] - 5.0 * g->zh[2]) * k;
-    c[1] = (6.0 * g->zh[1] - 21.0 * g->zh[3]) * k;
-    c[2] = 15.0 * g->zh[2] * k;
-    c[3] = 35.0 * g->zh[3] * k;
-}
-
 /* The environment's glossy term (CPU reference; shade.frag mirrors it):
  *     out_c += ks (N.R) v L_c*lobe(R),   v = clamp(T.Q / H.Q, 0, 1),
  * Q = the lobe's ZH rotated to R (Q_lm = g_l y_lm(R)), T the texel's

@@ -174,39 +174,41 @@ double hfs_slice_cosine(double a, double b, double x)
     return 0.5 * a * (0.5 * PI - x - 0.5 * sin(2.0 * x)) + 0.25 * b * (1.0 + cos(2.0 * x));
 }
 
-/* Antiderivative of cos^m u (m <= 4). */
-static double cos_power_integral(int m, double u, double su, double cu)
+void hfs_lobe_slice_init(hfs_lobe_slice *ls, const double r[3], const double n[3], double c,
+                         double s, double gloss)
 {
-    switch (m) {
-    case 0: return u;
-    case 1: return su;
-    case 2: return 0.5 * u + 0.5 * su * cu;
-    case 3: return su - su * su * su / 3.0;
-    default: /* 3u/8 + sin 2u/4 + sin 4u/32 */
-        return 0.375 * u + 0.5 * su * cu + 0.125 * su * cu * (cu * cu - su * su);
+    ls->A = r[0] * c + r[1] * s, ls->B = r[2];
+    ls->a = n[0] * c + n[1] * s, ls->b = n[2];
+    ls->s = gloss;
+    ls->h = fmin(0.1, 0.5 * sqrt(2.0 / gloss));
+    const double rho = sqrt(ls->A * ls->A + ls->B * ls->B);
+    const double cmin = exp(log(1e-6) / gloss); /* t_R^S >= 1e-6 for t_R >= cmin */
+    ls->lo = 1.0, ls->hi = 0.0;
+    if (rho > cmin) {
+        const double eps = atan2(ls->B, ls->A), u = acos(cmin / rho);
+        ls->lo = eps - u, ls->hi = eps + u;
     }
 }
 
-double hfs_slice_lobe(const double c[4], double A, double B, double x)
+static double lobe_integrand(const hfs_lobe_slice *ls, double e)
 {
-    const double rho = sqrt(A * A + B * B);
-    if (!(rho > 0.0))
-        return c[0] * (1.0 - sin(x)); /* q(0) Int cos e */
-    /* e = u + eps: cos e = cos u cos eps - sin u sin eps, t = rho cos u. */
-    const double ce = A / rho, se = B / rho, eps = atan2(B, A);
-    const double u[2] = {x - eps, 0.5 * PI - eps};
-    double su[2], cu[2];
-    for (int k = 0; k < 2; ++k)
-        su[k] = sin(u[k]), cu[k] = cos(u[k]);
-    double sum = 0.0, rk = 1.0, cpow[2] = {cu[0], cu[1]}; /* cos^(k+1) u */
-    for (int k = 0; k < 4; ++k, rk *= rho) {
-        /* Int cos^k u cos e = ce Int cos^(k+1) u - se Int cos^k u sin u,
-         * Int cos^k u sin u du = -cos^(k+1) u / (k+1). */
-        const double a = cos_power_integral(k + 1, u[1], su[1], cu[1]) -
-                         cos_power_integral(k + 1, u[0], su[0], cu[0]);
-        const double b = (cpow[0] - cpow[1]) / (k + 1);
-        sum += c[k] * rk * (ce * a - se * b);
-        cpow[0] *= cu[0], cpow[1] *= cu[1];
+    const double ce = cos(e), se = sin(e);
+    const double tr = ls->A * ce + ls->B * se, tn = ls->a * ce + ls->b * se;
+    return tr > 0.0 && tn > 0.0 ? pow(tr, ls->s) * tn * ce : 0.0;
+}
+
+double hfs_lobe_slice_band(const hfs_lobe_slice *ls, double x1, double x2)
+{
+    const double lo = fmax(x1, ls->lo), hi = fmin(x2, ls->hi);
+    if (!(hi > lo))
+        return 0.0;
+    int n = (int)ceil((hi - lo) / ls->h);
+    n = n < 1 ? 1 : (n > HFS_LOBE_STEPS ? HFS_LOBE_STEPS : n);
+    const double step = (hi - lo) / n, g = 0.5 * step / sqrt(3.0);
+    double sum = 0.0;
+    for (int k = 0; k < n; ++k) {
+        const double mid = lo + (k + 0.5) * step;
+        sum += lobe_integrand(ls, mid - g) + lobe_integrand(ls, mid + g);
     }
-    return sum;
+    return 0.5 * step * sum;
 }

@@ -82,14 +82,28 @@ double hfs_slice_trig(int k, double phi);
  * weighs hfs_slice_cosine(x1) - hfs_slice_cosine(x2). */
 double hfs_slice_cosine(double a, double b, double x);
 
-/* The glossy lobe's weight of the slice's elevations above x (issue 16,
- * glossy indirect light): Int_x^{pi/2} q(A cos e + B sin e) cos e de for
- * the cubic q(t) = c[0] + c[1] t + c[2] t^2 + c[3] t^3 (gloss.h
- * hfs_gloss_lobe_poly: the order-4 lobe as a function of t = R.w, A =
- * R.d(phi), B = R_z).  Closed form through t = rho cos(e - eps) and the
- * antiderivatives of cos^k; a band (x1, x2] weighs the difference, as
- * hfs_slice_cosine's bands.  bounce_gather.frag mirrors it. */
-double hfs_slice_lobe(const double c[4], double A, double B, double x);
+/* A glossy receiver's slice (issue 16, glossy indirect light): the
+ * Phong lobe about R and the clamped cosine about N along the slice's
+ * elevations, t_R = A cos e + B sin e (A = R.d(phi), B = R_z) and
+ * t_N = a cos e + b sin e.  Its bands (x1, x2] weigh
+ *     Int_x1^x2 max(0, t_R)^S max(0, t_N) cos e de,
+ * by 2-point Gauss-Legendre on steps of at most min(0.1, sqrt(2/S)/2)
+ * over the part of the band where the lobe exceeds 1e-6 of its peak
+ * (|e - atan2(B, A)| < acos(1e-6^(1/S) / |(A, B)|)): about 15 steps
+ * whatever S (bounded at HFS_LOBE_STEPS).  The exact lobe, not its
+ * order-4 ZH: NS09's order-4 lobe is ~45 degrees wide at S = 8, and its
+ * tails over the terrain near the horizon made the glossy bounce 46%
+ * bright against the truth on cones (test_cpu_bounce, DESIGN.md "Glossy
+ * surfaces").  bounce_gather.frag mirrors it. */
+#define HFS_LOBE_STEPS 64
+typedef struct hfs_lobe_slice {
+    double A, B, a, b, s;
+    double lo, hi;   /* the lobe's support along the slice (lo > hi: none) */
+    double h;        /* the step */
+} hfs_lobe_slice;
+void hfs_lobe_slice_init(hfs_lobe_slice *ls, const double r[3], const double n[3], double c,
+                         double s, double gloss);
+double hfs_lobe_slice_band(const hfs_lobe_slice *ls, double x1, double x2);
 
 /* The 7 slice integrals g_m = Int_x^{pi/2} f_m(e) (a cos e + b sin e) cos e
  * de (exposed for the tests). */

@@ -24,10 +24,10 @@
  * rise above the current top are skipped without a fetch: they could not
  * cast a band.
  * HFS_GLOSSY (a glossy receiver, gloss.h): each band is also weighed by
- * the order-4 lobe about the receiver's R (slice_lobe, as slice_light.c
- * hfs_slice_lobe), written as G = ks (N.R) dphi sum Lo W_lobe into the
- * second target (HFS_GLOSSY 2: R for the view from u_geye, the receiver's
- * own point).
+ * the Phong lobe about the receiver's R times its cosine (lobe_band, as
+ * slice_light.c hfs_lobe_slice_band), written as G = ks (S+2)/(2 pi)
+ * dphi sum Lo W_lobe into the second target (HFS_GLOSSY 2: R for the
+ * view from u_geye, the receiver's own point).
  */
 // hfs-variant: HFS_SLICE 1
 // hfs-variant: HFS_FP32 1
@@ -78,8 +78,8 @@ uniform ivec2 u_vsize;                   /* and size */
 uniform float u_vmax;                    /* largest normalized height, a hair up */
 uniform int u_refine;                    /* samples per scale besides the scale's own */
 #ifdef HFS_GLOSSY
-uniform vec4 u_globe;                    /* the lobe's cubic q(t) (gloss.h hfs_gloss_lobe_poly) */
-uniform vec4 u_gview;                    /* (V towards the viewer, ks dphi) */
+uniform vec4 u_gpar;                     /* (S, step, 1e-6^(1/S), 0): hfs_lobe_slice */
+uniform vec4 u_gview;                    /* (V towards the viewer, ks (S+2)/(2 pi) dphi) */
 uniform vec4 u_geye;                     /* HFS_GLOSSY 2: the eye, texel units */
 uniform vec4 u_ghgt;                     /* (base, hscale, zscale / dx, 0) */
 #endif
@@ -104,37 +104,32 @@ float slice_cosine(float a, float b, float x)
 }
 
 #ifdef HFS_GLOSSY
-/* Antiderivative of cos^m u, m = 1..4 (slice_light.c cos_power_integral). */
-float cos_power(int m, float u, float su, float cu)
+#ifndef HFS_LOBE_STEPS
+#define HFS_LOBE_STEPS 64
+#endif
+/* max(0, R.s)^S max(0, N.s) cos e along the slice: t_R = l.x cos e +
+ * l.y sin e, t_N = n.x cos e + n.y sin e. */
+float lobe_at(vec4 l, float e)
 {
-    if (m == 1)
-        return su;
-    if (m == 2)
-        return 0.5 * u + 0.5 * su * cu;
-    if (m == 3)
-        return su - su * su * su / 3.0;
-    return 0.375 * u + 0.5 * su * cu + 0.125 * su * cu * (cu * cu - su * su);
+    float ce = cos(e), se = sin(e);
+    float tr = l.x * ce + l.y * se, tn = l.z * ce + l.w * se;
+    return tr > 0.0 && tn > 0.0 ? pow(tr, u_gpar.x) * tn * ce : 0.0;
 }
 
-/* Int_x^{pi/2} q(A cos e + B sin e) cos e de (slice_light.c hfs_slice_lobe). */
-float slice_lobe(float A, float B, float x)
+/* Int_x1^x2 of lobe_at over the lobe's support (sup) in steps of at most
+ * u_gpar.y, 2-point Gauss-Legendre each (slice_light.c hfs_lobe_slice_band). */
+float lobe_band(vec4 l, vec2 sup, float x1, float x2)
 {
-    float rho = sqrt(A * A + B * B);
-    if (!(rho > 0.0))
-        return u_globe.x * (1.0 - sin(x));
-    float ce = A / rho, se = B / rho, eps = atan(B, A);
-    float u0 = x - eps, u1 = HFS_HALF_PI - eps;
-    float s0 = sin(u0), c0 = cos(u0), s1 = sin(u1), c1 = cos(u1);
-    float sum = 0.0, rk = 1.0, p0 = c0, p1 = c1;
-    for (int k = 0; k < 4; ++k) {
-        float a = cos_power(k + 1, u1, s1, c1) - cos_power(k + 1, u0, s0, c0);
-        float b = (p0 - p1) / float(k + 1);
-        sum += u_globe[k] * rk * (ce * a - se * b);
-        rk *= rho;
-        p0 *= c0;
-        p1 *= c1;
+    float lo = max(x1, sup.x), hi = min(x2, sup.y);
+    if (!(hi > lo))
+        return 0.0;
+    int n = clamp(int(ceil((hi - lo) / u_gpar.y)), 1, HFS_LOBE_STEPS);
+    float step = (hi - lo) / float(n), g = 0.5 * step / sqrt(3.0), sum = 0.0;
+    for (int k = 0; k < n; ++k) {
+        float mid = lo + (float(k) + 0.5) * step;
+        sum += lobe_at(l, mid - g) + lobe_at(l, mid + g);
     }
-    return sum;
+    return 0.5 * step * sum;
 }
 #endif
 
@@ -149,8 +144,8 @@ struct Walk {
     vec3 acc;        /* sum of Lo_{b-1} W */
     vec3 last;       /* the last band's radiance */
 #ifdef HFS_GLOSSY
-    float ra, rb;    /* R.d, R_z; rb > 1.5: no glossy term */
-    float g_top;     /* slice_lobe at the top's elevation */
+    vec4 l;          /* (R.d, R_z, N.d, N_z) */
+    vec2 sup;        /* the lobe's support along the slice (x > y: none) */
     vec3 gacc;       /* sum of Lo_{b-1} W_lobe */
 #endif
 };
@@ -167,11 +162,7 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
     float s = slice_cosine(w.a, w.b, x);
     w.acc += lo * (w.s_top - s);
 #ifdef HFS_GLOSSY
-    if (w.rb < 1.5) {
-        float q = slice_lobe(w.ra, w.rb, x);
-        w.gacc += lo * (w.g_top - q);
-        w.g_top = q;
-    }
+    w.gacc += lo * lobe_band(w.l, w.sup, atan(w.t_top), x);
 #endif
     w.last = lo;
     w.t_top = t;
@@ -319,9 +310,13 @@ void main()
         w.last = vec3(0.0);
         float s0 = w.s_top;
 #ifdef HFS_GLOSSY
-        w.ra = dot(r.xy, cs);
-        w.rb = nv > 0.0 ? r.z : 2.0;
-        w.g_top = w.rb < 1.5 ? slice_lobe(w.ra, w.rb, atan(-w.a, n.z)) : 0.0;
+        w.l = vec4(dot(r.xy, cs), r.z, w.a, w.b);
+        float rho = length(w.l.xy);
+        w.sup = vec2(1.0, 0.0);
+        if (nv > 0.0 && rho > u_gpar.z) {
+            float eps = atan(w.l.y, w.l.x), u = acos(u_gpar.z / rho);
+            w.sup = vec2(eps - u, eps + u);
+        }
         w.gacc = vec3(0.0);
 #endif
         /* The own cell's band, then the cap: the direct horizon. */
@@ -341,8 +336,7 @@ void main()
         if (w.s_top < s0 && w.t_top < w.t_cap) { /* s0 - occ: the cap's slice_cosine */
             w.acc += w.last * (w.s_top - (s0 - occ));
 #ifdef HFS_GLOSSY
-            if (w.rb < 1.5)
-                w.gacc += w.last * (w.g_top - slice_lobe(w.ra, w.rb, atan(w.t_cap)));
+            w.gacc += w.last * lobe_band(w.l, w.sup, atan(w.t_top), atan(w.t_cap));
 #endif
         }
         w_occ += occ;
@@ -359,8 +353,7 @@ void main()
     e = clamp(e, vec3(0.0), vec3(65504.0));
     o_e = vec4(mix(vec3(0.0), e, equal(e, e)), clamp(w_occ, 0.0, 1.0));
 #ifdef HFS_GLOSSY
-    /* The lobe's order-4 ringing can weigh a band below 0: clamp. */
-    vec3 gs = clamp(gacc * (u_gview.w * max(nv, 0.0)), vec3(0.0), vec3(65504.0));
+    vec3 gs = clamp(gacc * u_gview.w, vec3(0.0), vec3(65504.0));
     o_g = vec4(mix(vec3(0.0), gs, equal(gs, gs)), 0.0);
 #endif
 }

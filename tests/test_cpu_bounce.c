@@ -11,7 +11,11 @@
  *             direct + 3 bounces <= 1 + 1e-9
  *   truth     cones 48^2, sky + sun, one bounce: the indirect part's mean
  *             error against the truth's, relative to the truth's largest
- *             indirect value, within the bound below
+ *             indirect value, within the bound below; diffuse, and glossy
+ *             (albedo 0.1 + ks 0.9: the receivers' lobe over the bands
+ *             against the truth's lobe samples)
+ *   furnace   also glossy (albedo 0.6 + ks 0.4, S 8): >= 0 and <= 1 within
+ *             the bound below
  */
 #include "backends.h"
 #include "bounce_scenes.h"
@@ -86,12 +90,26 @@ static void test_wall(void)
     free(z), free(lo), free(direct);
 }
 
-static void test_furnace(void)
+/* Glossy: the sky's lobe is order 4 (hfs_gloss_env, N.R for the cosine),
+ * the bands' the exact one (hfs_lobe_slice_band): not a bound by
+ * construction as the diffuse walk's, but the energy must still
+ * hold.  Measured max 0.9166; bound 1. */
+#define GLOSSY_FURNACE_MAX 1.0
+
+static void glossy_surface(hfs_lighting *l, double ks, double s)
+{
+    l->albedo = 1.0 - ks, l->specular = ks, l->gloss = s;
+    l->view_dir[0] = -0.6, l->view_dir[1] = 0.0, l->view_dir[2] = 0.8;
+}
+
+static void test_furnace(int glossy)
 {
     const int w = 33, h = 48;
     float *z = bounce_groove(w, h);
     const hfs_field f = {w, h, z, 1.0, 1.0};
     hfs_lighting l = bounce_uniform_sky();
+    if (glossy)
+        glossy_surface(&l, 0.4, 8.0);
     float *lo[4];
     for (int b = 0; b < 4; ++b) {
         lo[b] = malloc(sizeof(float) * w * h * 3);
@@ -99,20 +117,23 @@ static void test_furnace(void)
     }
     double worst_total, worst_neg;
     bounce_furnace(lo, (size_t)w * h * 3, &worst_neg, &worst_total);
-    CHECK(worst_neg >= 0.0 && worst_total <= 1.0 + 1e-9);
-    printf("furnace: every bounce >= 0 (min %.2e), direct + 3 bounces <= %.4f\n", worst_neg,
-           worst_total);
+    CHECK(worst_neg >= 0.0 && worst_total <= (glossy ? GLOSSY_FURNACE_MAX : 1.0 + 1e-9));
+    printf("furnace%s: every bounce >= 0 (min %.2e), direct + 3 bounces <= %.4f\n",
+           glossy ? ", glossy" : "", worst_neg, worst_total);
     for (int b = 0; b < 4; ++b)
         free(lo[b]);
     free(z);
 }
 
-/* Bound: measured 1.8% here (2.2% on the benchmark cones at 128^2); bound
- * 5% of the truth's largest indirect value (issue 16 asks 10% at the
- * defaults). */
+/* Bound: measured 1.8% here (2.2% on the benchmark cones at 128^2);
+ * bound 5% of the truth's largest indirect value (issue 16 asks 10% at
+ * the defaults).  Glossy (albedo 0.1 + ks 0.9, S 8: the lobe's bounce
+ * dominates): measured 0.58% (7.1% without the lobe's bounce, 6.0% with
+ * NS09's order-4 lobe, whose tails are ~45 degrees wide); bound 2%. */
 #define TRUTH_REL 0.05
+#define GLOSSY_TRUTH_REL 0.02
 
-static void test_truth(void)
+static void test_truth(int glossy)
 {
     const int n = 48;
     float *z = malloc((size_t)n * n * sizeof *z);
@@ -125,6 +146,8 @@ static void test_truth(void)
     hfs_lighting l = bounce_uniform_sky();
     l.n_key = 1;
     l.key[0] = (hfs_key_light){336 * PI / 180, 15 * PI / 180, 2 * PI / 180, {300, 300, 300}, 0};
+    if (glossy)
+        glossy_surface(&l, 0.9, 8.0);
     float *c[2], *t[2];
     for (int b = 0; b < 2; ++b) {
         c[b] = malloc(sizeof(float) * n * n * 3), t[b] = malloc(sizeof(float) * n * n * 3);
@@ -139,9 +162,10 @@ static void test_truth(void)
         tsum += ti;
     }
     const double rel = sum / (n * n * 3) / tmax;
-    printf("truth: one bounce on two cones: indirect mean %.4f, max %.4f; cpu error %.2f%% of "
-           "the max (bound %.0f%%)\n", tsum / (n * n * 3), tmax, 100 * rel, 100 * TRUTH_REL);
-    CHECK(tmax > 0.0 && rel <= TRUTH_REL);
+    printf("truth: one bounce on two cones%s: indirect mean %.4f, max %.4f; cpu error %.2f%% of "
+           "the max (bound %.0f%%)\n", glossy ? ", glossy" : "", tsum / (n * n * 3), tmax,
+           100 * rel, 100 * (glossy ? GLOSSY_TRUTH_REL : TRUTH_REL));
+    CHECK(tmax > 0.0 && rel <= (glossy ? GLOSSY_TRUTH_REL : TRUTH_REL));
     for (int b = 0; b < 2; ++b)
         free(c[b]), free(t[b]);
     free(z);
@@ -182,7 +206,9 @@ int main(void)
     test_bounce_dirs();
     test_flat();
     test_wall();
-    test_furnace();
-    test_truth();
+    test_furnace(0);
+    test_furnace(1);
+    test_truth(0);
+    test_truth(1);
     return finish_checks("test_cpu_bounce");
 }

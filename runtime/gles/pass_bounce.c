@@ -115,13 +115,13 @@ static void set_gloss(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_
 {
     const hfs_gloss *gs = &fr->gloss;
     const hfs_gles_layout *L = &fr->L;
-    double c[4];
-    hfs_gloss_lobe_poly(gs, c);
+    const double par[4] = {gs->s, fmin(0.1, 0.5 * sqrt(2.0 / gs->s)), exp(log(1e-6) / gs->s),
+                           0.0}; /* slice_light.c hfs_lobe_slice_init */
     const double view[4] = {gs->view[0], gs->view[1], gs->view[2],
-                            gs->ks * 2.0 * PI / hfs_bounce_dirs(fr->q)};
+                            gs->ks * gs->norm * 2.0 * PI / hfs_bounce_dirs(fr->q)};
     const double eye[4] = {gs->eye[0] / L->dx, gs->eye[1] / L->dx, gs->eye[2] / L->dx, 0.0};
     const double hgt[4] = {L->base, L->hscale, L->zscale / L->dx, 0.0};
-    hfs_gles_set_f4(gl, prog, "u_globe", c);
+    hfs_gles_set_f4(gl, prog, "u_gpar", par);
     hfs_gles_set_f4(gl, prog, "u_gview", view);
     hfs_gles_set_f4(gl, prog, "u_geye", eye);
     hfs_gles_set_f4(gl, prog, "u_ghgt", hgt);
