@@ -10,7 +10,8 @@
 # usage: tools/bench_bounce.sh [BUILD_DIR] [SIZE] [TRUTH_SAMPLES] [BACKENDS] [MAX_BOUNCES] [ALBEDO]
 #        (defaults: build 128 256 cpu 3 uniform; BACKENDS e.g. cpu,gles: each against the
 #        same truth; ALBEDO "map": each scene lit with `hfgen albedo` of its heights,
-#        vegetation below and rock above, instead of albedo 1)
+#        vegetation below and rock above, instead of albedo 1; "glossy": albedo 0.7 +
+#        specular 0.3, gloss 16, seen from azimuth 200, elevation 35)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=tools/bench_lib.sh
@@ -34,6 +35,8 @@ for sc in "${scenes[@]}"; do
     if [ "$AL" = map ]; then
         "$B/tools/hfgen" albedo "$hf" -o "${hf%.pfm}-albedo.pfm"
         keys+=("albedo-map=${hf%.pfm}-albedo.pfm")
+    elif [ "$AL" = glossy ]; then
+        keys+=(albedo=0.7 specular=0.3 gloss=16 view-dir=200,35)
     fi
     "$B/tests/bench_bounce" "$name" "backends=$BE" "max-bounces=$MB" "height=$hf" "${keys[@]}" env-map=data/courtyard.exr \
         key=336,15,2,1500 "truth-samples=$S"
