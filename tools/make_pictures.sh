@@ -2,9 +2,9 @@
 # The pictures in README.md and docs/img/ (issue 16): the demo DEM
 # (data/demo.ini) in 3-D on the GLES path, without and with one indirect
 # bounce, at the defaults; and a panel (hfgen panel) under a local light,
-# Lambertian and glossy, seen from straight above (SPEC's view-dir: the
-# 3-D view does not yet evaluate the lobe per pixel).  Deterministic: the
-# same build gives the same files.
+# Lambertian and glossy, seen from straight above (SPEC's view-dir), and
+# glossy in perspective (each texel lit for its own view vector towards
+# the eye).  Deterministic: the same build gives the same files.
 # usage: tools/make_pictures.sh [BUILD_DIR]   (default build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,4 +22,7 @@ PANEL="--height $T/panel.pfm --local 110,90,40,6,60 --env-sh 0.6,0,0.3,0,0,0,0,0
 "$B/tools/hfshade" render $PANEL --albedo 0.85 -o docs/img/panel-diffuse.png --quiet
 # shellcheck disable=SC2086
 "$B/tools/hfshade" render $PANEL --albedo 0.45 --specular 0.4 --gloss 48 -o docs/img/panel-glossy.png --quiet
-echo "wrote docs/img/dem-3d-bounces{0,1}.png docs/img/panel-{diffuse,glossy}.png"
+# shellcheck disable=SC2086
+"$B/tools/hfshade" render $PANEL --albedo 0.45 --specular 0.4 --gloss 48 --view perspective \
+    --camera 235,32,330,40 --view-size 640x384 -o docs/img/panel-glossy-3d.png --quiet
+echo "wrote docs/img/dem-3d-bounces{0,1}.png docs/img/panel-{diffuse,glossy,glossy-3d}.png"
