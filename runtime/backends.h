@@ -18,6 +18,14 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
                    const hfs_quality *q, hfs_image *out,
                    hfs_progress_fn progress, void *user, hfs_error *err);
 
+/* Key-light visibility of n points (hfs_renderer_query_points; checked
+ * there: finite, over the field): vis[i * n_key + k].  The CPU reference
+ * reads shadow height maps (shm.h), the truth casts exact rays. */
+int hfs_cpu_query_points(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                         const double *xyz, int n, float *vis, hfs_error *err);
+int hfs_truth_query_points(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                           const double *xyz, int n, float *vis, hfs_error *err);
+
 /* Ground truth (truth_*.c): brute force per SPEC. */
 int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
                      const hfs_quality *q, hfs_image *out,

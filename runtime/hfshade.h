@@ -368,6 +368,22 @@ HFS_API int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *field,
                                      const hfs_quality *quality, const hfs_view *view,
                                      hfs_image *lit, hfs_image *out, hfs_error *err);
 
+/* ---- points above the field ------------------------------------------------- */
+
+/* Key-light visibility of n points (issue 19: markers, pins, an
+ * application's own objects): xyz[3 i .. 3 i + 2] in world units (x = i
+ * dx, y = j dx over the field's footprint, z = zscale h; a point under the
+ * surface sees nothing), vis[i * n_key + k] the visible fraction of key
+ * light k's disk in [0, 1], for every key light in lighting order (disabled
+ * ones too: visibility is geometry).  The CPU reference reads Lee & Kim's
+ * shadow height maps (runtime/shm.h: layers across the disk), the truth
+ * casts exact rays (truth_light_samples per light); the GLES backend
+ * answers HFS_E_UNSUPPORTED for now.  Errors: a non-finite point or one off
+ * the footprint (one line naming it). */
+HFS_API int hfs_renderer_query_points(hfs_renderer *r, const hfs_field *field,
+                                      const hfs_lighting *lighting, const hfs_quality *quality,
+                                      const double *xyz, int n, float *vis, hfs_error *err);
+
 /* ---- measurement ------------------------------------------------------------ */
 
 #define HFS_MAX_PASSES 16

@@ -39,6 +39,9 @@ typedef struct backend_ops {
     int (*render_view)(void *state, const hfs_field *f, const hfs_lighting *l,
                        const hfs_quality *q, const hfs_camera *cam, int w, int h,
                        hfs_image *lit, float *view, hfs_error *err);
+    /* Key-light visibility of points (NULL: not yet on this backend). */
+    int (*query_points)(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                        const double *xyz, int n, float *vis, hfs_error *err);
 } backend_ops;
 
 static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
@@ -94,8 +97,10 @@ static const backend_ops backends[] = {
     [HFS_BACKEND_GLES] = {"gles", gles_create, gles_destroy, gles_render, gles_set_timing,
                           gles_set_amortize, gles_set_timing_finish, gles_timings,
                           gles_invalidate, gles_frame_report, gles_render_view},
-    [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL},
-    [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL, NULL},
+    [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL,
+                         NULL, hfs_cpu_query_points},
+    [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL,
+                           NULL, NULL, hfs_truth_query_points},
 };
 #define N_BACKENDS ((int)(sizeof backends / sizeof backends[0]))
 
@@ -559,4 +564,28 @@ int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *f, const hfs_ligh
         rc = check_output(out, r->ops->name, err);
     hfs_image_free(&own);
     return rc;
+}
+
+int hfs_renderer_query_points(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
+                              const hfs_quality *q, const double *xyz, int n, float *vis,
+                              hfs_error *err)
+{
+    int rc = validate_frame(r, f, l, q, err);
+    if (rc)
+        return rc;
+    if (!r->ops->query_points)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "query: the %s backend does not answer point "
+                        "queries yet (use the cpu or truth backend)", r->ops->name);
+    if (n < 0 || (n > 0 && (!xyz || !vis)))
+        return hfs_fail(err, HFS_E_INVALID, "query: %d points without their arrays", n);
+    const double xmax = (f->width - 1) * f->dx, ymax = (f->height - 1) * f->dx;
+    for (int i = 0; i < n; ++i) {
+        const double *p = xyz + 3 * (size_t)i;
+        if (!(isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2])))
+            return hfs_fail(err, HFS_E_INVALID, "query: point %d is not finite", i + 1);
+        if (!(p[0] >= 0.0 && p[0] <= xmax && p[1] >= 0.0 && p[1] <= ymax))
+            return hfs_fail(err, HFS_E_INVALID, "query: point %d (%g, %g) is not over the field "
+                            "([0, %g] x [0, %g])", i + 1, p[0], p[1], xmax, ymax);
+    }
+    return n > 0 && l->n_key > 0 ? r->ops->query_points(f, l, q, xyz, n, vis, err) : HFS_OK;
 }

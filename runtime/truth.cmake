@@ -7,6 +7,7 @@ add_library(hfs_truth STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/truth_bounce.c
   ${CMAKE_CURRENT_SOURCE_DIR}/truth_gloss.c
   ${CMAKE_CURRENT_SOURCE_DIR}/truth_view.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/truth_points.c
   ${CMAKE_CURRENT_SOURCE_DIR}/unshadowed.c)
 target_compile_definitions(hfs_truth PRIVATE HFS_BUILDING_LIBRARY)
 target_include_directories(hfs_truth PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})

@@ -3,6 +3,7 @@
  *
  *   hfshade render  [SCENE.ini] [flags] -o OUT.png [--pfm OUT.pfm]
  *   hfshade compare [SCENE.ini] [flags] RESULT.pfm REFERENCE.pfm
+ *   hfshade query   [SCENE.ini] [flags] --points FILE   (cli_query.h)
  *   hfshade keys                      (lists every scene key / flag)
  *   hfshade info [--context NAME]     (makes a GL context and describes it)
  *
@@ -16,6 +17,7 @@
 #include "scene.h"
 #include "scene_load.h"
 #include "median.h"
+#include "cli_query.h"
 #include "cli_view.h"
 
 #include <float.h>
@@ -33,6 +35,7 @@ typedef struct cli {
     const char *scene_file;
     const char *out_png;
     const char *out_pfm;
+    const char *points;   /* query: --points FILE */
     const char *positional[2];
     int n_positional;
     double exposure;
@@ -49,6 +52,8 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: hfshade render  [SCENE.ini] [--KEY VALUE ...] -o OUT.png [--pfm OUT.pfm]\n"
             "       hfshade compare [SCENE.ini] [--KEY VALUE ...] RESULT.pfm REFERENCE.pfm\n"
+            "       hfshade query   [SCENE.ini] [--KEY VALUE ...] --points FILE  (x y z a line;\n"
+            "                       prints each point's visible fraction of every key light)\n"
             "       hfshade keys\n"
             "       hfshade info [--context surfaceless|osmesa|auto]\n"
             "options: --exposure F (PNG only, default 1), --colormap none|terrain (PNG only),\n"
@@ -199,6 +204,8 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
             c->out_png = v;
         } else if (!strcmp(name, "pfm")) {
             c->out_pfm = v;
+        } else if (!strcmp(name, "points")) {
+            c->points = v;
         } else if (!strcmp(name, "time")) {
             char *end;
             long n = strtol(v, &end, 10);
@@ -457,6 +464,26 @@ out:
     return rc;
 }
 
+static int cmd_query(const cli *c, hfs_error *err)
+{
+    if (!c->points)
+        return hfs_fail(err, HFS_E_INVALID, "query: give --points FILE (x y z a line)");
+    if (c->n_positional)
+        return hfs_fail(err, HFS_E_INVALID, "%s: unexpected argument", c->positional[0]);
+    scene_inputs in;
+    hfs_renderer *r = NULL;
+    int rc = load_inputs(c, &in, err);
+    if (rc)
+        return rc;
+    hfs_renderer_desc desc = {.backend = c->scene.backend,
+                              .context = c->scene.context[0] ? c->scene.context : NULL};
+    if (!(rc = hfs_renderer_create(&desc, &r, err)))
+        rc = cli_query_run(r, &in.field, &in.lighting, &in.quality, c->points, err);
+    hfs_renderer_destroy(r);
+    scene_inputs_free(&in);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -496,7 +523,7 @@ int main(int argc, char **argv)
         hfs_gl_context_destroy(ctx);
         return 0;
     }
-    if (strcmp(c.command, "render") && strcmp(c.command, "compare")) {
+    if (strcmp(c.command, "render") && strcmp(c.command, "compare") && strcmp(c.command, "query")) {
         fprintf(stderr, "hfshade: unknown command '%s' (see hfshade --help)\n", c.command);
         return EXIT_USAGE;
     }
@@ -506,7 +533,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "hfshade: %s\n", err.msg);
         return EXIT_USAGE;
     }
-    rc = !strcmp(c.command, "render") ? cmd_render(&c, &err) : cmd_compare(&c, &err);
+    rc = !strcmp(c.command, "render")    ? cmd_render(&c, &err)
+         : !strcmp(c.command, "compare") ? cmd_compare(&c, &err)
+                                         : cmd_query(&c, &err);
     if (rc) {
         fprintf(stderr, "hfshade: %s\n", err.msg);
         return 1;

@@ -1,5 +1,6 @@
 # The hfshade command-line tool.
-add_executable(hfshade ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_view.c)
+add_executable(hfshade ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_view.c
+               ${CMAKE_CURRENT_SOURCE_DIR}/cli_query.c)
 target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfshade_scene_load hfs_glctx)
 
 # Deterministic procedural height fields for tests and benchmarks: the
