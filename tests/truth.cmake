@@ -16,3 +16,7 @@ hfs_add_test(test_truth_bounce SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_bo
 # The 3-D view's camera and the truth's ray-cast view (test_truth_view.c).
 hfs_add_test(test_truth_view SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_view.c
              LIBS hfs_truth LABEL unit TIMEOUT 120)
+# The truth of an environment map (runtime/truth_envmap.c): constant, SH,
+# disk-as-key-light, flat, rotation, from_env, gloss, bad maps, convergence.
+hfs_add_test(test_truth_envmap SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_envmap.c
+             LIBS hfshade_lib m LABEL unit TIMEOUT 300)

@@ -33,6 +33,11 @@ typedef struct hfs_scene_inputs {
     hfs_field field;             /* view of hm with the scene's dx, zscale   */
     int has_env_map;             /* env_map_sh holds the map's projection    */
     double env_map_sh[3][HFS_SH_COEFFS];
+    float *env_map;              /* the map itself, env_map_width x
+                                    env_map_height x 3 (owned), or NULL:
+                                    lighting.env_map points here (the truth
+                                    integrates it; other backends env_sh)   */
+    int env_map_width, env_map_height;
     float *albedo_map;           /* the scene's albedo map, W*H*3 (owned), or NULL */
     hfs_lighting lighting;       /* from the scene (degrees -> radians)      */
     hfs_quality quality;         /* preset + quality keys of the scene       */
