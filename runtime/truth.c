@@ -6,6 +6,8 @@
  *     the bilinear surface) at each of A azimuth midpoints (a + 0.5) 2pi/A,
  *     then Gauss-Legendre in elevation of L(s) (N.s) cos e over
  *     [max(horizon, tangent-plane elevation), pi/2]; midpoint rule in azimuth;
+ *     an environment map (lighting->env_map) is integrated itself instead
+ *     (truth_envmap.h), and the key lights extracted from it are skipped;
  *   - key / local lights: stratified jittered samples of the cap's solid
  *     angle (a sqrt(n) x sqrt(n) grid over (cos theta, psi): sqrt(n) rings,
  *     each jittered in cos theta and randomly rotated in psi), each an exact

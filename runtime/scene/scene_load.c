@@ -36,7 +36,7 @@ int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error
                        &l);
     hfs_scene_quality(s, &q);
     l.albedo_map = in->albedo_map; /* checked by its loader */
-    l.env_map = in->env_map;       /* NULL without a map */
+    l.env_map = s->truth_env_sh ? NULL : in->env_map; /* NULL: no map */
     l.env_map_width = in->env_map_width;
     l.env_map_height = in->env_map_height;
     /* The field does not change here: hfs_scene_inputs_load checked it. */
