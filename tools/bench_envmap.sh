@@ -14,8 +14,9 @@
 # each against the truth of the map itself (cached in BUILD_DIR/bench-cache,
 # keyed by its arguments), by `hfshade compare` (SPEC metrics: absolute
 # errors over the largest unshadowed value of the scene's lighting without
-# the extra flags, so every row of a scene shares one normalizer).  Prints a
-# Markdown table; the truth's wall time is in its log beside it.
+# the extra flags, so every row of a scene shares one normalizer); the last
+# column is the mean abs error against the truth of the SH instead.  Prints
+# a Markdown table; each truth's wall time is in its log beside it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=tools/bench_lib.sh
@@ -34,8 +35,8 @@ HFS=$B/tools/hfshade
 C=$B/bench-cache
 mkdir -p "$C"
 bench_scenes "$B/tools/hfgen" "$C" "$N" >/dev/null
-echo "| map | scene (${N}x${N}) | renderer | mean abs | p99 abs | max abs |"
-echo "|---|---|---|---|---|---|"
+echo "| map | scene (${N}x${N}) | renderer | mean abs | p99 abs | max abs | mean abs vs the truth of the SH |"
+echo "|---|---|---|---|---|---|---|"
 for map in "${maps[@]}"; do
     [ -r "$map" ] || { echo "bench_envmap: $map: cannot read" >&2; exit 1; }
     tag=$(basename "${map%.*}")
@@ -46,14 +47,18 @@ for map in "${maps[@]}"; do
         base=(--height "$hf" $flags --env-map "$map")
         truth=$C/envtruth-$name$N-$tag.pfm
         bench_truth "$HFS" "$truth" "${base[@]}" --truth-azimuths 720
-        row() { # LABEL RESULT.pfm
-            local m
-            m=$("$HFS" compare "${base[@]}" "$2" "$truth")
-            read -r _ mean _ _ _ p99 _ mx _ <<<"$m"
-            echo "| $tag | $name | $1 | $mean | $p99 | $mx |"
-        }
         shtruth=$C/envshtruth-$name$N-$tag.pfm
         bench_truth "$HFS" "$shtruth" "${base[@]}" --truth-azimuths 720 --truth-env sh
+        row() { # LABEL RESULT.pfm
+            local m vs
+            m=$("$HFS" compare "${base[@]}" "$2" "$truth")
+            read -r _ mean _ _ _ p99 _ mx _ <<<"$m"
+            vs=-
+            if [ "$2" != "$shtruth" ]; then
+                read -r _ vs _ <<<"$("$HFS" compare "${base[@]}" "$2" "$shtruth")"
+            fi
+            echo "| $tag | $name | $1 | $mean | $p99 | $mx | $vs |"
+        }
         row "truth of the SH" "$shtruth"
         for be in cpu gles; do
             "$HFS" render "${base[@]}" "${extra[@]}" --backend $be --pfm "$C/envmap-$be.pfm" --quiet
