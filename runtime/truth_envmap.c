@@ -112,19 +112,23 @@ static int by_column(const void *a, const void *b)
 static float lum_of(const float *p) { return (p[0] + p[1] + p[2]) * (1.0f / 3.0f); }
 
 /* Selects the bright pixels (marked in `mask`) and groups them by column.
- * Returns HFS_OK or HFS_E_NOMEM; *any = 0 for an all-black map. */
+ * Returns HFS_OK or HFS_E_NOMEM; *any = 0 for an all-black map.  None is
+ * bright when the mean is not positive. */
 static int pick_bright(hfs_truth_envmap *m, double k, int max_bright, unsigned char *mask,
                        int *any)
 {
     const int w = m->w, h = m->h;
     double sum = 0.0;
+    *any = 0;
     for (int r = 0; r < h; ++r) {
         double row = 0.0;
-        for (int c = 0; c < w; ++c)
-            row += lum_of(m->map + 3 * ((size_t)r * w + c));
+        for (int c = 0; c < w; ++c) {
+            const float *p = m->map + 3 * ((size_t)r * w + c);
+            row += lum_of(p);
+            *any |= p[0] != 0.0f || p[1] != 0.0f || p[2] != 0.0f;
+        }
         sum += row * (2.0 * PI / w) * (sin(m->edge[r]) - sin(m->edge[r + 1]));
     }
-    *any = sum > 0.0;
     const double thr = k * sum / (4.0 * PI);
     int n = 0;
     for (size_t i = 0; i < (size_t)w * h; ++i)

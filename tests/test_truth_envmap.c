@@ -268,6 +268,21 @@ static void test_flat(void)
     /* Float tables (6e-8) and float output: measured 2.6e-8, bound 1e-6. */
     CHECK(worst < 1e-6);
     free(a);
+    /* A black map adds nothing; a negative one counts as it is (-1: the
+     * cosine integral of the upper hemisphere, pi, times rho/pi). */
+    for (int k = 0; k < W * H * 3; ++k)
+        map[k] = 0.0f;
+    float *b = render(&f, &l, &q);
+    for (int k = 0; k < W * H * 3; ++k)
+        map[k] = -1.0f;
+    float *c = render(&f, &l, &q);
+    REQUIRE(b && c, "render");
+    for (int k = 0; k < N * N * 3; ++k) {
+        CHECK(b[k] == 0.0f);
+        CHECK(fabs(c[k] + 0.8) < 1e-6);
+    }
+    free(b);
+    free(c);
 }
 
 static void test_rotation(void)
