@@ -3,7 +3,8 @@
  *
  * The environment map's SH projection is kept in the inputs so that a
  * relight never reads the map again: projecting a 2k x 1k map costs tens of
- * milliseconds, far more than a knob's frame budget.
+ * milliseconds, far more than a knob's frame budget.  The map is kept as
+ * well, for the ground truth (lighting.env_map).
  */
 #include "scene_load.h"
 

@@ -8,7 +8,9 @@
  * map and projecting it to SH — is done once by hfs_scene_inputs_load; a
  * caller that edits only lights, the environment rotation or the preset
  * (the kiosk's knobs) calls hfs_scene_inputs_relight, which recomputes the
- * lighting and quality from the scene and touches no file.
+ * lighting and quality from the scene and touches no file.  The map itself
+ * is kept too (env_map; 12 bytes a pixel, 24 MiB for 2048x1024): every
+ * backend receives it in lighting.env_map, the ground truth integrates it.
  *
  * Kept out of libhfshade (hfshade_lib): it needs the file formats
  * (hfshade_io) and the scene parser (hfshade_scene), which the renderer
