@@ -96,6 +96,8 @@ typedef struct hfs_key_light {
     double phi, elev, alpha; /* radians; alpha in (0, pi/2)                 */
     float radiance[3];       /* linear RGB, >= 0                            */
     int disabled;            /* non-zero: ignored (costs nothing)           */
+    int from_env;            /* extracted from lighting->env_map: the truth,
+                                which integrates the map itself, skips it   */
 } hfs_key_light;
 
 /* Local spherical light: centre in world units, radius, uniform radiance
@@ -113,6 +115,21 @@ typedef struct hfs_lighting {
     int has_env;
     double env_sh[3][HFS_SH_COEFFS];
     double env_rotate;       /* radians */
+    /* The environment map itself (SPEC "Lights": a map's radiance is the
+     * map, piecewise constant per pixel): NULL (default) or env_map_width x
+     * env_map_height x 3 finite linear RGB values (negative ones, which some
+     * HDR files hold, count as they are), equirectangular
+     * as SPEC "Directions" (column u -> phi = 2 pi u, row 0 = zenith), rows
+     * first like albedo_map; sizes >= 1.  Needs has_env, with env_sh its SH
+     * projection (hfs_sh_project_equirect; the scene layer does both).  Only
+     * the ground truth reads it: it integrates the map pixel by pixel
+     * (DESIGN.md "Ground truth of an environment map") instead of env_sh,
+     * rotated about +z by env_rotate exactly as env_sh (a pixel at azimuth
+     * phi moves to phi + env_rotate), and skips the key lights marked
+     * from_env; the CPU reference and GLES use env_sh and those lights.
+     * Read during hfs_renderer_render only; the caller owns it. */
+    const float *env_map;
+    int env_map_width, env_map_height;
 
     int n_key;
     hfs_key_light key[HFS_MAX_KEY_LIGHTS];

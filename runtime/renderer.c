@@ -11,6 +11,7 @@
 #include "truth_view.h"
 #include "view_params.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -344,6 +345,29 @@ static int check_gloss(const hfs_lighting *l, hfs_error *err)
     return rc;
 }
 
+/* The environment map (hfshade.h): only with has_env (env_sh is its
+ * projection, what every backend but the truth renders), sane sizes,
+ * finite values (hfs_envmap_load keeps negative ones).  A pass over the map. */
+static int check_env_map(const hfs_lighting *l, hfs_error *err)
+{
+    if (!l->env_map)
+        return HFS_OK;
+    const int w = l->env_map_width, h = l->env_map_height;
+    if (!l->has_env)
+        return hfs_fail(err, HFS_E_INVALID, "env-map: given without has_env (env_sh must hold "
+                        "the map's SH projection)");
+    if (w < 1 || h < 1 || w > 65536 || h > 65536 || (long long)w * h > (1ll << 28))
+        return hfs_fail(err, HFS_E_INVALID, "env-map: size %dx%d out of range (1..65536 per "
+                        "side, at most 2^28 pixels)", w, h);
+    const size_t n = (size_t)w * (size_t)h * 3;
+    for (size_t i = 0; i < n; ++i)
+        if (!(fabsf(l->env_map[i]) <= FLT_MAX))
+            return hfs_fail(err, HFS_E_INVALID, "env-map: pixel (%zu, %zu) channel %zu is %g "
+                            "(must be finite)", i / 3 % (size_t)w, i / 3 / (size_t)w,
+                            i % 3, (double)l->env_map[i]);
+    return HFS_OK;
+}
+
 int hfs_validate_lighting(const hfs_lighting *l, hfs_error *err)
 {
     if (!l)
@@ -356,6 +380,8 @@ int hfs_validate_lighting(const hfs_lighting *l, hfs_error *err)
             rc = CHECK_LIB(HFS_SK_ENV_SH, k, l->env_sh[c][k], "env-sh");
     if (!rc && l->has_env)
         rc = CHECK_LIB(HFS_SK_ENV_ROTATE, 0, l->env_rotate, "env-rotate");
+    if (!rc)
+        rc = check_env_map(l, err);
     if (!rc)
         rc = check_gloss(l, err);
     return rc ? rc : check_lights(l, err);

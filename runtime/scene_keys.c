@@ -143,6 +143,8 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                          {{"azimuth", HFS_UNIT_DEGREES, {-3600.0, 3600.0, 0}, NULL},
                           {"elevation", HFS_UNIT_DEGREES, {0.0, 90.0, 1}, NULL}},
                          "0,90", "direction towards the viewer of glossy grid dumps, degrees"},
+    [HFS_SK_TRUTH_ENV] = {"truth-env", "map|sh", HFS_FORM_WORD, 0, 0, 0, {{0}}, "map",
+                          "ground truth of an env-map: the map itself, or its SH projection"},
 };
 
 const hfs_scene_key *hfs_scene_key_get(hfs_scene_key_id id)

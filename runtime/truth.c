@@ -6,6 +6,8 @@
  *     the bilinear surface) at each of A azimuth midpoints (a + 0.5) 2pi/A,
  *     then Gauss-Legendre in elevation of L(s) (N.s) cos e over
  *     [max(horizon, tangent-plane elevation), pi/2]; midpoint rule in azimuth;
+ *     an environment map (lighting->env_map) is integrated itself instead
+ *     (truth_envmap.h), and the key lights extracted from it are skipped;
  *   - key / local lights: stratified jittered samples of the cap's solid
  *     angle (a sqrt(n) x sqrt(n) grid over (cos theta, psi): sqrt(n) rings,
  *     each jittered in cos theta and randomly rotated in psi), each an exact
@@ -24,6 +26,7 @@
 #include "parallel.h"
 #include "sh.h"
 #include "truth_bounce.h"
+#include "truth_envmap.h"
 #include "truth_gloss.h"
 #include "truth_raycast.h"
 #include "truth_sampling.h"
@@ -84,6 +87,7 @@ typedef struct truth_ctx {
     float *spec;               /* W x H x 3 glossy term when gloss.on */
     double env_rot[3][HFS_SH_N]; /* the rotated sky, for the glossy term */
     int env_samples;           /* lobe samples per receiver (truth-samples) */
+    hfs_truth_envmap *emap;    /* the environment map itself, or NULL */
 } truth_ctx;
 
 static int radiance_zero(const float le[3])
@@ -176,17 +180,8 @@ static void env_receiver(const truth_ctx *x, int i, int j, double z0,
     for (int a = 0; a < x->n_az; ++a) {
         const env_azimuth *az = &x->az[a];
         const double na = n[0] * az->c + n[1] * az->s;
-        const double e0 = atan2(-na, n[2]); /* N.s(phi, e) >= 0 for e >= e0 */
-        /* Horizon slopes whose atan is <= e0 cannot change lo: let the
-         * march skip them (identical lo, and flat ground costs nothing). */
-        double cut = -na / n[2], dc = 1e-12 * (1.0 + fabs(cut));
-        while (atan(cut - dc) > e0)
-            dc *= 16.0;
-        cut -= dc;
-        const double m = hfs_truth_horizon(&x->grid, i, j, z0, az->c, az->s, MARCH_STEP, cut,
-                                           &hint);
-        const double horizon = m > -INFINITY ? atan(m) : -PI / 2;
-        const double lo = horizon > e0 ? horizon : e0;
+        const double lo =
+            hfs_truth_env_lo(&x->grid, i, j, z0, n, az->c, az->s, MARCH_STEP, &hint);
         if (!(lo < PI / 2))
             continue;
         /* GL on [lo, pi/2]: nodes mid +- half*x_g in symmetric pairs, so one
@@ -231,9 +226,11 @@ static void truth_row(void *vctx, int j, int worker)
 
         if (x->n_az > 0)
             env_receiver(x, i, j, z0, n, lo);
-        if (x->n_az > 0 && r)
-            hfs_truth_gloss_env(&x->grid, &x->gloss, x->env_rot, x->env_samples, o, n, r,
-                                rng_seed(rid, GLOSS_SLOT), sp);
+        if (x->emap)
+            hfs_truth_envmap_receiver(x->emap, &x->grid, i, j, z0, n, x->rho, lo);
+        if ((x->n_az > 0 || x->emap) && r)
+            hfs_truth_gloss_env(&x->grid, &x->gloss, x->env_rot, x->emap, x->env_samples, o, n,
+                                r, rng_seed(rid, GLOSS_SLOT), sp);
 
         for (int k = 0; k < x->n_key; ++k) {
             const key_prep *kp = &x->key[k];
@@ -434,7 +431,8 @@ int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
 
     for (int k = 0; k < l->n_key; ++k) {
         const hfs_key_light *kl = &l->key[k];
-        if (kl->disabled || radiance_zero(kl->radiance) || !(kl->alpha > 0.0))
+        if (kl->disabled || radiance_zero(kl->radiance) || !(kl->alpha > 0.0) ||
+            (kl->from_env && l->env_map && l->has_env)) /* the map holds it */
             continue;
         key_prep *kp = &x->key[x->n_key++];
         hfs_dir(kl->phi, kl->elev, kp->d);
@@ -457,12 +455,17 @@ int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
             lp->le[ch] = ll->radiance[ch];
         lp->slot = LOCAL_SLOT0 + k;
     }
-    if (l->has_env && (rc = env_setup(x, l, q->truth_azimuths)) != HFS_OK) {
+    if (l->has_env && l->env_map)
+        rc = hfs_truth_envmap_make(l, q->truth_azimuths, HFS_ENVMAP_BRIGHT_K,
+                                   HFS_ENVMAP_BRIGHT_MAX, &x->emap);
+    else if (l->has_env)
+        rc = env_setup(x, l, q->truth_azimuths);
+    if (rc != HFS_OK) {
         rc = hfs_fail(err, rc, "truth: out of memory for %d azimuths", q->truth_azimuths);
         goto done;
     }
 
-    if (x->n_az == 0 && x->n_key == 0 && x->n_local == 0) {
+    if (x->n_az == 0 && !x->emap && x->n_key == 0 && x->n_local == 0) {
         for (size_t p = 0; p < (size_t)f->width * (size_t)f->height * 3; ++p)
             out->rgb[p] = 0.0f;
         if (progress)
@@ -487,6 +490,7 @@ done:
     hfs_truth_grid_free(&x->grid);
     free(x->spec);
     free(x->az);
+    hfs_truth_envmap_free(x->emap);
     free(x);
     return rc;
 }

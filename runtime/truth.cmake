@@ -6,6 +6,7 @@ add_library(hfs_truth STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/truth_raycast.c
   ${CMAKE_CURRENT_SOURCE_DIR}/truth_bounce.c
   ${CMAKE_CURRENT_SOURCE_DIR}/truth_gloss.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/truth_envmap.c
   ${CMAKE_CURRENT_SOURCE_DIR}/truth_view.c
   ${CMAKE_CURRENT_SOURCE_DIR}/truth_points.c
   ${CMAKE_CURRENT_SOURCE_DIR}/unshadowed.c)

@@ -11,7 +11,8 @@
 
 
 void hfs_truth_gloss_env(const hfs_truth_grid *g, const hfs_gloss *gl,
-                         const double env[3][HFS_SH_N], int n_samples, const double o[3],
+                         const double env[3][HFS_SH_N], const hfs_truth_envmap *map,
+                         int n_samples, const double o[3],
                          const double n[3], const double r[3], uint64_t rng, double out[3])
 {
     int k = (int)floor(sqrt((double)n_samples));
@@ -29,10 +30,13 @@ void hfs_truth_gloss_env(const hfs_truth_grid *g, const hfs_gloss *gl,
             const double ns = n[0] * s[0] + n[1] * s[1] + n[2] * s[2];
             if (!(ns > 0.0) || hfs_truth_ray_hits(g, o, s, INFINITY))
                 continue;
-            double y[HFS_SH_N];
-            hfs_sh_eval(s[0], s[1], s[2], y);
+            double y[HFS_SH_N], le[3];
+            if (map) /* the map itself: the pixel holding s */
+                hfs_truth_envmap_radiance(map, s, le);
+            else
+                hfs_sh_eval(s[0], s[1], s[2], y);
             for (int ch = 0; ch < 3; ++ch)
-                sum[ch] += ns * hfs_sh_dot(env[ch], y);
+                sum[ch] += ns * (map ? le[ch] : hfs_sh_dot(env[ch], y));
         }
     const double w = gl->ks * (gl->s + 2.0) / (gl->s + 1.0) / ((double)k * k);
     for (int ch = 0; ch < 3; ++ch)

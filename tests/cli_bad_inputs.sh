@@ -54,6 +54,7 @@ expect_fail specular-range "specular: 2 is out of range" $R --height "$tmp/flat.
 expect_fail gloss-range "gloss: 0 is out of range" $R --height "$tmp/flat.pfm" --env-sh $sky --gloss 0
 expect_fail view-below "elevation -10 is out of range" $R --height "$tmp/flat.pfm" --env-sh $sky --view-dir 0,-10
 expect_fail gloss-energy "albedo 0.8 + specular 0.5 is above 1" $R --height "$tmp/flat.pfm" --env-sh $sky --albedo 0.8 --specular 0.5
+expect_fail truth-env-word "truth-env" $R --height "$tmp/flat.pfm" --env-sh $sky --truth-env pixels
 expect_fail both-envs "both env-sh and env-map" $R --height "$tmp/flat.pfm" --env-sh $sky --env-map "$tmp/x.hdr"
 expect_fail missing-value "--dx" $R --height "$tmp/flat.pfm" --dx
 expect_fail bad-colormap "--colormap" $R --height "$tmp/flat.pfm" --env-sh $sky --colormap rainbow

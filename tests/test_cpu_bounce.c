@@ -145,7 +145,7 @@ static void test_truth(int glossy)
     const hfs_field f = {n, n, z, 1.0, 1.0};
     hfs_lighting l = bounce_uniform_sky();
     l.n_key = 1;
-    l.key[0] = (hfs_key_light){336 * PI / 180, 15 * PI / 180, 2 * PI / 180, {300, 300, 300}, 0};
+    l.key[0] = (hfs_key_light){336 * PI / 180, 15 * PI / 180, 2 * PI / 180, {300, 300, 300}, 0, 0};
     if (glossy)
         glossy_surface(&l, 0.9, 8.0);
     float *c[2], *t[2];

@@ -20,3 +20,12 @@ hfs_add_test(test_truth_view SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_view
 # truth_points.c; issue 19) against closed forms and exact rays (test_shm.c).
 hfs_add_test(test_shm SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_shm.c
              LIBS hfshade_lib m LABEL unit TIMEOUT 120)
+# The truth of an environment map (runtime/truth_envmap.c): constant, SH,
+# disk-as-key-light, flat, rotation, from_env, gloss, bad maps, convergence.
+hfs_add_test(test_truth_envmap SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_envmap.c
+             LIBS hfshade_lib m LABEL unit TIMEOUT 300)
+# The same end to end through hfshade and the scene layer (truth-env key).
+add_test(NAME truth_envmap_cli
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/truth_envmap_cli.sh
+                 $<TARGET_FILE:hfshade> $<TARGET_FILE:hfgen> ${PROJECT_SOURCE_DIR}/data)
+set_tests_properties(truth_envmap_cli PROPERTIES LABELS io TIMEOUT 120)

@@ -8,13 +8,19 @@ bench_seconds() {
 }
 
 # bench_truth HFS TRUTH.pfm SCENE-ARGS...: renders the ground truth (1024
-# samples per light) into TRUTH.pfm unless it is already there, its log
-# (with the wall time) beside it as TRUTH.log.
+# samples per light) into TRUTH.pfm unless it is already there for the same
+# arguments and truth version (TRUTH.key beside it; version 2: the truth
+# integrates an --env-map itself, not its SH), its log (with the wall time)
+# beside it as TRUTH.log.
 bench_truth() {
     local hfs=$1 truth=$2
     shift 2
-    [ -s "$truth" ] ||
-        "$hfs" render "$@" --backend truth --truth-samples 1024 --pfm "$truth" 2>"${truth%.pfm}.log"
+    local key="truth-v2 $*"
+    if [ -s "$truth" ] && [ "$(cat "${truth%.pfm}.key" 2>/dev/null)" = "$key" ]; then
+        return 0
+    fi
+    "$hfs" render "$@" --backend truth --truth-samples 1024 --pfm "$truth" 2>"${truth%.pfm}.log"
+    printf '%s\n' "$key" >"${truth%.pfm}.key"
 }
 
 # bench_scenes GEN CACHE N: the benchmark scenes at N x N (cones, the

@@ -97,8 +97,11 @@ static int make_lighting(const char *lights, const char *data_dir, bench_scene *
         return rc;
     double sh[3][HFS_SH_N];
     hfs_sh_project_equirect(env.rgb, env.width, env.height, sh);
-    hfs_envmap_free(&env);
     hfs_scene_lighting(&sc, (const double(*)[HFS_SH_COEFFS])sh, &s->lighting);
+    /* The map itself, as hfshade's scenes: the truth integrates it. */
+    s->lighting.env_map = s->env_map = env.rgb;
+    s->lighting.env_map_width = env.width;
+    s->lighting.env_map_height = env.height;
     return HFS_OK;
 }
 
@@ -123,5 +126,8 @@ int bench_scene_make(const char *name, int size, const char *lights, const char 
 void bench_scene_free(bench_scene *s)
 {
     free((void *)s->field.z);
+    free(s->env_map);
     s->field.z = NULL;
+    s->env_map = NULL;
+    s->lighting.env_map = NULL;
 }

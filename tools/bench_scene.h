@@ -7,8 +7,8 @@
  *            "dem": the Jacksboro DEM (data/jacksboro.png) cropped to
  *            size x size at (140, 100) — or the top-left corner when that
  *            does not fit — with dx 83, zscale 2, as tools/bench_reference.sh;
- *   lights   "sky+sun" the demo lighting (data/courtyard.exr projected to SH,
- *            key light 336,15,2,1500), "sky", "sun", or "local" (three local
+ *   lights   "sky+sun" the demo lighting (data/courtyard.exr, the map kept
+ *            for the truth and projected to SH, key light 336,15,2,1500), "sky", "sun", or "local" (three local
  *            lights of tools/bench_local.sh's cones set, placed in proportion
  *            to the field; procedural scenes only).
  * Lightings are applied through the scene keys (runtime/scene/scene.h), so
@@ -23,7 +23,8 @@ typedef struct bench_scene {
     char name[32], lights[32];
     int size;
     hfs_field field;      /* field.z owned */
-    hfs_lighting lighting;
+    hfs_lighting lighting; /* lighting.env_map = env_map */
+    float *env_map;        /* the environment map (owned), or NULL */
 } bench_scene;
 
 /* Builds scene `name` at size x size under `lights`; data_dir holds the DEM

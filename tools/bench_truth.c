@@ -38,7 +38,8 @@ unsigned long long bench_truth_hash(const hfs_field *f, const hfs_lighting *l,
                                     const hfs_quality *q)
 {
     fnv s = {0xcbf29ce484222325ull};
-    fnv_int(&s, 2); /* cache format version (2: bounces and gloss) */
+    fnv_int(&s, 3); /* cache format version (2: bounces and gloss; 3: the truth
+                     * integrates env_map itself, and from_env lights) */
     fnv_int(&s, f->width);
     fnv_int(&s, f->height);
     fnv_double(&s, f->dx);
@@ -51,6 +52,13 @@ unsigned long long bench_truth_hash(const hfs_field *f, const hfs_lighting *l,
             for (int k = 0; k < HFS_SH_COEFFS; ++k)
                 fnv_double(&s, l->env_sh[c][k]);
         fnv_double(&s, l->env_rotate);
+        fnv_int(&s, l->env_map != NULL);
+        if (l->env_map) { /* its content: a new map file is a new scene */
+            fnv_int(&s, l->env_map_width);
+            fnv_int(&s, l->env_map_height);
+            fnv_bytes(&s, l->env_map,
+                      (size_t)l->env_map_width * l->env_map_height * 3 * sizeof *l->env_map);
+        }
     }
     fnv_int(&s, l->n_key);
     for (int i = 0; i < l->n_key; ++i) {
@@ -60,6 +68,7 @@ unsigned long long bench_truth_hash(const hfs_field *f, const hfs_lighting *l,
         fnv_double(&s, k->alpha);
         fnv_bytes(&s, k->radiance, sizeof k->radiance);
         fnv_int(&s, k->disabled);
+        fnv_int(&s, k->from_env);
     }
     fnv_int(&s, l->n_local);
     for (int i = 0; i < l->n_local; ++i) {

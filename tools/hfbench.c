@@ -11,13 +11,17 @@
  *   hfbench -o OUT.csv [--plots DIR] [--scenes cones,fractal,dem] [--size 256]
  *           [--lights sky+sun|sky|sun|local] [--bounces B] [--grid "key=v1,v2 ..."]...
  *           [--frames 3] [--cache DIR] [--data DIR] [--truth-samples 1024]
- *           [--kiosk-ms 100] [--kiosk-err 0.01] [--kiosk-p99 0.1] [--panel-ms 500]
+ *           [--truth-env map|sh] [--kiosk-ms 100] [--kiosk-err 0.01] [--kiosk-p99 0.1] [--panel-ms 500]
  *           [--headless-err 0.03] [--quiet]
  *
  * Without --grid the default sweep (DEFAULT_GRIDS below) is measured.  A
  * frame is a full frame: the renderer's caches are invalidated before each,
  * so every pass runs; one warm-up frame (whose image is the one compared)
  * precedes the timed ones.  A progress bar goes to a terminal's stderr.
+ * --truth-env: the truth of the environment map's SH projection, the
+ * renderers' input (default: the front measures each setting's own error,
+ * and the presets come from it), or of the map itself (what a render loses
+ * against the sky, projection included; the scene key truth-env).
  */
 #include "bench_front.h"
 #include "bench_scene.h"
@@ -55,6 +59,7 @@ typedef struct options {
     char scenes[MAX_SCENES][32];
     int n_scenes, size, frames, truth_samples, quiet;
     int bounces;             /* --bounces: every scene's (and its truth's) */
+    int truth_env_sh;        /* --truth-env sh (default): the truth of the map's SH */
     const char *grids[32];
     int n_grids;
     bench_budget budget;
@@ -66,7 +71,7 @@ static void usage(void)
             "usage: hfbench -o OUT.csv [--plots DIR] [--scenes a,b,c] [--size N] [--lights "
             "sky+sun|sky|sun|local] [--bounces B]\n"
             "               [--grid \"key=v1,v2 ...\"]... [--frames N] [--cache DIR] [--data DIR]\n"
-            "               [--truth-samples N] [--kiosk-ms MS] [--kiosk-err E] [--kiosk-p99 E]\n"
+            "               [--truth-samples N] [--truth-env map|sh] [--kiosk-ms MS] [--kiosk-err E] [--kiosk-p99 E]\n"
             "               [--panel-ms MS] [--headless-err E] [--quiet]\n");
 }
 
@@ -106,6 +111,7 @@ static int parse_args(int argc, char **argv, options *o)
     o->size = 256;
     o->frames = 3;
     o->truth_samples = 1024;
+    o->truth_env_sh = 1; /* the front measures the renderers against their own input */
     o->budget = (bench_budget){.kiosk_ms = 100.0, .panel_ms = 500.0, .headless_err = 0.03,
                                .kiosk_err = 0.01, .kiosk_p99 = 0.10};
     const char *scenes = "cones,fractal,dem";
@@ -149,6 +155,12 @@ static int parse_args(int argc, char **argv, options *o)
             if (parse_number(a, v, r->lo, r->hi, &x))
                 return -1;
             o->bounces = (int)x;
+        } else if (!strcmp(a, "--truth-env")) {
+            if (strcmp(v, "map") && strcmp(v, "sh")) {
+                fprintf(stderr, "hfbench: --truth-env: '%s' is not map or sh\n", v);
+                return -1;
+            }
+            o->truth_env_sh = !strcmp(v, "sh");
         } else if (!strcmp(a, "--frames")) {
             if (parse_number(a, v, 1, 1000, &x))
                 return -1;
@@ -277,8 +289,11 @@ static int prepare_scene(run *R, int s, hfs_error *err)
     progress(o, 0, R->sweep.n * o->n_scenes, what);
     int cached = 0;
     double secs = 0.0;
-    if ((rc = bench_truth_get(o->cache, &sc->field, &sc->lighting, &tq, &R->truth[s], &cached,
-                              &secs, err)))
+    hfs_lighting tl = sc->lighting;
+    if (o->truth_env_sh)
+        tl.env_map = NULL; /* the truth of env_sh */
+    if ((rc = bench_truth_get(o->cache, &sc->field, &tl, &tq, &R->truth[s], &cached, &secs,
+                              err)))
         return rc;
     if (!o->quiet)
         fprintf(stderr, "%s%s %dx%d %s: truth %s (%.1f s)\n",

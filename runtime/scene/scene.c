@@ -188,6 +188,7 @@ static void store_word(hfs_scene *s, hfs_scene_key_id id, int w, const char *val
         break;
     case HFS_SK_LOCAL_SWATH: s->quality.local_full_swath = w; break;
     case HFS_SK_PRESET: snprintf(s->preset, sizeof s->preset, "%s", value); break;
+    case HFS_SK_TRUTH_ENV: s->truth_env_sh = w; break;
     default: break;
     }
 }

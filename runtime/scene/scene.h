@@ -48,6 +48,8 @@ typedef struct hfs_scene {
     double env_sh[HFS_SH_COEFFS];
     char env_map[HFS_PATH_MAX];
     double env_rotate_deg;
+    int truth_env_sh;                /* truth-env = sh: the truth integrates
+                                        the map's SH, not the map            */
 
     /* Lights, angles in degrees. */
     int n_key;

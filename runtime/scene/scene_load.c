@@ -3,7 +3,8 @@
  *
  * The environment map's SH projection is kept in the inputs so that a
  * relight never reads the map again: projecting a 2k x 1k map costs tens of
- * milliseconds, far more than a knob's frame budget.
+ * milliseconds, far more than a knob's frame budget.  The map is kept as
+ * well, for the ground truth (lighting.env_map).
  */
 #include "scene_load.h"
 
@@ -24,6 +25,7 @@ void hfs_scene_inputs_free(hfs_scene_inputs *in)
         return;
     hfs_heightmap_free(&in->hm);
     free(in->albedo_map);
+    free(in->env_map);
     memset(in, 0, sizeof *in);
 }
 
@@ -35,6 +37,9 @@ int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error
                        &l);
     hfs_scene_quality(s, &q);
     l.albedo_map = in->albedo_map; /* checked by its loader */
+    l.env_map = s->truth_env_sh ? NULL : in->env_map; /* NULL: no map */
+    l.env_map_width = in->env_map_width;
+    l.env_map_height = in->env_map_height;
     /* The field does not change here: hfs_scene_inputs_load checked it. */
     int rc = hfs_validate_lighting(&l, err);
     if (!rc)
@@ -72,7 +77,9 @@ int hfs_scene_inputs_load(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *e
             goto fail;
         double sh[3][HFS_SH_N];
         hfs_sh_project_equirect(env.rgb, env.width, env.height, sh);
-        hfs_envmap_free(&env);
+        in->env_map = env.rgb; /* kept: the truth integrates the map itself */
+        in->env_map_width = env.width;
+        in->env_map_height = env.height;
         memcpy(in->env_map_sh, sh, sizeof in->env_map_sh);
         in->has_env_map = 1;
     }

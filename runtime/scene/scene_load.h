@@ -8,7 +8,9 @@
  * map and projecting it to SH — is done once by hfs_scene_inputs_load; a
  * caller that edits only lights, the environment rotation or the preset
  * (the kiosk's knobs) calls hfs_scene_inputs_relight, which recomputes the
- * lighting and quality from the scene and touches no file.
+ * lighting and quality from the scene and touches no file.  The map itself
+ * is kept too (env_map; 12 bytes a pixel, 24 MiB for 2048x1024): every
+ * backend receives it in lighting.env_map, the ground truth integrates it.
  *
  * Kept out of libhfshade (hfshade_lib): it needs the file formats
  * (hfshade_io) and the scene parser (hfshade_scene), which the renderer
@@ -33,6 +35,11 @@ typedef struct hfs_scene_inputs {
     hfs_field field;             /* view of hm with the scene's dx, zscale   */
     int has_env_map;             /* env_map_sh holds the map's projection    */
     double env_map_sh[3][HFS_SH_COEFFS];
+    float *env_map;              /* the map itself, env_map_width x
+                                    env_map_height x 3 (owned), or NULL:
+                                    lighting.env_map points here (the truth
+                                    integrates it; other backends env_sh)   */
+    int env_map_width, env_map_height;
     float *albedo_map;           /* the scene's albedo map, W*H*3 (owned), or NULL */
     hfs_lighting lighting;       /* from the scene (degrees -> radians)      */
     hfs_quality quality;         /* preset + quality keys of the scene       */
