@@ -1,17 +1,16 @@
 /*
- * renderer.c — the public renderer object: validates every input and
- * dispatches to a backend (backends.h) through one table of backend
- * operations.  Backends may assume valid inputs.  Ranges come from the
- * table of scene keys (scene_keys.h); the heights are scanned once per
- * change when the caller names their changes (hfs_renderer_set_field_serial).
+ * renderer.c — the public renderer object: validates every input
+ * (validate.c) and dispatches to a backend (backends.h) through one table
+ * of backend operations.  Backends may assume valid inputs.  The heights
+ * are scanned once per change when the caller names their changes
+ * (hfs_renderer_set_field_serial); an environment map's pixels only for
+ * the backend that reads them (the truth).
  */
-#include "albedo.h"
 #include "backends.h"
-#include "scene_keys.h"
 #include "truth_view.h"
+#include "validate.h"
 #include "view_params.h"
 
-#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,6 +39,9 @@ typedef struct backend_ops {
     int (*render_view)(void *state, const hfs_field *f, const hfs_lighting *l,
                        const hfs_quality *q, const hfs_camera *cam, int w, int h,
                        hfs_image *lit, float *view, hfs_error *err);
+    /* Reads hfs_lighting.env_map (the truth): its pixels are checked for
+     * it alone, the others' frames skip the scan. */
+    int reads_env_map;
     /* Key-light visibility of points (NULL: not yet on this backend). */
     int (*query_points)(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                         const double *xyz, int n, float *vis, hfs_error *err);
@@ -99,9 +101,9 @@ static const backend_ops backends[] = {
                           gles_set_amortize, gles_set_timing_finish, gles_timings,
                           gles_invalidate, gles_frame_report, gles_render_view},
     [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL,
-                         NULL, hfs_cpu_query_points},
+                         NULL, 0, hfs_cpu_query_points},
     [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL,
-                           NULL, NULL, hfs_truth_query_points},
+                           NULL, NULL, 1, hfs_truth_query_points},
 };
 #define N_BACKENDS ((int)(sizeof backends / sizeof backends[0]))
 
@@ -238,218 +240,6 @@ int hfs_renderer_frame_report(const hfs_renderer *r, hfs_frame_report *out)
     return HFS_OK;
 }
 
-/* ---- validation -------------------------------------------------------------------
- * Every range is the table of scene keys' (scene_keys.h), in library units:
- * a value the scene parser accepts passes here, one just outside fails both.
- * Fields without a scene key (counts of lights, enumerations, the truth's
- * elevation order) are checked here alone. */
-
-#define CHECK_LIB(id, i, x, who) hfs_scene_key_check_lib((id), (i), (x), (who), err)
-
-static int check_radiance(hfs_scene_key_id id, int i, const float v[3], const char *who,
-                          hfs_error *err)
-{
-    int rc = HFS_OK;
-    for (int c = 0; c < 3 && !rc; ++c)
-        rc = CHECK_LIB(id, i, (double)v[c], who);
-    return rc;
-}
-
-/* Everything about the field but its heights: O(1). */
-static int check_field_params(const hfs_field *f, hfs_error *err)
-{
-    if (!f || !f->z)
-        return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
-    const hfs_key_range side = hfs_scene_key_lib_range(HFS_SK_SIZE, 0);
-    if (f->width < side.lo || f->height < side.lo)
-        return hfs_fail(err, HFS_E_INVALID, "height field: %dx%d is smaller than %.0fx%.0f",
-                        f->width, f->height, side.lo, side.lo);
-    if (f->width > side.hi || f->height > side.hi)
-        return hfs_fail(err, HFS_E_INVALID, "height field: %dx%d is larger than %.0fx%.0f",
-                        f->width, f->height, side.hi, side.hi);
-    int rc = CHECK_LIB(HFS_SK_DX, 0, f->dx, "dx");
-    return rc ? rc : CHECK_LIB(HFS_SK_ZSCALE, 0, f->zscale, "zscale");
-}
-
-/* The heights: a pass over the whole field. */
-static int check_heights(const hfs_field *f, hfs_error *err)
-{
-    const size_t n = (size_t)f->width * (size_t)f->height;
-    for (size_t i = 0; i < n; ++i)
-        if (!isfinite(f->z[i]))
-            return hfs_fail(err, HFS_E_INVALID, "height field: non-finite height at texel %zu "
-                            "(holes must be filled before rendering)", i);
-    return HFS_OK;
-}
-
-int hfs_validate_field(const hfs_field *f, hfs_error *err)
-{
-    const int rc = check_field_params(f, err);
-    return rc ? rc : check_heights(f, err);
-}
-
-static int check_lights(const hfs_lighting *l, hfs_error *err)
-{
-    char who[32];
-    int rc = HFS_OK;
-    if (l->n_key < 0 || l->n_key > HFS_MAX_KEY_LIGHTS)
-        return hfs_fail(err, HFS_E_INVALID, "key: %d lights (at most %d)", l->n_key, HFS_MAX_KEY_LIGHTS);
-    for (int i = 0; i < l->n_key && !rc; ++i) {
-        const hfs_key_light *k = &l->key[i];
-        snprintf(who, sizeof who, "key light %d", i + 1);
-        const double angle[3] = {k->phi, k->elev, k->alpha};
-        for (int j = 0; j < 3 && !rc; ++j)
-            rc = CHECK_LIB(HFS_SK_KEY, j, angle[j], who);
-        if (!rc)
-            rc = check_radiance(HFS_SK_KEY, 3, k->radiance, who, err);
-    }
-    if (!rc && (l->n_local < 0 || l->n_local > HFS_MAX_LOCAL_LIGHTS))
-        return hfs_fail(err, HFS_E_INVALID, "local: %d lights (at most %d)", l->n_local, HFS_MAX_LOCAL_LIGHTS);
-    for (int i = 0; i < l->n_local && !rc; ++i) {
-        const hfs_local_light *o = &l->local[i];
-        snprintf(who, sizeof who, "local light %d", i + 1);
-        for (int j = 0; j < 3 && !rc; ++j)
-            rc = CHECK_LIB(HFS_SK_LOCAL, j, o->pos[j], who);
-        if (!rc)
-            rc = CHECK_LIB(HFS_SK_LOCAL, 3, o->radius, who);
-        if (!rc)
-            rc = check_radiance(HFS_SK_LOCAL, 4, o->radiance, who, err);
-    }
-    return rc;
-}
-
-/* Glossy surfaces: specular and gloss in their keys' ranges, albedo +
- * specular <= 1 (the lobe and the Lambertian term share the energy), a
- * unit view direction above the horizon.  gloss and view_dir are checked
- * only when specular > 0: a lighting zeroed by its caller (no
- * hfs_lighting_defaults) stays the valid diffuse one it was. */
-static int check_gloss(const hfs_lighting *l, hfs_error *err)
-{
-    int rc = CHECK_LIB(HFS_SK_SPECULAR, 0, l->specular, "specular");
-    if (rc || l->specular == 0.0)
-        return rc;
-    if (!rc)
-        rc = CHECK_LIB(HFS_SK_GLOSS, 0, l->gloss, "gloss");
-    if (!rc && !(l->albedo + l->specular <= 1.0 + 1e-12))
-        return hfs_fail(err, HFS_E_INVALID, "albedo %g + specular %g is above 1 (energy)",
-                        l->albedo, l->specular);
-    const double *v = l->view_dir;
-    const double len2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-    if (!rc && !(fabs(len2 - 1.0) <= 1e-9 && v[2] > 0.0))
-        return hfs_fail(err, HFS_E_INVALID, "view-dir: (%g, %g, %g) is not a unit vector above "
-                        "the horizon (elevation in (0, 90] degrees)", v[0], v[1], v[2]);
-    const double *e = l->view_eye;
-    if (!rc && l->view_from_eye && !(isfinite(e[0]) && isfinite(e[1]) && isfinite(e[2])))
-        return hfs_fail(err, HFS_E_INVALID, "view eye: (%g, %g, %g) is not a finite point",
-                        e[0], e[1], e[2]);
-    return rc;
-}
-
-/* The environment map (hfshade.h): only with has_env (env_sh is its
- * projection, what every backend but the truth renders), sane sizes,
- * finite values (hfs_envmap_load keeps negative ones).  A pass over the map. */
-static int check_env_map(const hfs_lighting *l, hfs_error *err)
-{
-    if (!l->env_map)
-        return HFS_OK;
-    const int w = l->env_map_width, h = l->env_map_height;
-    if (!l->has_env)
-        return hfs_fail(err, HFS_E_INVALID, "env-map: given without has_env (env_sh must hold "
-                        "the map's SH projection)");
-    if (w < 1 || h < 1 || w > 65536 || h > 65536 || (long long)w * h > (1ll << 28))
-        return hfs_fail(err, HFS_E_INVALID, "env-map: size %dx%d out of range (1..65536 per "
-                        "side, at most 2^28 pixels)", w, h);
-    const size_t n = (size_t)w * (size_t)h * 3;
-    for (size_t i = 0; i < n; ++i)
-        if (!(fabsf(l->env_map[i]) <= FLT_MAX))
-            return hfs_fail(err, HFS_E_INVALID, "env-map: pixel (%zu, %zu) channel %zu is %g "
-                            "(must be finite)", i / 3 % (size_t)w, i / 3 / (size_t)w,
-                            i % 3, (double)l->env_map[i]);
-    return HFS_OK;
-}
-
-int hfs_validate_lighting(const hfs_lighting *l, hfs_error *err)
-{
-    if (!l)
-        return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
-    int rc = CHECK_LIB(HFS_SK_ALBEDO, 0, l->albedo, "albedo");
-    if (!rc)
-        rc = CHECK_LIB(HFS_SK_BOUNCES, 0, l->bounces, "bounces");
-    for (int c = 0; c < 3 && l->has_env && !rc; ++c)
-        for (int k = 0; k < HFS_SH_COEFFS && !rc; ++k)
-            rc = CHECK_LIB(HFS_SK_ENV_SH, k, l->env_sh[c][k], "env-sh");
-    if (!rc && l->has_env)
-        rc = CHECK_LIB(HFS_SK_ENV_ROTATE, 0, l->env_rotate, "env-rotate");
-    if (!rc)
-        rc = check_env_map(l, err);
-    if (!rc)
-        rc = check_gloss(l, err);
-    return rc ? rc : check_lights(l, err);
-}
-
-int hfs_validate_quality(const hfs_quality *q, hfs_error *err)
-{
-    if (!q)
-        return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
-    const struct { hfs_scene_key_id id; int value; } counts[] = {
-        {HFS_SK_K, q->k}, {HFS_SK_OFFSET, q->offset}, {HFS_SK_NPHI_ENV, q->nphi_env},
-        {HFS_SK_NPHI_KEY, q->nphi_key}, {HFS_SK_REFINE, q->refine},
-        {HFS_SK_NPHI_BOUNCE, q->nphi_bounce}, {HFS_SK_BOUNCE_REFINE, q->bounce_refine},
-        {HFS_SK_BOUNCE_SUBSAMPLE, q->bounce_subsample},
-        {HFS_SK_NPHI_LOCAL, q->nphi_local},
-        {HFS_SK_SUBSAMPLE, q->subsample}, {HFS_SK_THREADS, q->threads},
-        {HFS_SK_TRUTH_AZIMUTHS, q->truth_azimuths}, {HFS_SK_TRUTH_SAMPLES, q->truth_light_samples},
-    };
-    for (size_t i = 0; i < sizeof counts / sizeof counts[0]; ++i) {
-        const hfs_scene_key *k = hfs_scene_key_get(counts[i].id);
-        const int rc = CHECK_LIB(counts[i].id, 0, counts[i].value, k->name);
-        if (rc)
-            return rc;
-        if (!hfs_scene_key_int_allowed(k, counts[i].value)) {
-            char allowed[64];
-            hfs_scene_key_allowed_text(k, allowed, sizeof allowed);
-            return hfs_fail(err, HFS_E_INVALID, "%s: %d is not one of %s", k->name,
-                            counts[i].value, allowed);
-        }
-    }
-    if (q->precision != HFS_PRECISION_FP16 && q->precision != HFS_PRECISION_FP32)
-        return hfs_fail(err, HFS_E_INVALID, "precision: unknown value %d", (int)q->precision);
-    if (q->local_full_swath != 0 && q->local_full_swath != 1)
-        return hfs_fail(err, HFS_E_INVALID, "local-swath: unknown value %d", q->local_full_swath);
-    if (q->visibility != HFS_VIS_LEGENDRE && q->visibility != HFS_VIS_WEDGE_TABLE &&
-        q->visibility != HFS_VIS_SLICE)
-        return hfs_fail(err, HFS_E_INVALID, "visibility: unknown value %d", (int)q->visibility);
-    if (q->truth_elev_order < 1 || q->truth_elev_order > 64)
-        return hfs_fail(err, HFS_E_INVALID, "quality: truth_elev_order %d is out of range [1, 64]",
-                        q->truth_elev_order);
-    return HFS_OK;
-}
-
-#undef CHECK_LIB
-
-/* Inputs in the order a message should name them; the heights only when
- * `heights` (the renderer scans them once per serial). */
-static int validate(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q, int heights,
-                    hfs_error *err)
-{
-    if (!f || !l || !q || !f->z)
-        return hfs_fail(err, HFS_E_INVALID, "render: missing field, lighting or quality");
-    int rc = check_field_params(f, err);
-    if (!rc && heights)
-        rc = check_heights(f, err);
-    if (!rc)
-        rc = hfs_validate_lighting(l, err);
-    if (!rc)
-        rc = hfs_albedo_map_check(l->albedo_map, f->width, f->height, err);
-    return rc ? rc : hfs_validate_quality(q, err);
-}
-
-int hfs_validate_inputs(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
-                        hfs_error *err)
-{
-    return validate(f, l, q, 1, err);
-}
-
 /* Defence in depth: a backend bug must never leak NaN/Inf to an output. */
 static int check_output(const hfs_image *out, const char *who, hfs_error *err)
 {
@@ -469,7 +259,7 @@ static int validate_frame(hfs_renderer *r, const hfs_field *f, const hfs_lightin
                                  r->field_serial};
     const int known = now.serial != 0 && now.z == r->checked.z && now.width == r->checked.width &&
                       now.height == r->checked.height && now.serial == r->checked.serial;
-    const int rc = validate(f, l, q, !known, err);
+    const int rc = hfs_validate_frame_inputs(f, l, q, !known, r->ops->reads_env_map, err);
     if (!rc && !known && now.serial != 0)
         r->checked = now;
     return rc;

@@ -1,6 +1,7 @@
 # hfshade: the public renderer object over every backend.
 add_library(hfshade_lib STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/renderer.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/validate.c
   ${CMAKE_CURRENT_SOURCE_DIR}/view_params.c
   ${CMAKE_CURRENT_SOURCE_DIR}/metrics.c)
 target_compile_definitions(hfshade_lib PRIVATE HFS_BUILDING_LIBRARY)

@@ -9,7 +9,7 @@
  *     hfs_scene_key_check;
  *   - the kiosk's input configuration (board/input_config.c) takes the
  *     limits of each knob action from the number the action edits;
- *   - the renderer's validation (hfs_validate_inputs, runtime/renderer.c)
+ *   - the renderer's validation (hfs_validate_inputs, runtime/validate.c)
  *     checks the library field a number becomes with
  *     hfs_scene_key_check_lib, in the library's units: the scene speaks
  *     degrees, the library radians, and hfs_scene_key_lib_range is the one

@@ -37,15 +37,17 @@ int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error
                        &l);
     hfs_scene_quality(s, &q);
     l.albedo_map = in->albedo_map; /* checked by its loader */
-    l.env_map = s->truth_env_sh ? NULL : in->env_map; /* NULL: no map */
-    l.env_map_width = in->env_map_width;
-    l.env_map_height = in->env_map_height;
     /* The field does not change here: hfs_scene_inputs_load checked it. */
     int rc = hfs_validate_lighting(&l, err);
     if (!rc)
         rc = hfs_validate_quality(&q, err);
     if (rc)
         return rc;
+    /* The map after the check: its loader found every pixel finite, and a
+     * relight (a knob's frame) must not scan millions of them again. */
+    l.env_map = s->truth_env_sh ? NULL : in->env_map; /* NULL: no map */
+    l.env_map_width = in->env_map_width;
+    l.env_map_height = in->env_map_height;
     in->lighting = l;
     in->quality = q;
     return HFS_OK;
