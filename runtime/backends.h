@@ -52,6 +52,11 @@ int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
 int hfs_gles_render_view(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                          const hfs_quality *q, const hfs_camera *cam, int w, int h,
                          hfs_image *out, float *view, hfs_error *err);
+/* Key-light visibility of points (hfs_renderer_query_points): shadow
+ * height maps by doubling passes on the GPU (runtime/gles/shm_query.c). */
+int hfs_gles_query_points(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
+                          const hfs_quality *q, const double *xyz, int n, float *vis,
+                          hfs_error *err);
 void hfs_gles_set_timing(hfs_gles *g, int level);
 void hfs_gles_set_amortize(hfs_gles *g, int passes_per_frame); /* hfshade.h */
 void hfs_gles_set_timing_finish(hfs_gles *g, int finish);        /* hfshade.h */

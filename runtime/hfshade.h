@@ -393,10 +393,11 @@ HFS_API int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *field,
  * surface sees nothing), vis[i * n_key + k] the visible fraction of key
  * light k's disk in [0, 1], for every key light in lighting order (disabled
  * ones too: visibility is geometry).  The CPU reference reads Lee & Kim's
- * shadow height maps (runtime/shm.h: layers across the disk), the truth
- * casts exact rays (truth_light_samples per light); the GLES backend
- * answers HFS_E_UNSUPPORTED for now.  Errors: a non-finite point or one off
- * the footprint (one line naming it). */
+ * shadow height maps (runtime/shm.h: layers across the disk), the GLES
+ * backend builds the same maps on the GPU (doubling passes in fp16 hi +
+ * lo), the truth casts exact rays (truth_light_samples per light).
+ * Errors: a non-finite point or one off the footprint (one line naming
+ * it). */
 HFS_API int hfs_renderer_query_points(hfs_renderer *r, const hfs_field *field,
                                       const hfs_lighting *lighting, const hfs_quality *quality,
                                       const double *xyz, int n, float *vis, hfs_error *err);

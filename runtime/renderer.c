@@ -42,9 +42,10 @@ typedef struct backend_ops {
     /* Reads hfs_lighting.env_map (the truth): its pixels are checked for
      * it alone, the others' frames skip the scan. */
     int reads_env_map;
-    /* Key-light visibility of points (NULL: not yet on this backend). */
-    int (*query_points)(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
-                        const double *xyz, int n, float *vis, hfs_error *err);
+    /* Key-light visibility of points. */
+    int (*query_points)(void *state, const hfs_field *f, const hfs_lighting *l,
+                        const hfs_quality *q, const double *xyz, int n, float *vis,
+                        hfs_error *err);
 } backend_ops;
 
 static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
@@ -96,14 +97,33 @@ static int gles_render_view(void *state, const hfs_field *f, const hfs_lighting 
     return hfs_gles_render_view(state, f, l, q, cam, w, h, lit, view, err);
 }
 
+static int cpu_query(void *state, const hfs_field *f, const hfs_lighting *l,
+                     const hfs_quality *q, const double *xyz, int n, float *vis, hfs_error *err)
+{
+    (void)state;
+    return hfs_cpu_query_points(f, l, q, xyz, n, vis, err);
+}
+static int truth_query(void *state, const hfs_field *f, const hfs_lighting *l,
+                       const hfs_quality *q, const double *xyz, int n, float *vis,
+                       hfs_error *err)
+{
+    (void)state;
+    return hfs_truth_query_points(f, l, q, xyz, n, vis, err);
+}
+static int gles_query(void *state, const hfs_field *f, const hfs_lighting *l,
+                      const hfs_quality *q, const double *xyz, int n, float *vis, hfs_error *err)
+{
+    return hfs_gles_query_points(state, f, l, q, xyz, n, vis, err);
+}
+
 static const backend_ops backends[] = {
     [HFS_BACKEND_GLES] = {"gles", gles_create, gles_destroy, gles_render, gles_set_timing,
                           gles_set_amortize, gles_set_timing_finish, gles_timings,
-                          gles_invalidate, gles_frame_report, gles_render_view},
+                          gles_invalidate, gles_frame_report, gles_render_view, 0, gles_query},
     [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL,
-                         NULL, 0, hfs_cpu_query_points},
+                         NULL, 0, cpu_query},
     [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL,
-                           NULL, NULL, 1, hfs_truth_query_points},
+                           NULL, NULL, 1, truth_query},
 };
 #define N_BACKENDS ((int)(sizeof backends / sizeof backends[0]))
 
@@ -389,9 +409,6 @@ int hfs_renderer_query_points(hfs_renderer *r, const hfs_field *f, const hfs_lig
     int rc = validate_frame(r, f, l, q, err);
     if (rc)
         return rc;
-    if (!r->ops->query_points)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "query: the %s backend does not answer point "
-                        "queries yet (use the cpu or truth backend)", r->ops->name);
     if (n < 0 || (n > 0 && (!xyz || !vis)))
         return hfs_fail(err, HFS_E_INVALID, "query: %d points without their arrays", n);
     const double xmax = (f->width - 1) * f->dx, ymax = (f->height - 1) * f->dx;
@@ -403,5 +420,6 @@ int hfs_renderer_query_points(hfs_renderer *r, const hfs_field *f, const hfs_lig
             return hfs_fail(err, HFS_E_INVALID, "query: point %d (%g, %g) is not over the field "
                             "([0, %g] x [0, %g])", i + 1, p[0], p[1], xmax, ymax);
     }
-    return n > 0 && l->n_key > 0 ? r->ops->query_points(f, l, q, xyz, n, vis, err) : HFS_OK;
+    return n > 0 && l->n_key > 0 ? r->ops->query_points(r->state, f, l, q, xyz, n, vis, err)
+                                 : HFS_OK;
 }

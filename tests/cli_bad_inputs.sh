@@ -96,6 +96,24 @@ expect_fail view-size "--view-size: '0x10'" $V --view ortho --view-size 0x10
 expect_fail view-size-form "--view-size: '64'" $V --view ortho --view-size 64
 expect_fail exaggeration "--exaggeration: '0'" $V --view ortho --exaggeration 0
 expect_fail camera-no-view "--camera: needs --view" $V --camera 0,45,5,30
+# Point queries (issue 19): the points file and the points themselves.
+Q="query --backend cpu --height $tmp/flat.pfm --key 30,20,1,10"
+printf '1 2 3\n4 5\n' >"$tmp/pts2.txt"
+printf '# none\n\n' >"$tmp/pts0.txt"
+printf '1 2 3 4\n' >"$tmp/pts4.txt"
+printf '1 2 3\n100 2 3\n' >"$tmp/ptsoff.txt"
+expect_fail query-no-points "give --points" $Q
+expect_fail query-missing "nope.txt" $Q --points "$tmp/nope.txt"
+expect_fail query-short "pts2.txt:2: expected three finite numbers" $Q --points "$tmp/pts2.txt"
+expect_fail query-empty "pts0.txt: no points" $Q --points "$tmp/pts0.txt"
+expect_fail query-extra "pts4.txt:1: unexpected text" $Q --points "$tmp/pts4.txt"
+expect_fail query-off "point 2 (100, 2) is not over the field" $Q --points "$tmp/ptsoff.txt"
+expect_fail query-no-key "no key light" query --backend cpu --height "$tmp/flat.pfm" --points "$tmp/ptsoff.txt"
+printf '# a pin\n3 4 0.5\n' >"$tmp/pts1.txt"
+"$HFSHADE" $Q --points "$tmp/pts1.txt" >"$tmp/q.out" 2>"$tmp/q.err" &&
+    [ "$(tail -1 "$tmp/q.out")" = "3 4 0.5 1.000000" ] ||
+    { echo "FAIL [query-good]: $(cat "$tmp/q.out" "$tmp/q.err")"; fails=$((fails + 1)); }
+cases=$((cases + 1))
 "$HFGEN" cones --size 2100x3 -o "$tmp/wide.pfm" >/dev/null || { echo "FAIL: hfgen"; exit 1; }
 if "$HFSHADE" info >/dev/null 2>&1; then # a GLES refusal needs a context to refuse
     HFS_GL_STRICT_LIMITS=1 expect_fail check-refused "GL_MAX_TEXTURE_SIZE" render --check \

@@ -218,11 +218,24 @@ set_tests_properties(test_gloss PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT
 set(hfs_gles_tests ${hfs_gles_tests} test_gloss)
 
 
+
+# Shadow height maps and point queries (issue 19; runtime/shm.c, cpu_points.c,
+# truth_points.c, gles/shm_query.c): closed forms and exact rays (unit),
+# and the GLES maps against the CPU's at both precisions (test_shm.c).
+add_executable(test_shm ${CMAKE_CURRENT_LIST_DIR}/test_shm.c)
+target_link_libraries(test_shm PRIVATE hfs_test_gles_scenes)
+add_test(NAME test_shm COMMAND test_shm)
+set_tests_properties(test_shm PROPERTIES LABELS unit TIMEOUT 120)
+foreach(prec fp16 fp32)
+  add_test(NAME test_shm_gles_${prec} COMMAND test_shm gles ${prec})
+  set_tests_properties(test_shm_gles_${prec} PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 120)
+  set(hfs_gles_tests ${hfs_gles_tests} test_shm_gles_${prec})
+endforeach()
+
+
 if(HFS_SANITIZE)
   foreach(t IN LISTS hfs_gles_tests)
     set_property(TEST ${t} APPEND PROPERTY ENVIRONMENT
                  "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
   endforeach()
 endif()
-
-

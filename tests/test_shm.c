@@ -15,8 +15,11 @@
  *             the points on the wrong side of one half)
  *   flat      a flat field lights every point above it fully
  *   errors    a point off the field and a non-finite one: one-line errors
+ *   gles      (argv "gles" [fp16|fp32]; skipped with 77 without a context)
+ *             the GLES maps against the CPU's on the cones' points
  */
 #include "field_geom.h"
+#include "gl_test.h"
 #include "shm.h"
 #include "test_util.h"
 
@@ -30,6 +33,11 @@
  * bounds about 1.7x and 2x that.  The sun's azimuth mirrored gives a mean
  * of 0.50. */
 #define CONES_MEAN 0.06
+/* gles: measured against the cpu (Mesa llvmpipe) mean 2.7e-7, max 7.4e-6
+ * (fp16; fp32 2.6e-7, 6.2e-6): float passes, S in fp16 hi + lo; bounds
+ * ~35x and ~14x. */
+#define GLES_MEAN 1e-5
+#define GLES_MAX 1e-4
 #define CONES_WRONG 22
 
 static float *field_z(int w, int h, unsigned seed)
@@ -131,25 +139,27 @@ static void test_wall(void)
     free(z);
 }
 
-static void test_cones(void)
+enum { CONES_N = 400 };
+
+/* Two cones (64 x 64, dx 1), an oblique sun, and CONES_N points within a
+ * world unit of the sun centre's shadow height (its SHM, built here) where
+ * that is a unit above the ground: most in or near a penumbra.  The caller
+ * frees *z. */
+static hfs_field cones_scene(float **z, hfs_lighting *l, double *xyz)
 {
-    enum { n = 400 };
     const int w = 64, h = 64;
-    float *z = malloc(sizeof(float) * w * h);
+    *z = malloc(sizeof(float) * w * h);
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
             const double r1 = hypot(i - 20.0, j - 24.0), r2 = hypot(i - 44.0, j - 40.0);
-            z[j * w + i] = (float)fmax(0.0, fmax(14.0 - r1, 10.0 - 0.8 * r2));
+            (*z)[j * w + i] = (float)fmax(0.0, fmax(14.0 - r1, 10.0 - 0.8 * r2));
         }
-    const hfs_field f = {w, h, z, 1.0, 1.0};
-    const hfs_lighting l = sun(4.0, 18.0 * PI / 180, 1.0 * PI / 180);
-    /* Points within a world unit of the sun centre's shadow height (its
-     * SHM, built here): most in or near a penumbra. */
+    const hfs_field f = {w, h, *z, 1.0, 1.0};
+    *l = sun(4.0, 18.0 * PI / 180, 1.0 * PI / 180);
     float *sc = malloc(sizeof(float) * w * h), *tmp = malloc(sizeof(float) * w * h);
-    hfs_shm_build(&f, l.key[0].phi, l.key[0].elev, sc, tmp, 1);
-    double xyz[3 * n];
+    hfs_shm_build(&f, l->key[0].phi, l->key[0].elev, sc, tmp, 1);
     unsigned seed = 99;
-    for (int k = 0; k < n;) {
+    for (int k = 0; k < CONES_N;) {
         double u[3];
         for (int c = 0; c < 3; ++c) {
             seed = seed * 1103515245u + 12345u;
@@ -164,6 +174,16 @@ static void test_cones(void)
         ++k;
     }
     free(sc), free(tmp);
+    return f;
+}
+
+static void test_cones(void)
+{
+    enum { n = CONES_N };
+    float *z;
+    hfs_lighting l;
+    double xyz[3 * n];
+    const hfs_field f = cones_scene(&z, &l, xyz);
     float vc[n], vt[n];
     hfs_error err = {""};
     REQUIRE(query(HFS_BACKEND_CPU, &f, &l, xyz, n, vc, &err) == HFS_OK, "cpu: %s", err.msg);
@@ -203,8 +223,42 @@ static void test_flat_and_errors(void)
     free(z);
 }
 
-int main(void)
+/* GLES against the CPU on the cones' points: the same doubling passes in
+ * float with S stored as fp16 hi + lo (fp32 with argv "fp32"). */
+static void test_gles(hfs_precision precision)
 {
+    enum { n = CONES_N };
+    float *z;
+    hfs_lighting l;
+    double xyz[3 * n];
+    const hfs_field f = cones_scene(&z, &l, xyz);
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    q.precision = precision;
+    float vc[n], vg[n];
+    hfs_error err = {""};
+    hfs_renderer *g = gl_test_gles();
+    REQUIRE(query(HFS_BACKEND_CPU, &f, &l, xyz, n, vc, &err) == HFS_OK, "cpu: %s", err.msg);
+    REQUIRE(hfs_renderer_query_points(g, &f, &l, &q, xyz, n, vg, &err) == HFS_OK, "gles: %s",
+            err.msg);
+    double mean = 0.0, worst = 0.0;
+    for (int k = 0; k < n; ++k) {
+        mean += fabs(vg[k] - vc[k]) / n;
+        worst = fmax(worst, fabs(vg[k] - vc[k]));
+    }
+    printf("gles: %s, %d points against the cpu: mean %.2e, max %.2e\n",
+           precision == HFS_PRECISION_FP32 ? "fp32" : "fp16", n, mean, worst);
+    CHECK(mean <= GLES_MEAN && worst <= GLES_MAX);
+    hfs_renderer_destroy(g);
+    free(z);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 1 && !strcmp(argv[1], "gles")) {
+        test_gles(argc > 2 && !strcmp(argv[2], "fp32") ? HFS_PRECISION_FP32 : HFS_PRECISION_FP16);
+        return finish_checks("test_shm gles");
+    }
     test_axis();
     test_wall();
     test_cones();

@@ -16,10 +16,6 @@ hfs_add_test(test_truth_bounce SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_bo
 # The 3-D view's camera and the truth's ray-cast view (test_truth_view.c).
 hfs_add_test(test_truth_view SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_view.c
              LIBS hfs_truth LABEL unit TIMEOUT 120)
-# Shadow height maps and point queries (runtime/shm.c, cpu_points.c,
-# truth_points.c; issue 19) against closed forms and exact rays (test_shm.c).
-hfs_add_test(test_shm SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_shm.c
-             LIBS hfshade_lib m LABEL unit TIMEOUT 120)
 # The truth of an environment map (runtime/truth_envmap.c): constant, SH,
 # disk-as-key-light, flat, rotation, from_env, gloss, bad maps, convergence.
 hfs_add_test(test_truth_envmap SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_envmap.c

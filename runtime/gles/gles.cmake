@@ -153,6 +153,7 @@ add_library(hfs_gles STATIC
   ${CMAKE_CURRENT_LIST_DIR}/bounce_targets.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_readback.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_view.c
+  ${CMAKE_CURRENT_LIST_DIR}/shm_query.c
   ${CMAKE_CURRENT_LIST_DIR}/gles_frame.c
   ${CMAKE_CURRENT_LIST_DIR}/gles_backend.c
   ${HFS_GLES_GEN}/gles_sh_product.c)
