@@ -10,3 +10,8 @@ hfs_add_test(test_cpu_bounce SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_bounce
 # build/tests/bench_bounce NAME KEY=VALUE... (tools/bench_bounce.sh).
 add_executable(bench_bounce ${CMAKE_CURRENT_SOURCE_DIR}/bench_bounce.c)
 target_link_libraries(bench_bounce PRIVATE hfshade_scene_load hfshade_lib m)
+# build/tests/bench_shm NAME KEY=VALUE... (tools/bench_shm.sh): shadow height
+# maps against the truth's rays, and their query time (BENCHMARKS.md).
+add_executable(bench_shm ${CMAKE_CURRENT_SOURCE_DIR}/bench_shm.c)
+target_link_libraries(bench_shm PRIVATE hfshade_scene_load hfshade_lib m)
+target_include_directories(bench_shm PRIVATE ${PROJECT_SOURCE_DIR}/tools)

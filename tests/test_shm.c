@@ -18,9 +18,8 @@
  *   gles      (argv "gles" [fp16|fp32]; skipped with 77 without a context)
  *             the GLES maps against the CPU's on the cones' points
  */
-#include "field_geom.h"
 #include "gl_test.h"
-#include "shm.h"
+#include "shm_points.h"
 #include "test_util.h"
 
 #include <math.h>
@@ -141,10 +140,8 @@ static void test_wall(void)
 
 enum { CONES_N = 400 };
 
-/* Two cones (64 x 64, dx 1), an oblique sun, and CONES_N points within a
- * world unit of the sun centre's shadow height (its SHM, built here) where
- * that is a unit above the ground: most in or near a penumbra.  The caller
- * frees *z. */
+/* Two cones (64 x 64, dx 1), an oblique sun, and CONES_N points near its
+ * shadow edges (shm_points.h).  The caller frees *z. */
 static hfs_field cones_scene(float **z, hfs_lighting *l, double *xyz)
 {
     const int w = 64, h = 64;
@@ -156,24 +153,8 @@ static hfs_field cones_scene(float **z, hfs_lighting *l, double *xyz)
         }
     const hfs_field f = {w, h, *z, 1.0, 1.0};
     *l = sun(4.0, 18.0 * PI / 180, 1.0 * PI / 180);
-    float *sc = malloc(sizeof(float) * w * h), *tmp = malloc(sizeof(float) * w * h);
-    hfs_shm_build(&f, l->key[0].phi, l->key[0].elev, sc, tmp, 1);
-    unsigned seed = 99;
-    for (int k = 0; k < CONES_N;) {
-        double u[3];
-        for (int c = 0; c < 3; ++c) {
-            seed = seed * 1103515245u + 12345u;
-            u[c] = ((seed >> 8) & 0xffff) / 65535.0;
-        }
-        const double x = 63.0 * u[0], y = 63.0 * u[1], top = hfs_shm_sample(sc, w, h, x, y);
-        double ground;
-        hfs_field_bilinear(&f, x, y, &ground);
-        if (top - ground < 1.0)
-            continue; /* in the sun down to the ground: no edge to test */
-        xyz[3 * k] = x, xyz[3 * k + 1] = y, xyz[3 * k + 2] = top + 2.0 * u[2] - 1.0;
-        ++k;
-    }
-    free(sc), free(tmp);
+    if (shm_edge_points(&f, &l->key[0], CONES_N, 1.0, 99, xyz))
+        abort();
     return f;
 }
 

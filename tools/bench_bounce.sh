@@ -30,10 +30,7 @@ bench_scenes "$B/tools/hfgen" "$C" "$N"
 echo "| scene (${N}x${N}) | backend | bounces | mean abs | p99 abs | indirect alone | its bias | backend s | truth s |"
 echo "|---|---|---|---|---|---|---|---|---|"
 for sc in "${scenes[@]}"; do
-    IFS='|' read -r name hf extra <<<"$sc"
-    keys=()
-    read -r -a flags <<<"$extra"
-    for ((i = 0; i < ${#flags[@]}; i += 2)); do keys+=("${flags[i]#--}=${flags[i + 1]}"); done
+    bench_scene_keys "$sc"
     if [ "$AL" = map ]; then
         "$B/tools/hfgen" albedo "$hf" -o "${hf%.pfm}-albedo.pfm"
         keys+=("albedo-map=${hf%.pfm}-albedo.pfm")

@@ -39,3 +39,14 @@ bench_scenes() {
             "fractal|$c/fractal$n.pfm|--dx 1"
             "dem|$c/dem$n.pfm|--dx 83 --zscale 2")
 }
+
+# bench_scene_keys ENTRY: one entry of `scenes` as the bench programs take
+# it: sets `name`, `hf` (the height file) and the array `keys` (its scene
+# flags as KEY=VALUE words).
+bench_scene_keys() {
+    local extra flags i
+    IFS='|' read -r name hf extra <<<"$1"
+    keys=()
+    read -r -a flags <<<"$extra"
+    for ((i = 0; i < ${#flags[@]}; i += 2)); do keys+=("${flags[i]#--}=${flags[i + 1]}"); done
+}
