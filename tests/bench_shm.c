@@ -14,8 +14,18 @@
  * other side of one half than the truth, and the median wall time of 5
  * queries (the maps built each time: what a moved light costs; a GLES
  * renderer made once, its first query not timed).
+ *
+ *   bench_shm NAME terrain=1 KEY=VALUE...
+ * The SHM as a key-light path for the terrain itself (issue 19 item 3):
+ * the key light alone, albedo 1, the truth's image against the CPU
+ * reference's (its horizon path) and against rho/pi Le E_cap(N.d, alpha)
+ * times the SHM's visible fraction at every texel's point (lifted 1e-4 dx,
+ * as SPEC's receivers); SPEC's mean and p99 over the unshadowed maximum,
+ * and the wall time of each (the SHM's: the query of every texel).
  */
+#include "field_geom.h"
 #include "hfshade.h"
+#include "lights.h"
 #include "median.h"
 #include "scene.h"
 #include "scene_load.h"
@@ -62,12 +72,83 @@ static double query(hfs_backend b, const hfs_scene_inputs *in, const double *xyz
     return hfs_median(ms, runs);
 }
 
+static double render(hfs_backend b, const hfs_scene_inputs *in, hfs_image *out)
+{
+    hfs_renderer_desc d = {.backend = b};
+    hfs_renderer *r = NULL;
+    hfs_error err = {""};
+    const double t0 = now_ms();
+    if (hfs_renderer_create(&d, &r, &err) ||
+        hfs_renderer_render(r, &in->field, &in->lighting, &in->quality, out, NULL, NULL, &err))
+        die("render", &err);
+    hfs_renderer_destroy(r);
+    return now_ms() - t0;
+}
+
+/* The key light's Lo from the SHM's visible fraction at every texel. */
+static double shm_image(const hfs_scene_inputs *in, hfs_image *out)
+{
+    const hfs_field *f = &in->field;
+    const hfs_key_light *k = &in->lighting.key[0];
+    const size_t n = (size_t)f->width * (size_t)f->height;
+    double *xyz = malloc(3 * n * sizeof *xyz);
+    float *vis = malloc(n * sizeof *vis);
+    if (!xyz || !vis)
+        die("out of memory", NULL);
+    for (int j = 0; j < f->height; ++j)
+        for (int i = 0; i < f->width; ++i) {
+            double *p = xyz + 3 * ((size_t)j * (size_t)f->width + (size_t)i);
+            p[0] = i * f->dx, p[1] = j * f->dx, p[2] = hfs_field_z(f, i, j) + 1e-4 * f->dx;
+        }
+    const double ms = query(HFS_BACKEND_CPU, in, xyz, (int)n, vis, 1);
+    double d[3];
+    hfs_dir(k->phi, k->elev, d);
+    for (int j = 0; j < f->height; ++j)
+        for (int i = 0; i < f->width; ++i) {
+            double nn[3];
+            hfs_field_normal(f, i, j, nn);
+            const size_t p = (size_t)j * (size_t)f->width + (size_t)i;
+            const double e = hfs_cap_irradiance(nn[0] * d[0] + nn[1] * d[1] + nn[2] * d[2],
+                                                k->alpha) * vis[p];
+            for (int c = 0; c < 3; ++c)
+                out->rgb[3 * p + (size_t)c] =
+                    (float)(in->lighting.albedo / 3.14159265358979323846 * k->radiance[c] * e);
+        }
+    free(xyz), free(vis);
+    return ms;
+}
+
+/* terrain=1: the key light alone, truth vs horizon path vs SHM. */
+static void terrain(const char *name, hfs_scene_inputs *in)
+{
+    in->lighting.has_env = 0, in->lighting.n_local = 0;
+    hfs_image t = {0}, c = {0}, s = {0}, u = {0};
+    hfs_error err = {""};
+    const int w = in->field.width, h = in->field.height;
+    if (hfs_image_alloc(&t, w, h, &err) || hfs_image_alloc(&c, w, h, &err) ||
+        hfs_image_alloc(&s, w, h, &err) || hfs_image_alloc(&u, w, h, &err) ||
+        hfs_render_unshadowed(&in->field, &in->lighting, &in->quality, &u, &err))
+        die("images", &err);
+    const double tt = render(HFS_BACKEND_TRUTH, in, &t), tc = render(HFS_BACKEND_CPU, in, &c);
+    const double ts = shm_image(in, &s);
+    const double norm = hfs_image_max(&u);
+    hfs_metrics mc, ms;
+    if (hfs_compare_images(&c, &t, norm, &mc, &err) || hfs_compare_images(&s, &t, norm, &ms, &err))
+        die("compare", &err);
+    printf("| %s %dx%d | horizons (cpu) | %.3e | %.3e | %.0f |\n", name, w, h, mc.mean_abs,
+           mc.p99_abs, tc);
+    printf("| %s %dx%d | shm (cpu) | %.3e | %.3e | %.0f |\n", name, w, h, ms.mean_abs,
+           ms.p99_abs, ts);
+    printf("| %s %dx%d | truth | - | - | %.0f |\n", name, w, h, tt);
+    hfs_image_free(&t), hfs_image_free(&c), hfs_image_free(&s), hfs_image_free(&u);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2)
         die("usage: bench_shm NAME [backends=cpu,gles] [points=N] [spread=F] KEY=VALUE...", NULL);
     char backends[64] = "cpu";
-    int n = 2000;
+    int n = 2000, terrain_mode = 0;
     double spread = 0.02;
     hfs_scene s;
     hfs_scene_init(&s);
@@ -83,6 +164,8 @@ int main(int argc, char **argv)
             n = atoi(eq + 1);
         else if (!strncmp(argv[i], "spread", len))
             spread = atof(eq + 1);
+        else if (!strncmp(argv[i], "terrain", len))
+            terrain_mode = atoi(eq + 1);
         else {
             char key[64];
             snprintf(key, sizeof key, "%.*s", (int)len, argv[i]);
@@ -95,6 +178,11 @@ int main(int argc, char **argv)
         die("scene", &err);
     if (in.lighting.n_key != 1 || n < 1)
         die("give one key light and points >= 1", NULL);
+    if (terrain_mode) {
+        terrain(argv[1], &in);
+        hfs_scene_inputs_free(&in);
+        return 0;
+    }
     double lo, hi;
     hfs_field_range(&in.field, &lo, &hi);
     double *xyz = malloc(sizeof(double) * 3 * (size_t)n);
