@@ -124,7 +124,7 @@ static void test_truth(void)
     const hfs_field f = {n, n, z, 1.0, 1.0};
     hfs_lighting l = bounce_uniform_sky();
     l.n_key = 1;
-    l.key[0] = (hfs_key_light){336 * PI / 180, 15 * PI / 180, 2 * PI / 180, {300, 300, 300}, 0};
+    l.key[0] = (hfs_key_light){336 * PI / 180, 15 * PI / 180, 2 * PI / 180, {300, 300, 300}, 0, 0};
     float *c[2], *t[2];
     for (int b = 0; b < 2; ++b) {
         c[b] = malloc(sizeof(float) * n * n * 3), t[b] = malloc(sizeof(float) * n * n * 3);

@@ -9,3 +9,11 @@ target_include_directories(hfs_terrain_gen PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(hfs_terrain_gen PUBLIC m)
 add_executable(hfgen ${CMAKE_CURRENT_SOURCE_DIR}/hfgen.c)
 target_link_libraries(hfgen PRIVATE hfshade_io hfs_terrain_gen m)
+
+# Synthetic skies (gradient + disks + noise) for hfgen sky, the
+# decomposition tests and the tracking benchmark.
+add_library(hfs_sky_gen STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sky_gen.c)
+target_include_directories(hfs_sky_gen PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(hfs_sky_gen PUBLIC m)
+add_executable(bench_env ${CMAKE_CURRENT_SOURCE_DIR}/bench_env.c)
+target_link_libraries(bench_env PRIVATE hfs_envdec hfs_sky_gen hfshade_io m)

@@ -1,0 +1,8 @@
+# Environment map decomposition (runtime/env_*.c, issue 17): synthetic
+# skies with known disks (tools/sky_gen.c), energy conservation, seams,
+# poles, degenerate and bad maps, determinism, tracking.
+hfs_add_test(test_env_decompose
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_env_decompose.c
+  LIBS hfs_envdec hfs_sky_gen m
+  LABEL unit
+  TIMEOUT 120)
