@@ -49,7 +49,7 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                        {{"coefficient", HFS_UNIT_RADIANCE, ANY, NULL}}, NULL,
                        "grey environment as 16 SH coefficients"},
     [HFS_SK_ENV_MAP] = {"env-map", "FILE", HFS_FORM_PATH, 0, 0, 0, {{0}}, NULL,
-                        "environment as an equirect .hdr or .exr map"},
+                        "environment as an equirect .hdr, .exr or .pfm map"},
     [HFS_SK_ENV_ROTATE] = {"env-rotate", "DEG", HFS_FORM_REALS, 1, 0, 0,
                            {{"angle", HFS_UNIT_DEGREES, {-36000.0, 36000.0, 0}, NULL}}, "0",
                            "rotate the environment about +z"},
