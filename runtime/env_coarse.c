@@ -8,7 +8,12 @@
  * exact solid angle and the energy-weighted direction sum of its texels;
  * level l + 1 merges 2 x 2 cells of level l.  The full-resolution pass is
  * row-parallel (one coarse row per task, fixed partition) and also checks
- * every value (finite, >= 0) and sums the map's energy per channel.
+ * every value and sums the map's energy per channel.  NaN and Inf are
+ * errors; so is a value below -ENV_NEG_TOLERANCE x the map's mean
+ * luminance radiance (any negative value in a map of mean <= 0).  Smaller
+ * negatives are kept, as hfs_envmap_load keeps them: lossy EXR compression
+ * leaves them (data/courtyard.exr has 1818 values down to -0.0032 where its
+ * mean is 0.56), and they stay in the residual like any texel.
  *
  * Detection: at every level with >= 8 rows (blocks up to 45 degrees),
  * every block of 2 rows by nb columns, nb = cw / (ch cos e) (square on
@@ -50,7 +55,8 @@ static int level_alloc(env_level *l, int cw, int ch)
 typedef struct build_job {
     env_ctx *c;
     double (*row_total)[3];       /* per coarse row, per channel          */
-    long long *bad;               /* per coarse row: first bad value index */
+    long long *bad;               /* per coarse row: first NaN/Inf value  */
+    long long *neg;               /* per coarse row: its most negative    */
 } build_job;
 
 /* Coarse row y: its texel rows, checked, summed into level 0. */
@@ -62,8 +68,9 @@ static void build_row(void *ctx, int y, int worker)
     const int j0 = (int)(((long long)y * c->h + l0->ch - 1) / l0->ch);
     const int j1 = (int)(((long long)(y + 1) * c->h + l0->ch - 1) / l0->ch);
     double tot[3] = {0, 0, 0};
+    float low = 0.0f;
     (void)worker;
-    job->bad[y] = -1;
+    job->bad[y] = job->neg[y] = -1;
     for (int j = j0; j < j1; ++j) {
         const float *row = c->rgb + (size_t)j * (size_t)c->w * 3;
         const double dom = c->row_domega[j], se = c->row_sin[j], ce = c->row_cos[j];
@@ -72,11 +79,13 @@ static void build_row(void *ctx, int y, int worker)
         double *a = l0->a + (size_t)y * l0->cw;
         for (int i = 0; i < c->w; ++i) {
             const float *p = row + 3 * i;
-            if (!(p[0] >= 0.0f && p[1] >= 0.0f && p[2] >= 0.0f && isfinite(p[0]) &&
-                  isfinite(p[1]) && isfinite(p[2]))) {
-                if (job->bad[y] < 0)
-                    job->bad[y] = (long long)j * c->w + i;
-                continue;
+            for (int q = 0; q < 3; ++q) {
+                if (!isfinite(p[q]) && job->bad[y] < 0)
+                    job->bad[y] = ((long long)j * c->w + i) * 3 + q;
+                if (p[q] < low) {
+                    low = p[q];
+                    job->neg[y] = ((long long)j * c->w + i) * 3 + q;
+                }
             }
             const int x = c->col_cell[i];
             const double y_dom = env_lum(p[0], p[1], p[2]) * dom;
@@ -121,15 +130,34 @@ static int tables_alloc(env_ctx *c)
     return 0;
 }
 
-static int bad_value(const env_ctx *c, long long idx, hfs_error *err)
+/* Value idx (texel idx / 3, channel idx % 3) is not finite or negative. */
+static int bad_value(const env_ctx *c, long long idx, double mean, hfs_error *err)
 {
-    const float *p = c->rgb + (size_t)idx * 3;
-    int ch = 0;
-    while (ch < 2 && p[ch] >= 0.0f && isfinite(p[ch]))
-        ++ch;
-    const char *what = isnan(p[ch]) ? "NaN" : isinf(p[ch]) ? "infinite" : "negative";
-    return hfs_fail(err, HFS_E_INVALID, "texel (%lld, %lld) %c is %s", idx % c->w, idx / c->w,
-                    "RGB"[ch], what);
+    const float v = c->rgb[idx];
+    const long long t = idx / 3;
+    const char ch = "RGB"[idx % 3];
+    if (!isfinite(v))
+        return hfs_fail(err, HFS_E_INVALID, "texel (%lld, %lld) %c is %s", t % c->w, t / c->w,
+                        ch, isnan(v) ? "NaN" : "infinite");
+    return hfs_fail(err, HFS_E_INVALID, "texel (%lld, %lld) %c is %g, below -%g x the map's "
+                    "mean radiance %g", t % c->w, t / c->w, ch, v, ENV_NEG_TOLERANCE, mean);
+}
+
+/* The first NaN/Inf, else a texel more negative than the tolerance. */
+static int check_values(env_ctx *c, const build_job *job, int ch, hfs_error *err)
+{
+    for (int y = 0; y < ch; ++y)
+        if (job->bad[y] >= 0)
+            return bad_value(c, job->bad[y], 0.0, err);
+    for (int y = 0; y < ch; ++y)
+        for (int k = 0; k < 3; ++k)
+            c->total[k] += job->row_total[y][k];
+    c->total_lum = env_lum(c->total[0], c->total[1], c->total[2]);
+    const double mean = c->total_lum / (4.0 * M_PI);
+    for (int y = 0; y < ch; ++y)
+        if (job->neg[y] >= 0 && c->rgb[job->neg[y]] < -ENV_NEG_TOLERANCE * fmax(mean, 0.0))
+            return bad_value(c, job->neg[y], mean, err);
+    return HFS_OK;
 }
 
 int envc_init(env_ctx *c, float *rgb, int w, int h, const hfs_env_decompose_opts *o,
@@ -149,27 +177,21 @@ int envc_init(env_ctx *c, float *rgb, int w, int h, const hfs_env_decompose_opts
     for (int j = 0; j < h; ++j)
         c->row_cell[j] = (int)((long long)j * ch / h);
     build_job job = {c, malloc((size_t)ch * sizeof *job.row_total),
-                     malloc((size_t)ch * sizeof *job.bad)};
+                     malloc(2 * (size_t)ch * sizeof *job.bad), NULL};
     if (!job.row_total || !job.bad) {
         free(job.row_total);
         free(job.bad);
         goto nomem;
     }
+    job.neg = job.bad + ch;
     hfs_parallel_rows(ch, o->threads, build_row, &job, NULL, NULL);
-    int rc = HFS_OK;
-    for (int y = 0; y < ch && !rc; ++y)
-        if (job.bad[y] >= 0)
-            rc = bad_value(c, job.bad[y], err);
-    for (int y = 0; y < ch; ++y)
-        for (int k = 0; k < 3; ++k)
-            c->total[k] += job.row_total[y][k];
+    const int rc = check_values(c, &job, ch, err);
     free(job.row_total);
     free(job.bad);
     if (rc) {
         envc_free(c);
         return rc;
     }
-    c->total_lum = env_lum(c->total[0], c->total[1], c->total[2]);
     while (c->n_levels < ENV_MAX_LEVELS) {
         const env_level *p = &c->lv[c->n_levels - 1];
         if (p->ch < 8)

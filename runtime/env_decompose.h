@@ -6,7 +6,9 @@
  *
  * Input: a linear RGB map in SPEC's equirect convention (column u -> phi =
  * 2 pi u, row v -> e = pi/2 - pi v, row 0 = zenith, texel centres at
- * (i + 0.5) / W), every value finite and >= 0.  Output: up to max_lights
+ * (i + 0.5) / W), every value finite and none below -1% of the map's mean
+ * luminance radiance (the small negatives lossy EXR compression leaves are
+ * kept in the residual; larger ones are an error).  Output: up to max_lights
  * lights (direction, angular radius, RGB radiance) and the residual map,
  * written over the input, whose order-4 SH projection is the soft
  * environment.
@@ -76,8 +78,10 @@ void hfs_env_decompose_defaults(hfs_env_decompose_opts *o);
 
 /* Decomposes the w x h map rgb (modified in place into the residual).
  * o may be NULL (defaults).  Errors (0 or a negative hfs_status, one line
- * naming `name`): a size below 1x1, a NaN, infinite or negative texel
- * ("sky.pfm: texel (3, 7) G is NaN"), an option out of range.  On error
+ * naming `name`): a size below 1x1, a NaN or infinite texel ("sky.pfm:
+ * texel (3, 7) G is NaN"), a texel below -1% of the mean ("sky.pfm: texel
+ * (3, 7) G is -0.5, below -0.01 x the map's mean radiance 1"), an option
+ * out of range.  On error
  * *out is zeroed and rgb untouched. */
 int hfs_env_decompose(float *rgb, int w, int h, const hfs_env_decompose_opts *o,
                       const char *name, hfs_env_decomp *out, hfs_error *err);

@@ -12,6 +12,8 @@
 #define ENV_COARSE_W 256
 #define ENV_COARSE_H 128
 #define ENV_MAX_LEVELS 8
+/* Negative texels allowed down to this fraction of the mean radiance. */
+#define ENV_NEG_TOLERANCE 0.01
 
 /* Rec. 709 luminance: the energy budget (shares) is measured in it. */
 static inline double env_lum(double r, double g, double b)

@@ -209,7 +209,7 @@ static void test_bad_texels(void)
     static const struct { float v; const char *msg; } cases[] = {
         {NAN, "bad.pfm: texel (5, 3) G is NaN"},
         {INFINITY, "bad.pfm: texel (5, 3) G is infinite"},
-        {-1e-3f, "bad.pfm: texel (5, 3) G is negative"},
+        {-0.5f, "bad.pfm: texel (5, 3) G is -0.5, below -0.01 x the map's mean radiance 0.98"},
     };
     const int w = 16, h = 8;
     float m[16 * 8 * 3], copy[16 * 8 * 3];
@@ -217,17 +217,27 @@ static void test_bad_texels(void)
         for (int k = 0; k < w * h * 3; ++k)
             m[k] = 1.0f;
         m[(3 * w + 5) * 3 + 1] = cases[c].v;
-        m[(6 * w + 9) * 3 + 2] = -5.0f; /* a later bad texel: the first is named */
+        if (c < 2) /* a later negative texel: NaN and Inf are named first */
+            m[(1 * w + 9) * 3 + 2] = -5.0f;
         memcpy(copy, m, sizeof m);
         hfs_env_decomp d;
         hfs_error err = {{0}};
         const int rc = hfs_env_decompose(m, w, h, NULL, "bad.pfm", &d, &err);
         CHECK(rc == HFS_E_INVALID, "bad texel %zu: rc %d", c, rc);
-        CHECK(!strcmp(err.msg, cases[c].msg), "bad texel %zu: '%s', expected '%s'", c, err.msg,
+        CHECK(!strncmp(err.msg, cases[c].msg, strlen(cases[c].msg)), "bad texel %zu: '%s', expected '%s'", c, err.msg,
               cases[c].msg);
         CHECK(!memcmp(m, copy, sizeof m), "bad texel %zu: map changed", c);
         CHECK(d.n_lights == 0, "bad texel %zu: lights", c);
     }
+    /* Lossy EXR's small negatives (-0.6% of the mean in data/courtyard.exr)
+     * are kept: -0.009 on a map of mean 1 decomposes, and stays. */
+    for (int k = 0; k < w * h * 3; ++k)
+        m[k] = 1.0f;
+    m[(3 * w + 5) * 3 + 1] = -0.009f;
+    hfs_env_decomp dn;
+    hfs_error en = {{0}};
+    CHECK(!hfs_env_decompose(m, w, h, NULL, "neg.pfm", &dn, &en) && dn.n_lights == 0 &&
+              m[(3 * w + 5) * 3 + 1] == -0.009f, "small negative: '%s'", en.msg);
     hfs_env_decompose_opts o;
     hfs_env_decompose_defaults(&o);
     o.max_lights = 9;

@@ -1,6 +1,8 @@
 # The hfshade command-line tool.
-add_executable(hfshade ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_view.c)
-target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfshade_scene_load hfs_glctx)
+add_executable(hfshade ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_view.c
+               ${CMAKE_CURRENT_SOURCE_DIR}/cli_envmap.c)
+target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfshade_scene_load hfs_glctx
+                      hfs_envdec)
 
 # Deterministic procedural height fields for tests and benchmarks: the
 # generators (one definition for hfgen, tests and benchmarks) and the tool.
