@@ -53,6 +53,10 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
     [HFS_SK_ENV_ROTATE] = {"env-rotate", "DEG", HFS_FORM_REALS, 1, 0, 0,
                            {{"angle", HFS_UNIT_DEGREES, {-36000.0, 36000.0, 0}, NULL}}, "0",
                            "rotate the environment about +z"},
+    /* auto|off|N: parsed by the scene (scene.c set_env_lights); N in
+     * 1..HFS_MAX_KEY_LIGHTS. */
+    [HFS_SK_ENV_LIGHTS] = {"env-lights", "auto|off|N", HFS_FORM_WORD, 0, 0, 0, {{0}}, "off",
+                           "env-map's bright regions as key lights (auto: up to 4) + residual"},
     [HFS_SK_KEY] = {"key", "PHI,ELEV,ALPHA,LE", HFS_FORM_REALS, 4, 1, 0,
                     {{"azimuth", HFS_UNIT_DEGREES, {-3600.0, 3600.0, 0}, NULL},
                      {"elevation", HFS_UNIT_DEGREES, {-90.0, 90.0, 0}, NULL},

@@ -6,3 +6,10 @@ hfs_add_test(test_env_decompose
   LIBS hfs_envdec hfs_sky_gen m
   LABEL unit
   TIMEOUT 120)
+# The scene key env-lights through the scene loader, and the environment
+# knob turning the lights with the residual.
+hfs_add_test(test_env_lights
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_env_lights.c
+  LIBS hfshade_scene_load hfs_sky_gen m
+  LABEL unit
+  TIMEOUT 60)

@@ -10,7 +10,7 @@ add_library(hfs_terrain_gen STATIC ${CMAKE_CURRENT_SOURCE_DIR}/terrain_gen.c)
 target_include_directories(hfs_terrain_gen PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(hfs_terrain_gen PUBLIC m)
 add_executable(hfgen ${CMAKE_CURRENT_SOURCE_DIR}/hfgen.c)
-target_link_libraries(hfgen PRIVATE hfshade_io hfs_terrain_gen m)
+target_link_libraries(hfgen PRIVATE hfshade_io hfs_terrain_gen hfs_sky_gen m)
 
 # Synthetic skies (gradient + disks + noise) for hfgen sky, the
 # decomposition tests and the tracking benchmark.

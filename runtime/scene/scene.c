@@ -248,6 +248,23 @@ static int store_reals(hfs_scene *s, hfs_scene_source src, hfs_scene_key_id id, 
     return rc;
 }
 
+/* env-lights = auto | off | N (1..HFS_MAX_KEY_LIGHTS). */
+static int set_env_lights(hfs_scene *s, const char *v, const char *where, hfs_error *err)
+{
+    if (!strcmp(v, "auto") || !strcmp(v, "off")) {
+        s->env_lights = v[0] == 'a' ? -1 : 0;
+        return HFS_OK;
+    }
+    char *end;
+    errno = 0;
+    const long n = strtol(v, &end, 10);
+    if (end == v || *end || errno || n < 1 || n > HFS_MAX_KEY_LIGHTS)
+        return hfs_fail(err, HFS_E_INVALID, "%s: env-lights: '%s' is not auto, off or a count "
+                        "in [1, %d]", where, v, HFS_MAX_KEY_LIGHTS);
+    s->env_lights = (int)n;
+    return HFS_OK;
+}
+
 static int set_word(hfs_scene *s, hfs_scene_key_id id, const char *value, const char *where,
                     hfs_error *err)
 {
@@ -293,6 +310,8 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
     case HFS_FORM_INT:
         return parse_int(id, value, int_field(s, id), where, err);
     case HFS_FORM_WORD:
+        if (id == HFS_SK_ENV_LIGHTS)
+            return set_env_lights(s, value, where, err);
         return set_word(s, id, value, where, err);
     }
     return hfs_fail(err, HFS_E_INVALID, "%s: unhandled key '%s'", where, key);
@@ -304,6 +323,8 @@ int hfs_scene_validate(const hfs_scene *s, hfs_error *err)
         return hfs_fail(err, HFS_E_INVALID, "scene: no height field (give --height FILE)");
     if (s->has_env_sh && s->env_map[0])
         return hfs_fail(err, HFS_E_INVALID, "scene: both env-sh and env-map given; choose one");
+    if (s->env_lights && !s->env_map[0])
+        return hfs_fail(err, HFS_E_INVALID, "scene: env-lights needs an env-map");
     return HFS_OK;
 }
 

@@ -48,6 +48,8 @@ typedef struct hfs_scene {
     double env_sh[HFS_SH_COEFFS];
     char env_map[HFS_PATH_MAX];
     double env_rotate_deg;
+    int env_lights;                  /* env-lights: 0 off (default), -1
+                                        auto, N: at most N lights          */
 
     /* Lights, angles in degrees. */
     int n_key;
@@ -91,8 +93,9 @@ int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err);
 /* True if key (without "--") is a scene key. */
 int hfs_scene_is_key(const char *key);
 
-/* Checks cross-key consistency (height given, env-sh xor env-map, raw size
- * given for raw files) after all sources are applied. */
+/* Checks cross-key consistency (height given, env-sh xor env-map, env-lights
+ * only with env-map, raw size given for raw files) after all sources are
+ * applied. */
 int hfs_scene_validate(const hfs_scene *s, hfs_error *err);
 
 /* Fills the library's lighting and quality from the scene (radians, RGB).
