@@ -13,3 +13,8 @@ hfs_add_test(test_env_lights
   LIBS hfshade_scene_load hfs_sky_gen m
   LABEL unit
   TIMEOUT 60)
+# hfshade envmap decompose and hfgen sky end to end.
+add_test(NAME envmap_cli
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/envmap_cli.sh
+                 $<TARGET_FILE:hfshade> $<TARGET_FILE:hfgen>)
+set_tests_properties(envmap_cli PROPERTIES LABELS io TIMEOUT 120)
