@@ -184,7 +184,10 @@ int envc_init(env_ctx *c, float *rgb, int w, int h, const hfs_env_decompose_opts
         goto nomem;
     }
     job.neg = job.bad + ch;
-    hfs_parallel_rows(ch, o->threads, build_row, &job, NULL, NULL);
+    /* Small maps (a probe frame) on one thread: starting workers costs more
+     * than the pass, and their start-up jitter would be the frame's. */
+    const int threads = o->threads == 0 && (long long)w * h < (1LL << 18) ? 1 : o->threads;
+    hfs_parallel_rows(ch, threads, build_row, &job, NULL, NULL);
     const int rc = check_values(c, &job, ch, err);
     free(job.row_total);
     free(job.bad);
