@@ -48,6 +48,17 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
     [HFS_SK_ENV_SH] = {"env-sh", "c0,...,c15", HFS_FORM_REALS, HFS_SH_COEFFS, 0, 0,
                        {{"coefficient", HFS_UNIT_RADIANCE, ANY, NULL}}, NULL,
                        "grey environment as 16 SH coefficients"},
+    /* The environment in colour, one channel a key (16 numbers fit a scene
+     * file's line; 48 would not): all three or none, instead of env-sh. */
+    [HFS_SK_ENV_SH_R] = {"env-sh-r", "c0,...,c15", HFS_FORM_REALS, HFS_SH_COEFFS, 0, 0,
+                         {{"coefficient", HFS_UNIT_RADIANCE, ANY, NULL}}, NULL,
+                         "environment in colour: the red channel's 16 SH coefficients"},
+    [HFS_SK_ENV_SH_G] = {"env-sh-g", "c0,...,c15", HFS_FORM_REALS, HFS_SH_COEFFS, 0, 0,
+                         {{"coefficient", HFS_UNIT_RADIANCE, ANY, NULL}}, NULL,
+                         "environment in colour: the green channel's"},
+    [HFS_SK_ENV_SH_B] = {"env-sh-b", "c0,...,c15", HFS_FORM_REALS, HFS_SH_COEFFS, 0, 0,
+                         {{"coefficient", HFS_UNIT_RADIANCE, ANY, NULL}}, NULL,
+                         "environment in colour: the blue channel's"},
     [HFS_SK_ENV_MAP] = {"env-map", "FILE", HFS_FORM_PATH, 0, 0, 0, {{0}}, NULL,
                         "environment as an equirect .hdr, .exr or .pfm map"},
     [HFS_SK_ENV_ROTATE] = {"env-rotate", "DEG", HFS_FORM_REALS, 1, 0, 0,

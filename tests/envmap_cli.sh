@@ -21,8 +21,10 @@ cat "$tmp/out"
 # One light near (200, 25): within 0.5 degree (a texel is 1.4 degrees).
 awk -F'[ =,]+' '/^key/ { n++; if ($2 < 199.5 || $2 > 200.5 || $3 < 24.5 || $3 > 25.5) bad = 1 }
      END { exit !(n == 1 && !bad) }' "$tmp/out" || fail "light not at 200,25"
-grep -q '^env-sh = ' "$tmp/out" || fail "no env-sh line"
-# The printed lines are a scene.
+[ "$(grep -c '^env-sh-[rgb] = ' "$tmp/out")" -eq 3 ] || fail "no env-sh-r/g/b lines"
+awk 'length > 190 { exit 1 }' "$tmp/out" || fail "a line longer than a scene file's 190"
+grep -q '^key = [^,]*,[^,]*,[^,]*,[^,]*,[^,]*,[^,]*$' "$tmp/out" || fail "key not in colour"
+# The printed lines are a scene (colour keys and env-sh-r/g/b parse).
 { echo "height = flat.pfm"; cat "$tmp/out"; } >"$tmp/scene.ini"
 "$HFSHADE" render "$tmp/scene.ini" --backend cpu --nphi-env 4 --check 2>"$tmp/err" ||
     fail "printed lines do not render: $(cat "$tmp/err")"

@@ -73,6 +73,22 @@ int main(void)
     rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "dx", "6", "--dx", NULL, &err);
     CHECK(rc != 0 && strstr(err.msg, "twice"), "duplicate flag accepted: %s", err.msg);
 
+    /* A key light in colour (PHI,ELEV,ALPHA,R,G,B): le the largest channel,
+     * the radiances exact; a negative channel refused like LE. */
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "key", "12,20,3,2,8,4", "--key", NULL, &err);
+    hfs_scene_lighting(&s, NULL, &l);
+    CHECK(rc == 0 && s.n_key == 3 && s.key[2].le == 8 && l.key[2].radiance[0] == 2.0f &&
+              l.key[2].radiance[1] == 8.0f && l.key[2].radiance[2] == 4.0f &&
+              l.key[1].radiance[0] == 1.0f && l.key[1].radiance[2] == 1.0f,
+          "colour key: %s", err.msg);
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "key", "12,20,3,2,-8,4", "--key", NULL, &err);
+    CHECK(rc != 0 && strstr(err.msg, "radiance -8 is out of range"), "colour key: %s", err.msg);
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "key", "12,20,3,0,0,0", "--key", NULL, &err);
+    hfs_scene_lighting(&s, NULL, &l);
+    CHECK(rc == 0 && l.key[3].radiance[1] == 0.0f, "black colour key: %s", err.msg);
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "key", "12,20,3,2,8", "--key", NULL, &err);
+    CHECK(rc != 0, "5 numbers accepted");
+
     /* Errors carry file:line. */
     struct { const char *text; const char *expect; } bad[] = {
         {"height = a.png\nbogus = 1\n", "s.ini:2: unknown key 'bogus'"},

@@ -2,13 +2,11 @@
  * cli_envmap.c — `hfshade envmap decompose` (cli_envmap.h).
  *
  * Prints, in the scene syntax (docs/SCENE.md, degrees), one `key = PHI,
- * ELEV,ALPHA,LE` line per light and the residual's `env-sh = c0,...,c15`.
- * The scene keys are grey: LE and the env-sh coefficients are the Rec. 709
- * luminance of the RGB values, which follow each line as comments.  A
- * scene that keeps the colour uses `env-map = MAP` with `env-lights = auto`
- * instead: the renderer then gets the RGB lights and RGB residual.
- * Coefficients are printed with 4 significant digits so the line fits a
- * scene file's 190 characters.
+ * ELEV,ALPHA,R,G,B` line per light (`PHI,ELEV,ALPHA,LE` where R = G = B)
+ * and the residual as `env-sh-r`, `env-sh-g`, `env-sh-b` (one line a
+ * channel), so the lines are a scene's lighting in colour.  Coefficients
+ * are printed with 4 significant digits so each line fits a scene file's
+ * 190 characters (at most 186 here).
  *
  * The picture (--picture OUT.png): the map, reduced by an integer factor
  * to at most 2048 texels wide, Reinhard-tonemapped with an exposure that
@@ -93,21 +91,18 @@ static void print_scene(const char *map, int w, int h, const hfs_env_decomp *d)
            d->n_lights, d->n_lights == 1 ? "" : "s", 100.0 * share);
     for (int k = 0; k < d->n_lights; ++k) {
         const hfs_env_light *l = &d->light[k];
-        const double rgb[3] = {l->radiance[0], l->radiance[1], l->radiance[2]};
-        printf("key = %.4f,%.4f,%.4f,%.7g\n", l->phi * DEG, l->elev * DEG, l->alpha * DEG,
-               lum3(rgb));
-        printf("#   RGB radiance %.7g,%.7g,%.7g; share %.4f\n", rgb[0], rgb[1], rgb[2], l->share);
-    }
-    printf("env-sh = ");
-    for (int k = 0; k < HFS_SH_COEFFS; ++k) {
-        const double c[3] = {d->residual_sh[0][k], d->residual_sh[1][k], d->residual_sh[2][k]};
-        printf("%.4g%s", lum3(c), k + 1 < HFS_SH_COEFFS ? "," : "\n");
+        const float *rgb = l->radiance;
+        printf("# light %d: %.2f%% of the energy\n", k + 1, 100.0 * l->share);
+        printf("key = %.4f,%.4f,%.4f,", l->phi * DEG, l->elev * DEG, l->alpha * DEG);
+        if (rgb[0] == rgb[1] && rgb[1] == rgb[2])
+            printf("%.9g\n", rgb[0]);
+        else
+            printf("%.9g,%.9g,%.9g\n", rgb[0], rgb[1], rgb[2]);
     }
     for (int ch = 0; ch < 3; ++ch) {
-        printf("#   %c:", "RGB"[ch]);
+        printf("env-sh-%c = ", "rgb"[ch]);
         for (int k = 0; k < HFS_SH_COEFFS; ++k)
-            printf(" %.4g", d->residual_sh[ch][k]);
-        printf("\n");
+            printf("%.4g%s", d->residual_sh[ch][k], k + 1 < HFS_SH_COEFFS ? "," : "\n");
     }
 }
 
