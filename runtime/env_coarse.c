@@ -15,7 +15,9 @@
  * leaves them (data/courtyard.exr has 1818 values down to -0.0032 where its
  * mean is 0.56), and they stay in the residual like any texel.
  *
- * Detection: at every level with >= 8 rows (blocks up to 45 degrees),
+ * Detection: at every level with >= 8 rows and >= 16 columns (blocks up
+ * to 45 degrees; a map below 16 x 8 texels gets no light: a texel of over
+ * 22.5 degrees cannot place one),
  * every block of 2 rows by nb columns, nb = cw / (ch cos e) (square on
  * the sphere; e the latitude of the block's edge nearer the equator; whole
  * rings where nb > cw / 3 and for the two rows at each pole, so a light at
@@ -327,7 +329,7 @@ int envc_detect(const env_ctx *c, env_seed *out)
     if (!pe)
         return 0;
     for (int li = 0; li < c->n_levels; ++li)
-        if (c->lv[li].ch >= 8)
+        if (c->lv[li].ch >= 8 && c->lv[li].cw >= 16)
             detect_level(c, li, pe, pe + n, &best);
     free(pe);
     if (best.level < 0)

@@ -22,6 +22,7 @@
  * its disk's solid angle 2 pi (1 - cos alpha).  So lights + residual =
  * the map's integral, up to float rounding (tests/test_env_decompose.c).
  *
+ * Maps under 16 x 8 texels give no light (a texel over 22.5 degrees).
  * Detection runs on a coarse copy of the map (at most 256 x 128 cells of
  * summed energy and exact solid angle, then 2 x 2 merges): a centre-surround
  * response E_in - contrast * A_in * mean_ring over blocks whose horizontal

@@ -204,8 +204,9 @@ int envr_extract(env_ctx *c, const env_seed *seed, double min_share, hfs_env_lig
     if (!(c->total_lum > 0.0) || !refine(c, seed, d, &alpha))
         return 0;
     const double px = envr_texel_size(c, asin(fmax(-1.0, fmin(1.0, d[2]))));
-    const double r_rm = alpha + 0.75 * px;
-    const double r_ring = r_rm + fmax(2.0 * px, 0.5 * r_rm);
+    /* Within pi: a cap or ring past the antipode would wrap its cosines. */
+    const double r_rm = fmin(alpha + 0.75 * px, 0.75 * M_PI);
+    const double r_ring = fmin(r_rm + fmax(2.0 * px, 0.5 * r_rm), M_PI);
     cap_sums s;
     cap_scan(c, d, r_rm, r_ring, &s);
     if (!(s.a > 0.0))

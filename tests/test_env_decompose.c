@@ -5,7 +5,9 @@
  * lights + residual equal to the map's integral; the 0/360 seam and the
  * poles; black, constant, gradient-only and 1x1 maps (no lights); NaN, Inf
  * and negative texels (one-line errors, map untouched); determinism across
- * thread counts; the tracker's identities on a moving sun.
+ * thread counts; the tracker's identities on a moving sun; 400 maps of odd
+ * sizes (1..97 x 1..61) and hostile content (hot texels of 1e30 on zeros,
+ * 1e-30 noise): finite lights within the budget and energy kept.
  * Every bound is the value measured when the test was written plus the
  * margin stated beside it.
  */
@@ -356,6 +358,50 @@ static void test_tracking(void)
                 max_jump);
 }
 
+/* Odd sizes and hostile content (a few huge texels on zeros, tiny values,
+ * thin rows and columns): finite lights within the budget, energy kept. */
+static void test_odd_maps(void)
+{
+    unsigned x = 12345u;
+    int bad = 0;
+    for (int t = 0; t < 400; ++t) {
+        x = x * 1664525u + 1013904223u;
+        const int w = 1 + (int)(x >> 8) % 97, h = 1 + (int)(x >> 20) % 61;
+        float *m = calloc((size_t)w * h * 3, sizeof *m);
+        const int kind = t % 4;
+        for (int k = 0; k < w * h * 3; ++k) {
+            x = x * 1664525u + 1013904223u;
+            const double u = (x >> 8) / 16777216.0;
+            m[k] = kind == 0 ? (float)u : kind == 1 ? (u > 0.995 ? 1e30f : 0.0f)
+                   : kind == 2 ? (float)(u * 1e-30) : (float)(u * u * u * u * 1e4);
+        }
+        double map[3];
+        integral(m, w, h, map);
+        hfs_env_decomp d;
+        hfs_error err = {{0}};
+        if (hfs_env_decompose(m, w, h, NULL, "odd", &d, &err)) {
+            CHECK(0, "odd %dx%d kind %d: %s", w, h, kind, err.msg);
+            free(m);
+            continue;
+        }
+        int ok = d.n_lights >= 0 && d.n_lights <= 4;
+        for (int k = 0; k < d.n_lights; ++k)
+            for (int c = 0; c < 3; ++c)
+                ok = ok && isfinite(d.light[k].radiance[c]) && d.light[k].radiance[c] >= 0.0f &&
+                     d.light[k].alpha > 0.0 && d.light[k].alpha <= 89.0 * DEG + 1e-12;
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < HFS_SH_COEFFS; ++k)
+                ok = ok && isfinite(d.residual_sh[c][k]);
+        const double gap = energy_gap(&d, map);
+        ok = ok && gap < 1e-6;
+        if (!ok && bad++ < 5)
+            fprintf(stderr, "odd %dx%d kind %d: %d lights, gap %.3g\n", w, h, kind, d.n_lights,
+                    gap);
+        free(m);
+    }
+    CHECK(bad == 0, "odd maps: %d of 400 bad", bad);
+}
+
 int main(int argc, char **argv)
 {
     verbose = argc > 1 && !strcmp(argv[1], "-v");
@@ -369,6 +415,7 @@ int main(int argc, char **argv)
     test_sun(256, 128, 0.5, 0.02);
     test_determinism();
     test_tracking();
+    test_odd_maps();
     printf("test_env_decompose: %ld checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }
