@@ -148,7 +148,7 @@ static void test_recovery(void)
     s.disk[1] = (hfs_sky_disk){200, 10, 8, {12, 12, 14}};
     /* Measured over all the cases below (-v): directions within 0.006
      * radius, radii within 2.4%, energies within 0.9%; bounds 0.1 radius,
-     * 5%, 3%.  Lights + residual = the map within 3e-8 (bound 1e-6). */
+     * 5%, 3%.  Lights + residual = the map within 1e-8 (bound 1e-6). */
     check_disks("two disks", &s, 2, 0.1, 0.05, 0.03);
 
     hfs_sky_defaults(&s, 512, 256);
