@@ -59,8 +59,10 @@ int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error
 
 /* The map's SH, or with env-lights its lights + the residual's SH.  The
  * lights fit beside the scene's own key lights (HFS_MAX_KEY_LIGHTS in all);
- * auto takes the decomposition's defaults (up to 4, 2% of the energy). */
-static int env_map_light(const hfs_scene *s, hfs_envmap *env, hfs_scene_inputs *in,
+ * auto takes the decomposition's defaults (up to 4, 2% of the energy).
+ * The decomposition works on a copy: env stays the map as loaded (a
+ * backend integrating the whole map needs it, not the residual). */
+static int env_map_light(const hfs_scene *s, const hfs_envmap *env, hfs_scene_inputs *in,
                          hfs_error *err)
 {
     if (!s->env_lights) {
@@ -73,8 +75,15 @@ static int env_map_light(const hfs_scene *s, hfs_envmap *env, hfs_scene_inputs *
         o.max_lights = s->env_lights;
     if (o.max_lights > HFS_MAX_KEY_LIGHTS - s->n_key)
         o.max_lights = HFS_MAX_KEY_LIGHTS - s->n_key;
+    const size_t n = (size_t)env->width * (size_t)env->height * 3;
+    float *work = malloc(n * sizeof *work);
+    if (!work)
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory for its decomposition",
+                        s->env_map);
+    memcpy(work, env->rgb, n * sizeof *work);
     hfs_env_decomp d;
-    const int rc = hfs_env_decompose(env->rgb, env->width, env->height, &o, s->env_map, &d, err);
+    const int rc = hfs_env_decompose(work, env->width, env->height, &o, s->env_map, &d, err);
+    free(work);
     if (rc)
         return rc;
     in->n_env_keys = hfs_env_decomp_keys(&d, in->env_keys, HFS_MAX_KEY_LIGHTS);
