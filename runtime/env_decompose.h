@@ -35,9 +35,10 @@
  * of the map's energy (luminance, Rec. 709 weights).
  *
  * Deterministic: the coarse pass is row-parallel with a fixed partition
- * (parallel.h), everything else is serial.  No allocation beyond the
- * coarse pyramid (about 0.5 MiB); the map is modified in place.
- * Part of hfs_base's neighbours: libc and libm only (library hfs_envdec).
+ * (parallel.h), everything else is serial.  Memory beside the map, which
+ * is modified in place: about 3 MiB (the coarse pyramid, the detection's
+ * prefix sums, 28 bytes per texel row and column); the tracker adds a copy
+ * of the map.  libc, libm and threads only (library hfs_envdec).
  */
 #ifndef HFS_ENV_DECOMPOSE_H
 #define HFS_ENV_DECOMPOSE_H
