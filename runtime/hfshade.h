@@ -96,8 +96,9 @@ typedef struct hfs_key_light {
     double phi, elev, alpha; /* radians; alpha in (0, pi/2)                 */
     float radiance[3];       /* linear RGB, >= 0                            */
     int disabled;            /* non-zero: ignored (costs nothing)           */
-    int from_env;            /* extracted from lighting->env_map: the truth,
-                                which integrates the map itself, skips it   */
+    int from_env;            /* non-zero: extracted from the environment map
+                                (env_decompose.h); the truth, which
+                                integrates lighting->env_map itself, skips it */
 } hfs_key_light;
 
 /* Local spherical light: centre in world units, radius, uniform radiance

@@ -20,6 +20,10 @@
 #define ANY {-DBL_MAX, DBL_MAX, 0}            /* any finite number            */
 #define NONNEG {0.0, DBL_MAX, 0}              /* any finite number >= 0       */
 #define RADIANCE {"radiance", HFS_UNIT_RADIANCE, {0.0, FLT_MAX, 0}, NULL} /* a float */
+/* 16 SH coefficients of an environment channel (env-sh, env-sh-r/g/b). */
+#define SH_KEY(name, help)                                                       \
+    {name, "c0,...,c15", HFS_FORM_REALS, HFS_SH_COEFFS, 0, 0,                    \
+     {{"coefficient", HFS_UNIT_RADIANCE, ANY, NULL}}, NULL, help}
 
 /* The ground truth's horizons: SPEC's checks assume >= 720 azimuths, which
  * is what a scene may ask for; tests run a coarser truth through the
@@ -45,14 +49,22 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
     [HFS_SK_NODATA] = {"nodata", "V", HFS_FORM_REALS, 1, 0, 0,
                        {{NULL, HFS_UNIT_HEIGHT, ANY, NULL}}, NULL,
                        "height value that marks a hole, besides NaN/Inf"},
-    [HFS_SK_ENV_SH] = {"env-sh", "c0,...,c15", HFS_FORM_REALS, HFS_SH_COEFFS, 0, 0,
-                       {{"coefficient", HFS_UNIT_RADIANCE, ANY, NULL}}, NULL,
-                       "grey environment as 16 SH coefficients"},
+    [HFS_SK_ENV_SH] = SH_KEY("env-sh", "grey environment as 16 SH coefficients"),
+    /* The environment in colour, one channel a key (16 numbers fit a scene
+     * file's line; 48 would not): all three or none, instead of env-sh. */
+    [HFS_SK_ENV_SH_R] = SH_KEY("env-sh-r",
+                               "environment in colour: the red channel's 16 SH coefficients"),
+    [HFS_SK_ENV_SH_G] = SH_KEY("env-sh-g", "environment in colour: the green channel's"),
+    [HFS_SK_ENV_SH_B] = SH_KEY("env-sh-b", "environment in colour: the blue channel's"),
     [HFS_SK_ENV_MAP] = {"env-map", "FILE", HFS_FORM_PATH, 0, 0, 0, {{0}}, NULL,
-                        "environment as an equirect .hdr or .exr map"},
+                        "environment as an equirect .hdr, .exr or .pfm map"},
     [HFS_SK_ENV_ROTATE] = {"env-rotate", "DEG", HFS_FORM_REALS, 1, 0, 0,
                            {{"angle", HFS_UNIT_DEGREES, {-36000.0, 36000.0, 0}, NULL}}, "0",
                            "rotate the environment about +z"},
+    /* auto|off|N: parsed by the scene (scene.c set_env_lights); N in
+     * 1..HFS_MAX_KEY_LIGHTS. */
+    [HFS_SK_ENV_LIGHTS] = {"env-lights", "auto|off|N", HFS_FORM_WORD, 0, 0, 0, {{0}}, "off",
+                           "env-map's bright regions as key lights (auto: up to 4) + residual"},
     [HFS_SK_KEY] = {"key", "PHI,ELEV,ALPHA,LE", HFS_FORM_REALS, 4, 1, 0,
                     {{"azimuth", HFS_UNIT_DEGREES, {-3600.0, 3600.0, 0}, NULL},
                      {"elevation", HFS_UNIT_DEGREES, {-90.0, 90.0, 0}, NULL},

@@ -215,7 +215,8 @@ E exr_named_hdr hdr cat "$(dirname "$0")/data/io/rgb_half.exr"
 E hdr_named_exr exr cat "$(dirname "$0")/data/io/flat.hdr"
 E png_env png sh -c "printf '\211PNG\r\n\032\n\000\000\000\rIHDR'"
 E text_env hdr printf 'not an image\n'
-E pfm_env pfm sh -c "printf 'PF\n2 2\n-1.0\n'; head -c 48 /dev/zero"
+E pfm_env_nan pfm sh -c "printf 'PF\n1 1\n-1.0\n\000\000\300\177\000\000\000\000\000\000\000\000'"
+E pfm_env_short pfm sh -c "printf 'PF\n2 2\n-1.0\n'; head -c 47 /dev/zero"
 run envmaps missing fail "nope.exr" "" -- "$HFSHADE" $B --height "$in/h.pfm" --env-map "$in/nope.exr" -o "$out/o.png"
 mkdir "$in/d.hdr"
 run envmaps directory fail "d.hdr" "" -- "$HFSHADE" $B --height "$in/h.pfm" --env-map "$in/d.hdr" -o "$out/o.png"
@@ -223,6 +224,8 @@ rmdir "$in/d.hdr"
 run envmaps both fail "env" "" -- "$HFSHADE" $B --height "$in/h.pfm" --env-sh $sky --env-map "$(dirname "$0")/data/io/flat.hdr" -o "$out/o.png"
 run envmaps good_hdr ok "" "out/o.pfm" -- "$HFSHADE" $B --height "$in/h.pfm" --env-map "$(dirname "$0")/data/io/flat.hdr" --pfm "$out/o.pfm" --quiet
 run envmaps good_exr ok "" "out/o.pfm" -- "$HFSHADE" $B --height "$in/h.pfm" --env-map "$(dirname "$0")/data/io/rgb_half.exr" --pfm "$out/o.pfm" --quiet
+{ printf 'PF\n4 2\n-1.0\n'; head -c 96 /dev/zero; } >"$in/black.pfm"
+run envmaps good_pfm_lights ok "" "out/o.pfm" -- "$HFSHADE" $B --height "$in/h.pfm" --env-map "$in/black.pfm" --env-lights auto --pfm "$out/o.pfm" --quiet
 
 # ---- scene keys: as flags and in scene files ---------------------------------------------
 K() { # K NAME VALUE : --NAME VALUE must be refused, naming the key; the same in a file

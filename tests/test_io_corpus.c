@@ -71,6 +71,17 @@ static void try_both(const char *path, const char *name, const char *readme)
     memset(&err, 0, sizeof err);
     rc = hfs_envmap_load(path, &em, &err);
     printf("envmap %-32s -> %-11s %s\n", name, hfs_status_name(rc), err.msg);
+    /* Broken only as height fields: a colour PFM (2x2) and a 1x1 PFM are
+     * valid environment maps (hfs_envmap_load reads PFM, issue 17), all
+     * 1.0 (grey: R = G = B). */
+    const int pf = !strcmp(name, "pfm_colour_PF.pfm"), one = !strcmp(name, "pfm_1x1.pfm");
+    if (pf || one) {
+        CHECK(rc == 0 && em.width == (pf ? 2 : 1) && em.height == em.width &&
+              em.rgb[0] == 1.0f && em.rgb[em.width * em.height * 3 - 1] == 1.0f);
+        if (rc == 0)
+            hfs_envmap_free(&em);
+        return;
+    }
     if (rc == 0) {
         fprintf(stderr, "  %s loaded as an environment map!\n", name);
         hfs_envmap_free(&em);

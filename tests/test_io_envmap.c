@@ -7,6 +7,8 @@
  *   uint, six lossless compressions, Y-only grey, extra A channel, an offset
  *   data window; exact round trips; NaN pixels, cube maps, partial RGB and
  *   every proper prefix rejected.
+ *   PFM (PF and Pf) written by hfs_pfm_write: exact round trips, first row
+ *   = top row, a NaN named by its pixel, a mislabelled .pfm, prefixes.
  */
 #include "hfs_io.h"
 #include "test_util.h"
@@ -308,6 +310,63 @@ static void test_exr_refusals(void)
     hfs_envmap_free(NULL);
 }
 
+/* ---- PFM ---------------------------------------------------------------------------- */
+
+/* PF and Pf round trips (top row first, as hfs_pfm_write stores them), a NaN
+ * named by its pixel, a mislabelled .pfm, every proper prefix refused. */
+static void test_pfm(void)
+{
+    const int w = 7, h = 3;
+    hfs_image img;
+    hfs_error err = {{0}};
+    CHECK(hfs_image_alloc(&img, w, h, &err) == 0);
+    for (int k = 0; k < w * h * 3; ++k)
+        img.rgb[k] = (float)(k * 0.25 + (k % 3) * 100.0);
+    CHECK(hfs_pfm_write(tpath("sky.pfm"), &img, 0, &err) == 0);
+    hfs_envmap m;
+    CHECK(hfs_envmap_load(tpath("sky.pfm"), &m, &err) == 0);
+    CHECK(m.width == w && m.height == h && m.rgb &&
+          !memcmp(m.rgb, img.rgb, sizeof(float) * (size_t)(w * h * 3)));
+    hfs_envmap_free(&m);
+    check_prefixes(tpath("sky.pfm"), 1);
+
+    /* Grey: R = G = B = the stored value. */
+    float grey[7 * 3];
+    for (int k = 0; k < w * h; ++k)
+        grey[k] = (float)k * 1.5f;
+    CHECK(hfs_pfm_write_grey(tpath("grey.pfm"), w, h, grey, &err) == 0);
+    CHECK(hfs_envmap_load(tpath("grey.pfm"), &m, &err) == 0);
+    int same = m.rgb != NULL;
+    for (int k = 0; same && k < w * h; ++k)
+        same = m.rgb[3 * k] == grey[k] && m.rgb[3 * k + 1] == grey[k] &&
+               m.rgb[3 * k + 2] == grey[k];
+    CHECK(same);
+    hfs_envmap_free(&m);
+
+    /* A NaN, written by hand (the writers refuse one): little-endian PF. */
+    char head[32];
+    const int hn = snprintf(head, sizeof head, "PF\n%d %d\n-1.0\n", w, h);
+    unsigned char buf[32 + 7 * 3 * 3 * 4];
+    memcpy(buf, head, (size_t)hn);
+    for (int k = 0; k < w * h * 3; ++k) {
+        const float v = k == (2 * w + 4) * 3 + 1 ? NAN : 1.0f;
+        uint32_t u;
+        memcpy(&u, &v, 4);
+        for (int b = 0; b < 4; ++b)
+            buf[hn + 4 * k + b] = (unsigned char)(u >> (8 * b));
+    }
+    write_bytes(tpath("nan.pfm"), buf, (size_t)hn + (size_t)(w * h * 3 * 4));
+    CHECK(hfs_envmap_load(tpath("nan.pfm"), &m, &err) == HFS_E_FORMAT);
+    CHECK(strstr(err.msg, "pixel (4, 2) is NaN") != NULL);
+    CHECK(load_fails_cleanly(tpath("nan.pfm")));
+
+    static const unsigned char hdr_sig[] = "#?RADIANCE\n";
+    write_bytes(tpath("fake.pfm"), hdr_sig, sizeof hdr_sig - 1);
+    CHECK(hfs_envmap_load(tpath("fake.pfm"), &m, &err) != 0);
+    CHECK(strstr(err.msg, "named .pfm but the content is Radiance .hdr") != NULL);
+    hfs_image_free(&img);
+}
+
 int main(void)
 {
     if (make_tmpdir("io_envmap") != 0)
@@ -315,6 +374,7 @@ int main(void)
     test_hdr();
     test_exr_roundtrips();
     test_exr_refusals();
+    test_pfm();
     rm_tmpdir();
     return finish_checks("test_io_envmap");
 }

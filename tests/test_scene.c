@@ -73,6 +73,48 @@ int main(void)
     rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "dx", "6", "--dx", NULL, &err);
     CHECK(rc != 0 && strstr(err.msg, "twice"), "duplicate flag accepted: %s", err.msg);
 
+    /* A key light in colour (PHI,ELEV,ALPHA,R,G,B): le the largest channel,
+     * the radiances exact; a negative channel refused like LE. */
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "key", "12,20,3,2,8,4", "--key", NULL, &err);
+    hfs_scene_lighting(&s, NULL, &l);
+    CHECK(rc == 0 && s.n_key == 3 && s.key[2].le == 8 && l.key[2].radiance[0] == 2.0f &&
+              l.key[2].radiance[1] == 8.0f && l.key[2].radiance[2] == 4.0f &&
+              l.key[1].radiance[0] == 1.0f && l.key[1].radiance[2] == 1.0f,
+          "colour key: %s", err.msg);
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "key", "12,20,3,2,-8,4", "--key", NULL, &err);
+    CHECK(rc != 0 && strstr(err.msg, "radiance -8 is out of range"), "colour key: %s", err.msg);
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "key", "12,20,3,0,0,0", "--key", NULL, &err);
+    hfs_scene_lighting(&s, NULL, &l);
+    CHECK(rc == 0 && l.key[3].radiance[1] == 0.0f, "black colour key: %s", err.msg);
+    rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "key", "12,20,3,2,8", "--key", NULL, &err);
+    CHECK(rc != 0, "5 numbers accepted");
+
+    /* The environment in colour: env-sh-r/g/b, all three, alone. */
+    {
+        hfs_scene c;
+        hfs_scene_init(&c);
+        static const char *const ch[3] = {"env-sh-r", "env-sh-g", "env-sh-b"};
+        static const char *const v[3] = {"1,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0",
+                                         "2,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0",
+                                         "3,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0.5"};
+        CHECK(!hfs_scene_set(&c, HFS_SOURCE_FILE, "height", "h.pfm", "s.ini:1", NULL, &err),
+              "height");
+        for (int i = 0; i < 2; ++i)
+            CHECK(!hfs_scene_set(&c, HFS_SOURCE_FILE, ch[i], v[i], "s.ini:2", NULL, &err),
+                  "%s: %s", ch[i], err.msg);
+        CHECK(hfs_scene_validate(&c, &err) != 0 && strstr(err.msg, "env-sh-b missing"),
+              "two channels accepted: %s", err.msg);
+        CHECK(!hfs_scene_set(&c, HFS_SOURCE_FILE, ch[2], v[2], "s.ini:3", NULL, &err),
+              "env-sh-b: %s", err.msg);
+        CHECK(!hfs_scene_validate(&c, &err), "three channels refused: %s", err.msg);
+        hfs_scene_lighting(&c, NULL, &l);
+        CHECK(l.has_env && l.env_sh[0][0] == 1 && l.env_sh[1][0] == 2 && l.env_sh[2][0] == 3 &&
+                  l.env_sh[2][15] == 0.5, "colour environment not stored");
+        CHECK(!hfs_scene_set(&c, HFS_SOURCE_FILE, "env-sh", v[0], "s.ini:4", NULL, &err) &&
+                  hfs_scene_validate(&c, &err) != 0 && strstr(err.msg, "choose one"),
+              "env-sh with env-sh-r/g/b accepted: %s", err.msg);
+    }
+
     /* Errors carry file:line. */
     struct { const char *text; const char *expect; } bad[] = {
         {"height = a.png\nbogus = 1\n", "s.ini:2: unknown key 'bogus'"},

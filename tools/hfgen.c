@@ -8,6 +8,14 @@
  *              cliff | fractal (--seed, --relief) | panel (grooved, embossed)
  *   hfgen crop    IN --rect X,Y,W,H -o OUT.pfm   (any loadable height file)
  *   hfgen albedo  IN -o OUT.pfm                  (an albedo map for IN's heights)
+ *   hfgen sky     [--size WxH] -o OUT.pfm [--sun PHI,ELEV] [--sun-diameter D]
+ *                 [--share S] [--noise A --seed N]
+ *       a synthetic equirect sky (tools/sky_gen.h; RGB PFM, first row =
+ *       zenith): blue gradient sky, brown ground, a white-ish sun disk of
+ *       angular diameter D degrees (default 0.5) at PHI,ELEV degrees
+ *       (default 135,35) holding the share S of the map's luminance energy
+ *       (default 0.8), anti-aliased; size default 2048x1024; --noise A
+ *       multiplies every texel by 1 + A u, u uniform in [-1, 1) (default 0).
  *
  * The albedo map (RGB PFM, the heights' size; what tools/bench_bounce.sh
  * lights its scenes with) is vegetation below and bare rock above:
@@ -20,6 +28,7 @@
  * (integer hashing, no libc random).  Output is PFM "Pf", row j = 0 first.
  */
 #include "hfs_io.h"
+#include "sky_gen.h"
 #include "terrain_gen.h"
 
 #include <math.h>
@@ -32,7 +41,9 @@ static void usage(void)
 {
     fprintf(stderr, "usage: hfgen %s --size WxH -o OUT.pfm [--seed N] [--relief R]\n"
                     "       hfgen crop IN --rect X,Y,W,H -o OUT.pfm\n"
-                    "       hfgen albedo IN -o OUT.pfm\n", hfs_terrain_names());
+                    "       hfgen albedo IN -o OUT.pfm\n"
+                    "       hfgen sky [--size WxH] -o OUT.pfm [--sun PHI,ELEV] [--sun-diameter D]\n"
+                    "                 [--share S] [--noise A] [--seed N]\n", hfs_terrain_names());
 }
 
 /* hfgen albedo: the map described above, written as RGB PFM. */
@@ -66,12 +77,74 @@ static int albedo_map(const char *in, const char *out)
     return rc ? 1 : 0;
 }
 
+/* hfgen sky: the sky described above. */
+static int sky_map(int argc, char **argv)
+{
+    int w = 2048, h = 1024;
+    double phi = 135.0, elev = 35.0, diam = 0.5, share = 0.8, noise = 0.0;
+    unsigned seed = 1;
+    const char *out = NULL;
+    for (int i = 2; i < argc; ++i) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int ok = v != NULL;
+        if (ok && !strcmp(a, "--size"))
+            ok = sscanf(v, "%dx%d", &w, &h) == 2 && w >= 1 && h >= 1 && w <= 16384 && h <= 16384;
+        else if (ok && !strcmp(a, "--sun"))
+            ok = sscanf(v, "%lf,%lf", &phi, &elev) == 2 && elev >= -90.0 && elev <= 90.0;
+        else if (ok && !strcmp(a, "--sun-diameter"))
+            ok = sscanf(v, "%lf", &diam) == 1 && diam > 0.0 && diam <= 90.0;
+        else if (ok && !strcmp(a, "--share"))
+            ok = sscanf(v, "%lf", &share) == 1 && share > 0.0 && share < 1.0;
+        else if (ok && !strcmp(a, "--noise"))
+            ok = sscanf(v, "%lf", &noise) == 1 && noise >= 0.0 && noise < 1.0;
+        else if (ok && !strcmp(a, "--seed"))
+            seed = (unsigned)strtoul(v, NULL, 10);
+        else if (ok && !strcmp(a, "-o"))
+            out = v;
+        else {
+            fprintf(stderr, "hfgen: sky: %s%s%s: unexpected or out of range\n", a, v ? " " : "",
+                    v ? v : "");
+            return 2;
+        }
+        if (!ok) {
+            fprintf(stderr, "hfgen: sky: %s %s: malformed or out of range\n", a, v ? v : "");
+            return 2;
+        }
+        ++i;
+    }
+    if (!out) {
+        usage();
+        return 2;
+    }
+    hfs_sky_desc d;
+    hfs_sky_defaults(&d, w, h);
+    d.noise = noise;
+    d.seed = seed;
+    d.n_disks = 1;
+    d.disk[0] = (hfs_sky_disk){phi, elev, 0.5 * diam, {1.0f, 0.96f, 0.9f}};
+    hfs_error err = {{0}};
+    hfs_image img;
+    double e[1][3];
+    if (hfs_image_alloc(&img, w, h, &err) || hfs_sky_render(&d, img.rgb, e)) {
+        fprintf(stderr, "hfgen: sky: out of memory for %dx%d\n", w, h);
+        return 1;
+    }
+    hfs_sky_set_share(&d, 0, share, img.rgb, e);
+    const int rc = hfs_pfm_write(out, &img, 0, &err);
+    if (rc)
+        fprintf(stderr, "hfgen: %s\n", err.msg);
+    hfs_image_free(&img);
+    return rc ? 1 : 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
         usage();
         return 2;
     }
+    if (!strcmp(argv[1], "sky"))
+        return sky_map(argc, argv);
     const char *kind = argv[1], *out = NULL, *in = NULL, *rect = NULL;
     int w = 0, h = 0;
     unsigned seed = 1;

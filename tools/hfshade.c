@@ -6,6 +6,8 @@
  *   hfshade query   [SCENE.ini] [flags] --points FILE   (cli_query.h)
  *   hfshade keys                      (lists every scene key / flag)
  *   hfshade info [--context NAME]     (makes a GL context and describes it)
+ *   hfshade envmap decompose MAP [...] (lights + residual as scene lines;
+ *                                     cli_envmap.h)
  *
  * Every scene key is also a flag (--KEY VALUE); flags override the file.
  * Errors: one line on stderr naming the input and the problem, exit 1 (2 for
@@ -19,6 +21,7 @@
 #include "median.h"
 #include "cli_query.h"
 #include "cli_view.h"
+#include "cli_envmap.h"
 
 #include <float.h>
 #include <math.h>
@@ -56,6 +59,8 @@ static void usage(FILE *f)
             "                       prints each point's visible fraction of every key light)\n"
             "       hfshade keys\n"
             "       hfshade info [--context surfaceless|osmesa|auto]\n"
+            "       hfshade envmap decompose MAP [--max-lights N] [--min-share F]\n"
+            "                      [--contrast C] [--picture OUT.png]\n"
             "options: --exposure F (PNG only, default 1), --colormap none|terrain (PNG only),\n"
             "         --time N (render N full frames after a warm-up; print per-pass medians),\n"
             "         --check (load, validate and render one frame off screen; write nothing),\n"
@@ -502,6 +507,8 @@ int main(int argc, char **argv)
         print_keys();
         return 0;
     }
+    if (!strcmp(c.command, "envmap"))
+        return hfs_cli_envmap(argc - 1, argv + 1);
     if (!strcmp(c.command, "info")) {
         /* Proves --context end to end until the GLES backend uses it. */
         const char *name = NULL;

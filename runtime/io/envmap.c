@@ -1,6 +1,7 @@
 /*
  * envmap.c — hfs_envmap_load(): format by signature, Radiance .hdr through
- * stb_image, OpenEXR through envmap_exr.c; final finiteness check.
+ * stb_image, OpenEXR through envmap_exr.c, PFM through the shared PFM
+ * reader (height_netpbm.c); final finiteness check.
  *
  * Radiance: we parse the header ourselves first (signature line, FORMAT,
  * resolution line) so that errors are specific and the size guard applies
@@ -253,6 +254,39 @@ static int load_hdr(hfs_rd *rd, hfs_envmap *out, hfs_error *err)
     return HFS_OK;
 }
 
+/* PFM ("PF" RGB or "Pf" grey, R = G = B): the project's row order, first
+ * row stored = top row = zenith (SPEC), values as stored (the finiteness
+ * check below names a NaN). */
+static int load_pfm(hfs_rd *rd, hfs_envmap *out, hfs_error *err)
+{
+    hfs_io_hopts o;
+    memset(&o, 0, sizeof o);
+    o.max_w = HFS_ENVMAP_MAX_DIM;
+    o.max_h = HFS_ENVMAP_MAX_DIM;
+    o.max_texels = HFS_ENVMAP_MAX_TEXELS;
+    int w, h, nch;
+    float *v;
+    int rc = hfs_io_read_pfm(rd, &o, 1, 1, &w, &h, &nch, &v, err);
+    if (rc)
+        return rc;
+    if (nch == 1) {
+        const size_t n = (size_t)w * (size_t)h;
+        float *rgb = malloc(n * 3 * sizeof *rgb);
+        if (!rgb) {
+            free(v);
+            return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory for a %dx%d map", rd->path, w, h);
+        }
+        for (size_t k = 0; k < n; ++k)
+            rgb[3 * k] = rgb[3 * k + 1] = rgb[3 * k + 2] = v[k];
+        free(v);
+        v = rgb;
+    }
+    out->width = w;
+    out->height = h;
+    out->rgb = v;
+    return HFS_OK;
+}
+
 int hfs_envmap_load(const char *path, hfs_envmap *out, hfs_error *err)
 {
     hfs_rd rd;
@@ -270,28 +304,33 @@ int hfs_envmap_load(const char *path, hfs_envmap *out, hfs_error *err)
     n = hfs_rd_peek(&rd, 16, &p);
     const int is_exr = n >= 4 && memcmp(p, "\x76\x2f\x31\x01", 4) == 0;
     const int is_hdr = n >= 2 && p[0] == '#' && p[1] == '?';
+    const int is_pfm = n >= 2 && p[0] == 'P' && (p[1] == 'F' || p[1] == 'f');
     char ext[8];
     hfs_io_extension(path, ext, sizeof ext);
     if (n == 0) {
         rc = rd.read_errno ? hfs_rd_fail_short(&rd, err, "file")
                            : hfs_fail(err, HFS_E_FORMAT, "%s: empty file", path);
-    } else if ((!strcmp(ext, "hdr") && !is_hdr) || (!strcmp(ext, "exr") && !is_exr)) {
+    } else if ((!strcmp(ext, "hdr") && !is_hdr) || (!strcmp(ext, "exr") && !is_exr) ||
+               (!strcmp(ext, "pfm") && !is_pfm)) {
         /* The name says one format and the content another: a mislabelled
          * file is more likely a mistake than a choice. */
         rc = hfs_fail(err, HFS_E_FORMAT, "%s: named .%s but the content is %s", path, ext,
-                      is_exr ? "OpenEXR" : is_hdr ? "Radiance .hdr" : "neither .hdr nor .exr");
+                      is_exr ? "OpenEXR" : is_hdr ? "Radiance .hdr" : is_pfm ? "PFM"
+                      : "neither .hdr, .exr nor PFM");
     } else if (is_exr) {
         hfs_rd_close(&rd); /* OpenEXRCore does its own reading */
         rc = hfs_io_envmap_load_exr(path, out, err);
     } else if (is_hdr) {
         rc = load_hdr(&rd, out, err);
+    } else if (is_pfm) {
+        rc = load_pfm(&rd, out, err);
     } else if (n >= 8 && memcmp(p, "\x89PNG\r\n\x1a\n", 8) == 0) {
         rc = hfs_fail(err, HFS_E_UNSUPPORTED,
-                      "%s: PNG is not a high-dynamic-range environment map (use .hdr or .exr)",
+                      "%s: PNG is not a high-dynamic-range environment map (use .hdr, .exr or .pfm)",
                       path);
     } else {
         rc = hfs_fail(err, HFS_E_FORMAT,
-                      "%s: not a Radiance .hdr or OpenEXR file (bad signature)", path);
+                      "%s: not a Radiance .hdr, OpenEXR or PFM file (bad signature)", path);
     }
     hfs_rd_close(&rd);
 

@@ -175,6 +175,11 @@ typedef struct hfs_envmap {
  *                  A chunk claiming more decoded bytes than its stored bytes
  *                  can expand to is corrupt (checked for every chunk before
  *                  the image is allocated).
+ *   PFM            "PF" (RGB) or "Pf" (grey: R = G = B), either byte order;
+ *                  as every PFM of this project (SPEC "File row order") the
+ *                  first row stored is the top row, the zenith (row v = 0),
+ *                  NOT the customary bottom-up PFM; a ".pfm" name must hold
+ *                  PFM content.
  * Non-finite pixels (NaN/Inf, possible only in EXR) are an error, not
  * clamped: a sun stored as +Inf has no meaningful finite stand-in.  Negative
  * values are kept.  Maps must be at least 1x1 and within the guard above.

@@ -57,14 +57,28 @@ static int parse_doubles(const char *v, double *out, int n, const char *where,
     return HFS_OK;
 }
 
-/* The key's numbers, each checked against its range. */
-static int parse_reals(hfs_scene_key_id id, const char *v, double *out, const char *where,
-                       hfs_error *err)
+/* Values of `key` in colour: PHI,ELEV,ALPHA,R,G,B (each of R, G, B in the
+ * radiance's range). */
+#define KEY_RGB_N 6
+
+static int count_commas(const char *v)
+{
+    int n = 0;
+    for (; *v; ++v)
+        n += *v == ',';
+    return n;
+}
+
+/* The key's numbers, each checked against its range; *n gets their count
+ * (k->n, or KEY_RGB_N for a key light in colour). */
+static int parse_reals(hfs_scene_key_id id, const char *v, double *out, int *n,
+                       const char *where, hfs_error *err)
 {
     const hfs_scene_key *k = hfs_scene_key_get(id);
-    int rc = parse_doubles(v, out, k->n, where, k->name, err);
-    for (int i = 0; i < k->n && !rc; ++i)
-        rc = hfs_scene_key_check(id, i, out[i], where, err);
+    *n = id == HFS_SK_KEY && count_commas(v) == KEY_RGB_N - 1 ? KEY_RGB_N : k->n;
+    int rc = parse_doubles(v, out, *n, where, k->name, err);
+    for (int i = 0; i < *n && !rc; ++i)
+        rc = hfs_scene_key_check(id, i < k->n ? i : k->n - 1, out[i], where, err);
     return rc;
 }
 
@@ -206,9 +220,9 @@ static int add_light(int src, int *from_flags, int *n, int max, const char *wher
     return HFS_OK;
 }
 
-/* Numbers d, already checked, of a REALS key. */
+/* Numbers d (n of them), already checked, of a REALS key. */
 static int store_reals(hfs_scene *s, hfs_scene_source src, hfs_scene_key_id id, const double *d,
-                       const char *where, hfs_error *err)
+                       int n, const char *where, hfs_error *err)
 {
     int rc = HFS_OK;
     switch (id) {
@@ -216,6 +230,14 @@ static int store_reals(hfs_scene *s, hfs_scene_source src, hfs_scene_key_id id, 
     case HFS_SK_ZSCALE: s->zscale = d[0]; s->zscale_given = 1; break;
     case HFS_SK_NODATA: s->nodata = d[0]; s->has_nodata = 1; break;
     case HFS_SK_ENV_SH: memcpy(s->env_sh, d, sizeof s->env_sh); s->has_env_sh = 1; break;
+    case HFS_SK_ENV_SH_R:
+    case HFS_SK_ENV_SH_G:
+    case HFS_SK_ENV_SH_B: {
+        const int c = id - HFS_SK_ENV_SH_R;
+        memcpy(s->env_sh_rgb[c], d, sizeof s->env_sh_rgb[c]);
+        s->env_sh_rgb_mask |= 1 << c;
+        break;
+    }
     case HFS_SK_ENV_ROTATE: s->env_rotate_deg = d[0]; break;
     case HFS_SK_ALBEDO: s->albedo = d[0]; s->albedo_given = 1; break;
     case HFS_SK_SPECULAR: s->specular = d[0]; s->specular_given = 1; break;
@@ -229,6 +251,13 @@ static int store_reals(hfs_scene *s, hfs_scene_source src, hfs_scene_key_id id, 
         s->key[s->n_key].elev = d[1];
         s->key[s->n_key].alpha = d[2];
         s->key[s->n_key].le = d[3];
+        s->key[s->n_key].tint[0] = s->key[s->n_key].tint[1] = s->key[s->n_key].tint[2] = 1.0;
+        if (n == KEY_RGB_N) { /* colour: le the largest channel, tint the ratios */
+            const double m = fmax(d[3], fmax(d[4], d[5]));
+            s->key[s->n_key].le = m;
+            for (int c = 0; c < 3 && m > 0.0; ++c)
+                s->key[s->n_key].tint[c] = d[3 + c] / m;
+        }
         s->n_key++;
         break;
     case HFS_SK_LOCAL:
@@ -247,6 +276,23 @@ static int store_reals(hfs_scene *s, hfs_scene_source src, hfs_scene_key_id id, 
                       hfs_scene_key_get(id)->name);
     }
     return rc;
+}
+
+/* env-lights = auto | off | N (1..HFS_MAX_KEY_LIGHTS). */
+static int set_env_lights(hfs_scene *s, const char *v, const char *where, hfs_error *err)
+{
+    if (!strcmp(v, "auto") || !strcmp(v, "off")) {
+        s->env_lights = v[0] == 'a' ? -1 : 0;
+        return HFS_OK;
+    }
+    char *end;
+    errno = 0;
+    const long n = strtol(v, &end, 10);
+    if (end == v || *end || errno || n < 1 || n > HFS_MAX_KEY_LIGHTS)
+        return hfs_fail(err, HFS_E_INVALID, "%s: env-lights: '%s' is not auto, off or a count "
+                        "in [1, %d]", where, v, HFS_MAX_KEY_LIGHTS);
+    s->env_lights = (int)n;
+    return HFS_OK;
 }
 
 static int set_word(hfs_scene *s, hfs_scene_key_id id, const char *value, const char *where,
@@ -278,7 +324,7 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
     s->set_mask[src] |= bit;
 
     double d[HFS_SH_COEFFS] = {0}; /* parse_reals fills it on success */
-    int rc;
+    int rc, n = 0;
     switch (k->form) {
     case HFS_FORM_PATH:
         return set_path(id == HFS_SK_HEIGHT ? s->height
@@ -288,12 +334,14 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
     case HFS_FORM_SIZE:
         return set_size(s, value, where, err);
     case HFS_FORM_REALS:
-        if ((rc = parse_reals(id, value, d, where, err)))
+        if ((rc = parse_reals(id, value, d, &n, where, err)))
             return rc;
-        return store_reals(s, src, id, d, where, err);
+        return store_reals(s, src, id, d, n, where, err);
     case HFS_FORM_INT:
         return parse_int(id, value, int_field(s, id), where, err);
     case HFS_FORM_WORD:
+        if (id == HFS_SK_ENV_LIGHTS)
+            return set_env_lights(s, value, where, err);
         return set_word(s, id, value, where, err);
     }
     return hfs_fail(err, HFS_E_INVALID, "%s: unhandled key '%s'", where, key);
@@ -305,6 +353,15 @@ int hfs_scene_validate(const hfs_scene *s, hfs_error *err)
         return hfs_fail(err, HFS_E_INVALID, "scene: no height field (give --height FILE)");
     if (s->has_env_sh && s->env_map[0])
         return hfs_fail(err, HFS_E_INVALID, "scene: both env-sh and env-map given; choose one");
+    if (s->env_sh_rgb_mask && s->env_sh_rgb_mask != 7)
+        return hfs_fail(err, HFS_E_INVALID, "scene: env-sh-r, env-sh-g and env-sh-b go together "
+                        "(%s missing)", !(s->env_sh_rgb_mask & 1) ? "env-sh-r"
+                        : !(s->env_sh_rgb_mask & 2) ? "env-sh-g" : "env-sh-b");
+    if (s->env_sh_rgb_mask && (s->has_env_sh || s->env_map[0]))
+        return hfs_fail(err, HFS_E_INVALID, "scene: env-sh-r/g/b and %s given; choose one",
+                        s->has_env_sh ? "env-sh" : "env-map");
+    if (s->env_lights && !s->env_map[0])
+        return hfs_fail(err, HFS_E_INVALID, "scene: env-lights needs an env-map");
     return HFS_OK;
 }
 
@@ -321,6 +378,9 @@ void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS
         l->has_env = 1;
         for (int c = 0; c < 3; ++c)
             memcpy(l->env_sh[c], s->env_sh, sizeof s->env_sh);
+    } else if (s->env_sh_rgb_mask == 7) {
+        l->has_env = 1;
+        memcpy(l->env_sh, s->env_sh_rgb, sizeof s->env_sh_rgb);
     }
     l->env_rotate = RAD(s->env_rotate_deg);
     l->n_key = s->n_key;
@@ -328,8 +388,11 @@ void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS
         l->key[i].phi = RAD(s->key[i].phi);
         l->key[i].elev = RAD(s->key[i].elev);
         l->key[i].alpha = RAD(s->key[i].alpha);
+        /* A tint of zeros: a key set without the parser (grey). */
+        const double *t = s->key[i].tint;
+        const int grey = t[0] == 0.0 && t[1] == 0.0 && t[2] == 0.0;
         for (int c = 0; c < 3; ++c)
-            l->key[i].radiance[c] = (float)s->key[i].le;
+            l->key[i].radiance[c] = (float)(s->key[i].le * (grey ? 1.0 : t[c]));
     }
     l->n_local = s->n_local;
     for (int i = 0; i < s->n_local; ++i) {

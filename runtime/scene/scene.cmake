@@ -12,4 +12,4 @@ target_link_libraries(hfshade_scene PUBLIC hfs_base PRIVATE PkgConfig::INIH)
 # (hfshade_lib) gains no dependency on the file formats.
 add_library(hfshade_scene_load STATIC ${CMAKE_CURRENT_SOURCE_DIR}/scene/scene_load.c)
 target_include_directories(hfshade_scene_load PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/scene)
-target_link_libraries(hfshade_scene_load PUBLIC hfshade_scene hfshade_io hfshade_lib hfs_sh)
+target_link_libraries(hfshade_scene_load PUBLIC hfshade_scene hfshade_io hfshade_lib hfs_sh hfs_envdec)

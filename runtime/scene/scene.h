@@ -15,6 +15,7 @@
  *     dx = 30
  *     key = 135,35,4,3            (phi, elevation, alpha in degrees; radiance)
  *     key = 300,60,10,1           (repeatable)
+ *     key = 300,60,10,1,0.9,0.8   (in colour: R,G,B instead of one radiance)
  * No sections.  Unknown keys, sections, duplicate single-valued keys and
  * out-of-range values are errors naming the file and line.
  *
@@ -43,17 +44,26 @@ typedef struct hfs_scene {
     int has_nodata;
     double nodata;
 
-    /* Environment: SH (grey) or a map file, not both. */
+    /* Environment: SH (grey, or per channel with env-sh-r/g/b) or a map
+     * file, not both. */
     int has_env_sh;
     double env_sh[HFS_SH_COEFFS];
+    int env_sh_rgb_mask;             /* env-sh-r/g/b given: bits 1, 2, 4    */
+    double env_sh_rgb[3][HFS_SH_COEFFS];
     char env_map[HFS_PATH_MAX];
     double env_rotate_deg;
     int truth_env_sh;                /* truth-env = sh: the truth integrates
                                         the map's SH, not the map            */
+    int env_lights;                  /* env-lights: 0 off (default), -1
+                                        auto, N: at most N lights          */
 
     /* Lights, angles in degrees. */
     int n_key;
-    struct { double phi, elev, alpha, le; } key[HFS_MAX_KEY_LIGHTS];
+    /* radiance = le * tint: `key = PHI,ELEV,ALPHA,LE` is grey (tint 1,1,1);
+     * `key = PHI,ELEV,ALPHA,R,G,B` sets le = max(R,G,B), tint = RGB / le,
+     * so the kiosk's radiance knob (le) scales the colour; a tint of
+     * zeros (a key set by code, not parsed) is grey. */
+    struct { double phi, elev, alpha, le, tint[3]; } key[HFS_MAX_KEY_LIGHTS];
     int n_local;
     struct { double x, y, z, r, le; } local[HFS_MAX_LOCAL_LIGHTS];
 
@@ -93,8 +103,10 @@ int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err);
 /* True if key (without "--") is a scene key. */
 int hfs_scene_is_key(const char *key);
 
-/* Checks cross-key consistency (height given, env-sh xor env-map, raw size
- * given for raw files) after all sources are applied. */
+/* Checks cross-key consistency (height given, one of env-sh, env-sh-r/g/b
+ * (all three) and env-map, env-lights
+ * only with env-map, raw size given for raw files) after all sources are
+ * applied. */
 int hfs_scene_validate(const hfs_scene *s, hfs_error *err);
 
 /* Fills the library's lighting and quality from the scene (radians, RGB).

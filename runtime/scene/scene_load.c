@@ -8,10 +8,12 @@
  */
 #include "scene_load.h"
 
+#include <math.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "env_decompose.h"
 #include "sh.h"
 
 /* Serials of loaded heights (hfs_renderer_set_field_serial): unique in the
@@ -36,6 +38,15 @@ int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error
     hfs_scene_lighting(s, in->has_env_map ? (const double(*)[HFS_SH_COEFFS])in->env_map_sh : NULL,
                        &l);
     hfs_scene_quality(s, &q);
+    /* The map's lights after the scene's, turned with the residual (the
+     * backends rotate env_sh by env_rotate about +z: phi + angle). */
+    for (int i = 0; i < in->n_env_keys && l.n_key < HFS_MAX_KEY_LIGHTS; ++i) {
+        hfs_key_light k = in->env_keys[i];
+        k.phi = fmod(k.phi + l.env_rotate, 6.283185307179586);
+        if (k.phi < 0.0)
+            k.phi += 6.283185307179586;
+        l.key[l.n_key++] = k;
+    }
     l.albedo_map = in->albedo_map; /* checked by its loader */
     /* The field does not change here: hfs_scene_inputs_load checked it. */
     int rc = hfs_validate_lighting(&l, err);
@@ -50,6 +61,40 @@ int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error
     l.env_map_height = in->env_map_height;
     in->lighting = l;
     in->quality = q;
+    return HFS_OK;
+}
+
+/* The map's SH, or with env-lights its lights + the residual's SH.  The
+ * lights fit beside the scene's own key lights (HFS_MAX_KEY_LIGHTS in all);
+ * auto takes the decomposition's defaults (up to 4, 2% of the energy).
+ * The decomposition works on a copy: env stays the map as loaded (a
+ * backend integrating the whole map needs it, not the residual). */
+static int env_map_light(const hfs_scene *s, const hfs_envmap *env, hfs_scene_inputs *in,
+                         hfs_error *err)
+{
+    if (!s->env_lights) {
+        hfs_sh_project_equirect(env->rgb, env->width, env->height, in->env_map_sh);
+        return HFS_OK;
+    }
+    hfs_env_decompose_opts o;
+    hfs_env_decompose_defaults(&o);
+    if (s->env_lights > 0)
+        o.max_lights = s->env_lights;
+    if (o.max_lights > HFS_MAX_KEY_LIGHTS - s->n_key)
+        o.max_lights = HFS_MAX_KEY_LIGHTS - s->n_key;
+    const size_t n = (size_t)env->width * (size_t)env->height * 3;
+    float *work = malloc(n * sizeof *work);
+    if (!work)
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory for its decomposition",
+                        s->env_map);
+    memcpy(work, env->rgb, n * sizeof *work);
+    hfs_env_decomp d;
+    const int rc = hfs_env_decompose(work, env->width, env->height, &o, s->env_map, &d, err);
+    free(work);
+    if (rc)
+        return rc;
+    in->n_env_keys = hfs_env_decomp_keys(&d, in->env_keys, HFS_MAX_KEY_LIGHTS);
+    memcpy(in->env_map_sh, d.residual_sh, sizeof in->env_map_sh);
     return HFS_OK;
 }
 
@@ -77,12 +122,13 @@ int hfs_scene_inputs_load(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *e
         hfs_envmap env;
         if ((rc = hfs_envmap_load(s->env_map, &env, err)))
             goto fail;
-        double sh[3][HFS_SH_N];
-        hfs_sh_project_equirect(env.rgb, env.width, env.height, sh);
+        if ((rc = env_map_light(s, &env, in, err))) {
+            hfs_envmap_free(&env);
+            goto fail;
+        }
         in->env_map = env.rgb; /* kept: the truth integrates the map itself */
         in->env_map_width = env.width;
         in->env_map_height = env.height;
-        memcpy(in->env_map_sh, sh, sizeof in->env_map_sh);
         in->has_env_map = 1;
     }
     if (s->albedo_map[0] &&

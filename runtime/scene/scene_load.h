@@ -5,7 +5,8 @@
  *
  * Shared by the command-line tool (one render) and the kiosk (many frames):
  * the expensive part — reading the height file, reading the environment
- * map and projecting it to SH — is done once by hfs_scene_inputs_load; a
+ * map, decomposing it into lights (env-lights, runtime/env_decompose.h)
+ * and projecting it to SH — is done once by hfs_scene_inputs_load; a
  * caller that edits only lights, the environment rotation or the preset
  * (the kiosk's knobs) calls hfs_scene_inputs_relight, which recomputes the
  * lighting and quality from the scene and touches no file.  The map itself
@@ -34,12 +35,16 @@ typedef struct hfs_scene_inputs {
     hfs_heightmap hm;            /* the loaded heights (owned)               */
     hfs_field field;             /* view of hm with the scene's dx, zscale   */
     int has_env_map;             /* env_map_sh holds the map's projection    */
-    double env_map_sh[3][HFS_SH_COEFFS];
+    double env_map_sh[3][HFS_SH_COEFFS]; /* with env-lights: the residual's   */
     float *env_map;              /* the map itself, env_map_width x
                                     env_map_height x 3 (owned), or NULL:
                                     lighting.env_map points here (the truth
                                     integrates it; other backends env_sh)   */
     int env_map_width, env_map_height;
+    int n_env_keys;              /* env-lights: the map's lights (from_env),
+                                    unrotated; relight appends them to the
+                                    scene's key lights, rotated by env-rotate */
+    hfs_key_light env_keys[HFS_MAX_KEY_LIGHTS];
     float *albedo_map;           /* the scene's albedo map, W*H*3 (owned), or NULL */
     hfs_lighting lighting;       /* from the scene (degrees -> radians)      */
     hfs_quality quality;         /* preset + quality keys of the scene       */
