@@ -137,9 +137,9 @@ static const bad_case bad[] = {
      "or key = value)"},
     {"bad_empty_section.ini", HFS_E_FORMAT, ":2: empty section"},
     {"bad_section_type.ini", HFS_E_FORMAT, ":2: [slider az]: unknown section type 'slider' "
-     "(knob or button)"},
-    {"bad_section_name.ini", HFS_E_FORMAT, ":2: [knob a z]: sections are [knob NAME] or "
-     "[button NAME]"},
+     "(knob, button or capture)"},
+    {"bad_section_name.ini", HFS_E_FORMAT, ":2: [knob a z]: sections are [knob NAME], "
+     "[button NAME] or [capture NAME]"},
     {"bad_light_index.ini", HFS_E_FORMAT, ":4: light: 9 is not a key light index in [0, 7]"},
     {"bad_light_word.ini", HFS_E_FORMAT, ":4: light: 'first' is not 'selected' or an index "
      "in [0, 15]"},
@@ -150,7 +150,7 @@ static const bad_case bad[] = {
     {"bad_accel.ini", HFS_E_FORMAT, ":4: accel: 0.5 is out of range [1, 100]"},
     {"bad_too_many.ini", HFS_E_FORMAT, ":98: more than 32 controls"},
     {"bad_long_line.ini", HFS_E_FORMAT, ":4: line longer than 190 characters"},
-    {"bad_empty.ini", HFS_E_FORMAT, ": no [knob NAME] or [button NAME] sections"},
+    {"bad_empty.ini", HFS_E_FORMAT, ": no [knob NAME], [button NAME] or [capture NAME] sections"},
     {"missing.ini", HFS_E_IO, ": cannot open input configuration: No such file or directory"},
 };
 
