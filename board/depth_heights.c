@@ -337,3 +337,9 @@ const float *hfs_depth_heights_raw(const hfs_depth_heights *h)
 {
     return h->raw;
 }
+
+void hfs_depth_heights_grid(const hfs_depth_heights *h, int *width, int *height)
+{
+    *width = h->p.grid_w;
+    *height = h->p.grid_h;
+}

@@ -80,6 +80,8 @@ int hfs_depth_heights_push(hfs_depth_heights *h, const uint8_t *depth, int width
 /* grid_w * grid_h finite heights (world units), row 0 first: all 0 before
  * the first good frame.  Valid until the next push or destroy. */
 const float *hfs_depth_heights_z(const hfs_depth_heights *h);
+/* The grid's size. */
+void hfs_depth_heights_grid(const hfs_depth_heights *h, int *width, int *height);
 /* The plane in use (fitted or configured); 0 before one exists. */
 int hfs_depth_heights_plane(const hfs_depth_heights *h, double plane[3]);
 /* The unfiltered resampled heights of the last frame, metres (NaN = hole):

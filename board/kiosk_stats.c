@@ -11,6 +11,7 @@
  *   frame  N T_PRESENT_NS RENDER_MS PASSES_RAN PASSES_TOTAL EVENTS CPU_US
  *   event  T_EVENT_NS T_PRESENT_NS LATENCY_NS FRAME CHANGED CONTROL
  *   reload T_NS OK CPU_US
+ *   capture SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED
  *   exit   T_NS CPU_US FRAMES
  *
  * "frame" is written after hfs_display_present returned, then one "event"
@@ -130,6 +131,20 @@ void kiosk_stats_reload(kiosk_stats *s, int ok)
         return;
     fprintf(s->f, "reload %lld %d %lld\n", (long long)hfs_input_now_ns(), ok,
             (long long)kiosk_cpu_us());
+    check(s);
+}
+
+/* After the frame that showed a capture frame: its sequence number, its
+ * capture time, the present time, the latency, the capture path's thread
+ * CPU (read + record + convert + filter, ns) and the frames dropped so far. */
+void kiosk_stats_capture(kiosk_stats *s, const kiosk_capture *kc, const kiosk_frame *f)
+{
+    if (!s || s->failed || !kc)
+        return;
+    fprintf(s->f, "capture %u %lld %lld %lld %lld %ld\n", kc->frame_seq,
+            (long long)kc->frame_t_ns, (long long)f->present_ns,
+            (long long)(f->present_ns - kc->frame_t_ns), (long long)kc->cpu_ns,
+            kc->cap ? kc->cap->dropped : 0L);
     check(s);
 }
 
