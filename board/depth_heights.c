@@ -31,7 +31,7 @@ void hfs_depth_params_defaults(hfs_depth_params *p)
     p->grid_w = 256, p->grid_h = 192;
     p->window = 8;
     p->gate = 0.003;
-    p->hysteresis = 0.0015;
+    p->hysteresis = 0.0025;
     p->jump = 0.010;
 }
 
@@ -287,7 +287,11 @@ static int filter_cell(hfs_depth_heights *h, int c, float s)
     for (int k = 0; k < n; ++k)
         var += (ring[k] - mean) * (ring[k] - mean);
     var /= n;
-    if (var > p->gate * p->gate || fabs(mean - h->shown[c]) <= p->hysteresis)
+    /* Filling after a jump: the mean as it grows (the cell follows). */
+    const int filling = n < p->window;
+    if (!filling && (var > p->gate * p->gate || fabs(mean - h->shown[c]) <= p->hysteresis))
+        return 0;
+    if ((float)mean == h->shown[c])
         return 0;
     h->shown[c] = (float)mean;
     return 1;

@@ -21,8 +21,9 @@
  * The filter (as AR sandboxes do, with a jump rule so a hand is followed):
  * each cell keeps its last `window` valid samples and the height it shows.
  * A sample farther than `jump` from the window's mean restarts the window
- * at that sample and is shown at once (a hand arriving or leaving: one
- * frame of lag).  Otherwise it joins the window; when the window's
+ * at that sample and is shown at once (a hand arriving or leaving: no
+ * frame of lag).  Otherwise it joins the window; while the window fills
+ * the mean is shown; once full, when the window's
  * standard deviation is at most `gate` (the cell is still) and its mean
  * differs from the shown height by more than `hysteresis`, the mean is
  * shown.  So sensor noise (spread below gate, drift below hysteresis)
@@ -54,7 +55,7 @@ typedef struct hfs_depth_params {
 } hfs_depth_params;
 
 /* The defaults (docs/CAPTURE.md says how they were measured): scale 0.001,
- * window 8, gate 3 mm, hysteresis 1.5 mm, jump 10 mm, zgain 1. */
+ * window 8, gate 3 mm, hysteresis 2.5 mm, jump 10 mm, zgain 1. */
 void hfs_depth_params_defaults(hfs_depth_params *p);
 
 typedef struct hfs_depth_heights hfs_depth_heights;

@@ -8,7 +8,8 @@
 target_sources(hfs_input PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/capture_config.c
   ${CMAKE_CURRENT_LIST_DIR}/depth_heights.c
-  ${CMAKE_CURRENT_LIST_DIR}/capture.c)
+  ${CMAKE_CURRENT_LIST_DIR}/capture.c
+  ${CMAKE_CURRENT_LIST_DIR}/backoff.c)
 target_link_libraries(hfs_input PUBLIC hfshade_io)
 
 add_library(hfs_capture STATIC

@@ -26,8 +26,7 @@ add_library(hfs_input_dev STATIC
   ${HFS_GPIO_BACKEND}
   ${CMAKE_CURRENT_LIST_DIR}/input_evdev.c
   ${CMAKE_CURRENT_LIST_DIR}/input_evdev_libevdev.c
-  ${CMAKE_CURRENT_LIST_DIR}/input_set.c
-  ${CMAKE_CURRENT_LIST_DIR}/backoff.c)
+  ${CMAKE_CURRENT_LIST_DIR}/input_set.c)
 target_include_directories(hfs_input_dev PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(hfs_input_dev PUBLIC hfs_input PRIVATE PkgConfig::HFS_LIBEVDEV)
 if(HFS_GPIOD_FOUND)
