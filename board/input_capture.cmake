@@ -16,7 +16,8 @@ add_library(hfs_capture STATIC
   ${CMAKE_CURRENT_LIST_DIR}/capture_v4l2.c
   ${CMAKE_CURRENT_LIST_DIR}/capture_info.c
   ${CMAKE_CURRENT_LIST_DIR}/capture_record.c
-  ${CMAKE_CURRENT_LIST_DIR}/capture_synth.c)
+  ${CMAKE_CURRENT_LIST_DIR}/capture_synth.c
+  ${CMAKE_CURRENT_LIST_DIR}/capture_live.c)
 target_include_directories(hfs_capture PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(hfs_capture PUBLIC hfs_input hfs_base PRIVATE m)
 

@@ -21,10 +21,7 @@
 #include <stdio.h>
 #include <sys/types.h>
 
-#include "backoff.h"
-#include "capture.h"
-#include "capture_record.h"
-#include "depth_heights.h"
+#include "capture_live.h"
 #include "display.h"
 #include "input_map.h"
 #include "input_set.h"
@@ -152,7 +149,6 @@ hfs_view kiosk_view_camera(const hfs_input_state *st, const hfs_field *field, in
 /* ---- stats (kiosk_stats.c) -------------------------------------------------- */
 
 typedef struct kiosk_stats kiosk_stats;
-typedef struct kiosk_capture kiosk_capture;
 
 /* Opens (truncates) path and writes the header; NULL with err on failure. */
 kiosk_stats *kiosk_stats_open(const char *path, hfs_error *err);
@@ -164,7 +160,7 @@ void kiosk_stats_event(kiosk_stats *s, const hfs_input_event *ev, int changed,
 void kiosk_stats_reload(kiosk_stats *s, int ok);
 /* "capture SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED" after the
  * frame that showed a capture frame's heights. */
-void kiosk_stats_capture(kiosk_stats *s, const kiosk_capture *kc, const kiosk_frame *f);
+void kiosk_stats_capture(kiosk_stats *s, const hfs_capture_live *live, const kiosk_frame *f);
 void kiosk_stats_flush(kiosk_stats *s);
 /* Writes "exit"; -1 if any stats write failed (logged when it did). */
 int kiosk_stats_close(kiosk_stats *s, int frames);
@@ -201,26 +197,9 @@ int kiosk_check_poll(kiosk_check *c, int *ok, char *msg, size_t size);
 /* Ends a running check (SIGKILL) and reaps it. */
 void kiosk_check_stop(kiosk_check *c);
 
-/* ---- a camera whose frames become the heights (kiosk_capture.c) ---------- */
-
-struct kiosk_capture {
-    const char *name;              /* the [capture NAME] (the world's cfg)    */
-    hfs_capture *cap;              /* a V4L2 device or a recording            */
-    int replay;                    /* cap plays a recording                   */
-    hfs_depth_heights *dh;
-    hfs_capture_recorder *rec;     /* --capture-record, or NULL               */
-    hfs_backoff retry;             /* device loss (backoff.h)                 */
-    char last_warning[600];        /* said once                               */
-    uint64_t serial;               /* of the heights shown; 0: none yet       */
-    int grid_w, grid_h;
-    int64_t frame_t_ns;            /* the last converted frame's capture time */
-    uint32_t frame_seq;
-    int64_t cpu_ns;                /* thread CPU of the last drain            */
-};
-
 typedef struct kiosk {
     kiosk_opts opt;
-    kiosk_capture *capture;        /* NULL: no [capture] with role = heights  */
+    hfs_capture_live *capture;     /* NULL: no [capture] with role = heights  */
     kiosk_check check;             /* the running reload check, if any       */
     kiosk_world *world;
     kiosk_frame frame;
@@ -240,15 +219,11 @@ int kiosk_inputs_create(const kiosk *k, const hfs_input_config *cfg, hfs_input_s
 /* Opens the configuration's first role = heights capture (none: nothing
  * to do) into k->capture; its grid defaults to w's field size. */
 int kiosk_capture_open(kiosk *k, const kiosk_world *w, hfs_error *err);
-void kiosk_capture_free(kiosk_capture *kc);                     /* NULL ok */
-/* Its poll fd into *fd (returns 1) or none (0); lowers *deadline to its
- * own (a replay's next frame, a reopen). */
-int kiosk_capture_pollfd(kiosk_capture *kc, struct pollfd *fd, int64_t *deadline);
 /* Takes the newest frame: 1 when the heights changed (w's field now shows
  * them), 0 otherwise.  Losses and bad frames are logged, never fatal. */
-int kiosk_capture_drain(kiosk_capture *kc, kiosk_world *w);
+int kiosk_capture_drain(hfs_capture_live *live, kiosk_world *w);
 /* Points w's field at the capture's heights (after a reload). */
-void kiosk_capture_apply(kiosk_capture *kc, kiosk_world *w);
+void kiosk_capture_apply(hfs_capture_live *live, kiosk_world *w);
 
 /* Runs until SIGTERM/SIGINT, a close request, the end of the replay
  * (--exit-after-replay) or a fatal error.  Returns 0 (clean) or 1. */

@@ -364,8 +364,10 @@ int kiosk_run(kiosk *k)
             kiosk_log(KIOSK_INFO, "replay finished, exiting");
             break;
         }
-        if (k->opt.exit_after_capture && k->capture && k->capture->cap->finished &&
-            k->frame.deferred == 0) {
+        hfs_capture_live_stats cs = {0};
+        if (k->capture)
+            hfs_capture_live_stats_get(k->capture, &cs);
+        if (k->opt.exit_after_capture && cs.finished && k->frame.deferred == 0) {
             kiosk_log(KIOSK_INFO, "capture replay finished, exiting");
             break;
         }
@@ -380,7 +382,7 @@ int kiosk_run(kiosk *k)
             fds[n++] = (struct pollfd){.fd = k->check.fd, .events = POLLIN};
         int64_t deadline = INT64_MAX;
         n += hfs_input_set_pollfds(k->inputs, fds + n, HFS_INPUT_SET_MAX, &deadline);
-        n += kiosk_capture_pollfd(k->capture, fds + n, &deadline);
+        n += hfs_capture_live_pollfd(k->capture, fds + n, &deadline);
         if (k->replay) {
             const int64_t d = hfs_input_source_deadline(k->replay);
             deadline = d < deadline ? d : deadline;

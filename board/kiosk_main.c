@@ -164,19 +164,23 @@ static int check_replay(const char *path, int *count, hfs_error *err)
     return HFS_OK;
 }
 
-/* Returns -1 when the stats file could not be written in full. */
+/* Returns non-zero when the stats file or the capture recording could not
+ * be written in full. */
 static int teardown(kiosk *k)
 {
     const int stats_rc = kiosk_stats_close(k->stats, k->frame.presented);
     hfs_input_source_destroy(k->replay);
     hfs_input_set_destroy(k->inputs);
-    kiosk_capture_free(k->capture);
+    hfs_error cerr = {{0}};
+    const int record_rc = hfs_capture_live_close(k->capture, &cerr); /* the recording's end */
+    if (record_rc)
+        kiosk_log(KIOSK_ERR, "%s", cerr.msg);
     kiosk_frame_free(&k->frame);
     hfs_display_close(k->display); /* kms: gives the CRTC back as it was */
     kiosk_world_free(k->world);
     if (k->sigfd >= 0)
         close(k->sigfd);
-    return stats_rc;
+    return stats_rc ? stats_rc : record_rc;
 }
 
 /* The stats file is the kiosk's one output: it must not be any of the
@@ -254,7 +258,10 @@ static int start(kiosk *k)
         kiosk_log(KIOSK_ERR, "%s", err.msg);
         return 1;
     }
-    if (o->exit_after_capture && !(k->capture && k->capture->replay)) {
+    hfs_capture_live_stats cs = {0};
+    if (k->capture)
+        hfs_capture_live_stats_get(k->capture, &cs);
+    if (o->exit_after_capture && !cs.replay) {
         kiosk_log(KIOSK_ERR, "--exit-after-capture needs a [capture NAME] with replay = DIR");
         return 1;
     }

@@ -137,14 +137,15 @@ void kiosk_stats_reload(kiosk_stats *s, int ok)
 /* After the frame that showed a capture frame: its sequence number, its
  * capture time, the present time, the latency, the capture path's thread
  * CPU (read + record + convert + filter, ns) and the frames dropped so far. */
-void kiosk_stats_capture(kiosk_stats *s, const kiosk_capture *kc, const kiosk_frame *f)
+void kiosk_stats_capture(kiosk_stats *s, const hfs_capture_live *live, const kiosk_frame *f)
 {
-    if (!s || s->failed || !kc)
+    if (!s || s->failed || !live)
         return;
-    fprintf(s->f, "capture %u %lld %lld %lld %lld %ld\n", kc->frame_seq,
-            (long long)kc->frame_t_ns, (long long)f->present_ns,
-            (long long)(f->present_ns - kc->frame_t_ns), (long long)kc->cpu_ns,
-            kc->cap ? kc->cap->dropped : 0L);
+    hfs_capture_live_stats cs;
+    hfs_capture_live_stats_get(live, &cs);
+    fprintf(s->f, "capture %u %lld %lld %lld %lld %ld\n", cs.sequence, (long long)cs.t_ns,
+            (long long)f->present_ns, (long long)(f->present_ns - cs.t_ns),
+            (long long)cs.cpu_ns, cs.dropped);
     check(s);
 }
 

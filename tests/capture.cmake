@@ -16,7 +16,7 @@
 
 hfs_add_test(test_capture
   SOURCES test_capture.c capture_fake.c
-  LIBS hfs_capture LABEL unit TIMEOUT 60)
+  LIBS hfs_capture m LABEL unit TIMEOUT 60)
 hfs_add_test(test_depth_heights
   SOURCES test_depth_heights.c
   LIBS hfs_capture m LABEL unit TIMEOUT 120)

@@ -4,6 +4,7 @@
  * shared back-off, and recordings played back.
  */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +13,7 @@
 
 #include "backoff.h"
 #include "capture_fake.h"
+#include "capture_live.h"
 #include "capture_record.h"
 #include "capture_synth.h"
 #include "capture_v4l2.h"
@@ -237,6 +239,95 @@ static void test_replay(const char *tmp)
     free(depth);
 }
 
+/* A flat floor 1 m away (1000 counts), with a 0.3 m block in the middle
+ * when seq is odd. */
+static void fill_block(void *user, uint8_t *dst, int w, int h, int stride, uint32_t seq)
+{
+    (void)user;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int block = (seq & 1) && abs(x - w / 2) < w / 4 && abs(y - h / 2) < h / 4;
+            const unsigned c = block ? 700 : 1000;
+            dst[(size_t)y * stride + 2 * x] = (uint8_t)(c & 0xff);
+            dst[(size_t)y * stride + 2 * x + 1] = (uint8_t)(c >> 8);
+        }
+}
+
+typedef struct log_lines {
+    int n;
+    char last[600];
+} log_lines;
+
+static void collect(void *user, int warning, const char *line)
+{
+    log_lines *l = user;
+    (void)warning;
+    l->n++;
+    snprintf(l->last, sizeof l->last, "%s", line);
+}
+
+/* The kiosk's capture path (capture_live.h) against the fake device:
+ * heights from frames, ENODEV mid-stream survived with the last heights
+ * kept, one report, the back-off's reopen, frames again. */
+static void test_live(void)
+{
+    capture_fake f;
+    capture_fake_init(&f, "/dev/video7");
+    f.fill = fill_block;
+    hfs_v4l2_ops ops = capture_fake_ops(&f);
+    hfs_capture_configs cc = {0};
+    char msg[300];
+    hfs_capture_config_begin(&cc, "sand", 1, msg, sizeof msg);
+    hfs_capture_config_key(&cc, "device", "/dev/video7", 2, msg, sizeof msg);
+    hfs_capture_config_key(&cc, "window", "1", 3, msg, sizeof msg);
+    hfs_capture_config_key(&cc, "plane", "0 0 1", 4, msg, sizeof msg);
+    CHECK(hfs_capture_config_end(&cc, msg, sizeof msg) == 0, "config: %s", msg);
+    log_lines lines = {0};
+    hfs_capture_live_desc d = {.config = &cc.c[0], .grid_w = 32, .grid_h = 24, .ops = &ops,
+                               .log = collect, .log_user = &lines, .retry_min_ns = 1000,
+                               .retry_max_ns = 8000};
+    hfs_capture_live *live = NULL;
+    hfs_error err = {{0}};
+    CHECK(hfs_capture_live_open(&d, &live, &err) == 0, "live: %s", err.msg);
+    if (!live)
+        return;
+    int w, h;
+    uint64_t serial;
+    CHECK(!hfs_capture_live_heights(live, &w, &h, &serial) && serial == 0, "none yet");
+    capture_fake_produce(&f, 2); /* seq 0 flat, seq 1 with the block: the newest */
+    CHECK(hfs_capture_live_drain(live, 0) == 1, "heights from a frame");
+    const float *z = hfs_capture_live_heights(live, &w, &h, &serial);
+    CHECK(z && w == 32 && h == 24 && fabsf(z[12 * 32 + 16] - 0.3f) < 1e-4f && fabsf(z[0]) < 1e-4f,
+          "block 0.3 m, floor 0: %g %g", z ? z[12 * 32 + 16] : -1, z ? z[0] : -1);
+    const uint64_t s1 = serial;
+    f.gone = 1;
+    CHECK(hfs_capture_live_drain(live, 10) == 0 && lines.n == 1 &&
+              strstr(lines.last, "No such device (showing the last frame; retrying)"),
+          "loss reported once: %d %s", lines.n, lines.last);
+    z = hfs_capture_live_heights(live, &w, &h, &serial);
+    CHECK(z && serial == s1 && fabsf(z[12 * 32 + 16] - 0.3f) < 1e-4f, "the last heights stay");
+    const long opens = f.opens;
+    hfs_capture_live_drain(live, 500); /* before the first retry (1000 ns) */
+    CHECK(f.opens == opens, "no reopen before the back-off");
+    for (int64_t t = 1010; t < 40000; t += 1000)
+        hfs_capture_live_drain(live, t);
+    CHECK(lines.n == 1, "the same reason is not reported again (%d lines)", lines.n);
+    hfs_capture_live_stats st;
+    hfs_capture_live_stats_get(live, &st);
+    CHECK(st.lost && f.open_fds == 0, "lost, closed");
+    f.gone = 0;
+    hfs_capture_live_drain(live, 100000);
+    CHECK(lines.n == 2 && !strcmp(lines.last, "video /dev/video7: back"), "back: %s",
+          lines.last);
+    capture_fake_produce(&f, 1); /* seq 2 (even): the flat floor */
+    CHECK(hfs_capture_live_drain(live, 100001) == 1, "frames again");
+    z = hfs_capture_live_heights(live, &w, &h, &serial);
+    CHECK(z && serial == s1 + 1 && fabsf(z[12 * 32 + 16]) < 1e-4f, "new heights, new serial");
+    CHECK(hfs_capture_live_close(live, &err) == 0, "close");
+    CHECK(f.open_fds == 0 && f.maps == f.unmaps && f.bad_qbuf == 0, "all released");
+    capture_fake_free(&f);
+}
+
 int main(void)
 {
     char tmp[] = "/tmp/test_capture_XXXXXX";
@@ -246,6 +337,7 @@ int main(void)
     test_loss();
     test_negotiation();
     test_info();
+    test_live();
     test_replay(tmp);
     char cmd[600];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
