@@ -72,6 +72,11 @@ struct hfs_capture {
     long dropped;            /* sequence gaps + malformed frames            */
     long superseded;         /* older frames skipped for a newer one        */
     int finished;            /* replay: played to the end (no loop)         */
+    /* Called for EVERY good frame a device delivers, superseded ones too
+     * (--capture-record records them all), before next() returns; NULL:
+     * none.  A replay calls it for the frames it returns only. */
+    void (*tap)(void *user, const hfs_capture_frame *f);
+    void *tap_user;
 };
 
 static inline int hfs_capture_fd(hfs_capture *c) { return c->vt->fd(c); }

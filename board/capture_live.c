@@ -51,6 +51,18 @@ static void warn_once(hfs_capture_live *l, const char *msg)
     }
 }
 
+/* The source's tap: every good frame it delivers into the recording. */
+static void record(void *user, const hfs_capture_frame *f)
+{
+    hfs_capture_live *l = user;
+    hfs_error err = {{0}};
+    if (l->rec && hfs_capture_record_frame(l->rec, f, &err)) {
+        warn_once(l, err.msg);
+        hfs_capture_record_close(l->rec, NULL);
+        l->rec = NULL; /* the recording stops, the display goes on */
+    }
+}
+
 static int open_source(const hfs_capture_live_desc *d, hfs_capture **out, hfs_error *err)
 {
     const hfs_capture_config *c = d->config;
@@ -93,6 +105,10 @@ int hfs_capture_live_open(const hfs_capture_live_desc *d, hfs_capture_live **out
         rc = hfs_capture_record_open(d->record_dir, &l->rec, err);
     if (!rc)
         rc = open_source(d, &l->cap, err);
+    if (!rc && l->rec) {
+        l->cap->tap = record;
+        l->cap->tap_user = l;
+    }
     if (rc) {
         hfs_capture_live_close(l, NULL);
         return rc;
@@ -131,15 +147,10 @@ int hfs_capture_live_pollfd(hfs_capture_live *l, struct pollfd *fd, int64_t *dea
     return 1;
 }
 
-/* A frame: recorded, converted.  1 when the heights changed. */
+/* A frame converted.  1 when the heights changed. */
 static int take(hfs_capture_live *l, const hfs_capture_frame *f)
 {
     hfs_error err = {{0}};
-    if (l->rec && hfs_capture_record_frame(l->rec, f, &err)) {
-        warn_once(l, err.msg);
-        hfs_capture_record_close(l->rec, NULL);
-        l->rec = NULL; /* the recording stops, the display goes on */
-    }
     int r = hfs_capture_frame_check(f, l->cap->name, &err);
     if (!r && f->format != HFS_PIX_Z16 && f->format != HFS_PIX_Y16)
         r = hfs_fail(&err, HFS_E_FORMAT, "%s: %s frames are not depth", l->cap->name,

@@ -266,6 +266,8 @@ static int r_next(hfs_capture *base, int64_t now_ns, hfs_capture_frame *out, hfs
                                .height = c->height, .format = c->format,
                                .stride = c->width * hfs_pixfmt_bytes(c->format),
                                .t_ns = due(c, i), .sequence = c->f[i].seq};
+    if (base->tap)
+        base->tap(base->tap_user, out);
     base->frames++;
     return 1;
 }

@@ -292,6 +292,21 @@ static void count_gap(v4l2_cap *c, uint32_t seq)
     c->last_seq = seq;
 }
 
+static void frame_of(const v4l2_cap *c, const struct v4l2_buffer *b, hfs_capture_frame *out)
+{
+    const int mono = (b->flags & V4L2_BUF_FLAG_TIMESTAMP_MASK) == V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC;
+    out->data = c->map[b->index];
+    out->bytes = b->bytesused;
+    out->width = c->width;
+    out->height = c->height;
+    out->stride = c->stride;
+    out->format = c->desc.format;
+    out->sequence = b->sequence;
+    out->t_ns = mono ? (int64_t)b->timestamp.tv_sec * 1000000000LL +
+                           (int64_t)b->timestamp.tv_usec * 1000LL
+                     : mono_now();
+}
+
 /* Dequeues everything done; *best = the newest good buffer (or -1). */
 static int dequeue_all(v4l2_cap *c, struct v4l2_buffer *best, hfs_error *err)
 {
@@ -318,6 +333,11 @@ static int dequeue_all(v4l2_cap *c, struct v4l2_buffer *best, hfs_error *err)
             c->base.dropped++;
             drop = (int)b.index;
         } else {
+            if (c->base.tap) {
+                hfs_capture_frame f;
+                frame_of(c, &b, &f);
+                c->base.tap(c->base.tap_user, &f);
+            }
             if (best->index != UINT32_MAX) {
                 c->base.superseded++;
                 drop = (int)best->index;
@@ -346,17 +366,7 @@ static int v_next(hfs_capture *base, int64_t now_ns, hfs_capture_frame *out, hfs
     if (c->held >= 0 && (rc = requeue(c, c->held, err)))
         return rc;
     c->held = (int)b.index;
-    const int mono = (b.flags & V4L2_BUF_FLAG_TIMESTAMP_MASK) == V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC;
-    out->data = c->map[b.index];
-    out->bytes = b.bytesused;
-    out->width = c->width;
-    out->height = c->height;
-    out->stride = c->stride;
-    out->format = c->desc.format;
-    out->sequence = b.sequence;
-    out->t_ns = mono ? (int64_t)b.timestamp.tv_sec * 1000000000LL +
-                           (int64_t)b.timestamp.tv_usec * 1000LL
-                     : mono_now();
+    frame_of(c, &b, out);
     base->frames++;
     return 1;
 }

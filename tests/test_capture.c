@@ -40,6 +40,12 @@ static void fill_seq(void *user, uint8_t *dst, int w, int h, int stride, uint32_
         }
 }
 
+static void count_tap(void *user, const hfs_capture_frame *f)
+{
+    (void)f;
+    ++*(int *)user;
+}
+
 static void test_stream(void)
 {
     capture_fake f;
@@ -61,6 +67,8 @@ static void test_stream(void)
     hfs_capture_frame fr;
     CHECK(hfs_capture_next(c, 0, &fr, &err) == 0, "nothing yet: EAGAIN -> 0");
     CHECK(hfs_v4l2_wait(c, 0, &err) == 0, "poll: nothing ready");
+    int tapped = 0;
+    c->tap = count_tap, c->tap_user = &tapped;
     capture_fake_produce(&f, 3);
     CHECK(hfs_v4l2_wait(c, 0, &err) == 1, "poll: ready");
     CHECK(hfs_capture_next(c, 0, &fr, &err) == 1 && fr.sequence == 2, "newest of 3: seq %u",
@@ -70,6 +78,8 @@ static void test_stream(void)
     /* The driver's timeval holds microseconds. */
     CHECK(fr.t_ns == (1000000000LL + 3 * 33333333LL) / 1000 * 1000, "monotonic timestamp %lld",
           (long long)fr.t_ns);
+    CHECK(tapped == 3, "the tap saw all 3 (superseded ones too): %d", tapped);
+    c->tap = NULL;
     CHECK(c->superseded == 2 && c->dropped == 0, "superseded %ld dropped %ld", c->superseded,
           c->dropped);
     CHECK(capture_fake_queued(&f) == 3, "the held buffer is not queued (%d)",
