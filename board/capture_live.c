@@ -25,6 +25,7 @@ struct hfs_capture_live {
     hfs_capture_log_fn log;
     void *log_user;
     char last_warning[800];
+    char record_failure[600];      /* why the recording stopped, or ""       */
     uint64_t serial;
     uint32_t seq;
     int64_t t_ns, cpu_ns;
@@ -58,6 +59,7 @@ static void record(void *user, const hfs_capture_frame *f)
     hfs_error err = {{0}};
     if (l->rec && hfs_capture_record_frame(l->rec, f, &err)) {
         warn_once(l, err.msg);
+        snprintf(l->record_failure, sizeof l->record_failure, "%s", err.msg);
         hfs_capture_record_close(l->rec, NULL);
         l->rec = NULL; /* the recording stops, the display goes on */
     }
@@ -123,7 +125,9 @@ int hfs_capture_live_close(hfs_capture_live *l, hfs_error *err)
         return HFS_OK;
     hfs_capture_destroy(l->cap);
     hfs_depth_heights_destroy(l->dh);
-    const int rc = hfs_capture_record_close(l->rec, err);
+    int rc = hfs_capture_record_close(l->rec, err);
+    if (!rc && l->record_failure[0])
+        rc = hfs_fail(err, HFS_E_IO, "%s (the recording is incomplete)", l->record_failure);
     free(l);
     return rc;
 }

@@ -107,12 +107,11 @@ static int followed(const float *raw, const float *z, int cells, double *missed)
     return hand;
 }
 
-static void run_sequence(measure *m)
+static void run_sequence(measure *m, const hfs_depth_params *params)
 {
     hfs_synth_desc d;
     hfs_synth_defaults(&d); /* 512x384, 90 frames, hand 30..45 moving, still to 70 */
-    hfs_depth_params p;
-    hfs_depth_params_defaults(&p); /* grid 256x192 */
+    hfs_depth_params p = *params; /* grid 256x192 */
     const int cells = p.grid_w * p.grid_h, n = d.width * d.height;
     uint16_t *depth = malloc((size_t)n * 2);
     uint8_t *bytes = malloc((size_t)n * 2);
@@ -162,11 +161,23 @@ static void run_sequence(measure *m)
 
 int main(int argc, char **argv)
 {
+    /* --report [WINDOW GATE_MM HYSTERESIS_MM JUMP_MM]: the numbers for other
+     * filter parameters (how the defaults were chosen: docs/CAPTURE.md). */
     const int report = argc > 1 && !strcmp(argv[1], "--report");
+    hfs_depth_params p;
+    hfs_depth_params_defaults(&p);
+    if (report && argc == 6) {
+        p.window = atoi(argv[2]);
+        p.gate = atof(argv[3]) * 1e-3;
+        p.hysteresis = atof(argv[4]) * 1e-3;
+        p.jump = atof(argv[5]) * 1e-3;
+        printf("window %d, gate %g mm, hysteresis %g mm, jump %g mm\n", p.window, p.gate * 1e3,
+               p.hysteresis * 1e3, p.jump * 1e3);
+    }
     if (!report)
         test_plane();
     measure m;
-    run_sequence(&m);
+    run_sequence(&m, &p);
     printf("still scene (frames 8..29, 512x384 depth -> 256x192 grid, noise 1.5 mm/pixel): "
            "RMS height noise raw %.3f mm, filtered %.3f mm; frames changing the heights "
            "%d of %d\n", m.rms_raw_mm, m.rms_filtered_mm, m.still_changes, m.still_frames);
