@@ -158,7 +158,7 @@ void kiosk_stats_frame(kiosk_stats *s, const kiosk_frame *f, int events);
 void kiosk_stats_event(kiosk_stats *s, const hfs_input_event *ev, int changed,
                        const kiosk_frame *f, int shown);
 void kiosk_stats_reload(kiosk_stats *s, int ok);
-/* "capture SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED" after the
+/* "capture SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED SUPERSEDED" after the
  * frame that showed a capture frame's heights. */
 void kiosk_stats_capture(kiosk_stats *s, const hfs_capture_live *live, const kiosk_frame *f);
 void kiosk_stats_flush(kiosk_stats *s);

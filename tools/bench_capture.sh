@@ -41,18 +41,19 @@ done
 python3 - "$N" stats-*.txt <<'EOS'
 import statistics, sys
 n = int(sys.argv[1])
-print("| run | frames shown of %d | latency median ms | max ms | capture CPU median ms/frame | max | render median ms |" % n)
-print("|---|---|---|---|---|---|---|")
+print("| run | frames shown of %d | superseded | latency median ms | max ms | capture CPU median ms/frame | max | render median ms |" % n)
+print("|---|---|---|---|---|---|---|---|")
 meds = []
 for i, path in enumerate(sys.argv[2:], 1):
-    lat, cpu, render, last = [], [], [], None
+    lat, cpu, render, last, sup = [], [], [], None, 0
     for line in open(path):
         f = line.split()
         if f[0] == "frame": last = float(f[3])
         if f[0] == "capture":
             lat.append(int(f[4]) / 1e6); cpu.append(int(f[5]) / 1e6); render.append(last)
+            sup = int(f[7])
     meds.append((statistics.median(lat), max(lat), statistics.median(cpu)))
-    print(f"| {i} | {len(lat)} | {statistics.median(lat):.1f} | {max(lat):.1f} | "
+    print(f"| {i} | {len(lat)} | {sup} | {statistics.median(lat):.1f} | {max(lat):.1f} | "
           f"{statistics.median(cpu):.2f} | {max(cpu):.2f} | {statistics.median(render):.1f} |")
 print(f"\nmedian of runs: latency median {statistics.median(m[0] for m in meds):.1f} ms, "
       f"max {statistics.median(m[1] for m in meds):.1f} ms, capture CPU "
