@@ -42,7 +42,15 @@ int kiosk_capture_open(kiosk *k, const kiosk_world *w, hfs_error *err)
                                .grid_w = w->in.field.width, .grid_h = w->in.field.height,
                                .record_dir = k->opt.capture_record,
                                .start_ns = hfs_input_now_ns(), .log = capture_log};
-    return hfs_capture_live_open(&d, &k->capture, err);
+    const int rc = hfs_capture_live_open(&d, &k->capture, err);
+    if (!rc)
+        kiosk_log(KIOSK_INFO, "capture %s: %s %s -> %dx%d heights%s%s", c->name,
+                  c->replay[0] ? "replay" : "device", c->replay[0] ? c->replay : c->device,
+                  c->depth.grid_w ? c->depth.grid_w : d.grid_w,
+                  c->depth.grid_h ? c->depth.grid_h : d.grid_h,
+                  k->opt.capture_record ? ", recording to " : "",
+                  k->opt.capture_record ? k->opt.capture_record : "");
+    return rc;
 }
 
 void kiosk_capture_apply(hfs_capture_live *live, kiosk_world *w)
