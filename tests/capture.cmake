@@ -30,3 +30,8 @@ if(TARGET hfshade-kiosk)
                    $<TARGET_FILE:hfgen>)
   set_tests_properties(kiosk_capture PROPERTIES LABELS gl TIMEOUT 300 SKIP_RETURN_CODE 77)
 endif()
+if(HFS_SANITIZE AND TARGET hfshade-kiosk)
+  # As the kiosk's GL tests: Mesa/LLVM leaks only are suppressed.
+  set_property(TEST kiosk_capture APPEND PROPERTY ENVIRONMENT
+               "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+endif()
