@@ -35,3 +35,25 @@ if(HFS_SANITIZE AND TARGET hfshade-kiosk)
   set_property(TEST kiosk_capture APPEND PROPERTY ENVIRONMENT
                "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
 endif()
+
+# A camera unplugged under a running kiosk: the fake device behind the C
+# library's calls (LD_PRELOAD shim), ENODEV mid-stream, back 400 ms later.
+#   kiosk_capture_loss   one warning, one "back", frames before and after,
+#                        exit 0 on SIGTERM ("gl": 77 without GLES)
+add_library(hfs_capture_preload MODULE capture_preload.c capture_fake.c)
+target_include_directories(hfs_capture_preload PRIVATE ${PROJECT_SOURCE_DIR}/board
+                           ${PROJECT_SOURCE_DIR}/runtime)
+target_link_libraries(hfs_capture_preload PRIVATE ${CMAKE_DL_LIBS} Threads::Threads)
+# The interposed calls must be exported (the project hides symbols by default).
+set_target_properties(hfs_capture_preload PROPERTIES C_VISIBILITY_PRESET default)
+if(TARGET hfshade-kiosk)
+  add_test(NAME kiosk_capture_loss
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/kiosk_capture_loss.sh
+                   $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfs_capture_preload>
+                   $<TARGET_FILE:hfgen>)
+  set_tests_properties(kiosk_capture_loss PROPERTIES LABELS gl TIMEOUT 300 SKIP_RETURN_CODE 77)
+  if(HFS_SANITIZE)
+    set_property(TEST kiosk_capture_loss APPEND PROPERTY ENVIRONMENT
+                 "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+  endif()
+endif()
