@@ -63,6 +63,8 @@ typedef struct parse_ctx {
     hfs_control_config *cur;
     int key_line[K_COUNT];  /* where each key of the section was, 0: not   */
 
+    int in_capture;         /* the current section is a [capture NAME]     */
+
     int failed;
     int fail_line;          /* reader's line when the error was found      */
     hfs_error first;
@@ -286,15 +288,24 @@ static int begin_section(parse_ctx *c, const char *section)
     const int line = c->header_line;
     char type[16], name[64], extra[2];
     if (sscanf(section, "%15s %63s %1s", type, name, extra) != 2)
-        return fail_at(c, line, "[%s]: sections are [knob NAME] or [button NAME]", section);
+        return fail_at(c, line, "[%s]: sections are [knob NAME], [button NAME] or "
+                       "[capture NAME]", section);
     hfs_control_kind kind;
+    if (!strcmp(type, "capture")) {
+        char msg[400];
+        if (hfs_capture_config_begin(&c->cfg->captures, name, line, msg, sizeof msg))
+            return fail_at(c, line, "%s", msg);
+        c->in_capture = 1;
+        c->section_seq = c->header_seq;
+        return 1;
+    }
     if (!strcmp(type, "knob"))
         kind = HFS_CONTROL_KNOB;
     else if (!strcmp(type, "button"))
         kind = HFS_CONTROL_BUTTON;
     else
-        return fail_at(c, line, "[%s]: unknown section type '%s' (knob or button)", section,
-                       type);
+        return fail_at(c, line, "[%s]: unknown section type '%s' (knob, button or capture)",
+                       section, type);
     if (!valid_name(name))
         return fail_at(c, line, "[%s]: a control name has 1 to %d letters, digits, '_', "
                        "'-' or '.'", section, HFS_CONTROL_NAME_MAX - 1);
@@ -329,6 +340,13 @@ static int reject_key(parse_ctx *c, key_id id, const char *why)
 /* Everything that needs the whole section. */
 static int end_section(parse_ctx *c)
 {
+    char msg[400];
+    int at;
+    if (c->in_capture && !c->failed) {
+        c->in_capture = 0;
+        at = hfs_capture_config_end(&c->cfg->captures, msg, sizeof msg);
+        return at ? fail_at(c, at, "%s", msg) : 1;
+    }
     hfs_control_config *k = c->cur;
     if (!k || c->failed)
         return !c->failed;
@@ -456,6 +474,12 @@ static int on_key(void *user, const char *section, const char *name, const char 
         (!end_section(c) || !begin_section(c, section)))
         return 0;
 
+    if (c->in_capture) {
+        char msg[400];
+        const int at = hfs_capture_config_key(&c->cfg->captures, name, value, c->line, msg,
+                                              sizeof msg);
+        return at ? fail_at(c, at, "%s", msg) : 1;
+    }
     key_id id = K_COUNT;
     for (int i = 0; i < K_COUNT; ++i)
         if (!strcmp(name, key_names[i]))
@@ -541,9 +565,9 @@ int hfs_input_config_load(const char *path, hfs_input_config *cfg, hfs_error *er
             fail_at(&c, c.header_line, "empty section");
         if (!c.failed && end_section(&c))
             check_shared_wiring(&c);
-        if (!c.failed && cfg->n_controls == 0)
-            return hfs_fail(err, HFS_E_FORMAT, "%s: no [knob NAME] or [button NAME] sections",
-                            path);
+        if (!c.failed && cfg->n_controls == 0 && cfg->captures.n == 0)
+            return hfs_fail(err, HFS_E_FORMAT, "%s: no [knob NAME], [button NAME] or "
+                            "[capture NAME] sections", path);
         if (c.failed)
             rc = hfs_fail(err, HFS_E_FORMAT, "%s", c.first.msg);
     }

@@ -29,6 +29,9 @@
  *     evdev = /dev/input/event3:KEY_UP
  *     action = preset.next
  *
+ * [capture NAME] sections (a camera whose frames become the heights) are
+ * read by capture_config.c, docs/CAPTURE.md.
+ *
  * A control whose section names no device (no gpio, no evdev) exists only
  * for the scripted source (replay), which names controls directly.
  * Errors name the file and line: "kiosk.ini:12: unknown action 'x'".
@@ -36,6 +39,7 @@
 #ifndef HFS_BOARD_INPUT_CONFIG_H
 #define HFS_BOARD_INPUT_CONFIG_H
 
+#include "capture_config.h"
 #include "input.h"
 #include "scene_keys.h"
 
@@ -106,6 +110,7 @@ typedef struct hfs_control_config {
 typedef struct hfs_input_config {
     int n_controls;
     hfs_control_config control[HFS_MAX_CONTROLS];
+    hfs_capture_configs captures;   /* [capture NAME] sections (capture_config.h) */
 } hfs_input_config;
 
 /* What an action does, its defaults and the values it accepts

@@ -11,15 +11,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define RETRY_MIN_NS (100 * 1000000LL)
-#define RETRY_MAX_NS (5000 * 1000000LL)
+#include "backoff.h"
 
 typedef struct set_entry {
     hfs_input_source *src;
-    int lost;
-    int64_t retry_at_ns;
-    int64_t backoff_ns;
-    char last_msg[sizeof(((hfs_error *)0)->msg)];
+    hfs_backoff retry;      /* loss, reopen time, back-off (backoff.h) */
 } set_entry;
 
 struct hfs_input_set {
@@ -49,6 +45,7 @@ int hfs_input_set_add(hfs_input_set *s, hfs_input_source *src, hfs_error *err)
     set_entry *e = &s->e[s->n++];
     memset(e, 0, sizeof *e);
     e->src = src;
+    hfs_backoff_init(&e->retry, s->retry_min_ns, s->retry_max_ns);
     return HFS_OK;
 }
 
@@ -73,10 +70,8 @@ int hfs_input_set_create(const hfs_input_set_desc *d, hfs_input_set **out, hfs_e
         return hfs_fail(err, HFS_E_NOMEM, "input: out of memory");
     s->log = d->log;
     s->log_user = d->log_user;
-    s->retry_min_ns = d->retry_min_ns > 0 ? d->retry_min_ns : RETRY_MIN_NS;
-    s->retry_max_ns = d->retry_max_ns > 0 ? d->retry_max_ns : RETRY_MAX_NS;
-    if (s->retry_max_ns < s->retry_min_ns)
-        s->retry_max_ns = s->retry_min_ns;
+    s->retry_min_ns = d->retry_min_ns;
+    s->retry_max_ns = d->retry_max_ns;
 
     const hfs_input_config *cfg = d->config;
     int n_cfg = cfg->n_controls < HFS_MAX_CONTROLS ? cfg->n_controls : HFS_MAX_CONTROLS;
@@ -120,7 +115,7 @@ hfs_input_source *hfs_input_set_source(hfs_input_set *s, int i)
 
 int hfs_input_set_is_lost(const hfs_input_set *s, int i)
 {
-    return i >= 0 && i < s->n && s->e[i].lost;
+    return i >= 0 && i < s->n && s->e[i].retry.lost;
 }
 
 int hfs_input_set_pollfds(hfs_input_set *s, struct pollfd *fds, int max, int64_t *deadline_ns)
@@ -129,9 +124,9 @@ int hfs_input_set_pollfds(hfs_input_set *s, struct pollfd *fds, int max, int64_t
     int64_t t = INT64_MAX;
     for (int i = 0; i < s->n; ++i) {
         set_entry *e = &s->e[i];
-        if (e->lost) {
-            if (e->retry_at_ns < t)
-                t = e->retry_at_ns;
+        if (e->retry.lost) {
+            if (e->retry.retry_at_ns < t)
+                t = e->retry.retry_at_ns;
             continue;
         }
         int64_t d = hfs_input_source_deadline(e->src);
@@ -155,10 +150,7 @@ static void lose(hfs_input_set *s, set_entry *e, int64_t now_ns, const char *msg
     say(s, msg);
     /* Any read error counts as a loss: reopen closes whatever is left and
      * opens again, so a source that failed otherwise recovers the same way. */
-    e->lost = 1;
-    e->backoff_ns = s->retry_min_ns;
-    e->retry_at_ns = now_ns + e->backoff_ns;
-    e->last_msg[0] = '\0';
+    hfs_backoff_lose(&e->retry, now_ns);
 }
 
 static void try_reopen(hfs_input_set *s, set_entry *e, int64_t now_ns)
@@ -170,17 +162,12 @@ static void try_reopen(hfs_input_set *s, set_entry *e, int64_t now_ns)
         line[sizeof e->src->name - 1] = '\0';
         strcat(line, ": back");
         say(s, line);
-        e->lost = 0;
+        hfs_backoff_back(&e->retry);
         return;
     }
     /* Log a new reason once ("no such chip" -> "permission denied"). */
-    if (strcmp(err.msg, e->last_msg) != 0) {
-        if (e->last_msg[0])
-            say(s, err.msg);
-        memcpy(e->last_msg, err.msg, sizeof e->last_msg);
-    }
-    e->backoff_ns = e->backoff_ns * 2 < s->retry_max_ns ? e->backoff_ns * 2 : s->retry_max_ns;
-    e->retry_at_ns = now_ns + e->backoff_ns;
+    if (hfs_backoff_failed(&e->retry, now_ns, err.msg))
+        say(s, err.msg);
 }
 
 int hfs_input_set_dispatch(hfs_input_set *s, int64_t now_ns, hfs_input_event *out, int max)
@@ -188,10 +175,10 @@ int hfs_input_set_dispatch(hfs_input_set *s, int64_t now_ns, hfs_input_event *ou
     int n = 0;
     for (int i = 0; i < s->n; ++i) {
         set_entry *e = &s->e[i];
-        if (e->lost) {
-            if (now_ns >= e->retry_at_ns)
+        if (e->retry.lost) {
+            if (hfs_backoff_due(&e->retry, now_ns))
                 try_reopen(s, e, now_ns);
-            if (e->lost)
+            if (e->retry.lost)
                 continue;
         }
         hfs_error err = {{0}};

@@ -10,6 +10,7 @@ add_executable(hfshade-kiosk
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_loop.c
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_check.c
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_stats.c
-  ${CMAKE_CURRENT_LIST_DIR}/kiosk_log.c)
-target_link_libraries(hfshade-kiosk PRIVATE hfs_display hfs_input_dev hfshade_scene_load
+  ${CMAKE_CURRENT_LIST_DIR}/kiosk_log.c
+  ${CMAKE_CURRENT_LIST_DIR}/kiosk_capture.c)
+target_link_libraries(hfshade-kiosk PRIVATE hfs_display hfs_input_dev hfs_capture hfshade_scene_load
                       hfshade_lib m)

@@ -16,10 +16,12 @@
 #ifndef HFS_KIOSK_H
 #define HFS_KIOSK_H
 
+#include <poll.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <sys/types.h>
 
+#include "capture_live.h"
 #include "display.h"
 #include "input_map.h"
 #include "input_set.h"
@@ -65,6 +67,9 @@ typedef struct kiosk_opts {
     int no_devices;                /* --no-devices: configured devices are
                                       not opened (replay or demo only)       */
     int check;                     /* --check: load and check, then exit     */
+    const char *capture_record;    /* --capture-record DIR                   */
+    int exit_after_capture;        /* --exit-after-capture: exit 0 once the
+                                      capture replay's last frame is shown   */
     int amortize;                  /* --amortize N: visibility passes per
                                       frame (hfs_renderer_set_amortize); 0 =
                                       off, the default                       */
@@ -153,6 +158,9 @@ void kiosk_stats_frame(kiosk_stats *s, const kiosk_frame *f, int events);
 void kiosk_stats_event(kiosk_stats *s, const hfs_input_event *ev, int changed,
                        const kiosk_frame *f, int shown);
 void kiosk_stats_reload(kiosk_stats *s, int ok);
+/* "capture SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED SUPERSEDED" after the
+ * frame that showed a capture frame's heights. */
+void kiosk_stats_capture(kiosk_stats *s, const hfs_capture_live *live, const kiosk_frame *f);
 void kiosk_stats_flush(kiosk_stats *s);
 /* Writes "exit"; -1 if any stats write failed (logged when it did). */
 int kiosk_stats_close(kiosk_stats *s, int frames);
@@ -191,6 +199,7 @@ void kiosk_check_stop(kiosk_check *c);
 
 typedef struct kiosk {
     kiosk_opts opt;
+    hfs_capture_live *capture;     /* NULL: no [capture] with role = heights  */
     kiosk_check check;             /* the running reload check, if any       */
     kiosk_world *world;
     kiosk_frame frame;
@@ -206,6 +215,15 @@ typedef struct kiosk {
  * --no-devices.  Errors name the device. */
 int kiosk_inputs_create(const kiosk *k, const hfs_input_config *cfg, hfs_input_set **out,
                         hfs_error *err);
+
+/* Opens the configuration's first role = heights capture (none: nothing
+ * to do) into k->capture; its grid defaults to w's field size. */
+int kiosk_capture_open(kiosk *k, const kiosk_world *w, hfs_error *err);
+/* Takes the newest frame: 1 when the heights changed (w's field now shows
+ * them), 0 otherwise.  Losses and bad frames are logged, never fatal. */
+int kiosk_capture_drain(hfs_capture_live *live, kiosk_world *w);
+/* Points w's field at the capture's heights (after a reload). */
+void kiosk_capture_apply(hfs_capture_live *live, kiosk_world *w);
 
 /* Runs until SIGTERM/SIGINT, a close request, the end of the replay
  * (--exit-after-replay) or a fatal error.  Returns 0 (clean) or 1. */

@@ -152,12 +152,17 @@ static int show(kiosk *k, int events)
     return 0;
 }
 
-/* Relight, render, present, then the stats of the batch.  -1: fatal. */
-static int show_batch(kiosk *k, loop *l)
+/* Relight, render, present, then the stats of the batch.  -1: fatal.
+ * heights: the capture brought new heights (no relight needed). */
+static int show_batch(kiosk *k, loop *l, int heights)
 {
     batch *b = &l->b;
     int shown = 0;
-    if (!b->any_change && k->frame.deferred > 0) {
+    if (heights && !b->any_change) {
+        if (show(k, 0))
+            return -1;
+        kiosk_stats_capture(k->stats, k->capture, &k->frame);
+    } else if (!b->any_change && k->frame.deferred > 0) {
         /* Amortizing: passes still wait for this scene; no event to log. */
         if (show(k, 0))
             return -1;
@@ -170,6 +175,8 @@ static int show_batch(kiosk *k, loop *l)
             if (show(k, b->n))
                 return -1;
             shown = 1;
+            if (heights)
+                kiosk_stats_capture(k->stats, k->capture, &k->frame);
         }
     }
     for (int i = 0; i < b->n; ++i)
@@ -266,6 +273,7 @@ static int reload(kiosk *k, int admitted)
     nw->st.cam_zoom = old->cam_zoom;
     kiosk_world_free(k->world);
     k->world = nw;
+    kiosk_capture_apply(k->capture, k->world); /* the camera's heights, not the file's */
     kiosk_log(KIOSK_INFO, "reloaded %s%s%s", k->opt.scene_path,
               k->opt.input_path ? " and " : "", k->opt.input_path ? k->opt.input_path : "");
     kiosk_stats_reload(k->stats, 1);
@@ -356,7 +364,14 @@ int kiosk_run(kiosk *k)
             kiosk_log(KIOSK_INFO, "replay finished, exiting");
             break;
         }
-        struct pollfd fds[3 + HFS_INPUT_SET_MAX];
+        hfs_capture_live_stats cs = {0};
+        if (k->capture)
+            hfs_capture_live_stats_get(k->capture, &cs);
+        if (k->opt.exit_after_capture && cs.finished && k->frame.deferred == 0) {
+            kiosk_log(KIOSK_INFO, "capture replay finished, exiting");
+            break;
+        }
+        struct pollfd fds[4 + HFS_INPUT_SET_MAX];
         int n = 0;
         fds[n++] = (struct pollfd){.fd = k->sigfd, .events = POLLIN};
         const int dfd = hfs_display_fd(k->display);
@@ -367,6 +382,7 @@ int kiosk_run(kiosk *k)
             fds[n++] = (struct pollfd){.fd = k->check.fd, .events = POLLIN};
         int64_t deadline = INT64_MAX;
         n += hfs_input_set_pollfds(k->inputs, fds + n, HFS_INPUT_SET_MAX, &deadline);
+        n += hfs_capture_live_pollfd(k->capture, fds + n, &deadline);
         if (k->replay) {
             const int64_t d = hfs_input_source_deadline(k->replay);
             deadline = d < deadline ? d : deadline;
@@ -402,7 +418,8 @@ int kiosk_run(kiosk *k)
 
         l->saved = k->world->scene;
         drain(k, &l->b);
-        if (show_batch(k, l)) {
+        const int heights = kiosk_capture_drain(k->capture, k->world);
+        if (show_batch(k, l, heights)) {
             rc = 1;
             break;
         }

@@ -56,6 +56,9 @@ static void usage(FILE *f)
             "  --amortize N          at most N visibility passes a frame while the terrain\n"
             "                        is still; the rest follow in the next frames (NS09 7,\n"
             "                        docs/DESIGN.md \"Frame planner\"); default 0 = off\n"
+            "  --capture-record DIR  write the capture's raw frames and times to DIR\n"
+            "                        (docs/CAPTURE.md \"Recordings\")\n"
+            "  --exit-after-capture  exit 0 once a replayed capture's last frame is shown\n"
             "  --check               load and check every input file, open nothing, exit\n"
             "  --help\n"
             "signals: SIGHUP reloads SCENE.ini and CONFIG.ini; SIGTERM/SIGINT exit cleanly\n",
@@ -98,6 +101,7 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
                     : !strcmp(a, "--no-devices")        ? &o->no_devices
                     : !strcmp(a, "--exit-after-replay") ? &o->exit_after_replay
                     : !strcmp(a, "--check")             ? &o->check
+                    : !strcmp(a, "--exit-after-capture") ? &o->exit_after_capture
                                                         : NULL;
         if (flag) {
             *flag = 1;
@@ -108,6 +112,7 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
                            : !strcmp(a, "--display") ? &o->display
                            : !strcmp(a, "--out")     ? &o->out_pattern
                            : !strcmp(a, "--stats")   ? &o->stats_path
+                           : !strcmp(a, "--capture-record") ? &o->capture_record
                                                      : NULL;
         const int numeric =
             !strcmp(a, "--size") || !strcmp(a, "--exposure") || !strcmp(a, "--amortize");
@@ -159,18 +164,23 @@ static int check_replay(const char *path, int *count, hfs_error *err)
     return HFS_OK;
 }
 
-/* Returns -1 when the stats file could not be written in full. */
+/* Returns non-zero when the stats file or the capture recording could not
+ * be written in full. */
 static int teardown(kiosk *k)
 {
     const int stats_rc = kiosk_stats_close(k->stats, k->frame.presented);
     hfs_input_source_destroy(k->replay);
     hfs_input_set_destroy(k->inputs);
+    hfs_error cerr = {{0}};
+    const int record_rc = hfs_capture_live_close(k->capture, &cerr); /* the recording's end */
+    if (record_rc)
+        kiosk_log(KIOSK_ERR, "%s", cerr.msg);
     kiosk_frame_free(&k->frame);
     hfs_display_close(k->display); /* kms: gives the CRTC back as it was */
     kiosk_world_free(k->world);
     if (k->sigfd >= 0)
         close(k->sigfd);
-    return stats_rc;
+    return stats_rc ? stats_rc : record_rc;
 }
 
 /* The stats file is the kiosk's one output: it must not be any of the
@@ -241,6 +251,18 @@ static int start(kiosk *k)
         /* A device missing at start is an error (a typo must not look like
          * an unplugged knob); say which file named it. */
         kiosk_log(KIOSK_ERR, "%s: %s", o->input_path, err.msg);
+        return 1;
+    }
+    /* A camera (or its recording): before the display, as the knobs. */
+    if (kiosk_capture_open(k, w, &err)) {
+        kiosk_log(KIOSK_ERR, "%s", err.msg);
+        return 1;
+    }
+    hfs_capture_live_stats cs = {0};
+    if (k->capture)
+        hfs_capture_live_stats_get(k->capture, &cs);
+    if (o->exit_after_capture && !cs.replay) {
+        kiosk_log(KIOSK_ERR, "--exit-after-capture needs a [capture NAME] with replay = DIR");
         return 1;
     }
     int rc = hfs_display_open(o->display, &dopts, &k->display, &err);

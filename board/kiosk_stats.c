@@ -11,6 +11,7 @@
  *   frame  N T_PRESENT_NS RENDER_MS PASSES_RAN PASSES_TOTAL EVENTS CPU_US
  *   event  T_EVENT_NS T_PRESENT_NS LATENCY_NS FRAME CHANGED CONTROL
  *   reload T_NS OK CPU_US
+ *   capture SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED SUPERSEDED
  *   exit   T_NS CPU_US FRAMES
  *
  * "frame" is written after hfs_display_present returned, then one "event"
@@ -130,6 +131,22 @@ void kiosk_stats_reload(kiosk_stats *s, int ok)
         return;
     fprintf(s->f, "reload %lld %d %lld\n", (long long)hfs_input_now_ns(), ok,
             (long long)kiosk_cpu_us());
+    check(s);
+}
+
+/* After the frame that showed a capture frame: its sequence number, its
+ * capture time, the present time, the latency, the capture path's thread
+ * CPU (read + record + convert + filter, ns), the frames dropped so far
+ * (sequence gaps, malformed) and those superseded by a newer one so far. */
+void kiosk_stats_capture(kiosk_stats *s, const hfs_capture_live *live, const kiosk_frame *f)
+{
+    if (!s || s->failed || !live)
+        return;
+    hfs_capture_live_stats cs;
+    hfs_capture_live_stats_get(live, &cs);
+    fprintf(s->f, "capture %u %lld %lld %lld %lld %ld %ld\n", cs.sequence, (long long)cs.t_ns,
+            (long long)f->present_ns, (long long)(f->present_ns - cs.t_ns),
+            (long long)cs.cpu_ns, cs.dropped, cs.superseded);
     check(s);
 }
 

@@ -8,6 +8,7 @@
 #include "input_config.h"
 
 #include <linux/input-event-codes.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -137,9 +138,9 @@ static const bad_case bad[] = {
      "or key = value)"},
     {"bad_empty_section.ini", HFS_E_FORMAT, ":2: empty section"},
     {"bad_section_type.ini", HFS_E_FORMAT, ":2: [slider az]: unknown section type 'slider' "
-     "(knob or button)"},
-    {"bad_section_name.ini", HFS_E_FORMAT, ":2: [knob a z]: sections are [knob NAME] or "
-     "[button NAME]"},
+     "(knob, button or capture)"},
+    {"bad_section_name.ini", HFS_E_FORMAT, ":2: [knob a z]: sections are [knob NAME], "
+     "[button NAME] or [capture NAME]"},
     {"bad_light_index.ini", HFS_E_FORMAT, ":4: light: 9 is not a key light index in [0, 7]"},
     {"bad_light_word.ini", HFS_E_FORMAT, ":4: light: 'first' is not 'selected' or an index "
      "in [0, 15]"},
@@ -150,9 +151,43 @@ static const bad_case bad[] = {
     {"bad_accel.ini", HFS_E_FORMAT, ":4: accel: 0.5 is out of range [1, 100]"},
     {"bad_too_many.ini", HFS_E_FORMAT, ":98: more than 32 controls"},
     {"bad_long_line.ini", HFS_E_FORMAT, ":4: line longer than 190 characters"},
-    {"bad_empty.ini", HFS_E_FORMAT, ": no [knob NAME] or [button NAME] sections"},
+    {"bad_empty.ini", HFS_E_FORMAT, ": no [knob NAME], [button NAME] or [capture NAME] sections"},
+    {"bad_capture_format.ini", HFS_E_FORMAT, ":4: format: role heights needs depth (Z16 or "
+     "Y16), not YUYV"},
+    {"bad_capture_roi.ini", HFS_E_FORMAT, ":5: roi: 600 0 100 100 is outside the 640x480 "
+     "frame"},
+    {"bad_capture_nosource.ini", HFS_E_FORMAT, ":2: [capture cam]: give device = PATH or "
+     "replay = DIR (one of them)"},
+    {"bad_capture_role.ini", HFS_E_FORMAT, ":4: role: environment is not yet supported (only "
+     "heights; the environment role needs the environment-map decomposition)"},
+    {"bad_capture_plane.ini", HFS_E_FORMAT, ":4: plane: '0 0' is not 'auto' or A B C (metres; "
+     "C > 0)"},
+    {"bad_capture_key.ini", HFS_E_FORMAT, ":4: unknown capture key 'zoom' (known: device, "
+     "replay, loop, format, size, rate, buffers, role, depth_scale, min_depth, max_depth, "
+     "plane, roi, grid, zgain, window, gate_mm, hysteresis_mm, jump_mm)"},
     {"missing.ini", HFS_E_IO, ": cannot open input configuration: No such file or directory"},
 };
+
+/* A file with only a camera: every key read. */
+static void capture_only(void)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/capture_only.ini", data_dir);
+    hfs_input_config cfg;
+    hfs_error err = {{0}};
+    CHECK(hfs_input_config_load(path, &cfg, &err) == 0, "capture_only: %s", err.msg);
+    const hfs_capture_config *c = &cfg.captures.c[0];
+    const hfs_depth_params *p = &c->depth;
+    CHECK(cfg.n_controls == 0 && cfg.captures.n == 1 && !strcmp(c->name, "cam") &&
+              !strcmp(c->replay, "rec") && c->loop && c->width == 512 && c->height == 384 &&
+              c->role == HFS_ROLE_HEIGHTS && c->format == HFS_PIX_Z16 && c->config_line == 2,
+          "capture_only: the section");
+    CHECK(p->roi[2] == 512 && p->grid_w == 128 && p->grid_h == 96 && p->plane_set &&
+              p->plane[2] == 1.05 && p->scale == 0.0001 && p->window == 4 &&
+              fabs(p->gate - 0.002) < 1e-12 && fabs(p->hysteresis - 0.001) < 1e-12 &&
+              fabs(p->jump - 0.008) < 1e-12 && p->zgain == 10 && p->min_depth == 0.3 &&
+              p->max_depth == 2, "capture_only: the depth parameters");
+}
 
 static void broken(void)
 {
@@ -181,6 +216,7 @@ int main(int argc, char **argv)
     kiosk(argv[2]);
     defaults();
     broken();
+    capture_only();
     if (failures)
         fprintf(stderr, "test_input_config: %d failure(s)\n", failures);
     return failures ? 1 : 0;

@@ -8,11 +8,14 @@ set -eu
 # plots.  libx11-dev, libgbm-dev and libdrm-dev build the x11 and kms
 # displays (board/DISPLAY.md); xvfb and xauth run the window test.
 # libgpiod-dev and libevdev-dev are the input sources (board/DEVICES.md);
-# umockdev emulates an evdev node for their test.
+# umockdev emulates an evdev node for their test.  linux-libc-dev: the
+# kernel headers (linux/videodev2.h) the V4L2 capture source is written
+# against (docs/CAPTURE.md; build-essential pulls it in already).
 PKGS="build-essential cmake pkg-config libpng-dev libinih-dev libstb-dev
       libopenexr-dev libegl-dev libgles-dev libosmesa6-dev libegl-mesa0
       libgl1-mesa-dri glslang-tools clang libclang-rt-14-dev llvm gnuplot-nox
-      libx11-dev libgbm-dev libdrm-dev xvfb xauth libgpiod-dev libevdev-dev umockdev"
+      libx11-dev libgbm-dev libdrm-dev xvfb xauth libgpiod-dev libevdev-dev umockdev
+      linux-libc-dev"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"

@@ -1,0 +1,59 @@
+# capture.cmake — camera inputs (docs/CAPTURE.md) without a camera:
+#   test_capture         the V4L2 source against the fake device
+#                        (capture_fake.c: buffer ownership, queue order,
+#                        EAGAIN, a skipped sequence number, a short frame,
+#                        ENODEV mid-stream and the back-off, a driver that
+#                        changes the size), hfs-capture-info's listing,
+#                        recordings and their replay ("unit")
+#   test_depth_heights   plane fit, resampling, holes, the temporal filter
+#                        on the synthetic sandbox: noise before/after, lag
+#                        ("unit")
+#   test_capture_real    a real /dev/video* device: listed and, where it
+#                        offers Z16, streamed; 77 where none exists
+#   kiosk_capture        hfshade-kiosk replaying a synthetic recording:
+#                        frames shown, capture stats, a broken frame file
+#                        mid-stream survived ("gl": 77 without GLES)
+
+hfs_add_test(test_capture
+  SOURCES test_capture.c capture_fake.c
+  LIBS hfs_capture m LABEL unit TIMEOUT 60)
+hfs_add_test(test_depth_heights
+  SOURCES test_depth_heights.c
+  LIBS hfs_capture m LABEL unit TIMEOUT 120)
+hfs_add_test(test_capture_real
+  SOURCES test_capture_real.c
+  LIBS hfs_capture LABEL unit TIMEOUT 60)
+if(TARGET hfshade-kiosk)
+  add_test(NAME kiosk_capture
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/kiosk_capture.sh
+                   $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfs-capture-synth>
+                   $<TARGET_FILE:hfgen>)
+  set_tests_properties(kiosk_capture PROPERTIES LABELS gl TIMEOUT 300 SKIP_RETURN_CODE 77)
+endif()
+if(HFS_SANITIZE AND TARGET hfshade-kiosk)
+  # As the kiosk's GL tests: Mesa/LLVM leaks only are suppressed.
+  set_property(TEST kiosk_capture APPEND PROPERTY ENVIRONMENT
+               "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+endif()
+
+# A camera unplugged under a running kiosk: the fake device behind the C
+# library's calls (LD_PRELOAD shim), ENODEV mid-stream, back 400 ms later.
+#   kiosk_capture_loss   one warning, one "back", frames before and after,
+#                        exit 0 on SIGTERM ("gl": 77 without GLES)
+add_library(hfs_capture_preload MODULE capture_preload.c capture_fake.c)
+target_include_directories(hfs_capture_preload PRIVATE ${PROJECT_SOURCE_DIR}/board
+                           ${PROJECT_SOURCE_DIR}/runtime)
+target_link_libraries(hfs_capture_preload PRIVATE ${CMAKE_DL_LIBS} Threads::Threads)
+# The interposed calls must be exported (the project hides symbols by default).
+set_target_properties(hfs_capture_preload PROPERTIES C_VISIBILITY_PRESET default)
+if(TARGET hfshade-kiosk)
+  add_test(NAME kiosk_capture_loss
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/kiosk_capture_loss.sh
+                   $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfs_capture_preload>
+                   $<TARGET_FILE:hfgen>)
+  set_tests_properties(kiosk_capture_loss PROPERTIES LABELS gl TIMEOUT 300 SKIP_RETURN_CODE 77)
+  if(HFS_SANITIZE)
+    set_property(TEST kiosk_capture_loss APPEND PROPERTY ENVIRONMENT
+                 "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+  endif()
+endif()
