@@ -405,6 +405,9 @@ kiosk_session() { # NAME SEQUENCE... : each step "good", "refused", "bad", "fifo
     [ -z "$ONLY" ] || [ "$ONLY" = kiosk ] || return 0
     cases=$((cases + 1)); n_class[kiosk]=$(( ${n_class[kiosk]:-0} + 1 ))
     cp "$in/good.ini" "$in/live.ini"
+    # Emptied here, not by the redirection alone: that happens in the
+    # child, and a poll before it would find the last session's "started".
+    : >"$w.klog"
     HFS_GL_STRICT_LIMITS=1 "$KIOSK" "$in/live.ini" --display headless 2>"$w.klog" &
     local pid=$! why="" step t0
     local started=0
@@ -457,6 +460,7 @@ if [ -z "$ONLY" ] || [ "$ONLY" = kiosk ]; then
     "$HFGEN" fractal --size 1536x1536 -o "$in/big.pfm" >/dev/null
     printf 'height = %s/big.pfm\nenv-sh = %s\nbackend = gles\nkey = 30,20,2,10\n' "$in" "$sky" >"$in/big.ini"
     cp "$in/good.ini" "$in/live.ini"
+    : >"$w.klog" # as kiosk_session: no stale "started"
     HFS_GL_STRICT_LIMITS=1 "$KIOSK" "$in/live.ini" --display headless 2>"$w.klog" &
     pid=$! why=""
     for _ in $(seq 50); do grep -q started "$w.klog" && break; sleep 0.1; done
