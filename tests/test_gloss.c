@@ -246,6 +246,11 @@ static void check_gles(const scene *s)
     rc = hfs_renderer_render(r, &s->f, &le, &q, &f, NULL, NULL, &err);
     rc |= render(HFS_BACKEND_CPU, s, &le, &q, &c);
     gles_against_cpu(rc, &f, &c, "an eye");
+    /* The eye moved on the kept renderer: reshaded, = the CPU's there. */
+    le.view_eye[0] = -12.0;
+    rc = hfs_renderer_render(r, &s->f, &le, &q, &f, NULL, NULL, &err);
+    rc |= render(HFS_BACKEND_CPU, s, &le, &q, &c);
+    gles_against_cpu(rc, &f, &c, "a moved eye");
     /* A new view direction on the kept renderer: shading only, = fresh. */
     l.view_dir[0] = 0.0, l.view_dir[1] = 0.6, l.view_dir[2] = 0.8;
     rc |= hfs_renderer_render(r, &s->f, &l, &q, &g, NULL, NULL, &err);
