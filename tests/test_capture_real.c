@@ -16,13 +16,13 @@ int main(void)
 {
     glob_t g;
     if (glob("/dev/video*", 0, NULL, &g) != 0 || g.gl_pathc == 0) {
-        printf("test_capture_real: no /dev/video* here: skipped\n");
+        printf("SKIP: test_capture_real: no /dev/video* device here\n");
         return 77;
     }
     int rc = 0;
     const char *dev = g.gl_pathv[0];
     if (access(dev, R_OK | W_OK) != 0) { /* not ours to test (group video) */
-        printf("test_capture_real: %s is not accessible: skipped\n", dev);
+        printf("SKIP: test_capture_real: %s is not accessible\n", dev);
         globfree(&g);
         return 77;
     }
