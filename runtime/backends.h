@@ -25,6 +25,9 @@ int hfs_cpu_query_points(const hfs_field *f, const hfs_lighting *l, const hfs_qu
                          const double *xyz, int n, float *vis, hfs_error *err);
 int hfs_truth_query_points(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                            const double *xyz, int n, float *vis, hfs_error *err);
+/* One layer of key light k's shadow height map into out (W*H, world z). */
+int hfs_cpu_shadow_height_map(const hfs_field *f, const hfs_key_light *k, const hfs_quality *q,
+                              int layer, float *out, hfs_error *err);
 
 /* Ground truth (truth_*.c): brute force per SPEC. */
 int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
@@ -57,6 +60,9 @@ int hfs_gles_render_view(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
 int hfs_gles_query_points(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                           const hfs_quality *q, const double *xyz, int n, float *vis,
                           hfs_error *err);
+/* One layer of key light k's shadow height map into out (W*H, world z). */
+int hfs_gles_shadow_height_map(hfs_gles *g, const hfs_field *f, const hfs_key_light *k,
+                               const hfs_quality *q, int layer, float *out, hfs_error *err);
 void hfs_gles_set_timing(hfs_gles *g, int level);
 void hfs_gles_set_amortize(hfs_gles *g, int passes_per_frame); /* hfshade.h */
 void hfs_gles_set_timing_finish(hfs_gles *g, int finish);        /* hfshade.h */

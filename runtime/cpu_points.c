@@ -35,3 +35,15 @@ int hfs_cpu_query_points(const hfs_field *f, const hfs_lighting *l, const hfs_qu
     free(maps);
     return HFS_OK;
 }
+
+int hfs_cpu_shadow_height_map(const hfs_field *f, const hfs_key_light *k, const hfs_quality *q,
+                              int layer, float *out, hfs_error *err)
+{
+    float *scratch = malloc((size_t)f->width * (size_t)f->height * sizeof *scratch);
+    if (!scratch)
+        return hfs_fail(err, HFS_E_NOMEM, "shadow height map: out of memory");
+    hfs_shm_build(f, k->phi, hfs_shm_layer_elevation(k->elev, k->alpha, layer), out, scratch,
+                  q->threads);
+    free(scratch);
+    return HFS_OK;
+}

@@ -403,6 +403,25 @@ HFS_API int hfs_renderer_query_points(hfs_renderer *r, const hfs_field *field,
                                       const hfs_lighting *lighting, const hfs_quality *quality,
                                       const double *xyz, int n, float *vis, hfs_error *err);
 
+/* Shadow height maps per key light: layers at HFS_SHM_LAYERS elevations
+ * across its disk, e + alpha (2 m / (HFS_SHM_LAYERS - 1) - 1), m = 0 its
+ * lowest edge, HFS_SHM_LAYERS / 2 its centre. */
+#define HFS_SHM_LAYERS 5
+
+/* The shadow height map of layer `layer` of key light `key`, for an
+ * application's own shader (its objects' key-light shadows): out gets W x
+ * H floats, row-major like the heights (row j = 0 first), in world z; a
+ * point (x, y, z) in world units sees that elevation of the light iff z >=
+ * S read bilinearly at grid position (x / dx, y / dx) (clamped to the
+ * grid).  Upload it as an R32F or fp16 (hi, lo) texture as the
+ * application's profile allows.  The CPU reference and GLES build it as
+ * the point queries do (the same map, GLES = CPU to fp16's hi + lo); the
+ * truth has none (HFS_E_UNSUPPORTED: it answers points by exact rays). */
+HFS_API int hfs_renderer_shadow_height_map(hfs_renderer *r, const hfs_field *field,
+                                           const hfs_lighting *lighting,
+                                           const hfs_quality *quality, int key, int layer,
+                                           float *out, hfs_error *err);
+
 /* ---- measurement ------------------------------------------------------------ */
 
 #define HFS_MAX_PASSES 16

@@ -46,6 +46,9 @@ typedef struct backend_ops {
     int (*query_points)(void *state, const hfs_field *f, const hfs_lighting *l,
                         const hfs_quality *q, const double *xyz, int n, float *vis,
                         hfs_error *err);
+    /* One layer of a key light's shadow height map (NULL: none). */
+    int (*shadow_map)(void *state, const hfs_field *f, const hfs_key_light *k,
+                      const hfs_quality *q, int layer, float *out, hfs_error *err);
 } backend_ops;
 
 static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
@@ -116,14 +119,27 @@ static int gles_query(void *state, const hfs_field *f, const hfs_lighting *l,
     return hfs_gles_query_points(state, f, l, q, xyz, n, vis, err);
 }
 
+static int cpu_shadow_map(void *state, const hfs_field *f, const hfs_key_light *k,
+                          const hfs_quality *q, int layer, float *out, hfs_error *err)
+{
+    (void)state;
+    return hfs_cpu_shadow_height_map(f, k, q, layer, out, err);
+}
+static int gles_shadow_map(void *state, const hfs_field *f, const hfs_key_light *k,
+                           const hfs_quality *q, int layer, float *out, hfs_error *err)
+{
+    return hfs_gles_shadow_height_map(state, f, k, q, layer, out, err);
+}
+
 static const backend_ops backends[] = {
     [HFS_BACKEND_GLES] = {"gles", gles_create, gles_destroy, gles_render, gles_set_timing,
                           gles_set_amortize, gles_set_timing_finish, gles_timings,
-                          gles_invalidate, gles_frame_report, gles_render_view, 0, gles_query},
+                          gles_invalidate, gles_frame_report, gles_render_view, 0, gles_query,
+                          gles_shadow_map},
     [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL,
-                         NULL, 0, cpu_query},
+                         NULL, 0, cpu_query, cpu_shadow_map},
     [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL,
-                           NULL, NULL, 1, truth_query},
+                           NULL, NULL, 1, truth_query, NULL},
 };
 #define N_BACKENDS ((int)(sizeof backends / sizeof backends[0]))
 
@@ -422,4 +438,21 @@ int hfs_renderer_query_points(hfs_renderer *r, const hfs_field *f, const hfs_lig
     }
     return n > 0 && l->n_key > 0 ? r->ops->query_points(r->state, f, l, q, xyz, n, vis, err)
                                  : HFS_OK;
+}
+
+int hfs_renderer_shadow_height_map(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
+                                   const hfs_quality *q, int key, int layer, float *out,
+                                   hfs_error *err)
+{
+    int rc = validate_frame(r, f, l, q, err);
+    if (rc)
+        return rc;
+    if (key < 0 || key >= l->n_key || layer < 0 || layer >= HFS_SHM_LAYERS || !out)
+        return hfs_fail(err, HFS_E_INVALID, "shadow height map: key light %d of %d, layer %d "
+                        "of %d%s", key + 1, l->n_key, layer, HFS_SHM_LAYERS,
+                        out ? "" : ", no output array");
+    if (!r->ops->shadow_map)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "shadow height map: the %s backend has none "
+                        "(it answers points by exact rays)", r->ops->name);
+    return r->ops->shadow_map(r->state, f, &l->key[key], q, layer, out, err);
 }

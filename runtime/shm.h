@@ -35,7 +35,7 @@
 
 #include "hfshade.h"
 
-#define HFS_SHM_LAYERS 5 /* elevations across a disk light */
+/* HFS_SHM_LAYERS (hfshade.h): the elevations across a disk light. */
 
 /* Doubling passes that cover every distance a w x h grid holds. */
 int hfs_shm_passes(int w, int h);

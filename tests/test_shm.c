@@ -14,9 +14,12 @@
  *             sun: the CPU's fractions against the truth's rays (mean, and
  *             the points on the wrong side of one half)
  *   flat      a flat field lights every point above it fully
- *   errors    a point off the field and a non-finite one: one-line errors
+ *   errors    a point off the field and a non-finite one: one-line errors;
+ *             the exported map (hfs_renderer_shadow_height_map) is the CPU's
+ *             build, a bad layer and the truth are refused
  *   gles      (argv "gles" [fp16|fp32]; skipped with 77 without a context)
- *             the GLES maps against the CPU's on the cones' points
+ *             the GLES maps against the CPU's on the cones' points, and
+ *             the exported centre map
  */
 #include "gl_test.h"
 #include "shm_points.h"
@@ -201,6 +204,27 @@ static void test_flat_and_errors(void)
     CHECK(query(HFS_BACKEND_TRUTH, &f, &l, xyz, 2, v, &err) == HFS_E_INVALID &&
           strstr(err.msg, "point 1"));
     printf("errors: %s\n", err.msg);
+    /* The exported map: the CPU's is the shm.c build of that layer; a
+     * layer out of range and the truth are refused. */
+    float m[64], want[64], tmp[64];
+    hfs_renderer *r = NULL;
+    hfs_renderer_desc d = {.backend = HFS_BACKEND_CPU};
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    REQUIRE(hfs_renderer_create(&d, &r, &err) == HFS_OK, "create: %s", err.msg);
+    CHECK(hfs_renderer_shadow_height_map(r, &f, &l, &q, 0, 1, m, &err) == HFS_OK);
+    hfs_shm_build(&f, l.key[0].phi, hfs_shm_layer_elevation(l.key[0].elev, l.key[0].alpha, 1),
+                  want, tmp, 1);
+    CHECK(!memcmp(m, want, sizeof m));
+    CHECK(hfs_renderer_shadow_height_map(r, &f, &l, &q, 0, HFS_SHM_LAYERS, m, &err) ==
+          HFS_E_INVALID && strstr(err.msg, "layer"));
+    printf("errors: %s\n", err.msg);
+    hfs_renderer_destroy(r);
+    d.backend = HFS_BACKEND_TRUTH;
+    REQUIRE(hfs_renderer_create(&d, &r, &err) == HFS_OK, "create: %s", err.msg);
+    CHECK(hfs_renderer_shadow_height_map(r, &f, &l, &q, 0, 0, m, &err) == HFS_E_UNSUPPORTED);
+    printf("errors: %s\n", err.msg);
+    hfs_renderer_destroy(r);
     free(z);
 }
 
@@ -230,6 +254,24 @@ static void test_gles(hfs_precision precision)
     printf("gles: %s, %d points against the cpu: mean %.2e, max %.2e\n",
            precision == HFS_PRECISION_FP32 ? "fp32" : "fp16", n, mean, worst);
     CHECK(mean <= GLES_MEAN && worst <= GLES_MAX);
+    /* The exported map (the centre layer): GLES against the CPU's, in
+     * units of the field's height range (fp16 hi + lo: ~2^-21). */
+    float *mg = malloc(sizeof(float) * 64 * 64), *mc = malloc(sizeof(float) * 64 * 64);
+    hfs_renderer *c = NULL;
+    hfs_renderer_desc cd = {.backend = HFS_BACKEND_CPU};
+    REQUIRE(hfs_renderer_create(&cd, &c, &err) == HFS_OK, "cpu: %s", err.msg);
+    REQUIRE(hfs_renderer_shadow_height_map(g, &f, &l, &q, 0, HFS_SHM_LAYERS / 2, mg, &err) ==
+                HFS_OK && hfs_renderer_shadow_height_map(c, &f, &l, &q, 0, HFS_SHM_LAYERS / 2,
+                                                         mc, &err) == HFS_OK,
+            "map: %s", err.msg);
+    double dmax = 0.0;
+    for (int p = 0; p < 64 * 64; ++p)
+        dmax = fmax(dmax, fabs((double)mg[p] - mc[p]) / 14.0); /* the cones' range */
+    printf("gles: the exported centre map against the cpu's: max %.2e of the height range\n",
+           dmax);
+    CHECK(dmax <= 1e-5); /* measured below 1e-6 */
+    hfs_renderer_destroy(c);
+    free(mg), free(mc);
     hfs_renderer_destroy(g);
     free(z);
 }

@@ -95,30 +95,51 @@ static int build(hfs_gles *g, const hfs_gles_layout *L, const hfs_field *f, shm_
     return rc;
 }
 
+/* Current context, the profile a frame at q's precision would use
+ * (gles_frame.c), the layout, and the two targets. */
+static int begin(hfs_gles *g, const hfs_field *f, const hfs_quality *q, hfs_gles_layout *L,
+                 shm_targets *t, hfs_error *err)
+{
+    int rc = hfs_gl_context_make_current(g->ctx, err);
+    if (rc || (rc = hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL,
+                                       q->precision == HFS_PRECISION_FP32, g->strict_limits,
+                                       &g->caps, err)) ||
+        (rc = hfs_gles_layout_init(L, f, q, err)) ||
+        (rc = hfs_gl_caps_check_texture(&g->caps, L->w, L->h, 1, "shadow height map", err)))
+        return rc;
+    for (int k = 0; k < 2 && !rc; ++k) { /* RGBA: read back as every target is */
+        t->tex[k] = hfs_gles_tex_new(&g->gl, GL_TEXTURE_2D, g->caps.fmt_rgba, L->w, L->h, 1, 0);
+        rc = hfs_gles_fbo_new(&g->gl, &t->fbo[k], 1, &t->tex[k], NULL, "shadow height map", err);
+    }
+    return rc;
+}
+
+int hfs_gles_shadow_height_map(hfs_gles *g, const hfs_field *f, const hfs_key_light *k,
+                               const hfs_quality *q, int layer, float *out, hfs_error *err)
+{
+    hfs_gles_layout L;
+    shm_targets t = {{0, 0}, {0, 0}};
+    int rc = begin(g, f, q, &L, &t, err);
+    if (!rc)
+        rc = build(g, &L, f, &t, k->phi, hfs_shm_layer_elevation(k->elev, k->alpha, layer), out,
+                   err);
+    targets_free(&g->gl, &t);
+    return rc ? rc : hfs_gl_check(&g->gl, "backend gles: shadow height map", err);
+}
+
 int hfs_gles_query_points(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                           const hfs_quality *q, const double *xyz, int n, float *vis,
                           hfs_error *err)
 {
-    int rc = hfs_gl_context_make_current(g->ctx, err);
     hfs_gles_layout L;
-    /* The profile a frame at q's precision would use (gles_frame.c). */
-    if (rc || (rc = hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL,
-                                       q->precision == HFS_PRECISION_FP32, g->strict_limits,
-                                       &g->caps, err)) ||
-        (rc = hfs_gles_layout_init(&L, f, q, err)) ||
-        (rc = hfs_gl_caps_check_texture(&g->caps, L.w, L.h, 1, "shadow height map", err)))
-        return rc;
-    const hfs_gl *gl = &g->gl;
-    const size_t cells = (size_t)L.w * (size_t)L.h;
-    float *maps = malloc(HFS_SHM_LAYERS * cells * sizeof *maps);
-    if (!maps)
-        return hfs_fail(err, HFS_E_NOMEM, "query: out of memory for %d shadow height maps",
-                        HFS_SHM_LAYERS);
     shm_targets t = {{0, 0}, {0, 0}};
-    for (int k = 0; k < 2 && !rc; ++k) { /* RGBA: read back as every target is */
-        t.tex[k] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, g->caps.fmt_rgba, L.w, L.h, 1, 0);
-        rc = hfs_gles_fbo_new(gl, &t.fbo[k], 1, &t.tex[k], NULL, "shadow height map", err);
-    }
+    int rc = begin(g, f, q, &L, &t, err);
+    const hfs_gl *gl = &g->gl;
+    const size_t cells = (size_t)f->width * (size_t)f->height;
+    float *maps = rc ? NULL : malloc(HFS_SHM_LAYERS * cells * sizeof *maps);
+    if (!rc && !maps)
+        rc = hfs_fail(err, HFS_E_NOMEM, "query: out of memory for %d shadow height maps",
+                      HFS_SHM_LAYERS);
     for (int k = 0; k < l->n_key && !rc; ++k) {
         const hfs_key_light *kl = &l->key[k];
         for (int m = 0; m < HFS_SHM_LAYERS && !rc; ++m)
