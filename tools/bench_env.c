@@ -153,7 +153,7 @@ static int track(int frames)
         hfs_env_tracker_init(&t, NULL);
         if (getenv("BENCH_ENV_GAIN"))
             sscanf(getenv("BENCH_ENV_GAIN"), "%lf,%lf", &t.gain, &t.vel_gain);
-        hfs_env_decomp prev, cur;
+        hfs_env_decomp prev = {0}, cur = {0}; /* prev read from the second frame on */
         track_stats s = {0, 0, 0, 0};
         double worst_ms = 0.0, *ms = malloc((size_t)frames * sizeof *ms);
         int nmin = 99, nmax = 0;
