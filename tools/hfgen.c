@@ -28,6 +28,9 @@
  * (integer hashing, no libc random).  Output is PFM "Pf", row j = 0 first.
  */
 #include "hfs_io.h"
+#ifdef HFS_HAVE_GDAL
+#include "height_gdal.h"
+#endif
 #include "sky_gen.h"
 #include "terrain_gen.h"
 
@@ -139,6 +142,9 @@ static int sky_map(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+#ifdef HFS_HAVE_GDAL
+    hfs_gdal_register(); /* hfgen crop reads GeoTIFF, SRTM .hgt, VRT ... */
+#endif
     if (argc < 2) {
         usage();
         return 2;

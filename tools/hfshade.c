@@ -21,6 +21,9 @@
 #include "median.h"
 #include "cli_query.h"
 #include "cli_view.h"
+#ifdef HFS_HAVE_GDAL
+#include "height_gdal.h"
+#endif
 #include "cli_envmap.h"
 
 #include <float.h>
@@ -255,6 +258,8 @@ static int load_inputs(const cli *c, scene_inputs *in, hfs_error *err)
     int rc = hfs_scene_inputs_load(&c->scene, in, err);
     if (rc)
         return rc;
+    if (in->hm.note[0] && !c->quiet)
+        fprintf(stderr, "%s\n", in->hm.note);
     if (in->hm.holes > 0 && !c->quiet)
         fprintf(stderr, "%s: filled %ld hole%s (nodata)\n", c->scene.height, in->hm.holes,
                 in->hm.holes == 1 ? "" : "s");
@@ -495,6 +500,9 @@ int main(int argc, char **argv)
         usage(stderr);
         return EXIT_USAGE;
     }
+#ifdef HFS_HAVE_GDAL
+    hfs_gdal_register(); /* GeoTIFF, SRTM .hgt, VRT ... as height fields */
+#endif
     cli c;
     memset(&c, 0, sizeof c);
     hfs_scene_init(&c.scene);

@@ -15,7 +15,7 @@ PKGS="build-essential cmake pkg-config libpng-dev libinih-dev libstb-dev
       libopenexr-dev libegl-dev libgles-dev libosmesa6-dev libegl-mesa0
       libgl1-mesa-dri glslang-tools clang libclang-rt-14-dev llvm gnuplot-nox
       libx11-dev libgbm-dev libdrm-dev xvfb xauth libgpiod-dev libevdev-dev umockdev
-      linux-libc-dev"
+      linux-libc-dev libgdal-dev"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"

@@ -98,6 +98,7 @@ static const char *format_name(hfs_height_format f)
     case HFS_HEIGHT_PFM: return "PFM";
     case HFS_HEIGHT_ASC: return "ESRI ASCII grid";
     case HFS_HEIGHT_RAW_F32: return "raw float32";
+    case HFS_HEIGHT_EXTERNAL: return "GDAL raster";
     default: return "unknown";
     }
 }
@@ -163,6 +164,13 @@ static int resolve_opts(const char *path, const hfs_height_load_opts *opts, hfs_
     return HFS_OK;
 }
 
+static hfs_height_loader_fn extra_loader;
+
+void hfs_height_set_extra_loader(hfs_height_loader_fn fn)
+{
+    extra_loader = fn;
+}
+
 int hfs_height_load(const char *path, const hfs_height_load_opts *opts, hfs_heightmap *out,
                     hfs_error *err)
 {
@@ -213,6 +221,9 @@ int hfs_height_load(const char *path, const hfs_height_load_opts *opts, hfs_heig
     } else if (other) {
         rc = hfs_fail(err, HFS_E_UNSUPPORTED, "%s: this is %s, not a height field", path, other);
         goto out;
+    } else if (extra_loader && !o.raw_w &&
+               (rc = extra_loader(path, opts, out, err)) != HFS_E_UNSUPPORTED) {
+        goto out; /* read (or refused with its own message) by the extra loader */
     } else if (o.raw_w) {
         fmt = HFS_HEIGHT_RAW_F32;
     } else {

@@ -70,7 +70,8 @@ typedef enum hfs_height_format {
     HFS_HEIGHT_PGM,       /* P5 (binary) or P2 (ASCII), maxval 1..65535     */
     HFS_HEIGHT_PFM,       /* "Pf" greyscale float32                         */
     HFS_HEIGHT_ASC,       /* ESRI ASCII grid                                */
-    HFS_HEIGHT_RAW_F32    /* little-endian float32, size from the options   */
+    HFS_HEIGHT_RAW_F32,   /* little-endian float32, size from the options   */
+    HFS_HEIGHT_EXTERNAL   /* read by the extra loader (hfs_height_set_extra_loader) */
 } hfs_height_format;
 
 /* Zero means default for every field; a NULL opts pointer is all defaults. */
@@ -92,7 +93,19 @@ typedef struct hfs_heightmap {
     long holes;           /* texels that were nodata and have been filled   */
     double cellsize;      /* .asc cellsize (suggested dx); 0 = not given    */
     hfs_height_format format;
+    char note[200];       /* what a loader changed, for the log ("" none)   */
 } hfs_heightmap;
+
+/* A loader for formats this library does not read itself (the tools' GDAL
+ * module, tools/gdal/height_gdal.h): hfs_height_load calls it for a file
+ * whose content matches none of its signatures, before the raw float32
+ * fallback; it returns HFS_E_UNSUPPORTED when it cannot read the file
+ * either (the usual "unrecognised format" error follows), else its own
+ * result with *out filled as hfs_height_load fills it (holes filled).
+ * NULL (default): none.  Set once at start-up, before loading. */
+typedef int (*hfs_height_loader_fn)(const char *path, const hfs_height_load_opts *opts,
+                                    hfs_heightmap *out, hfs_error *err);
+HFS_API void hfs_height_set_extra_loader(hfs_height_loader_fn fn);
 
 /*
  * Loads a height field.  The format comes from the file name's extension

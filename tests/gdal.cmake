@@ -1,0 +1,7 @@
+# The tools' GDAL height module (tools/gdal, issue 20): GeoTIFF in UTM and
+# in degrees, south-up, SRTM .hgt, VRT, refusals (test_gdal_dem.c).  Only
+# where GDAL is installed (tools/install-deps.sh installs it).
+if(TARGET hfshade_gdal)
+  hfs_add_test(test_gdal_dem SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gdal_dem.c
+               LIBS hfshade_gdal LABEL io TIMEOUT 120)
+endif()

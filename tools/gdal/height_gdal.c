@@ -1,0 +1,172 @@
+/*
+ * height_gdal.c — see height_gdal.h.
+ */
+#include "height_gdal.h"
+
+#include <cpl_error.h>
+#include <gdal.h>
+#include <ogr_srs_api.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+/* The cell's east-west and north-south sizes in metres (0 when unknown). */
+static void cell_metres(GDALDatasetH ds, const double gt[6], int h, double *cx, double *cy)
+{
+    *cx = fabs(gt[1]), *cy = fabs(gt[5]);
+    const char *wkt = GDALGetProjectionRef(ds);
+    if (!wkt || !*wkt)
+        return; /* no CRS: the geotransform's own units */
+    OGRSpatialReferenceH srs = OSRNewSpatialReference(wkt);
+    if (!srs)
+        return;
+    if (OSRIsGeographic(srs)) {
+        OGRErr e1 = OGRERR_NONE, e2 = OGRERR_NONE;
+        const double a = OSRGetSemiMajor(srs, &e1), inv_f = OSRGetInvFlattening(srs, &e2);
+        const double f = inv_f > 0.0 ? 1.0 / inv_f : 0.0, e2sq = f * (2.0 - f);
+        const double lat = (gt[3] + gt[5] * 0.5 * h) * PI / 180.0, s = sin(lat);
+        const double w = 1.0 - e2sq * s * s;
+        const double n_rad = a / sqrt(w), m_rad = a * (1.0 - e2sq) / (w * sqrt(w));
+        *cx *= PI / 180.0 * n_rad * cos(lat);
+        *cy *= PI / 180.0 * m_rad;
+    } else {
+        const double unit = OSRGetLinearUnits(srs, NULL); /* metres per unit */
+        *cx *= unit > 0.0 ? unit : 1.0;
+        *cy *= unit > 0.0 ? unit : 1.0;
+    }
+    OSRDestroySpatialReference(srs);
+}
+
+/* Resamples z (w x h, cells cx x cy) to square cells of min(cx, cy),
+ * bilinearly; *z, *w, *h replaced.  0, or HFS_E_NOMEM. */
+static int make_square(float **z, int *w, int *h, double cx, double cy, double *cell)
+{
+    const double d = cx < cy ? cx : cy;
+    const int nw = (int)lround((*w - 1) * cx / d) + 1, nh = (int)lround((*h - 1) * cy / d) + 1;
+    float *out = malloc((size_t)nw * (size_t)nh * sizeof *out);
+    if (!out)
+        return HFS_E_NOMEM;
+    for (int j = 0; j < nh; ++j)
+        for (int i = 0; i < nw; ++i) {
+            const double gx = fmin(i * d / cx, *w - 1.0), gy = fmin(j * d / cy, *h - 1.0);
+            const int i0 = gx >= *w - 1 ? *w - 2 : (int)gx, j0 = gy >= *h - 1 ? *h - 2 : (int)gy;
+            const double fx = gx - i0, fy = gy - j0;
+            const float *r0 = *z + (size_t)j0 * (size_t)*w + (size_t)i0, *r1 = r0 + *w;
+            const double a = r0[0] + fx * ((double)r0[1] - r0[0]);
+            const double b = r1[0] + fx * ((double)r1[1] - r1[0]);
+            out[(size_t)j * (size_t)nw + (size_t)i] = (float)(a + fy * (b - a));
+        }
+    free(*z);
+    *z = out, *w = nw, *h = nh, *cell = d;
+    return HFS_OK;
+}
+
+/* Band 1 into *z (north row first), with its nodata (or opts') as holes. */
+static int read_band(GDALDatasetH ds, const char *path, const hfs_height_load_opts *opts,
+                     const double gt[6], float **z, hfs_error *err)
+{
+    const int w = GDALGetRasterXSize(ds), h = GDALGetRasterYSize(ds);
+    GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+    *z = malloc((size_t)w * (size_t)h * sizeof **z);
+    if (!*z)
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory for %dx%d heights", path, w, h);
+    if (GDALRasterIO(band, GF_Read, 0, 0, w, h, *z, w, h, GDT_Float32, 0, 0) != CE_None)
+        return hfs_fail(err, HFS_E_FORMAT, "%s: GDAL could not read its band 1 (%s)", path,
+                        CPLGetLastErrorMsg());
+    int has_nd = 0;
+    const double nd = GDALGetRasterNoDataValue(band, &has_nd);
+    const int use_opts = opts && opts->has_nodata;
+    const float hole = use_opts ? opts->nodata : (float)nd;
+    const size_t n = (size_t)w * (size_t)h;
+    for (size_t p = 0; p < n; ++p)
+        if ((use_opts || has_nd) && (*z)[p] == hole)
+            (*z)[p] = NAN; /* a hole for hfs_height_fill_holes */
+    if (gt[5] > 0.0) /* south-up: row 0 becomes the north edge */
+        for (int j = 0; j < h / 2; ++j)
+            for (int i = 0; i < w; ++i) {
+                float *a = *z + (size_t)j * w + i, *b = *z + (size_t)(h - 1 - j) * w + i;
+                const float t = *a;
+                *a = *b, *b = t;
+            }
+    return HFS_OK;
+}
+
+/* The opened dataset's checks: size, bands, a north-up geotransform. */
+static int check_dataset(GDALDatasetH ds, const char *path, const hfs_height_load_opts *opts,
+                         double gt[6], hfs_error *err)
+{
+    const int w = GDALGetRasterXSize(ds), h = GDALGetRasterYSize(ds);
+    const int maxw = opts && opts->max_width ? opts->max_width : HFS_HEIGHT_MAX_DIM;
+    const int maxh = opts && opts->max_height ? opts->max_height : HFS_HEIGHT_MAX_DIM;
+    if (GDALGetRasterCount(ds) < 1)
+        return hfs_fail(err, HFS_E_FORMAT, "%s: GDAL opens it but it has no raster band", path);
+    if (w < 2 || h < 2 || w > maxw || h > maxh || (long long)w * h > HFS_HEIGHT_MAX_TEXELS)
+        return hfs_fail(err, HFS_E_FORMAT, "%s: %dx%d heights (2..%dx%d allowed)", path, w, h,
+                        maxw, maxh);
+    if (GDALGetGeoTransform(ds, gt) != CE_None) {
+        const double id[6] = {0.0, 1.0, 0.0, 0.0, 0.0, -1.0};
+        memcpy(gt, id, sizeof id);
+        gt[1] = 0.0; /* no cell size known */
+    } else if (gt[2] != 0.0 || gt[4] != 0.0) {
+        return hfs_fail(err, HFS_E_INVALID, "%s: a rotated or sheared grid (geotransform "
+                        "terms %g, %g): not north-up", path, gt[2], gt[4]);
+    }
+    return HFS_OK;
+}
+
+int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
+                         hfs_heightmap *out, hfs_error *err)
+{
+    memset(out, 0, sizeof *out);
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    GDALDatasetH ds = GDALOpenEx(path, GDAL_OF_RASTER | GDAL_OF_READONLY, NULL, NULL, NULL);
+    if (!ds) {
+        CPLPopErrorHandler();
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: GDAL cannot open it as a raster", path);
+    }
+    double gt[6];
+    float *z = NULL;
+    int w = GDALGetRasterXSize(ds), h = GDALGetRasterYSize(ds);
+    int rc = check_dataset(ds, path, opts, gt, err);
+    if (!rc)
+        rc = read_band(ds, path, opts, gt, &z, err);
+    double cx = 0.0, cy = 0.0, cell = 0.0;
+    if (!rc && gt[1] != 0.0) {
+        cell_metres(ds, gt, h, &cx, &cy);
+        cell = cx;
+        if (fabs(cx - cy) > 1e-6 * fmax(cx, cy)) {
+            const int w0 = w, h0 = h;
+            if ((rc = make_square(&z, &w, &h, cx, cy, &cell)))
+                rc = hfs_fail(err, rc, "%s: out of memory resampling to square cells", path);
+            else
+                snprintf(out->note, sizeof out->note, "%s: resampled %dx%d cells of %.4g x "
+                         "%.4g m to %dx%d square cells of %.4g m", path, w0, h0, cx, cy, w, h,
+                         cell);
+        }
+    }
+    GDALClose(ds);
+    CPLPopErrorHandler();
+    long holes = 0;
+    hfs_error ferr;
+    int frc;
+    if (!rc && (frc = hfs_height_fill_holes(z, w, h, 0, 0.0f, &holes, &ferr)))
+        rc = hfs_fail(err, frc, "%s: %s", path, ferr.msg);
+    if (rc) {
+        free(z);
+        return rc;
+    }
+    out->width = w, out->height = h, out->z = z, out->holes = holes;
+    out->cellsize = cell;
+    out->format = HFS_HEIGHT_EXTERNAL;
+    return HFS_OK;
+}
+
+void hfs_gdal_register(void)
+{
+    GDALAllRegister();
+    hfs_height_set_extra_loader(hfs_gdal_height_load);
+}
