@@ -157,6 +157,11 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                          "0,90", "direction towards the viewer of glossy grid dumps, degrees"},
     [HFS_SK_TRUTH_ENV] = {"truth-env", "map|sh", HFS_FORM_WORD, 0, 0, 0, {{0}}, "map",
                           "ground truth of an env-map: the map itself, or its SH projection"},
+    [HFS_SK_AZIMUTH_CONVENTION] = {"azimuth-convention", "spec|compass", HFS_FORM_WORD, 0, 0, 0,
+                                   {{0}}, "spec",
+                                   "how key, view-dir and --camera azimuths read: SPEC's "
+                                   "(from +x toward +y) or compass (clockwise from north, "
+                                   "= 90 + SPEC's on a north-up field)"},
 };
 
 const hfs_scene_key *hfs_scene_key_get(hfs_scene_key_id id)

@@ -4,6 +4,7 @@
  */
 #include "scene.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -62,6 +63,22 @@ int main(void)
     hfs_scene_lighting(&s, NULL, &l);
     CHECK(l.has_env && l.env_sh[2][0] > 3.5 && l.n_key == 2 && l.albedo == 1.0 &&
           l.key[0].phi > 2.35 && l.key[0].phi < 2.36, "lighting conversion (degrees -> radians)");
+
+    /* azimuth-convention = compass (anywhere in the file): key and
+     * view-dir azimuths are clockwise from north, SPEC's = compass - 90. */
+    hfs_scene sc;
+    rc = load(&sc, "height = t.png\nkey = 135,35,4,3\nview-dir = 180,40\nspecular = 0.2\n"
+                   "azimuth-convention = compass\n", &err);
+    hfs_lighting lc;
+    hfs_scene_lighting(&sc, NULL, &lc);
+    const double d2r = 3.14159265358979323846 / 180.0;
+    CHECK(rc == 0 && fabs(lc.key[0].phi - 45.0 * d2r) < 1e-12 &&
+          fabs(lc.view_dir[0] - cos(90.0 * d2r) * cos(40.0 * d2r)) < 1e-12 &&
+          fabs(lc.view_dir[1] - sin(90.0 * d2r) * cos(40.0 * d2r)) < 1e-12,
+          "compass azimuths: key %g rad, view (%g, %g)", lc.key[0].phi, lc.view_dir[0],
+          lc.view_dir[1]);
+    rc = load(&sc, "height = t.png\nazimuth-convention = north\n", &err);
+    CHECK(rc != 0 && strstr(err.msg, "azimuth-convention"), "bad convention word: %s", err.msg);
 
     /* Flags override the file; a flag key replaces the file's key list. */
     rc = hfs_scene_set(&s, HFS_SOURCE_FLAG, "dx", "5", "--dx", NULL, &err);

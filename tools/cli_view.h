@@ -1,6 +1,7 @@
 /*
  * cli_view.h — hfshade's 3-D view flags (issue 16): --view ortho|perspective,
- * --camera AZ,EL,DIST,FOV[,TX,TY,TZ] (degrees, SPEC's azimuth; an empty
+ * --camera AZ,EL,DIST,FOV[,TX,TY,TZ] (degrees, SPEC's azimuth, or compass
+ * with azimuth-convention = compass: hfshade.c converts it; an empty
  * DIST frames the field; without a target the field's centre at mid
  * height), --exaggeration E, --view-size WxH.  One-line errors name the
  * flag and the problem.

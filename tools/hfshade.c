@@ -391,7 +391,9 @@ static int cmd_render(const cli *c, hfs_error *err)
     if ((rc = hfs_image_alloc(&img, in.field.width, in.field.height, err)))
         goto out;
     if (c->v.view) {
-        view = cli_view_make(&c->v, &in.field);
+        cli_view v = c->v; /* --camera's azimuth as the scene reads azimuths */
+        v.cam[0] = hfs_scene_spec_azimuth(&c->scene, v.cam[0]);
+        view = cli_view_make(&v, &in.field);
         if ((rc = hfs_image_alloc(&vimg, view.width, view.height, err)))
             goto out;
     }

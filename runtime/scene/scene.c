@@ -203,6 +203,7 @@ static void store_word(hfs_scene *s, hfs_scene_key_id id, int w, const char *val
     case HFS_SK_LOCAL_SWATH: s->quality.local_full_swath = w; break;
     case HFS_SK_PRESET: snprintf(s->preset, sizeof s->preset, "%s", value); break;
     case HFS_SK_TRUTH_ENV: s->truth_env_sh = w; break;
+    case HFS_SK_AZIMUTH_CONVENTION: s->azimuth_compass = w; break;
     default: break;
     }
 }
@@ -365,6 +366,11 @@ int hfs_scene_validate(const hfs_scene *s, hfs_error *err)
     return HFS_OK;
 }
 
+double hfs_scene_spec_azimuth(const hfs_scene *s, double degrees)
+{
+    return s->azimuth_compass ? degrees - 90.0 : degrees;
+}
+
 void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS],
                         hfs_lighting *l)
 {
@@ -385,7 +391,7 @@ void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS
     l->env_rotate = RAD(s->env_rotate_deg);
     l->n_key = s->n_key;
     for (int i = 0; i < s->n_key; ++i) {
-        l->key[i].phi = RAD(s->key[i].phi);
+        l->key[i].phi = RAD(hfs_scene_spec_azimuth(s, s->key[i].phi));
         l->key[i].elev = RAD(s->key[i].elev);
         l->key[i].alpha = RAD(s->key[i].alpha);
         /* A tint of zeros: a key set without the parser (grey). */
@@ -411,7 +417,7 @@ void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS
     if (s->gloss_given)
         l->gloss = s->gloss;
     if (s->view_given) { /* SPEC's s(phi, e) */
-        const double az = RAD(s->view_az), el = RAD(s->view_el);
+        const double az = RAD(hfs_scene_spec_azimuth(s, s->view_az)), el = RAD(s->view_el);
         l->view_dir[0] = cos(az) * cos(el);
         l->view_dir[1] = sin(az) * cos(el);
         l->view_dir[2] = sin(el);

@@ -52,6 +52,9 @@ typedef struct hfs_scene {
     double env_sh_rgb[3][HFS_SH_COEFFS];
     char env_map[HFS_PATH_MAX];
     double env_rotate_deg;
+    int azimuth_compass;             /* azimuth-convention = compass: the
+                                        azimuths read are clockwise from
+                                        north (SPEC phi = compass - 90)   */
     int truth_env_sh;                /* truth-env = sh: the truth integrates
                                         the map's SH, not the map            */
     int env_lights;                  /* env-lights: 0 off (default), -1
@@ -112,6 +115,10 @@ int hfs_scene_validate(const hfs_scene *s, hfs_error *err);
 /* Fills the library's lighting and quality from the scene (radians, RGB).
  * env_sh: if the scene uses an environment map, the caller passes its SH
  * projection here (3 x 16), else NULL. */
+/* An azimuth as the scene reads it (degrees; azimuth-convention) in SPEC's
+ * convention: compass - 90 (SPEC "Azimuths for map users"). */
+double hfs_scene_spec_azimuth(const hfs_scene *s, double degrees);
+
 void hfs_scene_lighting(const hfs_scene *s, const double (*env_sh)[HFS_SH_COEFFS],
                         hfs_lighting *l);
 void hfs_scene_quality(const hfs_scene *s, hfs_quality *q);
