@@ -57,3 +57,11 @@ if(TARGET hfshade-kiosk)
                  "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
   endif()
 endif()
+
+# The environment role (docs/CAPTURE.md "Camera to environment"):
+#   test_camera_env      decoding, SPEC's conventions of each mapping, round
+#                        trips of a known sky through each mapping, the
+#                        fill, the moving sun tracked, the smoothing ("unit")
+hfs_add_test(test_camera_env
+  SOURCES test_camera_env.c
+  LIBS hfs_capture m LABEL unit TIMEOUT 120)
