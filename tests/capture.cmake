@@ -61,7 +61,17 @@ endif()
 # The environment role (docs/CAPTURE.md "Camera to environment"):
 #   test_camera_env      decoding, SPEC's conventions of each mapping, round
 #                        trips of a known sky through each mapping, the
-#                        fill, the moving sun tracked, the smoothing ("unit")
+#                        fill, the moving sun tracked, the smoothing, the
+#                        live path on the fake device with a loss ("unit")
 hfs_add_test(test_camera_env
-  SOURCES test_camera_env.c
+  SOURCES test_camera_env.c capture_fake.c
   LIBS hfs_capture m LABEL unit TIMEOUT 120)
+#   test_camera_env_gl   a sky frame on the kept GLES renderer reruns the
+#                        lighting's passes only (the frame report) ("gl": 77
+#                        without GLES)
+if(TARGET hfshade_lib)
+  add_executable(test_camera_env_gl test_camera_env_gl.c)
+  target_link_libraries(test_camera_env_gl PRIVATE hfs_capture hfshade_lib m)
+  add_test(NAME test_camera_env_gl COMMAND test_camera_env_gl)
+  set_tests_properties(test_camera_env_gl PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 120)
+endif()

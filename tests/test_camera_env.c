@@ -12,7 +12,11 @@
  *   - the moving sun (a synthetic YUYV sequence with sensor noise): one key
  *     light, one identity, following the sun; no NaN;
  *   - the smoothing: the SH's frame-to-frame noise of a still sky;
- *   - bad frames refused with one line.
+ *   - bad frames refused with one line;
+ *   - the live path (capture_live.h) with role = environment against the
+ *     fake V4L2 device (tests/capture_fake.c): YUYV frames become the
+ *     lighting, ENODEV mid-stream keeps the last lighting, "back", frames
+ *     again.
  * `--report` prints the per-frame CPU cost of the path at 256x128
  * (BENCHMARKS.md).
  */
@@ -24,6 +28,8 @@
 #include <time.h>
 
 #include "camera_sky.h"
+#include "capture_fake.h"
+#include "capture_live.h"
 #include "capture_synth_sky.h"
 #include "check.h"
 #include "sh.h"
@@ -396,6 +402,84 @@ static int report(void)
     return 0;
 }
 
+/* The fake device's frames: the moving sun, frame seq. */
+static void fill_sky(void *user, uint8_t *dst, int w, int h, int stride, uint32_t seq)
+{
+    hfs_synth_sky_desc d;
+    hfs_synth_sky_defaults(&d);
+    d.width = w, d.height = h;
+    (void)user;
+    uint8_t *tmp = malloc((size_t)w * h * 2);
+    hfs_synth_sky_frame(&d, (int)(seq % 60), tmp);
+    for (int y = 0; y < h; ++y)
+        memcpy(dst + (size_t)y * stride, tmp + (size_t)y * w * 2, (size_t)w * 2);
+    free(tmp);
+}
+
+static void count_line(void *user, int warning, const char *line)
+{
+    (void)warning;
+    int *n = user;
+    ++*n;
+    if (strstr(line, "retrying") || strstr(line, "back"))
+        printf("  log: %s\n", line);
+}
+
+/* role = environment through the live path and the fake device. */
+static void test_live_sky(void)
+{
+    capture_fake f;
+    capture_fake_init(&f, "/dev/video7");
+    f.fill = fill_sky;
+    hfs_v4l2_ops ops = capture_fake_ops(&f);
+    hfs_capture_configs cc = {0};
+    char msg[300] = "";
+    const char *keys[][2] = {{"device", "/dev/video7"}, {"role", "environment"},
+                             {"size", "320x240"}, {"env_lights", "auto"}};
+    int bad = hfs_capture_config_begin(&cc, "sky", 1, msg, sizeof msg);
+    for (int i = 0; i < 4; ++i)
+        bad |= hfs_capture_config_key(&cc, keys[i][0], keys[i][1], i + 2, msg, sizeof msg);
+    CHECK(!bad && !hfs_capture_config_end(&cc, msg, sizeof msg), "config: %s", msg);
+    int lines = 0;
+    hfs_capture_live_desc d = {.config = &cc.c[0], .ops = &ops, .log = count_line,
+                               .log_user = &lines, .retry_min_ns = 1000, .retry_max_ns = 8000};
+    hfs_capture_live *live = NULL;
+    hfs_error err = {{0}};
+    CHECK(hfs_capture_live_open(&d, &live, &err) == 0, "live: %s", err.msg);
+    if (!live)
+        return;
+    uint64_t serial;
+    CHECK(!hfs_capture_live_sky(live, &serial) && serial == 0, "no lighting yet");
+    int changed = 0;
+    for (int k = 0; k < 5; ++k) {
+        capture_fake_produce(&f, 1);
+        changed += hfs_capture_live_drain(live, k);
+    }
+    const hfs_camsky_out *o = hfs_capture_live_sky(live, &serial);
+    CHECK(changed == 5 && o && o->n_keys == 1 && o->ids[0] == 1 && finite_out(o) && !lines,
+          "5 frames, 5 lightings, the sun as light 1: %d, %d lights, %d log lines", changed,
+          o ? o->n_keys : -1, lines);
+    hfs_camsky_out kept = *o;
+    const uint64_t s1 = serial;
+    f.gone = 1;
+    CHECK(hfs_capture_live_drain(live, 10) == 0 && lines == 1, "the loss: one line (%d)", lines);
+    for (int64_t t = 1010; t < 40000; t += 1000)
+        hfs_capture_live_drain(live, t);
+    o = hfs_capture_live_sky(live, &serial);
+    CHECK(lines == 1 && serial == s1 && o && !memcmp(o, &kept, sizeof kept),
+          "the last lighting stays while the camera is gone");
+    f.gone = 0;
+    hfs_capture_live_drain(live, 100000);
+    capture_fake_produce(&f, 1);
+    CHECK(lines == 2 && hfs_capture_live_drain(live, 100001) == 1, "back, frames again");
+    o = hfs_capture_live_sky(live, &serial);
+    CHECK(serial == s1 + 1 && o && o->n_keys == 1 && o->ids[0] == 1,
+          "new lighting, the same light");
+    CHECK(hfs_capture_live_close(live, &err) == 0 && f.open_fds == 0 && f.maps == f.unmaps,
+          "closed");
+    capture_fake_free(&f);
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1 && !strcmp(argv[1], "--report"))
@@ -425,6 +509,7 @@ int main(int argc, char **argv)
     test_sun(HFS_MAP_FISHEYE);
     test_sun(HFS_MAP_EQUIRECT);
     test_smoothing();
+    test_live_sky();
     printf("test_camera_env: %ld checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }
