@@ -75,3 +75,18 @@ if(TARGET hfshade_lib)
   add_test(NAME test_camera_env_gl COMMAND test_camera_env_gl)
   set_tests_properties(test_camera_env_gl PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 120)
 endif()
+#   kiosk_capture_env    hfshade-kiosk replaying a sky camera (a moving sun):
+#                        its key light follows the sun, frames differ, no
+#                        terrain pass reruns; both roles at once; a bad sky
+#                        section ("gl": 77 without GLES)
+if(TARGET hfshade-kiosk)
+  add_test(NAME kiosk_capture_env
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/kiosk_capture_env.sh
+                   $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfs-capture-synth>
+                   $<TARGET_FILE:hfgen>)
+  set_tests_properties(kiosk_capture_env PROPERTIES LABELS gl TIMEOUT 300 SKIP_RETURN_CODE 77)
+  if(HFS_SANITIZE)
+    set_property(TEST kiosk_capture_env APPEND PROPERTY ENVIRONMENT
+                 "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+  endif()
+endif()
