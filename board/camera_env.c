@@ -44,18 +44,20 @@ float hfs_camenv_decode(const hfs_camenv_params *p, int code)
     return (float)(v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4));
 }
 
-static int clamp8(double v)
+/* (v + 128) >> 8, clamped to 0..255 (the fixed-point form below). */
+static int clamp8(int v)
 {
-    const long r = lround(v);
-    return r < 0 ? 0 : r > 255 ? 255 : (int)r;
+    return v < 0 ? 0 : v >= 255 * 256 - 128 ? 255 : (v + 128) >> 8;
 }
 
 void hfs_camenv_yuv_to_rgb(int y, int cb, int cr, int rgb[3])
 {
-    const double l = 1.164 * (y - 16);
-    rgb[0] = clamp8(l + 1.596 * (cr - 128));
-    rgb[1] = clamp8(l - 0.392 * (cb - 128) - 0.813 * (cr - 128));
-    rgb[2] = clamp8(l + 2.017 * (cb - 128));
+    /* BT.601 in 8.8 fixed point: 1.164 = 298/256, 1.596 = 409/256, 0.392
+     * = 100/256, 0.813 = 208/256, 2.017 = 516/256. */
+    const int l = 298 * (y - 16), u = cb - 128, v = cr - 128;
+    rgb[0] = clamp8(l + 409 * v);
+    rgb[1] = clamp8(l - 100 * u - 208 * v);
+    rgb[2] = clamp8(l + 516 * u);
 }
 
 /* The circle mappings' frame: axis a, image right r and up u (world). */

@@ -14,7 +14,8 @@
  *     R' = 1.164 (Y' - 16) + 1.596 (Cr - 128)
  *     G' = 1.164 (Y' - 16) - 0.392 (Cb - 128) - 0.813 (Cr - 128)
  *     B' = 1.164 (Y' - 16) + 2.017 (Cb - 128)
- * (over 255, clamped to [0, 1]; chroma shared by the pixel pair).  Then the
+ * (in 8.8 fixed point: 298, 409, 100, 208, 516 / 256; rounded, clamped to
+ * 0..255; chroma shared by the pixel pair).  Then the
  * transfer: sRGB (IEC 61966-2-1 decoding, the default) or linear; then
  * radiance = exposure x linear code value (so `exposure` is the radiance
  * of a full-scale white pixel).
