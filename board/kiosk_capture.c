@@ -88,6 +88,7 @@ int kiosk_capture_sky_apply(hfs_capture_live *live, kiosk_world *w)
     if (!o)
         return 0;
     hfs_scene_inputs *in = &w->in;
+    hfs_scene_inputs saved = *in; /* the sky before, should the relight fail */
     memcpy(in->env_map_sh, o->sh, sizeof in->env_map_sh);
     in->has_env_map = 1;
     in->n_env_keys = o->n_keys;
@@ -96,10 +97,19 @@ int kiosk_capture_sky_apply(hfs_capture_live *live, kiosk_world *w)
     in->env_map = NULL;
     in->env_map_width = in->env_map_height = 0;
     hfs_error err = {{0}};
+    static char last[sizeof err.msg]; /* one kiosk per process: said once */
     if (kiosk_world_relight(w, &err)) {
-        kiosk_log(KIOSK_WARNING, "capture: the camera's lighting: %s", err.msg);
+        if (strcmp(last, err.msg))
+            kiosk_log(KIOSK_WARNING, "capture: the camera's lighting: %s (the last good "
+                      "lighting stays)", err.msg);
+        snprintf(last, sizeof last, "%s", err.msg);
+        memcpy(in->env_map_sh, saved.env_map_sh, sizeof in->env_map_sh);
+        in->has_env_map = saved.has_env_map;
+        in->n_env_keys = saved.n_env_keys;
+        memcpy(in->env_keys, saved.env_keys, sizeof in->env_keys);
         return 0;
     }
+    last[0] = 0;
     return 1;
 }
 
