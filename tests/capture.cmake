@@ -39,7 +39,8 @@ endif()
 # A camera unplugged under a running kiosk: the fake device behind the C
 # library's calls (LD_PRELOAD shim), ENODEV mid-stream, back 400 ms later.
 #   kiosk_capture_loss   one warning, one "back", frames before and after,
-#                        exit 0 on SIGTERM ("gl": 77 without GLES)
+#                        exit 0 on SIGTERM; for a heights camera, then for a
+#                        sky camera ("gl": 77 without GLES)
 add_library(hfs_capture_preload MODULE capture_preload.c capture_fake.c)
 target_include_directories(hfs_capture_preload PRIVATE ${PROJECT_SOURCE_DIR}/board
                            ${PROJECT_SOURCE_DIR}/runtime)
