@@ -14,13 +14,20 @@
 typedef enum ckey {
     C_DEVICE, C_REPLAY, C_LOOP, C_FORMAT, C_SIZE, C_RATE, C_BUFFERS, C_ROLE, C_SCALE,
     C_MIN_DEPTH, C_MAX_DEPTH, C_PLANE, C_ROI, C_GRID, C_ZGAIN, C_WINDOW, C_GATE, C_HYST,
-    C_JUMP, C_COUNT
+    C_JUMP, C_MAPPING, C_CENTER, C_RADIUS, C_FOV, C_ROTATE, C_HEMI, C_TRANSFER, C_EXPOSURE,
+    C_ENV_SIZE, C_SMOOTHING, C_ENV_LIGHTS, C_COUNT
 } ckey;
+
+/* The keys of each role (the others are an error there). */
+#define FIRST_DEPTH C_SCALE
+#define LAST_DEPTH C_JUMP
+#define FIRST_ENV C_MAPPING
 
 static const char *const ckey_names[C_COUNT] = {
     "device", "replay", "loop", "format", "size", "rate", "buffers", "role", "depth_scale",
     "min_depth", "max_depth", "plane", "roi", "grid", "zgain", "window", "gate_mm",
-    "hysteresis_mm", "jump_mm"};
+    "hysteresis_mm", "jump_mm", "mapping", "center", "radius", "fov", "rotate", "hemisphere",
+    "transfer", "exposure", "env_size", "smoothing", "env_lights"};
 
 static int bad(int line, char *msg, size_t size, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
@@ -55,6 +62,7 @@ int hfs_capture_config_begin(hfs_capture_configs *cc, const char *name, int line
     c->role = HFS_ROLE_HEIGHTS;
     hfs_depth_params_defaults(&c->depth);
     c->depth.grid_w = c->depth.grid_h = 0;
+    hfs_camenv_defaults(&c->env);
     memset(cc->key_line, 0, sizeof cc->key_line);
     return 0;
 }
@@ -103,6 +111,71 @@ static int set_plane(hfs_capture_config *c, const char *v)
     return 0;
 }
 
+/* An environment key's value into p; -1 with msg when it is bad. */
+static int set_env_key(hfs_camenv_params *p, ckey k, const char *v, char *msg, size_t size)
+{
+    const char *name = ckey_names[k];
+    char tail[2];
+    double x;
+    int n;
+    switch (k) {
+    case C_MAPPING:
+        p->mapping = !strcmp(v, "mirrorball") ? HFS_MAP_MIRRORBALL
+                     : !strcmp(v, "fisheye")  ? HFS_MAP_FISHEYE
+                     : !strcmp(v, "equirect") ? HFS_MAP_EQUIRECT : (hfs_camenv_mapping)-1;
+        return (int)p->mapping < 0 ? (snprintf(msg, size, "mapping: '%s' is not mirrorball, "
+                                               "fisheye or equirect", v), -1) : 0;
+    case C_CENTER:
+        if (sscanf(v, "%lf %lf %1s", &p->cx, &p->cy, tail) != 2 || !isfinite(p->cx) ||
+            !isfinite(p->cy) || p->cx < 0 || p->cy < 0 || p->cx > 16384 || p->cy > 16384)
+            return snprintf(msg, size, "center: '%s' is not X Y (pixels, 0..16384)", v), -1;
+        p->has_center = 1;
+        return 0;
+    case C_HEMI:
+        if (strcmp(v, "upper") && strcmp(v, "lower"))
+            return snprintf(msg, size, "hemisphere: '%s' is not upper or lower", v), -1;
+        p->lower = !strcmp(v, "lower");
+        return 0;
+    case C_TRANSFER:
+        if (strcmp(v, "srgb") && strcmp(v, "linear"))
+            return snprintf(msg, size, "transfer: '%s' is not srgb or linear", v), -1;
+        p->linear = !strcmp(v, "linear");
+        return 0;
+    case C_ENV_SIZE:
+        return size_of(v, &p->map_w, &p->map_h) || p->map_w < 16 || p->map_h < 8 ||
+                       p->map_w > 4096 || p->map_h > 2048
+                   ? (snprintf(msg, size, "env_size: '%s' is not WxH (16x8..4096x2048)", v), -1)
+                   : 0;
+    case C_ENV_LIGHTS:
+        if (!strcmp(v, "off") || !strcmp(v, "auto"))
+            return p->env_lights = !strcmp(v, "auto") ? -1 : 0, 0;
+        if (sscanf(v, "%d%1s", &n, tail) != 1 || n < 0 || n > HFS_MAX_KEY_LIGHTS)
+            return snprintf(msg, size, "env_lights: '%s' is not off, auto or 0..%d", v,
+                            HFS_MAX_KEY_LIGHTS), -1;
+        p->env_lights = n;
+        return 0;
+    default:
+        break;
+    }
+    static const struct { ckey k; double lo, hi; const char *unit; } nums[] = {
+        {C_RADIUS, 1, 16384, "pixels"}, {C_FOV, 1, 360, "degrees"},
+        {C_ROTATE, -360, 360, "degrees"}, {C_EXPOSURE, 1e-6, 1e9, "radiance per unit code"},
+        {C_SMOOTHING, 0, 60, "seconds"}};
+    for (size_t i = 0; i < sizeof nums / sizeof nums[0]; ++i) {
+        if (nums[i].k != k)
+            continue;
+        if (num(v, nums[i].lo, nums[i].hi, &x))
+            return snprintf(msg, size, "%s: '%s' is not a number in [%g, %g] (%s)", name, v,
+                            nums[i].lo, nums[i].hi, nums[i].unit), -1;
+        double *dst[] = {[C_RADIUS] = &p->radius, [C_FOV] = &p->fov_deg,
+                         [C_ROTATE] = &p->rotate_deg, [C_EXPOSURE] = &p->exposure,
+                         [C_SMOOTHING] = &p->smoothing_s};
+        *dst[k] = x;
+        return 0;
+    }
+    return snprintf(msg, size, "internal: unhandled key"), -1;
+}
+
 /* The value of key k into c; -1 with msg when it is bad. */
 static int set_key(hfs_capture_config *c, ckey k, const char *v, char *msg, size_t size)
 {
@@ -144,9 +217,7 @@ static int set_key(hfs_capture_config *c, ckey k, const char *v, char *msg, size
         if (!strcmp(v, "heights"))
             return c->role = HFS_ROLE_HEIGHTS, 0;
         if (!strcmp(v, "environment"))
-            return snprintf(msg, size, "role: environment is not yet supported (only "
-                            "heights; the environment role needs the environment-map "
-                            "decomposition)"), -1;
+            return c->role = HFS_ROLE_ENVIRONMENT, 0;
         return snprintf(msg, size, "role: '%s' is not heights or environment", v), -1;
     case C_PLANE:
         return set_plane(c, v) ? (snprintf(msg, size, "plane: '%s' is not 'auto' or A B C "
@@ -164,6 +235,8 @@ static int set_key(hfs_capture_config *c, ckey k, const char *v, char *msg, size
         c->depth.window = (int)x;
         return 0;
     default:
+        if (k >= FIRST_ENV)
+            return set_env_key(&c->env, k, v, msg, size);
         break;
     }
     /* The plain numbers. */
@@ -197,7 +270,7 @@ int hfs_capture_config_key(hfs_capture_configs *cc, const char *key, const char 
     while (k < C_COUNT && strcmp(key, ckey_names[k]))
         ++k;
     if (k == C_COUNT) {
-        char known[300] = "";
+        char known[500] = "";
         for (int i = 0; i < C_COUNT; ++i)
             snprintf(known + strlen(known), sizeof known - strlen(known), "%s%s", i ? ", " : "",
                      ckey_names[i]);
@@ -211,6 +284,33 @@ int hfs_capture_config_key(hfs_capture_configs *cc, const char *key, const char 
     return set_key(c, (ckey)k, value, msg, size) ? line : 0;
 }
 
+/* The checks of a role = environment section. */
+static int end_environment(hfs_capture_configs *cc, char *msg, size_t size)
+{
+    hfs_capture_config *c = &cc->c[cc->n - 1];
+    const int *kl = cc->key_line;
+    const hfs_camenv_params *p = &c->env;
+    for (int k = FIRST_DEPTH; k <= LAST_DEPTH; ++k)
+        if (kl[k])
+            return bad(kl[k], msg, size, "%s: applies to role = heights", ckey_names[k]);
+    if (!kl[C_FORMAT])
+        c->format = HFS_PIX_YUYV;
+    if (c->format != HFS_PIX_YUYV && c->format != HFS_PIX_GREY)
+        return bad(kl[C_FORMAT], msg, size, "format: role environment needs colour or grey "
+                   "(YUYV or GREY), not %s", hfs_pixfmt_name(c->format));
+    if (kl[C_FOV] && p->mapping != HFS_MAP_FISHEYE)
+        return bad(kl[C_FOV], msg, size, "fov: applies to mapping = fisheye");
+    const int circle = p->mapping != HFS_MAP_EQUIRECT;
+    if (!circle && (kl[C_CENTER] || kl[C_RADIUS] || kl[C_HEMI]))
+        return bad(kl[C_CENTER] ? kl[C_CENTER] : kl[C_RADIUS] ? kl[C_RADIUS] : kl[C_HEMI], msg,
+                   size, "%s: applies to mapping = mirrorball or fisheye",
+                   kl[C_CENTER] ? "center" : kl[C_RADIUS] ? "radius" : "hemisphere");
+    if (circle && c->width > 0 && p->has_center && (p->cx > c->width || p->cy > c->height))
+        return bad(kl[C_CENTER], msg, size, "center: %g %g is outside the %dx%d frame", p->cx,
+                   p->cy, c->width, c->height);
+    return 0;
+}
+
 int hfs_capture_config_end(hfs_capture_configs *cc, char *msg, size_t size)
 {
     hfs_capture_config *c = &cc->c[cc->n - 1];
@@ -220,6 +320,11 @@ int hfs_capture_config_end(hfs_capture_configs *cc, char *msg, size_t size)
                    "[capture %s]: give device = PATH or replay = DIR (one of them)", c->name);
     if (kl[C_LOOP] && !c->replay[0])
         return bad(kl[C_LOOP], msg, size, "loop: applies to replay");
+    if (c->role == HFS_ROLE_ENVIRONMENT)
+        return end_environment(cc, msg, size);
+    for (int k = FIRST_ENV; k < C_COUNT; ++k)
+        if (kl[k])
+            return bad(kl[k], msg, size, "%s: applies to role = environment", ckey_names[k]);
     if (c->format != HFS_PIX_Z16 && c->format != HFS_PIX_Y16)
         return bad(kl[C_FORMAT], msg, size, "format: role heights needs depth (Z16 or Y16), "
                    "not %s", hfs_pixfmt_name(c->format));

@@ -9,7 +9,7 @@
  *     format = Z16
  *     size = 640x480
  *     rate = 30
- *     role = heights            ; environment: parsed, not yet supported
+ *     role = heights            ; or environment (camera_env.h keys below)
  *     depth_scale = 0.001       ; metres per count
  *     plane = auto              ; or A B C: ground depth = A*u + B*v + C
  *     roi = 64 48 512 384       ; X Y W H pixels
@@ -19,12 +19,29 @@
  *     gate_mm = 3
  *     hysteresis_mm = 1.5
  *     jump_mm = 10
+ *
+ *     [capture sky]             ; role = environment
+ *     device = /dev/video2
+ *     format = YUYV             ; or GREY (the default for this role: YUYV)
+ *     role = environment
+ *     mapping = mirrorball      ; fisheye, equirect
+ *     center = 320 240          ; the circle, pixels
+ *     radius = 230
+ *     fov = 180                 ; fisheye, degrees
+ *     rotate = 90               ; azimuth of the image's up, degrees
+ *     hemisphere = upper        ; or lower
+ *     transfer = srgb           ; or linear
+ *     exposure = 1              ; radiance of a full-scale white pixel
+ *     env_size = 256x128        ; the environment map
+ *     smoothing = 0.2           ; seconds (SH time constant)
+ *     env_lights = auto         ; off, auto, N; default: the scene's
  */
 #ifndef HFS_BOARD_CAPTURE_CONFIG_H
 #define HFS_BOARD_CAPTURE_CONFIG_H
 
 #include <stddef.h>
 
+#include "camera_env.h"
 #include "capture.h"
 #include "depth_heights.h"
 
@@ -32,7 +49,7 @@
 
 typedef enum hfs_capture_role {
     HFS_ROLE_HEIGHTS = 1,
-    HFS_ROLE_ENVIRONMENT = 2     /* reserved: the environment-map issue */
+    HFS_ROLE_ENVIRONMENT = 2
 } hfs_capture_role;
 
 typedef struct hfs_capture_config {
@@ -46,13 +63,14 @@ typedef struct hfs_capture_config {
     int buffers;                 /* default 4                              */
     hfs_capture_role role;       /* default heights                        */
     hfs_depth_params depth;      /* grid_w 0: the scene's field size       */
+    hfs_camenv_params env;       /* role = environment                     */
     int config_line;
 } hfs_capture_config;
 
 typedef struct hfs_capture_configs {
     int n;
     hfs_capture_config c[HFS_MAX_CAPTURES];
-    int key_line[32];            /* parser state: lines of the current keys */
+    int key_line[40];            /* parser state: lines of the current keys */
 } hfs_capture_configs;
 
 /* Parser hooks (input_config.c).  Each returns 0, or the line of the

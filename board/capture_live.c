@@ -10,6 +10,7 @@
 #include <time.h>
 
 #include "backoff.h"
+#include "camera_sky.h"
 #include "capture_record.h"
 #include "depth_heights.h"
 
@@ -19,7 +20,8 @@ struct hfs_capture_live {
     char name[48];                 /* the section's NAME                      */
     hfs_capture *cap;
     int replay;
-    hfs_depth_heights *dh;
+    hfs_depth_heights *dh;         /* role = heights                          */
+    hfs_camsky *sky;               /* role = environment                      */
     hfs_capture_recorder *rec;
     hfs_backoff retry;
     hfs_capture_log_fn log;
@@ -76,14 +78,28 @@ static int open_source(const hfs_capture_live_desc *d, hfs_capture **out, hfs_er
     return hfs_v4l2_open(&v, out, err);
 }
 
+/* The conversion the role needs: depth to heights, or frames to lighting. */
+static int convert_open(hfs_capture_live *l, const hfs_capture_live_desc *d, hfs_error *err)
+{
+    const hfs_capture_config *c = d->config;
+    if (c->role == HFS_ROLE_ENVIRONMENT)
+        return hfs_camsky_create(&c->env, hfs_camsky_max_lights(c->env.env_lights,
+                                                                d->scene_env_lights,
+                                                                d->scene_keys),
+                                 &l->sky, err);
+    hfs_depth_params p = c->depth;
+    if (p.grid_w == 0) {
+        p.grid_w = d->grid_w;
+        p.grid_h = d->grid_h;
+    }
+    return hfs_depth_heights_create(&p, &l->dh, err);
+}
+
 int hfs_capture_live_open(const hfs_capture_live_desc *d, hfs_capture_live **out,
                           hfs_error *err)
 {
     *out = NULL;
     const hfs_capture_config *c = d->config;
-    if (c->role != HFS_ROLE_HEIGHTS)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "[capture %s]: only role = heights is "
-                        "supported", c->name);
     hfs_capture_live *l = calloc(1, sizeof *l);
     if (!l)
         return hfs_fail(err, HFS_E_NOMEM, "capture: out of memory");
@@ -92,12 +108,7 @@ int hfs_capture_live_open(const hfs_capture_live_desc *d, hfs_capture_live **out
     l->log = d->log;
     l->log_user = d->log_user;
     hfs_backoff_init(&l->retry, d->retry_min_ns, d->retry_max_ns);
-    hfs_depth_params p = c->depth;
-    if (p.grid_w == 0) {
-        p.grid_w = d->grid_w;
-        p.grid_h = d->grid_h;
-    }
-    int rc = hfs_depth_heights_create(&p, &l->dh, err);
+    int rc = convert_open(l, d, err);
     if (rc) {
         hfs_error e = *err;
         hfs_fail(err, rc, "%s:%d: [capture %s]: %s", d->config_path ? d->config_path : "config",
@@ -125,6 +136,7 @@ int hfs_capture_live_close(hfs_capture_live *l, hfs_error *err)
         return HFS_OK;
     hfs_capture_destroy(l->cap);
     hfs_depth_heights_destroy(l->dh);
+    hfs_camsky_destroy(l->sky);
     int rc = hfs_capture_record_close(l->rec, err);
     if (!rc && l->record_failure[0])
         rc = hfs_fail(err, HFS_E_IO, "%s (the recording is incomplete)", l->record_failure);
@@ -156,10 +168,12 @@ static int take(hfs_capture_live *l, const hfs_capture_frame *f)
 {
     hfs_error err = {{0}};
     int r = hfs_capture_frame_check(f, l->cap->name, &err);
-    if (!r && f->format != HFS_PIX_Z16 && f->format != HFS_PIX_Y16)
+    if (!r && l->sky)
+        r = hfs_camsky_push(l->sky, f, &err) ? -1 : 1; /* the lighting changes every frame */
+    else if (!r && f->format != HFS_PIX_Z16 && f->format != HFS_PIX_Y16)
         r = hfs_fail(&err, HFS_E_FORMAT, "%s: %s frames are not depth", l->cap->name,
                      hfs_pixfmt_name(f->format));
-    if (!r)
+    else if (!r)
         r = hfs_depth_heights_push(l->dh, f->data, f->width, f->height, f->stride, &err);
     if (r < 0) {
         char msg[700];
@@ -217,9 +231,18 @@ int hfs_capture_live_drain(hfs_capture_live *l, int64_t now_ns)
 const float *hfs_capture_live_heights(const hfs_capture_live *l, int *width, int *height,
                                       uint64_t *serial)
 {
-    hfs_depth_heights_grid(l->dh, width, height);
+    *width = *height = 0;
     *serial = l->serial;
+    if (!l->dh)
+        return NULL;
+    hfs_depth_heights_grid(l->dh, width, height);
     return l->serial ? hfs_depth_heights_z(l->dh) : NULL;
+}
+
+const hfs_camsky_out *hfs_capture_live_sky(const hfs_capture_live *l, uint64_t *serial)
+{
+    *serial = l->serial;
+    return l->sky ? hfs_camsky_get(l->sky) : NULL;
 }
 
 void hfs_capture_live_stats_get(const hfs_capture_live *l, hfs_capture_live_stats *s)

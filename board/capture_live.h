@@ -1,8 +1,9 @@
 /*
- * capture_live.h — a configured camera as a live height source: the
- * [capture NAME] section (capture_config.h) opened as a V4L2 device or a
- * recording, each newest frame recorded (optionally) and converted to
- * heights (depth_heights.h), device loss handled (backoff.h).  What the
+ * capture_live.h — a configured camera as a live height source or a live
+ * sky: the [capture NAME] section (capture_config.h) opened as a V4L2
+ * device or a recording, each newest frame recorded (optionally) and
+ * converted to heights (depth_heights.h) or to lighting (camera_sky.h),
+ * device loss handled (backoff.h).  What the
  * kiosk runs (board/kiosk_capture.c), and what the tests run against the
  * fake device.
  *
@@ -23,6 +24,7 @@
 #include <poll.h>
 #include <stdint.h>
 
+#include "camera_sky.h"
 #include "capture.h"
 #include "capture_config.h"
 #include "capture_v4l2.h"
@@ -30,7 +32,7 @@
 typedef void (*hfs_capture_log_fn)(void *user, int warning, const char *line);
 
 typedef struct hfs_capture_live_desc {
-    const hfs_capture_config *config;  /* role = heights; not kept           */
+    const hfs_capture_config *config;  /* either role; not kept              */
     const char *config_path;           /* for messages ("kiosk.ini:12: ...") */
     int grid_w, grid_h;                /* when the config gives no grid       */
     const char *record_dir;            /* --capture-record, or NULL           */
@@ -39,6 +41,8 @@ typedef struct hfs_capture_live_desc {
     hfs_capture_log_fn log;            /* NULL: silent                        */
     void *log_user;
     int64_t retry_min_ns, retry_max_ns;/* 0: 100 ms, 5 s                      */
+    int scene_env_lights;              /* role = environment: the scene's     */
+    int scene_keys;                    /* env-lights and key light count      */
 } hfs_capture_live_desc;
 
 typedef struct hfs_capture_live hfs_capture_live;
@@ -54,13 +58,18 @@ int hfs_capture_live_close(hfs_capture_live *l, hfs_error *err);
  * a replay's next frame or the next reopen attempt. */
 int hfs_capture_live_pollfd(hfs_capture_live *l, struct pollfd *fd, int64_t *deadline);
 /* Reopens when due, takes the newest frame, converts it: 1 when the
- * heights changed, 0 otherwise. */
+ * heights (or, role = environment, the lighting) changed, 0 otherwise. */
 int hfs_capture_live_drain(hfs_capture_live *l, int64_t now_ns);
 /* The heights (grid, finite, world units) and their serial: 0 before the
  * first frame (then NULL), a new one per change, never a scene load's
- * (those count from 1; these from 2^62). */
+ * (those count from 1; these from 2^62).  NULL for role = environment. */
 const float *hfs_capture_live_heights(const hfs_capture_live *l, int *width, int *height,
                                       uint64_t *serial);
+
+/* role = environment: the lighting (camera_sky.h: smoothed SH, lights) of
+ * the frames so far, or NULL (none yet, or role = heights); its serial as
+ * the heights'. */
+const hfs_camsky_out *hfs_capture_live_sky(const hfs_capture_live *l, uint64_t *serial);
 
 typedef struct hfs_capture_live_stats {
     uint32_t sequence;        /* the last converted frame                   */

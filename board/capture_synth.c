@@ -33,7 +33,7 @@ void hfs_synth_plane(const hfs_synth_desc *d, double plane[3])
 }
 
 /* splitmix64: a deterministic stream per (seed, frame). */
-static uint64_t next_u64(uint64_t *s)
+uint64_t hfs_synth_u64(uint64_t *s)
 {
     uint64_t z = (*s += 0x9e3779b97f4a7c15ULL);
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
@@ -41,9 +41,9 @@ static uint64_t next_u64(uint64_t *s)
     return z ^ (z >> 31);
 }
 
-static double uniform(uint64_t *s)
+double hfs_synth_uniform(uint64_t *s)
 {
-    return ((double)(next_u64(s) >> 11) + 0.5) / 9007199254740992.0;
+    return ((double)(hfs_synth_u64(s) >> 11) + 0.5) / 9007199254740992.0;
 }
 
 static double sand(const hfs_synth_desc *d, int u, int v)
@@ -82,7 +82,7 @@ void hfs_synth_frame(const hfs_synth_desc *d, int k, uint16_t *depth, float *tru
                                u - cx <= rx * sqrt(1.0 - ey * ey) + 0.02 * d->width;
             const double h = on_hand ? 0.25 : sand(d, u, v);
             /* Box-Muller, one normal per pixel. */
-            const double a = uniform(&rng), b = uniform(&rng), hole = uniform(&rng);
+            const double a = hfs_synth_uniform(&rng), b = hfs_synth_uniform(&rng), hole = hfs_synth_uniform(&rng);
             const double n = sqrt(-2.0 * log(a)) * cos(2.0 * PI * b) * d->noise_m;
             const double depth_m = pl[0] * u + pl[1] * v + pl[2] - h + n;
             long c = lround(depth_m / d->scale);

@@ -37,6 +37,10 @@ void hfs_synth_frame(const hfs_synth_desc *d, int k, uint16_t *depth, float *tru
 /* The ground plane the synthetic camera sees: depth = a*u + b*v + c. */
 void hfs_synth_plane(const hfs_synth_desc *d, double plane[3]);
 
+/* The generators' random numbers: splitmix64 and a uniform in (0, 1). */
+uint64_t hfs_synth_u64(uint64_t *state);
+double hfs_synth_uniform(uint64_t *state);
+
 /* Writes the whole sequence as a recording (capture_record.h) into dir. */
 int hfs_synth_record(const hfs_synth_desc *d, const char *dir, hfs_error *err);
 

@@ -8,15 +8,18 @@
 target_sources(hfs_input PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/capture_config.c
   ${CMAKE_CURRENT_LIST_DIR}/depth_heights.c
+  ${CMAKE_CURRENT_LIST_DIR}/camera_env.c
+  ${CMAKE_CURRENT_LIST_DIR}/camera_sky.c
   ${CMAKE_CURRENT_LIST_DIR}/capture.c
   ${CMAKE_CURRENT_LIST_DIR}/backoff.c)
-target_link_libraries(hfs_input PUBLIC hfshade_io)
+target_link_libraries(hfs_input PUBLIC hfshade_io hfs_envdec hfs_sh)
 
 add_library(hfs_capture STATIC
   ${CMAKE_CURRENT_LIST_DIR}/capture_v4l2.c
   ${CMAKE_CURRENT_LIST_DIR}/capture_info.c
   ${CMAKE_CURRENT_LIST_DIR}/capture_record.c
   ${CMAKE_CURRENT_LIST_DIR}/capture_synth.c
+  ${CMAKE_CURRENT_LIST_DIR}/capture_synth_sky.c
   ${CMAKE_CURRENT_LIST_DIR}/capture_live.c)
 target_include_directories(hfs_capture PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(hfs_capture PUBLIC hfs_input hfs_base PRIVATE m)
@@ -24,4 +27,4 @@ target_link_libraries(hfs_capture PUBLIC hfs_input hfs_base PRIVATE m)
 add_executable(hfs-capture-info ${CMAKE_CURRENT_LIST_DIR}/capture_info_main.c)
 target_link_libraries(hfs-capture-info PRIVATE hfs_capture)
 add_executable(hfs-capture-synth ${CMAKE_CURRENT_LIST_DIR}/capture_synth_main.c)
-target_link_libraries(hfs-capture-synth PRIVATE hfs_capture)
+target_link_libraries(hfs-capture-synth PRIVATE hfs_capture m)

@@ -161,6 +161,10 @@ void kiosk_stats_reload(kiosk_stats *s, int ok);
 /* "capture SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED SUPERSEDED" after the
  * frame that showed a capture frame's heights. */
 void kiosk_stats_capture(kiosk_stats *s, const hfs_capture_live *live, const kiosk_frame *f);
+/* "sky SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED SUPERSEDED NLIGHTS
+ * [ID PHI_DEG ELEV_DEG]..." after the frame that showed a sky frame's
+ * lighting. */
+void kiosk_stats_sky(kiosk_stats *s, const hfs_capture_live *live, const kiosk_frame *f);
 void kiosk_stats_flush(kiosk_stats *s);
 /* Writes "exit"; -1 if any stats write failed (logged when it did). */
 int kiosk_stats_close(kiosk_stats *s, int frames);
@@ -200,6 +204,7 @@ void kiosk_check_stop(kiosk_check *c);
 typedef struct kiosk {
     kiosk_opts opt;
     hfs_capture_live *capture;     /* NULL: no [capture] with role = heights  */
+    hfs_capture_live *capture_env; /* NULL: none with role = environment      */
     kiosk_check check;             /* the running reload check, if any       */
     kiosk_world *world;
     kiosk_frame frame;
@@ -216,14 +221,20 @@ typedef struct kiosk {
 int kiosk_inputs_create(const kiosk *k, const hfs_input_config *cfg, hfs_input_set **out,
                         hfs_error *err);
 
-/* Opens the configuration's first role = heights capture (none: nothing
- * to do) into k->capture; its grid defaults to w's field size. */
+/* Opens the configuration's first role = heights capture into k->capture
+ * (its grid defaults to w's field size) and its first role = environment
+ * capture into k->capture_env (none: nothing to do). */
 int kiosk_capture_open(kiosk *k, const kiosk_world *w, hfs_error *err);
 /* Takes the newest frame: 1 when the heights changed (w's field now shows
  * them), 0 otherwise.  Losses and bad frames are logged, never fatal. */
 int kiosk_capture_drain(hfs_capture_live *live, kiosk_world *w);
 /* Points w's field at the capture's heights (after a reload). */
 void kiosk_capture_apply(hfs_capture_live *live, kiosk_world *w);
+/* The sky camera: its lighting (smoothed SH, lights) into w and w
+ * relit; 1 when the lighting changed.  _drain takes the newest frame
+ * first; _apply alone after a reload. */
+int kiosk_capture_sky_drain(hfs_capture_live *live, kiosk_world *w);
+int kiosk_capture_sky_apply(hfs_capture_live *live, kiosk_world *w);
 
 /* Runs until SIGTERM/SIGINT, a close request, the end of the replay
  * (--exit-after-replay) or a fatal error.  Returns 0 (clean) or 1. */

@@ -152,16 +152,26 @@ static int show(kiosk *k, int events)
     return 0;
 }
 
+/* The capture lines of a frame that showed new heights or a new sky. */
+static void capture_stats(kiosk *k, int heights, int sky)
+{
+    if (heights)
+        kiosk_stats_capture(k->stats, k->capture, &k->frame);
+    if (sky)
+        kiosk_stats_sky(k->stats, k->capture_env, &k->frame);
+}
+
 /* Relight, render, present, then the stats of the batch.  -1: fatal.
- * heights: the capture brought new heights (no relight needed). */
-static int show_batch(kiosk *k, loop *l, int heights)
+ * heights: the capture brought new heights (no relight needed); sky: the
+ * sky camera relit the world already. */
+static int show_batch(kiosk *k, loop *l, int heights, int sky)
 {
     batch *b = &l->b;
     int shown = 0;
-    if (heights && !b->any_change) {
+    if ((heights || sky) && !b->any_change) {
         if (show(k, 0))
             return -1;
-        kiosk_stats_capture(k->stats, k->capture, &k->frame);
+        capture_stats(k, heights, sky);
     } else if (!b->any_change && k->frame.deferred > 0) {
         /* Amortizing: passes still wait for this scene; no event to log. */
         if (show(k, 0))
@@ -175,8 +185,7 @@ static int show_batch(kiosk *k, loop *l, int heights)
             if (show(k, b->n))
                 return -1;
             shown = 1;
-            if (heights)
-                kiosk_stats_capture(k->stats, k->capture, &k->frame);
+            capture_stats(k, heights, sky);
         }
     }
     for (int i = 0; i < b->n; ++i)
@@ -185,6 +194,22 @@ static int show_batch(kiosk *k, loop *l, int heights)
     b->n = 0;
     b->any_change = 0;
     return 0;
+}
+
+/* --exit-after-capture: every replayed capture has played to its end (a
+ * device never ends). */
+static int captures_finished(const kiosk *k)
+{
+    hfs_capture_live *c[2] = {k->capture, k->capture_env};
+    int replays = 0, done = 0;
+    for (int i = 0; i < 2; ++i) {
+        hfs_capture_live_stats cs = {0};
+        if (c[i])
+            hfs_capture_live_stats_get(c[i], &cs);
+        replays += cs.replay;
+        done += cs.replay && cs.finished;
+    }
+    return replays > 0 && done == replays;
 }
 
 /* ---- reload ------------------------------------------------------------------- */
@@ -274,6 +299,7 @@ static int reload(kiosk *k, int admitted)
     kiosk_world_free(k->world);
     k->world = nw;
     kiosk_capture_apply(k->capture, k->world); /* the camera's heights, not the file's */
+    kiosk_capture_sky_apply(k->capture_env, k->world); /* and its sky */
     kiosk_log(KIOSK_INFO, "reloaded %s%s%s", k->opt.scene_path,
               k->opt.input_path ? " and " : "", k->opt.input_path ? k->opt.input_path : "");
     kiosk_stats_reload(k->stats, 1);
@@ -364,14 +390,11 @@ int kiosk_run(kiosk *k)
             kiosk_log(KIOSK_INFO, "replay finished, exiting");
             break;
         }
-        hfs_capture_live_stats cs = {0};
-        if (k->capture)
-            hfs_capture_live_stats_get(k->capture, &cs);
-        if (k->opt.exit_after_capture && cs.finished && k->frame.deferred == 0) {
+        if (k->opt.exit_after_capture && captures_finished(k) && k->frame.deferred == 0) {
             kiosk_log(KIOSK_INFO, "capture replay finished, exiting");
             break;
         }
-        struct pollfd fds[4 + HFS_INPUT_SET_MAX];
+        struct pollfd fds[5 + HFS_INPUT_SET_MAX]; /* + 2 cameras */
         int n = 0;
         fds[n++] = (struct pollfd){.fd = k->sigfd, .events = POLLIN};
         const int dfd = hfs_display_fd(k->display);
@@ -383,6 +406,7 @@ int kiosk_run(kiosk *k)
         int64_t deadline = INT64_MAX;
         n += hfs_input_set_pollfds(k->inputs, fds + n, HFS_INPUT_SET_MAX, &deadline);
         n += hfs_capture_live_pollfd(k->capture, fds + n, &deadline);
+        n += hfs_capture_live_pollfd(k->capture_env, fds + n, &deadline);
         if (k->replay) {
             const int64_t d = hfs_input_source_deadline(k->replay);
             deadline = d < deadline ? d : deadline;
@@ -419,7 +443,8 @@ int kiosk_run(kiosk *k)
         l->saved = k->world->scene;
         drain(k, &l->b);
         const int heights = kiosk_capture_drain(k->capture, k->world);
-        if (show_batch(k, l, heights)) {
+        const int sky = kiosk_capture_sky_drain(k->capture_env, k->world);
+        if (show_batch(k, l, heights, sky)) {
             rc = 1;
             break;
         }

@@ -172,7 +172,11 @@ static int teardown(kiosk *k)
     hfs_input_source_destroy(k->replay);
     hfs_input_set_destroy(k->inputs);
     hfs_error cerr = {{0}};
-    const int record_rc = hfs_capture_live_close(k->capture, &cerr); /* the recording's end */
+    int record_rc = hfs_capture_live_close(k->capture, &cerr); /* the recording's end */
+    if (!record_rc)
+        record_rc = hfs_capture_live_close(k->capture_env, &cerr);
+    else
+        hfs_capture_live_close(k->capture_env, NULL);
     if (record_rc)
         kiosk_log(KIOSK_ERR, "%s", cerr.msg);
     kiosk_frame_free(&k->frame);
@@ -258,10 +262,12 @@ static int start(kiosk *k)
         kiosk_log(KIOSK_ERR, "%s", err.msg);
         return 1;
     }
-    hfs_capture_live_stats cs = {0};
+    hfs_capture_live_stats cs = {0}, ce = {0};
     if (k->capture)
         hfs_capture_live_stats_get(k->capture, &cs);
-    if (o->exit_after_capture && !cs.replay) {
+    if (k->capture_env)
+        hfs_capture_live_stats_get(k->capture_env, &ce);
+    if (o->exit_after_capture && !cs.replay && !ce.replay) {
         kiosk_log(KIOSK_ERR, "--exit-after-capture needs a [capture NAME] with replay = DIR");
         return 1;
     }

@@ -12,6 +12,8 @@
  *   event  T_EVENT_NS T_PRESENT_NS LATENCY_NS FRAME CHANGED CONTROL
  *   reload T_NS OK CPU_US
  *   capture SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED SUPERSEDED
+ *   sky    SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED SUPERSEDED
+ *          NLIGHTS [ID PHI_DEG ELEV_DEG]...
  *   exit   T_NS CPU_US FRAMES
  *
  * "frame" is written after hfs_display_present returned, then one "event"
@@ -147,6 +149,25 @@ void kiosk_stats_capture(kiosk_stats *s, const hfs_capture_live *live, const kio
     fprintf(s->f, "capture %u %lld %lld %lld %lld %ld %ld\n", cs.sequence, (long long)cs.t_ns,
             (long long)f->present_ns, (long long)(f->present_ns - cs.t_ns),
             (long long)cs.cpu_ns, cs.dropped, cs.superseded);
+    check(s);
+}
+
+/* As "capture", for the environment camera, plus its lights. */
+void kiosk_stats_sky(kiosk_stats *s, const hfs_capture_live *live, const kiosk_frame *f)
+{
+    if (!s || s->failed || !live)
+        return;
+    hfs_capture_live_stats cs;
+    hfs_capture_live_stats_get(live, &cs);
+    uint64_t serial;
+    const hfs_camsky_out *o = hfs_capture_live_sky(live, &serial);
+    fprintf(s->f, "sky %u %lld %lld %lld %lld %ld %ld %d", cs.sequence, (long long)cs.t_ns,
+            (long long)f->present_ns, (long long)(f->present_ns - cs.t_ns),
+            (long long)cs.cpu_ns, cs.dropped, cs.superseded, o ? o->n_keys : 0);
+    for (int i = 0; o && i < o->n_keys; ++i)
+        fprintf(s->f, " %d %.3f %.3f", o->ids[i], o->keys[i].phi * 57.29577951308232,
+                o->keys[i].elev * 57.29577951308232);
+    fputc('\n', s->f);
     check(s);
 }
 

@@ -6,8 +6,8 @@
 #   - a frame file broken mid-stream: one warning naming it, the kiosk
 #     goes on showing the last good heights and the frames after it;
 #   - --capture-record writes a recording that replays the same frames;
-#   - configuration errors are file:line: problem (role = environment is
-#     not yet supported; a missing recording).
+#   - configuration errors are file:line: problem (a sky section given a
+#     depth recording's format; a missing recording).
 # 77 when the kiosk has no GLES context (as the other kiosk GL tests).
 set -u
 KIOSK=$1 SYNTH=$2 HFGEN=$3
@@ -45,9 +45,9 @@ truncate -s 100 rec/frame-000015.raw
 [ "$(grep -c '^capture ' st3.txt)" -ge 20 ] || fail "frames after the broken one not shown"
 
 # Configuration errors.
-printf '[capture env]\nreplay = rec\nrole = environment\n' > env.ini
-"$KIOSK" scene.ini --input env.ini --check 2> e.txt && fail "environment accepted"
-grep -q 'env.ini:3: role: environment is not yet supported' e.txt || fail "$(cat e.txt)"
+printf '[capture env]\nreplay = rec\nrole = environment\nformat = Y16\n' > env.ini
+"$KIOSK" scene.ini --input env.ini --check 2> e.txt && fail "environment of depth accepted"
+grep -q 'env.ini:4: format: role environment needs colour or grey' e.txt || fail "$(cat e.txt)"
 printf '[capture a]\nreplay = none\n' > miss.ini
 "$KIOSK" scene.ini --input miss.ini --display headless 2> m.txt && fail "missing recording"
 grep -q 'none/capture.txt' m.txt || fail "$(cat m.txt)"

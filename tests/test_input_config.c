@@ -158,13 +158,26 @@ static const bad_case bad[] = {
      "frame"},
     {"bad_capture_nosource.ini", HFS_E_FORMAT, ":2: [capture cam]: give device = PATH or "
      "replay = DIR (one of them)"},
-    {"bad_capture_role.ini", HFS_E_FORMAT, ":4: role: environment is not yet supported (only "
-     "heights; the environment role needs the environment-map decomposition)"},
+    {"bad_capture_role.ini", HFS_E_FORMAT, ":5: format: role environment needs colour or grey "
+     "(YUYV or GREY), not Z16"},
+    {"bad_capture_mapping.ini", HFS_E_FORMAT, ":5: mapping: 'cube' is not mirrorball, fisheye "
+     "or equirect"},
+    {"bad_capture_fov.ini", HFS_E_FORMAT, ":5: fov: applies to mapping = fisheye"},
+    {"bad_capture_exposure.ini", HFS_E_FORMAT, ":5: exposure: '-1' is not a number in [1e-06, "
+     "1e+09] (radiance per unit code)"},
+    {"bad_capture_sky_key.ini", HFS_E_FORMAT, ":4: mapping: applies to role = environment"},
+    {"bad_capture_depth_key.ini", HFS_E_FORMAT, ":5: depth_scale: applies to role = heights"},
+    {"bad_capture_env_lights.ini", HFS_E_FORMAT, ":5: env_lights: 'many' is not off, auto or "
+     "0..8"},
+    {"bad_capture_center.ini", HFS_E_FORMAT, ":6: center: 700 100 is outside the 640x480 "
+     "frame"},
+    {"bad_capture_transfer.ini", HFS_E_FORMAT, ":5: transfer: 'gamma' is not srgb or linear"},
     {"bad_capture_plane.ini", HFS_E_FORMAT, ":4: plane: '0 0' is not 'auto' or A B C (metres; "
      "C > 0)"},
     {"bad_capture_key.ini", HFS_E_FORMAT, ":4: unknown capture key 'zoom' (known: device, "
      "replay, loop, format, size, rate, buffers, role, depth_scale, min_depth, max_depth, "
-     "plane, roi, grid, zgain, window, gate_mm, hysteresis_mm, jump_mm)"},
+     "plane, roi, grid, zgain, window, gate_mm, hysteresis_mm, jump_mm, mapping, center, "
+     "radius, fov, rotate, hemisphere, transfer, exposure, env_size, smoothing, env_lights)"},
     {"missing.ini", HFS_E_IO, ": cannot open input configuration: No such file or directory"},
 };
 
@@ -187,6 +200,35 @@ static void capture_only(void)
               fabs(p->gate - 0.002) < 1e-12 && fabs(p->hysteresis - 0.001) < 1e-12 &&
               fabs(p->jump - 0.008) < 1e-12 && p->zgain == 10 && p->min_depth == 0.3 &&
               p->max_depth == 2, "capture_only: the depth parameters");
+}
+
+/* Both roles at once, every sky key read. */
+static void capture_both(void)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/capture_both.ini", data_dir);
+    hfs_input_config cfg;
+    hfs_error err = {{0}};
+    CHECK(hfs_input_config_load(path, &cfg, &err) == 0, "capture_both: %s", err.msg);
+    const hfs_capture_config *h = &cfg.captures.c[0], *e = &cfg.captures.c[1];
+    const hfs_camenv_params *p = &e->env;
+    CHECK(cfg.captures.n == 2 && h->role == HFS_ROLE_HEIGHTS && e->role == HFS_ROLE_ENVIRONMENT &&
+              !strcmp(e->replay, "skyrec") && e->format == HFS_PIX_GREY, "capture_both: roles");
+    CHECK(p->mapping == HFS_MAP_FISHEYE && p->has_center && p->cx == 320 && p->cy == 240 &&
+              p->radius == 230 && p->fov_deg == 190 && p->rotate_deg == 90 && p->lower &&
+              p->linear && p->exposure == 2.5 && p->map_w == 128 && p->map_h == 64 &&
+              p->smoothing_s == 0.5 && p->env_lights == 2, "capture_both: the sky parameters");
+    /* The defaults of a bare environment section: YUYV, mirror ball. */
+    hfs_capture_configs cc = {0};
+    char msg[200];
+    CHECK(!hfs_capture_config_begin(&cc, "s", 1, msg, sizeof msg) &&
+              !hfs_capture_config_key(&cc, "replay", "r", 2, msg, sizeof msg) &&
+              !hfs_capture_config_key(&cc, "role", "environment", 3, msg, sizeof msg) &&
+              !hfs_capture_config_end(&cc, msg, sizeof msg), "bare sky: %s", msg);
+    CHECK(cc.c[0].format == HFS_PIX_YUYV && cc.c[0].env.mapping == HFS_MAP_MIRRORBALL &&
+              cc.c[0].env.map_w == 256 && cc.c[0].env.map_h == 128 &&
+              cc.c[0].env.exposure == 1.0 && cc.c[0].env.smoothing_s == 0.2 &&
+              cc.c[0].env.env_lights == -2 && !cc.c[0].env.linear, "bare sky: the defaults");
 }
 
 static void broken(void)
@@ -217,6 +259,7 @@ int main(int argc, char **argv)
     defaults();
     broken();
     capture_only();
+    capture_both();
     if (failures)
         fprintf(stderr, "test_input_config: %d failure(s)\n", failures);
     return failures ? 1 : 0;
