@@ -33,6 +33,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "hfshade_version.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -71,6 +73,14 @@ HFS_API int hfs_fail(hfs_error *err, int code, const char *fmt, ...)
 
 /* Stable name of a status code ("invalid", "format", ...). */
 HFS_API const char *hfs_status_name(int code);
+
+/* ---- version ------------------------------------------------------------- */
+
+/* The library's version at run time, "MAJOR.MINOR.PATCH", and as
+ * MAJOR * 10000 + MINOR * 100 + PATCH; compare with HFS_VERSION_STRING and
+ * HFS_VERSION_NUMBER (hfshade_version.h), the headers compiled against. */
+HFS_API const char *hfs_version(void);
+HFS_API int hfs_version_number(void);
 
 /* ---- height field -------------------------------------------------------- */
 

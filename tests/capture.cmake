@@ -43,7 +43,8 @@ endif()
 #                        sky camera ("gl": 77 without GLES)
 add_library(hfs_capture_preload MODULE capture_preload.c capture_fake.c)
 target_include_directories(hfs_capture_preload PRIVATE ${PROJECT_SOURCE_DIR}/board
-                           ${PROJECT_SOURCE_DIR}/runtime)
+                           ${PROJECT_SOURCE_DIR}/runtime
+                           ${PROJECT_BINARY_DIR}/generated/include)
 target_link_libraries(hfs_capture_preload PRIVATE ${CMAKE_DL_LIBS} Threads::Threads)
 # The interposed calls must be exported (the project hides symbols by default).
 set_target_properties(hfs_capture_preload PROPERTIES C_VISIBILITY_PRESET default)

@@ -1,0 +1,70 @@
+# package.cmake — `cpack -G DEB` in the build directory makes four Debian
+# packages, one per install component (cmake/install.cmake):
+#   libhfshade0     the shared library              Depends: from dpkg-shlibdeps
+#   libhfshade-dev  headers, .pc, CMake package     Depends: libhfshade0 (= version)
+#   hfshade-tools   hfshade, hfgen, hfbench         Depends: from dpkg-shlibdeps
+#   hfshade-kiosk   the kiosk, its unit, /etc/hfshade/ (conffiles), demo data
+#                                                   Depends: dpkg-shlibdeps, adduser
+# The tools and the kiosk link the core statically (runtime/shared.cmake), so
+# they do not depend on libhfshade0.  Packages install under /usr, the
+# configuration in /etc and the unit in /lib/systemd/system whatever prefix
+# the build was configured with (cmake/install_time.cmake, CPACK_SET_DESTDIR).
+# tests/package.sh builds them and checks contents and control fields.
+set(CPACK_PACKAGE_NAME hfshade)
+set(CPACK_PACKAGE_VENDOR "hfshade")
+set(CPACK_PACKAGE_CONTACT "hfshade maintainers <hfshade@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "soft shadows on dynamic height fields (OpenGL ES 3)")
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_SET_DESTDIR ON)
+set(CPACK_STRIP_FILES ON)
+set(CPACK_COMPONENTS_ALL runtime dev tools kiosk)
+
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
+set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://github.com/hfshade/hfshade")
+
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME libhfshade${PROJECT_VERSION_MAJOR})
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_SECTION libs)
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_GENERATE_SHLIBS ON)
+set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS_POLICY ">=")
+# libEGL is linked; a driver (Mesa's, or the board's) is what makes contexts.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "libegl-mesa0 | libegl-vendor")
+set(CPACK_COMPONENT_RUNTIME_DESCRIPTION
+"soft shadows on dynamic height fields - shared library
+ hfshade lights height fields (terrain, panels) with environment maps,
+ distant key lights and local spherical lights, with soft shadows, on
+ OpenGL ES 3.0 (EGL) or on the CPU.")
+
+set(CPACK_DEBIAN_DEV_PACKAGE_NAME libhfshade-dev)
+set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
+set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS
+    "libhfshade${PROJECT_VERSION_MAJOR} (= ${PROJECT_VERSION})")
+set(CPACK_COMPONENT_DEV_DESCRIPTION
+"soft shadows on dynamic height fields - development files
+ Headers, pkg-config file (hfshade.pc) and CMake package
+ (find_package(hfshade), target hfshade::hfshade) of libhfshade.")
+
+set(CPACK_DEBIAN_TOOLS_PACKAGE_NAME hfshade-tools)
+set(CPACK_DEBIAN_TOOLS_PACKAGE_SUGGESTS "gnuplot-nox")
+set(CPACK_COMPONENT_TOOLS_DESCRIPTION
+"soft shadows on dynamic height fields - command-line tools
+ hfshade renders, compares and checks scenes (PNG/PFM/EXR, GLES or CPU);
+ hfgen makes procedural height fields and skies; hfbench measures.")
+
+set(CPACK_DEBIAN_KIOSK_PACKAGE_NAME hfshade-kiosk)
+set(CPACK_DEBIAN_KIOSK_PACKAGE_DEPENDS "adduser")
+configure_file(${PROJECT_SOURCE_DIR}/cmake/deb/kiosk-postinst ${PROJECT_BINARY_DIR}/deb/kiosk/postinst COPYONLY)
+configure_file(${PROJECT_SOURCE_DIR}/cmake/deb/kiosk-conffiles ${PROJECT_BINARY_DIR}/deb/kiosk/conffiles COPYONLY)
+set(CPACK_DEBIAN_KIOSK_PACKAGE_CONTROL_EXTRA
+    ${PROJECT_BINARY_DIR}/deb/kiosk/postinst ${PROJECT_BINARY_DIR}/deb/kiosk/conffiles)
+set(CPACK_COMPONENT_KIOSK_DESCRIPTION
+"soft shadows on dynamic height fields - display kiosk
+ hfshade-kiosk shows a lit height field full screen (KMS, X11) and turns its
+ lights with knobs and buttons (GPIO, evdev) or a depth camera.  Ships a
+ systemd unit (not enabled) and its configuration in /etc/hfshade/.")
+
+include(CPack)

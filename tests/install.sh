@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# install.sh BUILD_DIR SOURCE_DIR VERSION — `cmake --install` into a fresh
+# prefix, then use what was installed as someone else would
+# (docs/INSTALL.md):
+#   1. the files land in their conventional places (lib, include/hfshade,
+#      lib/pkgconfig, lib/cmake/hfshade, bin, etc/hfshade, lib/systemd/system,
+#      share/hfshade), the unit's ExecStart names the installed kiosk and
+#      configuration, and the installed demo scene passes `hfshade --check`;
+#   2. libhfshade.so.VERSION has the SONAME libhfshade.so.MAJOR, needs only
+#      libc/libm/libEGL (no libpng, OpenEXR, inih, gpiod...), and exports
+#      exactly the functions the installed headers declare HFS_API;
+#   3. tests/install/consumer.c built with `pkg-config --cflags --libs
+#      hfshade` and, as a CMake project, with find_package(hfshade) +
+#      hfshade::hfshade, each run against the installed library (not the
+#      build tree's): versions agree, CPU render, GLES render or skip.
+set -euo pipefail
+build=$1 src=$2 version=$3
+major=${version%%.*}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+bad() { echo "install: FAIL: $*"; fail=1; }
+
+prefix=$tmp/prefix
+cmake --install "$build" --prefix "$prefix" >"$tmp/install.log" || { cat "$tmp/install.log"; exit 1; }
+libdir=$(sed -n 's/^libdir=${prefix}\///p' "$prefix"/lib*/pkgconfig/hfshade.pc 2>/dev/null | head -1)
+[ -n "$libdir" ] || { bad "no lib*/pkgconfig/hfshade.pc"; exit 1; }
+
+# 1. places
+for f in "$libdir/libhfshade.so.$version" "$libdir/libhfshade.so.$major" "$libdir/libhfshade.so" \
+         include/hfshade/hfshade.h include/hfshade/hfshade_version.h \
+         "$libdir/pkgconfig/hfshade.pc" "$libdir/cmake/hfshade/hfshadeConfig.cmake" \
+         "$libdir/cmake/hfshade/hfshadeConfigVersion.cmake" "$libdir/cmake/hfshade/hfshadeTargets.cmake" \
+         bin/hfshade bin/hfgen bin/hfbench bin/hfshade-kiosk bin/hfs-capture-info bin/hfs-capture-synth \
+         etc/hfshade/kiosk.ini etc/hfshade/demo.ini lib/systemd/system/hfshade-kiosk.service \
+         share/hfshade/jacksboro.png share/hfshade/courtyard.exr share/doc/hfshade-kiosk/KIOSK.md; do
+    [ -e "$prefix/$f" ] || bad "not installed: $f"
+done
+[ "$(readlink "$prefix/$libdir/libhfshade.so.$major")" = "libhfshade.so.$version" ] ||
+    bad "libhfshade.so.$major does not point at libhfshade.so.$version"
+# Only what a consumer needs: no test programs, no static internals.
+extra=$(cd "$prefix" && find . -type f -name '*.a' -o -type f -name 'test_*' | head -3)
+[ -z "$extra" ] || bad "installed internals: $extra"
+grep -q "^ExecStart=$prefix/bin/hfshade-kiosk $prefix/etc/hfshade/demo.ini --input $prefix/etc/hfshade/kiosk.ini" \
+    "$prefix/lib/systemd/system/hfshade-kiosk.service" || bad "the unit's ExecStart is not the installed kiosk"
+"$prefix/bin/hfshade" render "$prefix/etc/hfshade/demo.ini" --backend cpu --check >"$tmp/check.out" 2>&1 ||
+    bad "installed demo scene: $(cat "$tmp/check.out")"
+
+# 2. the shared library
+so=$prefix/$libdir/libhfshade.so.$version
+readelf -d "$so" | grep -q "SONAME.*\[libhfshade.so.$major\]" || bad "SONAME is not libhfshade.so.$major"
+needed=$(readelf -d "$so" | sed -n 's/.*NEEDED.*\[\(.*\)\]/\1/p' | sort | tr '\n' ' ')
+for n in $needed; do
+    case $n in
+        libc.so.*|libm.so.*|libEGL.so.*|libdl.so.*|libpthread.so.*|ld-linux*) ;;
+        *) bad "libhfshade needs $n (only libc, libm, libEGL allowed)" ;;
+    esac
+done
+nm -D --defined-only "$so" | awk '{print $3}' | grep -vE '^(_init|_fini|_edata|_end|__bss_start)$' |
+    sort -u >"$tmp/exported"
+cat "$prefix"/include/hfshade/*.h | tr '\n' ' ' |
+    grep -oE 'HFS_API[^;{(]*[( ]' | grep -oE 'hfs_[a-z0-9_]+ *\($' | tr -d ' (' | sort -u >"$tmp/declared"
+[ -s "$tmp/declared" ] || bad "no HFS_API declarations found in the installed headers"
+if ! diff "$tmp/declared" "$tmp/exported" >"$tmp/symdiff"; then
+    bad "exported symbols differ from the headers' HFS_API functions (< declared only, > exported only):"
+    cat "$tmp/symdiff"
+fi
+echo "install: libhfshade.so.$major needs: $needed; exports $(wc -l <"$tmp/exported") functions"
+
+# 3. consumers, run against the installed library
+export PKG_CONFIG_PATH=$prefix/$libdir/pkgconfig
+cc -std=c11 -Wall -Wextra -Werror -pedantic "$src/tests/install/consumer.c" -o "$tmp/consumer-pc" \
+    $(pkg-config --cflags --libs hfshade) -lm || bad "pkg-config build"
+cmake -S "$src/tests/install" -B "$tmp/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" \
+      -DCMAKE_BUILD_TYPE=Release >"$tmp/cmake.log" 2>&1 &&
+    cmake --build "$tmp/cmake-build" >>"$tmp/cmake.log" 2>&1 || { cat "$tmp/cmake.log"; bad "find_package build"; }
+for exe in "$tmp/consumer-pc" "$tmp/cmake-build/consumer"; do
+    [ -x "$exe" ] || continue
+    lib=$(LD_LIBRARY_PATH=$prefix/$libdir ldd "$exe" | sed -n 's/.*libhfshade.so.[0-9]* => \([^ ]*\).*/\1/p')
+    case $lib in
+        "$prefix"/*) ;;
+        *) bad "$(basename "$(dirname "$exe")")/consumer resolves libhfshade to '$lib', not the installed one" ;;
+    esac
+    LD_LIBRARY_PATH=$prefix/$libdir "$exe" "$version" || bad "$exe failed"
+done
+[ $fail = 0 ] && echo "install: ok"
+exit $fail
