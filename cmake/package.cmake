@@ -16,7 +16,8 @@ set(CPACK_PACKAGE_CONTACT "hfshade maintainers <hfshade@localhost>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "soft shadows on dynamic height fields (OpenGL ES 3)")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
-set(CPACK_SET_DESTDIR ON)
+set(CPACK_INSTALL_PREFIX /usr)   # the prefix install rules see under cpack
+set(CPACK_SET_DESTDIR ON)        # ... and DESTDIR the staging directory
 set(CPACK_STRIP_FILES ON)
 set(CPACK_COMPONENTS_ALL runtime dev tools kiosk)
 
@@ -29,7 +30,7 @@ set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://github.com/hfshade/hfshade")
 
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME libhfshade${PROJECT_VERSION_MAJOR})
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SECTION libs)
-set(CPACK_DEBIAN_RUNTIME_PACKAGE_GENERATE_SHLIBS ON)
+set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)   # shlibs + ldconfig trigger
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS_POLICY ">=")
 # libEGL is linked; a driver (Mesa's, or the board's) is what makes contexts.
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "libegl-mesa0 | libegl-vendor")

@@ -11,3 +11,8 @@ if(NOT HFS_SANITIZE)
                    ${PROJECT_SOURCE_DIR} ${PROJECT_VERSION})
   set_tests_properties(install_consumer PROPERTIES LABELS "install;gl" TIMEOUT 180)
 endif()
+if(NOT HFS_SANITIZE)
+  add_test(NAME package_deb
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/package.sh ${PROJECT_BINARY_DIR} ${PROJECT_VERSION})
+  set_tests_properties(package_deb PROPERTIES LABELS install TIMEOUT 300)
+endif()

@@ -2,6 +2,8 @@
 # Installs hfshade's build and test dependencies from Debian 12's archive.
 # Idempotent: does nothing when everything is already installed.
 set -eu
+# dpkg-dev (dpkg-shlibdeps) and file are what `cpack -G DEB` runs to work
+# out the packages' dependencies (docs/INSTALL.md; tests/package.sh).
 # clang, libclang-rt-14-dev (libFuzzer and the sanitizer runtimes of
 # Debian 12's clang 14, only recommended by clang) and llvm (llvm-symbolizer
 # for readable reports) are for tools/fuzz.sh; gnuplot-nox draws hfbench's
@@ -15,7 +17,7 @@ PKGS="build-essential cmake pkg-config libpng-dev libinih-dev libstb-dev
       libopenexr-dev libegl-dev libgles-dev libosmesa6-dev libegl-mesa0
       libgl1-mesa-dri glslang-tools clang libclang-rt-14-dev llvm gnuplot-nox
       libx11-dev libgbm-dev libdrm-dev xvfb xauth libgpiod-dev libevdev-dev umockdev
-      linux-libc-dev libgdal-dev"
+      linux-libc-dev libgdal-dev dpkg-dev file"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"
