@@ -23,8 +23,10 @@ bad() { echo "install: FAIL: $*"; fail=1; }
 
 prefix=$tmp/prefix
 cmake --install "$build" --prefix "$prefix" >"$tmp/install.log" || { cat "$tmp/install.log"; exit 1; }
-libdir=$(sed -n 's/^libdir=${prefix}\///p' "$prefix"/lib*/pkgconfig/hfshade.pc 2>/dev/null | head -1)
-[ -n "$libdir" ] || { bad "no lib*/pkgconfig/hfshade.pc"; exit 1; }
+pc=$(find "$prefix" -path '*/pkgconfig/hfshade.pc' | head -1)
+[ -n "$pc" ] || { bad "no LIBDIR/pkgconfig/hfshade.pc installed"; exit 1; }
+libdir=$(sed -n 's/^libdir=${prefix}\///p' "$pc")   # lib or lib/<triplet>
+[ -n "$libdir" ] || { bad "$pc: no libdir=\${prefix}/..."; exit 1; }
 
 # 1. places
 for f in "$libdir/libhfshade.so.$version" "$libdir/libhfshade.so.$major" "$libdir/libhfshade.so" \
