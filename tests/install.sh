@@ -5,7 +5,8 @@
 #   1. the files land in their conventional places (lib, include/hfshade,
 #      lib/pkgconfig, lib/cmake/hfshade, bin, etc/hfshade, lib/systemd/system,
 #      share/hfshade), the unit's ExecStart names the installed kiosk and
-#      configuration, and the installed demo scene passes `hfshade --check`;
+#      configuration, `hfshade --version` prints VERSION, and the installed
+#      demo scene passes `hfshade --check`;
 #   2. libhfshade.so.VERSION has the SONAME libhfshade.so.MAJOR, needs only
 #      libc/libm/libEGL (no libpng, OpenEXR, inih, gpiod...), and exports
 #      exactly the functions the installed headers declare HFS_API;
@@ -45,6 +46,8 @@ extra=$(cd "$prefix" && find . -type f -name '*.a' -o -type f -name 'test_*' | h
 [ -z "$extra" ] || bad "installed internals: $extra"
 grep -q "^ExecStart=$prefix/bin/hfshade-kiosk $prefix/etc/hfshade/demo.ini --input $prefix/etc/hfshade/kiosk.ini" \
     "$prefix/lib/systemd/system/hfshade-kiosk.service" || bad "the unit's ExecStart is not the installed kiosk"
+[ "$("$prefix/bin/hfshade" --version)" = "hfshade $version" ] ||
+    bad "installed hfshade --version: '$("$prefix/bin/hfshade" --version 2>&1)', expected 'hfshade $version'"
 "$prefix/bin/hfshade" render "$prefix/etc/hfshade/demo.ini" --backend cpu --check >"$tmp/check.out" 2>&1 ||
     bad "installed demo scene: $(cat "$tmp/check.out")"
 

@@ -61,6 +61,7 @@ static void usage(FILE *f)
             "       hfshade query   [SCENE.ini] [--KEY VALUE ...] --points FILE  (x y z a line;\n"
             "                       prints each point's visible fraction of every key light)\n"
             "       hfshade keys\n"
+            "       hfshade --version\n"
             "       hfshade info [--context surfaceless|osmesa|auto]\n"
             "       hfshade envmap decompose MAP [--max-lights N] [--min-share F]\n"
             "                      [--contrast C] [--picture OUT.png]\n"
@@ -515,6 +516,10 @@ int main(int argc, char **argv)
     }
     if (!strcmp(c.command, "keys")) {
         print_keys();
+        return 0;
+    }
+    if (!strcmp(c.command, "--version") || !strcmp(c.command, "version")) {
+        printf("hfshade %s\n", hfs_version());
         return 0;
     }
     if (!strcmp(c.command, "envmap"))
