@@ -7,6 +7,7 @@
 #   kiosk    bin/{hfshade-kiosk,hfs-capture-info,hfs-capture-synth},
 #            SYSCONFDIR/hfshade/{kiosk.ini,demo.ini}, the systemd unit,
 #            share/hfshade/ (the demo's DEM and sky), its docs      hfshade-kiosk
+# (and share/doc/PACKAGE/{copyright,changelog.gz} for each: cmake/package.cmake)
 # Paths that depend on the prefix chosen at install time (`--prefix`, or
 # /usr under cpack) — the unit's ExecStart, /etc versus PREFIX/etc, the
 # .pc file — are written at install time by cmake/install_time.cmake.

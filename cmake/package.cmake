@@ -12,7 +12,10 @@
 # tests/package.sh builds them and checks contents and control fields.
 set(CPACK_PACKAGE_NAME hfshade)
 set(CPACK_PACKAGE_VENDOR "hfshade")
-set(CPACK_PACKAGE_CONTACT "hfshade maintainers <hfshade@localhost>")
+# Who signs the packages: set it when building packages to ship.
+set(HFS_DEB_MAINTAINER "hfshade maintainers <hfshade@example.org>" CACHE STRING
+    "Maintainer field of the Debian packages")
+set(CPACK_PACKAGE_CONTACT "${HFS_DEB_MAINTAINER}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "soft shadows on dynamic height fields (OpenGL ES 3)")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
@@ -26,12 +29,15 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
-set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://github.com/hfshade/hfshade")
 
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME libhfshade${PROJECT_VERSION_MAJOR})
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SECTION libs)
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)   # shlibs + ldconfig trigger
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS_POLICY ">=")
+# ldconfig through the trigger, as Debian policy 8.1.1 asks (CPack's own
+# postinst/postrm call it too: a lintian warning, not an error).
+configure_file(${PROJECT_SOURCE_DIR}/cmake/deb/runtime-triggers ${PROJECT_BINARY_DIR}/deb/runtime/triggers COPYONLY)
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_CONTROL_EXTRA ${PROJECT_BINARY_DIR}/deb/runtime/triggers)
 # libEGL is linked; a driver (Mesa's, or the board's) is what makes contexts.
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "libegl-mesa0 | libegl-vendor")
 set(CPACK_COMPONENT_RUNTIME_DESCRIPTION
@@ -67,5 +73,36 @@ set(CPACK_COMPONENT_KIOSK_DESCRIPTION
  hfshade-kiosk shows a lit height field full screen (KMS, X11) and turns its
  lights with knobs and buttons (GPIO, evdev) or a depth camera.  Ships a
  systemd unit (not enabled) and its configuration in /etc/hfshade/.")
+
+# Every package's /usr/share/doc/PACKAGE/{copyright,changelog.gz}, as Debian
+# policy 12.5 and 12.7 ask: cmake/deb/copyright, and a Debian-format
+# changelog made from CHANGELOG.md's sections (a native package's
+# changelog), gzip -9n.  `cmake --install` installs them too.
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/CHANGELOG.md)
+file(STRINGS ${PROJECT_SOURCE_DIR}/CHANGELOG.md hfs_sections REGEX "^### ")
+string(TIMESTAMP hfs_date "%a, %d %b %Y %H:%M:%S +0000" UTC)
+set(hfs_changelog "")
+foreach(component runtime dev tools kiosk)
+  string(TOUPPER ${component} upper)
+  set(package ${CPACK_DEBIAN_${upper}_PACKAGE_NAME})
+  set(text "${package} (${PROJECT_VERSION}) unstable; urgency=medium\n\n")
+  foreach(section IN LISTS hfs_sections)
+    string(REGEX REPLACE "^### +" "" section "${section}")
+    string(APPEND text "  * ${section}\n")
+  endforeach()
+  string(APPEND text "  * The whole history, by issue: CHANGELOG.md in the source.\n\n")
+  string(APPEND text " -- ${HFS_DEB_MAINTAINER}  ${hfs_date}\n")
+  string(REPLACE "\n" "
+" text "${text}")
+  set(dir ${PROJECT_BINARY_DIR}/deb/${component}/doc)
+  file(MAKE_DIRECTORY ${dir})
+  file(WRITE ${dir}/changelog "${text}")
+  execute_process(COMMAND gzip -9nf ${dir}/changelog RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "gzip -9n ${dir}/changelog failed")
+  endif()
+  install(FILES ${dir}/changelog.gz ${PROJECT_SOURCE_DIR}/cmake/deb/copyright
+          DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/${package} COMPONENT ${component})
+endforeach()
 
 include(CPack)

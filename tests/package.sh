@@ -10,7 +10,8 @@
 #     libc6 and libegl1 only; the tools and the kiosk on the libraries they
 #     link (libpng, OpenEXR, inih; the kiosk also gpiod, evdev, DRM/GBM, X11,
 #     adduser); every dependency a package dpkg knows here;
-#   - libhfshade0 carries a shlibs file and runs ldconfig; the kiosk marks
+#   - every package has /usr/share/doc/PACKAGE/{copyright,changelog.gz};
+#   - libhfshade0 carries a shlibs file and an ldconfig trigger; the kiosk marks
 #     /etc/hfshade/*.ini as conffiles, and its unit runs /usr/bin/hfshade-kiosk
 #     on /etc/hfshade/; its postinst is valid sh;
 #   - lintian, where installed, finds no error.
@@ -33,9 +34,9 @@ want=$(for n in $names; do echo "${n}_${version}_$arch.deb"; done | sort | tr '\
 deb() { echo "$tmp/out/${1}_${version}_$arch.deb"; }
 files() { dpkg-deb -c "$(deb "$1")" | awk '$1 !~ /^d/ {print $6}' | sed 's|^\./|/|' | sort; }
 depends() { dpkg-deb -f "$(deb "$1")" Depends; }
-expect_files() { # PACKAGE FILE... : exactly these files (and links)
+expect_files() { # PACKAGE FILE... : exactly these files (and links), and its doc files
     local p=$1; shift
-    printf '%s\n' "$@" | sort >"$tmp/want"
+    printf '%s\n' "$@" "/usr/share/doc/$p/copyright" "/usr/share/doc/$p/changelog.gz" | sort >"$tmp/want"
     files "$p" >"$tmp/got"
     diff "$tmp/want" "$tmp/got" >"$tmp/diff" || { bad "$p: contents (< missing, > unexpected):"; cat "$tmp/diff"; }
 }
@@ -88,8 +89,12 @@ for n in $names; do
 done
 grep -qx "libhfshade $major libhfshade$major (>= $version)" "$tmp/ctl/libhfshade$major/shlibs" 2>/dev/null ||
     bad "libhfshade$major: no shlibs line 'libhfshade $major libhfshade$major (>= $version)'"
-grep -q ldconfig "$tmp/ctl/libhfshade$major/postinst" "$tmp/ctl/libhfshade$major/triggers" 2>/dev/null ||
-    bad "libhfshade$major does not run ldconfig"
+grep -qx "activate-noawait ldconfig" "$tmp/ctl/libhfshade$major/triggers" 2>/dev/null ||
+    bad "libhfshade$major has no ldconfig trigger"
+for n in $names; do
+    zcat "$tmp/data/usr/share/doc/$n/changelog.gz" | head -1 | grep -qx "$n ($version) unstable; urgency=medium" ||
+        bad "$n: changelog.gz does not start with '$n ($version) unstable; urgency=medium'"
+done
 printf '/etc/hfshade/demo.ini\n/etc/hfshade/kiosk.ini\n' >"$tmp/conf.want"
 sort "$tmp/ctl/hfshade-kiosk/conffiles" 2>/dev/null | diff "$tmp/conf.want" - >/dev/null ||
     bad "hfshade-kiosk conffiles: '$(cat "$tmp/ctl/hfshade-kiosk/conffiles" 2>/dev/null)'"
@@ -107,8 +112,9 @@ while read -r f; do
 done < <(find "$tmp/data" -type f)
 
 if command -v lintian >/dev/null; then
-    lintian --fail-on error --suppress-tags no-copyright-file,debian-changelog-file-missing \
-        "$tmp"/out/*.deb || bad "lintian reports errors"
+    lintian --fail-on error "$tmp"/out/*.deb >"$tmp/lintian.out" 2>&1 ||
+        { grep '^E:' "$tmp/lintian.out"; bad "lintian reports errors"; }
+    echo "package: lintian: $(grep -c '^E:' "$tmp/lintian.out") errors, $(grep -c '^W:' "$tmp/lintian.out") warnings"
 else
     echo "package: lintian not installed: not run"
 fi
