@@ -21,6 +21,9 @@
  * usage error.  Teardown always closes the display (kms restores the CRTC).
  */
 #define _GNU_SOURCE /* signalfd */
+#ifdef HFS_HAVE_GDAL
+#include "height_gdal.h"
+#endif
 #include "kiosk.h"
 
 #include <errno.h>
@@ -310,6 +313,9 @@ static int start(kiosk *k)
 
 int main(int argc, char **argv)
 {
+#ifdef HFS_HAVE_GDAL
+    hfs_gdal_register(); /* GeoTIFF, SRTM .hgt, VRT ... as scene heights */
+#endif
     kiosk_log_init();
     kiosk k;
     memset(&k, 0, sizeof k);

@@ -134,6 +134,12 @@ int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
     int rc = check_dataset(ds, path, opts, gt, err);
     if (!rc)
         rc = read_band(ds, path, opts, gt, &z, err);
+    /* Holes filled on the file's own grid, before any resampling spreads them. */
+    long holes = 0;
+    hfs_error ferr;
+    int frc;
+    if (!rc && (frc = hfs_height_fill_holes(z, w, h, 0, 0.0f, &holes, &ferr)))
+        rc = hfs_fail(err, frc, "%s: %s", path, ferr.msg);
     double cx = 0.0, cy = 0.0, cell = 0.0;
     if (!rc && gt[1] != 0.0) {
         cell_metres(ds, gt, h, &cx, &cy);
@@ -150,11 +156,6 @@ int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
     }
     GDALClose(ds);
     CPLPopErrorHandler();
-    long holes = 0;
-    hfs_error ferr;
-    int frc;
-    if (!rc && (frc = hfs_height_fill_holes(z, w, h, 0, 0.0f, &holes, &ferr)))
-        rc = hfs_fail(err, frc, "%s: %s", path, ferr.msg);
     if (rc) {
         free(z);
         return rc;
