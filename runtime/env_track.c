@@ -100,13 +100,15 @@ static int extract_at(env_ctx *c, const hfs_env_light *l, hfs_env_light *out)
     return ok;
 }
 
-/* Step (1): the tracked lights, in tracking order; drops the vanished. */
-static void extract_tracked(hfs_env_tracker *t, env_ctx *c, hfs_env_decomp *out)
+/* Step (1): the tracked lights, in tracking order; drops the vanished.
+ * missed[k]: the light kept as k was not found where it was. */
+static void extract_tracked(hfs_env_tracker *t, env_ctx *c, hfs_env_decomp *out, int *missed)
 {
     int keep = 0;
     for (int k = 0; k < t->n; ++k) {
         hfs_env_light got;
         const int ok = extract_at(c, &t->tracked[k], &got);
+        missed[keep] = !ok;
         if (ok) {
             got.id = t->tracked[k].id;
             smooth(t, c, k, &got);
@@ -148,6 +150,36 @@ static int candidates(const hfs_env_tracker *t, const env_ctx *c, int room,
     }
     free(copy);
     return rc ? rc : found;
+}
+
+/* Step (2b): a tracked light not found where it was (a frame skipped by a
+ * slow consumer lets a sun move past its search window) takes the nearest
+ * candidate within REACQUIRE_RAD, keeping its identity, instead of
+ * vanishing and coming back as a new light; the candidate is used up. */
+#define REACQUIRE_RAD (20.0 * 3.14159265358979323846 / 180.0)
+static void reacquire(hfs_env_tracker *t, env_ctx *c, hfs_env_light *cand, int *nc,
+                      const int *missed, hfs_env_decomp *out)
+{
+    for (int k = 0; k < t->n; ++k) {
+        if (!missed[k])
+            continue;
+        int best = -1;
+        double bd = REACQUIRE_RAD;
+        for (int j = 0; j < *nc; ++j) {
+            const double d = angle_between(&cand[j], &t->tracked[k]);
+            if (d < bd)
+                bd = d, best = j;
+        }
+        hfs_env_light got;
+        if (best < 0 || !extract_at(c, &cand[best], &got))
+            continue;
+        got.id = t->tracked[k].id;
+        t->tracked[k] = got;
+        memset(t->vel[k], 0, sizeof t->vel[k]);
+        t->weak[k] = got.share >= t->vanish_share ? 0 : t->weak[k];
+        out->light[out->n_lights++] = got;
+        cand[best] = cand[--*nc];
+    }
 }
 
 /* Step (3): counts candidates against last frame's; promotes the steady. */
@@ -195,14 +227,16 @@ int hfs_env_track(hfs_env_tracker *t, float *rgb, int w, int h, const char *name
     int rc = envd_begin(&c, rgb, w, h, &t->opts, name, err);
     if (rc)
         return rc;
-    extract_tracked(t, &c, out);
+    int missed[HFS_ENV_MAX_LIGHTS] = {0};
+    extract_tracked(t, &c, out, missed);
     hfs_env_light cand[HFS_ENV_MAX_LIGHTS];
-    const int nc = candidates(t, &c, t->opts.max_lights - t->n, cand, err);
+    int nc = candidates(t, &c, t->opts.max_lights - t->n, cand, err);
     if (nc < 0) {
         envc_free(&c);
         memset(out, 0, sizeof *out);
         return nc;
     }
+    reacquire(t, &c, cand, &nc, missed, out);
     promote(t, &c, cand, nc, out);
     t->frames++;
     envd_finish(&c, out);

@@ -305,6 +305,39 @@ static void test_determinism(void)
     free(b);
 }
 
+/* Frames skipped by a slow consumer: the sun 12 degrees on from where the
+ * tracker saw it, past its search window.  It keeps its identity (without
+ * env_track.c's reacquire it vanished and came back as a new light, after
+ * the appear hysteresis). */
+static void test_tracking_skip(void)
+{
+    const int w = 256, h = 128;
+    hfs_env_tracker t;
+    hfs_env_tracker_init(&t, NULL);
+    int id = -1;
+    for (int f = 0; f < 6; ++f) {
+        hfs_sky_desc s;
+        hfs_sky_defaults(&s, w, h);
+        s.seed = (unsigned)f + 1;
+        s.n_disks = 1;
+        const double az = 100.0 + (f < 5 ? 0.25 * f : 12.0);
+        s.disk[0] = (hfs_sky_disk){az, 30, 0.25, {1, 0.95f, 0.9f}};
+        double e[2][3];
+        float *m = sky(&s, e);
+        hfs_sky_set_share(&s, 0, 0.6, m, e);
+        hfs_env_decomp d;
+        hfs_error err = {{0}};
+        CHECK(!hfs_env_track(&t, m, w, h, "frame", &d, &err), "skip %d: %s", f, err.msg);
+        const int k = find(&d, &s.disk[0]);
+        CHECK(k >= 0, "skip %d: the sun at %.1f deg not found", f, az);
+        if (k >= 0 && id < 0)
+            id = d.light[k].id;
+        if (k >= 0)
+            CHECK(d.light[k].id == id, "skip %d: sun id %d, was %d", f, d.light[k].id, id);
+        free(m);
+    }
+}
+
 /* A 256x128 probe: the sun moving 0.25 deg a frame on a noisy sky beside a
  * window whose share wanders about the threshold (as bench_env track). */
 static void test_tracking(void)
@@ -415,6 +448,7 @@ int main(int argc, char **argv)
     test_sun(256, 128, 0.5, 0.02);
     test_determinism();
     test_tracking();
+    test_tracking_skip();
     test_odd_maps();
     printf("test_env_decompose: %ld checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
