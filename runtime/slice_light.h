@@ -92,9 +92,8 @@ double hfs_slice_cosine(double a, double b, double x);
  * (|e - atan2(B, A)| < acos(1e-6^(1/S) / |(A, B)|)): about 15 steps
  * whatever S (bounded at HFS_LOBE_STEPS).  The exact lobe, not its
  * order-4 ZH: NS09's order-4 lobe is ~45 degrees wide at S = 8, and its
- * tails over the terrain near the horizon made the glossy bounce 46%
- * bright against the truth on cones (test_cpu_bounce, DESIGN.md "Glossy
- * surfaces").  bounce_gather.frag mirrors it. */
+ * tails over the terrain near the horizon made the glossy bounce clearly
+ * too bright against the truth on cones (DESIGN.md "Glossy surfaces").  bounce_gather.frag mirrors it. */
 #define HFS_LOBE_STEPS 64
 typedef struct hfs_lobe_slice {
     double A, B, a, b, s;

@@ -128,8 +128,8 @@ static void test_furnace(int glossy)
 /* Bound: measured 1.8% here (2.2% on the benchmark cones at 128^2);
  * bound 5% of the truth's largest indirect value (issue 16 asks 10% at
  * the defaults).  Glossy (albedo 0.1 + ks 0.9, S 8: the lobe's bounce
- * dominates): measured 0.58% (7.1% without the lobe's bounce, 6.0% with
- * NS09's order-4 lobe, whose tails are ~45 degrees wide); bound 2%. */
+ * dominates): measured 0.58%; mutant M61 (no glossy bounce) fails the
+ * bound; bound 2%. */
 #define TRUTH_REL 0.05
 #define GLOSSY_TRUTH_REL 0.02
 
