@@ -95,6 +95,9 @@ int kiosk_capture_sky_apply(hfs_capture_live *live, kiosk_world *w)
     memcpy(in->env_keys, o->keys, sizeof o->keys);
     free(in->env_map); /* the scene's map is not the sky any more */
     in->env_map = NULL;
+    free(in->env_residual); /* nor its residual, nor their open sky */
+    in->env_residual = NULL;
+    in->has_env_open = 0;
     in->env_map_width = in->env_map_height = 0;
     hfs_error err = {{0}};
     static char last[sizeof err.msg]; /* one kiosk per process: said once */

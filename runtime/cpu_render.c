@@ -45,6 +45,8 @@
  * hfs_cpu_render uses the defaults.
  */
 #include "albedo.h"
+#include "env_map_slices.h"
+#include "env_open.h"
 #include "backends.h"
 #include "cpu_horizon.h"
 #include "cpu_local.h"
@@ -105,6 +107,8 @@ typedef struct render_ctx {
     double h_zonal[HFS_ZH_N];  /* clamped cosine */
     double l_env[3][HFS_SH_N]; /* rotated environment */
     double env_neg[3];         /* rho * hfs_sh_negative_bound(l_env[c]) */
+    const float *env_open;     /* lighting env_open (env_open.h), or NULL */
+    double env_rotate;
     int n_jobs;
     swath_job *jobs;           /* jobs[0] is the environment when has_env */
     int has_env;
@@ -113,6 +117,7 @@ typedef struct render_ctx {
     worker_scratch *scratch;
     const hfs_cpu_local *local; /* local lights (issue 4), NULL if none */
     hfs_slice_table slices;    /* HFS_VIS_SLICE: the environment's slices (p NULL otherwise) */
+    hfs_map_slices map_slices; /* the map along them (fg NULL otherwise) */
     hfs_gloss gloss;           /* glossy surfaces (gloss.h) */
     float *spec;               /* W x H x 3 glossy term when gloss.on, added after the map */
 } render_ctx;
@@ -260,9 +265,22 @@ static void render_row(void *ctx, int j, int worker)
                     hfs_visibility_eval(job->vis, s->om, v);
                     hfs_sh_product(hn, v, t);
                 }
+                double d[3] = {0.0, 0.0, 0.0}; /* the open sky beyond order 4 */
+                if (c->env_open)
+                    hfs_env_open_lookup(c->env_open, n, c->env_rotate, d);
+                if (c->map_slices.fg) { /* the occluded part from the map too */
+                    double t0[HFS_SH_N];
+                    for (int k = 0; k < HFS_SH_N; ++k)
+                        t0[k] = t[k] - hn[k];
+                    for (int ch = 0; ch < 3; ++ch)
+                        d[ch] -= hfs_sh_dot(t0, c->l_env[ch]);
+                    for (int q2 = 0; q2 < nd; ++q2)
+                        hfs_map_slices_occluded(&c->map_slices, q2, n, omega[(size_t)q2 * w + i], d);
+                }
                 for (int ch = 0; ch < 3; ++ch)
-                    lo[ch] += env_clamp(c->rho_pi * hfs_sh_dot(t, c->l_env[ch]),
-                                        c->rho_pi * hfs_sh_dot(hn, c->l_env[ch]), c->env_neg[ch]);
+                    lo[ch] += env_clamp(c->rho_pi * (hfs_sh_dot(t, c->l_env[ch]) + d[ch]),
+                                        c->rho_pi * (hfs_sh_dot(hn, c->l_env[ch]) + d[ch]),
+                                        c->env_neg[ch]);
                 if (nr > 0.0)
                     hfs_gloss_env(&c->gloss, nr, r, t, hn, c->l_env, sp);
                 continue;
@@ -366,6 +384,8 @@ static void add_jobs(render_ctx *c, const hfs_lighting *l, const hfs_quality *q)
         job->is_env = 1;
         hfs_swath_full(q->nphi_env, &job->swath);
         hfs_env_rotated(l, c->l_env);
+        c->env_open = l->env_open;
+        c->env_rotate = l->env_rotate;
         for (int ch = 0; ch < 3; ++ch)
             c->env_neg[ch] = l->albedo * hfs_sh_negative_bound(c->l_env[ch]);
     }
@@ -559,6 +579,11 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         goto done;
     if (slice && c.has_env && (rc = hfs_slice_table_init(&c.slices, &c.jobs[0].swath, err)))
         goto done;
+    if (slice && c.has_env && l->env_shade_map && l->env_open &&
+        (rc = hfs_map_slices_build(&c.map_slices, l->env_shade_map, l->env_map_width,
+                                   l->env_map_height, l->env_rotate, c.slices.dir, c.slices.n,
+                                   c.slices.dphi, err)))
+        goto done;
 
     /* Local lights (issue 4): NULL when none contributes. */
     hfs_cpu_local *local = NULL;
@@ -592,6 +617,7 @@ done:
             hfs_visibility_destroy(c.jobs[j].vis);
     }
     hfs_slice_table_free(&c.slices);
+    hfs_map_slices_free(&c.map_slices);
     free(c.spec);
     free(c.jobs);
     free(c.omega_at);

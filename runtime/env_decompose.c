@@ -27,6 +27,9 @@ static int check_opts(const hfs_env_decompose_opts *o, hfs_error *err)
         return hfs_fail(err, HFS_E_INVALID, "min share %g is out of range [0, 1]", o->min_share);
     if (!(o->contrast >= 1.0 && o->contrast <= 1e6))
         return hfs_fail(err, HFS_E_INVALID, "contrast %g is out of range [1, 1e6]", o->contrast);
+    if (!(o->max_radius >= 0.0 && o->max_radius <= 3.14159265358979323846))
+        return hfs_fail(err, HFS_E_INVALID, "max radius %g is out of range [0, pi]",
+                        o->max_radius);
     if (o->threads < 0 || o->threads > 64)
         return hfs_fail(err, HFS_E_INVALID, "threads %d is out of range [0, 64]", o->threads);
     return HFS_OK;

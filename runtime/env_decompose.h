@@ -55,6 +55,11 @@ typedef struct hfs_env_decompose_opts {
                            default 0.02 (the paper's Weber fraction)        */
     double contrast;    /* a block is a light candidate only where its mean
                            exceeds contrast x its surround's; default 4     */
+    double max_radius;  /* radians; a candidate wider than this ends the
+                           search (0, the default: no limit).  A renderer
+                           that shades the residual map itself (env-shade =
+                           map) resolves broad lights better than a uniform
+                           disk does: it keeps only what its slices cannot */
     int threads;        /* coarse pass workers, 0 = all cores               */
 } hfs_env_decompose_opts;
 

@@ -203,6 +203,8 @@ int envr_extract(env_ctx *c, const env_seed *seed, double min_share, hfs_env_lig
     double d[3], alpha;
     if (!(c->total_lum > 0.0) || !refine(c, seed, d, &alpha))
         return 0;
+    if (c->opts.max_radius > 0.0 && alpha > c->opts.max_radius)
+        return 0; /* broad: left to the residual (hfs_env_decompose_opts) */
     const double px = envr_texel_size(c, asin(fmax(-1.0, fmin(1.0, d[2]))));
     /* Within pi: a cap or ring past the antipode would wrap its cosines. */
     const double r_rm = fmin(alpha + 0.75 * px, 0.75 * M_PI);

@@ -141,6 +141,28 @@ typedef struct hfs_lighting {
      * Read during hfs_renderer_render only; the caller owns it. */
     const float *env_map;
     int env_map_width, env_map_height;
+    /* The environment as the CPU reference and GLES shade it (issue 17;
+     * DESIGN.md "Shading from the map itself").  Order 4 holds a map's
+     * light only up to the bands it drops, and the drop covers the whole
+     * image; with these two the diffuse environment term comes from the
+     * map instead (the glossy lobe still reads env_sh):
+     *   env_open: NULL (default) or the table hfs_env_open_build writes
+     *     (env_open.h: 33 x 33 normals x RGB, D(N) = the map's unshadowed
+     *     irradiance minus env_sh's, in the map's frame), added to the
+     *     environment's term (turned with env_rotate): an open texel gets
+     *     the map's own irradiance;
+     *   env_shade_map: NULL (default) or the map whose projection env_sh is
+     *     (env_map itself, or with lights decomposed from it their
+     *     residual), env_map_width x env_map_height; needs env_open.  On
+     *     the exact-slice path (HFS_VIS_SLICE) each slice's occluded part
+     *     is then integrated against this map along the slice
+     *     (env_map_slices.h) instead of against env_sh.
+     * The truth ignores both (it integrates env_map, or env_sh without
+     * it).  The scene layer builds them for an env-map (scene key
+     * env-shade = map).  Read during hfs_renderer_render only; the caller
+     * owns them. */
+    const float *env_open;
+    const float *env_shade_map;
 
     int n_key;
     hfs_key_light key[HFS_MAX_KEY_LIGHTS];

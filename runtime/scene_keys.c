@@ -162,6 +162,9 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                                    "how key, view-dir and --camera azimuths read: SPEC's "
                                    "(from +x toward +y) or compass (clockwise from north, "
                                    "= 90 + SPEC's on a north-up field)"},
+    [HFS_SK_ENV_SHADE] = {"env-shade", "map|sh", HFS_FORM_WORD, 0, 0, 0, {{0}}, "map",
+                          "how the cpu and gles backends light an env-map: from the map "
+                          "itself (open sky and occluded slices), or through its SH only"},
 };
 
 const hfs_scene_key *hfs_scene_key_get(hfs_scene_key_id id)

@@ -4,6 +4,7 @@
  * table of scene keys' (scene_keys.h).
  */
 #include "albedo.h"
+#include "env_open.h"
 #include "scene_keys.h"
 #include "validate.h"
 
@@ -122,23 +123,45 @@ static int check_gloss(const hfs_lighting *l, hfs_error *err)
  * projection, what every backend but the truth renders), sane sizes, and
  * (scan) finite values (hfs_envmap_load keeps negative ones): a pass over
  * the map. */
-static int check_env_map(const hfs_lighting *l, int scan, hfs_error *err)
+static int check_map(const hfs_lighting *l, const float *m, const char *name, int scan,
+                     hfs_error *err)
 {
-    if (!l->env_map)
+    if (!m)
         return HFS_OK;
     const int w = l->env_map_width, h = l->env_map_height;
     if (!l->has_env)
-        return hfs_fail(err, HFS_E_INVALID, "env-map: given without has_env (env_sh must hold "
-                        "the map's SH projection)");
+        return hfs_fail(err, HFS_E_INVALID, "%s: given without has_env (env_sh must hold "
+                        "the map's SH projection)", name);
     if (w < 1 || h < 1 || w > 65536 || h > 65536 || (long long)w * h > (1ll << 28))
-        return hfs_fail(err, HFS_E_INVALID, "env-map: size %dx%d out of range (1..65536 per "
-                        "side, at most 2^28 pixels)", w, h);
+        return hfs_fail(err, HFS_E_INVALID, "%s: size %dx%d out of range (1..65536 per "
+                        "side, at most 2^28 pixels)", name, w, h);
     const size_t n = scan ? (size_t)w * (size_t)h * 3 : 0;
     for (size_t i = 0; i < n; ++i)
-        if (!(fabsf(l->env_map[i]) <= FLT_MAX))
-            return hfs_fail(err, HFS_E_INVALID, "env-map: pixel (%zu, %zu) channel %zu is %g "
-                            "(must be finite)", i / 3 % (size_t)w, i / 3 / (size_t)w,
-                            i % 3, (double)l->env_map[i]);
+        if (!(fabsf(m[i]) <= FLT_MAX))
+            return hfs_fail(err, HFS_E_INVALID, "%s: pixel (%zu, %zu) channel %zu is %g "
+                            "(must be finite)", name, i / 3 % (size_t)w, i / 3 / (size_t)w,
+                            i % 3, (double)m[i]);
+    return HFS_OK;
+}
+
+/* The maps beside env_sh: env_map (the truth's), env_shade_map with its
+ * open-sky table env_open (the CPU reference's and GLES's). */
+static int check_env_map(const hfs_lighting *l, int scan, hfs_error *err)
+{
+    int rc = check_map(l, l->env_map, "env-map", scan, err);
+    if (!rc)
+        rc = check_map(l, l->env_shade_map, "env-shade-map", scan, err);
+    if (rc)
+        return rc;
+    if (l->env_shade_map && !l->env_open)
+        return hfs_fail(err, HFS_E_INVALID, "env-shade-map: given without env_open (its "
+                        "open-sky table, hfs_env_open_build)");
+    if (l->env_open && !l->has_env)
+        return hfs_fail(err, HFS_E_INVALID, "env-open: given without has_env");
+    for (int i = 0; l->env_open && i < HFS_ENV_OPEN_FLOATS; ++i)
+        if (!(fabsf(l->env_open[i]) <= FLT_MAX))
+            return hfs_fail(err, HFS_E_INVALID, "env-open: entry %d is %g (must be finite)",
+                            i, (double)l->env_open[i]);
     return HFS_OK;
 }
 

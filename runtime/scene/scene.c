@@ -204,6 +204,7 @@ static void store_word(hfs_scene *s, hfs_scene_key_id id, int w, const char *val
     case HFS_SK_PRESET: snprintf(s->preset, sizeof s->preset, "%s", value); break;
     case HFS_SK_TRUTH_ENV: s->truth_env_sh = w; break;
     case HFS_SK_AZIMUTH_CONVENTION: s->azimuth_compass = w; break;
+    case HFS_SK_ENV_SHADE: s->env_shade_sh = w; break;
     default: break;
     }
 }

@@ -57,6 +57,9 @@ typedef struct hfs_scene {
                                         north (SPEC phi = compass - 90)   */
     int truth_env_sh;                /* truth-env = sh: the truth integrates
                                         the map's SH, not the map            */
+    int env_shade_sh;                /* env-shade = sh: the cpu and gles
+                                        backends light an env-map through its
+                                        SH only (env_open, env_shade_map NULL) */
     int env_lights;                  /* env-lights: 0 off (default), -1
                                         auto, N: at most N lights          */
 

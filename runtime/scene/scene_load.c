@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "env_decompose.h"
+#include "env_open.h"
 #include "sh.h"
 
 /* Serials of loaded heights (hfs_renderer_set_field_serial): unique in the
@@ -28,6 +29,7 @@ void hfs_scene_inputs_free(hfs_scene_inputs *in)
     hfs_heightmap_free(&in->hm);
     free(in->albedo_map);
     free(in->env_map);
+    free(in->env_residual);
     memset(in, 0, sizeof *in);
 }
 
@@ -59,22 +61,38 @@ int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error
     l.env_map = s->truth_env_sh ? NULL : in->env_map; /* NULL: no map */
     l.env_map_width = in->env_map_width;
     l.env_map_height = in->env_map_height;
+    if (in->has_env_open && !s->env_shade_sh) {
+        l.env_open = in->env_open;
+        l.env_shade_map = in->env_residual ? in->env_residual : in->env_map;
+    }
     in->lighting = l;
     in->quality = q;
     return HFS_OK;
 }
 
+/* The open sky beyond order 4 (env_open.h) of rgb (the map or its
+ * residual), whose projection in->env_map_sh already holds. */
+static int env_open_table(const float *rgb, const hfs_envmap *env, hfs_scene_inputs *in,
+                          hfs_error *err)
+{
+    int rc = hfs_env_open_build(rgb, env->width, env->height,
+                                (const double(*)[HFS_SH_COEFFS])in->env_map_sh, in->env_open, err);
+    in->has_env_open = !rc;
+    return rc;
+}
+
 /* The map's SH, or with env-lights its lights + the residual's SH.  The
  * lights fit beside the scene's own key lights (HFS_MAX_KEY_LIGHTS in all);
  * auto takes the decomposition's defaults (up to 4, 2% of the energy).
- * The decomposition works on a copy: env stays the map as loaded (a
- * backend integrating the whole map needs it, not the residual). */
+ * The decomposition works on a copy: env stays the map as loaded (the
+ * truth integrates the whole map), the copy becomes the residual the other
+ * backends shade from (env-shade = map). */
 static int env_map_light(const hfs_scene *s, const hfs_envmap *env, hfs_scene_inputs *in,
                          hfs_error *err)
 {
     if (!s->env_lights) {
         hfs_sh_project_equirect(env->rgb, env->width, env->height, in->env_map_sh);
-        return HFS_OK;
+        return env_open_table(env->rgb, env, in, err);
     }
     hfs_env_decompose_opts o;
     hfs_env_decompose_defaults(&o);
@@ -82,6 +100,11 @@ static int env_map_light(const hfs_scene *s, const hfs_envmap *env, hfs_scene_in
         o.max_lights = s->env_lights;
     if (o.max_lights > HFS_MAX_KEY_LIGHTS - s->n_key)
         o.max_lights = HFS_MAX_KEY_LIGHTS - s->n_key;
+    if (!s->env_shade_sh) { /* the slices shade what is as wide as their wedge */
+        hfs_quality q;
+        hfs_scene_quality(s, &q);
+        o.max_radius = 3.14159265358979323846 / q.nphi_env;
+    }
     const size_t n = (size_t)env->width * (size_t)env->height * 3;
     float *work = malloc(n * sizeof *work);
     if (!work)
@@ -89,13 +112,17 @@ static int env_map_light(const hfs_scene *s, const hfs_envmap *env, hfs_scene_in
                         s->env_map);
     memcpy(work, env->rgb, n * sizeof *work);
     hfs_env_decomp d;
-    const int rc = hfs_env_decompose(work, env->width, env->height, &o, s->env_map, &d, err);
-    free(work);
-    if (rc)
-        return rc;
-    in->n_env_keys = hfs_env_decomp_keys(&d, in->env_keys, HFS_MAX_KEY_LIGHTS);
-    memcpy(in->env_map_sh, d.residual_sh, sizeof in->env_map_sh);
-    return HFS_OK;
+    int rc = hfs_env_decompose(work, env->width, env->height, &o, s->env_map, &d, err);
+    if (!rc) {
+        in->n_env_keys = hfs_env_decomp_keys(&d, in->env_keys, HFS_MAX_KEY_LIGHTS);
+        memcpy(in->env_map_sh, d.residual_sh, sizeof in->env_map_sh);
+        rc = env_open_table(work, env, in, err); /* of the residual */
+    }
+    if (rc || in->n_env_keys == 0)
+        free(work); /* no light: the residual is the map */
+    else
+        in->env_residual = work;
+    return rc;
 }
 
 int hfs_scene_inputs_load(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *err)

@@ -28,6 +28,7 @@
 #define HFS_SCENE_LOAD_H
 
 #include "hfs_io.h"
+#include "env_open.h"
 #include "hfshade.h"
 #include "scene.h"
 
@@ -41,6 +42,13 @@ typedef struct hfs_scene_inputs {
                                     lighting.env_map points here (the truth
                                     integrates it; other backends env_sh)   */
     int env_map_width, env_map_height;
+    float *env_residual;         /* with lights decomposed from the map, the
+                                    map without them (owned), else NULL     */
+    int has_env_open;            /* env_open holds the open sky beyond order
+                                    4 of env_residual or env_map; with
+                                    env-shade = map lighting.env_open points
+                                    here, env_shade_map to that map         */
+    float env_open[HFS_ENV_OPEN_FLOATS];
     int n_env_keys;              /* env-lights: the map's lights (from_env),
                                     unrotated; relight appends them to the
                                     scene's key lights, rotated by env-rotate */
