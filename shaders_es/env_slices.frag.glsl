@@ -21,9 +21,18 @@
  * |sin|, or at its far edge, a fixed weighting of the 9 heights per
  * direction, u_nearw, uniform_blocks.c): 9 fetches for every direction.
  * u_near = 0 only on a one-level layout.
+ *
+ * HFS_ENV_MAP 1 (env-shade = map, pass_env_map_slices.c): the same
+ * horizons, but each slice's occluded part integrated against the
+ * environment map itself, dphi (S_j(x) - S_j(floor)) with S_j = a F_j +
+ * b G_j read from the slice's rows of u_mslices (runtime/env_map_slices.h;
+ * over their largest value), into one target: the texel's occluded
+ * irradiance over dphi (RGB, <= 0).
  */
 // hfs-variant: HFS_FP32 1
 // hfs-variant: HFS_SWATH_TEX 1
+// hfs-variant: HFS_ENV_MAP 1
+// hfs-variant: HFS_ENV_MAP 1, HFS_FP32 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -76,9 +85,27 @@ layout(std140) uniform HfsSwath {
 #endif
 
 layout(location = 0) out vec4 o_t0;
+#ifdef HFS_ENV_MAP
+#ifndef HFS_PI
+#define HFS_PI 3.14159265358979
+#endif
+#define HFS_MAP_E 257                    /* env_map_slices.h HFS_MAP_SLICE_E */
+uniform highp sampler2D u_mslices;       /* per slice: F row, G row; LINEAR */
+
+/* S_j at elevation e: a F_j(e) + b G_j(e), linear between the table's
+ * elevations (env_map_slices.c slice_s). */
+vec3 map_s(int j, float a, float b, float e)
+{
+    float u = ((e + 0.5 * HFS_PI) / HFS_PI * float(HFS_MAP_E - 1) + 0.5) / float(HFS_MAP_E);
+    float h = 1.0 / float(2 * HFS_NDIR);
+    return a * texture(u_mslices, vec2(u, (float(2 * j) + 0.5) * h)).rgb +
+           b * texture(u_mslices, vec2(u, (float(2 * j) + 1.5) * h)).rgb;
+}
+#else
 layout(location = 1) out vec4 o_t1;
 layout(location = 2) out vec4 o_t2;
 layout(location = 3) out vec4 o_t3;
+#endif
 
 /* Sums over the slices, by azimuthal factor: Y_k along slice j is
  * trig_k(phi_j) sum_m a_km f_m(e) (runtime/slice_light.h
@@ -197,6 +224,7 @@ void main()
     if (u_near > 0)
         near_slopes(p, s0, s1, s8);
     Sums S = Sums(vec4(0.0), vec4(0.0), vec4(0.0), vec3(0.0), vec3(0.0), vec2(0.0), vec2(0.0));
+    vec3 occ = vec3(0.0);
     vec4 far = vec4(0.0);
     for (int j = 0; j < HFS_NDIR; ++j) {
         if (j % 4 == 0)
@@ -216,13 +244,22 @@ void main()
         float ux = max(far[j % 4], tn / (1.0 + sqrt(1.0 + tn * tn)));
         /* Only slices whose horizon rises above the tangent plane carry an
          * occluded part (0 exactly elsewhere). */
-        if (ux > uf)
+        if (ux > uf) {
+#ifdef HFS_ENV_MAP
+            occ += map_s(j, a, n.z, 2.0 * atan(ux)) - map_s(j, a, n.z, 2.0 * atan(uf));
+#else
             slice_add(j, cs, a, n.z, uf, ux, S);
+#endif
+        }
     }
+#ifdef HFS_ENV_MAP
+    o_t0 = hfs_f16v(vec4(occ, 0.0)); /* the shading multiplies by dphi */
+#else
     vec4 T[4];
     contract(S, T);
     o_t0 = hfs_f16v(T[0]);
     o_t1 = hfs_f16v(T[1]);
     o_t2 = hfs_f16v(T[2]);
     o_t3 = hfs_f16v(T[3]);
+#endif
 }

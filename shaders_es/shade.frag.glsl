@@ -20,6 +20,13 @@
  *                HFS_GLOSSY 2: a viewer at a point (a perspective camera),
  *                V towards it from the texel's own point.
  *                Without it the program is the diffuse one, unchanged.
+ *   env-shade = map (HFS_ENV_MAP; DESIGN.md "Shading from the map
+ *                itself") the diffuse environment's open part is the map's
+ *                own irradiance: H . L_env plus the table D(N') (u_eopen,
+ *                runtime/env_open.h, N' = N turned by -rotate); with
+ *                HFS_ENV_MAP 2 its occluded part is the map's too (u_mocc,
+ *                pass_env_map_slices.c) instead of T . L_env's; the glossy
+ *                lobe still reads T.
  * Everything that depends on the visibility was computed by those passes,
  * so this pass is what a turned or re-tinted environment or a change of
  * radiance costs.
@@ -39,6 +46,9 @@
 // hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_ALBEDO_MAP 1, HFS_GLOSSY 1, HFS_FP32 1
 // hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_GLOSSY 2
 // hfs-variant: HFS_NKEYS 1, HFS_LOCAL 1, HFS_GLOSSY 2
+// hfs-variant: HFS_ENV 1, HFS_ENV_MAP 1
+// hfs-variant: HFS_ENV 1, HFS_ENV_MAP 2, HFS_NKEYS 1
+// hfs-variant: HFS_ENV 1, HFS_ENV_MAP 2, HFS_GLOSSY 1, HFS_FP32 1
 
 #ifndef HFS_PI
 #define HFS_PI 3.14159265358979
@@ -72,6 +82,15 @@ uniform highp sampler2D u_albedo;        /* albedo map (RGB in [0, 1]), full res
 #ifndef HFS_NKEYS
 #define HFS_NKEYS 0
 #endif
+#ifndef HFS_ENV_MAP
+#define HFS_ENV_MAP 0
+#endif
+#if HFS_ENV_MAP > 0
+uniform highp sampler2D u_eopen;         /* D(N) / D_max, 33 x 33, LINEAR */
+#endif
+#if HFS_ENV_MAP == 2
+uniform highp sampler2D u_mocc;          /* the map's occluded light / (F_max dphi) */
+#endif
 #ifdef HFS_GLOSSY
 #if HFS_GLOSSY == 2
 #define HFS_GLOSS_EYE 1                  /* each texel's own view vector */
@@ -93,6 +112,8 @@ layout(std140) uniform HfsShade {
     vec4 u_topen[4];                     /* k_l per coefficient: H * hemisphere(N)
                                             = k_l Y_lm(N) */
     vec4 u_lle[16];                      /* per local light: Le (rgb) */
+    vec4 u_emap;                         /* HFS_ENV_MAP: (rho/pi D_max, cos rotate,
+                                            sin rotate, rho/pi F_max dphi) */
 #ifdef HFS_GLOSSY
     vec4 u_gview;                        /* (V towards the viewer, ks) */
     vec4 u_gpar;                         /* (S, ks (S+2)/(2 pi), 0, 0) */
@@ -120,6 +141,19 @@ float gloss_lobe(vec3 d)
 {
     float c = dot(g_r, d);
     return c > 0.0 && g_nr > 0.0 ? pow(c, u_gpar.x) : 0.0; /* 0 where N.V <= 0 */
+}
+#endif
+
+#if HFS_ENV_MAP > 0
+/* rho/pi D at normal n (runtime/env_open.c hfs_env_open_uv, lookup): n
+ * turned by -rotate, azimuthal equidistant, node i at texel centre i. */
+vec3 env_open(vec3 n)
+{
+    vec2 xy = vec2(u_emap.y * n.x + u_emap.z * n.y, u_emap.y * n.y - u_emap.z * n.x);
+    float rxy = length(xy);
+    float r = acos(clamp(n.z, 0.0, 1.0)) / (0.5 * HFS_PI);
+    vec2 uv = rxy > 0.0 ? (r / rxy) * xy : vec2(0.0);
+    return u_emap.x * texture(u_eopen, ((uv + 1.0) * 16.0 + 0.5) / 33.0).rgb;
 }
 #endif
 
@@ -218,11 +252,20 @@ void main()
         vec4 H[4];
         hfs_sh_cosine(n, H);
         vec4 T[4];
+#if HFS_ENV_MAP != 2 || defined(HFS_GLOSSY)
         hfs_sh_basis(n, T);
         T[0] = T[0] * u_topen[0] + texelFetch(u_t0, p, 0);
         T[1] = T[1] * u_topen[1] + texelFetch(u_t1, p, 0);
         T[2] = T[2] * u_topen[2] + texelFetch(u_t2, p, 0);
         T[3] = T[3] * u_topen[3] + texelFetch(u_t3, p, 0);
+#endif
+        vec3 dmap = vec3(0.0);
+#if HFS_ENV_MAP > 0
+        dmap = env_open(n);
+#endif
+#if HFS_ENV_MAP == 2
+        vec3 occ = u_emap.w * texelFetch(u_mocc, p, 0).rgb;
+#endif
         vec4 L[4];
         for (int c = 0; c < 3; ++c) {
             for (int g = 0; g < 4; ++g)
@@ -230,8 +273,13 @@ void main()
             /* Into [-neg, unshadowed + neg], as cpu_render.c env_clamp: the
              * interval holds the exact value, and sub-sampling (V of other
              * normals) or fp16 storage can step outside it. */
-            float open = u_misc.x * hfs_sh_dot(H, L);
-            lo[c] += clamp(u_misc.x * hfs_sh_dot(T, L), -u_env_neg[c], open + u_env_neg[c]);
+            float open = u_misc.x * hfs_sh_dot(H, L) + dmap[c];
+#if HFS_ENV_MAP == 2
+            float v = open + occ[c];
+#else
+            float v = u_misc.x * hfs_sh_dot(T, L) + dmap[c];
+#endif
+            lo[c] += clamp(v, -u_env_neg[c], open + u_env_neg[c]);
         }
 #ifdef HFS_GLOSSY
         /* gloss.c hfs_gloss_env: the lobe's order-4 visible fraction v. */

@@ -176,6 +176,15 @@ add_test(NAME test_albedo_map COMMAND test_albedo_map gles)
 set_tests_properties(test_albedo_map PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
 set(hfs_gles_tests ${hfs_gles_tests} test_albedo_map)
 
+# An environment map shaded from the map itself (env-shade = map): against
+# the map's truth on CPU, GLES against the CPU, a turned sky planned
+# (test_env_shade.c).
+add_executable(test_env_shade ${CMAKE_CURRENT_LIST_DIR}/test_env_shade.c)
+target_link_libraries(test_env_shade PRIVATE hfs_test_gles_scenes)
+add_test(NAME test_env_shade COMMAND test_env_shade gles)
+set_tests_properties(test_env_shade PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
+set(hfs_gles_tests ${hfs_gles_tests} test_env_shade)
+
 # Indirect bounces on GLES (issue 16): equal to the CPU reference at
 # subsample 1 (1 and 2 bounces; capped, uncapped, albedo map), the white
 # furnace at the defaults, the planner (test_gles_bounce.c); fp16, fp32

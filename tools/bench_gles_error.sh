@@ -16,8 +16,8 @@ mkdir -p "$C"
 scenes=("cones|$C/cones$N.pfm|--dx 1"
         "fractal relief 1|$C/fractalhi$N.pfm|--dx 1"
         "dem|$C/dem$N.pfm|--dx 83 --zscale 2")
-lightings=("sky+sun|--env-map data/courtyard.exr --key 336,15,2,1500"
-           "sky|--env-map data/courtyard.exr"
+lightings=("sky+sun|--env-map data/courtyard.exr --truth-env sh --env-shade sh --key 336,15,2,1500"
+           "sky|--env-map data/courtyard.exr --truth-env sh --env-shade sh"
            "sun|--key 336,15,2,1500")
 echo "| scene (${N}x${N}) | lights | gles settings | mean abs | RMSE | p99 abs | max abs | non-finite |"
 echo "|---|---|---|---|---|---|---|---|"

@@ -20,7 +20,7 @@ mkdir -p "$C"
 bench_scenes "$GEN" "$C" "$N"
 # Lightings: the demo scene's sky and low sun together, and the sun alone
 # (where horizon accuracy, not SH order, dominates the error).
-lightings=("sky+sun|--env-map data/courtyard.exr --key 336,15,2,1500"
+lightings=("sky+sun|--env-map data/courtyard.exr --truth-env sh --env-shade sh --key 336,15,2,1500"
            "sun|--key 336,15,2,1500")
 
 # Quality settings: label and flags (k, offset, directions, visibility path;

@@ -6,7 +6,10 @@
 # (fp16) with legendre and slice at subsample 1 and 2, on the benchmark scenes (cones, fractal relief
 # 0.25, the DEM window) and the rough fractal (relief 1, where sub-sampling
 # costs most), under the sky alone (the demo's courtyard sky at order 4)
-# and sky + the 2-degree sun.  Prints a Markdown table, then the slice
+# and sky + the 2-degree sun (truth-env = sh and env-shade = sh: the sky
+# is the map's order-4 projection, as issue 15 defines it; since issue 17
+# the truth of an env-map and the renderers' default shading are the
+# map's own).  Prints a Markdown table, then the slice
 # path's fp16 output against its fp32 output (subsample 2) per scene.
 #
 # usage: tools/bench_slice.sh [BUILD_DIR] [SIZE] [FLAGS...]   (defaults: build 128)
@@ -27,8 +30,8 @@ mkdir -p "$C"
 bench_scenes "$GEN" "$C" "$N"
 "$GEN" fractal --size "${N}x${N}" --relief 1 -o "$C/rough$N.pfm"
 scenes+=("rough|$C/rough$N.pfm|--dx 1")
-lightings=("sky|--env-map data/courtyard.exr"
-           "sky+sun|--env-map data/courtyard.exr --key 336,15,2,1500")
+lightings=("sky|--env-map data/courtyard.exr --truth-env sh --env-shade sh"
+           "sky+sun|--env-map data/courtyard.exr --truth-env sh --env-shade sh --key 336,15,2,1500")
 echo "| scene (${N}x${N}) | lights | backend | visibility | mean abs | p99 abs | max abs | s |"
 echo "|---|---|---|---|---|---|---|---|"
 for sc in "${scenes[@]}"; do

@@ -147,6 +147,8 @@ add_library(hfs_gles STATIC
   ${CMAKE_CURRENT_LIST_DIR}/pass_key_horizons.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_local_lights.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_env_transfer.c
+  ${CMAKE_CURRENT_LIST_DIR}/pass_env_map_slices.c
+  ${CMAKE_CURRENT_LIST_DIR}/env_map_textures.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_key_visibility.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_shade.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_bounce.c

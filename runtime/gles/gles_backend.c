@@ -100,6 +100,7 @@ void hfs_gles_destroy(hfs_gles *g)
     hfs_gles_wedge_textures_free(&g->wedge, gl);
     hfs_gles_albedo_texture_free(&g->albedo, gl);
     hfs_gles_bounce_targets_free(&g->bounce, gl);
+    hfs_gles_env_map_textures_free(&g->envmap, gl);
     hfs_visibility_destroy(g->env_vis);
     hfs_slice_table_free(&g->env_slices);
     hfs_gl_context_destroy(g->ctx);
@@ -180,8 +181,11 @@ static void frame_lights(const hfs_lighting *l, const hfs_quality *q, hfs_gles_f
     fr->capped = hfs_bounce_capped(l, q);
     fr->albedo = l->albedo_map;
     hfs_gloss_make(l, &fr->gloss);
-    if (fr->has_env)
+    fr->l = l;
+    if (fr->has_env) {
         hfs_env_rotated(l, fr->l_env);
+        fr->env_map = !l->env_open ? 0 : q->visibility == HFS_VIS_SLICE && l->env_shade_map ? 2 : 1;
+    }
 }
 
 static void frame_free(hfs_gles_frame *fr)
@@ -197,7 +201,8 @@ static void report_timings(hfs_gles *g, double t_start)
     hfs_gles_timing_report(&g->timing, t);
     t->texture_bytes = hfs_gles_resources_bytes(&g->r, &g->caps) + g->wedge.bytes +
                        g->env_swath_tex.bytes + g->key_swath_tex.bytes + g->keys_tex.bytes +
-                       g->local_tex.bytes + g->albedo.bytes + g->bounce.bytes;
+                       g->local_tex.bytes + g->albedo.bytes + g->bounce.bytes +
+                       g->envmap.bytes;
     snprintf(t->method, sizeof t->method, "%s",
              g->timing.use_queries ? "timer-query" : "finish-clock");
     snprintf(t->device, sizeof t->device, "%s (%s)", hfs_gl_context_describe(g->ctx),

@@ -18,6 +18,7 @@
 #define HFS_GLES_BACKEND_H
 
 #include "albedo_texture.h"
+#include "env_map_textures.h"
 #include "backends.h"
 #include "block_texture.h"
 #include "bounce_targets.h"
@@ -60,6 +61,11 @@ struct hfs_gles_frame {
     int has_env, n_keys;
     hfs_gles_frame_key keys[HFS_MAX_KEY_LIGHTS];
     double l_env[3][HFS_SH_N];            /* rotated environment SH */
+    /* env-shade = map (env_map_textures.h): 0 none, 1 the open-sky table
+     * (HFS_ENV_MAP 1), 2 that and the map's occluded light along the
+     * slices (the slice path with env_shade_map). */
+    int env_map;
+    const hfs_lighting *l;                /* the frame's lighting */
     double rho_pi;
     const float *albedo;                  /* the lighting's albedo map, or NULL */
     unsigned albedo_gen;                  /* g->albedo's contents' generation */
@@ -100,6 +106,7 @@ struct hfs_gles {
     hfs_gles_wedge_textures wedge;
     hfs_gles_albedo_texture albedo;       /* the lighting's albedo map, if any */
     hfs_gles_bounce_targets bounce;       /* the bounce pass's textures, once used */
+    hfs_gles_env_map_textures envmap;     /* env-shade = map: its tables, once used */
     hfs_gles_block_texture env_swath_tex, key_swath_tex, keys_tex, local_tex;
 
     /* Terrain cache: what the terrain pass computed from. */
@@ -162,6 +169,11 @@ int hfs_gles_bind_env_swath(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gle
                             hfs_error *err);
 int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
                               const hfs_gles_layout *L, hfs_error *err);
+/* env_slices.frag over the field into fbo: the transfer's occluded part
+ * (env_map 0, pass_env_transfer.c) or the map's occluded irradiance
+ * (env_map 1, pass_env_map_slices.c). */
+int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, int env_map, GLuint fbo,
+                             hfs_error *err);
 /* Draws the bound program over the grid into `outs` layers of array
  * texture tex from layer0 (through fbo); with fetch_sum, adds the counts
  * the HFS_COUNT twin wrote to target 0. */

@@ -129,6 +129,13 @@ static int fit_resources(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     rc = hfs_gles_albedo_texture_follow(&g->albedo, &g->gl, &g->caps, fr->albedo, fr->f->width,
                                         fr->f->height, err);
     fr->albedo_gen = g->albedo.gen;
+    const unsigned occ_gen = g->envmap.occ_gen;
+    const int occ = fr->has_env && fr->env_map == 2;
+    if (!rc)
+        rc = hfs_gles_env_occ_ensure(&g->envmap, &g->gl, &g->caps, occ ? fr->L.w : 0,
+                                     occ ? fr->L.h : 0, err);
+    if (g->envmap.occ_gen != occ_gen)
+        hfs_plan_drop(&g->plan.p, g->plan.pr_mocc);
     return rc;
 }
 
@@ -141,8 +148,19 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     s->has_env = fr->has_env;
     s->nphi_env = q->nphi_env;
     s->vis_path = (int)q->visibility;
-    if (fr->has_env)
+    if (fr->has_env) {
         memcpy(s->l_env, fr->l_env, sizeof s->l_env);
+        s->env_map = fr->env_map;
+    }
+    if (s->env_map > 0) { /* FNV-1a of the open-sky table: it stands for the map */
+        const unsigned char *b = (const unsigned char *)fr->l->env_open;
+        uint64_t h = 1469598103934665603ull;
+        for (size_t i = 0; i < HFS_ENV_OPEN_FLOATS * sizeof(float); ++i)
+            h = (h ^ b[i]) * 1099511628211ull;
+        s->eopen_hash = h;
+        s->emap = fr->env_map == 2 ? fr->l->env_shade_map : NULL;
+        s->emap_w = fr->l->env_map_width, s->emap_h = fr->l->env_map_height;
+    }
     s->rho_pi = fr->rho_pi;
     s->albedo_map = fr->albedo != NULL;
     s->albedo_gen = fr->albedo_gen;

@@ -19,29 +19,41 @@ static int present(const hfs_gles_frame *fr)
     return fr->has_env;
 }
 
-/* The slice path: env_slices.frag from the grid's horizons. */
-static int run_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, int env_map, GLuint fbo,
+                             hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_dir = g->env_vis_n,
-                                .fp32 = g->caps.fp32, .swath_tex = fr->env_swath_tex};
+                                .fp32 = g->caps.fp32, .swath_tex = fr->env_swath_tex,
+                                .env_map = env_map};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_SLICES, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
         (rc = hfs_gles_program_texture(gl, prog, "u_hor", GL_TEXTURE_2D_ARRAY, g->r.hor, err)) ||
         (rc = hfs_gles_bind_env_swath(g, fr, prog, err)))
         return rc;
+    if (env_map && (rc = hfs_gles_program_texture(gl, prog, "u_mslices", GL_TEXTURE_2D,
+                                                  g->envmap.slices, err)))
+        return rc;
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     hfs_gles_set_i1(gl, prog, "u_near", fr->env_near);
-    hfs_gles_draw(gl, g->r.transfer_fbo, L->w, L->h);
+    hfs_gles_draw(gl, fbo, L->w, L->h);
     gl->UseProgram(0);
+    return hfs_gl_check(gl, env_map ? "backend gles: map occlusion pass"
+                                    : "backend gles: slice transfer pass", err);
+}
+
+/* The slice path: env_slices.frag from the grid's horizons. */
+static int run_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+{
+    const hfs_gles_layout *L = &fr->L;
     /* Per texel: normal, a horizon layer per 4 directions, and with the
      * near scale its own height and 9 neighbours. */
     hfs_gles_stage_fetches(g, HFS_PASS_ENV_TRANSFER, 0,
                            (double)L->w * L->h *
                                (1.0 + ceil(g->env_vis_n / 4.0) + 10.0 * fr->env_near));
-    return hfs_gl_check(gl, "backend gles: slice transfer pass", err);
+    return hfs_gles_draw_env_slices(g, fr, 0, g->r.transfer_fbo, err);
 }
 
 static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)

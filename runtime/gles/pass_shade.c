@@ -91,6 +91,8 @@ static double radiance_bound(const hfs_gles_frame *fr)
         bound += 4.0 * m;
     }
     bound *= PI;
+    if (fr->env_map > 0) /* the open sky beyond order 4 (env_open.h) */
+        bound += hfs_env_open_max(fr->l->env_open);
     /* Lights by the irradiance they can actually give (not pi): a bound
      * loose by Le * pi / E_max pushes the frame's values into fp16's
      * subnormals, where hi + lo keep only ~3e-8 of the scale (a 1e-5 rad sun
@@ -106,7 +108,8 @@ static double radiance_bound(const hfs_gles_frame *fr)
 }
 
 /* HfsShade, every radiance times the output scale s. */
-static void fill_block(const hfs_gles_frame *fr, double s, hfs_gles_shade_block *sb)
+static void fill_block(const hfs_gles *g, const hfs_gles_frame *fr, double s,
+                       hfs_gles_shade_block *sb)
 {
     memset(sb, 0, sizeof *sb);
     for (int c = 0; c < 3 && fr->has_env; ++c)
@@ -128,6 +131,12 @@ static void fill_block(const hfs_gles_frame *fr, double s, hfs_gles_shade_block 
     for (int i = 0; i < fr->n_local; ++i)
         for (int c = 0; c < 3; ++c)
             sb->lle[i][c] = (float)(fr->local[i].radiance[c] * s);
+    if (fr->env_map > 0) { /* the tables' scales (env_map_textures.h) */
+        sb->emap[0] = (float)(fr->rho_pi * g->envmap.dmax * s);
+        sb->emap[1] = (float)cos(fr->l->env_rotate);
+        sb->emap[2] = (float)sin(fr->l->env_rotate);
+        sb->emap[3] = (float)(fr->rho_pi * g->envmap.fmax * g->env_slices.dphi * s);
+    }
     if (fr->gloss.on)
         fill_gloss(fr, s, sb);
 }
@@ -160,6 +169,12 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     if (fr->albedo &&
         (rc = hfs_gles_program_texture(gl, prog, "u_albedo", GL_TEXTURE_2D, g->albedo.tex, err)))
         return rc;
+    if (fr->env_map > 0 &&
+        (rc = hfs_gles_program_texture(gl, prog, "u_eopen", GL_TEXTURE_2D, g->envmap.open, err)))
+        return rc;
+    if (fr->env_map == 2 &&
+        (rc = hfs_gles_program_texture(gl, prog, "u_mocc", GL_TEXTURE_2D, g->envmap.occ, err)))
+        return rc;
     hfs_gles_set_i2(gl, prog, "u_size", fr->L.w, fr->L.h);
     hfs_gles_set_i2(gl, prog, "u_vsize", fr->L.vw, fr->L.vh);
     hfs_gles_set_i1(gl, prog, "u_sub", fr->L.sub);
@@ -178,7 +193,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
                         "beyond what double precision carries", bound);
     fr->out_scale = hfs_gles_output_scale(bound);
     hfs_gles_shade_block sb;
-    fill_block(fr, fr->out_scale, &sb);
+    fill_block(g, fr, fr->out_scale, &sb);
     hfs_gles_ubo_upload(gl, g->ubo[HFS_UBO_SHADE], &sb, sizeof sb);
 
     const int local = fr->n_local > 0;
@@ -186,14 +201,20 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
                                 .n_layers = local || fr->gloss.at_eye ? L->n_layers : 0,
                                 .local_dirs = local ? fr->q->nphi_local : 0,
                                 .n_local = fr->n_local, .fp32 = g->caps.fp32,
-                                .albedo_map = fr->albedo != NULL, .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0};
+                                .albedo_map = fr->albedo != NULL, .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0,
+                                .env_map = fr->has_env ? fr->env_map : 0};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_SHADE, &v, &prog, err);
     if (rc || (rc = bind_inputs(g, fr, prog, err)))
         return rc;
     hfs_gles_draw(gl, g->r.out_fbo, L->w, L->h);
     gl->UseProgram(0);
-    double fetches = (double)L->w * L->h * (1 + 4 * fr->has_env + fr->n_keys + (fr->albedo != NULL));
+    /* The environment: T (not on the map's occlusion unless glossy), the
+     * open-sky table and the map's occlusion (pass_env_map_slices.c). */
+    const int env_fetches = !fr->has_env ? 0
+                            : (fr->env_map == 2 && !fr->gloss.on ? 0 : 4) + (fr->env_map > 0) +
+                                  (fr->env_map == 2);
+    double fetches = (double)L->w * L->h * (1 + env_fetches + fr->n_keys + (fr->albedo != NULL));
     if (local) /* the texel's height, one ratio layer per two lights */
         fetches += (double)L->w * L->h * (1 + (fr->n_local + 1) / 2);
     if (fr->gloss.on && fr->gloss.at_eye) /* the texel's height for its view vector */

@@ -101,9 +101,10 @@ int hfs_gles_plan_init(hfs_gles_plan *gp, hfs_error *err)
     gp->pr_image = node_find(p, "image", 0);
     gp->pr_bounced = node_find(p, "bounced targets", 0);
     gp->pr_view = node_find(p, "view image", 0);
+    gp->pr_mocc = node_find(p, "env map occlusion", 0);
     int ok = gp->pr_pyramid >= 0 && gp->pr_env >= 0 && gp->pr_transfer >= 0 &&
              gp->pr_targets >= 0 && gp->pr_image >= 0 && gp->pr_bounced >= 0;
-    ok &= gp->pr_view >= 0;
+    ok &= gp->pr_view >= 0 && gp->pr_mocc >= 0;
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         ok &= (gp->pr_key[i] = node_find(p, "key %d horizons", i)) >= 0;
         ok &= (gp->pr_kfactor[i] = node_find(p, "key %d factor", i)) >= 0;
@@ -141,6 +142,9 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
         hfs_plan_change(p, gp->in_env_set, "environment settings changed");
     if (a->has_env != b->has_env || memcmp(a->l_env, b->l_env, sizeof a->l_env))
         hfs_plan_change(p, gp->in_env_light, "environment light changed (rotation, tint)");
+    else if (a->env_map != b->env_map || a->emap != b->emap || a->emap_w != b->emap_w ||
+             a->emap_h != b->emap_h || a->eopen_hash != b->eopen_hash)
+        hfs_plan_change(p, gp->in_env_light, "environment map or env-shade changed");
     if (a->rho_pi != b->rho_pi)
         hfs_plan_change(p, gp->in_albedo, "albedo changed");
     else if (a->albedo_map != b->albedo_map || a->albedo_gen != b->albedo_gen)
@@ -250,7 +254,10 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
     reads[n++] = gp->in_albedo;
     reads[n++] = gp->in_light_set;
     if (now->has_env) {
-        reads[n++] = gp->pr_transfer;
+        if (now->env_map != 2 || now->gloss[0] != 0.0 || now->gloss[1] != 0.0)
+            reads[n++] = gp->pr_transfer; /* T: the environment, or the glossy lobe */
+        if (now->env_map == 2)
+            reads[n++] = gp->pr_mocc;
         reads[n++] = gp->in_env_light;
     }
     for (int i = 0; i < now->n_keys && i < HFS_GLES_PLAN_KEYS; ++i) {

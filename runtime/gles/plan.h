@@ -51,6 +51,8 @@
 #ifndef HFS_GLES_PLAN_H
 #define HFS_GLES_PLAN_H
 
+#include <stdint.h>
+
 #include "visibility.h"
 #include "frame_plan.h"
 #include "hfshade.h"
@@ -65,6 +67,10 @@ typedef struct hfs_gles_frame_sig {
     int sub, vw, vh;
     int has_env, nphi_env, vis_path;
     double l_env[3][HFS_SH_COEFFS];
+    int env_map;                  /* gles_backend.h hfs_gles_frame env_map */
+    const float *emap;            /* env-shade = map: the map, its size and */
+    int emap_w, emap_h;           /* its open-sky table's contents (a hash, */
+    uint64_t eopen_hash;          /* standing for the map's)                */
     double rho_pi;
     unsigned albedo_gen;          /* the albedo map's contents (0: none yet) */
     int albedo_map;
@@ -102,6 +108,7 @@ typedef struct hfs_gles_plan {
     int in_key_geom[HFS_GLES_PLAN_KEYS], in_key_dir[HFS_GLES_PLAN_KEYS];
     int in_key_rad[HFS_GLES_PLAN_KEYS];
     int pr_pyramid, pr_env, pr_transfer, pr_targets, pr_image, pr_bounced;
+    int pr_mocc;                  /* the map's occluded light (env-shade = map) */
     int pr_local[HFS_MAX_LOCAL_LIGHTS];
     int pr_key[HFS_GLES_PLAN_KEYS], pr_kfactor[HFS_GLES_PLAN_KEYS];
     /* frame_plan pass id of each (pass, instance); -1 past the pass's

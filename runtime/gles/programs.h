@@ -53,6 +53,9 @@ typedef struct hfs_gles_variant {
     int n_bdir;     /* HFS_NBDIR: the bounces' directions                    */
     int glossy;     /* HFS_GLOSSY 1: the shading adds the Phong lobe (gloss.h);
                        2: for a viewer at a point (each texel's own V)       */
+    int env_map;    /* HFS_ENV_MAP (env-shade = map): env_slices.frag 1, the
+                       map's occluded light; shade.frag 1, the open-sky
+                       table, 2, and the map's occluded light (pass_shade.c) */
 } hfs_gles_variant;
 
 #define HFS_GLES_MAX_PROGRAMS 64
@@ -92,7 +95,7 @@ void hfs_gles_set_f4(const hfs_gl *gl, const hfs_gles_program *p, const char *na
 
 /* The "#define NAME VALUE" strings of variant v (NULL-terminated; bufs
  * holds their text).  Exposed for tests. */
-#define HFS_GLES_MAX_DEFINES 22
+#define HFS_GLES_MAX_DEFINES 23
 void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
                               const char *defs[HFS_GLES_MAX_DEFINES + 1]);
 

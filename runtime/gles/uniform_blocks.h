@@ -186,8 +186,12 @@ typedef struct hfs_gles_shade_block {
     float kle[HFS_MAX_KEY_LIGHTS][4];   /* u_kle[8]: rho/pi Le E_max per key      */
     float topen[16];                    /* u_topen[4]: k_l per coefficient        */
     float lle[HFS_MAX_LOCAL_LIGHTS][4]; /* u_lle[16]: Le per local light          */
+    float emap[4];                      /* u_emap: env-shade = map's scales
+                                           (rho/pi D_max, cos rot, sin rot,
+                                           rho/pi F_max dphi), times s for
+                                           the radiances                       */
     /* Glossy surfaces (gloss.h), read only by the HFS_GLOSSY variant (the
-     * others declare the block up to u_lle: a prefix). */
+     * others declare the block up to u_emap: a prefix). */
     float gview[4];                     /* u_gview: (V, ks)                      */
     float gpar[4];                      /* u_gpar: (S, ks (S+2)/(2 pi), 0, 0)    */
     float gzh[16];                      /* u_gzh[4]: g_l per coefficient         */
@@ -204,14 +208,15 @@ _Static_assert(offsetof(hfs_gles_shade_block, env_neg) == 13 * 16, "HfsShade.u_e
 _Static_assert(offsetof(hfs_gles_shade_block, kle) == 14 * 16, "HfsShade.u_kle");
 _Static_assert(offsetof(hfs_gles_shade_block, topen) == 22 * 16, "HfsShade.u_topen");
 _Static_assert(offsetof(hfs_gles_shade_block, lle) == 26 * 16, "HfsShade.u_lle");
-_Static_assert(offsetof(hfs_gles_shade_block, gview) == 42 * 16, "HfsShade.u_gview");
-_Static_assert(offsetof(hfs_gles_shade_block, gpar) == 43 * 16, "HfsShade.u_gpar");
-_Static_assert(offsetof(hfs_gles_shade_block, gzh) == 44 * 16, "HfsShade.u_gzh");
-_Static_assert(offsetof(hfs_gles_shade_block, kspec) == 48 * 16, "HfsShade.u_kspec");
-_Static_assert(offsetof(hfs_gles_shade_block, kdir) == 56 * 16, "HfsShade.u_kdir");
-_Static_assert(offsetof(hfs_gles_shade_block, geye) == 64 * 16, "HfsShade.u_geye");
-_Static_assert(offsetof(hfs_gles_shade_block, ghgt) == 65 * 16, "HfsShade.u_ghgt");
-_Static_assert(sizeof(hfs_gles_shade_block) == 66 * 16, "HfsShade size");
+_Static_assert(offsetof(hfs_gles_shade_block, gview) == 43 * 16, "HfsShade.u_gview");
+_Static_assert(offsetof(hfs_gles_shade_block, gpar) == 44 * 16, "HfsShade.u_gpar");
+_Static_assert(offsetof(hfs_gles_shade_block, gzh) == 45 * 16, "HfsShade.u_gzh");
+_Static_assert(offsetof(hfs_gles_shade_block, kspec) == 49 * 16, "HfsShade.u_kspec");
+_Static_assert(offsetof(hfs_gles_shade_block, kdir) == 57 * 16, "HfsShade.u_kdir");
+_Static_assert(offsetof(hfs_gles_shade_block, geye) == 65 * 16, "HfsShade.u_geye");
+_Static_assert(offsetof(hfs_gles_shade_block, ghgt) == 66 * 16, "HfsShade.u_ghgt");
+_Static_assert(offsetof(hfs_gles_shade_block, emap) == 42 * 16, "HfsShade.u_emap");
+_Static_assert(sizeof(hfs_gles_shade_block) == 67 * 16, "HfsShade size");
 
 /* The fixed head of the local-light block HfsLocal (local_visibility.frag.glsl and
  * shade.frag.glsl), std140, by name; u_ldir[nphi_local] follows it,

@@ -1,0 +1,320 @@
+/*
+ * test_env_shade.c — an environment map shaded from the map itself
+ * (env-shade = map: hfs_lighting env_open, env_shade_map; runtime/
+ * env_open.h, env_map_slices.h; DESIGN.md "Shading from the map itself"),
+ * against the truth of the map (every bound below is the measurement on
+ * Mesa 22.3.6 llvmpipe / x86-64 plus the margin stated beside it):
+ *   constant  a constant map's open-sky table is ~0 (its SH holds it)
+ *   flat      a flat field: the CPU equals the map's truth (the zenith is
+ *             a node of the table; nothing is occluded)
+ *   tilted    a plane at 35 degrees, open: only the table's bilinear
+ *             lookup between nodes is left
+ *   accuracy  the fractal under a map with sharp structure near the
+ *             horizon: the map-shaded CPU at most half the error of the
+ *             SH-shaded one against the map's truth (issue 17's measure)
+ *   rotate    a sky turned by 90 degrees equals the map rolled by a
+ *             quarter of its columns (wedges and table nodes map onto
+ *             themselves)
+ *   invalid   env_shade_map without env_open: HFS_E_INVALID, one line
+ *   gles      (skipped with 77 without a context) GLES against the CPU at
+ *             subsample 1 fp16; at the 2x2 default map- against SH-shaded,
+ *             both against the map's truth; a turned sky on a kept
+ *             renderer reruns the map's occlusion and the shading only, bit
+ *             for bit a fresh renderer's frame
+ */
+#include "gl_test.h"
+#include "test_gles_scenes.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "env_open.h"
+#include "sh.h"
+
+#define N 48
+#define MW 256
+#define MH 128
+#define PI 3.14159265358979323846
+
+/* A sky with structure order 4 cannot hold: a gradient, a bright opening
+ * low in the east, a lit wall in the west-south-west, a dark band. */
+static float *make_map(void)
+{
+    float *m = malloc((size_t)MW * MH * 3 * sizeof *m);
+    for (int v = 0; v < MH; ++v)
+        for (int u = 0; u < MW; ++u) {
+            const double phi = 360.0 * (u + 0.5) / MW, e = 90.0 - 180.0 * (v + 0.5) / MH;
+            double l = 0.3 + 0.5 * fmax(0.0, sin(e * PI / 180.0));
+            if (phi > 40.0 && phi < 80.0 && e > 0.0 && e < 25.0)
+                l += 3.0;
+            if (phi > 200.0 && phi < 230.0 && e > 5.0 && e < 40.0)
+                l += 1.5;
+            if (e > 45.0 && e < 52.0)
+                l *= 0.2;
+            float *p = m + 3 * ((size_t)v * MW + u);
+            p[0] = (float)(l * 1.1), p[1] = (float)l, p[2] = (float)(l * (0.8 + 0.004 * e));
+        }
+    return m;
+}
+
+typedef struct shaded {
+    hfs_lighting l;
+    float open[HFS_ENV_OPEN_FLOATS];
+} shaded;
+
+/* The map's lighting, as the scene layer makes it; with_map: env-shade =
+ * map (open table + the map itself), else its SH only. */
+static void make_lighting(shaded *s, const float *map, double rot, int with_map)
+{
+    hfs_lighting *l = &s->l;
+    hfs_lighting_defaults(l);
+    l->has_env = 1;
+    hfs_sh_project_equirect(map, MW, MH, l->env_sh);
+    l->env_rotate = rot;
+    l->env_map = map;
+    l->env_map_width = MW, l->env_map_height = MH;
+    hfs_error err = {""};
+    CHECK(hfs_env_open_build(map, MW, MH, (const double(*)[HFS_SH_COEFFS])l->env_sh, s->open,
+                             &err) == HFS_OK, "open table: %s", err.msg);
+    if (with_map) {
+        l->env_open = s->open;
+        l->env_shade_map = map;
+    }
+}
+
+static int render(hfs_backend b, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                  hfs_image *out)
+{
+    hfs_renderer_desc d = {.backend = b};
+    hfs_renderer *r = b == HFS_BACKEND_GLES ? gl_test_gles() : NULL;
+    hfs_error err = {""};
+    if (!r && hfs_renderer_create(&d, &r, &err)) {
+        CHECK(0, "create: %s", err.msg);
+        return -1;
+    }
+    hfs_image_alloc(out, f->width, f->height, &err);
+    const int rc = hfs_renderer_render(r, f, l, q, out, NULL, NULL, &err);
+    CHECK(rc == HFS_OK, "render: %s", err.msg);
+    hfs_renderer_destroy(r);
+    return rc;
+}
+
+/* Mean and max of |a - b| over b's largest value. */
+static void errors(const hfs_image *a, const hfs_image *b, double *mean, double *max)
+{
+    const size_t n = (size_t)a->width * a->height * 3;
+    double s = 0.0, m = 0.0, norm = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        const double d = fabs((double)a->rgb[i] - b->rgb[i]);
+        s += d, m = fmax(m, d), norm = fmax(norm, b->rgb[i]);
+    }
+    *mean = s / n / norm, *max = m / norm;
+}
+
+static hfs_quality quality(void)
+{
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    q.truth_azimuths = 720;
+    return q;
+}
+
+static void check_constant(void)
+{
+    float *m = malloc((size_t)MW * MH * 3 * sizeof *m);
+    for (int i = 0; i < MW * MH * 3; ++i)
+        m[i] = 2.0f;
+    shaded s;
+    make_lighting(&s, m, 0.0, 1);
+    const double d = hfs_env_open_max(s.open);
+    /* Measured 8.2e-4 of L: the SH projection's pixel-centre rule over
+     * 128 rows (the table corrects it); bound 2x. */
+#define CONSTANT_BOUND 1.6e-3
+    CHECK(d <= CONSTANT_BOUND * 2.0, "constant map: |D| up to %.2e of L", d / 2.0);
+    printf("constant: the open-sky table up to %.2e of L (bound %.1e)\n", d / 2.0, CONSTANT_BOUND);
+    free(m);
+}
+
+/* A plane z = t x (t = 0: flat). */
+static void plane(hfs_field *f, float *z, double t)
+{
+    for (int j = 0; j < N; ++j)
+        for (int i = 0; i < N; ++i)
+            z[j * N + i] = (float)(t * i);
+    f->width = f->height = N, f->dx = 1.0, f->zscale = 1.0, f->z = z;
+}
+
+static void check_planes(const float *map)
+{
+    static float z[N * N];
+    hfs_field f;
+    shaded s;
+    make_lighting(&s, map, 0.3, 1);
+    const hfs_quality q = quality();
+    /* flat: measured 0 (bit for bit); tilted 35 degrees (normals between
+     * nodes): 1.5e-5 mean, 1.7e-5 max; bounds 1e-6 and 2x. */
+    const double tilt[2] = {0.0, tan(35.0 * PI / 180.0)};
+    const double bound_mean[2] = {1e-6, 3e-5}, bound_max[2] = {1e-6, 3.4e-5};
+    for (int k = 0; k < 2; ++k) {
+        plane(&f, z, tilt[k]);
+        hfs_image c = {0}, t = {0};
+        int rc = render(HFS_BACKEND_CPU, &f, &s.l, &q, &c) | render(HFS_BACKEND_TRUTH, &f, &s.l, &q, &t);
+        double mean, max;
+        errors(&c, &t, &mean, &max);
+        CHECK(!rc && mean <= bound_mean[k] && max <= bound_max[k],
+              "%s: cpu vs the map's truth mean %.2e max %.2e", k ? "tilted" : "flat", mean, max);
+        printf("%s: cpu against the map's truth: mean %.2e, max %.2e (bounds %.1e, %.1e)\n",
+               k ? "tilted" : "flat", mean, max, bound_mean[k], bound_max[k]);
+        hfs_image_free(&c), hfs_image_free(&t);
+    }
+}
+
+static void check_accuracy(const scene *sc, const float *map, hfs_image *truth)
+{
+    shaded on, off;
+    make_lighting(&on, map, 0.3, 1);
+    make_lighting(&off, map, 0.3, 0);
+    const hfs_quality q = quality();
+    hfs_image a = {0}, b = {0};
+    int rc = render(HFS_BACKEND_TRUTH, &sc->f, &on.l, &q, truth);
+    rc |= render(HFS_BACKEND_CPU, &sc->f, &on.l, &q, &a) |
+          render(HFS_BACKEND_CPU, &sc->f, &off.l, &q, &b);
+    double ma, xa, mb, xb;
+    errors(&a, truth, &ma, &xa);
+    errors(&b, truth, &mb, &xb);
+    /* Measured: map 4.0e-3, SH 1.27e-2 (0.31x). */
+    CHECK(!rc && ma <= 0.5 * mb, "accuracy: map-shaded %.2e not half the SH's %.2e", ma, mb);
+    printf("accuracy: fractal against the map's truth: map-shaded mean %.2e (max %.2e), SH-shaded "
+           "%.2e (max %.2e): %.2fx (bound 0.5x)\n", ma, xa, mb, xb, ma / mb);
+    hfs_image_free(&a), hfs_image_free(&b);
+}
+
+static void check_rotate(const scene *sc, const float *map)
+{
+    float *rolled = malloc((size_t)MW * MH * 3 * sizeof *rolled);
+    for (int v = 0; v < MH; ++v) /* a pixel at phi moves to phi + 90 degrees */
+        for (int u = 0; u < MW; ++u)
+            memcpy(rolled + 3 * ((size_t)v * MW + (u + MW / 4) % MW), map + 3 * ((size_t)v * MW + u),
+                   3 * sizeof *map);
+    shaded a, b;
+    make_lighting(&a, map, 0.5 * PI, 1);
+    make_lighting(&b, rolled, 0.0, 1);
+    const hfs_quality q = quality();
+    hfs_image x = {0}, y = {0};
+    int rc = render(HFS_BACKEND_CPU, &sc->f, &a.l, &q, &x) | render(HFS_BACKEND_CPU, &sc->f, &b.l, &q, &y);
+    double mean, max;
+    errors(&x, &y, &mean, &max);
+    /* Measured 0 (bit for bit); allowed: float rounding of cos, sin
+     * (pi/2) and of the two SH projections. */
+    CHECK(!rc && max <= 1e-6, "rotate: turned sky vs rolled map max %.2e", max);
+    printf("rotate: a sky turned by 90 degrees = the map rolled, max %.2e (bound 1e-6)\n", max);
+    hfs_image_free(&x), hfs_image_free(&y);
+    free(rolled);
+}
+
+static void check_invalid(const scene *sc, const float *map)
+{
+    shaded s;
+    make_lighting(&s, map, 0.0, 1);
+    s.l.env_open = NULL;
+    hfs_error err = {""};
+    CHECK(hfs_validate_lighting(&s.l, &err) == HFS_E_INVALID && strstr(err.msg, "env-shade-map") &&
+          !strchr(err.msg, '\n'), "shade map without its table: '%s'", err.msg);
+    (void)sc;
+    printf("invalid: %s\n", err.msg);
+}
+
+/* GLES against the CPU at subsample 1 (fp16, map-shaded): measured
+ * 4.6e-5 mean; bound 2x.  At the 2x2 default against the map's truth the
+ * map-shaded error measured 0.55x the SH-shaded one: at 48^2 the fractal's
+ * texel-scale relief makes the grid's interpolated horizons weigh more
+ * than at 256^2 (0.32x there, BENCHMARKS.md "Shading from the map
+ * itself"); bound 0.7x. */
+#define GLES_SUB1_BOUND 9.2e-5
+#define GLES_2X2_RATIO 0.7
+/* fp16 against fp32, map-shaded at 2x2: measured 4.7e-5 mean; bound 2x
+ * (issue 15 asks 2e-3). */
+#define GLES_FP16_BOUND 9.4e-5
+
+static void check_gles(const scene *sc, const float *map, const hfs_image *truth)
+{
+    shaded s, sh;
+    make_lighting(&s, map, 0.3, 1);
+    make_lighting(&sh, map, 0.3, 0);
+    hfs_quality q = quality();
+    q.subsample = 1;
+    hfs_image g = {0}, c = {0};
+    int rc = render(HFS_BACKEND_GLES, &sc->f, &s.l, &q, &g) | render(HFS_BACKEND_CPU, &sc->f, &s.l, &q, &c);
+    double mean, max, mean_sh;
+    errors(&g, &c, &mean, &max);
+    CHECK(!rc && mean <= GLES_SUB1_BOUND, "gles sub 1 vs cpu: mean %.2e > %.1e", mean,
+          GLES_SUB1_BOUND);
+    printf("gles: subsample 1 against the cpu, mean %.2e, max %.2e (bound %.1e)\n", mean, max,
+           GLES_SUB1_BOUND);
+    hfs_image_free(&g), hfs_image_free(&c);
+    q.subsample = 2;
+    rc = render(HFS_BACKEND_GLES, &sc->f, &s.l, &q, &g) | render(HFS_BACKEND_GLES, &sc->f, &sh.l, &q, &c);
+    errors(&g, truth, &mean, &max);
+    errors(&c, truth, &mean_sh, &max);
+    CHECK(!rc && mean <= GLES_2X2_RATIO * mean_sh, "gles 2x2: map-shaded %.2e, SH-shaded %.2e",
+          mean, mean_sh);
+    printf("gles: 2x2 against the map's truth, map-shaded mean %.2e, SH-shaded %.2e: %.2fx "
+           "(bound %.1fx)\n", mean, mean_sh, mean / mean_sh, GLES_2X2_RATIO);
+    hfs_image_free(&g), hfs_image_free(&c);
+    /* fp16 tables and targets against fp32 at the default. */
+    q.precision = HFS_PRECISION_FP32;
+    rc = render(HFS_BACKEND_GLES, &sc->f, &s.l, &q, &c);
+    q.precision = HFS_PRECISION_FP16;
+    rc |= render(HFS_BACKEND_GLES, &sc->f, &s.l, &q, &g);
+    errors(&g, &c, &mean, &max);
+    CHECK(!rc && mean <= GLES_FP16_BOUND, "gles fp16 vs fp32: mean %.2e > %.1e", mean,
+          GLES_FP16_BOUND);
+    printf("gles: fp16 against fp32 (2x2), mean %.2e, max %.2e (bound %.1e)\n", mean, max,
+           GLES_FP16_BOUND);
+    hfs_image_free(&g), hfs_image_free(&c);
+    /* A turned sky on a kept renderer. */
+    hfs_renderer *r = gl_test_gles(), *fresh = gl_test_gles();
+    hfs_error err = {""};
+    hfs_image a = {0}, b = {0};
+    hfs_image_alloc(&a, N, N, &err), hfs_image_alloc(&b, N, N, &err);
+    rc = hfs_renderer_render(r, &sc->f, &s.l, &q, &a, NULL, NULL, &err);
+    s.l.env_rotate = 1.1;
+    rc |= hfs_renderer_render(r, &sc->f, &s.l, &q, &a, NULL, NULL, &err);
+    hfs_frame_report rep;
+    hfs_renderer_frame_report(r, &rep);
+    char ran[256] = "";
+    for (int i = 0; i < rep.n_steps; ++i)
+        if (rep.step[i].ran)
+            strncat(strncat(ran, rep.step[i].pass, 200 - strlen(ran)), " ", 2);
+    CHECK(!rc && !strcmp(ran, "map occlusion shade readback "),
+          "turned sky: ran '%s', want the map's occlusion, shade and readback", ran);
+    rc |= hfs_renderer_render(fresh, &sc->f, &s.l, &q, &b, NULL, NULL, &err);
+    CHECK(!rc && !memcmp(a.rgb, b.rgb, sizeof(float) * N * N * 3),
+          "turned sky: the planned frame differs from a fresh one");
+    printf("gles: a turned sky runs '%s', bit for bit a fresh frame\n", ran);
+    hfs_image_free(&a), hfs_image_free(&b);
+    hfs_renderer_destroy(r), hfs_renderer_destroy(fresh);
+}
+
+int main(int argc, char **argv)
+{
+    scene sc;
+    if (scene_make("fractal25", N, NULL, &sc))
+        return 1;
+    float *map = make_map();
+    hfs_image truth = {0};
+    check_constant();
+    check_planes(map);
+    check_accuracy(&sc, map, &truth);
+    check_rotate(&sc, map);
+    check_invalid(&sc, map);
+    if (argc > 1 && !strcmp(argv[1], "gles"))
+        check_gles(&sc, map, &truth);
+    hfs_image_free(&truth);
+    free(map);
+    scene_free(&sc);
+    printf("test_env_shade: %s\n", failures ? "FAILED" : "ok");
+    return failures ? 1 : 0;
+}
