@@ -8,7 +8,8 @@
  * ratio, and the passes the planned frames ran.
  *
  *   bench_plan [--frames N] [--size N] [--only NAME] [--passes 1]
- *              [--visibility legendre|wedge|slice]  (defaults 30, 512, 0, legendre)
+ *              [--visibility legendre|wedge|slice] [--env-map FILE]
+ *              (defaults 30, 512, 0, legendre, none)
  * --passes 1 also prints, per sequence, where a planned frame's time goes:
  * the median time of each pass it ran (timing level 1 by glFinish + clock,
  * hfs_renderer_set_timing_finish: llvmpipe's timer queries miss deferred
@@ -28,14 +29,21 @@
  *   key-dim      env-rotate's terrain and key light without the sky, the
  *                key light dimming every frame: the planned frame is the
  *                shading pass and readback without the environment's part
- *                (beside env-rotate, what that part costs).
+ *                (beside env-rotate, what that part costs);
+ *   envmap-rotate (with --env-map FILE) env-rotate with the map shaded
+ *                from the map itself (env-shade = map: its open-sky table
+ *                and, on the slice path, the map's occlusion pass) instead
+ *                of the SH sky.
  * A third renderer amortizes (hfs_renderer_set_amortize 1: one visibility
  * pass a frame, NS09 section 7) and is timed alongside; its column is its
  * median frame time (its frames lag the edits by up to K - 1 frames, K the
  * visibility passes an edit makes stale).
  * No GLES context of any kind: exit 77 (gl_test.h).
  */
+#include "env_open.h"
+#include "hfs_io.h"
 #include "hfshade.h"
+#include "sh.h"
 #include "terrain_gen.h"
 #include "median.h"
 #include "gl_test.h"
@@ -63,7 +71,29 @@ typedef struct seq {
     hfs_field f;
     hfs_lighting l;
     hfs_quality q;
+    float open[HFS_ENV_OPEN_FLOATS]; /* envmap-rotate: the map's open sky */
 } seq;
+
+/* --env-map: the map envmap-rotate shades from. */
+static hfs_envmap env_map;
+
+/* The map as the scene layer lights it with env-shade = map. */
+static int map_sky(seq *s)
+{
+    hfs_lighting *l = &s->l;
+    hfs_error err = {""};
+    l->has_env = 1;
+    hfs_sh_project_equirect(env_map.rgb, env_map.width, env_map.height, l->env_sh);
+    if (hfs_env_open_build(env_map.rgb, env_map.width, env_map.height,
+                           (const double(*)[HFS_SH_COEFFS])l->env_sh, s->open, &err)) {
+        fprintf(stderr, "bench_plan: %s\n", err.msg);
+        return -1;
+    }
+    l->env_map = l->env_shade_map = env_map.rgb;
+    l->env_map_width = env_map.width, l->env_map_height = env_map.height;
+    l->env_open = s->open;
+    return 0;
+}
 
 static void sky(hfs_lighting *l)
 {
@@ -104,8 +134,12 @@ static int setup(seq *s, const char *name, int n)
     } else {
         if (hfs_terrain_fractal(s->z, n, n, 1, 0.25))
             return -1;
-        if (strcmp(name, "key-dim"))
+        if (!strcmp(name, "envmap-rotate")) {
+            if (map_sky(s))
+                return -1;
+        } else if (strcmp(name, "key-dim")) {
             sky(&s->l);
+        }
         s->l.n_key = 1;
         s->l.key[0] = (hfs_key_light){.phi = 5.86, .elev = 0.26, .alpha = 0.035,
                                       .radiance = {150, 140, 125}};
@@ -128,7 +162,7 @@ static int setup(seq *s, const char *name, int n)
 /* Frame t's edit. */
 static void edit(seq *s, int t)
 {
-    if (!strcmp(s->name, "env-rotate")) {
+    if (!strcmp(s->name, "env-rotate") || !strcmp(s->name, "envmap-rotate")) {
         s->l.env_rotate = fmod(t * 6.0, 360.0) * PI / 180.0;
     } else if (!strcmp(s->name, "key-sweep")) {
         s->l.key[0].phi = fmod(0.5 + t * 3.0 * PI / 180.0, 2 * PI);
@@ -161,6 +195,7 @@ static void edit(seq *s, int t)
 int main(int argc, char **argv)
 {
     static const char *const paths[] = {"legendre", "wedge", "slice"};
+    hfs_error err = {""};
     int frames = 30, size = 512, passes_too = 0;
     const char *only = NULL;
     for (int i = 1; i + 1 < argc; i += 2) {
@@ -172,6 +207,10 @@ int main(int argc, char **argv)
             only = argv[i + 1];
         else if (!strcmp(argv[i], "--passes"))
             passes_too = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--env-map") && hfs_envmap_load(argv[i + 1], &env_map, &err)) {
+            fprintf(stderr, "bench_plan: %s\n", err.msg);
+            return 2;
+        }
         else if (!strcmp(argv[i], "--visibility")) {
             vis_path = 0;
             for (int p = 0; p < 3; ++p)
@@ -189,7 +228,6 @@ int main(int argc, char **argv)
                         "[--passes 0|1]\n");
         return 2;
     }
-    hfs_error err;
     hfs_renderer *planned = gl_test_gles(), *full = gl_test_gles(), *amort = gl_test_gles();
     if (passes_too) {
         hfs_renderer_set_timing(planned, 1);
@@ -197,14 +235,14 @@ int main(int argc, char **argv)
     }
     hfs_renderer_set_amortize(amort, 1);
     static const char *const names[] = {"env-rotate", "key-sweep", "local-move", "terrain",
-                                        "lights-sweep", "key-dim"};
+                                        "lights-sweep", "key-dim", "envmap-rotate"};
     printf("| sequence | field | frames | planned ms (median) | full ms (median) | full / "
            "planned | amortized ms (median) | passes run per planned frame (total over the "
            "frames) |\n");
     printf("|---|---|---|---|---|---|---|---|\n");
     int rc = 0;
     for (size_t k = 0; k < sizeof names / sizeof names[0] && !rc; ++k) {
-        if (only && strcmp(only, names[k]))
+        if ((only && strcmp(only, names[k])) || (!env_map.rgb && !strcmp(names[k], "envmap-rotate")))
             continue;
         seq s;
         const int n = !strcmp(names[k], "local-move") ? size / 2 : size;
@@ -297,5 +335,6 @@ int main(int argc, char **argv)
     hfs_renderer_destroy(planned);
     hfs_renderer_destroy(full);
     hfs_renderer_destroy(amort);
+    hfs_envmap_free(&env_map);
     return rc ? 1 : 0;
 }

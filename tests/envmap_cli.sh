@@ -54,6 +54,15 @@ expect_fail negative "neg.pfm: texel (1, 0) G is -1" decompose "$tmp/neg.pfm" --
 expect_fail missing "nope.pfm" decompose "$tmp/nope.pfm" --picture "$tmp/bad.png"
 expect_fail max-lights "--max-lights" decompose "$tmp/sky.pfm" --max-lights 9
 expect_fail min-share "--min-share" decompose "$tmp/sky.pfm" --min-share 2
+expect_fail max-radius "--max-radius" decompose "$tmp/sky.pfm" --max-radius -1
+# --max-radius: the 0.5-degree sun is taken under 15 degrees, not under 0.1
+# (the first candidate wider than the limit ends the search).
+"$HFSHADE" envmap decompose "$tmp/sky.pfm" --max-radius 15 >"$tmp/out" 2>"$tmp/err" ||
+    fail "max-radius 15: $(cat "$tmp/err")"
+grep -q '^key' "$tmp/out" || fail "max-radius 15: no light"
+"$HFSHADE" envmap decompose "$tmp/sky.pfm" --max-radius 0.1 >"$tmp/out" 2>"$tmp/err" ||
+    fail "max-radius 0.1: $(cat "$tmp/err")"
+grep -q '^key' "$tmp/out" && fail "max-radius 0.1: a light wider than 0.1 degree"
 # A 1x1 map: no light, a residual.
 printf 'PF\n1 1\n-1.0\n\x00\x00\x80\x3f\x00\x00\x80\x3f\x00\x00\x80\x3f' >"$tmp/one.pfm"
 "$HFSHADE" envmap decompose "$tmp/one.pfm" >"$tmp/out" 2>"$tmp/err" || fail "1x1: $(cat "$tmp/err")"

@@ -18,7 +18,7 @@ hfs_add_test(test_plan_cases SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_plan_cases.c
 # The planner's savings on realistic sequences (a benchmark, not a test):
 # build/tests/bench_plan [--frames N] [--size N] (BENCHMARKS.md).
 add_executable(bench_plan ${CMAKE_CURRENT_LIST_DIR}/bench_plan.c)
-target_link_libraries(bench_plan PRIVATE hfshade_lib hfs_terrain_gen m)
+target_link_libraries(bench_plan PRIVATE hfshade_lib hfshade_io hfs_terrain_gen m)
 target_include_directories(bench_plan PRIVATE ${PROJECT_SOURCE_DIR}/tools)
 # Amortization (NS09 section 7): bounded latency, convergence to the
 # from-scratch frame (GLES).

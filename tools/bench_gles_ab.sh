@@ -8,6 +8,7 @@
 # usage: tools/bench_gles_ab.sh BUILD_A BUILD_B [ROUNDS] [FRAMES]   (defaults 5 5)
 # AB_FLAGS_A / AB_FLAGS_B: extra render flags for each side, e.g. the same
 # build twice with AB_FLAGS_B="--visibility slice" compares two paths.
+# AB_SKY: the environment flags (default a uniform SH sky of radiance 1).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 A=${1:?usage: bench_gles_ab.sh BUILD_A BUILD_B [ROUNDS] [FRAMES]}
@@ -16,7 +17,7 @@ R=${3:-5}
 F=${4:-5}
 C=$(mktemp -d)
 trap 'rm -rf "$C"' EXIT
-SKY="--env-sh 3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0"
+SKY=${AB_SKY:-"--env-sh 3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0"}
 SUN="--key 336,15,2,1500"
 LOCAL="--local 40,40,30,4,2000 --local 90,30,25,3,1500"
 # frame_ms BUILD ARGS... -> the median frame ms of F frames

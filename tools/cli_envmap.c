@@ -33,7 +33,7 @@ typedef struct envmap_args {
 static int usage(void)
 {
     fprintf(stderr, "usage: hfshade envmap decompose MAP [--max-lights N] [--min-share F] "
-                    "[--contrast C] [--picture OUT.png]\n");
+                    "[--contrast C] [--max-radius DEG] [--picture OUT.png]\n");
     return 2;
 }
 
@@ -63,6 +63,14 @@ static int parse(int argc, char **argv, envmap_args *a)
                 return -2;
             }
             *(share ? &a->o.min_share : &a->o.contrast) = x;
+        } else if (!strcmp(argv[i], "--max-radius") && v) { /* degrees */
+            double x = strtod(v, &end);
+            if (*end || !(x >= 0.0 && x <= 180.0)) {
+                fprintf(stderr, "hfshade: --max-radius: '%s' is not a number of degrees in "
+                        "[0, 180]\n", v);
+                return -2;
+            }
+            a->o.max_radius = x * 3.14159265358979323846 / 180.0;
         } else if (!strcmp(argv[i], "--picture") && v) {
             a->picture = v;
         } else if (argv[i][0] != '-' && !a->map) {

@@ -28,16 +28,25 @@ PANEL="--height $T/panel.pfm --local 110,90,40,6,60 --env-sh 0.6,0,0.3,0,0,0,0,0
 "$B/tools/hfshade" render $PANEL --albedo 0.45 --specular 0.4 --gloss 48 --view perspective \
     --camera 235,32,330,40 --view-size 640x384 -o docs/img/panel-glossy-3d.png --quiet
 # Issue 17: the demo DEM under a synthetic sky whose 0.5-degree sun (at the
-# demo sun's 336/15 degrees) holds 80% of the energy: the map's SH alone,
-# the map decomposed into lights + residual (--env-lights auto), and the
-# truth of the map itself (a minute or two on two cores).
+# demo sun's 336/15 degrees) holds 80% of the energy: the map's SH alone
+# (--env-shade sh), the map decomposed into lights + residual shaded from
+# the map itself (--env-lights auto), and the truth of the map itself (a
+# minute or two on two cores); then the same for the demo's courtyard map
+# (no sun disk: no light is extracted; the map's own shading does it).
 "$B/tools/hfgen" sky --sun 336,15 --size 1024x512 -o "$T/sky.pfm"
 SKY="--height data/jacksboro.png --dx 83 --zscale 2 --albedo 0.35 --env-map $T/sky.pfm --exposure 0.3"
 # shellcheck disable=SC2086
-"$B/tools/hfshade" render $SKY -o docs/img/sky-sh-only.png --quiet
+"$B/tools/hfshade" render $SKY --env-shade sh -o docs/img/sky-sh-only.png --quiet
 # shellcheck disable=SC2086
 "$B/tools/hfshade" render $SKY --env-lights auto -o docs/img/sky-env-lights.png --quiet
 # shellcheck disable=SC2086
 "$B/tools/hfshade" render $SKY --backend truth -o docs/img/sky-truth.png --quiet
+YARD="--height data/jacksboro.png --dx 83 --zscale 2 --albedo 0.6 --env-map data/courtyard.exr"
+# shellcheck disable=SC2086
+"$B/tools/hfshade" render $YARD --env-shade sh -o docs/img/courtyard-sh-only.png --quiet
+# shellcheck disable=SC2086
+"$B/tools/hfshade" render $YARD --env-lights auto -o docs/img/courtyard-map.png --quiet
+# shellcheck disable=SC2086
+"$B/tools/hfshade" render $YARD --backend truth -o docs/img/courtyard-truth.png --quiet
 echo "wrote docs/img/dem-3d-bounces{0,1}.png docs/img/panel-{diffuse,glossy,glossy-3d}.png"
-echo "wrote docs/img/sky-{sh-only,env-lights,truth}.png"
+echo "wrote docs/img/sky-{sh-only,env-lights,truth}.png docs/img/courtyard-{sh-only,map,truth}.png"
