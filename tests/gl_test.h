@@ -43,6 +43,22 @@ static inline hfs_renderer *gl_test_renderer(const hfs_renderer_desc *desc)
     return r;
 }
 
+/* The passes r's last frame ran, each followed by a space ("shade
+ * readback "), into buf (n bytes). */
+static inline const char *gl_test_ran(const hfs_renderer *r, char *buf, size_t n)
+{
+    hfs_frame_report rep;
+    hfs_renderer_frame_report(r, &rep);
+    size_t used = 0;
+    buf[0] = 0;
+    for (int i = 0; i < rep.n_steps; ++i)
+        if (rep.step[i].ran && used < n) {
+            const int w = snprintf(buf + used, n - used, "%s ", rep.step[i].pass);
+            used += w > 0 ? (size_t)w : 0;
+        }
+    return buf;
+}
+
 /* The product's renderer (GLES, default context and profile). */
 static inline hfs_renderer *gl_test_gles(void)
 {

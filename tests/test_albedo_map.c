@@ -129,12 +129,8 @@ static void check_gles(const scene *s, const float *map, const float *map2)
     int rc = render(r, s, &l, &q, &plain);
     l.albedo_map = map;
     rc |= render(r, s, &l, &q, &a) | render(cpu, s, &l, &q, &c);
-    hfs_frame_report rep;
-    hfs_renderer_frame_report(r, &rep);
-    char ran[256] = "";
-    for (int i = 0; i < rep.n_steps; ++i)
-        if (rep.step[i].ran)
-            strncat(strncat(ran, rep.step[i].pass, 200 - strlen(ran)), " ", 2);
+    char ran[256];
+    gl_test_ran(r, ran, sizeof ran);
     CHECK(!strcmp(ran, "shade readback "), "map given: ran '%s', want shade and readback", ran);
     double sum = 0.0, norm = 0.0;
     for (int i = 0; i < N * N * 3; ++i) {

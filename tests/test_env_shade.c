@@ -282,12 +282,8 @@ static void check_gles(const scene *sc, const float *map, const hfs_image *truth
     rc = hfs_renderer_render(r, &sc->f, &s.l, &q, &a, NULL, NULL, &err);
     s.l.env_rotate = 1.1;
     rc |= hfs_renderer_render(r, &sc->f, &s.l, &q, &a, NULL, NULL, &err);
-    hfs_frame_report rep;
-    hfs_renderer_frame_report(r, &rep);
-    char ran[256] = "";
-    for (int i = 0; i < rep.n_steps; ++i)
-        if (rep.step[i].ran)
-            strncat(strncat(ran, rep.step[i].pass, 200 - strlen(ran)), " ", 2);
+    char ran[256];
+    gl_test_ran(r, ran, sizeof ran);
     CHECK(!rc && !strcmp(ran, "map occlusion shade readback "),
           "turned sky: ran '%s', want the map's occlusion, shade and readback", ran);
     rc |= hfs_renderer_render(fresh, &sc->f, &s.l, &q, &b, NULL, NULL, &err);

@@ -254,12 +254,8 @@ static void check_gles(const scene *s)
     /* A new view direction on the kept renderer: shading only, = fresh. */
     l.view_dir[0] = 0.0, l.view_dir[1] = 0.6, l.view_dir[2] = 0.8;
     rc |= hfs_renderer_render(r, &s->f, &l, &q, &g, NULL, NULL, &err);
-    hfs_frame_report rep;
-    hfs_renderer_frame_report(r, &rep);
-    char ran[256] = "";
-    for (int i = 0; i < rep.n_steps; ++i)
-        if (rep.step[i].ran)
-            strncat(strncat(ran, rep.step[i].pass, 200 - strlen(ran)), " ", 2);
+    char ran[256];
+    gl_test_ran(r, ran, sizeof ran);
     rc |= render(HFS_BACKEND_GLES, s, &l, &q, &f);
     CHECK(!rc && !strcmp(ran, "shade readback ") &&
           !memcmp(g.rgb, f.rgb, sizeof(float) * N * N * 3),
