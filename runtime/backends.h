@@ -11,6 +11,7 @@
 #define HFS_BACKENDS_H
 
 #include "hfshade.h"
+#include "objects.h"
 #include "view_camera.h"
 
 /* CPU reference (cpu_*.c): the GPU algorithm in double precision. */
@@ -51,10 +52,12 @@ const char *hfs_gles_describe(const hfs_gles *g);
 int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                     const hfs_quality *q, hfs_image *out, hfs_error *err);
 /* The same frame and its 3-D view from camera cam into view (w x h RGB,
- * row 0 at the top; runtime/gles/pass_view.c). */
+ * row 0 at the top; runtime/gles/pass_view.c), with the lit objects obj
+ * (objects.h, in the view's world; NULL: none). */
 int hfs_gles_render_view(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
-                         const hfs_quality *q, const hfs_camera *cam, int w, int h,
-                         hfs_image *out, float *view, hfs_error *err);
+                         const hfs_quality *q, const hfs_camera *cam,
+                         const hfs_object_set *obj, int w, int h, hfs_image *out, float *view,
+                         hfs_error *err);
 /* Key-light visibility of points (hfs_renderer_query_points): shadow
  * height maps by doubling passes on the GPU (runtime/gles/shm_query.c). */
 int hfs_gles_query_points(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,

@@ -12,6 +12,7 @@ add_library(hfs_shared STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/slice_light.c
   ${CMAKE_CURRENT_SOURCE_DIR}/env_open.c      # an env map's open sky (issue 17)
   ${CMAKE_CURRENT_SOURCE_DIR}/env_map_slices.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/objects.c       # objects above the field (issue 19)
   ${CMAKE_CURRENT_SOURCE_DIR}/shm.c)          # shadow height maps (issue 19)
 target_compile_definitions(hfs_shared PRIVATE HFS_BUILDING_LIBRARY)
 target_include_directories(hfs_shared PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})

@@ -364,6 +364,32 @@ HFS_API int hfs_renderer_render(hfs_renderer *r, const hfs_field *field,
  * hfs_renderer_invalidate forgets what was checked.  Kept until changed. */
 HFS_API void hfs_renderer_set_field_serial(hfs_renderer *r, uint64_t serial);
 
+/* ---- objects above the field (issue 19) ---------------------------------------- */
+
+/* What stands above the terrain in a 3-D view: markers, pins, boxes
+ * (runtime/objects.h, DESIGN.md "Objects above the field").  Each is an
+ * axis-aligned box lit by the scene's lights: key lights through their
+ * visibility at its surface (the renderer's point query: shadow height
+ * maps, exact rays on the truth), the environment through horizons
+ * marched from its surface's own height, local lights unshadowed.  They
+ * cast no shadows (on the terrain or each other). */
+#define HFS_MAX_OBJECTS 256
+typedef enum hfs_object_kind {
+    HFS_OBJECT_POINT = 0,    /* a cube of side size[0] centred z above the surface */
+    HFS_OBJECT_PIN,          /* a square post size[0] wide and size[2] high, its
+                                foot z above the surface                      */
+    HFS_OBJECT_BOX           /* size[0] x size[1] x size[2] along x, y, z, its
+                                bottom z above the surface                    */
+} hfs_object_kind;
+
+typedef struct hfs_object {
+    hfs_object_kind kind;
+    double x, y;             /* its centre, world units, on the footprint     */
+    double z;                /* above the surface at (x, y) (bilinear), >= 0  */
+    double size[3];          /* world units, > 0 where the kind reads them    */
+    float albedo[3];         /* linear RGB in [0, 1]                          */
+} hfs_object;
+
 /* ---- the 3-D view (issue 16) -------------------------------------------------- */
 
 /* A picture of the lit field seen from a camera, instead of its grid dump
@@ -391,6 +417,8 @@ typedef struct hfs_view {
     double target[3];          /* world point looked at                      */
     double exaggeration;       /* vertical exaggeration of the terrain, > 0  */
     int width, height;         /* the view image, pixels, 1..8192            */
+    const hfs_object *objects; /* drawn lit in the view (NULL: none)        */
+    int n_objects;             /* 0..HFS_MAX_OBJECTS                         */
 } hfs_view;
 
 /* A view of field f: straight down (azimuth 90, elevation 90 degrees),

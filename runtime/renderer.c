@@ -37,8 +37,9 @@ typedef struct backend_ops {
     /* The lit frame and its 3-D view in one go (NULL: the lit image's
      * ray-cast view, hfs_truth_view). */
     int (*render_view)(void *state, const hfs_field *f, const hfs_lighting *l,
-                       const hfs_quality *q, const hfs_camera *cam, int w, int h,
-                       hfs_image *lit, float *view, hfs_error *err);
+                       const hfs_quality *q, const hfs_camera *cam,
+                       const hfs_object_set *obj, int w, int h, hfs_image *lit, float *view,
+                       hfs_error *err);
     /* Reads hfs_lighting.env_map (the truth): its pixels are checked for
      * it alone, the others' frames skip the scan. */
     int reads_env_map;
@@ -94,10 +95,11 @@ static void gles_frame_report(const void *state, hfs_frame_report *out)
     hfs_gles_frame_report(state, out);
 }
 static int gles_render_view(void *state, const hfs_field *f, const hfs_lighting *l,
-                            const hfs_quality *q, const hfs_camera *cam, int w, int h,
-                            hfs_image *lit, float *view, hfs_error *err)
+                            const hfs_quality *q, const hfs_camera *cam,
+                            const hfs_object_set *obj, int w, int h, hfs_image *lit,
+                            float *view, hfs_error *err)
 {
-    return hfs_gles_render_view(state, f, l, q, cam, w, h, lit, view, err);
+    return hfs_gles_render_view(state, f, l, q, cam, obj, w, h, lit, view, err);
 }
 
 static int cpu_query(void *state, const hfs_field *f, const hfs_lighting *l,
@@ -346,18 +348,49 @@ int hfs_render_unshadowed(const hfs_field *f, const hfs_lighting *l, const hfs_q
     return check_output(out, "unshadowed", err);
 }
 
+/* The view's objects lit (objects.h): key lights through this backend's
+ * point query, then their boxes moved into the view's world (z times the
+ * exaggeration, as the terrain's). */
+static int light_objects(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
+                         const hfs_quality *q, const hfs_view *v, hfs_object_set *s,
+                         hfs_error *err)
+{
+    int rc = hfs_objects_check(f, v->objects, v->n_objects, err);
+    if (rc || (rc = hfs_objects_make(f, v->objects, v->n_objects, s, err)))
+        return rc;
+    const size_t n = (size_t)s->n * 6 * HFS_OBJ_VERTS;
+    double *xyz = malloc(n * 3 * sizeof *xyz);
+    float *vis = malloc((n * (size_t)l->n_key + 1) * sizeof *vis);
+    if (!xyz || !vis)
+        rc = hfs_fail(err, HFS_E_NOMEM, "objects: out of memory");
+    if (!rc && l->n_key > 0) {
+        hfs_objects_query_points(s, f, xyz);
+        rc = r->ops->query_points(r->state, f, l, q, xyz, (int)n, vis, err);
+    }
+    if (!rc)
+        rc = hfs_objects_light(s, f, l, q, vis, err);
+    for (int b = 0; b < s->n && !rc; ++b)
+        s->box[b][2] *= v->exaggeration, s->box[b][5] *= v->exaggeration;
+    free(xyz);
+    free(vis);
+    if (rc)
+        hfs_objects_free(s);
+    return rc;
+}
+
 /* The view of the lit image: the backend's own, or the ray-cast one. */
 static int render_view(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
                        const hfs_quality *q, const hfs_camera *cam, const hfs_view *v,
-                       hfs_image *lit, hfs_image *out, hfs_error *err)
+                       const hfs_object_set *obj, hfs_image *lit, hfs_image *out,
+                       hfs_error *err)
 {
     if (r->ops->render_view)
-        return r->ops->render_view(r->state, f, l, q, cam, v->width, v->height, lit, out->rgb,
-                                   err);
+        return r->ops->render_view(r->state, f, l, q, cam, obj, v->width, v->height, lit,
+                                   out->rgb, err);
     int rc = r->ops->render(r->state, f, l, q, lit, NULL, NULL, err);
     if (!rc)
         rc = check_output(lit, r->ops->name, err);
-    return rc ? rc : hfs_truth_view(f, lit->rgb, l, cam, v->width, v->height, out->rgb,
+    return rc ? rc : hfs_truth_view(f, lit->rgb, l, cam, obj, v->width, v->height, out->rgb,
                                     q->threads, err);
 }
 
@@ -407,7 +440,13 @@ int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *f, const hfs_ligh
     if (l->specular > 0.0)
         glossy_viewer(&cam, &seen);
     const double t0 = wall_ms();
-    rc = render_view(r, f, &seen, q, &cam, v, lit ? lit : &own, out, err);
+    hfs_object_set obj = {0};
+    if (v->n_objects > 0 || v->objects)
+        rc = light_objects(r, f, l, q, v, &obj, err);
+    if (!rc)
+        rc = render_view(r, f, &seen, q, &cam, v, obj.n > 0 ? &obj : NULL, lit ? lit : &own, out,
+                         err);
+    hfs_objects_free(&obj);
     if (!rc && r->timing && !r->ops->timings)
         wall_timings(r, "render+view", t0);
     if (!rc)

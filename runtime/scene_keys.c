@@ -162,6 +162,33 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                                    "how key, view-dir and --camera azimuths read: SPEC's "
                                    "(from +x toward +y) or compass (clockwise from north, "
                                    "= 90 + SPEC's on a north-up field)"},
+    /* Objects above the field (hfshade.h hfs_object; drawn in the 3-D view). */
+    [HFS_SK_PIN] = {"pin", "X,Y,H,W[,R,G,B]", HFS_FORM_REALS, 4, 1, 0,
+                    {{"coordinate", HFS_UNIT_WORLD, NONNEG, NULL},
+                     {"coordinate", HFS_UNIT_WORLD, NONNEG, NULL},
+                     {"height", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL},
+                     {"width", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL}},
+                    NULL, "a vertical post standing on the surface at (X, Y), world units, "
+                    "albedo R,G,B (default 0.8 grey); repeatable", 1},
+    [HFS_SK_BOX] = {"box", "X,Y,Z,W,D,H[,R,G,B]", HFS_FORM_REALS, 6, 1, 0,
+                    {{"coordinate", HFS_UNIT_WORLD, NONNEG, NULL},
+                     {"coordinate", HFS_UNIT_WORLD, NONNEG, NULL},
+                     {"height above the surface", HFS_UNIT_WORLD, {0.0, 1e12, 0}, NULL},
+                     {"width", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL},
+                     {"depth", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL},
+                     {"height", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL}},
+                    NULL, "an axis-aligned box centred on (X, Y), its bottom Z above the "
+                    "surface, W x D x H, world units; repeatable", 1},
+    [HFS_SK_POINT] = {"point", "X,Y,Z,S[,R,G,B]", HFS_FORM_REALS, 4, 1, 0,
+                      {{"coordinate", HFS_UNIT_WORLD, NONNEG, NULL},
+                       {"coordinate", HFS_UNIT_WORLD, NONNEG, NULL},
+                       {"height above the surface", HFS_UNIT_WORLD, {0.0, 1e12, 0}, NULL},
+                       {"size", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL}},
+                      NULL, "a marker: a cube of side S centred Z above the surface at (X, Y); "
+                      "repeatable", 1},
+    [HFS_SK_OBJECTS] = {"objects", "FILE", HFS_FORM_PATH, 0, 0, 0, {{0}}, NULL,
+                        "objects from a file: one pin, box or point line (KEY = VALUE, as "
+                        "here) per object, # comments"},
     [HFS_SK_ENV_SHADE] = {"env-shade", "map|sh", HFS_FORM_WORD, 0, 0, 0, {{0}}, "map",
                           "how the cpu and gles backends light an env-map: from the map "
                           "itself (open sky and occluded slices), or through its SH only"},

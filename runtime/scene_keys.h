@@ -36,7 +36,8 @@ typedef enum hfs_scene_key_id {
     HFS_SK_PRECISION, HFS_SK_BACKEND, HFS_SK_CONTEXT, HFS_SK_VISIBILITY, HFS_SK_THREADS,
     HFS_SK_TRUTH_AZIMUTHS, HFS_SK_TRUTH_SAMPLES, HFS_SK_LOCAL_SWATH, HFS_SK_PRESET,
     HFS_SK_SPECULAR, HFS_SK_GLOSS, HFS_SK_VIEW_DIR, HFS_SK_TRUTH_ENV,
-    HFS_SK_AZIMUTH_CONVENTION, HFS_SK_ENV_SHADE,
+    HFS_SK_AZIMUTH_CONVENTION, HFS_SK_ENV_SHADE, HFS_SK_PIN, HFS_SK_BOX, HFS_SK_POINT,
+    HFS_SK_OBJECTS,
     HFS_SK_COUNT
 } hfs_scene_key_id;
 
@@ -74,18 +75,20 @@ typedef struct hfs_key_number {
                                   library units); else the library's own     */
 } hfs_key_number;
 
-#define HFS_KEY_MAX_NUMBERS 5
+#define HFS_KEY_MAX_NUMBERS 6
 
 typedef struct hfs_scene_key {
     const char *name;          /* as in a scene file; the flag without "--"  */
     const char *arg;           /* the value's form in help texts             */
     hfs_key_form form;
     int n;                     /* numbers in the value (REALS, INT, SIZE)    */
-    int repeatable;            /* each one adds a light (key, local)         */
+    int repeatable;            /* each one adds a light or an object         */
     int pow2;                  /* INT: only the powers of two in range       */
     hfs_key_number num[HFS_KEY_MAX_NUMBERS]; /* env-sh: num[0] for all 16    */
     const char *def;           /* the default, written as a value; NULL: none */
     const char *help;
+    int colour;                /* REALS: an optional R,G,B albedo (each in
+                                  [0, 1]) may follow the n numbers          */
 } hfs_scene_key;
 
 /* The row of id; NULL when id is out of range. */

@@ -12,4 +12,4 @@ add_library(hfs_truth STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/unshadowed.c)
 target_compile_definitions(hfs_truth PRIVATE HFS_BUILDING_LIBRARY)
 target_include_directories(hfs_truth PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(hfs_truth PUBLIC hfs_base hfs_sh)
+target_link_libraries(hfs_truth PUBLIC hfs_shared hfs_base hfs_sh) # objects.c: the views

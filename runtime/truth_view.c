@@ -20,7 +20,47 @@ typedef struct view_ctx {
     double env[3][HFS_SH_N];
     int w, h;
     float *view;
+    const hfs_object_set *obj; /* in the view's world (z exaggerated), or NULL */
 } view_ctx;
+
+/* The nearest object the ray org + t d (t in (0, tmax)) meets: its index,
+ * or -1; *t, the face and its (u, v) (objects.h conventions). */
+static int object_hit(const hfs_object_set *s, const double org[3], const double d[3],
+                      double tmax, double *t, int *face, double uv[2])
+{
+    int best = -1;
+    for (int b = 0; s && b < s->n; ++b) {
+        const double *bx = s->box[b];
+        double lo = 0.0, hi = tmax;
+        int axis = -1, side = 0;
+        for (int a = 0; a < 3 && lo <= hi; ++a) {
+            if (d[a] == 0.0) {
+                if (org[a] < bx[a] || org[a] > bx[a + 3])
+                    hi = -1.0;
+                continue;
+            }
+            double t0 = (bx[a] - org[a]) / d[a], t1 = (bx[a + 3] - org[a]) / d[a];
+            const int s0 = t0 > t1;
+            if (s0) {
+                const double x = t0;
+                t0 = t1, t1 = x;
+            }
+            if (t0 > lo)
+                lo = t0, axis = a, side = s0; /* entered through the far-coordinate side */
+            hi = fmin(hi, t1);
+        }
+        if (lo > hi || axis < 0 || !(lo > 0.0) || lo >= tmax)
+            continue;
+        tmax = lo;
+        best = b;
+        *t = lo;
+        *face = 2 * axis + side;
+        const int a0 = axis == 0 ? 1 : 0, a1 = axis == 2 ? 1 : 2;
+        uv[0] = (org[a0] + lo * d[a0] - bx[a0]) / (bx[a0 + 3] - bx[a0]);
+        uv[1] = (org[a1] + lo * d[a1] - bx[a1]) / (bx[a1 + 3] - bx[a1]);
+    }
+    return best;
+}
 
 /* The parameter range [t0, t1] in which the ray's xy lies inside the
  * grid's rectangle [0, W-1] x [0, H-1] (grid units); 0 when it never does. */
@@ -54,7 +94,9 @@ static void shade_pixel(const view_ctx *v, int px, int py, float *rgb)
     /* The ray in grid units for xy, world for z and t. */
     const double og[2] = {org[0] / f->dx, org[1] / f->dx};
     const double dg[2] = {d[0] / f->dx, d[1] / f->dx};
-    double t0 = 1.0, t1 = 0.0, t; /* empty unless the ray crosses the rectangle */
+    double t0 = 1.0, t1 = 0.0, t, tobj = 0.0, uv[2] = {0.0, 0.0}; /* t0 > t1: no crossing */
+    int face = 0;
+    const int ob = object_hit(v->obj, org, d, INFINITY, &tobj, &face, uv);
     /* The field is a block down to its lowest height: a ray below that
      * enters it, if at all, through the bottom (rising). */
     if (grid_span(f, og, dg, &t0, &t1) && org[2] + t0 * d[2] < v->base)
@@ -66,7 +108,8 @@ static void shade_pixel(const view_ctx *v, int px, int py, float *rgb)
         const double o[3] = {fmin(fmax(og[0] + ts * dg[0], 0.0), f->width - 1.0),
                              fmin(fmax(og[1] + ts * dg[1], 0.0), f->height - 1.0),
                              org[2] + ts * d[2]};
-        if (ts <= t1 && hfs_truth_ray_first_hit(v->g, o, d, INFINITY, &t)) {
+        if (ts <= t1 && hfs_truth_ray_first_hit(v->g, o, d, INFINITY, &t) &&
+            (ob < 0 || ts + t < tobj)) {
             double lo[3];
             hfs_rgb_bilinear(v->lit, f->width, f->height, o[0] + t * dg[0], o[1] + t * dg[1],
                              lo);
@@ -74,6 +117,13 @@ static void shade_pixel(const view_ctx *v, int px, int py, float *rgb)
                 rgb[c] = (float)lo[c];
             return;
         }
+    }
+    if (ob >= 0) { /* an object in front of the terrain, or over the sky */
+        double lo[3];
+        hfs_objects_face_rgb(v->obj, ob, face, uv[0], uv[1], lo);
+        for (int c = 0; c < 3; ++c)
+            rgb[c] = (float)lo[c];
+        return;
     }
     double y[HFS_SH_N];
     hfs_sh_eval(d[0], d[1], d[2], y);
@@ -90,8 +140,8 @@ static void view_row(void *ctx, int py, int worker)
 }
 
 int hfs_truth_view(const hfs_field *f, const float *lit, const hfs_lighting *l,
-                   const hfs_camera *cam, int w, int h, float *view, int threads,
-                   hfs_error *err)
+                   const hfs_camera *cam, const hfs_object_set *obj, int w, int h, float *view,
+                   int threads, hfs_error *err)
 {
     /* The view's terrain: the same heights, zscale times the exaggeration. */
     const hfs_field fe = {f->width, f->height, f->z, f->dx, f->zscale * cam->exaggeration};
@@ -103,7 +153,7 @@ int hfs_truth_view(const hfs_field *f, const float *lit, const hfs_lighting *l,
     double lo, hi;
     hfs_field_range(&fe, &lo, &hi);
     view_ctx v = {.f = &fe, .g = &g, .lit = lit, .fr = &fr, .has_env = l->has_env, .w = w,
-                  .h = h, .view = view, .base = lo * fe.zscale};
+                  .h = h, .view = view, .base = lo * fe.zscale, .obj = obj};
     for (int c = 0; c < 3 && l->has_env; ++c)
         hfs_sh_rotate_z(l->env_sh[c], l->env_rotate, v.env[c]);
     hfs_parallel_rows(h, threads, view_row, &v, NULL, NULL);

@@ -6,19 +6,22 @@
  * bilinearly at the hit's grid position (diffuse: the radiance does not
  * depend on the view); a ray that misses the field shows the environment
  * in its direction (the SH sky, rotated as lit; black without one).
- * One sample per pixel, at its centre.
+ * Objects (obj, in the view's world: z times the exaggeration; NULL for
+ * none) are boxes in front of whatever lies behind them, shaded with their
+ * lit face grids (objects.h).  One sample per pixel, at its centre.
  */
 #ifndef HFS_TRUTH_VIEW_H
 #define HFS_TRUTH_VIEW_H
 
 #include "hfshade.h"
+#include "objects.h"
 #include "view_camera.h"
 
 /* view (w*h*3 floats, row 0 at the top) of field f lit as `lit` (its
  * W*H*3 exit radiance) under lighting l (for the background).  Returns
  * HFS_OK or HFS_E_NOMEM. */
 int hfs_truth_view(const hfs_field *f, const float *lit, const hfs_lighting *l,
-                   const hfs_camera *cam, int w, int h, float *view, int threads,
-                   hfs_error *err);
+                   const hfs_camera *cam, const hfs_object_set *obj, int w, int h, float *view,
+                   int threads, hfs_error *err);
 
 #endif /* HFS_TRUTH_VIEW_H */

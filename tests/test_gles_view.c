@@ -178,8 +178,8 @@ static void check_perspective(hfs_renderer *r, const hfs_field *f, const hfs_lig
     float *truth = malloc(sizeof(float) * VW * VH * 3), *nosky = malloc(sizeof(float) * VW * VH * 3);
     hfs_lighting dark = *l;
     dark.has_env = 0;
-    rc |= hfs_truth_view(f, lit.rgb, l, &cam, VW, VH, truth, 0, &err);
-    rc |= hfs_truth_view(f, lit.rgb, &dark, &cam, VW, VH, nosky, 0, &err);
+    rc |= hfs_truth_view(f, lit.rgb, l, &cam, NULL, VW, VH, truth, 0, &err);
+    rc |= hfs_truth_view(f, lit.rgb, &dark, &cam, NULL, VW, VH, nosky, 0, &err);
     const double m = image_max(truth, (size_t)VW * VH * 3);
     int over = 0, n_in = 0, n_hit = 0;
     double sum = 0.0;

@@ -67,7 +67,7 @@ static void test_nadir(void)
     hfs_lighting_defaults(&l);
     const hfs_camera c = {PI / 2, PI / 2, 30.0, 0.6, {9.75, 7.25, 0.0}, 1.0, 0};
     hfs_error err = {""};
-    REQUIRE(hfs_truth_view(&f, lit, &l, &c, vw, vh, view, 1, &err) == HFS_OK, "%s", err.msg);
+    REQUIRE(hfs_truth_view(&f, lit, &l, &c, NULL, vw, vh, view, 1, &err) == HFS_OK, "%s", err.msg);
     hfs_camera_frame fr;
     hfs_camera_frame_make(&c, &fr);
     double worst = 0.0;
@@ -107,7 +107,7 @@ static void test_background(void)
      * 0.05 rad): only sky. */
     const hfs_camera c = {0.0, -0.3, 100.0, 0.5, {3.5, 3.5, 50.0}, 1.0, 0};
     hfs_error err = {""};
-    REQUIRE(hfs_truth_view(&f, lit, &l, &c, vw, vh, view, 1, &err) == HFS_OK, "%s", err.msg);
+    REQUIRE(hfs_truth_view(&f, lit, &l, &c, NULL, vw, vh, view, 1, &err) == HFS_OK, "%s", err.msg);
     double worst = 0.0;
     for (int i = 0; i < vw * vh * 3; ++i)
         worst = fmax(worst, fabs(view[i] - 1.0));
@@ -129,9 +129,9 @@ static void test_exaggeration(void)
     hfs_camera c = {0.7, 0.5, 40.0, 0.7, {12, 10, 3}, 2.0, 0};
     const hfs_field f1 = {w, h, z, 1.0, 1.0}, f2 = {w, h, z, 1.0, 2.0};
     hfs_error err = {""};
-    REQUIRE(hfs_truth_view(&f1, lit, &l, &c, vw, vh, a, 1, &err) == HFS_OK, "%s", err.msg);
+    REQUIRE(hfs_truth_view(&f1, lit, &l, &c, NULL, vw, vh, a, 1, &err) == HFS_OK, "%s", err.msg);
     c.exaggeration = 1.0;
-    REQUIRE(hfs_truth_view(&f2, lit, &l, &c, vw, vh, b, 2, &err) == HFS_OK, "%s", err.msg);
+    REQUIRE(hfs_truth_view(&f2, lit, &l, &c, NULL, vw, vh, b, 2, &err) == HFS_OK, "%s", err.msg);
     CHECK(!memcmp(a, b, sizeof(float) * vw * vh * 3));
     long hits = 0;
     for (int i = 0; i < vw * vh; ++i)

@@ -395,6 +395,8 @@ static int cmd_render(const cli *c, hfs_error *err)
         cli_view v = c->v; /* --camera's azimuth as the scene reads azimuths */
         v.cam[0] = hfs_scene_spec_azimuth(&c->scene, v.cam[0]);
         view = cli_view_make(&v, &in.field);
+        view.objects = c->scene.objects; /* drawn lit in the view */
+        view.n_objects = c->scene.n_objects;
         if ((rc = hfs_image_alloc(&vimg, view.width, view.height, err)))
             goto out;
     }

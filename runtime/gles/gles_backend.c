@@ -212,8 +212,8 @@ static void report_timings(hfs_gles *g, double t_start)
 
 /* One frame, with a view from cam when cam is not NULL. */
 static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
-                        const hfs_quality *q, hfs_image *out, const hfs_camera *cam, int w,
-                        int h, float *view, hfs_error *err)
+                        const hfs_quality *q, hfs_image *out, const hfs_camera *cam,
+                        const hfs_object_set *obj, int w, int h, float *view, hfs_error *err)
 {
     const double t_start = hfs_gles_now_ms();
     int rc = hfs_gl_context_make_current(g->ctx, err);
@@ -227,7 +227,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
     static const hfs_gles_frame empty;
     hfs_gles_frame fr = empty;
     fr.f = f, fr.q = q, fr.out = out;
-    fr.cam = cam, fr.view_w = w, fr.view_h = h, fr.view_rgb = view;
+    fr.cam = cam, fr.view_w = w, fr.view_h = h, fr.view_rgb = view, fr.objects = obj;
     frame_lights(l, q, &fr);
     /* A black field still has a view (its sky): that frame runs. */
     if (!cam && ((!fr.has_env && fr.n_keys == 0 && fr.n_local == 0) || !(l->albedo > 0.0 || fr.gloss.on))) {
@@ -258,12 +258,13 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
 int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                     const hfs_quality *q, hfs_image *out, hfs_error *err)
 {
-    return render_frame(g, f, l, q, out, NULL, 0, 0, NULL, err);
+    return render_frame(g, f, l, q, out, NULL, NULL, 0, 0, NULL, err);
 }
 
 int hfs_gles_render_view(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
-                         const hfs_quality *q, const hfs_camera *cam, int w, int h,
-                         hfs_image *out, float *view, hfs_error *err)
+                         const hfs_quality *q, const hfs_camera *cam,
+                         const hfs_object_set *obj, int w, int h, hfs_image *out, float *view,
+                         hfs_error *err)
 {
-    return render_frame(g, f, l, q, out, cam, w, h, view, err);
+    return render_frame(g, f, l, q, out, cam, obj, w, h, view, err);
 }

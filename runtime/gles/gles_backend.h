@@ -86,6 +86,7 @@ struct hfs_gles_frame {
     const int *run[HFS_PASS_COUNT];       /* the plan: run[p][instance] */
     /* The 3-D view (pass_view.c): NULL cam when the frame has none. */
     const hfs_camera *cam;
+    const hfs_object_set *objects;        /* lit, in the view's world, or NULL */
     int view_w, view_h;
     float *view_rgb;                      /* view_w * view_h * 3, row 0 at the top */
 };

@@ -221,9 +221,11 @@ static int plan(hfs_gles *g, hfs_gles_frame *fr)
     const size_t n_img = (size_t)fr->L.w * fr->L.h * 3;
     const int kept = g->last_img && g->last_img_cap >= n_img;
     const int view_kept = !fr->cam || hfs_gles_view_copy_kept(g, fr);
-    if (hfs_gles_plan_frame(&g->plan, &sig, terrain_why) == 0 && kept && view_kept)
+    if (hfs_gles_plan_frame(&g->plan, &sig, terrain_why) == 0 && kept && view_kept &&
+        !fr->objects)
         return 0;
-    if (!view_kept) /* e.g. the first view after a failed one */
+    /* The first view after a failed one; or objects, lit anew each frame. */
+    if (!view_kept || fr->objects)
         g->plan.run[HFS_PASS_VIEW][0] = 1;
     /* The readback needs this frame's output scale, and a shaded frame is
      * read back: the two go together (as does a frame without a kept

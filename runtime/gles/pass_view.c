@@ -147,14 +147,20 @@ static double wall_bottom(const hfs_gles_frame *fr, const hfs_camera_frame *cf)
 }
 
 /* Near and far planes around the field's box (exaggerated heights, down
- * to the walls' bottom) as seen along the camera's forward axis. */
+ * to the walls' bottom) and the objects' as seen along the camera's
+ * forward axis. */
 static void depth_range(const hfs_gles_frame *fr, const hfs_camera_frame *cf, double *n,
                         double *f)
 {
     const hfs_gles_layout *L = &fr->L;
     const double zs = L->zscale * fr->cam->exaggeration;
-    const double box[2][3] = {{0.0, 0.0, wall_bottom(fr, cf)},
-                              {(L->w - 1) * L->dx, (L->h - 1) * L->dx, zs * (L->base + L->hscale)}};
+    double box[2][3] = {{0.0, 0.0, wall_bottom(fr, cf)},
+                        {(L->w - 1) * L->dx, (L->h - 1) * L->dx, zs * (L->base + L->hscale)}};
+    for (int b = 0; fr->objects && b < fr->objects->n; ++b) /* and the objects' boxes */
+        for (int k = 0; k < 3; ++k) {
+            box[0][k] = fmin(box[0][k], fr->objects->box[b][k]);
+            box[1][k] = fmax(box[1][k], fr->objects->box[b][k + 3]);
+        }
     double lo = INFINITY, hi = -INFINITY;
     for (int c = 0; c < 8; ++c) {
         double d = 0.0;
@@ -242,8 +248,82 @@ static double fill_block(const hfs_gles *g, const hfs_gles_frame *fr, hfs_gles_v
     return scale;
 }
 
-/* Sky, then the mesh, into the (multisampled) target; resolved. */
-static int draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
+/* The objects' lit faces (objects.h; bottoms left out) as triangles:
+ * per vertex its position relative to the eye and its radiance times the
+ * view's scale, 6 floats.  Returns the vertex count, 0 without objects,
+ * -1 out of memory. */
+static int object_triangles(const hfs_gles_frame *fr, double scale, const double eye[3],
+                            float **out)
+{
+    const hfs_object_set *s = fr->objects;
+    *out = NULL;
+    if (!s || s->n == 0)
+        return 0;
+    static const int faces[5] = {0, 1, 2, 3, 5};
+    static const int corner[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
+    const int g = HFS_OBJ_GRID, per_box = 5 * g * g * 6;
+    float *v = malloc((size_t)s->n * (size_t)per_box * 6 * sizeof *v), *w = v;
+    if (!v)
+        return -1;
+    for (int b = 0; b < s->n; ++b)
+        for (int fi = 0; fi < 5; ++fi)
+            for (int q = 0; q < g * g; ++q)
+                for (int k = 0; k < 6; ++k) {
+                    const int vi = (q / g + corner[k][1]) * (g + 1) + q % g + corner[k][0];
+                    double p[3];
+                    hfs_objects_vertex(s, b, faces[fi], vi, p);
+                    const float *rgb = s->rgb + 3 * (((size_t)b * 6 + (size_t)faces[fi]) *
+                                                         HFS_OBJ_VERTS + (size_t)vi);
+                    for (int c = 0; c < 3; ++c) {
+                        w[c] = (float)(p[c] - eye[c]);
+                        w[3 + c] = (float)(rgb[c] * scale);
+                    }
+                    w += 6;
+                }
+    *out = v;
+    return s->n * per_box;
+}
+
+/* Draws the objects into the bound target, depth-tested with the mesh. */
+static int draw_objects(hfs_gles *g, const hfs_gles_frame *fr, double scale, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    hfs_camera_frame cf;
+    hfs_camera_frame_make(fr->cam, &cf);
+    float *tri;
+    const int n = object_triangles(fr, scale, cf.eye, &tri);
+    if (n <= 0)
+        return n < 0 ? hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the "
+                                "objects") : HFS_OK;
+    const hfs_gles_variant var = {0};
+    const hfs_gles_program *prog;
+    int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_VIEW_OBJECTS, &var, &prog, err);
+    if (rc) {
+        free(tri);
+        return rc;
+    }
+    GLuint vbo = 0;
+    gl->GenBuffers(1, &vbo);
+    gl->BindBuffer(GL_ARRAY_BUFFER, vbo);
+    gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)n * 6 * sizeof *tri), tri,
+                   GL_STREAM_DRAW);
+    free(tri);
+    gl->EnableVertexAttribArray(0);
+    gl->EnableVertexAttribArray(1);
+    gl->VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (const void *)0);
+    gl->VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+                            (const void *)(3 * sizeof(float)));
+    gl->DrawArrays(GL_TRIANGLES, 0, n);
+    gl->DisableVertexAttribArray(0);
+    gl->DisableVertexAttribArray(1);
+    gl->BindBuffer(GL_ARRAY_BUFFER, 0);
+    gl->DeleteBuffers(1, &vbo);
+    return hfs_gl_check(gl, "backend gles: view objects", err);
+}
+
+/* Sky, then the mesh and the objects, into the (multisampled) target;
+ * resolved. */
+static int draw(hfs_gles *g, const hfs_gles_frame *fr, double scale, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const hfs_gles_view_state *v = g->view;
@@ -270,6 +350,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     gl->DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * fr->L.w, fr->L.h - 1);
     hfs_gles_set_i1(gl, prog, "u_skirt", 1); /* the four walls, an instance each */
     gl->DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * (fr->L.w > fr->L.h ? fr->L.w : fr->L.h), 4);
+    if ((rc = draw_objects(g, fr, scale, err)))
+        return rc;
     gl->Disable(GL_DEPTH_TEST);
     gl->UseProgram(0);
     if (v->samples > 1) {
@@ -338,7 +420,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     hfs_gles_view_block b;
     const double scale = fill_block(g, fr, &b);
     hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_VIEW], &b, sizeof b);
-    if ((rc = draw(g, fr, err)))
+    if ((rc = draw(g, fr, scale, err)))
         return rc;
     hfs_gles_stage_end(g, HFS_PASS_VIEW, 0);
     hfs_gles_stage_begin(g, HFS_PASS_VIEW, 1);

@@ -76,9 +76,18 @@ static int parse_reals(hfs_scene_key_id id, const char *v, double *out, int *n,
 {
     const hfs_scene_key *k = hfs_scene_key_get(id);
     *n = id == HFS_SK_KEY && count_commas(v) == KEY_RGB_N - 1 ? KEY_RGB_N : k->n;
+    if (k->colour && count_commas(v) == k->n + 2)
+        *n = k->n + 3; /* an object's R,G,B albedo follows */
     int rc = parse_doubles(v, out, *n, where, k->name, err);
-    for (int i = 0; i < *n && !rc; ++i)
+    for (int i = 0; i < *n && !rc; ++i) {
+        if (k->colour && i >= k->n) {
+            if (!(out[i] >= 0.0 && out[i] <= 1.0))
+                rc = hfs_fail(err, HFS_E_INVALID, "%s: %s: albedo %g is out of range [0, 1]",
+                              where, k->name, out[i]);
+            continue;
+        }
         rc = hfs_scene_key_check(id, i < k->n ? i : k->n - 1, out[i], where, err);
+    }
     return rc;
 }
 
@@ -222,6 +231,32 @@ static int add_light(int src, int *from_flags, int *n, int max, const char *wher
     return HFS_OK;
 }
 
+/* An object from a pin, box or point key's numbers (hfs_object). */
+static int add_object(hfs_scene *s, hfs_scene_key_id id, const double *d, int n,
+                      const char *where, hfs_error *err)
+{
+    const hfs_scene_key *k = hfs_scene_key_get(id);
+    if (s->n_objects >= HFS_MAX_OBJECTS)
+        return hfs_fail(err, HFS_E_INVALID, "%s: %s: more than %d objects", where, k->name,
+                        HFS_MAX_OBJECTS);
+    hfs_object *o = &s->objects[s->n_objects++];
+    memset(o, 0, sizeof *o);
+    o->x = d[0], o->y = d[1];
+    if (id == HFS_SK_PIN) {
+        o->kind = HFS_OBJECT_PIN;
+        o->size[2] = d[2], o->size[0] = d[3];
+    } else if (id == HFS_SK_BOX) {
+        o->kind = HFS_OBJECT_BOX;
+        o->z = d[2], o->size[0] = d[3], o->size[1] = d[4], o->size[2] = d[5];
+    } else {
+        o->kind = HFS_OBJECT_POINT;
+        o->z = d[2], o->size[0] = d[3];
+    }
+    for (int c = 0; c < 3; ++c)
+        o->albedo[c] = (float)(n > k->n ? d[k->n + c] : 0.8);
+    return HFS_OK;
+}
+
 /* Numbers d (n of them), already checked, of a REALS key. */
 static int store_reals(hfs_scene *s, hfs_scene_source src, hfs_scene_key_id id, const double *d,
                        int n, const char *where, hfs_error *err)
@@ -261,6 +296,11 @@ static int store_reals(hfs_scene *s, hfs_scene_source src, hfs_scene_key_id id, 
                 s->key[s->n_key].tint[c] = d[3 + c] / m;
         }
         s->n_key++;
+        break;
+    case HFS_SK_PIN:
+    case HFS_SK_BOX:
+    case HFS_SK_POINT:
+        rc = add_object(s, id, d, n, where, err);
         break;
     case HFS_SK_LOCAL:
         if ((rc = add_light(src, &s->local_from_flags, &s->n_local, HFS_MAX_LOCAL_LIGHTS, where,
@@ -329,6 +369,11 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
     int rc, n = 0;
     switch (k->form) {
     case HFS_FORM_PATH:
+        if (id == HFS_SK_OBJECTS) {
+            char path[HFS_PATH_MAX];
+            rc = set_path(path, value, base_dir, where, key, err);
+            return rc ? rc : hfs_scene_load_objects(s, path, err);
+        }
         return set_path(id == HFS_SK_HEIGHT ? s->height
                         : id == HFS_SK_ENV_MAP ? s->env_map
                                                : s->albedo_map,

@@ -72,6 +72,10 @@ typedef struct hfs_scene {
     struct { double phi, elev, alpha, le, tint[3]; } key[HFS_MAX_KEY_LIGHTS];
     int n_local;
     struct { double x, y, z, r, le; } local[HFS_MAX_LOCAL_LIGHTS];
+    /* Objects (pin, box, point keys and objects files, in order), world
+     * units; drawn in the 3-D view (hfs_view objects). */
+    int n_objects;
+    hfs_object objects[HFS_MAX_OBJECTS];
 
     double albedo;                   /* 0 = not given (default 1)           */
     int albedo_given;
@@ -105,6 +109,9 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
 
 /* Reads a scene file (INI).  Errors name the file and line. */
 int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err);
+/* Reads an objects file (scene key objects): pin, box and point lines in
+ * the scene file's syntax, appended to s->objects. */
+int hfs_scene_load_objects(hfs_scene *s, const char *path, hfs_error *err);
 
 /* True if key (without "--") is a scene key. */
 int hfs_scene_is_key(const char *key);

@@ -9,6 +9,7 @@
  */
 #include "file_input.h"
 #include "scene.h"
+#include "scene_keys.h"
 
 #include <ini.h>
 #include <stdio.h>
@@ -23,6 +24,7 @@ typedef struct ini_ctx {
     hfs_scene *scene;
     const char *path;
     const char *base_dir;
+    int objects_only;             /* an objects file: pin, box, point only */
     int failed;
     hfs_error first;
 } ini_ctx;
@@ -37,6 +39,13 @@ static int on_key(void *user, const char *section, const char *name, const char 
         hfs_fail(&c->first, HFS_E_INVALID, "%s: sections are not used ([%s])", c->path, section);
         return 0;
     }
+    const int k = hfs_scene_key_find(name);
+    if (c->objects_only && k != HFS_SK_PIN && k != HFS_SK_BOX && k != HFS_SK_POINT) {
+        c->failed = 1;
+        hfs_fail(&c->first, HFS_E_INVALID, "%s: '%s' is not an object (pin, box or point)",
+                 c->path, name);
+        return 0;
+    }
     if (hfs_scene_set(c->scene, HFS_SOURCE_FILE, name, value, c->path, c->base_dir, &c->first)) {
         c->failed = 1;
         return 0;
@@ -44,10 +53,11 @@ static int on_key(void *user, const char *section, const char *name, const char 
     return 1;
 }
 
-int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err)
+static int load_ini(hfs_scene *s, const char *path, int objects_only, hfs_error *err)
 {
     char *text;
-    int rc = hfs_read_text_file(path, "scene file", SCENE_FILE_MAX, &text, NULL, err);
+    int rc = hfs_read_text_file(path, objects_only ? "objects file" : "scene file",
+                                SCENE_FILE_MAX, &text, NULL, err);
     if (rc)
         return rc;
     int line = 1;
@@ -73,7 +83,7 @@ int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err)
     else
         snprintf(base_dir, sizeof base_dir, ".");
 
-    ini_ctx c = {.scene = s, .path = path, .base_dir = base_dir};
+    ini_ctx c = {.scene = s, .path = path, .base_dir = base_dir, .objects_only = objects_only};
     const int bad_line = ini_parse_string(text, on_key, &c);
     free(text);
     if (bad_line == 0)
@@ -88,4 +98,14 @@ int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err)
     if (strncmp(rest, path, plen) == 0 && rest[plen] == ':')
         rest += plen + 1;
     return hfs_fail(err, HFS_E_INVALID, "%s:%d:%s", path, bad_line, rest);
+}
+
+int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err)
+{
+    return load_ini(s, path, 0, err);
+}
+
+int hfs_scene_load_objects(hfs_scene *s, const char *path, hfs_error *err)
+{
+    return load_ini(s, path, 1, err);
 }
