@@ -173,8 +173,8 @@ static int env_make(env_ctx *e, const hfs_lighting *l, const hfs_quality *q, hfs
     e->on = hfs_env_contributes(l);
     if (!e->on)
         return HFS_OK;
-    hfs_swath sw;
-    hfs_swath_full(q->nphi_env, &sw);
+    hfs_swath sw; /* few points: more slices than the terrain's, cheaply */
+    hfs_swath_full(q->nphi_env > HFS_OBJ_SLICES ? q->nphi_env : HFS_OBJ_SLICES, &sw);
     int rc = hfs_slice_table_init(&e->t, &sw, err);
     if (!rc && l->env_shade_map && l->env_open)
         rc = hfs_map_slices_build(&e->ms, l->env_shade_map, l->env_map_width, l->env_map_height,

@@ -12,7 +12,9 @@
  *                from the vertex (a march over the bilinear surface at one
  *                texel steps, to the field's edge), then the exact slice
  *                integral of the clamped cosine about the face's normal
- *                above those horizons against the environment (slice_light.h;
+ *                above those horizons (at least HFS_OBJ_SLICES azimuths:
+ *                a side face's ground fills half its hemisphere) against
+ *                the environment (slice_light.h;
  *                with env-shade = map the map's own open sky and slices:
  *                env_open.h, env_map_slices.h).  The approximation is the
  *                seeds': one horizon stands for its slice's wedge;
@@ -31,6 +33,7 @@
 #include "hfshade.h"
 
 #define HFS_OBJ_GRID 4                                  /* quads per face side */
+#define HFS_OBJ_SLICES 48   /* environment slices at least (nphi_env if more) */
 #define HFS_OBJ_VERTS ((HFS_OBJ_GRID + 1) * (HFS_OBJ_GRID + 1)) /* per face */
 #define HFS_OBJ_FACE_VALUES (6 * HFS_OBJ_VERTS * 3)     /* RGB per box */
 

@@ -45,6 +45,14 @@ expect_fail bad-key "--key" $R --height "$tmp/flat.pfm" --key 10,100,2,1
 expect_fail bad-env-sh "--env-sh" $R --height "$tmp/flat.pfm" --env-sh 1,2
 expect_fail nan-albedo "--albedo" $R --height "$tmp/flat.pfm" --albedo nan
 expect_fail missing-env-map "nope.exr" $R --height "$tmp/flat.pfm" --env-map "$tmp/nope.exr"
+# Objects (issue 19): counts, ranges, the objects file, the footprint.
+expect_fail pin-count "--pin" $R --height "$tmp/flat.pfm" --env-sh $sky --pin 1,2,3
+expect_fail pin-width "pin: width 0" $R --height "$tmp/flat.pfm" --env-sh $sky --pin 1,2,3,0
+expect_fail box-albedo "albedo 1.5" $R --height "$tmp/flat.pfm" --env-sh $sky --box 1,2,0,1,1,1,1.5,0,0
+expect_fail objects-missing "nope.txt" $R --height "$tmp/flat.pfm" --env-sh $sky --objects "$tmp/nope.txt"
+printf 'pin = 1,2,3,1\nkey = 1,2,3,4\n' >"$tmp/objs.txt"
+expect_fail objects-not-object "objs.txt:2: 'key' is not an object" $R --height "$tmp/flat.pfm" --env-sh $sky --objects "$tmp/objs.txt"
+expect_fail object-off-field "object 1 (pin): (400, 2) is off" $R --height "$tmp/flat.pfm" --env-sh $sky --pin 400,2,3,1 --view ortho
 "$HFGEN" flat --size 4x4 -o "$tmp/alb4.pfm" || { echo "FAIL: hfgen"; exit 1; }
 "$HFGEN" cones --size 16x12 -o "$tmp/cones.pfm" || { echo "FAIL: hfgen"; exit 1; }
 expect_fail albedo-map-size "albedo map is 4x4, the heights are 16x12" $R --height "$tmp/flat.pfm" --env-sh $sky --albedo-map "$tmp/alb4.pfm"

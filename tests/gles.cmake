@@ -185,6 +185,15 @@ add_test(NAME test_env_shade COMMAND test_env_shade gles)
 set_tests_properties(test_env_shade PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
 set(hfs_gles_tests ${hfs_gles_tests} test_env_shade)
 
+# Objects above the field (issue 19): lit against closed forms on the CPU,
+# a pin in a wall's shadow, refused inputs, the GLES view against the
+# CPU's ray-cast one (test_objects.c).
+add_executable(test_objects ${CMAKE_CURRENT_LIST_DIR}/test_objects.c)
+target_link_libraries(test_objects PRIVATE hfshade_lib hfs_glctx m)
+add_test(NAME test_objects COMMAND test_objects gles)
+set_tests_properties(test_objects PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
+set(hfs_gles_tests ${hfs_gles_tests} test_objects)
+
 # Indirect bounces on GLES (issue 16): equal to the CPU reference at
 # subsample 1 (1 and 2 bounces; capped, uncapped, albedo map), the white
 # furnace at the defaults, the planner (test_gles_bounce.c); fp16, fp32
