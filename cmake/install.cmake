@@ -39,7 +39,7 @@ install(TARGETS hfshade hfgen hfbench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR
 install(TARGETS hfshade-kiosk hfs-capture-info hfs-capture-synth
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT kiosk)
 install(FILES ${PROJECT_SOURCE_DIR}/data/jacksboro.png ${PROJECT_SOURCE_DIR}/data/courtyard.exr
-              ${PROJECT_SOURCE_DIR}/data/demo.ini
+              ${PROJECT_SOURCE_DIR}/data/demo.ini ${PROJECT_SOURCE_DIR}/data/demo-objects.txt
         DESTINATION ${CMAKE_INSTALL_DATADIR}/hfshade COMPONENT kiosk)
 install(FILES ${PROJECT_SOURCE_DIR}/board/KIOSK.md ${PROJECT_SOURCE_DIR}/docs/INPUT.md
         DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/hfshade-kiosk COMPONENT kiosk)

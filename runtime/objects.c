@@ -12,6 +12,7 @@
 #include "field_geom.h"
 #include "key_setup.h"
 #include "lights.h"
+#include "parallel.h"
 #include "sh.h"
 #include "slice_light.h"
 
@@ -189,18 +190,20 @@ static int env_make(env_ctx *e, const hfs_lighting *l, const hfs_quality *q, hfs
 }
 
 /* The highest elevation of the terrain seen from p (world) toward the
- * slice direction (c, s): half-texel steps near, texel steps beyond 16,
- * to the grid's edge; -pi/2 when nothing is there. */
+ * slice direction (c, s), to the grid's edge; -pi/2 when nothing is there.
+ * Half-texel steps to 16 texels, then steps of t / 32 (3% of the
+ * distance, as the pyramid's octaves coarsen with distance); the highest
+ * slope, one atan at the end. */
 static double march_horizon(const hfs_field *f, const double p[3], double c, double s)
 {
     const double gx = p[0] / f->dx, gy = p[1] / f->dx;
-    double best = -0.5 * PI, z;
-    for (double t = 0.5;; t += t < 16.0 ? 0.5 : 1.0) {
+    double best = -INFINITY, z;
+    for (double t = 0.5;; t += t < 16.0 ? 0.5 : t / 32.0) {
         if (!hfs_field_bilinear(f, gx + t * c, gy + t * s, &z))
             break;
-        best = fmax(best, atan2(z - p[2], t * f->dx));
+        best = fmax(best, (z - p[2]) / (t * f->dx));
     }
-    return best;
+    return best > -INFINITY ? atan(best) : -0.5 * PI;
 }
 
 /* The environment's irradiance at p for normal n (before albedo / pi). */
@@ -255,6 +258,40 @@ static void lights_irradiance(const hfs_lighting *l, const double p[3], const do
     }
 }
 
+typedef struct light_job {
+    hfs_object_set *s;
+    const hfs_field *f;
+    const hfs_lighting *l;
+    const env_ctx *e;
+    const float *key_vis;
+} light_job;
+
+/* Object b's faces (a row of hfs_parallel_rows: objects are independent). */
+static void light_object(void *ctx, int b, int worker)
+{
+    (void)worker;
+    const light_job *j = ctx;
+    hfs_object_set *s = j->s;
+    for (int face = 0; face < 6; ++face) {
+        if (face == 4)
+            continue; /* the bottom: not lit, not drawn */
+        double n[3];
+        face_normal(face, n);
+        for (int v = 0; v < HFS_OBJ_VERTS; ++v) {
+            const size_t at = ((size_t)b * 6 + (size_t)face) * HFS_OBJ_VERTS + (size_t)v;
+            double p[3], irr[3] = {0.0, 0.0, 0.0};
+            hfs_objects_vertex(s, b, face, v, p);
+            for (int k = 0; k < 3; ++k)
+                p[k] += 1e-3 * j->f->dx * n[k];
+            if (j->e->on)
+                env_irradiance(j->e, j->f, p, n, irr);
+            lights_irradiance(j->l, p, n, j->key_vis + at * (size_t)j->l->n_key, irr);
+            for (int c = 0; c < 3; ++c)
+                s->rgb[3 * at + (size_t)c] = (float)(s->albedo[b][c] * irr[c] / PI);
+        }
+    }
+}
+
 int hfs_objects_light(hfs_object_set *s, const hfs_field *f, const hfs_lighting *l,
                       const hfs_quality *q, const float *key_vis, hfs_error *err)
 {
@@ -262,25 +299,8 @@ int hfs_objects_light(hfs_object_set *s, const hfs_field *f, const hfs_lighting 
     int rc = env_make(&e, l, q, err);
     if (rc)
         return rc;
-    for (int b = 0; b < s->n; ++b)
-        for (int face = 0; face < 6; ++face) {
-            if (face == 4)
-                continue; /* the bottom: not lit, not drawn */
-            double n[3];
-            face_normal(face, n);
-            for (int v = 0; v < HFS_OBJ_VERTS; ++v) {
-                const size_t at = ((size_t)b * 6 + (size_t)face) * HFS_OBJ_VERTS + (size_t)v;
-                double p[3], irr[3] = {0.0, 0.0, 0.0};
-                hfs_objects_vertex(s, b, face, v, p);
-                for (int k = 0; k < 3; ++k)
-                    p[k] += 1e-3 * f->dx * n[k];
-                if (e.on)
-                    env_irradiance(&e, f, p, n, irr);
-                lights_irradiance(l, p, n, key_vis + at * (size_t)l->n_key, irr);
-                for (int c = 0; c < 3; ++c)
-                    s->rgb[3 * at + (size_t)c] = (float)(s->albedo[b][c] * irr[c] / PI);
-            }
-        }
+    light_job j = {.s = s, .f = f, .l = l, .e = &e, .key_vis = key_vis};
+    hfs_parallel_rows(s->n, q->threads, light_object, &j, NULL, NULL);
     env_free(&e);
     return HFS_OK;
 }

@@ -348,9 +348,9 @@ int hfs_render_unshadowed(const hfs_field *f, const hfs_lighting *l, const hfs_q
     return check_output(out, "unshadowed", err);
 }
 
-/* The view's objects lit (objects.h): key lights through this backend's
- * point query, then their boxes moved into the view's world (z times the
- * exaggeration, as the terrain's). */
+/* The view's objects lit (objects.h): key lights through shadow height
+ * maps (exact rays on the truth), then their boxes moved into the view's
+ * world (z times the exaggeration, as the terrain's). */
 static int light_objects(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
                          const hfs_quality *q, const hfs_view *v, hfs_object_set *s,
                          hfs_error *err)
@@ -365,7 +365,12 @@ static int light_objects(hfs_renderer *r, const hfs_field *f, const hfs_lighting
         rc = hfs_fail(err, HFS_E_NOMEM, "objects: out of memory");
     if (!rc && l->n_key > 0) {
         hfs_objects_query_points(s, f, xyz);
-        rc = r->ops->query_points(r->state, f, l, q, xyz, (int)n, vis, err);
+        /* The truth's exact rays; else the shadow height maps built on the
+         * CPU, O(W H) a layer: for a few thousand vertices cheaper than
+         * the GPU's passes and their read-back (the same maps to fp16's
+         * hi + lo: BENCHMARKS.md "Shadow height maps"). */
+        rc = !strcmp(r->ops->name, "truth") ? r->ops->query_points(r->state, f, l, q, xyz, (int)n, vis, err)
+                                            : hfs_cpu_query_points(f, l, q, xyz, (int)n, vis, err);
     }
     if (!rc)
         rc = hfs_objects_light(s, f, l, q, vis, err);
@@ -441,7 +446,7 @@ int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *f, const hfs_ligh
         glossy_viewer(&cam, &seen);
     const double t0 = wall_ms();
     hfs_object_set obj = {0};
-    if (v->n_objects > 0 || v->objects)
+    if (v->n_objects != 0)
         rc = light_objects(r, f, l, q, v, &obj, err);
     if (!rc)
         rc = render_view(r, f, &seen, q, &cam, v, obj.n > 0 ? &obj : NULL, lit ? lit : &own, out,

@@ -52,7 +52,8 @@ expect_files libhfshade-dev /usr/include/hfshade/hfshade.h /usr/include/hfshade/
 expect_files hfshade-tools /usr/bin/hfshade /usr/bin/hfgen /usr/bin/hfbench
 expect_files hfshade-kiosk /usr/bin/hfshade-kiosk /usr/bin/hfs-capture-info /usr/bin/hfs-capture-synth \
     /etc/hfshade/kiosk.ini /etc/hfshade/demo.ini /lib/systemd/system/hfshade-kiosk.service \
-    /usr/share/hfshade/demo.ini /usr/share/hfshade/jacksboro.png /usr/share/hfshade/courtyard.exr \
+    /usr/share/hfshade/demo.ini /usr/share/hfshade/demo-objects.txt \
+    /usr/share/hfshade/jacksboro.png /usr/share/hfshade/courtyard.exr \
     /usr/share/doc/hfshade-kiosk/KIOSK.md /usr/share/doc/hfshade-kiosk/INPUT.md
 dups=$(for n in $names; do files "$n"; done | sort | uniq -d)
 [ -z "$dups" ] || bad "files in two packages: $dups"
