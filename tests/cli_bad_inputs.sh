@@ -52,6 +52,7 @@ expect_fail box-albedo "albedo 1.5" $R --height "$tmp/flat.pfm" --env-sh $sky --
 expect_fail objects-missing "nope.txt" $R --height "$tmp/flat.pfm" --env-sh $sky --objects "$tmp/nope.txt"
 printf 'pin = 1,2,3,1\nkey = 1,2,3,4\n' >"$tmp/objs.txt"
 expect_fail objects-not-object "objs.txt:2: 'key' is not an object" $R --height "$tmp/flat.pfm" --env-sh $sky --objects "$tmp/objs.txt"
+expect_fail geotiff-view "--geotiff: a 3-D view has no georeferencing" $R --height "$tmp/flat.pfm" --env-sh $sky --view ortho --geotiff "$tmp/out.tif"
 expect_fail object-off-field "object 1 (pin): (400, 2) is off" $R --height "$tmp/flat.pfm" --env-sh $sky --pin 400,2,3,1 --view ortho
 "$HFGEN" flat --size 4x4 -o "$tmp/alb4.pfm" || { echo "FAIL: hfgen"; exit 1; }
 "$HFGEN" cones --size 16x12 -o "$tmp/cones.pfm" || { echo "FAIL: hfgen"; exit 1; }

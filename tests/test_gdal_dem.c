@@ -15,6 +15,7 @@
  *   refused    a rotated geotransform: one line; a text file: the usual
  *              "unrecognised format" error (GDAL cannot open it either)
  */
+#include "geotiff_write.h"
 #include "height_gdal.h"
 #include "test_util.h"
 
@@ -75,6 +76,40 @@ static float *ramp(int w, int h)
     return z;
 }
 
+/* A lit image of hm's grid written as a GeoTIFF (geotiff_write.h) and read
+ * back with GDAL: its bands, geotransform and CRS. */
+static void test_write(const hfs_heightmap *hm)
+{
+    const int w = hm->width, h = hm->height;
+    hfs_image img = {.width = w, .height = h, .rgb = malloc(sizeof(float) * 3 * w * h)};
+    for (int p = 0; p < w * h * 3; ++p)
+        img.rgb[p] = 0.25f * (float)p;
+    hfs_error err = {""};
+    REQUIRE(hfs_gdal_write_geotiff(NULL, path_of("lit.tif"), &img, hm, &err) == HFS_OK, "%s",
+            err.msg);
+    GDALDatasetH ds = GDALOpen(path_of("lit.tif"), GA_ReadOnly);
+    REQUIRE(ds != NULL, "lit.tif does not open");
+    double gt[6];
+    int same = GDALGetRasterCount(ds) == 3 && GDALGetRasterXSize(ds) == w &&
+               GDALGetRasterYSize(ds) == h && GDALGetGeoTransform(ds, gt) == CE_None &&
+               !memcmp(gt, hm->geotransform, sizeof gt);
+    OGRSpatialReferenceH a = OSRNewSpatialReference(hm->crs_wkt);
+    OGRSpatialReferenceH b = OSRNewSpatialReference(GDALGetProjectionRef(ds));
+    same = same && a && b && OSRIsSame(a, b);
+    OSRDestroySpatialReference(a), OSRDestroySpatialReference(b);
+    float *band = malloc(sizeof(float) * w * h);
+    for (int c = 0; c < 3 && same; ++c) {
+        same = GDALRasterIO(GDALGetRasterBand(ds, c + 1), GF_Read, 0, 0, w, h, band, w, h,
+                            GDT_Float32, 0, 0) == CE_None;
+        for (int p = 0; p < w * h && same; ++p)
+            same = band[p] == img.rgb[3 * p + c];
+    }
+    CHECK(same);
+    printf("write: a %dx%d lit GeoTIFF with the heights' geotransform and CRS\n", w, h);
+    GDALClose(ds);
+    free(band), free(img.rgb);
+}
+
 static void test_utm(void)
 {
     const int w = 20, h = 12;
@@ -90,6 +125,8 @@ static void test_utm(void)
         same = p == 5 * w + 6 || hm.z[p] == z[p];
     CHECK(same && hm.holes == 1 && fabs(hm.cellsize - 30.0) < 1e-12 && !hm.note[0] &&
           hm.format == HFS_HEIGHT_EXTERNAL && isfinite(hm.z[5 * w + 6]));
+    CHECK(hm.has_georef && !memcmp(hm.geotransform, gt, sizeof gt) && strstr(hm.crs_wkt, "UTM"));
+    test_write(&hm);
     printf("utm: %dx%d, cell %g m, %ld hole filled (%g)\n", hm.width, hm.height, hm.cellsize,
            hm.holes, hm.z[5 * w + 6]);
     hfs_heightmap_free(&hm);
@@ -133,6 +170,10 @@ static void test_geo_and_south(void)
     const int want_h = (int)lround((h - 1) * cy / cell) + 1;
     CHECK(fabs(hm.cellsize / cell - 1.0) < 1e-9 && hm.width == w && hm.height == want_h &&
           strstr(hm.note, "resampled") && hm.holes == 1);
+    /* Its georeferencing: rows closer, node 0's centre where it was. */
+    const double *g = hm.geotransform;
+    CHECK(hm.has_georef && g[1] == d && fabs(g[5] / (-d * (h - 1.0) / (want_h - 1.0)) - 1.0) < 1e-12 &&
+          fabs(g[3] + 0.5 * g[5] - (top - 0.5 * d)) < 1e-12 && fabs(g[0] - gt[0]) < 1e-12);
     /* Resampled rows: the ramp (7 a row) at each new row's position. */
     double worst = 0.0;
     for (int j = 0; j < hm.height; ++j)
@@ -149,7 +190,8 @@ static void test_geo_and_south(void)
     write_raster("GTiff", "south.tif", w, h, flipped, gs, 32617, 0, 0.0, GDT_Float32);
     REQUIRE(hfs_height_load(path_of("south.tif"), NULL, &hm, &err) == HFS_OK, "%s", err.msg);
     CHECK(!memcmp(hm.z, z, sizeof(float) * w * h));
-    printf("south-up: flipped to north-up\n");
+    CHECK(hm.geotransform[3] == 4000000.0 + 10.0 * h && hm.geotransform[5] == -10.0);
+    printf("south-up: flipped to north-up, its geotransform too\n");
     hfs_heightmap_free(&hm);
     free(flipped), free(z);
 }

@@ -22,6 +22,7 @@
 #include "cli_query.h"
 #include "cli_view.h"
 #ifdef HFS_HAVE_GDAL
+#include "geotiff_write.h"
 #include "height_gdal.h"
 #endif
 #include "cli_envmap.h"
@@ -41,6 +42,7 @@ typedef struct cli {
     const char *scene_file;
     const char *out_png;
     const char *out_pfm;
+    const char *out_tif;     /* --geotiff: the lit radiance, georeferenced */
     const char *points;   /* query: --points FILE */
     const char *positional[2];
     int n_positional;
@@ -56,7 +58,8 @@ typedef struct cli {
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: hfshade render  [SCENE.ini] [--KEY VALUE ...] -o OUT.png [--pfm OUT.pfm]\n"
+            "usage: hfshade render  [SCENE.ini] [--KEY VALUE ...] -o OUT.png [--pfm OUT.pfm] "
+            "[--geotiff OUT.tif]\n"
             "       hfshade compare [SCENE.ini] [--KEY VALUE ...] RESULT.pfm REFERENCE.pfm\n"
             "       hfshade query   [SCENE.ini] [--KEY VALUE ...] --points FILE  (x y z a line;\n"
             "                       prints each point's visible fraction of every key light)\n"
@@ -213,6 +216,8 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
             c->out_png = v;
         } else if (!strcmp(name, "pfm")) {
             c->out_pfm = v;
+        } else if (!strcmp(name, "geotiff")) {
+            c->out_tif = v;
         } else if (!strcmp(name, "points")) {
             c->points = v;
         } else if (!strcmp(name, "time")) {
@@ -359,6 +364,8 @@ static int plan_outputs(const cli *c, hfs_outputs **o, hfs_error *err)
         rc = hfs_outputs_input(*o, c->scene.albedo_map, err);
     if (!rc && c->out_pfm)
         rc = hfs_outputs_add(*o, c->out_pfm, err);
+    if (!rc && c->out_tif)
+        rc = hfs_outputs_add(*o, c->out_tif, err);
     if (!rc && c->out_png)
         rc = hfs_outputs_add(*o, c->out_png, err);
     return rc;
@@ -372,7 +379,14 @@ static int cmd_render(const cli *c, hfs_error *err)
     if (c->v.view && c->colormap)
         return hfs_fail(err, HFS_E_INVALID, "--colormap: colours the grid, not the 3-D view "
                         "(--view)");
-    if (!c->out_png && !c->out_pfm && !c->check)
+#ifndef HFS_HAVE_GDAL
+    if (c->out_tif)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "--geotiff: this hfshade was built without GDAL");
+#endif
+    if (c->out_tif && c->v.view)
+        return hfs_fail(err, HFS_E_INVALID, "--geotiff: a 3-D view has no georeferencing (the "
+                        "lit grid has: drop --view)");
+    if (!c->out_png && !c->out_pfm && !c->out_tif && !c->check)
         return hfs_fail(err, HFS_E_INVALID, "render: no output (give -o OUT.png and/or --pfm OUT.pfm)");
     if (c->n_positional)
         return hfs_fail(err, HFS_E_INVALID, "%s: unexpected argument", c->positional[0]);
@@ -423,6 +437,10 @@ static int cmd_render(const cli *c, hfs_error *err)
      * a failure leaves neither, and removes nothing that was there. */
     if (c->out_pfm && (rc = hfs_pfm_write_to(outs, c->out_pfm, shown, 0, err)))
         goto out;
+#ifdef HFS_HAVE_GDAL
+    if (c->out_tif && (rc = hfs_gdal_write_geotiff(outs, c->out_tif, shown, &in.hm, err)))
+        goto out;
+#endif
     if (c->out_png) {
         hfs_png_opts po = {0};
         po.exposure = c->exposure; /* 0 = default 1 */
@@ -434,7 +452,7 @@ static int cmd_render(const cli *c, hfs_error *err)
     if ((rc = hfs_outputs_commit(outs, err)))
         goto out;
     if (!c->quiet && !c->time_frames)
-        fprintf(stderr, "%s: %dx%d, backend %s, %.3f s\n", c->out_png ? c->out_png : c->out_pfm,
+        fprintf(stderr, "%s: %dx%d, backend %s, %.3f s\n", c->out_png ? c->out_png : c->out_pfm ? c->out_pfm : c->out_tif,
                 in.field.width, in.field.height, hfs_renderer_backend_name(r), t1 - t0);
 out:
     hfs_outputs_destroy(outs);

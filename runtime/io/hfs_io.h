@@ -94,6 +94,15 @@ typedef struct hfs_heightmap {
     double cellsize;      /* .asc cellsize (suggested dx); 0 = not given    */
     hfs_height_format format;
     char note[200];       /* what a loader changed, for the log ("" none)   */
+    /* Where the grid lies, when its file said (the tools' GDAL loader):
+     * GDAL's geotransform of the grid as loaded (north-up, row 0 the north
+     * edge, after any resampling: x = g[0] + (i + 0.5) g[1] at texel i's
+     * centre, y = g[3] + (j + 0.5) g[5]) and its CRS as WKT ("" unknown;
+     * longer ones than the buffer are dropped, said in note).  Outputs
+     * written through GDAL keep them (hfshade render --geotiff). */
+    int has_georef;
+    double geotransform[6];
+    char crs_wkt[4096];
 } hfs_heightmap;
 
 /* A loader for formats this library does not read itself (the tools' GDAL
@@ -300,6 +309,12 @@ HFS_API int hfs_png_write(const char *path, const hfs_image *img,
 /* The same into an output set (committed by hfs_outputs_commit). */
 HFS_API int hfs_png_write_to(hfs_outputs *o, const char *path, const hfs_image *img,
                              const hfs_png_opts *opts, hfs_error *err);
+
+/* n bytes another encoder made (the tools' GeoTIFF writer, through GDAL's
+ * in-memory files) as the output `path` of o: a temporary, renamed at
+ * hfs_outputs_commit like the others. */
+HFS_API int hfs_bytes_write_to(hfs_outputs *o, const char *path, const void *data, size_t n,
+                               hfs_error *err);
 
 /*
  * The per-channel mapping of hfs_png_write, for code that displays frames

@@ -336,3 +336,21 @@ int hfs_png_write_rgba8(const char *path, int width, int height, const uint8_t *
     job.src8 = rgba;
     return png_write_job(&job, NULL, err);
 }
+
+int hfs_bytes_write_to(hfs_outputs *o, const char *path, const void *data, size_t n,
+                       hfs_error *err)
+{
+    if (!path || !*path)
+        return hfs_fail(err, HFS_E_INVALID, "(no file): empty output path");
+    if (!data || n == 0)
+        return hfs_fail(err, HFS_E_INVALID, "%s: nothing to write", path);
+    hfs_io_atomic a;
+    int rc = hfs_io_atomic_open(&a, path, err);
+    if (rc)
+        return rc;
+    if ((rc = hfs_io_atomic_write(&a, data, n, err))) {
+        hfs_io_atomic_abort(&a);
+        return rc;
+    }
+    return finish_output(o, &a, err);
+}

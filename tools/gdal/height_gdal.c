@@ -118,6 +118,27 @@ static int check_dataset(GDALDatasetH ds, const char *path, const hfs_height_loa
     return HFS_OK;
 }
 
+/* out's georeferencing: the file's geotransform, made north-up (a south-up
+ * grid's rows were flipped) and scaled to the resampled cells (node 0
+ * stays where it was: make_square samples node-aligned), and its CRS. */
+static void georef(GDALDatasetH ds, const double gt[6], int w0, int h0, hfs_heightmap *out)
+{
+    double g[6];
+    memcpy(g, gt, sizeof g);
+    if (g[5] > 0.0) { /* south-up: the last row's far edge is the north one */
+        g[3] += g[5] * h0;
+        g[5] = -g[5];
+    }
+    const double sx = (w0 - 1.0) / (out->width - 1.0), sy = (h0 - 1.0) / (out->height - 1.0);
+    g[0] += 0.5 * g[1] * (1.0 - sx), g[1] *= sx;
+    g[3] += 0.5 * g[5] * (1.0 - sy), g[5] *= sy;
+    memcpy(out->geotransform, g, sizeof g);
+    out->has_georef = 1;
+    const char *wkt = GDALGetProjectionRef(ds);
+    if (wkt && strlen(wkt) < sizeof out->crs_wkt)
+        snprintf(out->crs_wkt, sizeof out->crs_wkt, "%s", wkt);
+}
+
 int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
                          hfs_heightmap *out, hfs_error *err)
 {
@@ -154,15 +175,19 @@ int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
                          cell);
         }
     }
+    if (!rc) {
+        out->width = w, out->height = h, out->z = z, out->holes = holes;
+        out->cellsize = cell;
+        out->format = HFS_HEIGHT_EXTERNAL;
+        if (gt[1] != 0.0) /* a geotransform was there */
+            georef(ds, gt, GDALGetRasterXSize(ds), GDALGetRasterYSize(ds), out);
+    }
     GDALClose(ds);
     CPLPopErrorHandler();
     if (rc) {
         free(z);
         return rc;
     }
-    out->width = w, out->height = h, out->z = z, out->holes = holes;
-    out->cellsize = cell;
-    out->format = HFS_HEIGHT_EXTERNAL;
     return HFS_OK;
 }
 

@@ -1,0 +1,77 @@
+/*
+ * geotiff_write.c — see geotiff_write.h.
+ */
+#include "geotiff_write.h"
+
+#include <cpl_conv.h>
+#include <cpl_error.h>
+#include <cpl_string.h>
+#include <cpl_vsi.h>
+#include <gdal.h>
+
+#include <math.h>
+#include <stdio.h>
+
+/* The image as a MEM dataset with hm's georeferencing; NULL on failure. */
+static GDALDatasetH mem_dataset(const hfs_image *img, const hfs_heightmap *hm)
+{
+    GDALDriverH mem = GDALGetDriverByName("MEM");
+    GDALDatasetH ds = mem ? GDALCreate(mem, "", img->width, img->height, 3, GDT_Float32, NULL)
+                          : NULL;
+    if (!ds)
+        return NULL;
+    static const GDALColorInterp ci[3] = {GCI_RedBand, GCI_GreenBand, GCI_BlueBand};
+    for (int c = 0; c < 3; ++c) { /* band c: every third float, from channel c */
+        GDALRasterBandH b = GDALGetRasterBand(ds, c + 1);
+        GDALSetRasterColorInterpretation(b, ci[c]);
+        if (GDALRasterIO(b, GF_Write, 0, 0, img->width, img->height, img->rgb + c, img->width,
+                         img->height, GDT_Float32, 3 * (GSpacing)sizeof(float),
+                         3 * (GSpacing)sizeof(float) * img->width) != CE_None) {
+            GDALClose(ds);
+            return NULL;
+        }
+    }
+    if (hm && hm->has_georef) {
+        GDALSetGeoTransform(ds, (double *)hm->geotransform);
+        if (hm->crs_wkt[0])
+            GDALSetProjection(ds, hm->crs_wkt);
+    }
+    return ds;
+}
+
+int hfs_gdal_write_geotiff(hfs_outputs *o, const char *path, const hfs_image *img,
+                           const hfs_heightmap *hm, hfs_error *err)
+{
+    if (!img || !img->rgb || img->width < 1 || img->height < 1)
+        return hfs_fail(err, HFS_E_INVALID, "%s: nothing to write (empty image)", path);
+    for (size_t k = 0, n = (size_t)img->width * (size_t)img->height * 3; k < n; ++k)
+        if (!isfinite(img->rgb[k]))
+            return hfs_fail(err, HFS_E_INVALID, "%s: refusing to write a non-finite value",
+                            path);
+    char name[64]; /* a memory file of this call's own */
+    snprintf(name, sizeof name, "/vsimem/hfshade-%p.tif", (const void *)img);
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    GDALDatasetH mem = mem_dataset(img, hm);
+    GDALDriverH gtiff = GDALGetDriverByName("GTiff");
+    char **opts = CSLSetNameValue(NULL, "COMPRESS", "DEFLATE");
+    GDALDatasetH tif = mem && gtiff ? GDALCreateCopy(gtiff, name, mem, FALSE, opts, NULL, NULL)
+                                    : NULL;
+    CSLDestroy(opts);
+    int ok = tif != NULL;
+    if (tif) { /* GDALClose writes the rest (void before GDAL 3.8): errors are logged */
+        CPLErrorReset();
+        GDALClose(tif);
+        ok &= CPLGetLastErrorType() != CE_Failure && CPLGetLastErrorType() != CE_Fatal;
+    }
+    if (mem)
+        GDALClose(mem);
+    vsi_l_offset len = 0;
+    GByte *bytes = VSIGetMemFileBuffer(name, &len, TRUE); /* ours now */
+    CPLPopErrorHandler();
+    int rc = ok && bytes && len > 0
+                 ? hfs_bytes_write_to(o, path, bytes, (size_t)len, err)
+                 : hfs_fail(err, HFS_E_IO, "%s: GDAL could not encode the GeoTIFF (%s)", path,
+                            CPLGetLastErrorMsg());
+    VSIFree(bytes);
+    return rc;
+}
