@@ -15,3 +15,8 @@ target_link_libraries(bench_bounce PRIVATE hfshade_scene_load hfshade_lib m)
 add_executable(bench_shm ${CMAKE_CURRENT_SOURCE_DIR}/bench_shm.c)
 target_link_libraries(bench_shm PRIVATE hfshade_scene_load hfshade_lib m)
 target_include_directories(bench_shm PRIVATE ${PROJECT_SOURCE_DIR}/tools)
+# build/tests/bench_shm_passes [ROUNDS] [SIZE...]: the SHM's time against the
+# horizon path's key-light passes, side by side (BENCHMARKS.md).
+add_executable(bench_shm_passes ${CMAKE_CURRENT_SOURCE_DIR}/bench_shm_passes.c)
+target_link_libraries(bench_shm_passes PRIVATE hfshade_lib hfs_terrain_gen hfs_glctx m)
+target_include_directories(bench_shm_passes PRIVATE ${PROJECT_SOURCE_DIR}/tools)
