@@ -15,6 +15,16 @@
  * queries (the maps built each time: what a moved light costs; a GLES
  * renderer made once, its first query not timed).
  *
+ *   bench_shm NAME uniform=1 [points=N] [spread=F] KEY=VALUE...
+ * Issue 19's must-show: points uniform over the footprint, each a random
+ * height within spread times the relief above the ground (default 0.1),
+ * classified shadowed / lit (visible fraction below / above one half)
+ * against the truth's exact rays, leaving out the points within one texel
+ * of a shadow edge: those whose truth classification changes at one of
+ * the four points one texel away at the same height.  Prints the share of
+ * the others each backend classifies wrong, and the mean |v - truth| over
+ * all points (the soft edge's error).
+ *
  *   bench_shm NAME terrain=1 KEY=VALUE...
  * The SHM as a key-light path for the terrain itself (issue 19 item 3):
  * the key light alone, albedo 1, the truth's image against the CPU
@@ -118,6 +128,65 @@ static double shm_image(const hfs_scene_inputs *in, hfs_image *out)
     return ms;
 }
 
+/* uniform=1: classification outside a one-texel band around the edges. */
+static void uniform(const char *name, hfs_scene_inputs *in, int n, double spread,
+                    const char *backends)
+{
+    const hfs_field *f = &in->field;
+    double lo, hi;
+    hfs_field_range(f, &lo, &hi);
+    const double rise = spread * f->zscale * (hi - lo);
+    double *xyz = malloc(sizeof(double) * 15 * (size_t)n); /* each point, then its 4 */
+    float *vt = malloc(sizeof(float) * 5 * (size_t)n), *v = malloc(sizeof(float) * (size_t)n);
+    if (!xyz || !vt || !v)
+        die("out of memory", NULL);
+    unsigned seed = 4242u;
+    const double off[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    for (int i = 0; i < n; ++i) {
+        double u[3];
+        for (int c = 0; c < 3; ++c) {
+            seed = seed * 1103515245u + 12345u;
+            u[c] = ((seed >> 8) & 0xffff) / 65535.0;
+        }
+        const double x = 1.0 + (f->width - 3) * u[0], y = 1.0 + (f->height - 3) * u[1];
+        double g;
+        hfs_field_bilinear(f, x, y, &g);
+        for (int k = 0; k < 5; ++k) {
+            double *p = xyz + 3 * ((size_t)k * (size_t)n + (size_t)i);
+            p[0] = (x + off[k][0]) * f->dx, p[1] = (y + off[k][1]) * f->dx;
+            p[2] = g + 1e-4 * f->dx + rise * u[2];
+        }
+    }
+    query(HFS_BACKEND_TRUTH, in, xyz, 5 * n, vt, 1);
+    int outside = 0, shadowed = 0;
+    for (int i = 0; i < n; ++i) {
+        int band = 0;
+        for (int k = 1; k < 5; ++k)
+            band |= (vt[(size_t)k * n + i] > 0.5f) != (vt[i] > 0.5f);
+        outside += !band;
+        shadowed += vt[i] <= 0.5f;
+    }
+    char list[64];
+    snprintf(list, sizeof list, "%s", backends);
+    for (char *b = strtok(list, ","); b; b = strtok(NULL, ",")) {
+        const hfs_backend be = !strcmp(b, "gles") ? HFS_BACKEND_GLES : HFS_BACKEND_CPU;
+        query(be, in, xyz, n, v, 1);
+        int wrong = 0;
+        double mean = 0.0;
+        for (int i = 0; i < n; ++i) {
+            int band = 0;
+            for (int k = 1; k < 5; ++k)
+                band |= (vt[(size_t)k * n + i] > 0.5f) != (vt[i] > 0.5f);
+            wrong += !band && (v[i] > 0.5f) != (vt[i] > 0.5f);
+            mean += fabs((double)v[i] - vt[i]) / n;
+        }
+        printf("| %s %dx%d | %s | %d (%d shadowed, %d outside the band) | %.3f%% | %.4f |\n",
+               name, f->width, f->height, b, n, shadowed, outside, 100.0 * wrong / outside,
+               mean);
+    }
+    free(xyz), free(vt), free(v);
+}
+
 /* terrain=1: the key light alone, truth vs horizon path vs SHM. */
 static void terrain(const char *name, hfs_scene_inputs *in)
 {
@@ -148,7 +217,7 @@ int main(int argc, char **argv)
     if (argc < 2)
         die("usage: bench_shm NAME [backends=cpu,gles] [points=N] [spread=F] KEY=VALUE...", NULL);
     char backends[64] = "cpu";
-    int n = 2000, terrain_mode = 0;
+    int n = 2000, terrain_mode = 0, uniform_mode = 0;
     double spread = 0.02;
     hfs_scene s;
     hfs_scene_init(&s);
@@ -166,6 +235,8 @@ int main(int argc, char **argv)
             spread = atof(eq + 1);
         else if (!strncmp(argv[i], "terrain", len))
             terrain_mode = atoi(eq + 1);
+        else if (!strncmp(argv[i], "uniform", len))
+            uniform_mode = atoi(eq + 1);
         else {
             char key[64];
             snprintf(key, sizeof key, "%.*s", (int)len, argv[i]);
@@ -178,8 +249,11 @@ int main(int argc, char **argv)
         die("scene", &err);
     if (in.lighting.n_key != 1 || n < 1)
         die("give one key light and points >= 1", NULL);
-    if (terrain_mode) {
-        terrain(argv[1], &in);
+    if (terrain_mode || uniform_mode) {
+        if (terrain_mode)
+            terrain(argv[1], &in);
+        else
+            uniform(argv[1], &in, n, spread == 0.02 ? 0.1 : spread, backends);
         hfs_scene_inputs_free(&in);
         return 0;
     }
