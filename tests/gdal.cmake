@@ -4,4 +4,8 @@
 if(TARGET hfshade_gdal)
   hfs_add_test(test_gdal_dem SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gdal_dem.c
                LIBS hfshade_gdal LABEL io TIMEOUT 120)
+  # Issue 20's must-show: the Jacksboro DEM as geographic GeoTIFFs against
+  # its PNG, rendered (test_gdal_jacksboro.c).
+  hfs_add_test(test_gdal_jacksboro SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gdal_jacksboro.c
+               LIBS hfshade_gdal hfshade_lib ARGS ${PROJECT_SOURCE_DIR}/data LABEL io TIMEOUT 300)
 endif()
