@@ -435,10 +435,11 @@ HFS_API int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *field,
 
 /* What the texture holds (docs/DESIGN.md "Embedding without a read-back"):
  *   HFS_LIT_RADIANCE  GL_RGBA16F: RGB = the exit radiance Lo of
- *                     hfs_renderer_render, linear, unscaled, rounded to
- *                     fp16 (relative error <= 2^-11; values beyond
- *                     +-65504, fp16's largest, clamp to it; below 2^-14
- *                     fp16 subnormals), A = 1.  For an application that
+ *                     hfs_renderer_render, linear, unscaled, converted
+ *                     to fp16 (relative error < 2^-10, one fp16 ulp: GL
+ *                     leaves the rounding direction to the driver;
+ *                     values beyond +-65504, fp16's largest, clamp to it;
+ *                     below 2^-14 fp16 subnormals), A = 1.  For an application that
  *                     lights, tone maps or blends in its own shaders.
  *   HFS_LIT_SRGB8     GL_RGBA8 (NOT GL_SRGB8_ALPHA8): the kiosk's picture,
  *                     bytes as hfs_srgb8_encode (hfs_io.h) writes them per
