@@ -36,7 +36,9 @@ int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
 
 /* GLES renderer (gles_*.c): the product, DESIGN.md "GLES path".  The object
  * owns a GL context (made current on the creating thread and again at each
- * render), every GPU resource and results cached between frames. */
+ * render; one sharing the application's, hfs_gles_create_shared, gives the
+ * application's back after each call), every GPU resource and results
+ * cached between frames. */
 typedef struct hfs_gles hfs_gles;
 
 /* context: gl_context.h name (NULL = surfaceless); profile: gl_caps.h name

@@ -16,7 +16,8 @@
  * And the planner: a second frame with nothing changed runs no pass and
  * hands out the same texture; a re-tinted key light runs the shading and
  * the lit texture, not the read-back; a black frame and back; the
- * application's context is current again after every call; refusals.
+ * application's context is current again after every call (renders,
+ * point queries, destroy); refusals.
  */
 #include "gl_api.h"
 #include "gl_test.h"
@@ -285,6 +286,10 @@ int main(void)
           "exposure -1 accepted");
     printf("refused: %s\n", err.msg);
     CHECK(!hfs_renderer_render_texture(r, &s.f, &l, &q, NULL, &t, &err), "%s", err.msg);
+    const double xyz[3] = {10.0 * s.f.dx, 20.0 * s.f.dx, 50.0};
+    float vis[HFS_MAX_KEY_LIGHTS];
+    CHECK(!hfs_renderer_query_points(r, &s.f, &l, &q, xyz, 1, vis, &err), "%s", err.msg);
+    check_current(&a, "query_points");
     planned(&a, r, &s.f, l, &q, &t);
     refusals(&a, &s.f, &l, &q);
 

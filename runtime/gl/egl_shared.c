@@ -43,9 +43,10 @@ static int egl_fail(hfs_error *err, const char *what)
 
 static void remember_current(shared_context *c)
 {
-    c->prev_context = eglGetCurrentContext();
-    if (c->prev_context == c->context) /* already ours: keep the earlier record */
+    const EGLContext now = eglGetCurrentContext();
+    if (now == c->context) /* already ours (a nested call): keep the earlier record */
         return;
+    c->prev_context = now;
     c->prev_display = eglGetCurrentDisplay();
     c->prev_draw = eglGetCurrentSurface(EGL_DRAW);
     c->prev_read = eglGetCurrentSurface(EGL_READ);
