@@ -307,12 +307,14 @@ static int start(kiosk *k)
     }
     kiosk_log(KIOSK_INFO,
               "started: scene %s %dx%d, input %s (%d controls, %d device source%s), "
-              "replay %s, display %s, renderer %s, first frame %.1f ms",
+              "replay %s, display %s, renderer %s%s, first frame %.1f ms",
               o->scene_path, w->in.field.width, w->in.field.height,
               o->input_path ? o->input_path : "none", w->cfg.n_controls,
               hfs_input_set_count(k->inputs), hfs_input_set_count(k->inputs) == 1 ? "" : "s",
               o->replay_path ? o->replay_path : "none", hfs_display_name(k->display),
-              hfs_renderer_backend_name(k->frame.renderer), k->frame.render_ms);
+              hfs_renderer_backend_name(k->frame.renderer),
+              k->frame.shared ? " (sharing the display's context: frames as textures)" : "",
+              k->frame.render_ms);
     return 0;
 }
 
