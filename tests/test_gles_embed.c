@@ -222,6 +222,18 @@ static void planned(app *a, hfs_renderer *r, const hfs_field *f, hfs_lighting l,
     printf("then the image ran: %s\n", ran);
     CHECK(strstr(ran, "readback") != NULL, "the image after a texture frame ran \"%s\"", ran);
     compare(a, &t, &img, &(hfs_lit_texture_desc){0}, "re-tinted key");
+    /* The texture again after an image frame: nothing changed for it (an
+     * image frame leaves the texture's encoding as it was; measured: no
+     * pass), at most the lit pass, never for its encoding. */
+    CHECK(!hfs_renderer_render_texture(r, f, &l, q, NULL, &t, &err), "%s", err.msg);
+    gl_test_ran(r, ran, sizeof ran);
+    hfs_frame_report rep;
+    hfs_renderer_frame_report(r, &rep);
+    for (int i = 0; i < rep.n_steps; ++i)
+        CHECK(!strstr(rep.step[i].reason, "encoding"), "after an image frame: %s ran for \"%s\"",
+              rep.step[i].pass, rep.step[i].reason);
+    printf("texture after that image ran: %s\n", ran);
+    CHECK(!strcmp(ran, "lit texture ") || !ran[0], "texture after the image ran \"%s\"", ran);
 
     hfs_lighting dark;
     hfs_lighting_defaults(&dark);

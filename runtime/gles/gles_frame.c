@@ -224,6 +224,11 @@ static int plan(hfs_gles *g, hfs_gles_frame *fr)
         fr->local_open[i] = hfs_local_light_open(&g->extent, &fr->local[i]);
     hfs_gles_frame_sig sig;
     frame_signature(fr, &sig);
+    if (!fr->lit) { /* an image frame keeps the texture's encoding: no change to it */
+        sig.lit_encoding = g->plan.last.lit_encoding;
+        sig.lit_tonemap = g->plan.last.lit_tonemap;
+        sig.lit_exposure = g->plan.last.lit_exposure;
+    }
     const size_t n_img = (size_t)fr->L.w * fr->L.h * 3;
     /* A texture frame needs no image: the planner alone says whether the
      * kept texture holds. */
