@@ -91,7 +91,8 @@ int hfs_display_present(hfs_display *d, const uint8_t *rgba, int w, int h, hfs_e
 /* Embedding (issue 20): the EGLDisplay and EGLContext of a GL display
  * (x11, kms), for a renderer made to share with it
  * (hfs_renderer_desc.egl_display / egl_share_context); 1 then, 0 and NULLs
- * for a display without GL (headless). */
+ * for a display without GL (headless).  Destroy such a renderer before
+ * hfs_display_close (which terminates the EGL display under it). */
 int hfs_display_gl_handles(const hfs_display *d, void **egl_display, void **egl_context);
 
 /* Shows texture `texture` of that share group -- a w x h picture as
