@@ -439,8 +439,9 @@ HFS_API int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *field,
  *                     to fp16 (relative error < 2^-10, one fp16 ulp: GL
  *                     leaves the rounding direction to the driver;
  *                     values beyond +-65504, fp16's largest, clamp to it;
- *                     below 2^-14 fp16 subnormals), A = 1.  For an application that
- *                     lights, tone maps or blends in its own shaders.
+ *                     below 2^-14 fp16 subnormals), A = 1.  For an
+ *                     application that lights, tone maps or blends in its
+ *                     own shaders.
  *   HFS_LIT_SRGB8     GL_RGBA8 (NOT GL_SRGB8_ALPHA8): the kiosk's picture,
  *                     bytes as hfs_srgb8_encode (hfs_io.h) writes them per
  *                     channel -- tonemap(exposure Lo), sRGB OETF, times 255
