@@ -28,8 +28,18 @@ for mode in texture readback; do
         --replay "$tmp/replay.txt" --display x11 --size 64x48 --stats "$tmp/$mode.txt" \
         --exit-after-replay $flag >"$tmp/$mode.out" 2>"$tmp/$mode.log"
     rc=$?
-    if [ $rc != 0 ] && grep -q "display x11" "$tmp/$mode.log"; then
-        echo "SKIP: no GL window here: $(head -1 "$tmp/$mode.log")"; exit 77
+    if [ $rc != 0 ] && grep -q "display x11:" "$tmp/$mode.log"; then
+        echo "SKIP: no GL window here: $(grep -m1 "display x11:" "$tmp/$mode.log")"; exit 77
+    fi
+    # Sanitizer builds: with the texture path the window's EGL display is
+    # the only one, so eglTerminate at exit unloads Mesa's driver and what
+    # its globals still point to shows as a leak whose every frame past the
+    # allocator is "<unknown module>" (with dlclose made a no-op nothing is
+    # reported).  A leak with any frame of ours still fails.
+    if [ $rc != 0 ] && grep -q "ERROR: LeakSanitizer" "$tmp/$mode.log" &&
+        ! grep -E '^ +#[1-9][0-9]* 0x' "$tmp/$mode.log" | grep -qv '(<unknown module>)'; then
+        echo "note [$mode]: $(grep -m1 SUMMARY "$tmp/$mode.log") (Mesa's unloaded driver only)"
+        rc=0
     fi
     [ $rc = 0 ] || { echo "FAIL [$mode]: exit $rc: $(cat "$tmp/$mode.log")"; fail=1; continue; }
     shown=$(awk '$1 == "event" && $6 == 1 && $3 > 0' "$tmp/$mode.txt" | wc -l)
