@@ -95,6 +95,30 @@ int hfs_display_present(hfs_display *d, const uint8_t *rgba, int w, int h, hfs_e
     return rc ? prefixed(err, d->backend->name, rc) : HFS_OK;
 }
 
+int hfs_display_gl_handles(const hfs_display *d, void **egl_display, void **egl_context)
+{
+    *egl_display = *egl_context = NULL;
+    if (!d || !d->backend->gl_handles)
+        return 0;
+    d->backend->gl_handles(d, egl_display, egl_context);
+    return *egl_display && *egl_context;
+}
+
+int hfs_display_present_texture(hfs_display *d, unsigned texture, void *fence, int w, int h,
+                                hfs_error *err)
+{
+    if (!d)
+        return hfs_fail(err, HFS_E_INVALID, "display: none");
+    if (!d->backend->present_texture)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "display %s: no GL, no texture to show",
+                        d->backend->name);
+    if (!texture || w < 1 || h < 1 || w > MAX_SIDE || h > MAX_SIDE)
+        return hfs_fail(err, HFS_E_INVALID, "display %s: texture %u of %dx%d (1..%d per side)",
+                        d->backend->name, texture, w, h, MAX_SIDE);
+    int rc = d->backend->present_texture(d, texture, fence, w, h, err);
+    return rc ? prefixed(err, d->backend->name, rc) : HFS_OK;
+}
+
 int hfs_display_fd(const hfs_display *d)
 {
     return d ? d->backend->fd(d) : -1;

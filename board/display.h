@@ -88,6 +88,22 @@ const char *hfs_display_name(const hfs_display *d);
  * writing) it.  rgba is only read during the call. */
 int hfs_display_present(hfs_display *d, const uint8_t *rgba, int w, int h, hfs_error *err);
 
+/* Embedding (issue 20): the EGLDisplay and EGLContext of a GL display
+ * (x11, kms), for a renderer made to share with it
+ * (hfs_renderer_desc.egl_display / egl_share_context); 1 then, 0 and NULLs
+ * for a display without GL (headless).  Destroy such a renderer before
+ * hfs_display_close (which terminates the EGL display under it). */
+int hfs_display_gl_handles(const hfs_display *d, void **egl_display, void **egl_context);
+
+/* Shows texture `texture` of that share group -- a w x h picture as
+ * hfs_display_present takes (sRGB RGBA8, row 0 = top at t = 0), i.e.
+ * hfs_renderer_render_texture's HFS_LIT_SRGB8 -- after a GPU-side wait on
+ * fence (its GLsync; NULL: none), with no read-back and no upload; returns
+ * as hfs_display_present does.  The texture must stay valid until the
+ * next present (an x11 expose redraws it).  HFS_E_UNSUPPORTED without GL. */
+int hfs_display_present_texture(hfs_display *d, unsigned texture, void *fence, int w, int h,
+                                hfs_error *err);
+
 /* A file descriptor to poll() for window-system events (x11: the X
  * connection), or -1 when there are none (kms, headless). */
 int hfs_display_fd(const hfs_display *d);

@@ -21,6 +21,12 @@ struct hfs_display_backend {
     int (*fd)(const hfs_display *d);
     int (*handle_events)(hfs_display *d);
     int (*capture)(hfs_display *d, uint8_t **rgba, int *w, int *h, hfs_error *err);
+    /* GL displays (NULL: none, headless): the EGL display and context a
+     * renderer may share, and a texture of that share group shown as
+     * present shows an upload (arguments checked by display.c). */
+    void (*gl_handles)(const hfs_display *d, void **egl_display, void **egl_context);
+    int (*present_texture)(hfs_display *d, unsigned texture, void *fence, int w, int h,
+                           hfs_error *err);
 };
 
 struct hfs_display {

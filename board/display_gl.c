@@ -165,19 +165,25 @@ int hfs_dgl_draw(hfs_display_gl *g, const uint8_t *rgba, int w, int h, int dst_w
 {
     const hfs_gl *gl = &g->gl;
     gl->ActiveTexture(GL_TEXTURE0);
-    gl->BindTexture(GL_TEXTURE_2D, g->texture);
     if (rgba) {
+        gl->BindTexture(GL_TEXTURE_2D, g->texture);
         gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4); /* RGBA8 rows: always a multiple of 4 */
-        if (w != g->tex_w || h != g->tex_h) {
+        if (w != g->own_w || h != g->own_h) {
             gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-            g->tex_w = w;
-            g->tex_h = h;
+            g->own_w = w;
+            g->own_h = h;
         } else {
             gl->TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
         }
+        hfs_dgl_show_texture(g, g->texture, NULL, w, h);
     }
     if (g->tex_w < 1)
-        return HFS_OK; /* nothing uploaded yet: nothing to redraw */
+        return HFS_OK; /* nothing shown yet: nothing to redraw */
+    if (g->fence) { /* the renderer's frame done before we sample it (on the GPU) */
+        gl->WaitSync((GLsync)g->fence, 0, GL_TIMEOUT_IGNORED);
+        g->fence = NULL;
+    }
+    gl->BindTexture(GL_TEXTURE_2D, g->shown);
 
     hfs_display_fit f = hfs_display_fit_rect(g->tex_w, g->tex_h, dst_w, dst_h);
     GLint filter = f.nearest ? GL_NEAREST : GL_LINEAR;
@@ -194,6 +200,14 @@ int hfs_dgl_draw(hfs_display_gl *g, const uint8_t *rgba, int w, int h, int dst_w
     gl->BindVertexArray(g->vao);
     gl->DrawArrays(GL_TRIANGLES, 0, 3);
     return hfs_gl_check(gl, "display draw", err);
+}
+
+void hfs_dgl_show_texture(hfs_display_gl *g, unsigned tex, void *fence, int w, int h)
+{
+    g->shown = tex;
+    g->fence = fence;
+    g->tex_w = w;
+    g->tex_h = h;
 }
 
 int hfs_dgl_swap(hfs_display_gl *g, hfs_error *err)

@@ -29,7 +29,12 @@ typedef struct hfs_display_gl {
     PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC create_window_surface;
     hfs_gl gl;            /* loaded once the context is current */
     GLuint program, texture, vao;
-    int tex_w, tex_h;     /* texture size, 0 before the first upload */
+    int tex_w, tex_h;     /* the shown picture's size, 0 before the first */
+    int own_w, own_h;     /* our texture's storage, 0 before the first upload */
+    GLuint shown;         /* the texture drawn: ours, or a renderer's that
+                             shares our context (hfs_dgl_show_texture) */
+    void *fence;          /* GLsync to wait on before drawing `shown`; NULL
+                             once waited on */
 } hfs_display_gl;
 
 /* Gets and initialises the EGL display of native on platform (needs the
@@ -59,6 +64,13 @@ int hfs_dgl_make_current(hfs_display_gl *g, hfs_error *err);
  * it.  Does not swap.  Needs a context current (hfs_dgl_make_current). */
 int hfs_dgl_draw(hfs_display_gl *g, const uint8_t *rgba, int w, int h, int dst_w, int dst_h,
                  hfs_error *err);
+
+/* The next draws show texture tex (w x h, the same picture layout as an
+ * upload: RGBA8 sRGB, row 0 at t = 0; a renderer's lit texture in our
+ * share group, hfs_renderer_render_texture) instead of an upload, after a
+ * GPU-side wait on fence (a GLsync, or NULL).  An upload (hfs_dgl_draw
+ * with rgba) shows ours again. */
+void hfs_dgl_show_texture(hfs_display_gl *g, unsigned tex, void *fence, int w, int h);
 
 /* eglSwapBuffers. */
 int hfs_dgl_swap(hfs_display_gl *g, hfs_error *err);

@@ -376,6 +376,23 @@ static int kms_capture(hfs_display *base, uint8_t **rgba, int *w, int *h, hfs_er
                     "not read back)");
 }
 
+/* Embedding (display.h hfs_display_present_texture): our EGL handles for
+ * a renderer to share, and its texture shown as an upload would be. */
+static void kms_gl_handles(const hfs_display *base, void **egl_display, void **egl_context)
+{
+    const kms_display *d = (const kms_display *)base;
+    *egl_display = d->gl.display;
+    *egl_context = d->gl.context;
+}
+
+static int kms_present_texture(hfs_display *base, unsigned texture, void *fence, int w, int h,
+                                hfs_error *err)
+{
+    kms_display *d = (kms_display *)base;
+    hfs_dgl_show_texture(&d->gl, texture, fence, w, h);
+    return kms_present(base, NULL, w, h, err); /* draws what is shown */
+}
+
 #else /* !HFS_HAVE_KMS */
 
 static int kms_open(const hfs_display_opts *o, hfs_display **out, hfs_error *err)
@@ -410,4 +427,8 @@ const struct hfs_display_backend hfs_display_backend_kms = {
     .fd = kms_fd,
     .handle_events = kms_handle_events,
     .capture = kms_capture,
+#ifdef HFS_HAVE_KMS
+    .gl_handles = kms_gl_handles,
+    .present_texture = kms_present_texture,
+#endif
 };

@@ -307,6 +307,23 @@ static int x11_capture(hfs_display *base, uint8_t **rgba, int *w, int *h, hfs_er
     return HFS_OK;
 }
 
+/* Embedding (display.h hfs_display_present_texture): our EGL handles for
+ * a renderer to share, and its texture shown as an upload would be. */
+static void x11_gl_handles(const hfs_display *base, void **egl_display, void **egl_context)
+{
+    const x11_display *d = (const x11_display *)base;
+    *egl_display = d->gl.display;
+    *egl_context = d->gl.context;
+}
+
+static int x11_present_texture(hfs_display *base, unsigned texture, void *fence, int w, int h,
+                                hfs_error *err)
+{
+    x11_display *d = (x11_display *)base;
+    hfs_dgl_show_texture(&d->gl, texture, fence, w, h);
+    return x11_present(base, NULL, w, h, err); /* draws what is shown */
+}
+
 #else /* !HFS_HAVE_X11 */
 
 static int x11_open(const hfs_display_opts *o, hfs_display **out, hfs_error *err)
@@ -340,4 +357,8 @@ const struct hfs_display_backend hfs_display_backend_x11 = {
     .fd = x11_fd,
     .handle_events = x11_handle_events,
     .capture = x11_capture,
+#ifdef HFS_HAVE_X11
+    .gl_handles = x11_gl_handles,
+    .present_texture = x11_present_texture,
+#endif
 };

@@ -4,7 +4,8 @@
  *   kiosk_main.c   command line, start-up order, teardown, exit codes
  *   kiosk_world.c  scene file + input configuration + knob state: loaded
  *                  together, checked together, replaced whole on SIGHUP
- *   kiosk_frame.c  render -> sRGB picture -> overlay -> present
+ *   kiosk_frame.c  render -> sRGB picture -> overlay -> present (or, on a GL
+ *                  display, the renderer's texture -> present: no read-back)
  *   kiosk_loop.c   the poll loop: signals, display, devices, replay
  *   kiosk_stats.c  the --stats file (latency and CPU measurements)
  *   kiosk_log.c    one line per event of note, journal priorities
@@ -70,6 +71,8 @@ typedef struct kiosk_opts {
     const char *capture_record;    /* --capture-record DIR                   */
     int exit_after_capture;        /* --exit-after-capture: exit 0 once the
                                       capture replay's last frame is shown   */
+    int readback;                  /* --readback: no shared context, the
+                                      frame read back and uploaded           */
     int amortize;                  /* --amortize N: visibility passes per
                                       frame (hfs_renderer_set_amortize); 0 =
                                       off, the default                       */
@@ -115,11 +118,20 @@ typedef struct kiosk_frame {
     double render_ms;
     int passes_ran, passes_total;
     int view_w, view_h;            /* the 3-D view's size: --size, or 800x480 */
+    /* Embedding (issue 20): the GL display's EGL display and context
+     * (NULL: headless, or --readback); a GLES renderer made with them
+     * shares the display's context (shared = 1) and a grid frame goes to
+     * the screen as its texture, with no read-back and no upload. */
+    void *egl_display, *egl_context;
+    int shared;
     int64_t present_ns;            /* CLOCK_MONOTONIC after present returned */
 } kiosk_frame;
 
-/* Makes the renderer the scene asks for (backend, context). */
-int kiosk_frame_init(kiosk_frame *f, const hfs_scene *scene, double exposure, hfs_error *err);
+/* Makes the renderer the scene asks for (backend, context): a GLES one in
+ * the share group of display d's GL context when d has one (NULL: none,
+ * every frame read back). */
+int kiosk_frame_init(kiosk_frame *f, const hfs_scene *scene, double exposure, hfs_display *d,
+                     hfs_error *err);
 /* For a reload, in two steps so that nothing changes until every part of
  * the reload has worked: *out = a new renderer when scene asks for another
  * backend or context than f's, else NULL (f's fits).  Then adopt (r NULL:

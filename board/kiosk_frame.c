@@ -22,20 +22,36 @@
 #include "frame_image.h"
 #include "overlay.h"
 
-static int make_renderer(const hfs_scene *s, hfs_renderer **out, hfs_error *err)
+/* A renderer for the scene; a GLES one shares the display's context when
+ * f has the display's handles (f NULL: an off-screen one of its own). */
+static int make_renderer(const kiosk_frame *f, const hfs_scene *s, hfs_renderer **out,
+                         hfs_error *err)
 {
     hfs_renderer_desc desc = {.backend = s->backend,
                               .context = s->context[0] ? s->context : NULL};
+    if (f && f->egl_context && (s->backend == HFS_BACKEND_DEFAULT ||
+                                s->backend == HFS_BACKEND_GLES)) {
+        desc.egl_display = f->egl_display;
+        desc.egl_share_context = f->egl_context;
+    }
     return hfs_renderer_create(&desc, out, err);
 }
 
-int kiosk_frame_init(kiosk_frame *f, const hfs_scene *s, double exposure, hfs_error *err)
+static int shares(const kiosk_frame *f, const hfs_scene *s)
+{
+    return f->egl_context && (s->backend == HFS_BACKEND_DEFAULT || s->backend == HFS_BACKEND_GLES);
+}
+
+int kiosk_frame_init(kiosk_frame *f, const hfs_scene *s, double exposure, hfs_display *d,
+                     hfs_error *err)
 {
     memset(f, 0, sizeof *f);
     f->exposure = exposure > 0.0 ? exposure : 1.0;
     f->backend = s->backend;
     snprintf(f->context, sizeof f->context, "%s", s->context);
-    return make_renderer(s, &f->renderer, err);
+    hfs_display_gl_handles(d, &f->egl_display, &f->egl_context);
+    f->shared = shares(f, s);
+    return make_renderer(f, s, &f->renderer, err);
 }
 
 int kiosk_frame_renderer_for(const kiosk_frame *f, const hfs_scene *s, hfs_renderer **out,
@@ -44,7 +60,7 @@ int kiosk_frame_renderer_for(const kiosk_frame *f, const hfs_scene *s, hfs_rende
     *out = NULL;
     if (s->backend == f->backend && !strcmp(s->context, f->context))
         return HFS_OK;
-    return make_renderer(s, out, err);
+    return make_renderer(f, s, out, err);
 }
 
 void kiosk_frame_adopt(kiosk_frame *f, hfs_renderer *r, const hfs_scene *s)
@@ -56,13 +72,14 @@ void kiosk_frame_adopt(kiosk_frame *f, hfs_renderer *r, const hfs_scene *s)
     hfs_renderer_set_amortize(r, f->amortize);
     f->backend = s->backend;
     snprintf(f->context, sizeof f->context, "%s", s->context);
+    f->shared = shares(f, s);
 }
 
 int kiosk_frame_admit(hfs_renderer *r, int amortize, const hfs_scene *s,
                       const hfs_scene_inputs *in, hfs_error *err)
 {
     hfs_renderer *own = NULL;
-    int rc = r ? HFS_OK : make_renderer(s, &own, err);
+    int rc = r ? HFS_OK : make_renderer(NULL, s, &own, err);
     if (rc)
         return rc;
     hfs_renderer *use = r ? r : own;
@@ -169,11 +186,51 @@ static int render(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_st
                                     &f->img, err);
 }
 
+/* A grid frame on a GL display goes to the screen as the renderer's
+ * texture (issue 20): the sRGB picture encoded on the GPU (HFS_LIT_SRGB8:
+ * hfs_srgb8_encode's bytes, as hfs_frame_to_rgba8 writes them), no
+ * read-back and no upload.  Not the 3-D view (its picture comes back to
+ * the CPU), nor the overlay (drawn into the picture on the CPU), nor a
+ * field shrunk to fit the display (averaged on the CPU). */
+static int texture_path(const kiosk_frame *f, const hfs_scene_inputs *in,
+                        const hfs_input_state *st)
+{
+    return f->shared && !st->view && !st->overlay &&
+           hfs_shrink_factor(in->field.width, in->field.height, HFS_DISPLAY_MAX_SIDE) == 1;
+}
+
+static int render_texture(kiosk_frame *f, const hfs_scene_inputs *in, hfs_lit_texture *t,
+                          hfs_error *err)
+{
+    const hfs_lit_texture_desc how = {HFS_LIT_SRGB8, f->exposure, 0};
+    hfs_renderer_set_field_serial(f->renderer, in->serial);
+    return hfs_renderer_render_texture(f->renderer, &in->field, &in->lighting, &in->quality,
+                                       &how, t, err);
+}
+
+/* The render as the display's picture: shrunk, encoded, the overlay. */
+static int picture(kiosk_frame *f, const char *preset, const hfs_input_state *st,
+                   const hfs_image **pic, hfs_error *err)
+{
+    hfs_png_opts po = {.exposure = f->exposure};
+    *pic = &f->img;
+    if (f->shrink > 1) {
+        hfs_image_shrink(&f->img, f->shrink, &f->small);
+        *pic = &f->small;
+    }
+    int rc = hfs_frame_to_rgba8(*pic, &po, f->rgba, err);
+    if (!rc && st->overlay)
+        draw_overlay(f, preset);
+    return rc;
+}
+
 int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_state *st,
                      const char *preset, hfs_display *d, hfs_error *err)
 {
     const int64_t t0 = hfs_input_now_ns();
-    int rc = render(f, in, st, err);
+    const int textured = texture_path(f, in, st);
+    hfs_lit_texture t = {0};
+    int rc = textured ? render_texture(f, in, &t, err) : render(f, in, st, err);
     if (rc)
         return rc;
     f->render_ms = (double)(hfs_input_now_ns() - t0) / 1e6;
@@ -185,17 +242,14 @@ int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input
     } else {
         f->passes_ran = f->passes_total = f->deferred = 0;
     }
-    hfs_png_opts po = {.exposure = f->exposure};
-    const hfs_image *pic = &f->img;
-    if (f->shrink > 1) {
-        hfs_image_shrink(&f->img, f->shrink, &f->small);
-        pic = &f->small;
+    if (textured) {
+        rc = hfs_display_present_texture(d, t.texture, t.fence, t.width, t.height, err);
+    } else {
+        const hfs_image *pic;
+        if (!(rc = picture(f, preset, st, &pic, err)))
+            rc = hfs_display_present(d, f->rgba, pic->width, pic->height, err);
     }
-    if ((rc = hfs_frame_to_rgba8(pic, &po, f->rgba, err)))
-        return rc;
-    if (st->overlay)
-        draw_overlay(f, preset);
-    if ((rc = hfs_display_present(d, f->rgba, pic->width, pic->height, err)))
+    if (rc)
         return rc;
     f->present_ns = hfs_input_now_ns();
     f->presented++;

@@ -62,6 +62,9 @@ static void usage(FILE *f)
             "  --capture-record DIR  write the capture's raw frames and times to DIR\n"
             "                        (docs/CAPTURE.md \"Recordings\")\n"
             "  --exit-after-capture  exit 0 once a replayed capture's last frame is shown\n"
+            "  --readback            x11/kms: read each frame back and upload it, as before\n"
+            "                        issue 20 (for comparison; default: the renderer shares\n"
+            "                        the display's context and hands it a texture)\n"
             "  --check               load and check every input file, open nothing, exit\n"
             "  --help\n"
             "signals: SIGHUP reloads SCENE.ini and CONFIG.ini; SIGTERM/SIGINT exit cleanly\n",
@@ -105,6 +108,7 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
                     : !strcmp(a, "--exit-after-replay") ? &o->exit_after_replay
                     : !strcmp(a, "--check")             ? &o->check
                     : !strcmp(a, "--exit-after-capture") ? &o->exit_after_capture
+                    : !strcmp(a, "--readback")          ? &o->readback
                                                         : NULL;
         if (flag) {
             *flag = 1;
@@ -276,7 +280,8 @@ static int start(kiosk *k)
     }
     int rc = hfs_display_open(o->display, &dopts, &k->display, &err);
     if (!rc)
-        rc = kiosk_frame_init(&k->frame, &w->scene, o->exposure, &err);
+        rc = kiosk_frame_init(&k->frame, &w->scene, o->exposure, o->readback ? NULL : k->display,
+                              &err);
     if (!rc) {
         k->frame.amortize = o->amortize;
         hfs_renderer_set_amortize(k->frame.renderer, o->amortize);
@@ -302,12 +307,14 @@ static int start(kiosk *k)
     }
     kiosk_log(KIOSK_INFO,
               "started: scene %s %dx%d, input %s (%d controls, %d device source%s), "
-              "replay %s, display %s, renderer %s, first frame %.1f ms",
+              "replay %s, display %s, renderer %s%s, first frame %.1f ms",
               o->scene_path, w->in.field.width, w->in.field.height,
               o->input_path ? o->input_path : "none", w->cfg.n_controls,
               hfs_input_set_count(k->inputs), hfs_input_set_count(k->inputs) == 1 ? "" : "s",
               o->replay_path ? o->replay_path : "none", hfs_display_name(k->display),
-              hfs_renderer_backend_name(k->frame.renderer), k->frame.render_ms);
+              hfs_renderer_backend_name(k->frame.renderer),
+              k->frame.shared ? " (sharing the display's context: frames as textures)" : "",
+              k->frame.render_ms);
     return 0;
 }
 

@@ -37,7 +37,9 @@ int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
 
 /* GLES renderer (gles_*.c): the product, DESIGN.md "GLES path".  The object
  * owns a GL context (made current on the creating thread and again at each
- * render), every GPU resource and results cached between frames. */
+ * render; one sharing the application's, hfs_gles_create_shared, gives the
+ * application's back after each call), every GPU resource and results
+ * cached between frames. */
 typedef struct hfs_gles hfs_gles;
 
 /* context: gl_context.h name (NULL = surfaceless); profile: gl_caps.h name
@@ -45,6 +47,18 @@ typedef struct hfs_gles hfs_gles;
  * HFS_E_CONTEXT/UNSUPPORTED/INVALID with one line. */
 int hfs_gles_create(const char *context, const char *profile, int strict_limits,
                     hfs_gles **out, hfs_error *err);
+/* The same in the share group of the application's EGL context
+ * (hfs_renderer_desc.egl_share_context; runtime/gl/egl_shared.c). */
+int hfs_gles_create_shared(void *egl_display, void *egl_context, const char *profile,
+                           int strict_limits, hfs_gles **out, hfs_error *err);
+/* After a call that bound the renderer's context: the application's back
+ * (a shared renderer; otherwise nothing). */
+void hfs_gles_release(hfs_gles *g);
+/* The frame with its lit result as a texture of the application's share
+ * group (hfs_renderer_render_texture; pass_lit_texture.c). */
+int hfs_gles_render_texture(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
+                            const hfs_quality *q, const hfs_lit_texture_desc *how,
+                            hfs_lit_texture *out, hfs_error *err);
 void hfs_gles_destroy(hfs_gles *g);
 /* "surfaceless" or "osmesa"; hfs_gl_context_describe() of the context. */
 const char *hfs_gles_context_name(const hfs_gles *g);

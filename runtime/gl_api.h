@@ -172,6 +172,7 @@ extern "C" {
     /* sync */                                                               \
     X(PFNGLFENCESYNCPROC, FenceSync)                                         \
     X(PFNGLCLIENTWAITSYNCPROC, ClientWaitSync)                               \
+    X(PFNGLWAITSYNCPROC, WaitSync)                                           \
     X(PFNGLDELETESYNCPROC, DeleteSync)
 
 typedef struct hfs_gl {

@@ -327,6 +327,19 @@ typedef struct hfs_renderer_desc {
                                 that a scene runs on ANY ES 3.0 device.  The
                                 environment variable HFS_GL_STRICT_LIMITS=1
                                 turns it on for every renderer.              */
+    /* GLES only, embedding (hfs_renderer_render_texture): the application's
+     * EGLDisplay and EGLContext, as void * (this header includes no EGL
+     * header); both NULL (default) = the renderer's own headless context
+     * (`context`).  Set, the renderer makes its OpenGL ES 3 context on that
+     * display in the share group of that context (EGL_NO_SURFACE: the
+     * display needs EGL_KHR_surfaceless_context), so the textures it
+     * renders are textures of the application's context.  The capability
+     * layer still keeps the renderer to gl_profile.  Every renderer call
+     * binds the renderer's context and, before returning, binds again
+     * whatever context and surfaces were current on the calling thread.
+     * The application keeps its context alive until hfs_renderer_destroy. */
+    void *egl_display;
+    void *egl_share_context;
 } hfs_renderer_desc;
 
 HFS_API int hfs_renderer_create(const hfs_renderer_desc *desc, hfs_renderer **out,
@@ -446,6 +459,76 @@ HFS_API int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *field,
                                      const hfs_quality *quality, const hfs_view *view,
                                      hfs_image *lit, hfs_image *out, hfs_error *err);
 
+/* ---- embedding: the lit result as a texture (issue 20) ---------------------- */
+
+/* What the texture holds (docs/DESIGN.md "Embedding without a read-back"):
+ *   HFS_LIT_RADIANCE  GL_RGBA16F: RGB = the exit radiance Lo of
+ *                     hfs_renderer_render, linear, unscaled, converted
+ *                     to fp16 (relative error < 2^-10, one fp16 ulp: GL
+ *                     leaves the rounding direction to the driver;
+ *                     values beyond +-65504, fp16's largest, clamp to it;
+ *                     below 2^-14 fp16 subnormals), A = 1.  For an
+ *                     application that lights, tone maps or blends in its
+ *                     own shaders.
+ *   HFS_LIT_SRGB8     GL_RGBA8 (NOT GL_SRGB8_ALPHA8): the kiosk's picture,
+ *                     bytes as hfs_srgb8_encode (hfs_io.h) writes them per
+ *                     channel -- tonemap(exposure Lo), sRGB OETF, times 255
+ *                     -- A = 255.  Sampled, it gives the already-encoded
+ *                     value: write it to a non-sRGB framebuffer as it is. */
+typedef enum hfs_lit_encoding {
+    HFS_LIT_RADIANCE = 0,
+    HFS_LIT_SRGB8
+} hfs_lit_encoding;
+
+/* How to encode (NULL: radiance).  exposure, tonemap: HFS_LIT_SRGB8 only,
+ * as hfs_png_opts (exposure 0 = 1, else > 0 and finite; tonemap 0 clamp,
+ * 1 Reinhard, hfs_io.h hfs_tonemap's values). */
+typedef struct hfs_lit_texture_desc {
+    hfs_lit_encoding encoding;
+    double exposure;
+    int tonemap;
+} hfs_lit_texture_desc;
+
+/* The lit result in the application's share group.  The renderer owns the
+ * texture and the fence: never delete them.  The texture name stays the
+ * same from frame to frame while the field's size and the encoding do not
+ * change; it is valid until the next hfs_renderer_render_texture or
+ * hfs_renderer_destroy.  Texel (i, j) is grid point (i, j): s = (i + 0.5) /
+ * width, t = (j + 0.5) / height, row j = 0 at t near 0.  Filtering
+ * GL_LINEAR, wrap GL_CLAMP_TO_EDGE, one mip level (the application may
+ * change the sampling parameters; they are set again on reallocation).
+ *
+ * Synchronisation: `fence` is a GLsync of the share group (glFenceSync
+ * after the frame's last draw, then glFlush): before the first draw that
+ * samples the texture, the application calls
+ *     glWaitSync((GLsync)lit.fence, 0, GL_TIMEOUT_IGNORED);
+ * in its own context.  A GPU-side wait: the CPU never blocks, unlike
+ * glFinish, which would stall the caller for the whole frame (the point of
+ * dropping the read-back).  The renderer deletes the fence at the next call
+ * (deleting a sync object someone waits on is deferred by GL).  Before the
+ * next hfs_renderer_render_texture the application must have flushed
+ * (glFlush, or eglSwapBuffers) the draws that read the texture, since the
+ * next frame writes it in place. */
+typedef struct hfs_lit_texture {
+    unsigned texture;        /* GLuint, GL_TEXTURE_2D                        */
+    unsigned internal_format; /* GL_RGBA16F (0x881A) or GL_RGBA8 (0x8058)    */
+    int width, height;       /* the field's                                  */
+    void *fence;             /* GLsync                                       */
+} hfs_lit_texture;
+
+/* Renders one frame as hfs_renderer_render would, but hands the lit result
+ * back as a texture (no read-back to the CPU; the frame planner skips every
+ * pass whose product is kept, so a frame with nothing changed runs no pass
+ * and returns the same texture).  Needs the GLES backend made with
+ * desc.egl_share_context (else HFS_E_UNSUPPORTED, one line); same input
+ * checks and error conventions as hfs_renderer_render; on failure *out is
+ * zeroed. */
+HFS_API int hfs_renderer_render_texture(hfs_renderer *r, const hfs_field *field,
+                                        const hfs_lighting *lighting,
+                                        const hfs_quality *quality,
+                                        const hfs_lit_texture_desc *how, hfs_lit_texture *out,
+                                        hfs_error *err);
+
 /* ---- points above the field ------------------------------------------------- */
 
 /* Key-light visibility of n points (issue 19: markers, pins, an
@@ -492,7 +575,8 @@ HFS_API int hfs_renderer_shadow_height_map(hfs_renderer *r, const hfs_field *fie
  * visibility), "key" (key-light horizons), "local" (local-light visibility
  * ratios), "transfer" (the environment's per-texel transfer vectors),
  * "keyfactor" (each key light's per-texel E_cap * visible fraction), "shade"
- * (the sum over lights), "readback".  The CPU and
+ * (the sum over lights), "readback", "littexture" (the encoding of
+ * hfs_renderer_render_texture, instead of the read-back).  The CPU and
  * truth backends report one pass, "render". */
 typedef struct hfs_pass_time {
     char name[16];

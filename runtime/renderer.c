@@ -50,6 +50,11 @@ typedef struct backend_ops {
     /* One layer of a key light's shadow height map (NULL: none). */
     int (*shadow_map)(void *state, const hfs_field *f, const hfs_key_light *k,
                       const hfs_quality *q, int layer, float *out, hfs_error *err);
+    /* The lit result as a texture of the application's context (NULL:
+     * none, the CPU backends have no GL). */
+    int (*render_texture)(void *state, const hfs_field *f, const hfs_lighting *l,
+                          const hfs_quality *q, const hfs_lit_texture_desc *how,
+                          hfs_lit_texture *out, hfs_error *err);
 } backend_ops;
 
 static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
@@ -67,12 +72,18 @@ static int truth_render(void *state, const hfs_field *f, const hfs_lighting *l,
     return hfs_truth_render(f, l, q, out, progress, user, err);
 }
 
+/* The GLES calls that bind the renderer's context give the application's
+ * back before returning (hfs_gles_release: a shared renderer's). */
 static int gles_create(const hfs_renderer_desc *d, void **state, hfs_error *err)
 {
     const char *env = getenv("HFS_GL_STRICT_LIMITS");
     const int strict = (d && d->gl_strict_limits) || (env && !strcmp(env, "1"));
+    const char *profile = d ? d->gl_profile : NULL;
     hfs_gles *g = NULL;
-    const int rc = hfs_gles_create(d ? d->context : NULL, d ? d->gl_profile : NULL, strict, &g, err);
+    const int rc = d && (d->egl_display || d->egl_share_context)
+                       ? hfs_gles_create_shared(d->egl_display, d->egl_share_context, profile,
+                                                strict, &g, err)
+                       : hfs_gles_create(d ? d->context : NULL, profile, strict, &g, err);
     *state = g;
     return rc;
 }
@@ -81,6 +92,7 @@ static int gles_render(void *state, const hfs_field *f, const hfs_lighting *l, c
                        hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
 {
     const int rc = hfs_gles_render(state, f, l, q, out, err);
+    hfs_gles_release(state);
     if (!rc && progress)
         progress(user, 1.0); /* one GPU frame: no finer progress to report */
     return rc;
@@ -99,7 +111,17 @@ static int gles_render_view(void *state, const hfs_field *f, const hfs_lighting 
                             const hfs_object_set *obj, int w, int h, hfs_image *lit,
                             float *view, hfs_error *err)
 {
-    return hfs_gles_render_view(state, f, l, q, cam, obj, w, h, lit, view, err);
+    const int rc = hfs_gles_render_view(state, f, l, q, cam, obj, w, h, lit, view, err);
+    hfs_gles_release(state);
+    return rc;
+}
+static int gles_render_texture(void *state, const hfs_field *f, const hfs_lighting *l,
+                               const hfs_quality *q, const hfs_lit_texture_desc *how,
+                               hfs_lit_texture *out, hfs_error *err)
+{
+    const int rc = hfs_gles_render_texture(state, f, l, q, how, out, err);
+    hfs_gles_release(state);
+    return rc;
 }
 
 static int cpu_query(void *state, const hfs_field *f, const hfs_lighting *l,
@@ -118,7 +140,9 @@ static int truth_query(void *state, const hfs_field *f, const hfs_lighting *l,
 static int gles_query(void *state, const hfs_field *f, const hfs_lighting *l,
                       const hfs_quality *q, const double *xyz, int n, float *vis, hfs_error *err)
 {
-    return hfs_gles_query_points(state, f, l, q, xyz, n, vis, err);
+    const int rc = hfs_gles_query_points(state, f, l, q, xyz, n, vis, err);
+    hfs_gles_release(state);
+    return rc;
 }
 
 static int cpu_shadow_map(void *state, const hfs_field *f, const hfs_key_light *k,
@@ -130,18 +154,20 @@ static int cpu_shadow_map(void *state, const hfs_field *f, const hfs_key_light *
 static int gles_shadow_map(void *state, const hfs_field *f, const hfs_key_light *k,
                            const hfs_quality *q, int layer, float *out, hfs_error *err)
 {
-    return hfs_gles_shadow_height_map(state, f, k, q, layer, out, err);
+    const int rc = hfs_gles_shadow_height_map(state, f, k, q, layer, out, err);
+    hfs_gles_release(state);
+    return rc;
 }
 
 static const backend_ops backends[] = {
     [HFS_BACKEND_GLES] = {"gles", gles_create, gles_destroy, gles_render, gles_set_timing,
                           gles_set_amortize, gles_set_timing_finish, gles_timings,
                           gles_invalidate, gles_frame_report, gles_render_view, 0, gles_query,
-                          gles_shadow_map},
+                          gles_shadow_map, gles_render_texture},
     [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL,
-                         NULL, 0, cpu_query, cpu_shadow_map},
+                         NULL, 0, cpu_query, cpu_shadow_map, NULL},
     [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL,
-                           NULL, NULL, 1, truth_query, NULL},
+                           NULL, NULL, 1, truth_query, NULL, NULL},
 };
 #define N_BACKENDS ((int)(sizeof backends / sizeof backends[0]))
 
@@ -332,6 +358,44 @@ int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
     if (r->timing && !r->ops->timings)
         wall_timings(r, "render", t0);
     return check_output(out, r->ops->name, err);
+}
+
+/* The encoding asked for, checked, with its defaults filled in. */
+static int lit_desc(const hfs_lit_texture_desc *how, hfs_lit_texture_desc *d, hfs_error *err)
+{
+    *d = how ? *how : (hfs_lit_texture_desc){HFS_LIT_RADIANCE, 0.0, 0};
+    if (d->encoding != HFS_LIT_RADIANCE && d->encoding != HFS_LIT_SRGB8)
+        return hfs_fail(err, HFS_E_INVALID, "render texture: encoding %d is unknown (0 "
+                        "radiance, 1 srgb8)", (int)d->encoding);
+    if (d->exposure == 0.0)
+        d->exposure = 1.0;
+    if (!(d->exposure > 0.0) || !isfinite(d->exposure))
+        return hfs_fail(err, HFS_E_INVALID, "render texture: exposure %g must be positive "
+                        "and finite", d->exposure);
+    if (d->tonemap != 0 && d->tonemap != 1)
+        return hfs_fail(err, HFS_E_INVALID, "render texture: tonemap %d is unknown (0 clamp, "
+                        "1 reinhard)", d->tonemap);
+    return HFS_OK;
+}
+
+int hfs_renderer_render_texture(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
+                                const hfs_quality *q, const hfs_lit_texture_desc *how,
+                                hfs_lit_texture *out, hfs_error *err)
+{
+    if (!r || !out)
+        return hfs_fail(err, HFS_E_INVALID, "render texture: no %s", r ? "output" : "renderer");
+    *out = (hfs_lit_texture){0};
+    hfs_lit_texture_desc d;
+    int rc = validate_frame(r, f, l, q, err);
+    if (rc || (rc = lit_desc(how, &d, err)))
+        return rc;
+    if (!r->ops->render_texture)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "render texture: the %s backend has no GL "
+                        "texture (GLES only)", r->ops->name);
+    rc = r->ops->render_texture(r->state, f, l, q, &d, out, err);
+    if (rc)
+        *out = (hfs_lit_texture){0};
+    return rc;
 }
 
 int hfs_render_unshadowed(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,

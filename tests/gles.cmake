@@ -236,6 +236,22 @@ set_tests_properties(test_gloss PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT
 set(hfs_gles_tests ${hfs_gles_tests} test_gloss)
 
 
+# Embedding without a read-back (issue 20): the lit texture read in the
+# test's own EGL context against hfs_renderer_render's image, the planner
+# on the texture path, refusals (test_gles_embed.c states the bounds).
+add_executable(test_gles_embed ${CMAKE_CURRENT_LIST_DIR}/test_gles_embed.c)
+target_link_libraries(test_gles_embed PRIVATE hfs_test_gles_scenes hfs_glctx hfs_gl
+                      PkgConfig::HFS_EGL)
+foreach(env "" "MESA_GLES_VERSION_OVERRIDE=3.0")
+  set(tname test_gles_embed)
+  if(env)
+    set(tname test_gles_embed_es30)
+  endif()
+  add_test(NAME ${tname} COMMAND test_gles_embed)
+  set_tests_properties(${tname} PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 120
+                       ENVIRONMENT "${env}")
+  set(hfs_gles_tests ${hfs_gles_tests} ${tname})
+endforeach()
 
 # Shadow height maps and point queries (issue 19; runtime/shm.c, cpu_points.c,
 # truth_points.c, gles/shm_query.c): closed forms and exact rays (unit),

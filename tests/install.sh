@@ -13,7 +13,9 @@
 #   3. tests/install/consumer.c built with `pkg-config --cflags --libs
 #      hfshade` and, as a CMake project, with find_package(hfshade) +
 #      hfshade::hfshade, each run against the installed library (not the
-#      build tree's): versions agree, CPU render, GLES render or skip.
+#      build tree's): versions agree, CPU render, GLES render or skip;
+#   4. tools/examples/embed_mesh built both ways too (it also links
+#      libEGL/libGLESv2 itself) and run: its PPM, or a skip without GLES.
 set -euo pipefail
 build=$1 src=$2 version=$3
 major=${version%%.*}
@@ -87,6 +89,27 @@ for exe in "$tmp/consumer-pc" "$tmp/cmake-build/consumer"; do
         *) bad "$(basename "$(dirname "$exe")")/consumer resolves libhfshade to '$lib', not the installed one" ;;
     esac
     LD_LIBRARY_PATH=$prefix/$libdir "$exe" "$version" || bad "$exe failed"
+done
+# 4. tools/examples/embed_mesh: an application drawing its own GL scene with
+#    the lit texture (issue 20), built both ways against the installed
+#    package, run against it: a 640x400 PPM, or a skip without EGL/GLES.
+ex=$src/tools/examples/embed_mesh
+cc -std=c11 -Wall -Wextra -Werror -pedantic "$ex/embed_mesh.c" -o "$tmp/embed-pc" \
+    $(pkg-config --cflags --libs hfshade egl glesv2) -lm || bad "embed_mesh: pkg-config build"
+cmake -S "$ex" -B "$tmp/embed-build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+      >"$tmp/embed.log" 2>&1 && cmake --build "$tmp/embed-build" >>"$tmp/embed.log" 2>&1 ||
+    { cat "$tmp/embed.log"; bad "embed_mesh: find_package build"; }
+for exe in "$tmp/embed-pc" "$tmp/embed-build/embed_mesh"; do
+    [ -x "$exe" ] || continue
+    rc=0
+    LD_LIBRARY_PATH=$prefix/$libdir "$exe" "$tmp/embed.ppm" 3 || rc=$?
+    if [ $rc = 77 ]; then
+        [ "${HFS_REQUIRE_GL:-0}" = 1 ] && bad "$exe: no GLES context (HFS_REQUIRE_GL=1)"
+        continue
+    fi
+    [ $rc = 0 ] || { bad "$exe failed ($rc)"; continue; }
+    [ "$(head -c 15 "$tmp/embed.ppm" | tr '\n' ' ')" = "P6 640 400 255 " ] ||
+        bad "$exe: $tmp/embed.ppm is not a 640x400 PPM"
 done
 [ $fail = 0 ] && echo "install: ok"
 exit $fail

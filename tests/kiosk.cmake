@@ -3,6 +3,9 @@
 #                          unknown display, usage errors: one line, non-zero
 #                          exit, no frame; the shipped example passes
 #                          --check ("io"; no GL needed)
+#   kiosk_x11_texture      an x11 window (xvfb-run): frames as the shared
+#                          renderer's texture, and with --readback; every
+#                          event shown ("gl"; 77 without xvfb-run)
 #   test_kiosk_replay      scripted knobs move the key light: last frame ==
 #                          direct library render, byte for byte ("gl");
 #                          _es30 under MESA_GLES_VERSION_OVERRIDE=3.0
@@ -28,13 +31,20 @@ if(TARGET hfshade-kiosk)
                    $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen> ${PROJECT_SOURCE_DIR})
   set_tests_properties(kiosk_bad_inputs PROPERTIES LABELS io TIMEOUT 120)
 
+  # Issue 20: the kiosk on an x11 window, frames as the renderer's texture
+  # and with --readback (kiosk_x11_texture.sh; 77 without xvfb-run); one of
+  # hfs_kiosk_gl_tests below.
+  add_test(NAME kiosk_x11_texture
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/kiosk_x11_texture.sh
+                   $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen>)
+
   add_executable(test_kiosk ${CMAKE_CURRENT_LIST_DIR}/test_kiosk.c
                             ${CMAKE_CURRENT_LIST_DIR}/kiosk_harness.c)
   target_link_libraries(test_kiosk PRIVATE hfshade_scene_load hfs_display hfshade_lib
                         PkgConfig::HFS_PNG m)
   add_dependencies(test_kiosk hfshade-kiosk hfgen)
   set(hfs_kiosk_gl_tests test_kiosk_replay test_kiosk_amortize test_kiosk_signals
-      test_kiosk_idle test_kiosk_example test_kiosk_view)
+      test_kiosk_idle test_kiosk_example test_kiosk_view kiosk_x11_texture)
   foreach(mode replay amortize signals idle view)
     add_test(NAME test_kiosk_${mode}
              COMMAND test_kiosk ${mode} $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen>)

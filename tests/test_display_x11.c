@@ -16,6 +16,8 @@
  *   2x    128x96 window: exactly the picture scaled 2x by nearest;
  *   fit   100x100 window: 12 black rows above, 13 below, picture between
  *         (bilinear there, so only the bars are checked exactly);
+ *   texture a renderer sharing the window's context shows its sRGB
+ *         texture (hfs_display_present_texture, issue 20): the same bytes;
  *   close a WM_DELETE_WINDOW message sent from another X client makes
  *         hfs_display_handle_events return 1 (what a close button does).
  *
@@ -245,6 +247,48 @@ static void check_1to1(scene *s, const uint8_t *first)
     free(cap);
 }
 
+/* Embedding (issue 20): a renderer sharing the window's context hands the
+ * sRGB picture over as a texture (hfs_renderer_render_texture,
+ * HFS_LIT_SRGB8), shown with hfs_display_present_texture: no read-back,
+ * no upload, and the same bytes on screen as the read-back picture. */
+static void check_texture(scene *s, const uint8_t *pic)
+{
+    int cw = 0, ch = 0;
+    hfs_error err = {""};
+    uint8_t *cap = NULL;
+    hfs_display_opts o = {.width = W, .height = H, .title = "test_display_x11"};
+    hfs_display *d = NULL;
+    if (hfs_display_open("x11", &o, &d, &err)) {
+        CHECK(0, "open: %s", err.msg);
+        return;
+    }
+    hfs_renderer_desc desc = {.backend = HFS_BACKEND_GLES};
+    CHECK(hfs_display_gl_handles(d, &desc.egl_display, &desc.egl_share_context) == 1,
+          "x11 gives no EGL handles");
+    hfs_renderer *r = NULL;
+    CHECK(hfs_renderer_create(&desc, &r, &err) == 0, "shared renderer: %s", err.msg);
+    const hfs_lit_texture_desc how = {HFS_LIT_SRGB8, 1.0, 0};
+    hfs_lit_texture t = {0};
+    s->l.key[0].phi = 30.0 * PI / 180; /* pic's light */
+    for (int i = 0; r && i < 2; ++i) { /* the second: no pass, the same texture */
+        CHECK(hfs_renderer_render_texture(r, &s->f, &s->l, &s->q, &how, &t, &err) == 0,
+              "render texture: %s", err.msg);
+        CHECK(hfs_display_present_texture(d, t.texture, t.fence, t.width, t.height, &err) == 0,
+              "present texture: %s", err.msg);
+    }
+    CHECK(hfs_display_capture(d, &cap, &cw, &ch, &err) == 0, "capture: %s", err.msg);
+    hfs_renderer_destroy(r);
+    hfs_display_close(d);
+    if (!cap)
+        return;
+    long n = 0;
+    const int worst = cw == W && ch == H ? max_rgb_diff(cap, pic, W, H, &n) : 255;
+    printf("texture: capture vs read-back picture: max difference %d/255 over %ld of %d "
+           "pixels\n", worst, n, W * H);
+    CHECK(worst == 0, "texture capture differs (max %d, %ld pixels)", worst, n);
+    free(cap);
+}
+
 static void check_2x(const uint8_t *pic)
 {
     int cw = 0, ch = 0;
@@ -354,6 +398,7 @@ int main(void)
     scene_make(&s);
     render_picture(&s, 30.0, pic);
     check_1to1(&s, pic);
+    check_texture(&s, pic);
     scene_free(&s);
     check_2x(pic);
     check_fit(pic);

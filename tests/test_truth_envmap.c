@@ -413,7 +413,7 @@ static void test_bad(void)
     l.has_env = 1;
     map[0] = NAN;
     hfs_renderer *r = NULL;
-    const hfs_renderer_desc desc = {HFS_BACKEND_TRUTH, NULL, NULL, 0};
+    const hfs_renderer_desc desc = {.backend = HFS_BACKEND_TRUTH};
     REQUIRE(hfs_renderer_create(&desc, &r, &err) == HFS_OK, "%s", err.msg);
     float z[16] = {0};
     const hfs_field f = {4, 4, z, 1.0, 1.0};

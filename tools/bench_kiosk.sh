@@ -13,8 +13,20 @@
 # frame; CPU = user + system time of the whole process (getrusage, every
 # thread) over that wall time.
 #
+# Read-back vs texture (issue 20), with COMPARE=x11 in the environment
+# instead of the two above: the same replay on an x11 window (one Xvfb,
+# xvfb-run; --size 256x256, the field 1:1) run ROUNDS times in turn with
+# --readback (render, read back, sRGB on the CPU, upload, draw) and with the
+# renderer sharing the window's context (the sRGB picture encoded on the GPU
+# into a texture the window draws: no read-back, no upload), side by side:
+# latency as above, render = the kiosk's render step (render_texture vs
+# render + read-back), CPU per frame = the process's user + system CPU
+# between consecutive frames (getrusage: llvmpipe's threads included, so
+# on this machine the GPU's work is CPU too).
+#
 # usage: tools/bench_kiosk.sh BUILD_DIR [EVENTS] [SPACING_MS] [IDLE_S]
 #        defaults 100 events, 150 ms, 10 s
+#        COMPARE=x11 [ROUNDS=2] tools/bench_kiosk.sh BUILD_DIR [EVENTS] [SPACING_MS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B=$(cd "$1" && pwd); N=${2:-100}; SPACING=${3:-150}; IDLE=${4:-10}
@@ -48,6 +60,43 @@ awk -v n="$N" -v dt="$SPACING" 'BEGIN {
   for (i = 0; i < n; ++i) {
     c = k[i % 3 + 1]; d = (c == "elevation" && int(i / 3) % 2) ? -1 : 1;
     printf "%d %s turn %d\n", 200 + i * dt, c, d } }' >"$T/events.txt"
+
+if [ "${COMPARE:-}" = x11 ]; then
+    ROUNDS=${ROUNDS:-2}
+    cat >"$T/runs.sh" <<EOS
+set -e
+for r in \$(seq $ROUNDS); do
+  for mode in readback texture; do
+    flag=; [ \$mode = readback ] && flag=--readback
+    "$K" "$T/scene.ini" --input "$T/knobs.ini" --replay "$T/events.txt" --display x11 \\
+        --size 256x256 --stats "$T/\$mode.\$r.txt" --exit-after-replay \$flag 2>"$T/\$mode.\$r.log"
+  done
+done
+EOS
+    xvfb-run -a -s "-screen 0 640x480x24" bash "$T/runs.sh"
+    python3 - "$T" "$ROUNDS" <<'EOS'
+import glob, statistics, sys
+T, rounds = sys.argv[1], int(sys.argv[2])
+def pct(v, q): v = sorted(v); return v[int(q * (len(v) - 1))]
+print("| path | events | latency median ms | p90 ms | max ms | render median ms | CPU per frame median ms | mean ms |")
+print("|---|---|---|---|---|---|---|---|")
+for mode in ("readback", "texture"):
+    lat, ren, cpu = [], [], []
+    for path in sorted(glob.glob(f"{T}/{mode}.*.txt")):
+        frames = {}
+        for line in open(path):
+            f = line.split()
+            if f[0] == "frame": frames[int(f[1])] = (float(f[3]), int(f[7]))
+            if f[0] == "event" and f[5] == "1": lat.append(int(f[3]) / 1e6)
+        ns = sorted(frames)
+        ren += [frames[n][0] for n in ns[1:]]
+        cpu += [(frames[b][1] - frames[a][1]) / 1e3 for a, b in zip(ns[1:], ns[2:])]
+    print(f"| {mode} | {len(lat)} | {statistics.median(lat):.1f} | {pct(lat, 0.9):.1f} | "
+          f"{max(lat):.1f} | {statistics.median(ren):.1f} | {statistics.median(cpu):.1f} | "
+          f"{statistics.mean(cpu):.1f} |")
+EOS
+    exit 0
+fi
 
 "$K" "$T/scene.ini" --input "$T/knobs.ini" --replay "$T/events.txt" --display headless \
     --stats "$T/latency.txt" --exit-after-replay 2>"$T/latency.log"

@@ -14,6 +14,7 @@ add_library(hfs_glctx STATIC
   ${CMAKE_CURRENT_LIST_DIR}/gl_context.c
   ${CMAKE_CURRENT_LIST_DIR}/gl_require.c
   ${CMAKE_CURRENT_LIST_DIR}/egl_surfaceless.c
+  ${CMAKE_CURRENT_LIST_DIR}/egl_shared.c
   ${CMAKE_CURRENT_LIST_DIR}/egl_util.c
   ${CMAKE_CURRENT_LIST_DIR}/osmesa.c)
 target_include_directories(hfs_glctx PUBLIC ${CMAKE_CURRENT_LIST_DIR})

@@ -150,6 +150,23 @@ int hfs_gl_context_create(const char *name, hfs_gl_context **out, hfs_error *err
                     hfs_gl_context_names());
 }
 
+int hfs_gl_context_create_shared(void *egl_display, void *egl_context, hfs_gl_context **out,
+                                 hfs_error *err)
+{
+    if (!out)
+        return hfs_fail(err, HFS_E_INVALID, "context: no output pointer");
+    *out = NULL;
+    hfs_gl_context *ctx = NULL;
+    hfs_error why;
+    int rc = hfs_gl_shared_create(egl_display, egl_context, &ctx, &why);
+    if (!rc && (rc = finish_create(ctx, &why)))
+        hfs_gl_backend_shared.destroy(ctx);
+    if (rc)
+        return hfs_fail(err, rc, "context shared: %s", why.msg);
+    *out = ctx;
+    return HFS_OK;
+}
+
 void hfs_gl_context_destroy(hfs_gl_context *ctx)
 {
     if (ctx)
@@ -178,6 +195,12 @@ int hfs_gl_context_make_current(hfs_gl_context *ctx, hfs_error *err)
     if (rc)
         return hfs_fail(err, rc, "context %s: %s", ctx->backend->name, why.msg);
     return HFS_OK;
+}
+
+void hfs_gl_context_release(hfs_gl_context *ctx)
+{
+    if (ctx && ctx->backend->release)
+        ctx->backend->release(ctx);
 }
 
 const char *hfs_gl_context_gl_version(const hfs_gl_context *ctx)

@@ -48,6 +48,19 @@ typedef struct hfs_gl_context hfs_gl_context;
  * For "auto" the message gives the reason of each backend tried. */
 int hfs_gl_context_create(const char *name, hfs_gl_context **out, hfs_error *err);
 
+/* "shared" (issue 20, embedding): an OpenGL ES 3.x context on the
+ * application's EGLDisplay that shares objects (textures, sync objects)
+ * with the application's EGLContext egl_context, bound with EGL_NO_SURFACE
+ * (needs EGL_KHR_surfaceless_context on that display).  Both arguments are
+ * EGL handles passed as void * (hfshade.h includes no EGL header); the
+ * display must be initialized and stays the application's (never
+ * terminated here).  The context made current by hfs_gl_context_make_current
+ * is handed back by hfs_gl_context_release, and destroy leaves the thread
+ * with what was current before.  Errors as hfs_gl_context_create, plus
+ * HFS_E_INVALID for a NULL handle. */
+int hfs_gl_context_create_shared(void *egl_display, void *egl_context, hfs_gl_context **out,
+                                 hfs_error *err);
+
 /* Releases the context (and unbinds it if it is current on this thread).
  * NULL is a no-op.  EGL displays are process-wide and shared with other
  * users, so the display is terminated only where EGL can count references
@@ -70,6 +83,10 @@ void *hfs_gl_context_loader(void *ctx, const char *gl_function_name);
 
 /* Makes ctx current on the calling thread. */
 int hfs_gl_context_make_current(hfs_gl_context *ctx, hfs_error *err);
+/* After a call that made ctx current: a shared context makes current again
+ * what was current on this thread before (the application's context, its
+ * surfaces); the renderer's own contexts stay current (no-op). */
+void hfs_gl_context_release(hfs_gl_context *ctx);
 
 /* Strings read once at creation (owned by ctx, valid until destroy):
  *   GL_VERSION   "OpenGL ES 3.2 Mesa 22.3.6" or "4.5 (Core Profile) Mesa ..."
@@ -86,7 +103,8 @@ const char *hfs_gl_context_describe(const hfs_gl_context *ctx);
 int hfs_gl_context_is_es(const hfs_gl_context *ctx);
 
 /* Names accepted by hfs_gl_context_create, for help texts:
- * "surfaceless, osmesa, auto". */
+ * "surfaceless, osmesa, auto" ("shared" is made only by
+ * hfs_gl_context_create_shared). */
 const char *hfs_gl_context_names(void);
 
 #ifdef __cplusplus

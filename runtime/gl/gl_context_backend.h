@@ -20,6 +20,9 @@ struct hfs_gl_context_backend {
     void (*destroy)(hfs_gl_context *ctx);
     void *(*proc)(const hfs_gl_context *ctx, const char *name);
     int (*make_current)(hfs_gl_context *ctx, hfs_error *err);
+    /* Makes current again what was current before make_current (NULL: the
+     * context stays current, as the renderer's own contexts do). */
+    void (*release)(hfs_gl_context *ctx);
 };
 
 struct hfs_gl_context {
@@ -33,5 +36,11 @@ struct hfs_gl_context {
 
 extern const struct hfs_gl_context_backend hfs_gl_backend_surfaceless;
 extern const struct hfs_gl_context_backend hfs_gl_backend_osmesa;
+extern const struct hfs_gl_context_backend hfs_gl_backend_shared;
+
+/* egl_shared.c: a context sharing objects with the application's
+ * (hfs_gl_context_create_shared), current on return. */
+int hfs_gl_shared_create(void *egl_display, void *egl_context, hfs_gl_context **out,
+                         hfs_error *err);
 
 #endif /* HFS_GL_CONTEXT_BACKEND_H */

@@ -154,6 +154,7 @@ add_library(hfs_gles STATIC
   ${CMAKE_CURRENT_LIST_DIR}/pass_bounce.c
   ${CMAKE_CURRENT_LIST_DIR}/bounce_targets.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_readback.c
+  ${CMAKE_CURRENT_LIST_DIR}/pass_lit_texture.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_view.c
   ${CMAKE_CURRENT_LIST_DIR}/shm_query.c
   ${CMAKE_CURRENT_LIST_DIR}/gles_frame.c

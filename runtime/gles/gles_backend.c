@@ -34,27 +34,20 @@ static void name_slots(hfs_gles *g)
     g->timing.n_slots = n;
 }
 
-int hfs_gles_create(const char *context, const char *profile, int strict_limits, hfs_gles **out,
-                    hfs_error *err)
+/* Everything after the context: the GL table, the driver's caps, the
+ * profile (refused now, not at the first frame), the shared objects. */
+static int setup(hfs_gles *g, const char *profile, int strict_limits, hfs_error *err)
 {
-    *out = NULL;
-    hfs_gles *g = calloc(1, sizeof *g);
-    if (!g)
-        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
-    int rc = hfs_gl_context_create(context, &g->ctx, err);
-    if (rc)
-        goto fail;
+    int rc;
     if ((rc = hfs_gl_load(&g->gl, hfs_gl_context_loader, g->ctx, err)))
-        goto fail;
+        return rc;
     hfs_gl_caps_query(&g->gl, &g->driver);
     g->strict_limits = strict_limits != 0;
     if (profile) {
-        /* Refuse a bad name or an impossible profile now, not at the first
-         * frame. */
         hfs_gl_caps c;
         if ((rc = hfs_gl_caps_select(&g->driver, profile, !strcmp(profile, "es30-float"),
                                      strict_limits, &c, err)))
-            goto fail;
+            return rc;
         snprintf(g->profile, sizeof g->profile, "%s", profile);
     }
     const hfs_gl *gl = &g->gl;
@@ -67,15 +60,52 @@ int hfs_gles_create(const char *context, const char *profile, int strict_limits,
     gl->Disable(GL_DEPTH_TEST);
     gl->Disable(GL_SCISSOR_TEST);
     if ((rc = hfs_gl_check(gl, "backend gles: setup", err)))
-        goto fail;
-    if ((rc = hfs_gles_plan_init(&g->plan, err)))
-        goto fail;
+        return rc;
+    return hfs_gles_plan_init(&g->plan, err);
+}
+
+/* The context made (own, or shared with the application's), the rest. */
+static int create(const char *context, void *egl_display, void *egl_context, const char *profile,
+                  int strict_limits, hfs_gles **out, hfs_error *err)
+{
+    *out = NULL;
+    hfs_gles *g = calloc(1, sizeof *g);
+    if (!g)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+    g->shared = egl_context != NULL;
+    int rc = g->shared ? hfs_gl_context_create_shared(egl_display, egl_context, &g->ctx, err)
+                       : hfs_gl_context_create(context, &g->ctx, err);
+    if (!rc)
+        rc = setup(g, profile, strict_limits, err);
+    if (rc) {
+        hfs_gles_destroy(g);
+        return rc;
+    }
+    hfs_gles_release(g);
     *out = g;
     return HFS_OK;
+}
 
-fail:
-    hfs_gles_destroy(g);
-    return rc;
+int hfs_gles_create(const char *context, const char *profile, int strict_limits, hfs_gles **out,
+                    hfs_error *err)
+{
+    return create(context, NULL, NULL, profile, strict_limits, out, err);
+}
+
+int hfs_gles_create_shared(void *egl_display, void *egl_context, const char *profile,
+                           int strict_limits, hfs_gles **out, hfs_error *err)
+{
+    if (!egl_display || !egl_context)
+        return hfs_fail(err, HFS_E_INVALID, "renderer desc: egl_display and egl_share_context "
+                        "go together (%s is NULL)", egl_display ? "egl_share_context"
+                                                                : "egl_display");
+    return create(NULL, egl_display, egl_context, profile, strict_limits, out, err);
+}
+
+void hfs_gles_release(hfs_gles *g)
+{
+    if (g && g->ctx)
+        hfs_gl_context_release(g->ctx);
 }
 
 void hfs_gles_destroy(hfs_gles *g)
@@ -96,6 +126,7 @@ void hfs_gles_destroy(hfs_gles *g)
         hfs_gles_block_texture_free(&g->keys_tex, gl);
         hfs_gles_block_texture_free(&g->local_tex, gl);
         hfs_gles_view_free(g);
+        hfs_gles_lit_texture_free(g);
     }
     hfs_gles_wedge_textures_free(&g->wedge, gl);
     hfs_gles_albedo_texture_free(&g->albedo, gl);
@@ -210,10 +241,12 @@ static void report_timings(hfs_gles *g, double t_start)
     t->frame_ms = hfs_gles_now_ms() - t_start;
 }
 
-/* One frame, with a view from cam when cam is not NULL. */
+/* One frame, with a view from cam when cam is not NULL, into the lit
+ * texture instead of out when lit is not NULL. */
 static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                         const hfs_quality *q, hfs_image *out, const hfs_camera *cam,
-                        const hfs_object_set *obj, int w, int h, float *view, hfs_error *err)
+                        const hfs_object_set *obj, int w, int h, float *view,
+                        const hfs_lit_texture_desc *lit, hfs_error *err)
 {
     const double t_start = hfs_gles_now_ms();
     int rc = hfs_gl_context_make_current(g->ctx, err);
@@ -228,13 +261,16 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
     hfs_gles_frame fr = empty;
     fr.f = f, fr.q = q, fr.out = out;
     fr.cam = cam, fr.view_w = w, fr.view_h = h, fr.view_rgb = view, fr.objects = obj;
+    fr.lit = lit;
     frame_lights(l, q, &fr);
     /* A black field still has a view (its sky): that frame runs. */
     if (!cam && ((!fr.has_env && fr.n_keys == 0 && fr.n_local == 0) || !(l->albedo > 0.0 || fr.gloss.on))) {
         /* Black without a pass; the planner keeps the last lit frame's state
          * (its image is still right for that scene). */
-        memset(out->rgb, 0, (size_t)out->width * out->height * 3 * sizeof *out->rgb);
         g->plan.black = 1;
+        if (lit) /* but not its texture, which is now black */
+            return hfs_gles_lit_texture_black(g, f->width, f->height, lit, err);
+        memset(out->rgb, 0, (size_t)out->width * out->height * 3 * sizeof *out->rgb);
         return HFS_OK;
     }
     rc = hfs_gles_frame_render(g, &fr, err);
@@ -258,7 +294,19 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
 int hfs_gles_render(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                     const hfs_quality *q, hfs_image *out, hfs_error *err)
 {
-    return render_frame(g, f, l, q, out, NULL, NULL, 0, 0, NULL, err);
+    return render_frame(g, f, l, q, out, NULL, NULL, 0, 0, NULL, NULL, err);
+}
+
+int hfs_gles_render_texture(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
+                            const hfs_quality *q, const hfs_lit_texture_desc *how,
+                            hfs_lit_texture *out, hfs_error *err)
+{
+    if (!g->shared)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "render texture: the renderer was made "
+                        "without egl_share_context (its texture would be in no context of "
+                        "the application's)");
+    int rc = render_frame(g, f, l, q, NULL, NULL, NULL, 0, 0, NULL, how, err);
+    return rc ? rc : hfs_gles_lit_texture_hand_out(g, out, err);
 }
 
 int hfs_gles_render_view(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
@@ -266,5 +314,5 @@ int hfs_gles_render_view(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                          const hfs_object_set *obj, int w, int h, hfs_image *out, float *view,
                          hfs_error *err)
 {
-    return render_frame(g, f, l, q, out, cam, obj, w, h, view, err);
+    return render_frame(g, f, l, q, out, cam, obj, w, h, view, NULL, err);
 }

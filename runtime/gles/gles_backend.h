@@ -89,7 +89,19 @@ struct hfs_gles_frame {
     const hfs_object_set *objects;        /* lit, in the view's world, or NULL */
     int view_w, view_h;
     float *view_rgb;                      /* view_w * view_h * 3, row 0 at the top */
+    /* Embedding (pass_lit_texture.c): the texture wanted instead of the
+     * image (out is then NULL), or NULL. */
+    const hfs_lit_texture_desc *lit;
 };
+
+/* The lit texture handed to the application (pass_lit_texture.c), in the
+ * share group of its context. */
+typedef struct hfs_gles_lit_texture {
+    GLuint tex, fbo;
+    int w, h;
+    GLenum format;                        /* GL_RGBA16F or GL_RGBA8 */
+    GLsync fence;                         /* after the last frame's draw */
+} hfs_gles_lit_texture;
 
 typedef struct hfs_gles_view_state hfs_gles_view_state; /* pass_view.c */
 
@@ -130,6 +142,8 @@ struct hfs_gles {
 
     double lit_scale;                     /* out_scale of the last shaded frame */
     hfs_gles_view_state *view;            /* the 3-D view's targets (pass_view.c) */
+    int shared;                           /* ctx shares the application's objects */
+    hfs_gles_lit_texture lit;             /* pass_lit_texture.c */
 
     hfs_gles_timing timing;
     int stage_slot[HFS_PASS_COUNT];       /* first timing slot of each pass */
@@ -147,6 +161,14 @@ void hfs_gles_lit_targets(const hfs_gles *g, const hfs_gles_frame *fr, GLuint te
  * none of that size; and the view's GL objects freed (pass_view.c). */
 int hfs_gles_view_copy_kept(const hfs_gles *g, hfs_gles_frame *fr);
 void hfs_gles_view_free(hfs_gles *g);
+
+/* Embedding (pass_lit_texture.c): the texture black (a frame no light
+ * reaches), the frame's fence made and flushed and *out filled; and the
+ * texture and fence freed. */
+int hfs_gles_lit_texture_black(hfs_gles *g, int w, int h, const hfs_lit_texture_desc *how,
+                               hfs_error *err);
+int hfs_gles_lit_texture_hand_out(hfs_gles *g, hfs_lit_texture *out, hfs_error *err);
+void hfs_gles_lit_texture_free(hfs_gles *g);
 
 /* Scratch memory of at least `bytes`, kept between frames (NULL: none). */
 void *hfs_gles_scratch(hfs_gles *g, size_t bytes);

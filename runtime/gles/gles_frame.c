@@ -199,6 +199,12 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
         s->cam = *fr->cam;
         s->view_w = fr->view_w, s->view_h = fr->view_h;
     }
+    if (fr->lit) {
+        s->texture = 1;
+        s->lit_encoding = (int)fr->lit->encoding;
+        s->lit_tonemap = fr->lit->tonemap;
+        s->lit_exposure = fr->lit->exposure;
+    }
 }
 
 /* Plans the frame; 0 when no pass needs to run (the kept image holds). */
@@ -218,8 +224,15 @@ static int plan(hfs_gles *g, hfs_gles_frame *fr)
         fr->local_open[i] = hfs_local_light_open(&g->extent, &fr->local[i]);
     hfs_gles_frame_sig sig;
     frame_signature(fr, &sig);
+    if (!fr->lit) { /* an image frame keeps the texture's encoding: no change to it */
+        sig.lit_encoding = g->plan.last.lit_encoding;
+        sig.lit_tonemap = g->plan.last.lit_tonemap;
+        sig.lit_exposure = g->plan.last.lit_exposure;
+    }
     const size_t n_img = (size_t)fr->L.w * fr->L.h * 3;
-    const int kept = g->last_img && g->last_img_cap >= n_img;
+    /* A texture frame needs no image: the planner alone says whether the
+     * kept texture holds. */
+    const int kept = fr->lit || (g->last_img && g->last_img_cap >= n_img);
     const int view_kept = !fr->cam || hfs_gles_view_copy_kept(g, fr);
     if (hfs_gles_plan_frame(&g->plan, &sig, terrain_why) == 0 && kept && view_kept &&
         !fr->objects)
@@ -229,8 +242,10 @@ static int plan(hfs_gles *g, hfs_gles_frame *fr)
         g->plan.run[HFS_PASS_VIEW][0] = 1;
     /* The readback needs this frame's output scale, and a shaded frame is
      * read back: the two go together (as does a frame without a kept
-     * image, e.g. the first after a failure). */
-    if (g->plan.run[HFS_PASS_SHADE][0] || g->plan.run[HFS_PASS_READBACK][0] || !kept)
+     * image, e.g. the first after a failure).  The lit texture reads the
+     * scale the targets were shaded with (g->lit_scale) instead. */
+    if (!fr->lit &&
+        (g->plan.run[HFS_PASS_SHADE][0] || g->plan.run[HFS_PASS_READBACK][0] || !kept))
         g->plan.run[HFS_PASS_SHADE][0] = g->plan.run[HFS_PASS_READBACK][0] = 1;
     for (int p = 0; p < HFS_PASS_COUNT; ++p)
         fr->run[p] = g->plan.run[p];
@@ -311,8 +326,9 @@ int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     if ((rc = check_limits(g, fr, err)) || (rc = fit_resources(g, fr, err)))
         return rc;
     const size_t n_img = (size_t)fr->L.w * fr->L.h * 3;
-    if (!plan(g, fr)) { /* nothing changed: no pass; the last image again */
-        memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
+    if (!plan(g, fr)) { /* nothing changed: no pass; the last image (texture) again */
+        if (fr->out)
+            memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
         for (int p = 0; p < HFS_PASS_COUNT; ++p)
             if (p != HFS_PASS_VIEW || fr->cam)
                 mark_cached(g, p);
@@ -322,8 +338,9 @@ int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     for (int p = 0; p < HFS_PASS_COUNT; ++p) {
         if (p == HFS_PASS_SHADE && !fr->run[p][0]) {
             /* Neither shading nor read-back: the kept image holds; the
-             * passes after the read-back (the view) may still run. */
-            memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
+             * passes after the read-back (lit texture, view) may still run. */
+            if (fr->out)
+                memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
             mark_cached(g, HFS_PASS_SHADE);
             mark_cached(g, HFS_PASS_BOUNCE);
             mark_cached(g, HFS_PASS_READBACK);

@@ -37,6 +37,7 @@ typedef enum hfs_gles_pass_id {
     HFS_PASS_SHADE,          /* pass_shade.c: exit radiance (hi, lo)               */
     HFS_PASS_BOUNCE,         /* pass_bounce.c: indirect bounces, direct + indirect */
     HFS_PASS_READBACK,       /* pass_readback.c: the image                         */
+    HFS_PASS_LIT_TEXTURE,    /* pass_lit_texture.c: the lit texture (embedding)    */
     HFS_PASS_VIEW,           /* pass_view.c: the 3-D view and its read-back        */
     HFS_PASS_COUNT
 } hfs_gles_pass_id;
@@ -78,7 +79,7 @@ int hfs_gles_pass_max_instances(const hfs_gles_pass *p);
 extern const hfs_gles_pass hfs_pass_terrain, hfs_pass_env_horizons, hfs_pass_key_horizons,
     hfs_pass_local_lights, hfs_pass_env_transfer, hfs_pass_env_map_slices,
     hfs_pass_key_visibility, hfs_pass_shade,
-    hfs_pass_bounce, hfs_pass_readback;
+    hfs_pass_bounce, hfs_pass_readback, hfs_pass_lit_texture;
 extern const hfs_gles_pass hfs_pass_view;
 
 #endif /* HFS_GLES_PASS_H */

@@ -15,6 +15,7 @@ const hfs_gles_pass *const hfs_gles_pass_table[HFS_PASS_COUNT] = {
     [HFS_PASS_SHADE] = &hfs_pass_shade,
     [HFS_PASS_BOUNCE] = &hfs_pass_bounce,
     [HFS_PASS_READBACK] = &hfs_pass_readback,
+    [HFS_PASS_LIT_TEXTURE] = &hfs_pass_lit_texture,
     [HFS_PASS_VIEW] = &hfs_pass_view,
 };
 

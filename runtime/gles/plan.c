@@ -36,6 +36,7 @@ static void declare_inputs(hfs_gles_plan *gp)
     gp->in_light_set = hfs_plan_input(p, "light set");
     gp->in_bounce = hfs_plan_input(p, "bounce settings");
     gp->in_camera = hfs_plan_input(p, "camera");
+    gp->in_lit = hfs_plan_input(p, "lit texture settings");
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         snprintf(name, sizeof name, "key %d swath", i);
         gp->in_key_geom[i] = hfs_plan_input(p, name);
@@ -102,9 +103,10 @@ int hfs_gles_plan_init(hfs_gles_plan *gp, hfs_error *err)
     gp->pr_bounced = node_find(p, "bounced targets", 0);
     gp->pr_view = node_find(p, "view image", 0);
     gp->pr_mocc = node_find(p, "env map occlusion", 0);
+    gp->pr_lit = node_find(p, "lit texture", 0);
     int ok = gp->pr_pyramid >= 0 && gp->pr_env >= 0 && gp->pr_transfer >= 0 &&
              gp->pr_targets >= 0 && gp->pr_image >= 0 && gp->pr_bounced >= 0;
-    ok &= gp->pr_view >= 0 && gp->pr_mocc >= 0;
+    ok &= gp->pr_view >= 0 && gp->pr_mocc >= 0 && gp->pr_lit >= 0;
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         ok &= (gp->pr_key[i] = node_find(p, "key %d horizons", i)) >= 0;
         ok &= (gp->pr_kfactor[i] = node_find(p, "key %d factor", i)) >= 0;
@@ -194,6 +196,9 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
     if (a->view != b->view || a->view_w != b->view_w || a->view_h != b->view_h ||
         (b->view && !camera_equal(&a->cam, &b->cam)))
         hfs_plan_change(p, gp->in_camera, "camera or view size changed");
+    if (a->lit_encoding != b->lit_encoding || a->lit_tonemap != b->lit_tonemap ||
+        a->lit_exposure != b->lit_exposure)
+        hfs_plan_change(p, gp->in_lit, "lit texture encoding changed");
     if (a->bounces != b->bounces || a->bounce_dirs != b->bounce_dirs ||
         a->bounce_stride != b->bounce_stride || a->refine != b->refine ||
         a->capped != b->capped || a->bsub != b->bsub)
@@ -225,6 +230,9 @@ static void bounce_reads(hfs_gles_plan *gp, const hfs_gles_frame_sig *now)
         reads[n++] = gp->pr_bounced;
     reads[n] = -1;
     hfs_plan_pass_reads(p, gp->pass[HFS_PASS_READBACK][0], reads);
+    reads[n++] = gp->in_lit; /* the lit texture: the read-back's reads and its encoding */
+    reads[n] = -1;
+    hfs_plan_pass_reads(p, gp->pass[HFS_PASS_LIT_TEXTURE][0], reads);
     n = 0;
     reads[n++] = gp->pr_pyramid;
     reads[n++] = gp->pr_targets;
@@ -276,7 +284,7 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
     bounce_reads(gp, now);
 
     hfs_plan_set need = {{0}};
-    hfs_plan_set_add(&need, gp->pr_image);
+    hfs_plan_set_add(&need, now->texture ? gp->pr_lit : gp->pr_image);
     if (now->view)
         hfs_plan_set_add(&need, gp->pr_view);
     gp->deferred = 0;
@@ -345,8 +353,12 @@ void hfs_gles_plan_report(const hfs_gles_plan *gp, hfs_frame_report *out)
         if (!s->run && !strcmp(s->reason, "not needed") &&
             (!strncmp(gp->p.pass[i].name, "key ", 4) || !strncmp(gp->p.pass[i].name, "local ", 6)))
             continue;
-        if (!s->run && !strcmp(s->reason, "not needed") && !strcmp(gp->p.pass[i].name, "view"))
-            continue; /* a frame without a view */
+        /* A frame without a view; a frame that wants the image, not the
+         * lit texture, or the other way round. */
+        const char *name = gp->p.pass[i].name;
+        if (!s->run && !strcmp(s->reason, "not needed") &&
+            (!strcmp(name, "view") || !strcmp(name, "lit texture") || !strcmp(name, "readback")))
+            continue;
         hfs_frame_step *o = &out->step[out->n_steps++];
         snprintf(o->pass, sizeof o->pass, "%s", gp->p.pass[i].name);
         o->ran = s->run;

@@ -35,6 +35,10 @@
  *                     grid's horizons cap the bands)  writes the bounced targets
  *            readback reads the output targets, bounce settings (and the
  *                     bounced targets with bounces)   writes the image
+ *            lit texture reads the output targets, bounce settings, lit
+ *                     texture settings (and the bounced targets with
+ *                     bounces)  writes lit texture (needed only by frames
+ *                     that want it, instead of the image)
  *            view     reads pyramid, output targets (and the bounced
  *                     targets with bounces), env light, light set,
  *                     camera (camera and view size)  writes view image
@@ -92,6 +96,9 @@ typedef struct hfs_gles_frame_sig {
     int view;                     /* the frame has a 3-D view: */
     hfs_camera cam;               /* its camera */
     int view_w, view_h;           /* and size */
+    int texture;                  /* the frame wants the lit texture, not the image: */
+    int lit_encoding, lit_tonemap;/* its encoding (hfs_lit_texture_desc) */
+    double lit_exposure;
 } hfs_gles_frame_sig;
 
 /* Instances of a pass: at most this many (the most lights of a kind). */
@@ -105,6 +112,7 @@ typedef struct hfs_gles_plan {
     int in_light_set;             /* which light kinds / how many lights */
     int in_bounce;                /* bounce settings */
     int in_camera, pr_view;       /* the 3-D view: camera and size; its image */
+    int in_lit, pr_lit;           /* the lit texture: its encoding; the texture */
     int in_key_geom[HFS_GLES_PLAN_KEYS], in_key_dir[HFS_GLES_PLAN_KEYS];
     int in_key_rad[HFS_GLES_PLAN_KEYS];
     int pr_pyramid, pr_env, pr_transfer, pr_targets, pr_image, pr_bounced;

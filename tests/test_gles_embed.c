@@ -1,0 +1,315 @@
+/*
+ * test_gles_embed.c — embedding without a read-back (issue 20,
+ * hfs_renderer_render_texture): the test makes its own EGL surfaceless
+ * context, as an application would, and a renderer sharing with it; the
+ * lit texture is read back IN THE TEST'S CONTEXT (attached to the test's
+ * own framebuffer, after glWaitSync on the renderer's fence) and compared
+ * with hfs_renderer_render's image:
+ *   radiance  RGBA16F: each value the image's converted to fp16, so
+ *             |t - v| <= 2^-10 |v| + 2^-24 (one ulp, normal or subnormal:
+ *             GL leaves the float -> half rounding to the driver, and
+ *             llvmpipe truncates: measured 1.997 half-ulps, 0.9985 of
+ *             this bound) plus the image's own float rounding (2^-24 |v|);
+ *   srgb8     RGBA8: hfs_srgb8_encode's byte, +-1 where the GPU's float
+ *             OETF lands on the other side of a rounding edge (measured:
+ *             printed count).
+ * And the planner: a second frame with nothing changed runs no pass and
+ * hands out the same texture; a re-tinted key light runs the shading and
+ * the lit texture, not the read-back; a black frame and back; the
+ * application's context is current again after every call (renders,
+ * point queries, destroy); refusals.
+ */
+#include "gl_api.h"
+#include "gl_test.h"
+#include "gl_util.h"
+#include "hfs_io.h"
+#include "test_gles_scenes.h"
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <math.h>
+#include <string.h>
+
+static int failures;
+#define CHECK(c, ...)                                                                        \
+    do {                                                                                     \
+        if (!(c)) {                                                                          \
+            printf("%s:%d: FAIL: ", __FILE__, __LINE__);                                     \
+            printf(__VA_ARGS__);                                                             \
+            printf("\n");                                                                    \
+            ++failures;                                                                      \
+        }                                                                                    \
+    } while (0)
+
+typedef struct app {
+    EGLDisplay dpy;
+    EGLContext ctx;
+    hfs_gl gl;
+    GLuint fbo;
+} app;
+
+static void *app_proc(void *user, const char *name)
+{
+    (void)user;
+    return (void *)eglGetProcAddress(name);
+}
+
+/* The application's own context: surfaceless Mesa, ES 3; exits 77 where
+ * this machine has no GLES context at all. */
+static void app_make(app *a)
+{
+    hfs_error err = {""};
+    PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
+        (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
+    a->dpy = get_display ? get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL)
+                         : EGL_NO_DISPLAY;
+    const EGLint cfg_attr[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_SURFACE_TYPE, 0,
+                               EGL_NONE};
+    const EGLint ctx_attr[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_NONE};
+    EGLConfig cfg = EGL_NO_CONFIG_KHR;
+    EGLint n = 0;
+    if (a->dpy == EGL_NO_DISPLAY || !eglInitialize(a->dpy, NULL, NULL) ||
+        !eglBindAPI(EGL_OPENGL_ES_API) || !eglChooseConfig(a->dpy, cfg_attr, &cfg, 1, &n) ||
+        (a->ctx = eglCreateContext(a->dpy, n ? cfg : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT,
+                                   ctx_attr)) == EGL_NO_CONTEXT ||
+        !eglMakeCurrent(a->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, a->ctx)) {
+        hfs_fail(&err, HFS_E_CONTEXT, "EGL error 0x%x", (unsigned)eglGetError());
+        gl_test_unavailable("the application's own EGL context", &err);
+    }
+    if (hfs_gl_load(&a->gl, app_proc, NULL, &err))
+        gl_test_unavailable("GL entry points of the application's context", &err);
+    a->gl.GenFramebuffers(1, &a->fbo);
+}
+
+static void app_free(app *a)
+{
+    a->gl.DeleteFramebuffers(1, &a->fbo);
+    eglMakeCurrent(a->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(a->dpy, a->ctx);
+}
+
+/* The lit texture as the application sees it: wait on the fence, attach
+ * the texture to the application's framebuffer, read RGBA floats. */
+static int app_read(app *a, const hfs_lit_texture *t, float *rgba)
+{
+    const hfs_gl *gl = &a->gl;
+    hfs_error err = {""};
+    gl->WaitSync((GLsync)t->fence, 0, GL_TIMEOUT_IGNORED);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, a->fbo);
+    gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->texture, 0);
+    int rc = HFS_OK;
+    if (t->internal_format == GL_RGBA16F) {
+        rc = hfs_gl_read_rgba(gl, a->fbo, 0, 0, t->width, t->height, HFS_GL_READ_AUTO, rgba,
+                              NULL, &err);
+    } else { /* RGBA8: the one pair ES 3.0 guarantees for it */
+        const size_t n = (size_t)t->width * t->height * 4;
+        unsigned char *b = malloc(n);
+        gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
+        if (b)
+            gl->ReadPixels(0, 0, t->width, t->height, GL_RGBA, GL_UNSIGNED_BYTE, b);
+        for (size_t i = 0; b && i < n; ++i)
+            rgba[i] = (float)b[i] / 255.0f;
+        rc = b ? hfs_gl_check(gl, "read RGBA8", &err) : hfs_fail(&err, HFS_E_NOMEM, "no memory");
+        free(b);
+    }
+    CHECK(!rc, "read in the application's context: %s", err.msg);
+    return rc;
+}
+
+/* The texture in the application's context against the image: radiance
+ * within fp16's rounding, or the sRGB bytes within one code. */
+static void compare(app *a, const hfs_lit_texture *t, const hfs_image *img,
+                    const hfs_lit_texture_desc *how, const char *what)
+{
+    const size_t npx = (size_t)img->width * img->height;
+    float *rgba = malloc(npx * 4 * sizeof *rgba);
+    if (!rgba || app_read(a, t, rgba)) {
+        free(rgba);
+        CHECK(0, "%s: no pixels", what);
+        return;
+    }
+    double worst = 0.0; /* |t - v| over its bound */
+    long off_by_one = 0, worse = 0;
+    for (size_t i = 0; i < npx; ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double v = img->rgb[3 * i + (size_t)c], tv = rgba[4 * i + (size_t)c];
+            if (how->encoding == HFS_LIT_RADIANCE) {
+                const double bound = (0x1p-10 + 0x1p-24) * fabs(v) + 0x1p-24;
+                worst = fmax(worst, fabs(tv - v) / bound);
+                continue;
+            }
+            const double want = hfs_srgb8_encode((float)v, how->exposure ? how->exposure : 1.0,
+                                                 (hfs_tonemap)how->tonemap);
+            const double d = fabs(floor(tv * 255.0 + 0.5) - want);
+            off_by_one += d == 1.0;
+            worse += d > 1.0;
+        }
+    if (how->encoding == HFS_LIT_RADIANCE) {
+        printf("%-28s radiance: worst |t - v| / fp16 bound %.3f\n", what, worst);
+        CHECK(worst <= 1.0, "%s: radiance beyond fp16's rounding (%.3f of the bound)", what,
+              worst);
+    } else {
+        printf("%-28s srgb8: %ld of %zu values one code off, %ld more\n", what, off_by_one,
+               npx * 3, worse);
+        CHECK(worse == 0 && off_by_one <= (long)(npx * 3 / 100),
+              "%s: sRGB bytes differ (%ld by one, %ld by more)", what, off_by_one, worse);
+    }
+    free(rgba);
+}
+
+static void check_current(const app *a, const char *after)
+{
+    CHECK(eglGetCurrentContext() == a->ctx, "after %s the application's context is not "
+          "current", after);
+}
+
+static int n_ran(const hfs_renderer *r)
+{
+    hfs_frame_report rep;
+    hfs_renderer_frame_report(r, &rep);
+    return rep.n_ran;
+}
+
+/* What only the texture path refuses, one line each; the application's
+ * context made current again after the renderer that has its own. */
+static void refusals(app *a, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q)
+{
+    hfs_error err = {""};
+    hfs_lit_texture t;
+    hfs_renderer *own = gl_test_gles(); /* its own context: no texture of ours */
+    CHECK(hfs_renderer_render_texture(own, f, l, q, NULL, &t, &err) == HFS_E_UNSUPPORTED &&
+              t.texture == 0, "a renderer without egl_share_context: %s", err.msg);
+    printf("refused: %s\n", err.msg);
+    hfs_renderer_destroy(own);
+    eglMakeCurrent(a->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, a->ctx);
+    const hfs_renderer_desc cpu_desc = {.backend = HFS_BACKEND_CPU};
+    hfs_renderer *cpu = NULL;
+    CHECK(!hfs_renderer_create(&cpu_desc, &cpu, &err), "cpu renderer: %s", err.msg);
+    CHECK(hfs_renderer_render_texture(cpu, f, l, q, NULL, &t, &err) == HFS_E_UNSUPPORTED,
+          "the cpu backend: %s", err.msg);
+    printf("refused: %s\n", err.msg);
+    hfs_renderer_destroy(cpu);
+    const hfs_renderer_desc half = {.backend = HFS_BACKEND_GLES, .egl_display = a->dpy};
+    hfs_renderer *r = NULL;
+    CHECK(hfs_renderer_create(&half, &r, &err) == HFS_E_INVALID && !r,
+          "a display without a context: %s", err.msg);
+    printf("refused: %s\n", err.msg);
+    check_current(a, "the refusals");
+}
+
+/* The planner on the texture path: nothing changed, a re-tinted key, the
+ * image again, a black frame and back. */
+static void planned(app *a, hfs_renderer *r, const hfs_field *f, hfs_lighting l,
+                    const hfs_quality *q, const hfs_lit_texture *first)
+{
+    hfs_error err = {""};
+    hfs_lit_texture t;
+    char ran[256];
+    CHECK(!hfs_renderer_render_texture(r, f, &l, q, NULL, &t, &err), "%s", err.msg);
+    CHECK(n_ran(r) == 0 && t.texture == first->texture,
+          "nothing changed: ran \"%s\", texture %u (was %u)", gl_test_ran(r, ran, sizeof ran),
+          t.texture, first->texture);
+    l.key[0].radiance[0] *= 0.5f;
+    CHECK(!hfs_renderer_render_texture(r, f, &l, q, NULL, &t, &err), "%s", err.msg);
+    gl_test_ran(r, ran, sizeof ran);
+    printf("re-tinted key ran: %s\n", ran);
+    CHECK(!strcmp(ran, "shade lit texture "), "re-tinted key ran \"%s\"", ran);
+    hfs_image img = {0};
+    CHECK(!hfs_image_alloc(&img, f->width, f->height, &err), "%s", err.msg);
+    CHECK(!hfs_renderer_render(r, f, &l, q, &img, NULL, NULL, &err), "%s", err.msg);
+    gl_test_ran(r, ran, sizeof ran);
+    printf("then the image ran: %s\n", ran);
+    CHECK(strstr(ran, "readback") != NULL, "the image after a texture frame ran \"%s\"", ran);
+    compare(a, &t, &img, &(hfs_lit_texture_desc){0}, "re-tinted key");
+    /* The texture again after an image frame: nothing changed for it (an
+     * image frame leaves the texture's encoding as it was; measured: no
+     * pass), at most the lit pass, never for its encoding. */
+    CHECK(!hfs_renderer_render_texture(r, f, &l, q, NULL, &t, &err), "%s", err.msg);
+    gl_test_ran(r, ran, sizeof ran);
+    hfs_frame_report rep;
+    hfs_renderer_frame_report(r, &rep);
+    for (int i = 0; i < rep.n_steps; ++i)
+        CHECK(!strstr(rep.step[i].reason, "encoding"), "after an image frame: %s ran for \"%s\"",
+              rep.step[i].pass, rep.step[i].reason);
+    printf("texture after that image ran: %s\n", ran);
+    CHECK(!strcmp(ran, "lit texture ") || !ran[0], "texture after the image ran \"%s\"", ran);
+
+    hfs_lighting dark;
+    hfs_lighting_defaults(&dark);
+    CHECK(!hfs_renderer_render_texture(r, f, &dark, q, NULL, &t, &err), "%s", err.msg);
+    hfs_image black = {0};
+    CHECK(!hfs_image_alloc(&black, f->width, f->height, &err), "%s", err.msg);
+    memset(black.rgb, 0, (size_t)f->width * f->height * 3 * sizeof *black.rgb);
+    compare(a, &t, &black, &(hfs_lit_texture_desc){0}, "no light: black");
+    CHECK(!hfs_renderer_render_texture(r, f, &l, q, NULL, &t, &err), "%s", err.msg);
+    gl_test_ran(r, ran, sizeof ran);
+    CHECK(strstr(ran, "lit texture") != NULL, "lit again after black ran \"%s\"", ran);
+    compare(a, &t, &img, &(hfs_lit_texture_desc){0}, "lit again after black");
+    check_current(a, "the planned frames");
+    hfs_image_free(&black);
+    hfs_image_free(&img);
+}
+
+int main(void)
+{
+    app a;
+    app_make(&a);
+    scene s;
+    if (scene_make("fractal", 96, NULL, &s))
+        return 1;
+    const hfs_lighting l = scene_lighting(1, 1);
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    hfs_error err = {""};
+
+    const hfs_renderer_desc desc = {.backend = HFS_BACKEND_GLES, .egl_display = a.dpy,
+                                    .egl_share_context = a.ctx};
+    hfs_renderer *r = gl_test_renderer(&desc);
+    check_current(&a, "create");
+    printf("renderer: %s\n", hfs_renderer_backend_name(r));
+    hfs_image img = {0};
+    CHECK(!hfs_image_alloc(&img, s.f.width, s.f.height, &err), "%s", err.msg);
+    CHECK(!hfs_renderer_render(r, &s.f, &l, &q, &img, NULL, NULL, &err), "%s", err.msg);
+    check_current(&a, "render");
+
+    hfs_lit_texture t;
+    CHECK(!hfs_renderer_render_texture(r, &s.f, &l, &q, NULL, &t, &err), "%s", err.msg);
+    check_current(&a, "render_texture");
+    char ran[256];
+    gl_test_ran(r, ran, sizeof ran);
+    printf("texture after the image ran: %s\n", ran);
+    CHECK(!strcmp(ran, "lit texture "), "texture after the image ran \"%s\"", ran);
+    CHECK(t.internal_format == GL_RGBA16F && t.width == s.f.width && t.height == s.f.height &&
+              t.fence, "texture %u: format 0x%x, %dx%d", t.texture, t.internal_format,
+          t.width, t.height);
+    compare(&a, &t, &img, &(hfs_lit_texture_desc){0}, "radiance");
+
+    double vmax = hfs_image_max(&img);
+    for (int tm = 0; tm < 2; ++tm) {
+        const hfs_lit_texture_desc srgb = {HFS_LIT_SRGB8, 1.0 / vmax, tm};
+        hfs_lit_texture ts;
+        CHECK(!hfs_renderer_render_texture(r, &s.f, &l, &q, &srgb, &ts, &err), "%s", err.msg);
+        CHECK(ts.internal_format == GL_RGBA8, "srgb8: format 0x%x", ts.internal_format);
+        compare(&a, &ts, &img, &srgb, tm ? "srgb8, reinhard" : "srgb8, clamp");
+    }
+    const hfs_lit_texture_desc bad = {HFS_LIT_SRGB8, -1.0, 0};
+    CHECK(hfs_renderer_render_texture(r, &s.f, &l, &q, &bad, &t, &err) == HFS_E_INVALID,
+          "exposure -1 accepted");
+    printf("refused: %s\n", err.msg);
+    CHECK(!hfs_renderer_render_texture(r, &s.f, &l, &q, NULL, &t, &err), "%s", err.msg);
+    const double xyz[3] = {10.0 * s.f.dx, 20.0 * s.f.dx, 50.0};
+    float vis[HFS_MAX_KEY_LIGHTS];
+    CHECK(!hfs_renderer_query_points(r, &s.f, &l, &q, xyz, 1, vis, &err), "%s", err.msg);
+    check_current(&a, "query_points");
+    planned(&a, r, &s.f, l, &q, &t);
+    refusals(&a, &s.f, &l, &q);
+
+    hfs_renderer_destroy(r);
+    check_current(&a, "destroy");
+    hfs_image_free(&img);
+    scene_free(&s);
+    app_free(&a);
+    printf("embed: %s\n", failures ? "FAILED" : "ok");
+    return failures ? 1 : 0;
+}
