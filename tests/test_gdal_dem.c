@@ -107,6 +107,19 @@ static void test_write(const hfs_heightmap *hm)
     CHECK(same);
     printf("write: a %dx%d lit GeoTIFF with the heights' geotransform and CRS\n", w, h);
     GDALClose(ds);
+    /* A PNG of the grid with its world file: GDAL places it the same. */
+    REQUIRE(hfs_png_write(path_of("lit.png"), &img, NULL, &err) == HFS_OK &&
+            hfs_gdal_write_world_file(NULL, path_of("lit.png"), hm, &err) == HFS_OK, "%s",
+            err.msg);
+    ds = GDALOpen(path_of("lit.png"), GA_ReadOnly);
+    REQUIRE(ds != NULL, "lit.png does not open");
+    same = GDALGetGeoTransform(ds, gt) == CE_None;
+    for (int k = 0; k < 6 && same; ++k)
+        same = fabs(gt[k] - hm->geotransform[k]) <= 1e-9 * (1.0 + fabs(gt[k]));
+    CHECK(same);
+    printf("world file: lit.png placed at (%.3f, %.3f), %.3f x %.3f a pixel\n", gt[0], gt[3],
+           gt[1], gt[5]);
+    GDALClose(ds);
     free(band), free(img.rgb);
 }
 

@@ -440,6 +440,11 @@ static int cmd_render(const cli *c, hfs_error *err)
 #ifdef HFS_HAVE_GDAL
     if (c->out_tif && (rc = hfs_gdal_write_geotiff(outs, c->out_tif, shown, &in.hm, err)))
         goto out;
+    /* The grid's PNG and PFM keep a GDAL-read DEM's place: world files. */
+    if (!c->v.view && c->out_pfm && (rc = hfs_gdal_write_world_file(outs, c->out_pfm, &in.hm, err)))
+        goto out;
+    if (!c->v.view && c->out_png && (rc = hfs_gdal_write_world_file(outs, c->out_png, &in.hm, err)))
+        goto out;
 #endif
     if (c->out_png) {
         hfs_png_opts po = {0};

@@ -75,3 +75,20 @@ int hfs_gdal_write_geotiff(hfs_outputs *o, const char *path, const hfs_image *im
     VSIFree(bytes);
     return rc;
 }
+
+int hfs_gdal_write_world_file(hfs_outputs *o, const char *path, const hfs_heightmap *hm,
+                              hfs_error *err)
+{
+    if (!hm || !hm->has_georef)
+        return HFS_OK;
+    char wpath[4096];
+    if (snprintf(wpath, sizeof wpath, "%sw", path) >= (int)sizeof wpath)
+        return hfs_fail(err, HFS_E_INVALID, "%s: path too long for its world file", path);
+    const double *g = hm->geotransform;
+    char text[256];
+    const int n = snprintf(text, sizeof text, "%.17g\n%.17g\n%.17g\n%.17g\n%.17g\n%.17g\n",
+                           g[1], g[4], g[2], g[5], g[0] + 0.5 * g[1] + 0.5 * g[2],
+                           g[3] + 0.5 * g[4] + 0.5 * g[5]);
+    int rc = o ? hfs_outputs_add(o, wpath, err) : HFS_OK;
+    return rc ? rc : hfs_bytes_write_to(o, wpath, text, (size_t)n, err);
+}

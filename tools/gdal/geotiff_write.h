@@ -16,4 +16,12 @@
 int hfs_gdal_write_geotiff(hfs_outputs *o, const char *path, const hfs_image *img,
                            const hfs_heightmap *hm, hfs_error *err);
 
+/* A world file beside a PNG or PFM of the grid (the ESRI six lines GDAL
+ * and GIS tools read, named PATH + "w": out.png -> out.pngw): the pixel
+ * size, no rotation, the upper-left texel's centre, from hm's
+ * geotransform (north-up).  Added to o and written through it; nothing
+ * when hm has no georeferencing.  The CRS travels in the GeoTIFF only. */
+int hfs_gdal_write_world_file(hfs_outputs *o, const char *path, const hfs_heightmap *hm,
+                              hfs_error *err);
+
 #endif /* HFS_GEOTIFF_WRITE_H */
