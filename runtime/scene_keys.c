@@ -169,7 +169,7 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                      {"height", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL},
                      {"width", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL}},
                     NULL, "a vertical post standing on the surface at (X, Y), world units, "
-                    "albedo R,G,B (default 0.8 grey); repeatable", 1},
+                    "albedo R,G,B (default 0.8 grey); repeatable"},
     [HFS_SK_BOX] = {"box", "X,Y,Z,W,D,H[,R,G,B]", HFS_FORM_REALS, 6, 1, 0,
                     {{"coordinate", HFS_UNIT_WORLD, NONNEG, NULL},
                      {"coordinate", HFS_UNIT_WORLD, NONNEG, NULL},
@@ -178,14 +178,14 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                      {"depth", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL},
                      {"height", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL}},
                     NULL, "an axis-aligned box centred on (X, Y), its bottom Z above the "
-                    "surface, W x D x H, world units; repeatable", 1},
+                    "surface, W x D x H, world units; repeatable"},
     [HFS_SK_POINT] = {"point", "X,Y,Z,S[,R,G,B]", HFS_FORM_REALS, 4, 1, 0,
                       {{"coordinate", HFS_UNIT_WORLD, NONNEG, NULL},
                        {"coordinate", HFS_UNIT_WORLD, NONNEG, NULL},
                        {"height above the surface", HFS_UNIT_WORLD, {0.0, 1e12, 0}, NULL},
                        {"size", HFS_UNIT_WORLD, {0.0, 1e12, 1}, NULL}},
                       NULL, "a marker: a cube of side S centred Z above the surface at (X, Y); "
-                      "repeatable", 1},
+                      "repeatable"},
     [HFS_SK_OBJECTS] = {"objects", "FILE", HFS_FORM_PATH, 0, 0, 0, {{0}}, NULL,
                         "objects from a file: one pin, box or point line (KEY = VALUE, as "
                         "here) per object, # comments"},

@@ -87,9 +87,14 @@ typedef struct hfs_scene_key {
     hfs_key_number num[HFS_KEY_MAX_NUMBERS]; /* env-sh: num[0] for all 16    */
     const char *def;           /* the default, written as a value; NULL: none */
     const char *help;
-    int colour;                /* REALS: an optional R,G,B albedo (each in
-                                  [0, 1]) may follow the n numbers          */
 } hfs_scene_key;
+
+/* Object keys (pin, box, point): an optional R,G,B albedo (each in [0, 1])
+ * may follow their n numbers. */
+static inline int hfs_scene_key_has_colour(hfs_scene_key_id id)
+{
+    return id == HFS_SK_PIN || id == HFS_SK_BOX || id == HFS_SK_POINT;
+}
 
 /* The row of id; NULL when id is out of range. */
 const hfs_scene_key *hfs_scene_key_get(hfs_scene_key_id id);

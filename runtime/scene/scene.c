@@ -76,14 +76,14 @@ static int parse_reals(hfs_scene_key_id id, const char *v, double *out, int *n,
 {
     const hfs_scene_key *k = hfs_scene_key_get(id);
     *n = id == HFS_SK_KEY && count_commas(v) == KEY_RGB_N - 1 ? KEY_RGB_N : k->n;
-    if (k->colour && count_commas(v) == k->n + 2)
+    if (hfs_scene_key_has_colour(id) && count_commas(v) == k->n + 2)
         *n = k->n + 3; /* an object's R,G,B albedo follows */
-    else if (k->colour && count_commas(v) != k->n - 1)
+    else if (hfs_scene_key_has_colour(id) && count_commas(v) != k->n - 1)
         return hfs_fail(err, HFS_E_INVALID, "%s: %s: expected %d comma-separated values (%d "
                         "with R,G,B) in '%s'", where, k->name, k->n, k->n + 3, v);
     int rc = parse_doubles(v, out, *n, where, k->name, err);
     for (int i = 0; i < *n && !rc; ++i) {
-        if (k->colour && i >= k->n) {
+        if (hfs_scene_key_has_colour(id) && i >= k->n) {
             if (!(out[i] >= 0.0 && out[i] <= 1.0))
                 rc = hfs_fail(err, HFS_E_INVALID, "%s: %s: albedo %g is out of range [0, 1]",
                               where, k->name, out[i]);
