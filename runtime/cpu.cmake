@@ -25,6 +25,7 @@ add_library(hfs_cpu STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_pyramid.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_horizon.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_render.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/cpu_render_setup.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_bounce.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_local.c     # local lights (issue 4)
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_points.c)   # points above the field (issue 19)

@@ -45,6 +45,7 @@
  * hfs_cpu_render uses the defaults.
  */
 #include "albedo.h"
+#include "cpu_render_ctx.h"
 #include "env_map_slices.h"
 #include "env_open.h"
 #include "backends.h"
@@ -68,60 +69,6 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
-
-/* One swath to trace: the environment or a key light. */
-typedef struct swath_job {
-    int is_env;
-    hfs_swath swath;
-    hfs_horizon_plan *plan;    /* NULL when shared with the environment */
-    hfs_visibility *vis;       /* owned unless vis_of >= 0 */
-    int vis_of;                /* job whose identical swath's object this uses */
-    /* key lights */
-    int shares_env;            /* horizons from the environment's row pass */
-    double dir[3];             /* unit direction to the disk centre */
-    double alpha;
-    double le[3];              /* radiance per channel */
-    double l_sh[HFS_SH_N];     /* SH of the disk, unit radiance */
-    double l_norm;             /* |l_sh| */
-} swath_job;
-
-typedef struct worker_scratch {
-    double *normals;           /* W x 3 */
-    double *floor_row;         /* W */
-    double *maxd;              /* W */
-    double *levels;            /* N x W */
-    double *omega;             /* per job: n_j x W, consecutive */
-    double *floors;            /* per key job: n_j x W (V_open) */
-    double *om, *fl;           /* gathered per texel: max n */
-    double *local_lo;          /* local lights (issue 4): W x 3, or NULL */
-    double *local_sp;          /* their glossy term: W x 3 when glossy, or NULL */
-} worker_scratch;
-
-typedef struct render_ctx {
-    const hfs_field *f;
-    hfs_image *out;
-    int w, h, n_levels;
-    int refine;                /* hfs_quality.refine */
-    double tie;                /* its absolute slope tie, hfs_horizon_tie_slope */
-    double rho_pi;             /* albedo / pi */
-    double h_zonal[HFS_ZH_N];  /* clamped cosine */
-    double l_env[3][HFS_SH_N]; /* rotated environment */
-    double env_neg[3];         /* rho * hfs_sh_negative_bound(l_env[c]) */
-    const float *env_open;     /* lighting env_open (env_open.h), or NULL */
-    double env_rotate;
-    int n_jobs;
-    swath_job *jobs;           /* jobs[0] is the environment when has_env */
-    int has_env;
-    int env_shared;            /* some key light shares the environment pass */
-    size_t *omega_at;          /* offset of job j in worker omega/floors */
-    worker_scratch *scratch;
-    const hfs_cpu_local *local; /* local lights (issue 4), NULL if none */
-    hfs_slice_table slices;    /* HFS_VIS_SLICE: the environment's slices (p NULL otherwise) */
-    hfs_map_slices map_slices; /* the map along them (fg NULL otherwise) */
-    hfs_gloss gloss;           /* glossy surfaces (gloss.h) */
-    float *spec;               /* W x H x 3 glossy term when gloss.on, added after the map */
-} render_ctx;
-
 
 /* The environment's exit radiance lies in [-neg, open + neg]: open = rho/pi
  * H.L is the unshadowed value and neg = rho * (negative part of L), 0 for a
@@ -171,6 +118,42 @@ static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int
         return hfs_horizon_bspline_max(levels + i, c->n_levels, (size_t)c->w, floor);
     return hfs_horizon_refined(plan, d, i, j, levels + i, (size_t)c->w, floor, c->refine,
                                c->tie, 0, 0);
+}
+
+/* The environment's exit radiance at texel i of the row (normal n, H(N)
+ * hn), added to lo; its glossy term to sp when the surface is (nr > 0). */
+static void env_texel(const render_ctx *c, worker_scratch *s, const swath_job *job,
+                      const double *omega, int i, const double n[3],
+                      const double hn[HFS_SH_N], double nr, const double r[3], double lo[3],
+                      double sp[3])
+{
+    const int nd = job->swath.n, w = c->w;
+    /* With the map's own slices the SH's occluded part is needed only by
+     * the glossy lobe (hfs_gloss_env). */
+    const int map = c->map_slices.fg != NULL, need_t = !map || nr > 0.0;
+    double v[HFS_SH_N], t[HFS_SH_N];
+    if (c->slices.p) { /* exact slice lighting (slice_light.h) */
+        memcpy(t, hn, sizeof t); /* the open hemisphere, exactly */
+        for (int d = 0; d < nd && need_t; ++d)
+            hfs_slice_add_occluded(&c->slices, d, n, omega[(size_t)d * w + i], t);
+    } else {
+        for (int d = 0; d < nd; ++d)
+            s->om[d] = omega[(size_t)d * w + i];
+        hfs_visibility_eval(job->vis, s->om, v);
+        hfs_sh_product(hn, v, t);
+    }
+    /* env-shade = map: the open sky beyond order 4, and with the map's
+     * slices the occluded part from the map instead of the SH. */
+    double d[3] = {0.0, 0.0, 0.0};
+    if (c->env_open)
+        hfs_env_open_lookup(c->env_open, n, c->env_rotate, d);
+    for (int q = 0; q < nd && map; ++q)
+        hfs_map_slices_occluded(&c->map_slices, q, n, omega[(size_t)q * w + i], d);
+    for (int ch = 0; ch < 3; ++ch)
+        lo[ch] += env_clamp(c->rho_pi * (hfs_sh_dot(map ? hn : t, c->l_env[ch]) + d[ch]),
+                            c->rho_pi * (hfs_sh_dot(hn, c->l_env[ch]) + d[ch]), c->env_neg[ch]);
+    if (nr > 0.0)
+        hfs_gloss_env(&c->gloss, nr, r, t, hn, c->l_env, sp);
 }
 
 /* Horizons of row j for every job: omega (and, for key lights, the floors
@@ -253,36 +236,7 @@ static void render_row(void *ctx, int j, int worker)
             const int nd = job->swath.n;
             const double *omega = s->omega + c->omega_at[q];
             if (job->is_env) {
-                double v[HFS_SH_N], t[HFS_SH_N] = {0};
-                if (c->slices.p) { /* exact slice lighting (slice_light.h) */
-                    for (int k = 0; k < HFS_SH_N; ++k)
-                        t[k] = hn[k]; /* the open hemisphere, exactly */
-                    for (int d = 0; d < nd; ++d)
-                        hfs_slice_add_occluded(&c->slices, d, n, omega[(size_t)d * w + i], t);
-                } else {
-                    for (int d = 0; d < nd; ++d)
-                        s->om[d] = omega[(size_t)d * w + i];
-                    hfs_visibility_eval(job->vis, s->om, v);
-                    hfs_sh_product(hn, v, t);
-                }
-                double d[3] = {0.0, 0.0, 0.0}; /* the open sky beyond order 4 */
-                if (c->env_open)
-                    hfs_env_open_lookup(c->env_open, n, c->env_rotate, d);
-                if (c->map_slices.fg) { /* the occluded part from the map too */
-                    double t0[HFS_SH_N];
-                    for (int k = 0; k < HFS_SH_N; ++k)
-                        t0[k] = t[k] - hn[k];
-                    for (int ch = 0; ch < 3; ++ch)
-                        d[ch] -= hfs_sh_dot(t0, c->l_env[ch]);
-                    for (int q2 = 0; q2 < nd; ++q2)
-                        hfs_map_slices_occluded(&c->map_slices, q2, n, omega[(size_t)q2 * w + i], d);
-                }
-                for (int ch = 0; ch < 3; ++ch)
-                    lo[ch] += env_clamp(c->rho_pi * (hfs_sh_dot(t, c->l_env[ch]) + d[ch]),
-                                        c->rho_pi * (hfs_sh_dot(hn, c->l_env[ch]) + d[ch]),
-                                        c->env_neg[ch]);
-                if (nr > 0.0)
-                    hfs_gloss_env(&c->gloss, nr, r, t, hn, c->l_env, sp);
+                env_texel(c, s, job, omega, i, n, hn, nr, r, lo, sp);
                 continue;
             }
             const double cos_beta = n[0] * job->dir[0] + n[1] * job->dir[1] + n[2] * job->dir[2];
@@ -324,43 +278,6 @@ static void render_row(void *ctx, int j, int worker)
     }
 }
 
-typedef struct vis_build {
-    swath_job *jobs;
-    hfs_visibility_path path;
-    int *rc;
-    hfs_error *err;
-} vis_build;
-
-static void build_visibility(void *ctx, int row, int worker)
-{
-    vis_build *b = ctx;
-    (void)worker;
-    if (b->jobs[row].vis_of >= 0)
-        return; /* shares an identical swath's object */
-    b->rc[row] = hfs_visibility_create(&b->jobs[row].swath, b->path, &b->jobs[row].vis,
-                                       &b->err[row]);
-}
-
-static int same_swath(const hfs_swath *a, const hfs_swath *b)
-{
-    return a->n == b->n && a->full == b->full && a->phi0 == b->phi0 && a->dphi == b->dphi &&
-           a->elev_lo == b->elev_lo && a->elev_hi == b->elev_hi;
-}
-
-static void free_scratch(worker_scratch *s)
-{
-    free(s->normals);
-    free(s->floor_row);
-    free(s->maxd);
-    free(s->levels);
-    free(s->omega);
-    free(s->floors);
-    free(s->om);
-    free(s->fl);
-    free(s->local_lo);
-    free(s->local_sp);
-}
-
 int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
                    const hfs_quality *q, hfs_image *out,
                    hfs_progress_fn progress, void *user, hfs_error *err)
@@ -372,139 +289,6 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
     if (!rc && l->bounces > 0) /* indirect light (cpu_bounce.h) */
         rc = hfs_cpu_bounces(f, l, q, l->bounces, out->rgb, progress, user, err);
     return rc;
-}
-
-/* The swath jobs: the environment's (jobs[0]) and each contributing key
- * light's (key_setup.h, as on GLES). */
-static void add_jobs(render_ctx *c, const hfs_lighting *l, const hfs_quality *q)
-{
-    if (c->has_env) {
-        swath_job *job = &c->jobs[c->n_jobs++];
-        job->vis_of = -1;
-        job->is_env = 1;
-        hfs_swath_full(q->nphi_env, &job->swath);
-        hfs_env_rotated(l, c->l_env);
-        c->env_open = l->env_open;
-        c->env_rotate = l->env_rotate;
-        for (int ch = 0; ch < 3; ++ch)
-            c->env_neg[ch] = l->albedo * hfs_sh_negative_bound(c->l_env[ch]);
-    }
-    for (int i = 0; i < l->n_key && i < HFS_MAX_KEY_LIGHTS; ++i) {
-        const hfs_key_light *k = &l->key[i];
-        if (!hfs_key_light_contributes(k, l->albedo + l->specular))
-            continue;
-        swath_job *job = &c->jobs[c->n_jobs++];
-        job->vis_of = -1;
-        /* The swath and the visible fraction see at least HFS_MIN_VIS_ALPHA
-         * (key_setup.h), as on GLES; E_cap keeps alpha. */
-        hfs_key_setup ks;
-        hfs_key_setup_make(k, q, &ks);
-        job->swath = ks.swath;
-        memcpy(job->dir, ks.dir, sizeof job->dir);
-        job->alpha = ks.alpha;
-        memcpy(job->le, ks.le, sizeof job->le);
-        memcpy(job->l_sh, ks.l_sh, sizeof job->l_sh);
-        job->l_norm = ks.l_norm;
-        /* A full swath identical to the environment's reuses its reads. */
-        job->shares_env = c->has_env && job->swath.full && job->swath.n == c->jobs[0].swath.n &&
-                          job->swath.phi0 == c->jobs[0].swath.phi0;
-        c->env_shared |= job->shares_env;
-    }
-}
-
-/* Each job's horizon plan (shared with the environment where the swath
- * is its own) and the worker offsets; *max_n = the most samples a job has. */
-static int make_plans(render_ctx *c, const hfs_cpu_pyramid *pyr, const hfs_quality *q,
-                      int *max_n, hfs_error *err)
-{
-    const int w = c->w;
-    *max_n = 1;
-    for (int j = 0; j < c->n_jobs; ++j) {
-        swath_job *job = &c->jobs[j];
-        const int nd = job->swath.n;
-        *max_n = nd > *max_n ? nd : *max_n;
-        c->omega_at[j + 1] = c->omega_at[j] + (size_t)nd * (size_t)w;
-        if (!job->shares_env) {
-            double *phi = malloc((size_t)nd * sizeof *phi);
-            if (!phi)
-                return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
-            for (int d = 0; d < nd; ++d)
-                phi[d] = hfs_swath_phi(&job->swath, d);
-            const int rc = hfs_horizon_plan_create(pyr, c->f->dx, c->f->zscale, q->offset, phi, nd,
-                                                   &job->plan, err);
-            free(phi);
-            if (rc)
-                return rc;
-        }
-    }
-    return HFS_OK;
-}
-
-/* Visibility objects, one per distinct swath (the wedge tables take ~0.1 s
- * each): one job per parallel "row". */
-static int build_all_visibility(render_ctx *c, hfs_visibility_path path, int threads,
-                                hfs_error *err)
-{
-    int rc = HFS_OK;
-    vis_build vb = {.jobs = c->jobs, .path = path};
-    const size_t n_jobs = (size_t)c->n_jobs;
-    vb.rc = calloc(n_jobs + 1, sizeof *vb.rc);
-    vb.err = calloc(n_jobs + 1, sizeof *vb.err);
-    if (!vb.rc || !vb.err) {
-        free(vb.rc);
-        free(vb.err);
-        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
-    }
-    for (int j = 0; j < c->n_jobs; ++j) {
-        for (int r = 0; r < j && c->jobs[j].vis_of < 0; ++r)
-            if (c->jobs[r].vis_of < 0 && same_swath(&c->jobs[r].swath, &c->jobs[j].swath))
-                c->jobs[j].vis_of = r;
-    }
-    hfs_parallel_rows(c->n_jobs, threads, build_visibility, &vb, NULL, NULL);
-    for (int j = 0; j < c->n_jobs && !rc; ++j)
-        if (vb.rc[j]) {
-            rc = vb.rc[j];
-            if (err)
-                *err = vb.err[j];
-        }
-    for (int j = 0; j < c->n_jobs; ++j)
-        if (c->jobs[j].vis_of >= 0)
-            c->jobs[j].vis = c->jobs[c->jobs[j].vis_of].vis;
-    free(vb.rc);
-    free(vb.err);
-    return rc;
-}
-
-/* Per-worker scratch (freed with the context, also on failure). */
-static int alloc_scratch(render_ctx *c, int threads, int max_n, hfs_error *err)
-{
-    const int w = c->w;
-    const hfs_cpu_local *local = c->local;
-    c->scratch = calloc((size_t)threads, sizeof *c->scratch);
-    if (!c->scratch)
-        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
-    const size_t total = c->omega_at[c->n_jobs];
-    for (int t = 0; t < threads; ++t) {
-        worker_scratch *s = &c->scratch[t];
-        s->normals = malloc((size_t)w * 3 * sizeof(double));
-        s->floor_row = malloc((size_t)w * sizeof(double));
-        s->maxd = malloc((size_t)w * sizeof(double));
-        s->levels = malloc((size_t)c->n_levels * (size_t)w * sizeof(double));
-        s->omega = malloc((total + 1) * sizeof(double));
-        s->floors = malloc((total + 1) * sizeof(double));
-        s->om = malloc((size_t)max_n * sizeof(double));
-        s->fl = malloc((size_t)max_n * sizeof(double));
-        if (local) /* local lights (issue 4) */
-            s->local_lo = malloc((size_t)w * 3 * sizeof(double));
-        if (local && c->gloss.on)
-            s->local_sp = malloc((size_t)w * 3 * sizeof(double));
-        if (!s->normals || !s->floor_row || !s->maxd || !s->levels || !s->omega ||
-            !s->floors || !s->om || !s->fl || (local && !s->local_lo) ||
-            (local && c->gloss.on && !s->local_sp))
-            return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for %d workers",
-                            threads);
-    }
-    return HFS_OK;
 }
 
 int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
@@ -559,7 +343,7 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
         goto done;
     }
-    add_jobs(&c, l, q);
+    hfs_cpu_ctx_add_jobs(&c, l, q);
 
     /* Pyramid, plans, visibility. */
     const int n_levels = hfs_pyramid_level_count(w, h, q->k);
@@ -571,11 +355,11 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     if (rc)
         goto done;
     int max_n = 1;
-    if ((rc = make_plans(&c, pyr, q, &max_n, err)))
+    if ((rc = hfs_cpu_ctx_make_plans(&c, pyr, q, &max_n, err)))
         goto done;
     /* Slice lighting: the environment's slices; key lights keep Legendre. */
     const int slice = q->visibility == HFS_VIS_SLICE;
-    if ((rc = build_all_visibility(&c, slice ? HFS_VIS_LEGENDRE : q->visibility, threads, err)))
+    if ((rc = hfs_cpu_ctx_build_all_visibility(&c, slice ? HFS_VIS_LEGENDRE : q->visibility, threads, err)))
         goto done;
     if (slice && c.has_env && (rc = hfs_slice_table_init(&c.slices, &c.jobs[0].swath, err)))
         goto done;
@@ -593,7 +377,7 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
             goto done;
         c.local = local;
     }
-    if ((rc = alloc_scratch(&c, threads, max_n, err)))
+    if ((rc = hfs_cpu_ctx_alloc_scratch(&c, threads, max_n, err)))
         goto done;
 
     if (c.gloss.on && !(c.spec = malloc((size_t)w * (size_t)h * 3 * sizeof *c.spec))) {
@@ -609,7 +393,7 @@ done:
     hfs_cpu_local_destroy((hfs_cpu_local *)c.local); /* local lights (issue 4) */
     if (c.scratch)
         for (int t = 0; t < threads; ++t)
-            free_scratch(&c.scratch[t]);
+            hfs_cpu_ctx_free_scratch(&c.scratch[t]);
     free(c.scratch);
     for (int j = 0; j < c.n_jobs; ++j) {
         hfs_horizon_plan_destroy(c.jobs[j].plan);
