@@ -228,7 +228,7 @@ static void render_row(void *ctx, int j, int worker)
         double hn[HFS_SH_N];
         hfs_sh_rotate_zonal(c->h_zonal, n[0], n[1], n[2], hn);
         double lo[3] = {0.0, 0.0, 0.0};
-        double r[3], sp[3] = {0.0, 0.0, 0.0}; /* glossy: R and the term */
+        double r[3] = {0.0, 0.0, 1.0}, sp[3] = {0.0, 0.0, 0.0}; /* glossy: R and the term */
         const double pw[3] = {i * c->f->dx, j * c->f->dx, hfs_field_z(c->f, i, j)};
         const double nr = c->gloss.on ? hfs_gloss_reflect(&c->gloss, pw, n, r) : 0.0;
         for (int q = 0; q < c->n_jobs; ++q) {
