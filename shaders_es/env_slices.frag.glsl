@@ -40,6 +40,7 @@
 #ifndef HFS_NDIR
 #define HFS_NDIR 32
 #endif
+#define HFS_DIR_UNROLLED 32              /* HFS_DIR in main */
 
 precision highp float;
 precision highp int;
@@ -214,6 +215,37 @@ void near_slopes(ivec2 p, out vec4 s0, out vec4 s1, out float s8)
     s8 = s[8];
 }
 
+/* Slice j's part: its horizon x = max(the grid's far horizon farj, the
+ * near slope from the 3 x 3 neighbourhood (s0, s1, s8), the tangent
+ * plane), integrated above the tangent plane into S (or, HFS_ENV_MAP,
+ * against the map into occ). */
+void dir_step(int j, float farj, vec3 n, vec4 s0, vec4 s1, float s8, inout Sums S,
+              inout vec3 occ)
+{
+    vec2 cs = SW_DIR(j).xy;
+    float a = n.x * cs.x + n.y * cs.y;
+    /* The tangent plane's elevation xf (tan xf = -a / N_z), the near
+     * slope, and the horizon, as half-angle tangents (monotonic in the
+     * elevation: the max is the max). */
+    float uf = -a / (n.z + sqrt(a * a + n.z * n.z));
+    float tn = dot(SW_NEARW(3 * j), s0) + dot(SW_NEARW(3 * j + 1), s1) +
+               SW_NEARW(3 * j + 2).x * s8;
+    /* The cell's near end: the slopes to (+-1, 0) and (0, +-1). */
+    tn = clamp(max(tn, abs(cs.x) * (cs.x > 0.0 ? s1.y : s0.w) +
+                           abs(cs.y) * (cs.y > 0.0 ? s1.w : s0.y)),
+               -1e18, 1e18);
+    float ux = max(farj, tn / (1.0 + sqrt(1.0 + tn * tn)));
+    /* Only slices whose horizon rises above the tangent plane carry an
+     * occluded part (0 exactly elsewhere). */
+    if (ux > uf) {
+#ifdef HFS_ENV_MAP
+        occ += map_s(j, a, n.z, 2.0 * atan(ux)) - map_s(j, a, n.z, 2.0 * atan(uf));
+#else
+        slice_add(j, cs, a, n.z, uf, ux, S);
+#endif
+    }
+}
+
 void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -225,33 +257,27 @@ void main()
         near_slopes(p, s0, s1, s8);
     Sums S = Sums(vec4(0.0), vec4(0.0), vec4(0.0), vec3(0.0), vec3(0.0), vec2(0.0), vec2(0.0));
     vec3 occ = vec3(0.0);
+    /* Up to HFS_DIR_UNROLLED directions are written out one by one, so
+     * that every uniform index is a constant: llvmpipe reads a uniform
+     * array at a loop-dependent index lane by lane (a gather), which made
+     * this pass 1.7x slower (BENCHMARKS.md "Uniform indices"). */
     vec4 far = vec4(0.0);
-    for (int j = 0; j < HFS_NDIR; ++j) {
-        if (j % 4 == 0)
-            far = texture(u_hor, vec3(uv, float(j / 4)));
-        vec2 cs = SW_DIR(j).xy;
-        float a = n.x * cs.x + n.y * cs.y;
-        /* The tangent plane's elevation xf (tan xf = -a / N_z), the near
-         * slope, and the horizon, as half-angle tangents (monotonic in
-         * the elevation: the max is the max). */
-        float uf = -a / (n.z + sqrt(a * a + n.z * n.z));
-        float tn = dot(SW_NEARW(3 * j), s0) + dot(SW_NEARW(3 * j + 1), s1) +
-                   SW_NEARW(3 * j + 2).x * s8;
-        /* The cell's near end: the slopes to (+-1, 0) and (0, +-1). */
-        tn = clamp(max(tn, abs(cs.x) * (cs.x > 0.0 ? s1.y : s0.w) +
-                               abs(cs.y) * (cs.y > 0.0 ? s1.w : s0.y)),
-                   -1e18, 1e18);
-        float ux = max(far[j % 4], tn / (1.0 + sqrt(1.0 + tn * tn)));
-        /* Only slices whose horizon rises above the tangent plane carry an
-         * occluded part (0 exactly elsewhere). */
-        if (ux > uf) {
-#ifdef HFS_ENV_MAP
-            occ += map_s(j, a, n.z, 2.0 * atan(ux)) - map_s(j, a, n.z, 2.0 * atan(uf));
-#else
-            slice_add(j, cs, a, n.z, uf, ux, S);
-#endif
-        }
+#define HFS_DIR(J)                                                          \
+    if ((J) < HFS_NDIR) {                                                   \
+        if ((J) % 4 == 0)                                                   \
+            far = texture(u_hor, vec3(uv, float((J) / 4)));                 \
+        dir_step(J, far[(J) % 4], n, s0, s1, s8, S, occ);                   \
     }
+#if HFS_NDIR <= HFS_DIR_UNROLLED
+    HFS_DIR(0) HFS_DIR(1) HFS_DIR(2) HFS_DIR(3) HFS_DIR(4) HFS_DIR(5) HFS_DIR(6) HFS_DIR(7)
+    HFS_DIR(8) HFS_DIR(9) HFS_DIR(10) HFS_DIR(11) HFS_DIR(12) HFS_DIR(13) HFS_DIR(14)
+    HFS_DIR(15) HFS_DIR(16) HFS_DIR(17) HFS_DIR(18) HFS_DIR(19) HFS_DIR(20) HFS_DIR(21)
+    HFS_DIR(22) HFS_DIR(23) HFS_DIR(24) HFS_DIR(25) HFS_DIR(26) HFS_DIR(27) HFS_DIR(28)
+    HFS_DIR(29) HFS_DIR(30) HFS_DIR(31)
+#else
+    for (int j = 0; j < HFS_NDIR; ++j)
+        HFS_DIR(j)
+#endif
 #ifdef HFS_ENV_MAP
     o_t0 = hfs_f16v(vec4(occ, 0.0)); /* the shading multiplies by dphi */
 #else

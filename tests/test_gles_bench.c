@@ -4,7 +4,7 @@
  * and optionally the SPEC metrics against the CPU reference.
  *
  *   gles_bench [--scene NAME|FILE] [--size N] [--precision fp16|fp32]
- *              [--path legendre|tables] [--subsample S] [--lights env|key|both]
+ *              [--path legendre|tables|slice] [--subsample S] [--lights env|key|both]
  *              [--frames F] [--cold] [--count] [--compare] [--k K] [--offset O]
  *              [--nphi-env N] [--nphi-key N] [--context NAME] [--profile P]
  *              [--data DIR] [--dx F] [--zscale F] [--vs-fp32]
@@ -102,7 +102,8 @@ int main(int argc, char **argv)
     if (frames < 1 || frames > 1000)
         frames = 5;
     q.precision = !strcmp(prec, "fp32") ? HFS_PRECISION_FP32 : HFS_PRECISION_FP16;
-    q.visibility = !strcmp(path, "tables") ? HFS_VIS_WEDGE_TABLE : HFS_VIS_LEGENDRE;
+    q.visibility = !strcmp(path, "tables") ? HFS_VIS_WEDGE_TABLE
+                 : !strcmp(path, "slice") ? HFS_VIS_SLICE : HFS_VIS_LEGENDRE;
     q.subsample = sub;
     scene s;
     if (scene_make(scene_name, n, data, &s))
