@@ -32,6 +32,7 @@
 // hfs-variant: HFS_SLICE 1
 // hfs-variant: HFS_FP32 1
 // hfs-variant: HFS_SLICE 1, HFS_GLOSSY 1
+// hfs-variant: HFS_SLICE 1, HFS_PAIRS 1
 // hfs-variant: HFS_SLICE 1, HFS_GLOSSY 2, HFS_FP32 1
 
 #ifndef HFS_NLEV
@@ -67,7 +68,8 @@ uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEA
 uniform highp sampler2D u_normals;       /* full resolution */
 uniform highp sampler2D u_rad;           /* Lo_{b-1}, full resolution, LINEAR */
 #ifdef HFS_SLICE
-uniform highp sampler2DArray u_hor;      /* grid horizons, tan(x / 2), 4 a layer */
+uniform highp sampler2DArray u_hor;      /* grid horizons, tan(x / 2), 4 a layer (HFS_PAIRS:
+                                            2 occluders, (height, distance)) */
 #endif
 uniform ivec2 u_size;                    /* W, H */
 uniform int u_sub;                       /* the bounce grid's step */
@@ -235,8 +237,14 @@ float direct_horizon(ivec2 g, int je, float t1)
     /* g is a visibility receiver: a multiple of u_vsub, or the last. */
     ivec2 v = ivec2(g.x == u_size.x - 1 ? u_vsize.x - 1 : g.x / u_vsub,
                     g.y == u_size.y - 1 ? u_vsize.y - 1 : g.y / u_vsub);
+#ifdef HFS_PAIRS
+    vec4 o = texelFetch(u_hor, ivec3(v, je / 2), 0); /* (height, distance) pairs */
+    float h = o[2 * (je % 2)], d = o[2 * (je % 2) + 1];
+    return max(d > 0.0 ? h / d : -1e30, t1);
+#else
     float u = texelFetch(u_hor, ivec3(v, je / 4), 0)[je % 4];
     return max(u > -1.0 ? 2.0 * u / max(1.0 - u * u, 1e-30) : -1e30, t1);
+#endif
 }
 
 /* The clamped cosine's integral between the tangent plane and the direct

@@ -25,10 +25,11 @@
  * terrain's occlusion is interpolated.
  *
  * HFS_SLICE (exact slice lighting, runtime/slice_light.h): instead of V,
- * the horizons themselves (as tan(omega / 2)), directions [u_dir0, u_dir0 + 16),
- * four per target (a layer each of the grid's horizon array); the
- * full-resolution pass env_slices.frag integrates them with each texel's
- * own normal.  On a sub-sampled grid the u_near finest scales are left to
+ * the horizons themselves (as tan(omega / 2)), four per target (a layer
+ * each of the grid's horizon array), HFS_NOUT targets from direction
+ * u_dir0; with HFS_PAIRS (a sub-sampled grid) each horizon's occluder,
+ * two per target (write_horizons).  The full-resolution pass
+ * env_slices.frag integrates them with each texel's own normal.  On a sub-sampled grid the u_near finest scales are left to
  * that pass too (they differ from texel to texel), and the search starts
  * below any tangent plane, since the receivers that read it have their own.
  *
@@ -41,6 +42,9 @@
 // hfs-variant: HFS_SWATH_TEX 1, HFS_TABLES 1
 // hfs-variant: HFS_SLICE 1
 // hfs-variant: HFS_SLICE 1, HFS_SWATH_TEX 1
+// hfs-variant: HFS_SLICE 1, HFS_PAIRS 1
+// hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_NOUT 6
+// hfs-variant: HFS_SLICE 1, HFS_NOUT 8
 // hfs-variant: HFS_SLICE 1, HFS_COUNT 1
 
 #ifndef HFS_NLEV
@@ -51,6 +55,9 @@
 #endif
 #ifndef HFS_NDIR
 #define HFS_NDIR 32
+#endif
+#ifndef HFS_NOUT
+#define HFS_NOUT 4                       /* targets: 4, or on the slice path 1 to 8 */
 #endif
 #ifndef HFS_TABLE_N
 #define HFS_TABLE_N 257
@@ -135,6 +142,18 @@ layout(location = 0) out vec4 o_v0;
 layout(location = 1) out vec4 o_v1;
 layout(location = 2) out vec4 o_v2;
 layout(location = 3) out vec4 o_v3;
+#if HFS_NOUT > 4
+layout(location = 4) out vec4 o_v4;
+#endif
+#if HFS_NOUT > 5
+layout(location = 5) out vec4 o_v5;
+#endif
+#if HFS_NOUT > 6
+layout(location = 6) out vec4 o_v6;
+#endif
+#if HFS_NOUT > 7
+layout(location = 7) out vec4 o_v7;
+#endif
 
 #ifdef HFS_TABLES
 /* V += placement of the interior wedge table(a, b). */
@@ -155,10 +174,11 @@ void add_wedge(inout vec4 V[4], float a, float b, int w)
  * fetches.  A scale whose largest possible slope cannot beat `best` is
  * skipped: it could not take over either. */
 float horizon_tan(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], float best, int first,
-                  inout int fetches)
+                  inout int fetches, out float dist)
 {
     float ref = best;
     int bi = first;
+    dist = 0.0;
     for (int i = first; i >= 0; --i) {
         vec4 sc = u_scale[i];
         vec2 o;
@@ -173,34 +193,84 @@ float horizon_tan(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], float best, int first,
             ref = sl;
             bi = i;
         }
-        best = max(best, sl);
+        if (sl > best) {
+            best = sl;
+            dist = sc.x;
+        }
     }
     if (bi < 0)
         return best;
     vec4 sc = u_scale[bi];
-    float dist = 0.0;
     return hfs_refine_about(u_levels, g, u_size, cs, sc, hx[int(sc.z)], u_refine, u_lk, best,
                             dist, fetches);
+}
+
+/* The HFS_NOUT targets' texels out. */
+void write_outputs(vec4 res[HFS_NOUT])
+{
+    o_v0 = res[0];
+#if HFS_NOUT > 1
+    o_v1 = res[1];
+#endif
+#if HFS_NOUT > 2
+    o_v2 = res[2];
+#endif
+#if HFS_NOUT > 3
+    o_v3 = res[3];
+#endif
+#if HFS_NOUT > 4
+    o_v4 = res[4];
+#endif
+#if HFS_NOUT > 5
+    o_v5 = res[5];
+#endif
+#if HFS_NOUT > 6
+    o_v6 = res[6];
+#endif
+#if HFS_NOUT > 7
+    o_v7 = res[7];
+#endif
 }
 
 /* The fetch count (HFS_COUNT) in place of the pass's output. */
 void write_count(int fetches)
 {
-    o_v0 = vec4(float(fetches % 1024), float(fetches / 1024), 0.0, 0.0);
-    o_v1 = vec4(0.0);
-    o_v2 = vec4(0.0);
-    o_v3 = vec4(0.0);
+    vec4 res[HFS_NOUT];
+    for (int t = 0; t < HFS_NOUT; ++t)
+        res[t] = vec4(0.0);
+    res[0] = vec4(float(fetches % 1024), float(fetches / 1024), 0.0, 0.0);
+    write_outputs(res);
 }
 
 #ifdef HFS_SLICE
-/* Slice path: 16 horizons as tan(omega / 2) (bounded, monotonic in omega,
- * and rational in cos, sin omega), -1 where nothing rises (and past the
- * swath's last direction). */
+#ifdef HFS_PAIRS
+#define HFS_PER_TARGET 2
+#else
+#define HFS_PER_TARGET 4
+#endif
+#define HFS_PER_DRAW (HFS_NOUT * HFS_PER_TARGET)
+
+/* Target t's texel: 4 horizons, or 2 (height, distance) pairs. */
+vec4 target(int t, vec2 om[HFS_PER_DRAW])
+{
+#ifdef HFS_PAIRS
+    return hfs_f16v(vec4(om[2 * t], om[2 * t + 1]));
+#else
+    return hfs_f16v(vec4(om[4 * t].x, om[4 * t + 1].x, om[4 * t + 2].x, om[4 * t + 3].x));
+#endif
+}
+
+/* Slice path: HFS_NOUT x 4 horizons as tan(omega / 2) (bounded,
+ * monotonic in omega, and rational in cos, sin omega; -1 where nothing
+ * rises, and past the swath's last direction), or (HFS_PAIRS) HFS_NOUT x 2
+ * occluders, each as its height over the receiver and its distance, in
+ * texels (-3e4 and 0 where there is none): env_slices.frag blends them
+ * and moves them to each texel's height. */
 void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
 {
-    float om[16];
-    for (int q = 0; q < 16; ++q) {
-        om[q] = -1.0;
+    vec2 om[HFS_PER_DRAW];
+    for (int q = 0; q < HFS_PER_DRAW; ++q) {
+        om[q] = vec2(-1.0, 0.0);
         int j = u_dir0 + q;
         if (j >= HFS_NDIR)
             continue;
@@ -208,16 +278,23 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
         /* A receiver that is its own grid point starts at its tangent
          * plane (a slope below it never wins); the others below any. */
         float best = u_sub == 1 ? -(n.x * cs.x + n.y * cs.y) / n.z : -1e30;
-        best = clamp(horizon_tan(g, cs, hx, best, HFS_NLEV - 1 - u_near, fetches), -1e18, 1e18);
-        om[q] = best / (1.0 + sqrt(1.0 + best * best)); /* tan(omega / 2) */
+        float dist;
+        best = clamp(horizon_tan(g, cs, hx, best, HFS_NLEV - 1 - u_near, fetches, dist), -1e18,
+                     1e18);
+#ifdef HFS_PAIRS
+        /* the occluder's height over the receiver, and its distance */
+        om[q] = dist > 0.0 ? vec2(clamp(best * dist, -3e4, 3e4), dist) : vec2(-3e4, 0.0);
+#else
+        om[q].x = best / (1.0 + sqrt(1.0 + best * best)); /* tan(omega / 2) */
+#endif
     }
 #ifdef HFS_COUNT
     write_count(fetches);
 #else
-    o_v0 = hfs_f16v(vec4(om[0], om[1], om[2], om[3]));
-    o_v1 = hfs_f16v(vec4(om[4], om[5], om[6], om[7]));
-    o_v2 = hfs_f16v(vec4(om[8], om[9], om[10], om[11]));
-    o_v3 = hfs_f16v(vec4(om[12], om[13], om[14], om[15]));
+    vec4 res[HFS_NOUT];
+    for (int t = 0; t < HFS_NOUT; ++t)
+        res[t] = target(t, om);
+    write_outputs(res);
 #endif
 }
 #endif
@@ -241,8 +318,9 @@ void main()
     for (int j = 0; j < HFS_NDIR; ++j) {
         vec2 cs = SW_DIR(j).xy;
         /* Start at tan(floor): a slope below the tangent plane never wins. */
+        float dist;
         float best = horizon_tan(g, cs, hx, -(n.x * cs.x + n.y * cs.y) / n.z, HFS_NLEV - 1,
-                                 fetches);
+                                 fetches, dist);
 #ifdef HFS_TABLES
         float om = clamp(atan(best), -HFS_HALF_PI, HFS_HALF_PI);
         if (j == 0) {

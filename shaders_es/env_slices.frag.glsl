@@ -10,6 +10,10 @@
  * adds the open hemisphere H(N) exactly); like the seeds' transfer it does
  * not depend on the environment's radiance or rotation.
  *
+ * HFS_PAIRS (a sub-sampled grid): the grid holds each direction's
+ * occluder (height over its receiver, distance), blended bilinearly and
+ * moved to this texel's height (far_slope), instead of tan(x / 2).
+ *
  * Why split the horizon: on a sub-sampled grid a texel's nearest
  * occluders (a texel away) are not its grid neighbours' - interpolating
  * those brightens pits and darkens peaks on rough relief - while far ones
@@ -33,6 +37,8 @@
 // hfs-variant: HFS_SWATH_TEX 1
 // hfs-variant: HFS_ENV_MAP 1
 // hfs-variant: HFS_ENV_MAP 1, HFS_FP32 1
+// hfs-variant: HFS_PAIRS 1
+// hfs-variant: HFS_PAIRS 1, HFS_ENV_MAP 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -215,6 +221,59 @@ void near_slopes(ivec2 p, out vec4 s0, out vec4 s1, out float s8)
     s8 = s[8];
 }
 
+/* One of the 3 x 3 neighbours' height differences (near_slopes; i
+ * row-major from (-1, -1), 4 the texel itself: 0). */
+float near_rise(int i, vec4 s0, vec4 s1, float s8)
+{
+    return i < 4 ? s0[i] : (i == 4 ? 0.0 : (i < 8 ? s1[i - 4] : s8));
+}
+
+/* How far the grid receivers around texel p stand above it, in texels:
+ * their heights blended with p's bilinear weights, minus p's.  Each
+ * receiver's horizon is an occluder's height above that receiver, so
+ * above p it is this much higher.  On the 2x2 grid the receivers are
+ * among p's 3 x 3 neighbours, whose differences near_slopes already
+ * holds; on a coarser grid four fetches. */
+float grid_rise(ivec2 p, vec4 s0, vec4 s1, float s8)
+{
+    ivec2 a = p / u_sub;
+    ivec2 x0 = a * u_sub;
+    ivec2 x1 = min(x0 + u_sub, u_size - 1);
+    vec2 f = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
+    vec4 r; /* (x0, y0), (x1, y0), (x0, y1), (x1, y1) */
+    if (u_sub == 2 && u_near > 0) {
+        ivec2 o0 = x0 - p + 1, o1 = x1 - p + 1; /* 0..2 */
+        r = vec4(near_rise(3 * o0.y + o0.x, s0, s1, s8), near_rise(3 * o0.y + o1.x, s0, s1, s8),
+                 near_rise(3 * o1.y + o0.x, s0, s1, s8), near_rise(3 * o1.y + o1.x, s0, s1, s8));
+    } else {
+        vec4 sc = u_scale[HFS_NLEV - 1];
+        int layer = int(sc.z);
+        vec2 h = texelFetch(u_levels, ivec3(p, layer), 0).xy;
+        r = sc.y * vec4(hfs_hdiff(texelFetch(u_levels, ivec3(x0, layer), 0).xy, h),
+                        hfs_hdiff(texelFetch(u_levels, ivec3(x1.x, x0.y, layer), 0).xy, h),
+                        hfs_hdiff(texelFetch(u_levels, ivec3(x0.x, x1.y, layer), 0).xy, h),
+                        hfs_hdiff(texelFetch(u_levels, ivec3(x1, layer), 0).xy, h));
+    }
+    return mix(mix(r.x, r.y, f.x), mix(r.z, r.w, f.x), f.y);
+}
+
+/* The grid's occluder in one direction, blended between the receivers
+ * around this texel (its height h over them and its distance d, in
+ * texels), seen from this texel as a slope: the receivers stand dz above
+ * it, so the occluder stands h + dz above it.  Blending the occluder's
+ * position, not its slope, keeps a receiver on a spike, whose horizon
+ * lies far below it, from lifting its neighbours' horizons.  An occluder
+ * within a grid step moves in proportion (d / u_sub of dz): it need not
+ * lie on this texel's own line of sight, and a step at some distance
+ * would make fp16's rounding of d flip texels (BENCHMARKS.md "Occluders
+ * moved to each texel"). */
+float far_slope(float h, float d, float dz)
+{
+    if (!(d > 0.0))
+        return -1e30; /* no occluder around */
+    return (h + dz * min(d / float(u_sub), 1.0)) / d;
+}
+
 /* Slice j's part: its horizon x = max(the grid's far horizon farj, the
  * near slope from the 3 x 3 neighbourhood (s0, s1, s8), the tangent
  * plane), integrated above the tangent plane into S (or, HFS_ENV_MAP,
@@ -234,7 +293,12 @@ void dir_step(int j, float farj, vec3 n, vec4 s0, vec4 s1, float s8, inout Sums 
     tn = clamp(max(tn, abs(cs.x) * (cs.x > 0.0 ? s1.y : s0.w) +
                            abs(cs.y) * (cs.y > 0.0 ? s1.w : s0.y)),
                -1e18, 1e18);
+#ifdef HFS_PAIRS
+    tn = clamp(max(tn, farj), -1e18, 1e18); /* farj: a slope (far_slope) */
+    float ux = tn / (1.0 + sqrt(1.0 + tn * tn));
+#else
     float ux = max(farj, tn / (1.0 + sqrt(1.0 + tn * tn)));
+#endif
     /* Only slices whose horizon rises above the tangent plane carry an
      * occluded part (0 exactly elsewhere). */
     if (ux > uf) {
@@ -262,11 +326,23 @@ void main()
      * array at a loop-dependent index lane by lane (a gather), which made
      * this pass 1.7x slower (BENCHMARKS.md "Uniform indices"). */
     vec4 far = vec4(0.0);
+#ifdef HFS_PAIRS
+    /* On a sub-sampled grid its horizons move to this texel's height. */
+    float dz = grid_rise(p, s0, s1, s8);
+#define HFS_FAR(J)                                                          \
+    if ((J) % 2 == 0)                                                       \
+        far = texture(u_hor, vec3(uv, float((J) / 2)));                     \
+    float fu = far_slope(far[2 * ((J) % 2)], far[2 * ((J) % 2) + 1], dz);
+#else
+#define HFS_FAR(J)                                                          \
+    if ((J) % 4 == 0)                                                       \
+        far = texture(u_hor, vec3(uv, float((J) / 4)));                     \
+    float fu = far[(J) % 4];
+#endif
 #define HFS_DIR(J)                                                          \
     if ((J) < HFS_NDIR) {                                                   \
-        if ((J) % 4 == 0)                                                   \
-            far = texture(u_hor, vec3(uv, float((J) / 4)));                 \
-        dir_step(J, far[(J) % 4], n, s0, s1, s8, S, occ);                   \
+        HFS_FAR(J)                                                          \
+        dir_step(J, fu, n, s0, s1, s8, S, occ);                             \
     }
 #if HFS_NDIR <= HFS_DIR_UNROLLED
     HFS_DIR(0) HFS_DIR(1) HFS_DIR(2) HFS_DIR(3) HFS_DIR(4) HFS_DIR(5) HFS_DIR(6) HFS_DIR(7)

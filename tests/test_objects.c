@@ -193,8 +193,10 @@ static void check_invalid(hfs_renderer *r, const hfs_quality *q)
 
 /* GLES's view against the CPU's ray-cast one: the same lit objects (both
  * from shadow height maps), the mesh's triangles against the bilinear
- * surface and antialiased edges.  Measured 4.2e-3 mean; bound 2x. */
-#define VIEW_MEAN_BOUND 8.5e-3
+ * surface and antialiased edges.  Measured 1.76e-3 mean at subsample 1;
+ * bound 2x.  (It was 4.2e-3 at the 2x2 default, most of it the terrain's
+ * sub-sampling next to the one-texel wall, bound 8.5e-3.) */
+#define VIEW_MEAN_BOUND 3.5e-3
 
 static void check_view(const hfs_quality *q)
 {
@@ -223,9 +225,14 @@ static void check_view(const hfs_quality *q)
     v.objects = o, v.n_objects = 2;
     hfs_image a = {0}, b = {0};
     hfs_image_alloc(&a, 160, 120, &err), hfs_image_alloc(&b, 160, 120, &err);
-    int rc = hfs_renderer_render_view(g, &f, &l, q, &v, NULL, &a, &err);
+    /* At subsample 1, where the GLES terrain equals the CPU's (1e-7): only
+     * the views differ.  (The 2x2 grid's own error, on this one-texel wall
+     * against the CPU's, is the sub-sampling tests' and the benchmarks'.) */
+    hfs_quality q1 = *q;
+    q1.subsample = 1;
+    int rc = hfs_renderer_render_view(g, &f, &l, &q1, &v, NULL, &a, &err);
     CHECK(!rc, "gles view: %s", err.msg);
-    rc |= hfs_renderer_render_view(c, &f, &l, q, &v, NULL, &b, &err);
+    rc |= hfs_renderer_render_view(c, &f, &l, &q1, &v, NULL, &b, &err);
     CHECK(!rc, "cpu view: %s", err.msg);
     double sum = 0.0, norm = 0.0;
     for (int i = 0; i < 160 * 120 * 3; ++i) {

@@ -171,6 +171,13 @@ void stress_fp16_bound(const stress_scene *sc, double umax, stress_fp16_terms *t
          * over n wedges <= sqrt(n 4 pi). */
         const double tables = sc->q.visibility == HFS_VIS_WEDGE_TABLE ? sqrt(sc->q.nphi_env) : 0.0;
         t->env = l->albedo / PI * U16 * (1.0 + tables) * sqrt(4.0 * PI) * worst / umax;
+        /* The slice path stores the grid's horizons in fp16 instead: as
+         * u = tan(x / 2), |dx| <= 2 U16 |u| / (1 + u^2) <= U16; as an
+         * occluder (height h, distance d, each to U16), the slope h / d to
+         * 2 U16, |dx| <= 2 U16 |t| / (1 + t^2) <= U16.  A band of U16 in
+         * every azimuth: 2 rho max|L| U16, as for the heights below. */
+        if (sc->q.visibility == HFS_VIS_SLICE)
+            t->env += 2.0 * U16 * l->albedo * lmax / umax;
         t->heights += fmin(2.0 * dh, 1.0) * l->albedo * lmax / umax; /* <= its whole share */
         /* A normal turned by dn moves max(0, N.s) by <= |dN.s|, which
          * integrates to 2 pi dn over the sphere: 2 rho max|L| dn. */

@@ -58,6 +58,9 @@ struct hfs_gles_frame {
     int slice;                            /* exact slice lighting (slice_light.h) */
     int hor_layers;                       /* slice path: grid horizon layers (4 dirs each) */
     int env_near;                         /* slice path: 1, the texel's own cell is per texel */
+    int hor_pairs;                        /* slice path, sub-sampled grid: each horizon as
+                                             its occluder (height, distance), 2 a texel */
+    int hor_outs;                         /* slice path: targets (layers) a grid draw fills */
     int has_env, n_keys;
     hfs_gles_frame_key keys[HFS_MAX_KEY_LIGHTS];
     double l_env[3][HFS_SH_N];            /* rotated environment SH */

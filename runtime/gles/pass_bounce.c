@@ -137,7 +137,8 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                 .n_dir = fr->q->nphi_env, .n_bdir = hfs_bounce_dirs(fr->q),
                                 .fp32 = g->caps.fp32, .slice = capped,
-                                .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0};
+                                .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0,
+                                .pairs = capped && fr->hor_pairs};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_GATHER, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||

@@ -14,7 +14,12 @@
 #include "gl_util.h"
 #include "pyramid_layout.h"
 
-#define SLICE_DIRS_PER_DRAW 16 /* 4 RGBA targets (ES 3.0's minimum) x 4 */
+/* Slice path: horizons a layer (an RGBA texel): 4, or 2 occluders as
+ * (height, distance) pairs (hor_pairs). */
+#define SLICE_DIRS_PER_LAYER(pairs) ((pairs) ? 2 : 4)
+/* Up to this many targets a draw where the context has them (ES 3.0
+ * guarantees 4): 12 directions as pairs fill 6 in one draw. */
+#define SLICE_MAX_OUTS 8
 
 static int present(const hfs_gles_frame *fr)
 {
@@ -35,9 +40,22 @@ static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     int rc;
     fr->hor_layers = 0;
     fr->env_near = 0;
+    fr->hor_pairs = 0;
     if (fr->slice) {
-        const int groups = (fr->q->nphi_env + SLICE_DIRS_PER_DRAW - 1) / SLICE_DIRS_PER_DRAW;
-        fr->hor_layers = groups * 4;
+        /* On a sub-sampled grid each horizon comes with its occluder's
+         * distance, which moves it to each texel's height (env_slices.frag). */
+        fr->hor_pairs = fr->L.sub > 1;
+        /* As few draws as the context's targets allow, each no wider
+         * than the directions need (a wider one costs its fragments). */
+        const int layers = (fr->q->nphi_env + SLICE_DIRS_PER_LAYER(fr->hor_pairs) - 1) /
+                           SLICE_DIRS_PER_LAYER(fr->hor_pairs);
+        const int max_outs = g->caps.max_draw_buffers < SLICE_MAX_OUTS
+                                 ? g->caps.max_draw_buffers : SLICE_MAX_OUTS;
+        const int draws = (layers + max_outs - 1) / max_outs;
+        fr->hor_outs = (layers + draws - 1) / draws;
+        const int per = fr->hor_outs * SLICE_DIRS_PER_LAYER(fr->hor_pairs);
+        const int groups = (fr->q->nphi_env + per - 1) / per;
+        fr->hor_layers = groups * fr->hor_outs;
         /* The texel's own cell (holding the finest scale, distance 1) is
          * searched at each texel, not at the grid (env_slices.frag says
          * why; BENCHMARKS.md, "Exact slice lighting"). */
@@ -123,7 +141,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_er
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                 .n_dir = g->env_vis_n, .tables = fr->tables,
                                 .fp32 = g->caps.fp32, .count = count,
-                                .swath_tex = fr->env_swath_tex, .slice = fr->slice};
+                                .swath_tex = fr->env_swath_tex, .slice = fr->slice,
+                                .pairs = fr->hor_pairs, .n_out = fr->slice ? fr->hor_outs : 0};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_HORIZONS, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)))
@@ -146,9 +165,10 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_er
     }
     if (fr->slice)
         hfs_gles_set_i1(gl, prog, "u_near", fr->env_near);
-    for (int d0 = 0; fr->slice && !rc && d0 < g->env_vis_n; d0 += SLICE_DIRS_PER_DRAW) {
+    const int per_layer = SLICE_DIRS_PER_LAYER(fr->hor_pairs), per = fr->hor_outs * per_layer;
+    for (int d0 = 0; fr->slice && !rc && d0 < g->env_vis_n; d0 += per) {
         hfs_gles_set_i1(gl, prog, "u_dir0", d0);
-        rc = hfs_gles_draw_grid_layers(g, L, g->r.hor_fbo, g->r.hor, d0 / 4, 4,
+        rc = hfs_gles_draw_grid_layers(g, L, g->r.hor_fbo, g->r.hor, d0 / per_layer, fr->hor_outs,
                                        "environment horizons", fetch_sum, err);
     }
     gl->UseProgram(0);

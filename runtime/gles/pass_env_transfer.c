@@ -26,7 +26,7 @@ int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, int env_map, GLuin
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_dir = g->env_vis_n,
                                 .fp32 = g->caps.fp32, .swath_tex = fr->env_swath_tex,
-                                .env_map = env_map};
+                                .env_map = env_map, .pairs = fr->hor_pairs};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_SLICES, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
@@ -52,7 +52,7 @@ static int run_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
      * near scale its own height and 9 neighbours. */
     hfs_gles_stage_fetches(g, HFS_PASS_ENV_TRANSFER, 0,
                            (double)L->w * L->h *
-                               (1.0 + ceil(g->env_vis_n / 4.0) + 10.0 * fr->env_near));
+                               (1.0 + ceil(g->env_vis_n / (fr->hor_pairs ? 2.0 : 4.0)) + 10.0 * fr->env_near));
     return hfs_gles_draw_env_slices(g, fr, 0, g->r.transfer_fbo, err);
 }
 

@@ -68,8 +68,13 @@ int hfs_gles_fbo_layers(const hfs_gl *gl, GLuint fbo, GLuint tex, int layer0, in
                         const char *what, hfs_error *err)
 {
     gl->BindFramebuffer(GL_FRAMEBUFFER, fbo);
-    GLenum bufs[4];
-    for (int o = 0; o < 4; ++o) {
+    /* Attachments past 4 exist only where the context has them (the
+     * caller's outs come from hfs_gl_caps): touch no more. */
+    GLenum bufs[HFS_GLES_MAX_OUTS];
+    if (outs > HFS_GLES_MAX_OUTS)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: %s: %d targets (at most %d)", what,
+                        outs, HFS_GLES_MAX_OUTS);
+    for (int o = 0; o < (outs > 4 ? outs : 4); ++o) {
         gl->FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)o,
                                     o < outs ? tex : 0, 0, o < outs ? layer0 + o : 0);
         bufs[o] = GL_COLOR_ATTACHMENT0 + (GLenum)o;

@@ -71,8 +71,11 @@ void hfs_gles_tex_delete(const hfs_gl *gl, GLuint *t);
  * or layers of array textures. */
 int hfs_gles_fbo_new(const hfs_gl *gl, GLuint *fbo, int n, const GLuint *tex, const int *layer,
                      const char *what, hfs_error *err);
-/* Attaches `outs` consecutive layers of array texture tex from layer0 to
- * fbo (the other of the 4 attachments detached) and checks completeness. */
+/* Targets a grid draw may fill (hfs_gles_fbo_layers). */
+#define HFS_GLES_MAX_OUTS 8
+/* Attaches `outs` (<= HFS_GLES_MAX_OUTS, and no more than the context's
+ * draw buffers) consecutive layers of array texture tex from layer0 to fbo
+ * (the rest of the first 4 attachments detached) and checks completeness. */
 int hfs_gles_fbo_layers(const hfs_gl *gl, GLuint fbo, GLuint tex, int layer0, int outs,
                         const char *what, hfs_error *err);
 /* One fullscreen triangle into fbo over w x h. */
