@@ -56,7 +56,8 @@ struct hfs_gles_frame {
     hfs_gles_layout L;
     int tables;                           /* the wedge-table visibility path */
     int slice;                            /* exact slice lighting (slice_light.h) */
-    int hor_layers;                       /* slice path: grid horizon layers (4 dirs each) */
+    int hor_layers;                       /* slice path: grid horizon layers (4 directions
+                                             each, 2 with hor_pairs) */
     int env_near;                         /* slice path: 1, the texel's own cell is per texel */
     int hor_pairs;                        /* slice path, sub-sampled grid: each horizon as
                                              its occluder (height, distance), 2 a texel */

@@ -17,9 +17,6 @@
 /* Slice path: horizons a layer (an RGBA texel): 4, or 2 occluders as
  * (height, distance) pairs (hor_pairs). */
 #define SLICE_DIRS_PER_LAYER(pairs) ((pairs) ? 2 : 4)
-/* Up to this many targets a draw where the context has them (ES 3.0
- * guarantees 4): 12 directions as pairs fill 6 in one draw. */
-#define SLICE_MAX_OUTS 8
 
 static int present(const hfs_gles_frame *fr)
 {
@@ -49,8 +46,10 @@ static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
          * than the directions need (a wider one costs its fragments). */
         const int layers = (fr->q->nphi_env + SLICE_DIRS_PER_LAYER(fr->hor_pairs) - 1) /
                            SLICE_DIRS_PER_LAYER(fr->hor_pairs);
-        const int max_outs = g->caps.max_draw_buffers < SLICE_MAX_OUTS
-                                 ? g->caps.max_draw_buffers : SLICE_MAX_OUTS;
+        /* Up to HFS_GLES_MAX_OUTS targets a draw where the context has
+         * them (ES 3.0 guarantees 4): 12 directions as pairs fill 6. */
+        const int max_outs = g->caps.max_draw_buffers < HFS_GLES_MAX_OUTS
+                                 ? g->caps.max_draw_buffers : HFS_GLES_MAX_OUTS;
         const int draws = (layers + max_outs - 1) / max_outs;
         fr->hor_outs = (layers + draws - 1) / draws;
         const int per = fr->hor_outs * SLICE_DIRS_PER_LAYER(fr->hor_pairs);
@@ -168,8 +167,15 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_er
     const int per_layer = SLICE_DIRS_PER_LAYER(fr->hor_pairs), per = fr->hor_outs * per_layer;
     for (int d0 = 0; fr->slice && !rc && d0 < g->env_vis_n; d0 += per) {
         hfs_gles_set_i1(gl, prog, "u_dir0", d0);
-        rc = hfs_gles_draw_grid_layers(g, L, g->r.hor_fbo, g->r.hor, d0 / per_layer, fr->hor_outs,
-                                       "environment horizons", fetch_sum, err);
+        rc = hfs_gles_draw_grid_layers(g, L, g->r.hor_fbo, g->r.hor, d0 / per_layer,
+                                       fr->hor_outs, "environment horizons", fetch_sum, err);
+    }
+    /* hfs_gles_fbo_layers resets the first 4 attachments only: leave none
+     * past them behind for a later frame that fills fewer. */
+    if (fr->slice && fr->hor_outs > 4) {
+        gl->BindFramebuffer(GL_FRAMEBUFFER, g->r.hor_fbo);
+        for (int o = 4; o < fr->hor_outs; ++o)
+            gl->FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)o, 0, 0, 0);
     }
     gl->UseProgram(0);
     return rc ? rc : hfs_gl_check(gl, "backend gles: env pass", err);
