@@ -457,8 +457,9 @@ static int cmd_render(const cli *c, hfs_error *err)
     if ((rc = hfs_outputs_commit(outs, err)))
         goto out;
     if (!c->quiet && !c->time_frames)
-        fprintf(stderr, "%s: %dx%d, backend %s, %.3f s\n", c->out_png ? c->out_png : c->out_pfm ? c->out_pfm : c->out_tif,
-                in.field.width, in.field.height, hfs_renderer_backend_name(r), t1 - t0);
+        fprintf(stderr, "%s: %dx%d, backend %s, %.3f s\n",
+                c->out_png ? c->out_png : c->out_pfm ? c->out_pfm : c->out_tif, in.field.width,
+                in.field.height, hfs_renderer_backend_name(r), t1 - t0);
 out:
     hfs_outputs_destroy(outs);
     hfs_image_free(&img);

@@ -129,14 +129,21 @@ static void georef(GDALDatasetH ds, const double gt[6], int w0, int h0, hfs_heig
         g[3] += g[5] * h0;
         g[5] = -g[5];
     }
-    const double sx = (w0 - 1.0) / (out->width - 1.0), sy = (h0 - 1.0) / (out->height - 1.0);
+    /* (a loaded grid is at least 2 x 2, check_dataset; guarded all the same) */
+    const double sx = out->width > 1 ? (w0 - 1.0) / (out->width - 1.0) : 1.0;
+    const double sy = out->height > 1 ? (h0 - 1.0) / (out->height - 1.0) : 1.0;
     g[0] += 0.5 * g[1] * (1.0 - sx), g[1] *= sx;
     g[3] += 0.5 * g[5] * (1.0 - sy), g[5] *= sy;
     memcpy(out->geotransform, g, sizeof g);
     out->has_georef = 1;
     const char *wkt = GDALGetProjectionRef(ds);
-    if (wkt && strlen(wkt) < sizeof out->crs_wkt)
+    if (wkt && strlen(wkt) < sizeof out->crs_wkt) {
         snprintf(out->crs_wkt, sizeof out->crs_wkt, "%s", wkt);
+    } else if (wkt) { /* too long to keep: say so (hfs_io.h) */
+        const size_t n = strlen(out->note);
+        snprintf(out->note + n, sizeof out->note - n, "%sCRS dropped (WKT of %zu bytes)",
+                 n ? "; " : "", strlen(wkt));
+    }
 }
 
 int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
