@@ -200,13 +200,10 @@ static int make_plan(const hfs_field *f, const hfs_quality *q, hfs_cpu_pyramid *
     return rc;
 }
 
-int hfs_cpu_bounces(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q_in,
+int hfs_cpu_bounces(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                     int bounces, float *out, hfs_progress_fn progress, void *user,
                     hfs_error *err)
 {
-    hfs_quality eff = *q_in; /* the directions' rule resolved (hfs_quality_env_dirs) */
-    eff.nphi_env = hfs_quality_env_dirs(q_in);
-    const hfs_quality *q = &eff;
     const size_t n = (size_t)f->width * (size_t)f->height * 3;
     const int threads = q->threads > 0 ? q->threads : hfs_parallel_default_threads();
     hfs_cpu_pyramid *pyr = NULL;

@@ -76,7 +76,7 @@ void hfs_cpu_local_row(const hfs_cpu_local *lc, int worker, int j, const double 
                        double *lo_row, double *sp_row);
 
 /* hfs_cpu_render (backends.h) with explicit local-light options (NULL =
- * defaults) and without the indirect bounces; defined in cpu_render.c. */
+ * defaults); defined in cpu_render.c. */
 int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                         const hfs_cpu_local_options *local_opt, hfs_image *out,
                         hfs_progress_fn progress, void *user, hfs_error *err);

@@ -291,16 +291,13 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
     return rc;
 }
 
-int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q_in,
+int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                         const hfs_cpu_local_options *local_opt, hfs_image *out,
                         hfs_progress_fn progress, void *user, hfs_error *err)
 {
-    if (!f || !l || !q_in || !out || !out->rgb || !f->z || f->width < 2 || f->height < 2 ||
+    if (!f || !l || !q || !out || !out->rgb || !f->z || f->width < 2 || f->height < 2 ||
         out->width != f->width || out->height != f->height)
         return hfs_fail(err, HFS_E_INVALID, "backend cpu: invalid field, lighting or output");
-    hfs_quality eff = *q_in; /* the directions' rule resolved (hfs_quality_env_dirs) */
-    eff.nphi_env = hfs_quality_env_dirs(q_in);
-    const hfs_quality *q = &eff;
     if (q->k < 1 || q->offset < 0 || q->nphi_env < 1 || q->nphi_key < 1)
         return hfs_fail(err, HFS_E_INVALID, "backend cpu: quality k=%d offset=%d nphi_env=%d "
                         "nphi_key=%d out of range", q->k, q->offset, q->nphi_env, q->nphi_key);

@@ -231,14 +231,11 @@ typedef enum hfs_precision {
  * scale within 256 texels reads the heights themselves), 12 env / 3 key
  * directions, 4 refining samples per horizon, subsample 2 (SN08/NS09
  * used Legendre at k=4, offset=2, 32 directions: dominated on every
- * benchmark scene, BENCHMARKS.md "Run time against error").  The env
- * directions follow the grid step unless set (HFS_NPHI_ENV_MATCHED). */
+ * benchmark scene, BENCHMARKS.md "Run time against error"). */
 typedef struct hfs_quality {
     int k;                   /* pyramid level step (levels per octave), 2   */
     int offset;              /* level offset o (levels biased by k*o), 8    */
-    int nphi_env;            /* azimuth samples, environment (full swath);
-                                HFS_NPHI_ENV_MATCHED (0, the default): 12,
-                                or 24 at subsample 1 (hfs_quality_env_dirs) */
+    int nphi_env;            /* azimuth samples, environment (full swath) 12 */
     int nphi_key;            /* azimuth samples per key light swath, 3      */
     int refine;              /* samples refining each environment and key-
                                 light horizon between the pyramid's scales,
@@ -274,21 +271,6 @@ typedef struct hfs_quality {
 
 /* Overwrite every field with its default (= the "kiosk" preset). */
 HFS_API void hfs_quality_defaults(hfs_quality *q);
-
-/* nphi_env's default: the environment's directions matched to the
- * visibility grid's step.  The azimuths, not the grid, bound the slice
- * path's accuracy on texel-rough relief, and a step-1 grid costs about
- * 3.6x a 2x2 one per direction: at 12 directions subsample 1 is
- * dominated (the 2x2 grid at 24 is both faster and more accurate), so a
- * frame asked for subsample 1 gets 24 (BENCHMARKS.md "Directions matched
- * to the grid step").  Steps 2 and 4 get 12. */
-#define HFS_NPHI_ENV_MATCHED 0
-#define HFS_NPHI_ENV_STEP1 24
-#define HFS_NPHI_ENV_COARSE 12
-
-/* The environment azimuths a frame with q uses: q->nphi_env, or where that
- * is HFS_NPHI_ENV_MATCHED the count for q->subsample. */
-HFS_API int hfs_quality_env_dirs(const hfs_quality *q);
 
 /* Settings per use, picked from the measured front of error against
  * full-frame time over cones, fractal terrain and the real DEM at 256^2

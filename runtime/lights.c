@@ -29,9 +29,8 @@ int hfs_bounce_capped(const hfs_lighting *l, const hfs_quality *q)
 
 int hfs_bounce_dirs(const hfs_quality *q)
 {
-    const int n_env = hfs_quality_env_dirs(q);
-    int n = q->nphi_bounce < n_env ? q->nphi_bounce : n_env;
-    while (n > 1 && n_env % n)
+    int n = q->nphi_bounce < q->nphi_env ? q->nphi_bounce : q->nphi_env;
+    while (n > 1 && q->nphi_env % n)
         --n;
     return n > 0 ? n : 1;
 }

@@ -17,13 +17,11 @@ typedef struct preset {
     hfs_visibility_path visibility;
 } preset;
 
-/* The first row is the defaults.  A pick whose env directions are the
- * count matched to its grid step keeps HFS_NPHI_ENV_MATCHED, so that the
- * preset with another subsample still gets the matched count. */
+/* The first row is the defaults. */
 static const preset presets[] = {
-    {"kiosk", 2, 8, HFS_NPHI_ENV_MATCHED, 3, 2, HFS_PRECISION_FP16, HFS_VIS_SLICE},
+    {"kiosk", 2, 8, 12, 3, 2, HFS_PRECISION_FP16, HFS_VIS_SLICE},
     {"panel", 4, 8, 32, 5, 1, HFS_PRECISION_FP16, HFS_VIS_SLICE},
-    {"headless", 2, 8, HFS_NPHI_ENV_MATCHED, 3, 4, HFS_PRECISION_FP16, HFS_VIS_SLICE},
+    {"headless", 2, 8, 12, 3, 4, HFS_PRECISION_FP16, HFS_VIS_SLICE},
 };
 
 static void apply(hfs_quality *q, const preset *p)
@@ -51,13 +49,6 @@ void hfs_quality_defaults(hfs_quality *q)
     q->truth_elev_order = 16;
     q->truth_light_samples = 256;
     apply(q, &presets[0]);
-}
-
-int hfs_quality_env_dirs(const hfs_quality *q)
-{
-    if (q->nphi_env != HFS_NPHI_ENV_MATCHED)
-        return q->nphi_env;
-    return q->subsample == 1 ? HFS_NPHI_ENV_STEP1 : HFS_NPHI_ENV_COARSE;
 }
 
 int hfs_quality_preset(hfs_quality *q, const char *use)

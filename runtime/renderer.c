@@ -315,11 +315,9 @@ static int check_output(const hfs_image *out, const char *who, hfs_error *err)
 }
 
 /* Validates a frame's inputs; the heights only when they are not the ones
- * last found finite under the current serial.  *eff: the quality the
- * backend gets, its rules resolved to counts (hfs_quality_env_dirs), so
- * that no backend reads a rule. */
+ * last found finite under the current serial. */
 static int validate_frame(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
-                          const hfs_quality *q, hfs_quality *eff, hfs_error *err)
+                          const hfs_quality *q, hfs_error *err)
 {
     const checked_heights now = {f ? f->z : NULL, f ? f->width : 0, f ? f->height : 0,
                                  r->field_serial};
@@ -328,10 +326,6 @@ static int validate_frame(hfs_renderer *r, const hfs_field *f, const hfs_lightin
     const int rc = hfs_validate_frame_inputs(f, l, q, !known, r->ops->reads_env_map, err);
     if (!rc && !known && now.serial != 0)
         r->checked = now;
-    if (!rc) {
-        *eff = *q;
-        eff->nphi_env = hfs_quality_env_dirs(q);
-    }
     return rc;
 }
 
@@ -353,9 +347,7 @@ int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
                         const hfs_quality *q, hfs_image *out, hfs_progress_fn progress,
                         void *user, hfs_error *err)
 {
-    hfs_quality eff;
-    int rc = validate_frame(r, f, l, q, &eff, err);
-    q = &eff;
+    int rc = validate_frame(r, f, l, q, err);
     if (rc)
         return rc;
     if (!out || !out->rgb || out->width != f->width || out->height != f->height)
@@ -394,9 +386,7 @@ int hfs_renderer_render_texture(hfs_renderer *r, const hfs_field *f, const hfs_l
         return hfs_fail(err, HFS_E_INVALID, "render texture: no %s", r ? "output" : "renderer");
     *out = (hfs_lit_texture){0};
     hfs_lit_texture_desc d;
-    hfs_quality eff;
-    int rc = validate_frame(r, f, l, q, &eff, err);
-    q = &eff;
+    int rc = validate_frame(r, f, l, q, err);
     if (rc || (rc = lit_desc(how, &d, err)))
         return rc;
     if (!r->ops->render_texture)
@@ -501,9 +491,7 @@ int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *f, const hfs_ligh
                              const hfs_quality *q, const hfs_view *v, hfs_image *lit,
                              hfs_image *out, hfs_error *err)
 {
-    hfs_quality eff;
-    int rc = validate_frame(r, f, l, q, &eff, err);
-    q = &eff;
+    int rc = validate_frame(r, f, l, q, err);
     if (rc || (rc = hfs_view_check(v, err)))
         return rc;
     if (!out || !out->rgb || out->width != v->width || out->height != v->height)
@@ -542,9 +530,7 @@ int hfs_renderer_query_points(hfs_renderer *r, const hfs_field *f, const hfs_lig
                               const hfs_quality *q, const double *xyz, int n, float *vis,
                               hfs_error *err)
 {
-    hfs_quality eff;
-    int rc = validate_frame(r, f, l, q, &eff, err);
-    q = &eff;
+    int rc = validate_frame(r, f, l, q, err);
     if (rc)
         return rc;
     if (n < 0 || (n > 0 && (!xyz || !vis)))
@@ -566,9 +552,7 @@ int hfs_renderer_shadow_height_map(hfs_renderer *r, const hfs_field *f, const hf
                                    const hfs_quality *q, int key, int layer, float *out,
                                    hfs_error *err)
 {
-    hfs_quality eff;
-    int rc = validate_frame(r, f, l, q, &eff, err);
-    q = &eff;
+    int rc = validate_frame(r, f, l, q, err);
     if (rc)
         return rc;
     if (key < 0 || key >= l->n_key || layer < 0 || layer >= HFS_SHM_LAYERS || !out)

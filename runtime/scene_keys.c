@@ -92,10 +92,9 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
     [HFS_SK_OFFSET] = {"offset", "N", HFS_FORM_INT, 1, 0, 0,
                        {{NULL, HFS_UNIT_COUNT, {0, 16, 0}, NULL}}, "8",
                        "pyramid level offset"},
-    [HFS_SK_NPHI_ENV] = {"nphi-env", "auto|N", HFS_FORM_INT, 1, 0, 0,
-                         {{NULL, HFS_UNIT_COUNT, {3, 1024, 0}, NULL}}, "auto",
-                         "azimuth samples for the environment (auto: 24 at subsample 1, "
-                         "else 12)"},
+    [HFS_SK_NPHI_ENV] = {"nphi-env", "N", HFS_FORM_INT, 1, 0, 0,
+                         {{NULL, HFS_UNIT_COUNT, {3, 1024, 0}, NULL}}, "12",
+                         "azimuth samples for the environment"},
     [HFS_SK_NPHI_KEY] = {"nphi-key", "N", HFS_FORM_INT, 1, 0, 0,
                          {{NULL, HFS_UNIT_COUNT, {1, 256, 0}, NULL}}, "3",
                          "azimuth samples per key light"},
@@ -313,11 +312,6 @@ int hfs_scene_key_check_lib(hfs_scene_key_id id, int i, double x, const char *wh
 int hfs_scene_key_int_allowed(const hfs_scene_key *k, long x)
 {
     return !k->pow2 || (x > 0 && (x & (x - 1)) == 0);
-}
-
-int hfs_scene_key_has_auto(const hfs_scene_key *k)
-{
-    return k->form == HFS_FORM_INT && !strncmp(k->arg, "auto|", 5);
 }
 
 void hfs_scene_key_allowed_text(const hfs_scene_key *k, char *buf, size_t size)

@@ -124,10 +124,6 @@ int hfs_scene_key_check_lib(hfs_scene_key_id id, int i, double x, const char *wh
 /* An INT key's value test beyond its range: pow2 keys take only the powers
  * of two in range.  1 if allowed. */
 int hfs_scene_key_int_allowed(const hfs_scene_key *k, long x);
-/* An INT key whose form starts "auto|" (nphi-env) also takes the word
- * auto: its library field is then 0, the rule that field's comment in
- * hfshade.h states (checked against no range). */
-int hfs_scene_key_has_auto(const hfs_scene_key *k);
 /* "1, 2, 4": the values a pow2 key allows. */
 void hfs_scene_key_allowed_text(const hfs_scene_key *k, char *buf, size_t size);
 

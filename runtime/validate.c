@@ -204,8 +204,6 @@ int hfs_validate_quality(const hfs_quality *q, hfs_error *err)
     };
     for (size_t i = 0; i < sizeof counts / sizeof counts[0]; ++i) {
         const hfs_scene_key *k = hfs_scene_key_get(counts[i].id);
-        if (counts[i].value == 0 && hfs_scene_key_has_auto(k))
-            continue;
         const int rc = CHECK_LIB(counts[i].id, 0, counts[i].value, k->name);
         if (rc)
             return rc;

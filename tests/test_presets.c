@@ -84,16 +84,13 @@ int main(int argc, char **argv)
             const hfs_visibility_path vis = !strcmp(col[c_vis], "wedge")   ? HFS_VIS_WEDGE_TABLE
                                             : !strcmp(col[c_vis], "slice") ? HFS_VIS_SLICE
                                                                            : HFS_VIS_LEGENDRE;
-            /* The directions a frame uses (a preset may keep the count
-             * matched to its grid step, hfs_quality_env_dirs). */
             CHECK(q.k == atoi(col[c_k]) && q.offset == atoi(col[c_o]) &&
-                      hfs_quality_env_dirs(&q) == atoi(col[c_e]) &&
-                      q.nphi_key == atoi(col[c_key]) &&
+                      q.nphi_env == atoi(col[c_e]) && q.nphi_key == atoi(col[c_key]) &&
                       q.subsample == atoi(col[c_sub]) &&
                       (q.precision == HFS_PRECISION_FP32) == prec_fp32 &&
                       q.visibility == vis,
                   "preset %s (k%d o%d e%d k%d sub%d) is not the measured pick (k%s o%s e%s k%s "
-                  "sub%s %s %s)", uses[u], q.k, q.offset, hfs_quality_env_dirs(&q), q.nphi_key, q.subsample,
+                  "sub%s %s %s)", uses[u], q.k, q.offset, q.nphi_env, q.nphi_key, q.subsample,
                   col[c_k], col[c_o], col[c_e], col[c_key], col[c_sub], col[c_prec], col[c_vis]);
             ++rows[u];
         }

@@ -169,7 +169,7 @@ void stress_fp16_bound(const stress_scene *sc, double umax, stress_fp16_terms *t
         /* The wedge-table path also reads V's wedges from fp16 tables: one
          * more U16 per wedge, |wedge_j|_2 <= sqrt(its solid angle), summed
          * over n wedges <= sqrt(n 4 pi). */
-        const double tables = sc->q.visibility == HFS_VIS_WEDGE_TABLE ? sqrt(hfs_quality_env_dirs(&sc->q)) : 0.0;
+        const double tables = sc->q.visibility == HFS_VIS_WEDGE_TABLE ? sqrt(sc->q.nphi_env) : 0.0;
         t->env = l->albedo / PI * U16 * (1.0 + tables) * sqrt(4.0 * PI) * worst / umax;
         /* The slice path stores the grid's horizons in fp16 instead: as
          * u = tan(x / 2), |dx| <= 2 U16 |u| / (1 + u^2) <= U16; as an

@@ -140,10 +140,6 @@ static int parse_int(hfs_scene_key_id id, const char *v, int *out, const char *w
                      hfs_error *err)
 {
     const hfs_scene_key *k = hfs_scene_key_get(id);
-    if (hfs_scene_key_has_auto(k) && !strcmp(v, "auto")) {
-        *out = 0;
-        return HFS_OK;
-    }
     char *end;
     errno = 0;
     long x = strtol(v, &end, 10);

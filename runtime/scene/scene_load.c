@@ -103,7 +103,7 @@ static int env_map_light(const hfs_scene *s, const hfs_envmap *env, hfs_scene_in
     if (!s->env_shade_sh) { /* the slices shade what is as wide as their wedge */
         hfs_quality q;
         hfs_scene_quality(s, &q);
-        o.max_radius = 3.14159265358979323846 / hfs_quality_env_dirs(&q);
+        o.max_radius = 3.14159265358979323846 / q.nphi_env;
     }
     const size_t n = (size_t)env->width * (size_t)env->height * 3;
     float *work = malloc(n * sizeof *work);

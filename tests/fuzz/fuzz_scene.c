@@ -45,7 +45,7 @@ static void check_lighting(const hfs_scene *s)
             fuzz_fail("local light not finite", NULL);
     if (!(l.albedo >= 0.0 && l.albedo <= 1.0) || !isfinite(l.env_rotate))
         fuzz_fail("albedo or rotation out of range", NULL);
-    if (q.k < 1 || hfs_quality_env_dirs(&q) < 3 || q.nphi_key < 1 || q.nphi_local < 3 ||
+    if (q.k < 1 || q.nphi_env < 3 || q.nphi_key < 1 || q.nphi_local < 3 ||
         (q.subsample != 1 && q.subsample != 2 && q.subsample != 4))
         fuzz_fail("quality setting out of range", NULL);
     if (s->raw_width && (s->raw_width < 2 || s->raw_height < 2))
