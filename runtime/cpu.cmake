@@ -10,6 +10,7 @@ add_library(hfs_shared STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/local_geometry.c
   ${CMAKE_CURRENT_SOURCE_DIR}/key_setup.c
   ${CMAKE_CURRENT_SOURCE_DIR}/slice_light.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/split_horizon.c # split horizons' rules (issue 15)
   ${CMAKE_CURRENT_SOURCE_DIR}/env_open.c      # an env map's open sky (issue 17)
   ${CMAKE_CURRENT_SOURCE_DIR}/env_map_slices.c
   ${CMAKE_CURRENT_SOURCE_DIR}/objects.c       # objects above the field (issue 19)
@@ -26,6 +27,7 @@ add_library(hfs_cpu STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_horizon.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_render.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_render_setup.c
+  ${CMAKE_CURRENT_SOURCE_DIR}/cpu_far_grid.c  # split horizons' far part (issue 15)
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_bounce.c
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_local.c     # local lights (issue 4)
   ${CMAKE_CURRENT_SOURCE_DIR}/cpu_points.c)   # points above the field (issue 19)

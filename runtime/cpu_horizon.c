@@ -240,30 +240,18 @@ static double refine_factor(int q, int refine, int k)
     return exp2((-1.0 + 2.0 * (q + 1) / (refine + 1)) / k);
 }
 
-double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
-                           const double *omega, size_t stride, double floor, int refine,
-                           double tie, int seeded, int skip)
+/* The largest of `refine` slopes about scale s of receiver (i, j) in
+ * direction dir (at d_s 2^(u/k), read from s's level like s itself,
+ * off-grid ones skipped) and `best`; *dist (if not NULL) becomes the
+ * distance of a refining sample that beats best. */
+static double refine_about(const hfs_horizon_plan *hp, int dir, int i, int j, int s, int refine,
+                           double best, double *dist)
 {
-    const int n = hp->n_levels - skip;
-    int best_s = seeded ? n - 1 : -1;
-    double best = -HALF_PI, best_slope = seeded ? tan(floor) : 0.0;
-    for (int s = n - 1; s >= 0; --s) { /* fine to coarse; near-ties: the finest */
-        const double o = omega[(size_t)s * stride];
-        const double sl = tan(o);
-        if (best_s < 0 || sl > best_slope + HFS_HORIZON_TIE * fabs(best_slope) + tie) {
-            best_s = s;
-            best_slope = sl;
-        }
-        best = o > best ? o : best;
-    }
-    if (best_s < 0) /* every scale skipped */
-        return floor > HALF_PI ? HALF_PI : (floor < -HALF_PI ? -HALF_PI : floor);
-    const hfs_horizon_tap *t = hfs_horizon_plan_taps(hp, dir) + best_s;
-    const double d0 = hfs_cpu_pyramid_spacing(hp->p, best_s);
+    const hfs_horizon_tap *t = hfs_horizon_plan_taps(hp, dir) + s;
+    const double d0 = hfs_cpu_pyramid_spacing(hp->p, s);
     const int k = hfs_cpu_pyramid_k(hp->p);
     const double *r = hfs_cpu_pyramid_full(hp->p, t->read);
     const double h0 = r[(size_t)j * hp->stride + (size_t)i];
-    double maxd = -DBL_MAX;
     for (int q = 0; q < refine; ++q) {
         const double f = refine_factor(q, refine, k);
         int ix, iy, xlo, xhi, ylo, yhi;
@@ -277,12 +265,73 @@ double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
         const double v = tap_read(r + (size_t)(j + iy) * hp->stride + (size_t)(i + ix),
                                   hp->stride, fx, fy);
         const double d = (v - h0) * t->inv_run / f;
-        maxd = d > maxd ? d : maxd;
+        if (d > best) {
+            best = d;
+            if (dist)
+                *dist = d0 * f;
+        }
     }
+    return best;
+}
+
+double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
+                           const double *omega, size_t stride, double floor, int refine,
+                           double tie, int seeded, int skip)
+{
+    return hfs_horizon_refined_within(hp, dir, i, j, omega, stride, floor, refine, tie, seeded,
+                                      skip, 0);
+}
+
+double hfs_horizon_refined_within(const hfs_horizon_plan *hp, int dir, int i, int j,
+                                  const double *omega, size_t stride, double floor, int refine,
+                                  double tie, int seeded, int skip, int coarsest)
+{
+    const int n = hp->n_levels - skip;
+    int best_s = seeded ? n - 1 : -1;
+    double best = -HALF_PI, best_slope = seeded ? tan(floor) : 0.0;
+    for (int s = n - 1; s >= coarsest; --s) { /* fine to coarse; near-ties: the finest */
+        const double o = omega[(size_t)s * stride];
+        const double sl = tan(o);
+        if (best_s < 0 || sl > best_slope + HFS_HORIZON_TIE * fabs(best_slope) + tie) {
+            best_s = s;
+            best_slope = sl;
+        }
+        best = o > best ? o : best;
+    }
+    if (best_s < 0) /* every scale skipped */
+        return floor > HALF_PI ? HALF_PI : (floor < -HALF_PI ? -HALF_PI : floor);
+    const double maxd = refine_about(hp, dir, i, j, best_s, refine, -DBL_MAX, NULL);
     const double a = atan(maxd); /* atan(-DBL_MAX) = -pi/2 */
     double o = a > best ? a : best;
     o = o > floor ? o : floor;
     return o > HALF_PI ? HALF_PI : (o < -HALF_PI ? -HALF_PI : o);
+}
+
+int hfs_horizon_occluder(const hfs_horizon_plan *hp, int dir, int i, int j,
+                         const double *omega, size_t stride, int first, int refine, double tie,
+                         double *slope, double *dist)
+{
+    double best = -1e30, ref = -1e30;
+    int bi = first;
+    *dist = 0.0;
+    for (int s = first; s >= 0; --s) { /* fine to coarse, as env_horizons.frag */
+        const double o = omega[(size_t)s * stride];
+        if (!(o > -HALF_PI))
+            break; /* off the grid: so is every farther scale */
+        const double sl = tan(o);
+        if (sl > ref + HFS_HORIZON_TIE * fabs(ref) + tie) {
+            ref = sl;
+            bi = s;
+        }
+        if (sl > best) {
+            best = sl;
+            *dist = hfs_cpu_pyramid_spacing(hp->p, s);
+        }
+    }
+    if (bi >= 0 && first >= 0)
+        best = refine_about(hp, dir, i, j, bi, refine, best, dist);
+    *slope = best;
+    return *dist > 0.0;
 }
 
 double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,

@@ -113,6 +113,25 @@ double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
                            const double *omega, size_t stride, double floor, int refine,
                            double tie, int seeded, int skip);
 
+/* hfs_horizon_refined over the scales coarsest..N-1-skip only (the near
+ * part of split horizons, split_horizon.h; coarsest = 0: all). */
+double hfs_horizon_refined_within(const hfs_horizon_plan *hp, int dir, int i, int j,
+                                  const double *omega, size_t stride, double floor, int refine,
+                                  double tie, int seeded, int skip, int coarsest);
+
+/* The far occluder of split horizons (split_horizon.h) at receiver (i, j)
+ * in direction dir, as env_horizons.frag's far pass finds it: going from
+ * scale `first` (the finest far one) to coarser ones until one is off the
+ * grid (omega[s * stride] = -pi/2: the row form's angles with floor -pi/2),
+ * the largest slope, then `refine` samples about the scale that leads (a
+ * scale takes over when it beats the leader by more than the tie, as in
+ * hfs_horizon_refined, unseeded).  *slope: the largest slope (-1e30 if
+ * none), *dist its distance in texels (0 if none).  Returns whether there
+ * is one. */
+int hfs_horizon_occluder(const hfs_horizon_plan *hp, int dir, int i, int j,
+                         const double *omega, size_t stride, int first, int refine, double tie,
+                         double *slope, double *dist);
+
 /* Key-light horizon, SN08's: max(floor, max over knots and midpoints of the
  * cubic B-spline of omega[0], omega[stride], ..., omega[(n-1)*stride]),
  * clamped to [-pi/2, pi/2]. */

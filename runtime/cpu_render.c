@@ -122,8 +122,23 @@ static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int
 
 /* The environment's exit radiance at texel i of the row (normal n, H(N)
  * hn), added to lo; its glossy term to sp when the surface is (nr > 0). */
+/* Split horizons (split_horizon.h): direction d's sub-horizons at texel
+ * (i, j), max(near om, each far slope's elevation), into x[0..k-1]. */
+static int sub_horizons(const render_ctx *c, int i, int j, int d, double om, double *x)
+{
+    double fs[HFS_SPLIT_MAX_K];
+    hfs_cpu_far_slopes(c->far, i, j, d, fs);
+    for (int h = 0; h < c->split.k; ++h) {
+        const double a = atan(fs[h]);
+        x[h] = a > om ? a : om;
+    }
+    return c->split.k;
+}
+
+/* The environment's exit radiance at texel (i, j) (normal n, H(N) hn),
+ * added to lo; its glossy term to sp when the surface is (nr > 0). */
 static void env_texel(const render_ctx *c, worker_scratch *s, const swath_job *job,
-                      const double *omega, int i, const double n[3],
+                      const double *omega, int i, int j, const double n[3],
                       const double hn[HFS_SH_N], double nr, const double r[3], double lo[3],
                       double sp[3])
 {
@@ -131,27 +146,31 @@ static void env_texel(const render_ctx *c, worker_scratch *s, const swath_job *j
     /* With the map's own slices the SH's occluded part is needed only by
      * the glossy lobe (hfs_gloss_env). */
     const int map = c->map_slices.fg != NULL, need_t = !map || nr > 0.0;
-    double v[HFS_SH_N], t[HFS_SH_N];
+    double v[HFS_SH_N], t[HFS_SH_N], x[HFS_SPLIT_MAX_K];
+    /* env-shade = map: the open sky beyond order 4, and with the map's
+     * slices the occluded part from the map instead of the SH. */
+    double e[3] = {0.0, 0.0, 0.0};
+    if (c->env_open)
+        hfs_env_open_lookup(c->env_open, n, c->env_rotate, e);
     if (c->slices.p) { /* exact slice lighting (slice_light.h) */
         memcpy(t, hn, sizeof t); /* the open hemisphere, exactly */
-        for (int d = 0; d < nd && need_t; ++d)
-            hfs_slice_add_occluded(&c->slices, d, n, omega[(size_t)d * w + i], t);
+        for (int d = 0; d < nd; ++d) {
+            const double om = omega[(size_t)d * w + i];
+            const int nx = c->far ? sub_horizons(c, i, j, d, om, x) : (x[0] = om, 1);
+            if (need_t)
+                hfs_slice_add_occluded_mean(&c->slices, d, n, x, nx, t);
+            if (map)
+                hfs_map_slices_occluded_mean(&c->map_slices, d, n, x, nx, e);
+        }
     } else {
         for (int d = 0; d < nd; ++d)
             s->om[d] = omega[(size_t)d * w + i];
         hfs_visibility_eval(job->vis, s->om, v);
         hfs_sh_product(hn, v, t);
     }
-    /* env-shade = map: the open sky beyond order 4, and with the map's
-     * slices the occluded part from the map instead of the SH. */
-    double d[3] = {0.0, 0.0, 0.0};
-    if (c->env_open)
-        hfs_env_open_lookup(c->env_open, n, c->env_rotate, d);
-    for (int q = 0; q < nd && map; ++q)
-        hfs_map_slices_occluded(&c->map_slices, q, n, omega[(size_t)q * w + i], d);
     for (int ch = 0; ch < 3; ++ch)
-        lo[ch] += env_clamp(c->rho_pi * (hfs_sh_dot(map ? hn : t, c->l_env[ch]) + d[ch]),
-                            c->rho_pi * (hfs_sh_dot(hn, c->l_env[ch]) + d[ch]), c->env_neg[ch]);
+        lo[ch] += env_clamp(c->rho_pi * (hfs_sh_dot(map ? hn : t, c->l_env[ch]) + e[ch]),
+                            c->rho_pi * (hfs_sh_dot(hn, c->l_env[ch]) + e[ch]), c->env_neg[ch]);
     if (nr > 0.0)
         hfs_gloss_env(&c->gloss, nr, r, t, hn, c->l_env, sp);
 }
@@ -175,7 +194,9 @@ static void trace_row(const render_ctx *c, worker_scratch *s, int j)
             double *fl = job->is_env ? s->floor_row : floors + (size_t)d * w;
             for (int i = 0; i < w; ++i)
                 fl[i] = hfs_horizon_floor(s->normals + 3 * i, cs, sn);
-            const int env_refined = job->is_env && c->refine > 0;
+            /* Split horizons need the per-scale angles (the near part's
+             * range), refined or not. */
+            const int env_refined = job->is_env && (c->refine > 0 || c->far);
             hfs_horizon_row(job->plan, d, j, fl, job->is_env && !env_refined ? s->maxd : NULL,
                             want_levels || env_refined ? s->levels : NULL);
             double *om = omega + (size_t)d * w;
@@ -187,11 +208,13 @@ static void trace_row(const render_ctx *c, worker_scratch *s, int j)
             /* Exact slices search the receiver's own cell exactly instead
              * of the finest scale, which lies in it (as the GLES path). */
             const int own_cell = c->slices.p != NULL;
+            const int coarsest = c->far ? hfs_cpu_far_coarsest_near(c->far) : 0;
             for (int i = 0; i < w; ++i)
-                om[i] = env_refined ? hfs_horizon_refined(job->plan, d, i, j, s->levels + i,
-                                                          (size_t)w, fl[i], c->refine, c->tie, 1,
-                                                          own_cell)
-                                    : hfs_horizon_env_from_maxd(s->maxd[i], fl[i]);
+                om[i] = env_refined
+                            ? hfs_horizon_refined_within(job->plan, d, i, j, s->levels + i,
+                                                         (size_t)w, fl[i], c->refine, c->tie, 1,
+                                                         own_cell, coarsest)
+                            : hfs_horizon_env_from_maxd(s->maxd[i], fl[i]);
             if (own_cell)
                 for (int i = 0; i < w; ++i)
                     om[i] = fmax(om[i], atan(hfs_field_first_cell_slope(c->f, i, j, cs, sn)));
@@ -236,7 +259,7 @@ static void render_row(void *ctx, int j, int worker)
             const int nd = job->swath.n;
             const double *omega = s->omega + c->omega_at[q];
             if (job->is_env) {
-                env_texel(c, s, job, omega, i, n, hn, nr, r, lo, sp);
+                env_texel(c, s, job, omega, i, j, n, hn, nr, r, lo, sp);
                 continue;
             }
             const double cos_beta = n[0] * job->dir[0] + n[1] * job->dir[1] + n[2] * job->dir[2];
@@ -363,6 +386,11 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         goto done;
     if (slice && c.has_env && (rc = hfs_slice_table_init(&c.slices, &c.jobs[0].swath, err)))
         goto done;
+    hfs_split_make(q, &c.split);
+    if (c.split.on && c.has_env &&
+        (rc = hfs_cpu_far_create(f, pyr, q, &c.split, &c.jobs[0].swath, c.tie, threads, &c.far,
+                                 err)))
+        goto done;
     if (slice && c.has_env && l->env_shade_map && l->env_open &&
         (rc = hfs_map_slices_build(&c.map_slices, l->env_shade_map, l->env_map_width,
                                    l->env_map_height, l->env_rotate, c.slices.dir, c.slices.n,
@@ -400,6 +428,7 @@ done:
         if (c.jobs[j].vis_of < 0)
             hfs_visibility_destroy(c.jobs[j].vis);
     }
+    hfs_cpu_far_destroy(c.far);
     hfs_slice_table_free(&c.slices);
     hfs_map_slices_free(&c.map_slices);
     free(c.spec);

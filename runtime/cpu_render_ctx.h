@@ -8,6 +8,7 @@
 #ifndef HFS_CPU_RENDER_CTX_H
 #define HFS_CPU_RENDER_CTX_H
 
+#include "cpu_far_grid.h"
 #include "cpu_horizon.h"
 #include "cpu_local.h"
 #include "cpu_pyramid.h"
@@ -67,6 +68,8 @@ typedef struct render_ctx {
     const hfs_cpu_local *local; /* local lights (issue 4), NULL if none */
     hfs_slice_table slices;    /* HFS_VIS_SLICE: the environment's slices (p NULL otherwise) */
     hfs_map_slices map_slices; /* the map along them (fg NULL otherwise) */
+    hfs_split split;           /* split horizons (split_horizon.h) */
+    hfs_cpu_far *far;          /* their far grid, NULL when not split */
     hfs_gloss gloss;           /* glossy surfaces (gloss.h) */
     float *spec;               /* W x H x 3 glossy term when gloss.on, added after the map */
 } render_ctx;

@@ -138,3 +138,13 @@ void hfs_map_slices_occluded(const hfs_map_slices *ms, int j, const double n[3],
     for (int c = 0; c < 3; ++c)
         e[c] += ms->dphi * (sx[c] - sf[c]);
 }
+
+void hfs_map_slices_occluded_mean(const hfs_map_slices *ms, int j, const double n[3],
+                                  const double *x, int nx, double e[3])
+{
+    double sum[3] = {0.0, 0.0, 0.0};
+    for (int h = 0; h < nx; ++h)
+        hfs_map_slices_occluded(ms, j, n, x[h], sum);
+    for (int c = 0; c < 3; ++c)
+        e[c] += sum[c] / nx;
+}

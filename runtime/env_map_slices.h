@@ -53,5 +53,9 @@ void hfs_map_slices_free(hfs_map_slices *ms);
  * to e (irradiance, before rho/pi). */
 void hfs_map_slices_occluded(const hfs_map_slices *ms, int j, const double n[3], double x,
                              double e[3]);
+/* The mean of slice j's occluded part over the nx horizons of its
+ * sub-directions (split horizons, split_horizon.h). */
+void hfs_map_slices_occluded_mean(const hfs_map_slices *ms, int j, const double n[3],
+                                  const double *x, int nx, double e[3]);
 
 #endif /* HFS_ENV_MAP_SLICES_H */

@@ -102,6 +102,16 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                        {{NULL, HFS_UNIT_COUNT, {0, 16, 0}, NULL}}, "4",
                        "samples refining each environment and key-light horizon between "
                        "scales (0: the seeds')"},
+    [HFS_SK_FAR_FROM] = {"far-from", "N", HFS_FORM_INT, 1, 0, 0,
+                         {{NULL, HFS_UNIT_TEXELS, {0, 4096, 0}, NULL}}, "0",
+                         "split horizons: the environment's beyond N texels from a coarser "
+                         "grid at far-dirs sub-directions (0: not split)"},
+    [HFS_SK_FAR_DIRS] = {"far-dirs", "N", HFS_FORM_INT, 1, 0, 0,
+                         {{NULL, HFS_UNIT_COUNT, {1, 8, 0}, NULL}}, "3",
+                         "far sub-directions per environment direction"},
+    [HFS_SK_FAR_STEP] = {"far-step", "N", HFS_FORM_INT, 1, 0, 0,
+                         {{NULL, HFS_UNIT_COUNT, {0, 64, 0}, NULL}}, "0",
+                         "the far grid's step, texels (0: 2, 8, 16 at subsample 1, 2, 4)"},
     [HFS_SK_NPHI_BOUNCE] = {"nphi-bounce", "N", HFS_FORM_INT, 1, 0, 0,
                             {{NULL, HFS_UNIT_COUNT, {1, 1024, 0}, NULL}}, "12",
                             "azimuths the bounces gather along: the largest divisor of "

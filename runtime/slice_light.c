@@ -154,6 +154,33 @@ void hfs_slice_add_occluded(const hfs_slice_table *t, int j, const double n[3], 
     }
 }
 
+void hfs_slice_add_occluded_mean(const hfs_slice_table *t, int j, const double n[3],
+                                 const double *x, int nx, double T[HFS_SH_N])
+{
+    const double a = n[0] * t->dir[2 * j] + n[1] * t->dir[2 * j + 1], b = n[2];
+    const double floor = atan2(-a, b);
+    double d[HFS_SLICE_F] = {0}, gx[HFS_SLICE_F], gf[HFS_SLICE_F];
+    int any = 0;
+    hfs_slice_integrals(a, b, floor, gf);
+    for (int h = 0; h < nx; ++h) {
+        if (!(x[h] > floor))
+            continue; /* open: nothing occluded */
+        hfs_slice_integrals(a, b, x[h], gx);
+        for (int m = 0; m < HFS_SLICE_F; ++m)
+            d[m] += (gx[m] - gf[m]) / nx;
+        any = 1;
+    }
+    if (!any)
+        return;
+    const double *p = t->p + (size_t)j * HFS_SH_N * HFS_SLICE_F;
+    for (int k = 0; k < HFS_SH_N; ++k) {
+        double s = 0.0;
+        for (int m = 0; m < HFS_SLICE_F; ++m)
+            s += p[k * HFS_SLICE_F + m] * d[m];
+        T[k] += t->dphi * s;
+    }
+}
+
 void hfs_slice_add(const hfs_slice_table *t, int j, const double n[3], double x,
                    double T[HFS_SH_N])
 {

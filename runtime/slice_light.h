@@ -65,6 +65,12 @@ void hfs_slice_add(const hfs_slice_table *t, int j, const double n[3], double x,
 void hfs_slice_add_occluded(const hfs_slice_table *t, int j, const double n[3], double x,
                             double T[HFS_SH_N]);
 
+/* Split horizons (split_horizon.h): the mean of slice j's occluded part
+ * over the nx horizons x[0..nx-1] of its sub-directions, each with slice
+ * j's own kernel (its azimuth's N.d). */
+void hfs_slice_add_occluded_mean(const hfs_slice_table *t, int j, const double n[3],
+                                 const double *x, int nx, double T[HFS_SH_N]);
+
 /* The factored form the GLES path uses (uniform_blocks.c, env_slices.frag):
  * Y_k along the slice of azimuth phi is trig_k(phi) * sum_m a[k][m] f_m(e),
  * trig_k = 1, cos(m phi) or sin(|m| phi) for k's order m = 0, > 0, < 0

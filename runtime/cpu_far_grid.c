@@ -1,0 +1,148 @@
+/*
+ * cpu_far_grid.c — see cpu_far_grid.h.
+ */
+#include "cpu_far_grid.h"
+
+#include "parallel.h"
+#include "pyramid_layout.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#define HALF_PI 1.57079632679489661923
+
+struct hfs_cpu_far {
+    const hfs_field *f;
+    hfs_split split;
+    int n_env, n_sub;           /* directions, sub-directions (k n_env)      */
+    int gw, gh;                 /* grid receivers                            */
+    int first_far;              /* finest far scale index                    */
+    int refine;
+    double tie;
+    hfs_horizon_plan *plan;     /* the sub-directions                        */
+    double *omega;              /* per worker: n_levels angles               */
+    int n_levels;
+    float *pairs;               /* gh x gw x n_sub x 2: height over the
+                                   receiver and distance, texels (as the
+                                   GLES pass stores them)                    */
+};
+
+/* Heights in texels of the horizontal: world z / dx. */
+static double height_texels(const hfs_field *f, int i, int j)
+{
+    return f->zscale * (double)f->z[(size_t)j * (size_t)f->width + (size_t)i] / f->dx;
+}
+
+/* Grid row b: every receiver's occluder in every sub-direction. */
+static void far_row(void *ctx, int b, int worker)
+{
+    const hfs_cpu_far *g = ctx;
+    const int y = b * g->split.step < g->f->height - 1 ? b * g->split.step : g->f->height - 1;
+    double *omega = g->omega + (size_t)worker * (size_t)g->n_levels;
+    for (int a = 0; a < g->gw; ++a) {
+        const int x = a * g->split.step < g->f->width - 1 ? a * g->split.step : g->f->width - 1;
+        float *out = g->pairs + ((size_t)b * (size_t)g->gw + (size_t)a) * (size_t)g->n_sub * 2;
+        for (int e = 0; e < g->n_sub; ++e) {
+            double slope, dist;
+            hfs_horizon_point(g->plan, e, x, y, -HALF_PI, NULL, NULL, omega);
+            if (hfs_horizon_occluder(g->plan, e, x, y, omega, 1, g->first_far, g->refine, g->tie,
+                                     &slope, &dist)) {
+                double h = slope * dist;
+                h = h > HFS_SPLIT_MAX_H ? HFS_SPLIT_MAX_H : (h < -HFS_SPLIT_MAX_H ? -HFS_SPLIT_MAX_H : h);
+                out[2 * e] = (float)h;
+                out[2 * e + 1] = (float)dist;
+            } else {
+                out[2 * e] = (float)HFS_SPLIT_NONE_H;
+                out[2 * e + 1] = 0.0f;
+            }
+        }
+    }
+}
+
+int hfs_cpu_far_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, const hfs_quality *q,
+                       const hfs_split *split, const hfs_swath *env, double tie, int threads,
+                       hfs_cpu_far **out, hfs_error *err)
+{
+    *out = NULL;
+    hfs_cpu_far *g = calloc(1, sizeof *g);
+    if (!g)
+        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the far grid");
+    g->f = f;
+    g->split = *split;
+    g->n_env = env->n;
+    g->n_sub = env->n * split->k;
+    g->gw = hfs_grid_count(f->width, split->step);
+    g->gh = hfs_grid_count(f->height, split->step);
+    g->n_levels = hfs_cpu_pyramid_count(pyr);
+    g->first_far = g->n_levels - 1 -
+                   hfs_split_near_count(g->n_levels, hfs_cpu_pyramid_k(pyr), split->from);
+    g->refine = q->refine;
+    g->tie = tie;
+    double *phi = malloc((size_t)g->n_sub * sizeof *phi);
+    const int workers = threads < 1 ? 1 : threads;
+    g->omega = malloc((size_t)workers * (size_t)g->n_levels * sizeof *g->omega);
+    g->pairs = malloc((size_t)g->gw * (size_t)g->gh * (size_t)g->n_sub * 2 * sizeof *g->pairs);
+    int rc = !phi || !g->omega || !g->pairs
+                 ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the far grid")
+                 : HFS_OK;
+    for (int e = 0; !rc && e < g->n_sub; ++e)
+        phi[e] = hfs_split_phi(hfs_swath_phi(env, e / split->k), env->n, e % split->k, split->k);
+    if (!rc)
+        rc = hfs_horizon_plan_create(pyr, f->dx, f->zscale, q->offset, phi, g->n_sub, &g->plan,
+                                     err);
+    free(phi);
+    if (!rc)
+        hfs_parallel_rows(g->gh, workers, far_row, g, NULL, NULL);
+    if (rc) {
+        hfs_cpu_far_destroy(g);
+        return rc;
+    }
+    *out = g;
+    return HFS_OK;
+}
+
+void hfs_cpu_far_destroy(hfs_cpu_far *g)
+{
+    if (!g)
+        return;
+    hfs_horizon_plan_destroy(g->plan);
+    free(g->omega);
+    free(g->pairs);
+    free(g);
+}
+
+int hfs_cpu_far_coarsest_near(const hfs_cpu_far *g)
+{
+    return g->first_far + 1;
+}
+
+void hfs_cpu_far_slopes(const hfs_cpu_far *g, int i, int j, int d, double *slope)
+{
+    const int s = g->split.step, k = g->split.k;
+    int a0, b0;
+    double tx, ty;
+    hfs_grid_axis(i, s, g->f->width, &a0, &tx);
+    hfs_grid_axis(j, s, g->f->height, &b0, &ty);
+    const int a1 = a0 + 1 < g->gw ? a0 + 1 : a0, b1 = b0 + 1 < g->gh ? b0 + 1 : b0;
+    const int ra[4] = {a0, a1, a0, a1}, rb[4] = {b0, b0, b1, b1};
+    const double wt[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
+    /* The receivers' blended height over the texel. */
+    const double zp = height_texels(g->f, i, j);
+    double dz = 0.0;
+    for (int r = 0; r < 4; ++r) {
+        const int x = ra[r] * s < g->f->width - 1 ? ra[r] * s : g->f->width - 1;
+        const int y = rb[r] * s < g->f->height - 1 ? rb[r] * s : g->f->height - 1;
+        dz += wt[r] * (height_texels(g->f, x, y) - zp);
+    }
+    for (int h = 0; h < k; ++h) {
+        const int e = d * k + h;
+        double hb = 0.0, db = 0.0;
+        for (int r = 0; r < 4; ++r) {
+            const float *p = g->pairs + ((size_t)rb[r] * (size_t)g->gw + (size_t)ra[r]) *
+                                            (size_t)g->n_sub * 2 + 2 * (size_t)e;
+            hb += wt[r] * p[0];
+            db += wt[r] * p[1];
+        }
+        slope[h] = hfs_split_far_slope(hb, db, dz, s);
+    }
+}

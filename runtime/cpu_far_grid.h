@@ -1,0 +1,38 @@
+/*
+ * cpu_far_grid.h — the far part of split horizons (split_horizon.h) in the
+ * CPU reference: each far occluder at the receivers of the coarse grid, for
+ * the K sub-directions of every environment direction, and their blend at
+ * a texel.  The GLES path computes the same pairs in its far pass
+ * (pass_env_far.c) and blends them by texture filtering.
+ */
+#ifndef HFS_CPU_FAR_GRID_H
+#define HFS_CPU_FAR_GRID_H
+
+#include "cpu_horizon.h"
+#include "cpu_pyramid.h"
+#include "split_horizon.h"
+#include "visibility.h"
+
+typedef struct hfs_cpu_far hfs_cpu_far;
+
+/* The far grid of field f over pyramid pyr for the environment's swath env
+ * (its n directions, each split into split->k), split->from and
+ * split->step as split_horizon.h says; q gives refine and the level offset,
+ * tie the slope tie (hfs_horizon_tie_slope).  Computed on `threads`
+ * workers.  Returns HFS_OK, HFS_E_NOMEM or HFS_E_INVALID. */
+int hfs_cpu_far_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, const hfs_quality *q,
+                       const hfs_split *split, const hfs_swath *env, double tie, int threads,
+                       hfs_cpu_far **out, hfs_error *err);
+void hfs_cpu_far_destroy(hfs_cpu_far *g);
+
+/* The finest scale index the near part searches up to: scales
+ * 0..coarsest-1 are far (hfs_horizon_refined_within's `coarsest`). */
+int hfs_cpu_far_coarsest_near(const hfs_cpu_far *g);
+
+/* The far slopes at texel (i, j) of environment direction d's k
+ * sub-directions (slope[0..k-1]; -1e30 where none): each occluder blended
+ * between the grid receivers around the texel and moved to its height
+ * (hfs_split_far_slope). */
+void hfs_cpu_far_slopes(const hfs_cpu_far *g, int i, int j, int d, double *slope);
+
+#endif /* HFS_CPU_FAR_GRID_H */

@@ -1,0 +1,77 @@
+/*
+ * split_horizon.h — split horizons (issue 15; DESIGN.md "Split horizons"):
+ * the slice path's environment horizon in each direction as two parts.
+ *
+ *   near  the scales within far_from texels (and the receiver's own cell),
+ *         searched per receiver in the direction itself, as before;
+ *   far   the scales beyond, searched at the receivers of a coarser grid
+ *         (step G = hfs_quality_far_step) in K = far_dirs sub-directions
+ *         spread evenly over the direction's wedge (hfs_split_phi), each
+ *         kept as its occluder: the height over its receiver and the
+ *         distance, in texels (heights as world z / dx).
+ *
+ * A texel blends each far occluder bilinearly between the grid receivers
+ * around it (hfs_grid_axis, the GLES path's texture filtering) and moves it
+ * to its own height (hfs_split_far_slope); each sub-direction's horizon is
+ * max(tangent plane, near, far), and slice j's occluded part is the mean
+ * over its K sub-horizons, integrated with slice j's own kernel (its
+ * azimuth's N.d): the clamped cosine varies slowly with azimuth, the far
+ * horizons do not.
+ *
+ * Why: on the benchmark scenes the error left by 12 directions lay in the
+ * far horizons' azimuths (a far peak between two rays is missed), while the
+ * near ones interpolate between directions and the far ones between
+ * receivers (BENCHMARKS.md "Split horizons").  More directions would cost
+ * every scale at every receiver; this costs the far scales at a coarse
+ * grid's receivers and K horizon evaluations per slice.
+ *
+ * Shared by the CPU reference and the GLES path (the same rules and
+ * numbers); pure functions, part of hfs_shared.
+ */
+#ifndef HFS_SPLIT_HORIZON_H
+#define HFS_SPLIT_HORIZON_H
+
+#include "hfshade.h"
+
+#define HFS_SPLIT_MAX_K 8 /* far_dirs' largest value (scene_keys.c) */
+
+/* No far occluder (past the field's edge, or none in the grid): the
+ * GLES pass writes this pair, and the blend takes it as it is. */
+#define HFS_SPLIT_NONE_H (-3e4)
+#define HFS_SPLIT_MAX_H 3e4 /* |height| stored, within fp16 */
+
+typedef struct hfs_split {
+    int on;       /* far_from > 0 on the slice path */
+    double from;  /* far_from, texels */
+    int k;        /* far sub-directions per direction */
+    int step;     /* the far grid's step G */
+} hfs_split;
+
+/* The split of a frame with quality q (off unless q->far_from > 0 and
+ * q->visibility is the slice path). */
+void hfs_split_make(const hfs_quality *q, hfs_split *s);
+
+/* The azimuth of sub-direction h (0 <= h < k) of the direction at phi of a
+ * full swath of n: phi + ((h + 1/2) / k - 1/2) 2 pi / n. */
+double hfs_split_phi(double phi, int n, int h, int k);
+
+/* How many of a pyramid's n_levels scales (k levels per octave, spacing
+ * hfs_pyramid_spacing) are near: those at most `from` texels away (plus a
+ * hair, so that from = 8 keeps the scale at 8).  The near ones are the
+ * finest; scale index n_levels - count is the finest far one. */
+int hfs_split_near_count(int n_levels, int k, double from);
+
+/* Receivers of a grid of step g along an axis of n texels (receiver a at
+ * min(a g, n - 1)): their count, and for texel p the receiver a0 before it
+ * and the weight t of the next one (0 when p is a receiver), as the GLES
+ * path's hfs_grid_uv places its bilinear read. */
+int hfs_grid_count(int n, int g);
+void hfs_grid_axis(int p, int g, int n, int *a0, double *t);
+
+/* A far occluder blended at a texel (height h over the receivers, distance
+ * d, texels) seen from the texel, which lies dz below the receivers'
+ * blended height: the slope (h + dz min(d / g, 1)) / d, or -1e30 where
+ * there is none (d <= 0). */
+double hfs_split_far_slope(double h, double d, double dz, int g);
+
+#endif /* HFS_SPLIT_HORIZON_H */
