@@ -85,8 +85,10 @@ int hfs_cpu_far_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, const hfs
     int rc = !phi || !g->omega || !g->pairs
                  ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the far grid")
                  : HFS_OK;
+    hfs_swath sub;
+    hfs_split_swath(env, split->k, &sub);
     for (int e = 0; !rc && e < g->n_sub; ++e)
-        phi[e] = hfs_split_phi(hfs_swath_phi(env, e / split->k), env->n, e % split->k, split->k);
+        phi[e] = hfs_swath_phi(&sub, e);
     if (!rc)
         rc = hfs_horizon_plan_create(pyr, f->dx, f->zscale, q->offset, phi, g->n_sub, &g->plan,
                                      err);

@@ -582,7 +582,7 @@ HFS_API int hfs_renderer_shadow_height_map(hfs_renderer *r, const hfs_field *fie
 
 /* ---- measurement ------------------------------------------------------------ */
 
-#define HFS_MAX_PASSES 16
+#define HFS_MAX_PASSES 20
 
 /* One pass of the last frame.  GLES passes, in order: "upload" (heights to
  * the GPU), "normals", "decimate" (pyramid, fine to coarse), "reconstruct"

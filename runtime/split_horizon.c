@@ -7,8 +7,6 @@
 
 #include <math.h>
 
-#define TWO_PI 6.28318530717958647692
-
 void hfs_split_make(const hfs_quality *q, hfs_split *s)
 {
     s->on = q->far_from > 0 && q->visibility == HFS_VIS_SLICE;
@@ -17,9 +15,10 @@ void hfs_split_make(const hfs_quality *q, hfs_split *s)
     s->step = hfs_quality_far_step(q);
 }
 
-double hfs_split_phi(double phi, int n, int h, int k)
+void hfs_split_swath(const hfs_swath *env, int k, hfs_swath *far)
 {
-    return phi + ((h + 0.5) / k - 0.5) * TWO_PI / n;
+    hfs_swath_full(env->n * k, far);
+    far->phi0 = env->phi0 + env->dphi * (0.5 / k - 0.5);
 }
 
 int hfs_split_near_count(int n_levels, int k, double from)

@@ -32,6 +32,7 @@
 #define HFS_SPLIT_HORIZON_H
 
 #include "hfshade.h"
+#include "visibility.h"
 
 #define HFS_SPLIT_MAX_K 8 /* far_dirs' largest value (scene_keys.c) */
 
@@ -51,9 +52,11 @@ typedef struct hfs_split {
  * q->visibility is the slice path). */
 void hfs_split_make(const hfs_quality *q, hfs_split *s);
 
-/* The azimuth of sub-direction h (0 <= h < k) of the direction at phi of a
- * full swath of n: phi + ((h + 1/2) / k - 1/2) 2 pi / n. */
-double hfs_split_phi(double phi, int n, int h, int k);
+/* The far sub-directions of the environment's full swath env, as a full
+ * swath of k n: sub-direction h (0 <= h < k) of direction j is its sample
+ * j k + h, at phi_j + ((h + 1/2) / k - 1/2) dphi, evenly over the wedge
+ * [phi_j - dphi/2, phi_j + dphi/2]. */
+void hfs_split_swath(const hfs_swath *env, int k, hfs_swath *far);
 
 /* How many of a pyramid's n_levels scales (k levels per octave, spacing
  * hfs_pyramid_spacing) are near: those at most `from` texels away (plus a

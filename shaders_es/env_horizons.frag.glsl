@@ -33,6 +33,11 @@
  * that pass too (they differ from texel to texel), and the search starts
  * below any tangent plane, since the receivers that read it have their own.
  *
+ * Split horizons (runtime/split_horizon.h): the near pass searches only
+ * the scales from u_coarsest in; the far pass (u_far = 1, the same
+ * program on the far grid, pass_env_far.c) skips the u_near near ones and
+ * writes each far sub-direction's occluder as a pair.
+ *
  * HFS_COUNT: instead of V, write the number of texture fetches made
  * (o_v0 = (count mod 1024, floor(count / 1024), 0, 0)), for measurement.
  */
@@ -105,8 +110,13 @@ uniform float u_lk;                      /* the pyramid's levels per octave k */
 uniform float u_tie;                     /* hfs_horizon_tie_slope */
 #ifdef HFS_SLICE
 uniform int u_dir0;                      /* first direction of this draw */
-uniform int u_near;                      /* finest scales left to env_slices.frag */
+uniform int u_near;                      /* finest scales left to env_slices.frag
+                                            (the far pass: the near ones) */
+uniform int u_far;                       /* 1: split horizons' far pass (pass_env_far.c):
+                                            every search starts below any plane */
 #endif
+uniform int u_coarsest;                  /* coarsest scale searched: split horizons'
+                                            near part stops at far-from (0: all) */
 #ifdef HFS_SWATH_TEX
 /* The same data from a texture (too large for a uniform block): vec4 i of
  * the block below is SW(i). */
@@ -179,7 +189,7 @@ float horizon_tan(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], float best, int first,
     float ref = best;
     int bi = first;
     dist = 0.0;
-    for (int i = first; i >= 0; --i) {
+    for (int i = first; i >= u_coarsest; --i) {
         vec4 sc = u_scale[i];
         vec2 o;
         if (!hfs_scale_offset(g, u_size, sc.x, cs, o))
@@ -277,7 +287,7 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
         vec2 cs = SW_DIR(j).xy;
         /* A receiver that is its own grid point starts at its tangent
          * plane (a slope below it never wins); the others below any. */
-        float best = u_sub == 1 ? -(n.x * cs.x + n.y * cs.y) / n.z : -1e30;
+        float best = u_sub == 1 && u_far == 0 ? -(n.x * cs.x + n.y * cs.y) / n.z : -1e30;
         float dist;
         best = clamp(horizon_tan(g, cs, hx, best, HFS_NLEV - 1 - u_near, fetches, dist), -1e18,
                      1e18);

@@ -26,6 +26,12 @@
  * direction, u_nearw, uniform_blocks.c): 9 fetches for every direction.
  * u_near = 0 only on a one-level layout.
  *
+ * HFS_FARK K (split horizons, runtime/split_horizon.h): the grid holds
+ * the near part only; each slice's horizon is K sub-horizons, max(near,
+ * the far occluder of sub-direction j K + h from u_far, the far grid's
+ * pairs blended and moved to this texel's height), and the slice's part is
+ * their mean, integrated with the slice's own N.d (slice_add_mean).
+ *
  * HFS_ENV_MAP 1 (env-shade = map, pass_env_map_slices.c): the same
  * horizons, but each slice's occluded part integrated against the
  * environment map itself, dphi (S_j(x) - S_j(floor)) with S_j = a F_j +
@@ -39,6 +45,9 @@
 // hfs-variant: HFS_ENV_MAP 1, HFS_FP32 1
 // hfs-variant: HFS_PAIRS 1
 // hfs-variant: HFS_PAIRS 1, HFS_ENV_MAP 1
+// hfs-variant: HFS_FARK 3
+// hfs-variant: HFS_PAIRS 1, HFS_FARK 3
+// hfs-variant: HFS_PAIRS 1, HFS_FARK 2, HFS_ENV_MAP 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -47,6 +56,11 @@
 #define HFS_NDIR 32
 #endif
 #define HFS_DIR_UNROLLED 32              /* HFS_DIR in main */
+#ifndef HFS_FARK
+#define HFS_NSUB 1                       /* horizons per slice */
+#else
+#define HFS_NSUB HFS_FARK
+#endif
 
 precision highp float;
 precision highp int;
@@ -65,6 +79,11 @@ uniform ivec2 u_size;                    /* W, H */
 uniform ivec2 u_vsize;                   /* visibility grid size */
 uniform int u_sub;
 uniform int u_near;                      /* 1: the finest scale is searched here */
+#ifdef HFS_FARK
+uniform highp sampler2DArray u_far;      /* far occluders, 2 a layer, LINEAR */
+uniform ivec2 u_fsize;                   /* the far grid's size */
+uniform int u_fstep;                     /* and step */
+#endif
 
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
@@ -140,14 +159,14 @@ void multiples(vec2 x, out float c[5], out float s[5])
 
 /* d_m = g_m(x) - g_m(xf), g_m(x) = Int_x^{pi/2} f_m(e) (a cos e + b sin e)
  * cos e de (runtime/slice_light.c hfs_slice_integrals: the same closed
- * forms, differenced): x and xf as (cos, sin), dj0 = xf - x.  With
- * Jc_k = Int_x^{pi/2} cos ke de and Js_k = Int sin ke de, their
- * differences need only cos kx, sin kx. */
-void slice_dg(float a, float b, vec2 x, vec2 xf, float dj0, out vec4 d0236, out vec3 d145)
+ * forms, differenced): cos kx, sin kx of x (cx, sx) and of xf (cf, sf),
+ * k = 1..5, and dj0 = xf - x.  With Jc_k = Int_x^{pi/2} cos ke de and
+ * Js_k = Int sin ke de, their differences need only those; all of it is
+ * linear in them, so a mean over sub-horizons is the same expressions of
+ * their mean multiples. */
+void slice_dg(float a, float b, float cx[5], float sx[5], float cf[5], float sf[5], float dj0,
+              out vec4 d0236, out vec3 d145)
 {
-    float cx[5], sx[5], cf[5], sf[5];
-    multiples(x, cx, sx);
-    multiples(xf, cf, sf);
     float Jc[5], Js[5]; /* differences, index k - 1 */
     for (int k = 0; k < 5; ++k) {
         Jc[k] = (sf[k] - sx[k]) / float(k + 1);
@@ -163,19 +182,44 @@ void slice_dg(float a, float b, vec2 x, vec2 xf, float dj0, out vec4 d0236, out 
                 a * (Jc[0] / 4.0 + Jc[2] / 2.0 + Jc[4] / 4.0) + b * (Js[4] - Js[0]) / 4.0);
 }
 
-/* Adds slice j's part (cs = cos, sin phi) between its tangent plane and its
- * horizon, both as half-angle tangents u = tan(e / 2) (rational cos and
- * sin; one atan for the angle between them). */
-void slice_add(int j, vec2 cs, float a, float b, float uf, float ux, inout Sums S)
+/* (cos e, sin e) of a half-angle tangent u = tan(e / 2). */
+vec2 half_angle(float u)
 {
-    float qx = 1.0 / (1.0 + ux * ux), qf = 1.0 / (1.0 + uf * uf);
-    vec2 x = vec2((1.0 - ux * ux) * qx, 2.0 * ux * qx);
-    vec2 xf = vec2((1.0 - uf * uf) * qf, 2.0 * uf * qf);
+    float q = 1.0 / (1.0 + u * u);
+    return vec2((1.0 - u * u) * q, 2.0 * u * q);
+}
+
+/* Adds slice j's part (cs = cos, sin phi) between its tangent plane and
+ * its horizons, the mean over the HFS_NSUB sub-horizons ux[h] (each at
+ * least uf), all as half-angle tangents u = tan(e / 2) (rational cos and
+ * sin; one atan each for the angle between them). */
+void slice_add_mean(int j, vec2 cs, float a, float b, float uf, float ux[HFS_NSUB], inout Sums S)
+{
+    float cf[5], sf[5], cx[5], sx[5];
+    multiples(half_angle(uf), cf, sf);
+    float dj0 = 0.0;
+#if HFS_NSUB == 1
+    multiples(half_angle(ux[0]), cx, sx);
     /* 1 + uf ux > 0: uf > -1 (N_z > 0) and ux <= 1. */
-    float dj0 = 2.0 * atan((uf - ux) / (1.0 + uf * ux));
+    dj0 = 2.0 * atan((uf - ux[0]) / (1.0 + uf * ux[0]));
+#else
+    float c1[5], s1[5];
+    for (int k = 0; k < 5; ++k) {
+        cx[k] = 0.0;
+        sx[k] = 0.0;
+    }
+    for (int h = 0; h < HFS_NSUB; ++h) {
+        multiples(half_angle(ux[h]), c1, s1);
+        for (int k = 0; k < 5; ++k) {
+            cx[k] += c1[k] / float(HFS_NSUB);
+            sx[k] += s1[k] / float(HFS_NSUB);
+        }
+        dj0 += 2.0 * atan((uf - ux[h]) / (1.0 + uf * ux[h])) / float(HFS_NSUB);
+    }
+#endif
     vec4 d0236;
     vec3 d145;
-    slice_dg(a, b, x, xf, dj0, d0236, d145);
+    slice_dg(a, b, cx, sx, cf, sf, dj0, d0236, d145);
     vec2 d15 = d145.xz;
     vec4 t = SW_TRIG(j); /* cos 2phi, sin 2phi, cos 3phi, sin 3phi */
     S.one += d0236;
@@ -228,20 +272,21 @@ float near_rise(int i, vec4 s0, vec4 s1, float s8)
     return i < 4 ? s0[i] : (i == 4 ? 0.0 : (i < 8 ? s1[i - 4] : s8));
 }
 
-/* How far the grid receivers around texel p stand above it, in texels:
- * their heights blended with p's bilinear weights, minus p's.  Each
- * receiver's horizon is an occluder's height above that receiver, so
- * above p it is this much higher.  On the 2x2 grid the receivers are
- * among p's 3 x 3 neighbours, whose differences near_slopes already
- * holds; on a coarser grid four fetches. */
-float grid_rise(ivec2 p, vec4 s0, vec4 s1, float s8)
+/* How far the receivers of the grid of step `step` around texel p stand
+ * above it, in texels: their heights blended with p's bilinear weights,
+ * minus p's.  Each receiver's horizon is an occluder's height above that
+ * receiver, so above p it is this much higher.  On a 2-step grid the
+ * receivers are among p's 3 x 3 neighbours, whose differences near_slopes
+ * already holds (a receiver 2 away has weight 0); on a coarser grid four
+ * fetches. */
+float grid_rise(ivec2 p, int step, vec4 s0, vec4 s1, float s8)
 {
-    ivec2 a = p / u_sub;
-    ivec2 x0 = a * u_sub;
-    ivec2 x1 = min(x0 + u_sub, u_size - 1);
+    ivec2 a = p / step;
+    ivec2 x0 = a * step;
+    ivec2 x1 = min(x0 + step, u_size - 1);
     vec2 f = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
     vec4 r; /* (x0, y0), (x1, y0), (x0, y1), (x1, y1) */
-    if (u_sub == 2 && u_near > 0) {
+    if (step == 2 && u_near > 0) {
         ivec2 o0 = x0 - p + 1, o1 = x1 - p + 1; /* 0..2 */
         r = vec4(near_rise(3 * o0.y + o0.x, s0, s1, s8), near_rise(3 * o0.y + o1.x, s0, s1, s8),
                  near_rise(3 * o1.y + o0.x, s0, s1, s8), near_rise(3 * o1.y + o1.x, s0, s1, s8));
@@ -267,19 +312,20 @@ float grid_rise(ivec2 p, vec4 s0, vec4 s1, float s8)
  * lie on this texel's own line of sight, and a step at some distance
  * would make fp16's rounding of d flip texels (BENCHMARKS.md "Occluders
  * moved to each texel"). */
-float far_slope(float h, float d, float dz)
+float far_slope(float h, float d, float dz, int step)
 {
     if (!(d > 0.0))
         return -1e30; /* no occluder around */
-    return (h + dz * min(d / float(u_sub), 1.0)) / d;
+    return (h + dz * min(d / float(step), 1.0)) / d;
 }
 
-/* Slice j's part: its horizon x = max(the grid's far horizon farj, the
- * near slope from the 3 x 3 neighbourhood (s0, s1, s8), the tangent
- * plane), integrated above the tangent plane into S (or, HFS_ENV_MAP,
- * against the map into occ). */
-void dir_step(int j, float farj, vec3 n, vec4 s0, vec4 s1, float s8, inout Sums S,
-              inout vec3 occ)
+/* Slice j's part: its horizon x = max(the grid's horizon farj, the near
+ * slope from the 3 x 3 neighbourhood (s0, s1, s8), the tangent plane),
+ * or with split horizons HFS_NSUB of them, each also at least its far
+ * sub-direction's slope fsub[h]; integrated above the tangent plane into
+ * S (or, HFS_ENV_MAP, against the map into occ). */
+void dir_step(int j, float farj, float fsub[HFS_NSUB], vec3 n, vec4 s0, vec4 s1, float s8,
+              inout Sums S, inout vec3 occ)
 {
     vec2 cs = SW_DIR(j).xy;
     float a = n.x * cs.x + n.y * cs.y;
@@ -295,17 +341,32 @@ void dir_step(int j, float farj, vec3 n, vec4 s0, vec4 s1, float s8, inout Sums 
                -1e18, 1e18);
 #ifdef HFS_PAIRS
     tn = clamp(max(tn, farj), -1e18, 1e18); /* farj: a slope (far_slope) */
-    float ux = tn / (1.0 + sqrt(1.0 + tn * tn));
+    float un = tn / (1.0 + sqrt(1.0 + tn * tn));
 #else
-    float ux = max(farj, tn / (1.0 + sqrt(1.0 + tn * tn)));
+    float un = max(farj, tn / (1.0 + sqrt(1.0 + tn * tn)));
 #endif
+    float ux[HFS_NSUB];
+    float top = un;
+    for (int h = 0; h < HFS_NSUB; ++h) {
+#ifdef HFS_FARK
+        float t = clamp(fsub[h], -1e18, 1e18);
+        float uh = max(un, t / (1.0 + sqrt(1.0 + t * t)));
+#else
+        float uh = un;
+#endif
+        top = max(top, uh);
+        ux[h] = max(uh, uf);
+    }
     /* Only slices whose horizon rises above the tangent plane carry an
      * occluded part (0 exactly elsewhere). */
-    if (ux > uf) {
+    if (top > uf) {
 #ifdef HFS_ENV_MAP
-        occ += map_s(j, a, n.z, 2.0 * atan(ux)) - map_s(j, a, n.z, 2.0 * atan(uf));
+        vec3 m = vec3(0.0);
+        for (int h = 0; h < HFS_NSUB; ++h)
+            m += map_s(j, a, n.z, 2.0 * atan(ux[h]));
+        occ += m / float(HFS_NSUB) - map_s(j, a, n.z, 2.0 * atan(uf));
 #else
-        slice_add(j, cs, a, n.z, uf, ux, S);
+        slice_add_mean(j, cs, a, n.z, uf, ux, S);
 #endif
     }
 }
@@ -326,13 +387,30 @@ void main()
      * array at a loop-dependent index lane by lane (a gather), which made
      * this pass 1.7x slower (BENCHMARKS.md "Uniform indices"). */
     vec4 far = vec4(0.0);
+    float fsub[HFS_NSUB];
+    fsub[0] = -1e30;
+#ifdef HFS_FARK
+    /* Split horizons: the far grid's occluders, moved to this texel. */
+    vec2 fuv = hfs_grid_uv(p, u_fstep, u_size, u_fsize);
+    float dzf = grid_rise(p, u_fstep, s0, s1, s8);
+    vec4 fv = vec4(0.0);
+#define HFS_SUBS(J)                                                         \
+    for (int h = 0; h < HFS_FARK; ++h) {                                    \
+        int e = (J) * HFS_FARK + h;                                         \
+        if (e % 2 == 0)                                                     \
+            fv = texture(u_far, vec3(fuv, float(e / 2)));                   \
+        fsub[h] = far_slope(fv[2 * (e % 2)], fv[2 * (e % 2) + 1], dzf, u_fstep); \
+    }
+#else
+#define HFS_SUBS(J)
+#endif
 #ifdef HFS_PAIRS
     /* On a sub-sampled grid its horizons move to this texel's height. */
-    float dz = grid_rise(p, s0, s1, s8);
+    float dz = grid_rise(p, u_sub, s0, s1, s8);
 #define HFS_FAR(J)                                                          \
     if ((J) % 2 == 0)                                                       \
         far = texture(u_hor, vec3(uv, float((J) / 2)));                     \
-    float fu = far_slope(far[2 * ((J) % 2)], far[2 * ((J) % 2) + 1], dz);
+    float fu = far_slope(far[2 * ((J) % 2)], far[2 * ((J) % 2) + 1], dz, u_sub);
 #else
 #define HFS_FAR(J)                                                          \
     if ((J) % 4 == 0)                                                       \
@@ -342,7 +420,8 @@ void main()
 #define HFS_DIR(J)                                                          \
     if ((J) < HFS_NDIR) {                                                   \
         HFS_FAR(J)                                                          \
-        dir_step(J, fu, n, s0, s1, s8, S, occ);                             \
+        HFS_SUBS(J)                                                         \
+        dir_step(J, fu, fsub, n, s0, s1, s8, S, occ);                       \
     }
 #if HFS_NDIR <= HFS_DIR_UNROLLED
     HFS_DIR(0) HFS_DIR(1) HFS_DIR(2) HFS_DIR(3) HFS_DIR(4) HFS_DIR(5) HFS_DIR(6) HFS_DIR(7)

@@ -6,7 +6,8 @@
  *   gles_bench [--scene NAME|FILE] [--size N] [--precision fp16|fp32]
  *              [--path legendre|tables|slice] [--subsample S] [--lights env|key|both]
  *              [--frames F] [--cold] [--count] [--compare] [--k K] [--offset O]
- *              [--nphi-env N] [--nphi-key N] [--context NAME] [--profile P]
+ *              [--nphi-env N] [--nphi-key N] [--refine N] [--far-from N]
+ *              [--far-dirs K] [--far-step G] [--context NAME] [--profile P]
  *              [--data DIR] [--dx F] [--zscale F] [--vs-fp32]
  *
  * Frames: the first frame compiles programs and is reported separately;
@@ -84,6 +85,10 @@ int main(int argc, char **argv)
         else if (ARG("--offset")) q.offset = atoi(v);
         else if (ARG("--nphi-env")) q.nphi_env = atoi(v);
         else if (ARG("--nphi-key")) q.nphi_key = atoi(v);
+        else if (ARG("--refine")) q.refine = atoi(v);
+        else if (ARG("--far-from")) q.far_from = atoi(v);
+        else if (ARG("--far-dirs")) q.far_dirs = atoi(v);
+        else if (ARG("--far-step")) q.far_step = atoi(v);
         else if (ARG("--context")) context = v;
         else if (ARG("--profile")) profile = v;
         else if (ARG("--data")) data = v;

@@ -144,6 +144,7 @@ add_library(hfs_gles STATIC
   ${CMAKE_CURRENT_LIST_DIR}/pass_table.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_terrain.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_env_horizons.c
+  ${CMAKE_CURRENT_LIST_DIR}/env_far_grid.c        # split horizons' far grid (issue 15)
   ${CMAKE_CURRENT_LIST_DIR}/pass_key_horizons.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_local_lights.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_env_transfer.c

@@ -125,6 +125,7 @@ void hfs_gles_destroy(hfs_gles *g)
         hfs_gles_block_texture_free(&g->key_swath_tex, gl);
         hfs_gles_block_texture_free(&g->keys_tex, gl);
         hfs_gles_block_texture_free(&g->local_tex, gl);
+        hfs_gles_block_texture_free(&g->far_swath_tex, gl);
         hfs_gles_view_free(g);
         hfs_gles_lit_texture_free(g);
     }

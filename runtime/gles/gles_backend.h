@@ -30,6 +30,7 @@
 #include "plan.h"
 #include "programs.h"
 #include "resources.h"
+#include "split_horizon.h"
 #include "timing.h"
 #include "uniform_blocks.h"
 #include "wedge_textures.h"
@@ -37,7 +38,7 @@
 /* Uniform buffers (one per block content; the key swaths and records are
  * two buffers, bound by range). */
 enum { HFS_UBO_SCALES, HFS_UBO_ENV_SWATH, HFS_UBO_KEY_SWATHS, HFS_UBO_SHADE, HFS_UBO_KEYS,
-       HFS_UBO_LOCAL, HFS_UBO_BOUNCE, HFS_UBO_VIEW, HFS_UBO_COUNT };
+       HFS_UBO_LOCAL, HFS_UBO_BOUNCE, HFS_UBO_VIEW, HFS_UBO_FAR_SWATH, HFS_UBO_COUNT };
 
 /* One key light of the frame. */
 typedef struct hfs_gles_frame_key {
@@ -62,6 +63,13 @@ struct hfs_gles_frame {
     int hor_pairs;                        /* slice path, sub-sampled grid: each horizon as
                                              its occluder (height, distance), 2 a texel */
     int hor_outs;                         /* slice path: targets (layers) a grid draw fills */
+    /* Split horizons (split_horizon.h, env_far_grid.c): the near pass stops
+     * at scale index env_coarsest; the far grid (step split.step, far_w x
+     * far_h) holds the sub-directions' occluders, 2 a layer, far_outs
+     * layers a draw, skipping the far_near near scales. */
+    hfs_split split;
+    int env_coarsest, far_near, far_w, far_h, far_layers, far_outs;
+    int far_swath_tex;                    /* the sub-directions' block from a texture */
     int has_env, n_keys;
     hfs_gles_frame_key keys[HFS_MAX_KEY_LIGHTS];
     double l_env[3][HFS_SH_N];            /* rotated environment SH */
@@ -124,7 +132,7 @@ struct hfs_gles {
     hfs_gles_albedo_texture albedo;       /* the lighting's albedo map, if any */
     hfs_gles_bounce_targets bounce;       /* the bounce pass's textures, once used */
     hfs_gles_env_map_textures envmap;     /* env-shade = map: its tables, once used */
-    hfs_gles_block_texture env_swath_tex, key_swath_tex, keys_tex, local_tex;
+    hfs_gles_block_texture env_swath_tex, key_swath_tex, keys_tex, local_tex, far_swath_tex;
 
     /* Terrain cache: what the terrain pass computed from. */
     int terrain_valid;
@@ -187,6 +195,15 @@ void hfs_gles_stage_fetches(hfs_gles *g, hfs_gles_pass_id p, int stage, double f
 /* Why the terrain pass must run again, or NULL when what it computed still
  * holds (the heights are compared with the kept copy; pass_terrain.c). */
 const char *hfs_gles_terrain_change(const hfs_gles *g, const hfs_field *f, const hfs_quality *q);
+
+/* Split horizons' far grid (env_far_grid.c): its sizes and limits (the
+ * env pass's layout), its directions' block (prepare), its draw (the env
+ * pass's "far" stage), and its texture for the slice passes. */
+int hfs_gles_env_far_layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err);
+int hfs_gles_env_far_prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err);
+int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err);
+int hfs_gles_bind_env_far(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_program *prog,
+                          hfs_error *err);
 
 /* Binds the textures every grid pass reads (levels, normals) and the
  * per-scale constants, and sets the grid uniforms. */

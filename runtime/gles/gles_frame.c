@@ -116,7 +116,8 @@ static int fit_resources(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     const hfs_gles_resources *r = &g->r;
     const unsigned gens[5] = {r->terrain_gen, r->grid_gen, r->keyhz_gen, r->localv_gen,
                               r->kf_gen};
-    const hfs_gles_layers n = {.hor = fr->hor_layers, .key = fr->key_layers,
+    const hfs_gles_layers n = {.hor = fr->hor_layers, .far = fr->far_layers,
+                               .far_w = fr->far_w, .far_h = fr->far_h, .key = fr->key_layers,
                                .local = (fr->n_local + 1) / 2, .n_keys = fr->n_keys};
     int rc = hfs_gles_resources_ensure(&g->r, &g->gl, &g->caps, &fr->L, &n, err);
     if (rc)
@@ -148,6 +149,11 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     s->has_env = fr->has_env;
     s->nphi_env = q->nphi_env;
     s->vis_path = (int)q->visibility;
+    if (fr->split.on) {
+        s->far_from = q->far_from;
+        s->far_k = fr->split.k;
+        s->far_step = fr->split.step;
+    }
     if (fr->has_env) {
         memcpy(s->l_env, fr->l_env, sizeof s->l_env);
         s->env_map = fr->env_map;
@@ -252,11 +258,12 @@ static int plan(hfs_gles *g, hfs_gles_frame *fr)
     return 1;
 }
 
-static void mark_cached(hfs_gles *g, int p)
+static void mark_cached(hfs_gles *g, const hfs_gles_frame *fr, int p)
 {
     const hfs_gles_pass *pass = hfs_gles_pass_table[p];
     for (int s = 0; s < HFS_PASS_MAX_STAGES && pass->stages[s]; ++s)
-        g->timing.cached[g->stage_slot[p] + s] = 1;
+        if (!pass->stage_present || pass->stage_present(fr, s))
+            g->timing.cached[g->stage_slot[p] + s] = 1;
 }
 
 /* One row of the table: prepare, then the instances the plan chose. */
@@ -273,7 +280,7 @@ static int run_pass(hfs_gles *g, hfs_gles_frame *fr, int p, hfs_error *err)
     for (int i = 0; i < n; ++i)
         any |= fr->run[p][i];
     if (!any) {
-        mark_cached(g, p);
+        mark_cached(g, fr, p);
         return HFS_OK;
     }
     const int self_timed = pass->stages[1] != NULL; /* times its own stages */
@@ -331,7 +338,7 @@ int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
             memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
         for (int p = 0; p < HFS_PASS_COUNT; ++p)
             if (p != HFS_PASS_VIEW || fr->cam)
-                mark_cached(g, p);
+                mark_cached(g, fr, p);
         return HFS_OK; /* plan() copied the kept view */
     }
     g->stats.offset_mismatches = 0;
@@ -341,9 +348,9 @@ int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
              * passes after the read-back (lit texture, view) may still run. */
             if (fr->out)
                 memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
-            mark_cached(g, HFS_PASS_SHADE);
-            mark_cached(g, HFS_PASS_BOUNCE);
-            mark_cached(g, HFS_PASS_READBACK);
+            mark_cached(g, fr, HFS_PASS_SHADE);
+            mark_cached(g, fr, HFS_PASS_BOUNCE);
+            mark_cached(g, fr, HFS_PASS_READBACK);
             p = HFS_PASS_READBACK;
             continue;
         }

@@ -63,6 +63,9 @@ typedef struct hfs_gles_pass {
     const char *stages[HFS_PASS_MAX_STAGES];    /* timed stages                */
     /* Whether this frame has the pass at all (e.g. an environment). */
     int (*present)(const hfs_gles_frame *fr);
+    /* Whether this frame has stage s of the pass (NULL: every stage); a
+     * cached pass reports only the stages its frame has. */
+    int (*stage_present)(const hfs_gles_frame *fr, int s);
     /* Sizes and limits, before the resources are fitted (optional). */
     int (*layout)(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err);
     int (*prepare)(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err);

@@ -5,9 +5,11 @@
  * matrices, or wedge tables on the table path), written as 4 RGBA targets
  * (DESIGN.md "Horizons", "GLES path"); on the slice path the horizons
  * themselves (as tan(x/2)), 16 directions a draw into the grid's horizon
- * array, for env_slices.frag (pass_env_transfer.c).  Kept with the terrain
- * while the environment's settings do not change: a turned or re-tinted
- * environment does not rerun it.
+ * array, for env_slices.frag (pass_env_transfer.c).  With split horizons
+ * the grid's search stops at far-from and a second stage, "far", fills the
+ * far grid (env_far_grid.c).  Kept with the terrain while the environment's
+ * settings do not change: a turned or re-tinted environment does not rerun
+ * it.
  */
 #include "gles_backend.h"
 
@@ -23,6 +25,12 @@ static int present(const hfs_gles_frame *fr)
     return fr->has_env;
 }
 
+/* "far": split horizons only. */
+static int stage_present(const hfs_gles_frame *fr, int s)
+{
+    return s == 0 || fr->split.on;
+}
+
 /* HfsSwath: the Legendre/wedge swath, or the slices' (uniform_blocks.h). */
 static size_t block_vec4(const hfs_gles_frame *fr)
 {
@@ -31,7 +39,7 @@ static size_t block_vec4(const hfs_gles_frame *fr)
 }
 
 /* The swath's block, or (too large for the profile's blocks) its texture. */
-static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+static int layout_grid(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     const size_t n4 = block_vec4(fr);
     int rc;
@@ -68,6 +76,13 @@ static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
                ? hfs_gles_block_texture_check(&g->caps, n4, "environment swath (--nphi-env)", err)
                : hfs_gl_caps_check_uniform_block(&g->caps, n4 * 16,
                                                  "environment swath (--nphi-env)", err);
+}
+
+/* The grid's and the far grid's (split horizons) sizes and limits. */
+static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
+{
+    int rc = layout_grid(g, fr, err);
+    return rc ? rc : hfs_gles_env_far_layout(g, fr, err);
 }
 
 /* The swath's visibility object (kept while nphi_env holds), its block and
@@ -111,6 +126,8 @@ static int prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     } else {
         hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_ENV_SWATH], sw, bytes);
     }
+    if ((rc = hfs_gles_env_far_prepare(g, fr, err)))
+        return rc;
     if (!fr->tables)
         return HFS_OK;
     void *scratch = hfs_gles_scratch(g, hfs_gles_wedge_scratch_bytes());
@@ -162,8 +179,11 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_er
         if (fetch_sum)
             rc = hfs_gles_sum_counts(g, L, g->r.venv_fbo, fetch_sum, err);
     }
-    if (fr->slice)
+    if (fr->slice) {
         hfs_gles_set_i1(gl, prog, "u_near", fr->env_near);
+        hfs_gles_set_i1(gl, prog, "u_far", 0);
+    }
+    hfs_gles_set_i1(gl, prog, "u_coarsest", fr->env_coarsest); /* split horizons' near part */
     const int per_layer = SLICE_DIRS_PER_LAYER(fr->hor_pairs), per = fr->hor_outs * per_layer;
     for (int d0 = 0; fr->slice && !rc && d0 < g->env_vis_n; d0 += per) {
         hfs_gles_set_i1(gl, prog, "u_dir0", d0);
@@ -184,7 +204,14 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_er
 static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
 {
     (void)which;
+    hfs_gles_stage_begin(g, HFS_PASS_ENV_HORIZONS, 0);
     int rc = draw(g, fr, NULL, err);
+    hfs_gles_stage_end(g, HFS_PASS_ENV_HORIZONS, 0);
+    if (!rc && fr->split.on) {
+        hfs_gles_stage_begin(g, HFS_PASS_ENV_HORIZONS, 1);
+        rc = hfs_gles_env_far_draw(g, fr, err);
+        hfs_gles_stage_end(g, HFS_PASS_ENV_HORIZONS, 1);
+    }
     if (!rc)
         g->stats.env_recomputed = 1;
     return rc;
@@ -202,8 +229,9 @@ const hfs_gles_pass hfs_pass_env_horizons = {
     .deferrable = 1,
     .reads = {"pyramid", "subsample", "env settings"},
     .writes = {"env visibility"},
-    .stages = {"env"},
+    .stages = {"env", "far"},
     .present = present,
+    .stage_present = stage_present,
     .layout = layout,
     .prepare = prepare,
     .run = run,

@@ -26,12 +26,14 @@ int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, int env_map, GLuin
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_dir = g->env_vis_n,
                                 .fp32 = g->caps.fp32, .swath_tex = fr->env_swath_tex,
-                                .env_map = env_map, .pairs = fr->hor_pairs};
+                                .env_map = env_map, .pairs = fr->hor_pairs,
+                                .far_k = fr->split.on ? fr->split.k : 0};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_SLICES, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
         (rc = hfs_gles_program_texture(gl, prog, "u_hor", GL_TEXTURE_2D_ARRAY, g->r.hor, err)) ||
-        (rc = hfs_gles_bind_env_swath(g, fr, prog, err)))
+        (rc = hfs_gles_bind_env_swath(g, fr, prog, err)) ||
+        (rc = hfs_gles_bind_env_far(g, fr, prog, err)))
         return rc;
     if (env_map && (rc = hfs_gles_program_texture(gl, prog, "u_mslices", GL_TEXTURE_2D,
                                                   g->envmap.slices, err)))

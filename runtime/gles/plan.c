@@ -140,7 +140,8 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
         hfs_plan_change(p, gp->in_light_set, "a light kind or a light added or removed");
     if (a->sub != b->sub || a->vw != b->vw || a->vh != b->vh)
         hfs_plan_change(p, gp->in_grid, "subsample changed");
-    if (a->nphi_env != b->nphi_env || a->vis_path != b->vis_path || a->has_env != b->has_env)
+    if (a->nphi_env != b->nphi_env || a->vis_path != b->vis_path || a->has_env != b->has_env ||
+        a->far_from != b->far_from || a->far_k != b->far_k || a->far_step != b->far_step)
         hfs_plan_change(p, gp->in_env_set, "environment settings changed");
     if (a->has_env != b->has_env || memcmp(a->l_env, b->l_env, sizeof a->l_env))
         hfs_plan_change(p, gp->in_env_light, "environment light changed (rotation, tint)");

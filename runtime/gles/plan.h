@@ -70,6 +70,7 @@
 typedef struct hfs_gles_frame_sig {
     int sub, vw, vh;
     int has_env, nphi_env, vis_path;
+    int far_from, far_k, far_step; /* split horizons (0: not split) */
     double l_env[3][HFS_SH_COEFFS];
     int env_map;                  /* gles_backend.h hfs_gles_frame env_map */
     const float *emap;            /* env-shade = map: the map, its size and */

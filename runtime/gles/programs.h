@@ -58,6 +58,7 @@ typedef struct hfs_gles_variant {
                        table, 2, and the map's occluded light (pass_shade.c) */
     int pairs;      /* HFS_PAIRS 1: the slice path's grid horizons come with
                        their occluders' distances (hor_pairs)                */
+    int far_k;      /* HFS_FARK K: split horizons' sub-directions a slice    */
 } hfs_gles_variant;
 
 #define HFS_GLES_MAX_PROGRAMS 64
@@ -97,7 +98,7 @@ void hfs_gles_set_f4(const hfs_gl *gl, const hfs_gles_program *p, const char *na
 
 /* The "#define NAME VALUE" strings of variant v (NULL-terminated; bufs
  * holds their text).  Exposed for tests. */
-#define HFS_GLES_MAX_DEFINES 24
+#define HFS_GLES_MAX_DEFINES 25
 void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
                               const char *defs[HFS_GLES_MAX_DEFINES + 1]);
 

@@ -109,6 +109,9 @@ static void grid_free(hfs_gles_resources *r, const hfs_gl *gl)
     hfs_gles_tex_delete(gl, &r->hor);
     r->hor_layers = 0;
     r->hor_bytes = 0;
+    hfs_gles_tex_delete(gl, &r->far);
+    r->far_layers = r->far_w = r->far_h = 0;
+    r->far_bytes = 0;
     hfs_gles_tex_delete(gl, &r->keyhz);
     r->keyhz_layers = 0;
     r->keyhz_bytes = 0;
@@ -138,6 +141,7 @@ void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
     fbo_delete(gl, &r->out_fbo);
     fbo_delete(gl, &r->out_lo_fbo);
     fbo_delete(gl, &r->hor_fbo);
+    fbo_delete(gl, &r->far_fbo);
     fbo_delete(gl, &r->keyhz_fbo);
     fbo_delete(gl, &r->localv_fbo);
     for (int i = 0; i < 4; ++i)
@@ -217,6 +221,7 @@ static int terrain_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_c
                                err)))
         return rc;
     gl->GenFramebuffers(1, &r->hor_fbo);
+    gl->GenFramebuffers(1, &r->far_fbo);
     gl->GenFramebuffers(1, &r->kf_fbo);
     gl->GenFramebuffers(1, &r->keyhz_fbo);
     gl->GenFramebuffers(1, &r->localv_fbo);
@@ -236,6 +241,15 @@ static void layers_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_
         r->hor_layers = n->hor;
         ++r->grid_gen;
         r->hor_bytes = (size_t)L->vw * L->vh * n->hor * c->bytes_rgba;
+    }
+    if (n->far > 0 && (r->far_layers < n->far || r->far_w != n->far_w || r->far_h != n->far_h)) {
+        /* split horizons' far grid: part of the environment's visibility */
+        hfs_gles_tex_delete(gl, &r->far);
+        r->far = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, n->far_w, n->far_h,
+                                  n->far, 1);
+        r->far_layers = n->far, r->far_w = n->far_w, r->far_h = n->far_h;
+        ++r->grid_gen;
+        r->far_bytes = (size_t)n->far_w * n->far_h * n->far * c->bytes_rgba;
     }
     if (r->keyhz_layers < key_layers) {
         hfs_gles_tex_delete(gl, &r->keyhz);
@@ -289,6 +303,7 @@ int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs
 
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r, const hfs_gl_caps *c)
 {
-    return r->bytes + (size_t)4 * r->vw * r->vh * c->bytes_rgba + r->hor_bytes + r->keyhz_bytes +
+    return r->bytes + (size_t)4 * r->vw * r->vh * c->bytes_rgba + r->hor_bytes + r->far_bytes +
+           r->keyhz_bytes +
            r->localv_bytes + r->kf_bytes;
 }

@@ -34,6 +34,8 @@ typedef struct hfs_gles_resources {
     GLuint venv[4], venv_fbo;                   /* SH visibility on the grid */
     GLuint hor, hor_fbo;                        /* slice path: horizons, 4 directions a layer */
     int hor_layers;
+    GLuint far, far_fbo;                        /* split horizons: far occluders, 2 a layer */
+    int far_layers, far_w, far_h;
     GLuint keyhz, keyhz_fbo;                    /* key horizons (hi, lo, D), a direction a layer */
     int keyhz_layers;
     GLuint localv, localv_fbo;                  /* local-light ratios, 2 lights per layer */
@@ -43,13 +45,14 @@ typedef struct hfs_gles_resources {
     int kf_layers;
     GLuint out[2], out_fbo; /* RGB hi, lo: drawn together */
     GLuint out_lo_fbo;      /* lo alone as attachment 0, for the readback */
-    size_t bytes, hor_bytes, keyhz_bytes, localv_bytes, kf_bytes;
+    size_t bytes, hor_bytes, far_bytes, keyhz_bytes, localv_bytes, kf_bytes;
     unsigned terrain_gen, grid_gen, keyhz_gen, localv_gen, kf_gen; /* bumped when reallocated */
 } hfs_gles_resources;
 
 /* What the layered textures must hold (they only grow). */
 typedef struct hfs_gles_layers {
     int hor;    /* environment horizon layers (slice path; 0: none) */
+    int far, far_w, far_h; /* split horizons' far grid: layers (0: none), size */
     int key;    /* key horizon layers */
     int local;  /* local-light ratio layers */
     int n_keys; /* key factor layers */

@@ -13,7 +13,7 @@
 #include "gl_api.h"
 #include "hfshade.h"
 
-#define HFS_GLES_TIMING_SLOTS 16
+#define HFS_GLES_TIMING_SLOTS 20
 
 typedef struct hfs_gles_timing {
     int level;             /* 0 off, 1 times, 2 times + fetch counts */

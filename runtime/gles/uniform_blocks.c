@@ -159,6 +159,13 @@ static void near_weights(double c, double s, float w[12])
  * by |m|: 0 and 2 share one set. */
 static const int slot_terms[4][4] = {{0, 2, 3, 6}, {1, 4, 5, -1}, {0, 2, 3, 6}, {1, 5, -1, -1}};
 
+void hfs_gles_pack_dirs(const hfs_gles_layout *L, const hfs_swath *s, float *dst)
+{
+    memset(dst, 0, hfs_gles_slices_vec4(s->n) * 4 * sizeof *dst);
+    const hfs_gles_swath_block b = hfs_gles_swath_view(dst, s->n);
+    pack_head_dirs(L, s, &b);
+}
+
 void hfs_gles_pack_slices(const hfs_gles_layout *L, const hfs_visibility *v,
                           const hfs_slice_table *t, float *dst)
 {

@@ -102,6 +102,9 @@ void hfs_gles_pack_swath(const hfs_gles_layout *L, const hfs_visibility *v, floa
  * u_trig[n]: per direction (cos 2phi, sin 2phi, cos 3phi, sin 3phi).
  * Total 2 + 16 + 5 n vec4. */
 size_t hfs_gles_slices_vec4(int n);
+/* The slices' block with only its head and directions (the rest 0): what
+ * the far pass of split horizons reads (split_horizon.h), for swath s. */
+void hfs_gles_pack_dirs(const hfs_gles_layout *L, const hfs_swath *s, float *dst);
 void hfs_gles_pack_slices(const hfs_gles_layout *L, const hfs_visibility *v,
                           const hfs_slice_table *t, float *dst);
 
