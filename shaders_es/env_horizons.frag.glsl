@@ -34,9 +34,12 @@
  * below any tangent plane, since the receivers that read it have their own.
  *
  * Split horizons (runtime/split_horizon.h): the near pass searches only
- * the scales from u_coarsest in; the far pass (u_far = 1, the same
- * program on the far grid, pass_env_far.c) skips the u_near near ones and
- * writes each far sub-direction's occluder as a pair.
+ * the scales from u_coarsest in.  HFS_FAR_ATLAS 1 is the far pass
+ * (env_far_grid.c): on the far grid (receivers u_sub apart, u_fgrid of
+ * them), laid out as an atlas of tiles, tile i holding sub-directions 2i
+ * and 2i + 1 (u_fcols tiles a row) so that one draw covers them all (one
+ * small draw per group would run on one thread of a tiled rasterizer); it
+ * skips the u_near near scales and writes each occluder as a pair.
  *
  * HFS_COUNT: instead of V, write the number of texture fetches made
  * (o_v0 = (count mod 1024, floor(count / 1024), 0, 0)), for measurement.
@@ -51,6 +54,8 @@
 // hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_NOUT 6
 // hfs-variant: HFS_SLICE 1, HFS_NOUT 8
 // hfs-variant: HFS_SLICE 1, HFS_COUNT 1
+// hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 1
+// hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 1, HFS_SWATH_TEX 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -117,6 +122,10 @@ uniform int u_far;                       /* 1: split horizons' far pass (pass_en
 #endif
 uniform int u_coarsest;                  /* coarsest scale searched: split horizons'
                                             near part stops at far-from (0: all) */
+#ifdef HFS_FAR_ATLAS
+uniform ivec2 u_fgrid;                   /* the far grid's receivers (a tile) */
+uniform int u_fcols;                     /* tiles a row of the atlas */
+#endif
 #ifdef HFS_SWATH_TEX
 /* The same data from a texture (too large for a uniform block): vec4 i of
  * the block below is SW(i). */
@@ -309,6 +318,38 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
 }
 #endif
 
+#ifdef HFS_FAR_ATLAS
+/* Split horizons' far pass: this texel's tile, its receiver, and the
+ * occluders of its two sub-directions beyond the u_near near scales. */
+void main()
+{
+    ivec2 q = ivec2(gl_FragCoord.xy);
+    ivec2 tile = q / u_fgrid;
+    ivec2 g = min((q - tile * u_fgrid) * u_sub, u_size - 1);
+    int j0 = 2 * (tile.y * u_fcols + tile.x);
+    vec2 hx[HFS_NLAYERS];
+    hfs_receiver_heights(u_levels, g, hx);
+    int fetches = 1 + HFS_NLAYERS;
+    vec4 res = vec4(-3e4, 0.0, -3e4, 0.0);
+    for (int h = 0; h < 2; ++h) {
+        int j = j0 + h;
+        if (j >= HFS_NDIR)
+            continue;
+        float dist;
+        float best = clamp(horizon_tan(g, SW_DIR(j).xy, hx, -1e30, HFS_NLEV - 1 - u_near, fetches,
+                                       dist), -1e18, 1e18);
+        if (dist > 0.0) {
+            res[2 * h] = clamp(best * dist, -3e4, 3e4);
+            res[2 * h + 1] = dist;
+        }
+    }
+#ifdef HFS_COUNT
+    write_count(fetches);
+#else
+    o_v0 = hfs_f16v(res);
+#endif
+}
+#else
 void main()
 {
     ivec2 g = hfs_receiver(u_size, u_sub);
@@ -369,3 +410,4 @@ void main()
 #endif
 #endif
 }
+#endif

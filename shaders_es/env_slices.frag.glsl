@@ -80,9 +80,12 @@ uniform ivec2 u_vsize;                   /* visibility grid size */
 uniform int u_sub;
 uniform int u_near;                      /* 1: the finest scale is searched here */
 #ifdef HFS_FARK
-uniform highp sampler2DArray u_far;      /* far occluders, 2 a layer, LINEAR */
-uniform ivec2 u_fsize;                   /* the far grid's size */
+uniform highp sampler2DArray u_far;      /* far occluders, 2 a texel, LINEAR: an atlas
+                                            of tiles (env_horizons.frag HFS_FAR_ATLAS) */
+uniform ivec2 u_fsize;                   /* the far grid's size (a tile) */
 uniform int u_fstep;                     /* and step */
+uniform int u_fcols;                     /* tiles a row */
+uniform vec2 u_fatlas;                   /* the atlas' size */
 #endif
 
 layout(std140) uniform HfsScales {
@@ -182,26 +185,43 @@ void slice_dg(float a, float b, float cx[5], float sx[5], float cf[5], float sf[
                 a * (Jc[0] / 4.0 + Jc[2] / 2.0 + Jc[4] / 4.0) + b * (Js[4] - Js[0]) / 4.0);
 }
 
-/* (cos e, sin e) of a half-angle tangent u = tan(e / 2). */
-vec2 half_angle(float u)
+/* (cos e, sin e) of the elevation e = atan(t) of slope t. */
+vec2 slope_dir(float t)
 {
-    float q = 1.0 / (1.0 + u * u);
-    return vec2((1.0 - u * u) * q, 2.0 * u * q);
+    float c = inversesqrt(1.0 + t * t);
+    return vec2(c, t * c);
 }
 
-/* Adds slice j's part (cs = cos, sin phi) between its tangent plane and
- * its horizons, the mean over the HFS_NSUB sub-horizons ux[h] (each at
- * least uf), all as half-angle tangents u = tan(e / 2) (rational cos and
- * sin; one atan each for the angle between them). */
-void slice_add_mean(int j, vec2 cs, float a, float b, float uf, float ux[HFS_NSUB], inout Sums S)
+/* Adds slice j's part (cs = cos, sin phi) between its tangent plane (slope
+ * tf, elevation xf = atan(tf)) and its horizons, the mean over the
+ * HFS_NSUB sub-horizons of slopes t[h] (each at least tf): one inverse
+ * square root and one atan per horizon, no division. */
+void slice_add_mean(int j, vec2 cs, float a, float b, float tf, float xf, float t[HFS_NSUB],
+                    inout Sums S)
 {
     float cf[5], sf[5], cx[5], sx[5];
-    multiples(half_angle(uf), cf, sf);
-    float dj0 = 0.0;
+    multiples(slope_dir(tf), cf, sf);
+    float dj0 = xf;
 #if HFS_NSUB == 1
-    multiples(half_angle(ux[0]), cx, sx);
-    /* 1 + uf ux > 0: uf > -1 (N_z > 0) and ux <= 1. */
-    dj0 = 2.0 * atan((uf - ux[0]) / (1.0 + uf * ux[0]));
+    multiples(slope_dir(t[0]), cx, sx);
+    dj0 -= atan(t[0]);
+#elif HFS_NSUB == 2
+    /* Two elevations x0, x1 = m -+ D: the mean of e^{ikx} is e^{ikm}
+     * cos(kD), and e^{im} cos D is the mean of the two unit vectors, so one
+     * set of multiples, cos kD by Chebyshev's recurrence, one atan. */
+    vec2 sum = slope_dir(t[0]) + slope_dir(t[1]);
+    float r = length(sum); /* 2 cos D > 0: both elevations in (-pi/2, pi/2] */
+    multiples(sum / r, cx, sx);
+    float ck[5];
+    ck[0] = 0.5 * r;
+    ck[1] = 2.0 * ck[0] * ck[0] - 1.0;
+    for (int k = 2; k < 5; ++k)
+        ck[k] = 2.0 * ck[0] * ck[k - 1] - ck[k - 2];
+    for (int k = 0; k < 5; ++k) {
+        cx[k] *= ck[k];
+        sx[k] *= ck[k];
+    }
+    dj0 -= atan(sum.y / sum.x); /* sum.x > 0 */
 #else
     float c1[5], s1[5];
     for (int k = 0; k < 5; ++k) {
@@ -209,26 +229,26 @@ void slice_add_mean(int j, vec2 cs, float a, float b, float uf, float ux[HFS_NSU
         sx[k] = 0.0;
     }
     for (int h = 0; h < HFS_NSUB; ++h) {
-        multiples(half_angle(ux[h]), c1, s1);
+        multiples(slope_dir(t[h]), c1, s1);
         for (int k = 0; k < 5; ++k) {
             cx[k] += c1[k] / float(HFS_NSUB);
             sx[k] += s1[k] / float(HFS_NSUB);
         }
-        dj0 += 2.0 * atan((uf - ux[h]) / (1.0 + uf * ux[h])) / float(HFS_NSUB);
+        dj0 -= atan(t[h]) / float(HFS_NSUB);
     }
 #endif
     vec4 d0236;
     vec3 d145;
     slice_dg(a, b, cx, sx, cf, sf, dj0, d0236, d145);
     vec2 d15 = d145.xz;
-    vec4 t = SW_TRIG(j); /* cos 2phi, sin 2phi, cos 3phi, sin 3phi */
+    vec4 tr = SW_TRIG(j); /* cos 2phi, sin 2phi, cos 3phi, sin 3phi */
     S.one += d0236;
     S.c1 += cs.x * d145;
     S.s1 += cs.y * d145;
-    S.c2 += t.x * d0236;
-    S.s2 += t.y * d0236;
-    S.c3 += t.z * d15;
-    S.s3 += t.w * d15;
+    S.c2 += tr.x * d0236;
+    S.s2 += tr.y * d0236;
+    S.c3 += tr.z * d15;
+    S.s3 += tr.w * d15;
 }
 
 /* T_k from the sums: k = l(l+1) + m, factor 1 (m = 0), cos(m phi) (m > 0),
@@ -312,61 +332,70 @@ float grid_rise(ivec2 p, int step, vec4 s0, vec4 s1, float s8)
  * lie on this texel's own line of sight, and a step at some distance
  * would make fp16's rounding of d flip texels (BENCHMARKS.md "Occluders
  * moved to each texel"). */
-float far_slope(float h, float d, float dz, int step)
+float far_slope(float h, float d, float dz, float inv_step)
 {
     if (!(d > 0.0))
         return -1e30; /* no occluder around */
-    return (h + dz * min(d / float(step), 1.0)) / d;
+    return (h + dz * min(d * inv_step, 1.0)) / d;
 }
+
+#ifdef HFS_FARK
+/* Where tile i of the far atlas holds position fpix of a tile: float
+ * arithmetic (an integer division by a uniform would run lane by lane). */
+vec2 far_tile_uv(vec2 fpix, float i)
+{
+    float row = floor((i + 0.5) / float(u_fcols));
+    vec2 tile = vec2(i - row * float(u_fcols), row);
+    return (fpix + tile * vec2(u_fsize)) / u_fatlas;
+}
+#endif
 
 /* Slice j's part: its horizon x = max(the grid's horizon farj, the near
  * slope from the 3 x 3 neighbourhood (s0, s1, s8), the tangent plane),
  * or with split horizons HFS_NSUB of them, each also at least its far
  * sub-direction's slope fsub[h]; integrated above the tangent plane into
- * S (or, HFS_ENV_MAP, against the map into occ). */
+ * S (or, HFS_ENV_MAP, against the map into occ).  All as slopes (tan of
+ * the elevation: monotonic, so the max is the max), clamped so that
+ * 1 + t^2 stays finite. */
 void dir_step(int j, float farj, float fsub[HFS_NSUB], vec3 n, vec4 s0, vec4 s1, float s8,
               inout Sums S, inout vec3 occ)
 {
     vec2 cs = SW_DIR(j).xy;
     float a = n.x * cs.x + n.y * cs.y;
-    /* The tangent plane's elevation xf (tan xf = -a / N_z), the near
-     * slope, and the horizon, as half-angle tangents (monotonic in the
-     * elevation: the max is the max). */
-    float uf = -a / (n.z + sqrt(a * a + n.z * n.z));
+    float tf = -a / n.z; /* the tangent plane: N_z > 0 */
     float tn = dot(SW_NEARW(3 * j), s0) + dot(SW_NEARW(3 * j + 1), s1) +
                SW_NEARW(3 * j + 2).x * s8;
     /* The cell's near end: the slopes to (+-1, 0) and (0, +-1). */
-    tn = clamp(max(tn, abs(cs.x) * (cs.x > 0.0 ? s1.y : s0.w) +
-                           abs(cs.y) * (cs.y > 0.0 ? s1.w : s0.y)),
-               -1e18, 1e18);
+    tn = max(tn, abs(cs.x) * (cs.x > 0.0 ? s1.y : s0.w) + abs(cs.y) * (cs.y > 0.0 ? s1.w : s0.y));
 #ifdef HFS_PAIRS
-    tn = clamp(max(tn, farj), -1e18, 1e18); /* farj: a slope (far_slope) */
-    float un = tn / (1.0 + sqrt(1.0 + tn * tn));
+    tn = max(tn, farj); /* farj: a slope (far_slope) */
 #else
-    float un = max(farj, tn / (1.0 + sqrt(1.0 + tn * tn)));
+    /* farj: tan(x / 2), -1 where nothing rises */
+    tn = max(tn, farj > -1.0 ? 2.0 * farj / max(1.0 - farj * farj, 1e-30) : -1e30);
 #endif
-    float ux[HFS_NSUB];
-    float top = un;
+    float t[HFS_NSUB];
+    float top = -1e30;
     for (int h = 0; h < HFS_NSUB; ++h) {
 #ifdef HFS_FARK
-        float t = clamp(fsub[h], -1e18, 1e18);
-        float uh = max(un, t / (1.0 + sqrt(1.0 + t * t)));
+        float th = max(tn, fsub[h]);
 #else
-        float uh = un;
+        float th = tn;
 #endif
-        top = max(top, uh);
-        ux[h] = max(uh, uf);
+        th = clamp(th, -1e18, 1e18);
+        top = max(top, th);
+        t[h] = max(th, tf);
     }
     /* Only slices whose horizon rises above the tangent plane carry an
      * occluded part (0 exactly elsewhere). */
-    if (top > uf) {
+    if (top > tf) {
+        float xf = atan(tf);
 #ifdef HFS_ENV_MAP
         vec3 m = vec3(0.0);
         for (int h = 0; h < HFS_NSUB; ++h)
-            m += map_s(j, a, n.z, 2.0 * atan(ux[h]));
-        occ += m / float(HFS_NSUB) - map_s(j, a, n.z, 2.0 * atan(uf));
+            m += map_s(j, a, n.z, atan(t[h]));
+        occ += m / float(HFS_NSUB) - map_s(j, a, n.z, xf);
 #else
-        slice_add_mean(j, cs, a, n.z, uf, ux, S);
+        slice_add_mean(j, cs, a, n.z, tf, xf, t, S);
 #endif
     }
 }
@@ -391,26 +420,26 @@ void main()
     fsub[0] = -1e30;
 #ifdef HFS_FARK
     /* Split horizons: the far grid's occluders, moved to this texel. */
-    vec2 fuv = hfs_grid_uv(p, u_fstep, u_size, u_fsize);
-    float dzf = grid_rise(p, u_fstep, s0, s1, s8);
+    vec2 fpix = hfs_grid_uv(p, u_fstep, u_size, u_fsize) * vec2(u_fsize); /* in a tile */
+    float dzf = grid_rise(p, u_fstep, s0, s1, s8), inv_fstep = 1.0 / float(u_fstep);
     vec4 fv = vec4(0.0);
 #define HFS_SUBS(J)                                                         \
     for (int h = 0; h < HFS_FARK; ++h) {                                    \
         int e = (J) * HFS_FARK + h;                                         \
         if (e % 2 == 0)                                                     \
-            fv = texture(u_far, vec3(fuv, float(e / 2)));                   \
-        fsub[h] = far_slope(fv[2 * (e % 2)], fv[2 * (e % 2) + 1], dzf, u_fstep); \
+            fv = texture(u_far, vec3(far_tile_uv(fpix, float(e / 2)), 0.0));   \
+        fsub[h] = far_slope(fv[2 * (e % 2)], fv[2 * (e % 2) + 1], dzf, inv_fstep); \
     }
 #else
 #define HFS_SUBS(J)
 #endif
 #ifdef HFS_PAIRS
     /* On a sub-sampled grid its horizons move to this texel's height. */
-    float dz = grid_rise(p, u_sub, s0, s1, s8);
+    float dz = grid_rise(p, u_sub, s0, s1, s8), inv_sub = 1.0 / float(u_sub);
 #define HFS_FAR(J)                                                          \
     if ((J) % 2 == 0)                                                       \
         far = texture(u_hor, vec3(uv, float((J) / 2)));                     \
-    float fu = far_slope(far[2 * ((J) % 2)], far[2 * ((J) % 2) + 1], dz, u_sub);
+    float fu = far_slope(far[2 * ((J) % 2)], far[2 * ((J) % 2) + 1], dz, inv_sub);
 #else
 #define HFS_FAR(J)                                                          \
     if ((J) % 4 == 0)                                                       \

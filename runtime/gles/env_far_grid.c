@@ -2,19 +2,17 @@
  * env_far_grid.c — split horizons' far part on the GLES path
  * (split_horizon.h; DESIGN.md "Split horizons"): a stage of the
  * environment's horizon pass (pass_env_horizons.c), which also stops its
- * near search at far-from.  env_horizons.frag runs again on the far grid
- * (step split.step) with u_far = 1: for each of the K x nphi_env
+ * near search at far-from.  env_horizons.frag's far pass (HFS_FAR_ATLAS)
+ * runs on the far grid (step split.step): for each of the K x nphi_env
  * sub-directions the occluder beyond the near scales, as a (height,
- * distance) pair, 2 a layer of the far texture; env_slices.frag blends and
- * moves them per texel (hfs_gles_bind_env_far).  The CPU reference computes
+ * distance) pair, 2 a texel, in an atlas of tiles drawn at once;
+ * env_slices.frag blends and moves them per texel (hfs_gles_bind_env_far).  The CPU reference computes
  * the same pairs (cpu_far_grid.c).
  */
 #include "gles_backend.h"
 
 #include "gl_util.h"
 #include "pyramid_layout.h"
-
-#define FAR_PER_LAYER 2 /* pairs a texel */
 
 static int n_sub(const hfs_gles_frame *fr)
 {
@@ -27,7 +25,7 @@ int hfs_gles_env_far_layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     hfs_split_make(fr->q, &fr->split);
     fr->split.on = fr->split.on && fr->slice;
     fr->env_coarsest = 0;
-    fr->far_near = fr->far_w = fr->far_h = fr->far_layers = fr->far_outs = 0;
+    fr->far_near = fr->far_w = fr->far_h = fr->far_cols = fr->far_aw = fr->far_ah = 0;
     fr->far_swath_tex = 0;
     if (!fr->split.on)
         return HFS_OK;
@@ -38,13 +36,15 @@ int hfs_gles_env_far_layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     fr->env_coarsest = L->n_levels - fr->far_near;
     fr->far_w = hfs_grid_count(L->w, fr->split.step);
     fr->far_h = hfs_grid_count(L->h, fr->split.step);
-    const int layers = (n_sub(fr) + FAR_PER_LAYER - 1) / FAR_PER_LAYER;
-    const int max_outs = g->caps.max_draw_buffers < HFS_GLES_MAX_OUTS ? g->caps.max_draw_buffers
-                                                                      : HFS_GLES_MAX_OUTS;
-    const int draws = (layers + max_outs - 1) / max_outs;
-    fr->far_outs = (layers + draws - 1) / draws;
-    fr->far_layers = draws * fr->far_outs;
-    int rc = hfs_gl_caps_check_texture(&g->caps, fr->far_w, fr->far_h, fr->far_layers,
+    /* Tiles of 2 sub-directions, as many a row as the profile's textures
+     * hold. */
+    const int tiles = (n_sub(fr) + 1) / 2;
+    int cols = g->caps.max_texture_size / fr->far_w;
+    cols = cols < 1 ? 1 : (cols > tiles ? tiles : cols);
+    fr->far_cols = cols;
+    fr->far_aw = cols * fr->far_w;
+    fr->far_ah = (tiles + cols - 1) / cols * fr->far_h;
+    int rc = hfs_gl_caps_check_texture(&g->caps, fr->far_aw, fr->far_ah, 1,
                                        "far horizons (--far-dirs, --far-step)", err);
     if (rc)
         return rc;
@@ -83,38 +83,28 @@ int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                 .n_dir = n_sub(fr), .fp32 = g->caps.fp32,
-                                .swath_tex = fr->far_swath_tex, .slice = 1, .pairs = 1,
-                                .n_out = fr->far_outs};
+                                .swath_tex = fr->far_swath_tex, .slice = 1, .n_out = 1,
+                                .far_atlas = 1};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_HORIZONS, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)))
         return rc;
     hfs_gles_set_i1(gl, prog, "u_sub", fr->split.step); /* receivers on the far grid */
+    hfs_gles_set_i2(gl, prog, "u_fgrid", fr->far_w, fr->far_h);
+    hfs_gles_set_i1(gl, prog, "u_fcols", fr->far_cols);
     hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
     hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
     hfs_gles_set_f1(gl, prog, "u_lk", (float)L->k);
     hfs_gles_set_f1(gl, prog, "u_tie", (float)hfs_horizon_tie_slope(L->hscale, L->zscale, L->dx));
     hfs_gles_set_i1(gl, prog, "u_near", fr->far_near);
-    hfs_gles_set_i1(gl, prog, "u_far", 1);
     hfs_gles_set_i1(gl, prog, "u_coarsest", 0);
     if (fr->far_swath_tex)
         rc = hfs_gles_program_texture(gl, prog, "u_swath_tex", GL_TEXTURE_2D,
                                       g->far_swath_tex.tex, err);
     else
         gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SWATH, g->ubo[HFS_UBO_FAR_SWATH]);
-    const int per = fr->far_outs * FAR_PER_LAYER;
-    for (int d0 = 0; !rc && d0 < n_sub(fr); d0 += per) {
-        hfs_gles_set_i1(gl, prog, "u_dir0", d0);
-        if (!(rc = hfs_gles_fbo_layers(gl, g->r.far_fbo, g->r.far, d0 / FAR_PER_LAYER,
-                                       fr->far_outs, "far horizons", err)))
-            hfs_gles_draw(gl, g->r.far_fbo, fr->far_w, fr->far_h);
-    }
-    /* hfs_gles_fbo_layers resets the first 4 attachments only. */
-    if (fr->far_outs > 4) {
-        gl->BindFramebuffer(GL_FRAMEBUFFER, g->r.far_fbo);
-        for (int o = 4; o < fr->far_outs; ++o)
-            gl->FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)o, 0, 0, 0);
-    }
+    if (!rc && !(rc = hfs_gles_fbo_layers(gl, g->r.far_fbo, g->r.far, 0, 1, "far horizons", err)))
+        hfs_gles_draw(gl, g->r.far_fbo, fr->far_aw, fr->far_ah);
     gl->UseProgram(0);
     return rc ? rc : hfs_gl_check(gl, "backend gles: far horizon pass", err);
 }
@@ -128,5 +118,7 @@ int hfs_gles_bind_env_far(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_
     int rc = hfs_gles_program_texture(gl, prog, "u_far", GL_TEXTURE_2D_ARRAY, g->r.far, err);
     hfs_gles_set_i2(gl, prog, "u_fsize", fr->far_w, fr->far_h);
     hfs_gles_set_i1(gl, prog, "u_fstep", fr->split.step);
+    hfs_gles_set_i1(gl, prog, "u_fcols", fr->far_cols);
+    hfs_gles_set_f2(gl, prog, "u_fatlas", (float)fr->far_aw, (float)fr->far_ah);
     return rc;
 }

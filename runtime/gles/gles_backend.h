@@ -65,10 +65,11 @@ struct hfs_gles_frame {
     int hor_outs;                         /* slice path: targets (layers) a grid draw fills */
     /* Split horizons (split_horizon.h, env_far_grid.c): the near pass stops
      * at scale index env_coarsest; the far grid (step split.step, far_w x
-     * far_h) holds the sub-directions' occluders, 2 a layer, far_outs
-     * layers a draw, skipping the far_near near scales. */
+     * far_h receivers) holds the sub-directions' occluders, 2 a texel, in
+     * an atlas of tiles (far_cols a row, far_aw x far_ah), skipping the
+     * far_near near scales. */
     hfs_split split;
-    int env_coarsest, far_near, far_w, far_h, far_layers, far_outs;
+    int env_coarsest, far_near, far_w, far_h, far_cols, far_aw, far_ah;
     int far_swath_tex;                    /* the sub-directions' block from a texture */
     int has_env, n_keys;
     hfs_gles_frame_key keys[HFS_MAX_KEY_LIGHTS];

@@ -59,6 +59,7 @@ typedef struct hfs_gles_variant {
     int pairs;      /* HFS_PAIRS 1: the slice path's grid horizons come with
                        their occluders' distances (hor_pairs)                */
     int far_k;      /* HFS_FARK K: split horizons' sub-directions a slice    */
+    int far_atlas;  /* HFS_FAR_ATLAS 1: env_horizons.frag's far pass          */
 } hfs_gles_variant;
 
 #define HFS_GLES_MAX_PROGRAMS 64
@@ -98,7 +99,7 @@ void hfs_gles_set_f4(const hfs_gl *gl, const hfs_gles_program *p, const char *na
 
 /* The "#define NAME VALUE" strings of variant v (NULL-terminated; bufs
  * holds their text).  Exposed for tests. */
-#define HFS_GLES_MAX_DEFINES 25
+#define HFS_GLES_MAX_DEFINES 26
 void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
                               const char *defs[HFS_GLES_MAX_DEFINES + 1]);
 
