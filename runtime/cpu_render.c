@@ -209,10 +209,11 @@ static void trace_row(const render_ctx *c, worker_scratch *s, int j)
              * of the finest scale, which lies in it (as the GLES path). */
             const int own_cell = c->slices.p != NULL;
             const int coarsest = c->far ? hfs_cpu_far_coarsest_near(c->far) : 0;
+            const int refine = c->far ? c->split.near_refine : c->refine;
             for (int i = 0; i < w; ++i)
                 om[i] = env_refined
                             ? hfs_horizon_refined_within(job->plan, d, i, j, s->levels + i,
-                                                         (size_t)w, fl[i], c->refine, c->tie, 1,
+                                                         (size_t)w, fl[i], refine, c->tie, 1,
                                                          own_cell, coarsest)
                             : hfs_horizon_env_from_maxd(s->maxd[i], fl[i]);
             if (own_cell)

@@ -242,16 +242,17 @@ typedef struct hfs_quality {
                                 about the highest, 4; 0: the seeds' (plain
                                 max for the environment, SN08's B-spline
                                 max over scale for key lights)              */
-    int far_from;            /* split horizons (slice path; DESIGN.md
-                                "Split horizons"): the environment's
+    int split;               /* split horizons (slice path; DESIGN.md
+                                "Split horizons"), 1: the environment's
                                 horizons beyond far_from texels come from a
                                 coarser grid (far_step) at far_dirs sub-
-                                directions per direction, averaged in each
-                                slice; 0: one horizon per direction, 0      */
-    int far_dirs;            /* far sub-directions per environment
-                                direction, 1..8, 3                          */
-    int far_step;            /* the far grid's step in texels, 1..64; 0: by
-                                subsample (hfs_quality_far_step), 0         */
+                                directions per direction, each slice the
+                                mean over them; 0: one horizon per
+                                direction (before issue 15's last part), 1  */
+    int far_from;            /* texels; 0: by subsample, 8 at 1, 16 at 2, 4 */
+    int far_dirs;            /* 1..8; 0: by subsample, 3 at 1, 2 at 2, 4    */
+    int far_step;            /* the far grid's step, texels, 1..64; 0: by
+                                subsample, 2 at 1, 8 at 2, 16 at 4          */
     int nphi_bounce;         /* azimuths the indirect bounces gather along:
                                 the largest divisor of nphi_env not above
                                 it, every (nphi_env / that)-th environment
@@ -281,11 +282,6 @@ typedef struct hfs_quality {
 
 /* Overwrite every field with its default (= the "kiosk" preset). */
 HFS_API void hfs_quality_defaults(hfs_quality *q);
-
-/* The far grid's step a frame with q uses: q->far_step, or where that is 0
- * the step for q->subsample: 2 at subsample 1, 8 at 2, 16 at 4 (BENCHMARKS.md
- * "Split horizons"). */
-HFS_API int hfs_quality_far_step(const hfs_quality *q);
 
 /* Settings per use, picked from the measured front of error against
  * full-frame time over cones, fractal terrain and the real DEM at 256^2

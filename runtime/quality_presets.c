@@ -40,8 +40,9 @@ void hfs_quality_defaults(hfs_quality *q)
     memset(q, 0, sizeof *q);
     q->nphi_local = 16;
     q->refine = 4; /* BENCHMARKS.md "... horizons refined between scales" */
-    q->far_from = 0; /* split horizons off */
-    q->far_dirs = 3;
+    q->split = 1; /* BENCHMARKS.md "Split horizons"; far_* by subsample */
+    q->far_from = 0;
+    q->far_dirs = 0;
     q->far_step = 0;
     q->nphi_bounce = 12; /* BENCHMARKS.md "Indirect light" */
     q->bounce_refine = 1;
@@ -52,13 +53,6 @@ void hfs_quality_defaults(hfs_quality *q)
     q->truth_elev_order = 16;
     q->truth_light_samples = 256;
     apply(q, &presets[0]);
-}
-
-int hfs_quality_far_step(const hfs_quality *q)
-{
-    if (q->far_step > 0)
-        return q->far_step;
-    return q->subsample <= 1 ? 2 : q->subsample == 2 ? 8 : 16;
 }
 
 int hfs_quality_preset(hfs_quality *q, const char *use)

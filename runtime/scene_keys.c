@@ -102,16 +102,20 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
                        {{NULL, HFS_UNIT_COUNT, {0, 16, 0}, NULL}}, "4",
                        "samples refining each environment and key-light horizon between "
                        "scales (0: the seeds')"},
+    [HFS_SK_SPLIT] = {"split", "0|1", HFS_FORM_INT, 1, 0, 0,
+                      {{NULL, HFS_UNIT_COUNT, {0, 1, 0}, NULL}}, "1",
+                      "split horizons: the environment's far ones from a coarser grid at "
+                      "more azimuths (0: one horizon per direction)"},
     [HFS_SK_FAR_FROM] = {"far-from", "N", HFS_FORM_INT, 1, 0, 0,
                          {{NULL, HFS_UNIT_TEXELS, {0, 4096, 0}, NULL}}, "0",
-                         "split horizons: the environment's beyond N texels from a coarser "
-                         "grid at far-dirs sub-directions (0: not split)"},
+                         "split horizons' far part beyond N texels (0: 8, 16, 16 at subsample "
+                         "1, 2, 4)"},
     [HFS_SK_FAR_DIRS] = {"far-dirs", "N", HFS_FORM_INT, 1, 0, 0,
-                         {{NULL, HFS_UNIT_COUNT, {1, 8, 0}, NULL}}, "3",
-                         "far sub-directions per environment direction"},
+                         {{NULL, HFS_UNIT_COUNT, {0, 8, 0}, NULL}}, "0",
+                         "far sub-directions per environment direction (0: 3, 2, 2)"},
     [HFS_SK_FAR_STEP] = {"far-step", "N", HFS_FORM_INT, 1, 0, 0,
                          {{NULL, HFS_UNIT_COUNT, {0, 64, 0}, NULL}}, "0",
-                         "the far grid's step, texels (0: 2, 8, 16 at subsample 1, 2, 4)"},
+                         "the far grid's step, texels (0: 2, 8, 16)"},
     [HFS_SK_NPHI_BOUNCE] = {"nphi-bounce", "N", HFS_FORM_INT, 1, 0, 0,
                             {{NULL, HFS_UNIT_COUNT, {1, 1024, 0}, NULL}}, "12",
                             "azimuths the bounces gather along: the largest divisor of "

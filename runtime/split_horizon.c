@@ -7,12 +7,22 @@
 
 #include <math.h>
 
+/* The settings by grid step (hfshade.h hfs_quality: far_from, far_dirs,
+ * far_step at 0), from the measurements of BENCHMARKS.md "Split horizons":
+ * subsample 1 is the accurate setting (the far grid at every other texel,
+ * three sub-directions); the 2x2 and 4x4 grids spend no more than the
+ * single horizon did. */
+static const struct { int from, k, step; } by_subsample[3] = {{8, 3, 2}, {16, 2, 8}, {16, 2, 16}};
+
 void hfs_split_make(const hfs_quality *q, hfs_split *s)
 {
-    s->on = q->far_from > 0 && q->visibility == HFS_VIS_SLICE;
-    s->from = q->far_from;
-    s->k = q->far_dirs < 1 ? 1 : (q->far_dirs > HFS_SPLIT_MAX_K ? HFS_SPLIT_MAX_K : q->far_dirs);
-    s->step = hfs_quality_far_step(q);
+    const int i = q->subsample <= 1 ? 0 : (q->subsample == 2 ? 1 : 2);
+    s->on = q->split != 0 && q->visibility == HFS_VIS_SLICE;
+    s->from = q->far_from > 0 ? q->far_from : by_subsample[i].from;
+    s->k = q->far_dirs > 0 ? q->far_dirs : by_subsample[i].k;
+    s->k = s->k > HFS_SPLIT_MAX_K ? HFS_SPLIT_MAX_K : s->k;
+    s->step = q->far_step > 0 ? q->far_step : by_subsample[i].step;
+    s->near_refine = i == 0 || q->refine < 2 ? q->refine : 2;
 }
 
 void hfs_split_swath(const hfs_swath *env, int k, hfs_swath *far)

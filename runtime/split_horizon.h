@@ -5,7 +5,7 @@
  *   near  the scales within far_from texels (and the receiver's own cell),
  *         searched per receiver in the direction itself, as before;
  *   far   the scales beyond, searched at the receivers of a coarser grid
- *         (step G = hfs_quality_far_step) in K = far_dirs sub-directions
+ *         (step G = far_step) in K = far_dirs sub-directions
  *         spread evenly over the direction's wedge (hfs_split_phi), each
  *         kept as its occluder: the height over its receiver and the
  *         distance, in texels (heights as world z / dx).
@@ -42,14 +42,18 @@
 #define HFS_SPLIT_MAX_H 3e4 /* |height| stored, within fp16 */
 
 typedef struct hfs_split {
-    int on;       /* far_from > 0 on the slice path */
+    int on;       /* split on the slice path */
     double from;  /* far_from, texels */
     int k;        /* far sub-directions per direction */
     int step;     /* the far grid's step G */
+    int near_refine; /* samples refining the near part (the far part's: q->refine) */
 } hfs_split;
 
-/* The split of a frame with quality q (off unless q->far_from > 0 and
- * q->visibility is the slice path). */
+/* The split of a frame with quality q (on where q->split is and
+ * q->visibility is the slice path; far_* at 0 by q->subsample, and on a
+ * sub-sampled grid at most 2 samples refining the near part: at 256^2 on
+ * the 2x2 grid that pays for the far part, BENCHMARKS.md "Split
+ * horizons"). */
 void hfs_split_make(const hfs_quality *q, hfs_split *s);
 
 /* The far sub-directions of the environment's full swath env, as a full

@@ -196,7 +196,7 @@ int hfs_validate_quality(const hfs_quality *q, hfs_error *err)
     const struct { hfs_scene_key_id id; int value; } counts[] = {
         {HFS_SK_K, q->k}, {HFS_SK_OFFSET, q->offset}, {HFS_SK_NPHI_ENV, q->nphi_env},
         {HFS_SK_NPHI_KEY, q->nphi_key}, {HFS_SK_REFINE, q->refine},
-        {HFS_SK_FAR_FROM, q->far_from}, {HFS_SK_FAR_DIRS, q->far_dirs},
+        {HFS_SK_SPLIT, q->split}, {HFS_SK_FAR_FROM, q->far_from}, {HFS_SK_FAR_DIRS, q->far_dirs},
         {HFS_SK_FAR_STEP, q->far_step},
         {HFS_SK_NPHI_BOUNCE, q->nphi_bounce}, {HFS_SK_BOUNCE_REFINE, q->bounce_refine},
         {HFS_SK_BOUNCE_SUBSAMPLE, q->bounce_subsample},

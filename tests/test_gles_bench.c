@@ -6,7 +6,7 @@
  *   gles_bench [--scene NAME|FILE] [--size N] [--precision fp16|fp32]
  *              [--path legendre|tables|slice] [--subsample S] [--lights env|key|both]
  *              [--frames F] [--cold] [--count] [--compare] [--k K] [--offset O]
- *              [--nphi-env N] [--nphi-key N] [--refine N] [--far-from N]
+ *              [--nphi-env N] [--nphi-key N] [--refine N] [--split 0|1] [--far-from N]
  *              [--far-dirs K] [--far-step G] [--context NAME] [--profile P]
  *              [--data DIR] [--dx F] [--zscale F] [--vs-fp32]
  *
@@ -86,6 +86,7 @@ int main(int argc, char **argv)
         else if (ARG("--nphi-env")) q.nphi_env = atoi(v);
         else if (ARG("--nphi-key")) q.nphi_key = atoi(v);
         else if (ARG("--refine")) q.refine = atoi(v);
+        else if (ARG("--split")) q.split = atoi(v);
         else if (ARG("--far-from")) q.far_from = atoi(v);
         else if (ARG("--far-dirs")) q.far_dirs = atoi(v);
         else if (ARG("--far-step")) q.far_step = atoi(v);

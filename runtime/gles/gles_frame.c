@@ -150,7 +150,7 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     s->nphi_env = q->nphi_env;
     s->vis_path = (int)q->visibility;
     if (fr->split.on) {
-        s->far_from = q->far_from;
+        s->far_from = (int)fr->split.from;
         s->far_k = fr->split.k;
         s->far_step = fr->split.step;
     }

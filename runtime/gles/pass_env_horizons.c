@@ -169,7 +169,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_er
     /* A hair above the largest height: rounding in the pyramid's hi+lo
      * pairs and the bilinear filter must never make the bound too tight. */
     hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
-    hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
+    hfs_gles_set_i1(gl, prog, "u_refine", fr->split.on ? fr->split.near_refine : fr->q->refine);
     hfs_gles_set_f1(gl, prog, "u_lk", (float)L->k);
     hfs_gles_set_f1(gl, prog, "u_tie", (float)hfs_horizon_tie_slope(L->hscale, L->zscale, L->dx));
     if ((rc = hfs_gles_bind_env_swath(g, fr, prog, err)))

@@ -185,6 +185,7 @@ static int *int_field(hfs_scene *s, hfs_scene_key_id id)
     case HFS_SK_NPHI_ENV: return &q->nphi_env;
     case HFS_SK_NPHI_KEY: return &q->nphi_key;
     case HFS_SK_REFINE: return &q->refine;
+    case HFS_SK_SPLIT: return &q->split;
     case HFS_SK_FAR_FROM: return &q->far_from;
     case HFS_SK_FAR_DIRS: return &q->far_dirs;
     case HFS_SK_FAR_STEP: return &q->far_step;
@@ -494,6 +495,7 @@ void hfs_scene_quality(const hfs_scene *s, hfs_quality *q)
     TAKE(HFS_SK_NPHI_ENV, nphi_env);
     TAKE(HFS_SK_NPHI_KEY, nphi_key);
     TAKE(HFS_SK_REFINE, refine);
+    TAKE(HFS_SK_SPLIT, split);
     TAKE(HFS_SK_FAR_FROM, far_from);
     TAKE(HFS_SK_FAR_DIRS, far_dirs);
     TAKE(HFS_SK_FAR_STEP, far_step);
