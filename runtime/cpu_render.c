@@ -124,10 +124,11 @@ static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int
  * hn), added to lo; its glossy term to sp when the surface is (nr > 0). */
 /* Split horizons (split_horizon.h): direction d's sub-horizons at texel
  * (i, j), max(near om, each far slope's elevation), into x[0..k-1]. */
-static int sub_horizons(const render_ctx *c, int i, int j, int d, double om, double *x)
+static int sub_horizons(const render_ctx *c, int i, int j, int d, const double n[3], double om,
+                        double *x)
 {
     double fs[HFS_SPLIT_MAX_K];
-    hfs_cpu_far_slopes(c->far, i, j, d, fs);
+    hfs_cpu_far_slopes(c->far, i, j, d, n, fs);
     for (int h = 0; h < c->split.k; ++h) {
         const double a = atan(fs[h]);
         x[h] = a > om ? a : om;
@@ -156,7 +157,7 @@ static void env_texel(const render_ctx *c, worker_scratch *s, const swath_job *j
         memcpy(t, hn, sizeof t); /* the open hemisphere, exactly */
         for (int d = 0; d < nd; ++d) {
             const double om = omega[(size_t)d * w + i];
-            const int nx = c->far ? sub_horizons(c, i, j, d, om, x) : (x[0] = om, 1);
+            const int nx = c->far ? sub_horizons(c, i, j, d, n, om, x) : (x[0] = om, 1);
             if (need_t)
                 hfs_slice_add_occluded_mean(&c->slices, d, n, x, nx, t);
             if (map)
@@ -387,7 +388,7 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         goto done;
     if (slice && c.has_env && (rc = hfs_slice_table_init(&c.slices, &c.jobs[0].swath, err)))
         goto done;
-    hfs_split_make(q, &c.split);
+    hfs_split_make(q, l->bounces, &c.split);
     if (c.split.on && c.has_env &&
         (rc = hfs_cpu_far_create(f, pyr, q, &c.split, &c.jobs[0].swath, c.tie, threads, &c.far,
                                  err)))

@@ -14,10 +14,10 @@
  * single horizon did. */
 static const struct { int from, k, step; } by_subsample[3] = {{8, 3, 2}, {16, 2, 8}, {16, 2, 16}};
 
-void hfs_split_make(const hfs_quality *q, hfs_split *s)
+void hfs_split_make(const hfs_quality *q, int bounces, hfs_split *s)
 {
     const int i = q->subsample <= 1 ? 0 : (q->subsample == 2 ? 1 : 2);
-    s->on = q->split != 0 && q->visibility == HFS_VIS_SLICE;
+    s->on = q->split != 0 && q->visibility == HFS_VIS_SLICE && bounces == 0;
     s->from = q->far_from > 0 ? q->far_from : by_subsample[i].from;
     s->k = q->far_dirs > 0 ? q->far_dirs : by_subsample[i].k;
     s->k = s->k > HFS_SPLIT_MAX_K ? HFS_SPLIT_MAX_K : s->k;
@@ -60,4 +60,9 @@ double hfs_split_far_slope(double h, double d, double dz, int g)
         return -1e30;
     const double m = d / g < 1.0 ? d / g : 1.0;
     return (h + dz * m) / d;
+}
+
+double hfs_split_plane_shift(double c, double s, double a_h, const double n[3])
+{
+    return (a_h - (n[0] * c + n[1] * s)) / n[2];
 }

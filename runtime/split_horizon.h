@@ -49,12 +49,14 @@ typedef struct hfs_split {
     int near_refine; /* samples refining the near part (the far part's: q->refine) */
 } hfs_split;
 
-/* The split of a frame with quality q (on where q->split is and
- * q->visibility is the slice path; far_* at 0 by q->subsample, and on a
- * sub-sampled grid at most 2 samples refining the near part: at 256^2 on
- * the 2x2 grid that pays for the far part, BENCHMARKS.md "Split
- * horizons"). */
-void hfs_split_make(const hfs_quality *q, hfs_split *s);
+/* The split of a frame with quality q and `bounces` indirect bounces: on
+ * where q->split is, q->visibility is the slice path and there are no
+ * bounces (their bands stop at one direct horizon per direction, which
+ * split horizons do not have: a frame with bounces keeps one); far_* at 0
+ * by q->subsample, and on a sub-sampled grid at most 2 samples refining
+ * the near part (at 256^2 on the 2x2 grid that pays for the far part,
+ * BENCHMARKS.md "Split horizons"). */
+void hfs_split_make(const hfs_quality *q, int bounces, hfs_split *s);
 
 /* The far sub-directions of the environment's full swath env, as a full
  * swath of k n: sub-direction h (0 <= h < k) of direction j is its sample
@@ -80,5 +82,13 @@ void hfs_grid_axis(int p, int g, int n, int *a0, double *t);
  * blended height: the slope (h + dz min(d / g, 1)) / d, or -1e30 where
  * there is none (d <= 0). */
 double hfs_split_far_slope(double h, double d, double dz, int g);
+
+/* A far sub-horizon's slope is measured from its own sub-direction's
+ * tangent plane and carried into its slice's frame (the slice's kernel and
+ * tangent plane integrate it): plus (a_h - a) / N_z, with a = N.d of the
+ * slice's direction (c, s) and a_h = N.d of the sub-direction's.  So the
+ * field's own plane never occludes a sub-horizon (a tilted plane stays
+ * exact), as it never occludes a slice. */
+double hfs_split_plane_shift(double c, double s, double a_h, const double n[3]);
 
 #endif /* HFS_SPLIT_HORIZON_H */

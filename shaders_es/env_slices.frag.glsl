@@ -12,7 +12,7 @@
  *
  * HFS_PAIRS (a sub-sampled grid): the grid holds each direction's
  * occluder (height over its receiver, distance), blended bilinearly and
- * moved to this texel's height (far_slope), instead of tan(x / 2).
+ * moved to this texel's height (hfs_far_slope), instead of tan(x / 2).
  *
  * Why split the horizon: on a sub-sampled grid a texel's nearest
  * occluders (a texel away) are not its grid neighbours' - interpolating
@@ -70,6 +70,8 @@ precision highp sampler2DArray;
 vec3 hfs_normal(vec4 t);
 vec4 hfs_f16v(vec4 v);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
+vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
+float hfs_far_slope(float h, float d, float dz, float inv_step);
 float hfs_hdiff(vec2 a, vec2 b);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
@@ -86,6 +88,8 @@ uniform ivec2 u_fsize;                   /* the far grid's size (a tile) */
 uniform int u_fstep;                     /* and step */
 uniform int u_fcols;                     /* tiles a row */
 uniform vec2 u_fatlas;                   /* the atlas' size */
+uniform vec2 u_fsub[HFS_FARK];           /* sub-direction h at phi + delta_h:
+                                            (cos delta_h - 1, sin delta_h) */
 #endif
 
 layout(std140) uniform HfsScales {
@@ -322,33 +326,7 @@ float grid_rise(ivec2 p, int step, vec4 s0, vec4 s1, float s8)
     return mix(mix(r.x, r.y, f.x), mix(r.z, r.w, f.x), f.y);
 }
 
-/* The grid's occluder in one direction, blended between the receivers
- * around this texel (its height h over them and its distance d, in
- * texels), seen from this texel as a slope: the receivers stand dz above
- * it, so the occluder stands h + dz above it.  Blending the occluder's
- * position, not its slope, keeps a receiver on a spike, whose horizon
- * lies far below it, from lifting its neighbours' horizons.  An occluder
- * within a grid step moves in proportion (d / u_sub of dz): it need not
- * lie on this texel's own line of sight, and a step at some distance
- * would make fp16's rounding of d flip texels (BENCHMARKS.md "Occluders
- * moved to each texel"). */
-float far_slope(float h, float d, float dz, float inv_step)
-{
-    if (!(d > 0.0))
-        return -1e30; /* no occluder around */
-    return (h + dz * min(d * inv_step, 1.0)) / d;
-}
 
-#ifdef HFS_FARK
-/* Where tile i of the far atlas holds position fpix of a tile: float
- * arithmetic (an integer division by a uniform would run lane by lane). */
-vec2 far_tile_uv(vec2 fpix, float i)
-{
-    float row = floor((i + 0.5) / float(u_fcols));
-    vec2 tile = vec2(i - row * float(u_fcols), row);
-    return (fpix + tile * vec2(u_fsize)) / u_fatlas;
-}
-#endif
 
 /* Slice j's part: its horizon x = max(the grid's horizon farj, the near
  * slope from the 3 x 3 neighbourhood (s0, s1, s8), the tangent plane),
@@ -368,16 +346,21 @@ void dir_step(int j, float farj, float fsub[HFS_NSUB], vec3 n, vec4 s0, vec4 s1,
     /* The cell's near end: the slopes to (+-1, 0) and (0, +-1). */
     tn = max(tn, abs(cs.x) * (cs.x > 0.0 ? s1.y : s0.w) + abs(cs.y) * (cs.y > 0.0 ? s1.w : s0.y));
 #ifdef HFS_PAIRS
-    tn = max(tn, farj); /* farj: a slope (far_slope) */
+    tn = max(tn, farj); /* farj: a slope (hfs_far_slope) */
 #else
     /* farj: tan(x / 2), -1 where nothing rises */
     tn = max(tn, farj > -1.0 ? 2.0 * farj / max(1.0 - farj * farj, 1e-30) : -1e30);
 #endif
     float t[HFS_NSUB];
     float top = -1e30;
+#ifdef HFS_FARK
+    float ap = n.y * cs.x - n.x * cs.y; /* N.d rotated a quarter turn */
+#endif
     for (int h = 0; h < HFS_NSUB; ++h) {
 #ifdef HFS_FARK
-        float th = max(tn, fsub[h]);
+        /* measured from its own sub-direction's tangent plane, carried into
+         * this slice's (runtime/split_horizon.h hfs_split_plane_shift) */
+        float th = max(tn, fsub[h] + (a * u_fsub[h].x + ap * u_fsub[h].y) / n.z);
 #else
         float th = tn;
 #endif
@@ -427,19 +410,29 @@ void main()
     for (int h = 0; h < HFS_FARK; ++h) {                                    \
         int e = (J) * HFS_FARK + h;                                         \
         if (e % 2 == 0)                                                     \
-            fv = texture(u_far, vec3(far_tile_uv(fpix, float(e / 2)), 0.0));   \
-        fsub[h] = far_slope(fv[2 * (e % 2)], fv[2 * (e % 2) + 1], dzf, inv_fstep); \
+            fv = texture(u_far, vec3(hfs_far_tile_uv(fpix, float(e / 2), u_fcols, u_fsize, u_fatlas), 0.0)); \
+        fsub[h] = hfs_far_slope(fv[2 * (e % 2)], fv[2 * (e % 2) + 1], dzf, inv_fstep); \
     }
 #else
 #define HFS_SUBS(J)
 #endif
+    /* The grid's occluder in one direction, blended between the receivers
+     * around this texel (its height h over them and its distance d, in
+     * texels), seen from this texel as a slope: the receivers stand dz above
+     * it, so the occluder stands h + dz above it.  Blending the occluder's
+     * position, not its slope, keeps a receiver on a spike, whose horizon
+     * lies far below it, from lifting its neighbours' horizons.  An occluder
+     * within a grid step moves in proportion (d / u_sub of dz): it need not
+     * lie on this texel's own line of sight, and a step at some distance
+     * would make fp16's rounding of d flip texels (BENCHMARKS.md "Occluders
+     * moved to each texel"). */
 #ifdef HFS_PAIRS
     /* On a sub-sampled grid its horizons move to this texel's height. */
     float dz = grid_rise(p, u_sub, s0, s1, s8), inv_sub = 1.0 / float(u_sub);
 #define HFS_FAR(J)                                                          \
     if ((J) % 2 == 0)                                                       \
         far = texture(u_hor, vec3(uv, float((J) / 2)));                     \
-    float fu = far_slope(far[2 * ((J) % 2)], far[2 * ((J) % 2) + 1], dz, inv_sub);
+    float fu = hfs_far_slope(far[2 * ((J) % 2)], far[2 * ((J) % 2) + 1], dz, inv_sub);
 #else
 #define HFS_FAR(J)                                                          \
     if ((J) % 4 == 0)                                                       \

@@ -97,6 +97,28 @@ vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize)
     return (vec2(a) + t + 0.5) / vec2(vsize);
 }
 
+/* Split horizons' far atlas (env_horizons.frag HFS_FAR_ATLAS; runtime/
+ * split_horizon.h): where tile i (sub-directions 2i, 2i + 1; cols tiles a
+ * row, each fsize texels, the atlas atlas texels) holds the place fpix of
+ * a tile, in float arithmetic (an integer division by a uniform would run
+ * lane by lane). */
+vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas)
+{
+    float row = floor((i + 0.5) / float(cols));
+    return (fpix + vec2(i - row * float(cols), row) * vec2(fsize)) / atlas;
+}
+
+/* A blended far occluder (height h over its receivers, distance d, texels)
+ * seen from a texel dz below the receivers (a grid of step 1 / inv_step):
+ * its slope, -1e30 where there is none (runtime/split_horizon.h
+ * hfs_split_far_slope). */
+float hfs_far_slope(float h, float d, float dz, float inv_step)
+{
+    if (!(d > 0.0))
+        return -1e30;
+    return (h + dz * min(d * inv_step, 1.0)) / d;
+}
+
 /* Unit normal from an RGBA texel of terrain_normals.frag: octahedral
  * coordinates (px hi, px lo, py hi, py lo) of the upper hemisphere; nz > 0. */
 vec3 hfs_normal(vec4 t)

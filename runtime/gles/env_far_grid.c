@@ -14,6 +14,9 @@
 #include "gl_util.h"
 #include "pyramid_layout.h"
 
+#include <math.h>
+#include <stdio.h>
+
 static int n_sub(const hfs_gles_frame *fr)
 {
     return fr->q->nphi_env * fr->split.k;
@@ -22,16 +25,13 @@ static int n_sub(const hfs_gles_frame *fr)
 int hfs_gles_env_far_layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     const hfs_gles_layout *L = &fr->L;
-    hfs_split_make(fr->q, &fr->split);
+    hfs_split_make(fr->q, fr->bounces, &fr->split);
     fr->split.on = fr->split.on && fr->slice;
     fr->env_coarsest = 0;
     fr->far_near = fr->far_w = fr->far_h = fr->far_cols = fr->far_aw = fr->far_ah = 0;
     fr->far_swath_tex = 0;
     if (!fr->split.on)
         return HFS_OK;
-    if (fr->bounces > 0) /* their caps read the near grid alone (bounce_gather.frag) */
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "far-from: split horizons do not take "
-                        "indirect bounces yet (use far-from 0 with bounces)");
     fr->far_near = hfs_split_near_count(L->n_levels, L->k, fr->split.from);
     fr->env_coarsest = L->n_levels - fr->far_near;
     fr->far_w = hfs_grid_count(L->w, fr->split.step);
@@ -120,5 +120,13 @@ int hfs_gles_bind_env_far(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_
     hfs_gles_set_i1(gl, prog, "u_fstep", fr->split.step);
     hfs_gles_set_i1(gl, prog, "u_fcols", fr->far_cols);
     hfs_gles_set_f2(gl, prog, "u_fatlas", (float)fr->far_aw, (float)fr->far_ah);
+    /* the sub-directions' turns from their direction (hfs_split_swath) */
+    const double dphi = 2.0 * 3.14159265358979323846 / fr->q->nphi_env;
+    for (int h = 0; h < fr->split.k; ++h) {
+        char name[24];
+        const double delta = ((h + 0.5) / fr->split.k - 0.5) * dphi;
+        snprintf(name, sizeof name, "u_fsub[%d]", h);
+        hfs_gles_set_f2(gl, prog, name, (float)(cos(delta) - 1.0), (float)sin(delta));
+    }
     return rc;
 }
