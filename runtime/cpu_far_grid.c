@@ -158,7 +158,7 @@ void hfs_cpu_far_slopes(const hfs_cpu_far *g, int i, int j, int d, const double 
         double cs, sn;
         hfs_horizon_plan_dir(g->plan, e, &cs, &sn);
         const double a_h = n[0] * cs + n[1] * sn;
-        if (slope[h] > -1e29)
-            slope[h] += hfs_split_plane_shift(g->env_dir[2 * d], g->env_dir[2 * d + 1], a_h, n);
+        if (!hfs_split_above_plane(slope[h], a_h, n))
+            slope[h] = -1e30;
     }
 }

@@ -32,8 +32,8 @@ int hfs_cpu_far_coarsest_near(const hfs_cpu_far *g);
 /* The far slopes at texel (i, j) (unit normal n) of environment direction
  * d's k sub-directions (slope[0..k-1]; -1e30 where none): each occluder
  * blended between the grid receivers around the texel and moved to its
- * height (hfs_split_far_slope), then measured from its own sub-direction's
- * tangent plane (hfs_split_plane_shift), in direction d's frame. */
+ * height (hfs_split_far_slope); -1e30 where it does not rise above its
+ * sub-direction's tangent plane (hfs_split_above_plane). */
 void hfs_cpu_far_slopes(const hfs_cpu_far *g, int i, int j, int d, const double n[3],
                         double *slope);
 

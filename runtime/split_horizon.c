@@ -62,7 +62,8 @@ double hfs_split_far_slope(double h, double d, double dz, int g)
     return (h + dz * m) / d;
 }
 
-double hfs_split_plane_shift(double c, double s, double a_h, const double n[3])
+int hfs_split_above_plane(double t, double a_h, const double n[3])
 {
-    return (a_h - (n[0] * c + n[1] * s)) / n[2];
+    const double plane = -a_h / n[2];
+    return t > plane + HFS_SPLIT_PLANE_TIE * (1.0 + fabs(plane));
 }

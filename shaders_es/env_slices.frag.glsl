@@ -89,7 +89,7 @@ uniform int u_fstep;                     /* and step */
 uniform int u_fcols;                     /* tiles a row */
 uniform vec2 u_fatlas;                   /* the atlas' size */
 uniform vec2 u_fsub[HFS_FARK];           /* sub-direction h at phi + delta_h:
-                                            (cos delta_h - 1, sin delta_h) */
+                                            (cos delta_h, sin delta_h) */
 #endif
 
 layout(std140) uniform HfsScales {
@@ -358,9 +358,10 @@ void dir_step(int j, float farj, float fsub[HFS_NSUB], vec3 n, vec4 s0, vec4 s1,
 #endif
     for (int h = 0; h < HFS_NSUB; ++h) {
 #ifdef HFS_FARK
-        /* measured from its own sub-direction's tangent plane, carried into
-         * this slice's (runtime/split_horizon.h hfs_split_plane_shift) */
-        float th = max(tn, fsub[h] + (a * u_fsub[h].x + ap * u_fsub[h].y) / n.z);
+        /* only where it rises above its own sub-direction's tangent plane
+         * (runtime/split_horizon.h hfs_split_above_plane) */
+        float plane = -(a * u_fsub[h].x + ap * u_fsub[h].y) / n.z;
+        float th = max(tn, fsub[h] > plane + 1e-3 * (1.0 + abs(plane)) ? fsub[h] : -1e30);
 #else
         float th = tn;
 #endif

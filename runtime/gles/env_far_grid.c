@@ -126,7 +126,7 @@ int hfs_gles_bind_env_far(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_
         char name[24];
         const double delta = ((h + 0.5) / fr->split.k - 0.5) * dphi;
         snprintf(name, sizeof name, "u_fsub[%d]", h);
-        hfs_gles_set_f2(gl, prog, name, (float)(cos(delta) - 1.0), (float)sin(delta));
+        hfs_gles_set_f2(gl, prog, name, (float)cos(delta), (float)sin(delta));
     }
     return rc;
 }
