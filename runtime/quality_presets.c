@@ -20,7 +20,7 @@ typedef struct preset {
 /* The first row is the defaults. */
 static const preset presets[] = {
     {"kiosk", 2, 8, 12, 3, 2, HFS_PRECISION_FP16, HFS_VIS_SLICE},
-    {"panel", 4, 8, 32, 5, 1, HFS_PRECISION_FP16, HFS_VIS_SLICE},
+    {"panel", 8, 8, 16, 5, 1, HFS_PRECISION_FP16, HFS_VIS_SLICE},
     {"headless", 2, 8, 12, 3, 4, HFS_PRECISION_FP16, HFS_VIS_SLICE},
 };
 
