@@ -229,9 +229,9 @@ typedef enum hfs_precision {
  * The defaults are the "kiosk" preset (hfs_quality_preset), picked from the
  * measured error/time front: the exact slice path, k=2, offset=8 (every
  * scale within 256 texels reads the heights themselves), 12 env / 3 key
- * directions, 4 refining samples per horizon, subsample 2 (SN08/NS09
- * used Legendre at k=4, offset=2, 32 directions: dominated on every
- * benchmark scene, BENCHMARKS.md "Run time against error"). */
+ * directions, 4 refining samples per horizon, subsample 2, split horizons
+ * (SN08/NS09 used Legendre at k=4, offset=2, 32 directions: dominated on
+ * every benchmark scene, BENCHMARKS.md "Run time against error"). */
 typedef struct hfs_quality {
     int k;                   /* pyramid level step (levels per octave), 2   */
     int offset;              /* level offset o (levels biased by k*o), 8    */
