@@ -6,17 +6,18 @@
  *         searched per receiver in the direction itself, as before;
  *   far   the scales beyond, searched at the receivers of a coarser grid
  *         (step G = far_step) in K = far_dirs sub-directions
- *         spread evenly over the direction's wedge (hfs_split_phi), each
+ *         spread evenly over the direction's wedge (hfs_split_swath), each
  *         kept as its occluder: the height over its receiver and the
  *         distance, in texels (heights as world z / dx).
  *
  * A texel blends each far occluder bilinearly between the grid receivers
  * around it (hfs_grid_axis, the GLES path's texture filtering) and moves it
- * to its own height (hfs_split_far_slope); each sub-direction's horizon is
- * max(tangent plane, near, far), and slice j's occluded part is the mean
- * over its K sub-horizons, integrated with slice j's own kernel (its
- * azimuth's N.d): the clamped cosine varies slowly with azimuth, the far
- * horizons do not.
+ * to its own height (hfs_split_far_slope), where it rises above its own
+ * sub-direction's tangent plane (hfs_split_above_plane); each
+ * sub-direction's horizon is max(tangent plane, near, far), and slice j's
+ * occluded part is the mean over its K sub-horizons, integrated with
+ * slice j's own kernel (its azimuth's N.d): the clamped cosine varies
+ * slowly with azimuth, the far horizons do not.
  *
  * Why: on the benchmark scenes the error left by 12 directions lay in the
  * far horizons' azimuths (a far peak between two rays is missed), while the
