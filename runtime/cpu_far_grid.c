@@ -20,7 +20,6 @@ struct hfs_cpu_far {
     int refine;
     double tie;
     hfs_horizon_plan *plan;     /* the sub-directions                        */
-    double *env_dir;            /* n_env x (cos, sin), snapped as the plans' */
     double *omega;              /* per worker: n_levels angles               */
     int n_levels;
     float *pairs;               /* gh x gw x n_sub x 2: height over the
@@ -80,22 +79,16 @@ int hfs_cpu_far_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, const hfs
     g->refine = q->refine;
     g->tie = tie;
     double *phi = malloc((size_t)g->n_sub * sizeof *phi);
-    g->env_dir = malloc((size_t)g->n_env * 2 * sizeof *g->env_dir);
     const int workers = threads < 1 ? 1 : threads;
     g->omega = malloc((size_t)workers * (size_t)g->n_levels * sizeof *g->omega);
     g->pairs = malloc((size_t)g->gw * (size_t)g->gh * (size_t)g->n_sub * 2 * sizeof *g->pairs);
-    int rc = !phi || !g->omega || !g->pairs || !g->env_dir
+    int rc = !phi || !g->omega || !g->pairs
                  ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the far grid")
                  : HFS_OK;
     hfs_swath sub;
     hfs_split_swath(env, split->k, &sub);
     for (int e = 0; !rc && e < g->n_sub; ++e)
         phi[e] = hfs_swath_phi(&sub, e);
-    for (int d = 0; !rc && d < g->n_env; ++d) {
-        const double c = cos(hfs_swath_phi(env, d)), s = sin(hfs_swath_phi(env, d));
-        g->env_dir[2 * d] = fabs(c) < 1e-12 ? 0.0 : c; /* cpu_horizon.c snap_unit */
-        g->env_dir[2 * d + 1] = fabs(s) < 1e-12 ? 0.0 : s;
-    }
     if (!rc)
         rc = hfs_horizon_plan_create(pyr, f->dx, f->zscale, q->offset, phi, g->n_sub, &g->plan,
                                      err);
@@ -115,7 +108,6 @@ void hfs_cpu_far_destroy(hfs_cpu_far *g)
     if (!g)
         return;
     hfs_horizon_plan_destroy(g->plan);
-    free(g->env_dir);
     free(g->omega);
     free(g->pairs);
     free(g);
