@@ -118,10 +118,9 @@ int hfs_cpu_far_coarsest_near(const hfs_cpu_far *g)
     return g->first_far + 1;
 }
 
-void hfs_cpu_far_slopes(const hfs_cpu_far *g, int i, int j, int d, const double n[3],
-                        double *slope)
+void hfs_cpu_far_place_of(const hfs_cpu_far *g, int i, int j, hfs_cpu_far_place *pl)
 {
-    const int s = g->split.step, k = g->split.k;
+    const int s = g->split.step;
     int a0, b0;
     double tx, ty;
     hfs_grid_axis(i, s, g->f->width, &a0, &tx);
@@ -129,28 +128,32 @@ void hfs_cpu_far_slopes(const hfs_cpu_far *g, int i, int j, int d, const double 
     const int a1 = a0 + 1 < g->gw ? a0 + 1 : a0, b1 = b0 + 1 < g->gh ? b0 + 1 : b0;
     const int ra[4] = {a0, a1, a0, a1}, rb[4] = {b0, b0, b1, b1};
     const double wt[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
-    /* The receivers' blended height over the texel. */
     const double zp = height_texels(g->f, i, j);
-    double dz = 0.0;
+    pl->dz = 0.0;
     for (int r = 0; r < 4; ++r) {
         const int x = ra[r] * s < g->f->width - 1 ? ra[r] * s : g->f->width - 1;
         const int y = rb[r] * s < g->f->height - 1 ? rb[r] * s : g->f->height - 1;
-        dz += wt[r] * (height_texels(g->f, x, y) - zp);
+        pl->dz += wt[r] * (height_texels(g->f, x, y) - zp);
+        pl->at[r] = ((size_t)rb[r] * (size_t)g->gw + (size_t)ra[r]) * (size_t)g->n_sub * 2;
+        pl->wt[r] = wt[r];
     }
-    for (int h = 0; h < k; ++h) {
-        const int e = d * k + h;
+}
+
+void hfs_cpu_far_slopes(const hfs_cpu_far *g, const hfs_cpu_far_place *pl, int d,
+                        const double n[3], double *slope)
+{
+    for (int h = 0; h < g->split.k; ++h) {
+        const int e = d * g->split.k + h;
         double hb = 0.0, db = 0.0;
         for (int r = 0; r < 4; ++r) {
-            const float *p = g->pairs + ((size_t)rb[r] * (size_t)g->gw + (size_t)ra[r]) *
-                                            (size_t)g->n_sub * 2 + 2 * (size_t)e;
-            hb += wt[r] * p[0];
-            db += wt[r] * p[1];
+            const float *p = g->pairs + pl->at[r] + 2 * (size_t)e;
+            hb += pl->wt[r] * p[0];
+            db += pl->wt[r] * p[1];
         }
-        slope[h] = hfs_split_far_slope(hb, db, dz, s);
+        slope[h] = hfs_split_far_slope(hb, db, pl->dz, g->split.step);
         double cs, sn;
         hfs_horizon_plan_dir(g->plan, e, &cs, &sn);
-        const double a_h = n[0] * cs + n[1] * sn;
-        if (!hfs_split_above_plane(slope[h], a_h, n))
+        if (!hfs_split_above_plane(slope[h], n[0] * cs + n[1] * sn, n))
             slope[h] = -1e30;
     }
 }

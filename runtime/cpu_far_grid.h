@@ -29,12 +29,23 @@ void hfs_cpu_far_destroy(hfs_cpu_far *g);
  * 0..coarsest-1 are far (hfs_horizon_refined_within's `coarsest`). */
 int hfs_cpu_far_coarsest_near(const hfs_cpu_far *g);
 
-/* The far slopes at texel (i, j) (unit normal n) of environment direction
- * d's k sub-directions (slope[0..k-1]; -1e30 where none): each occluder
- * blended between the grid receivers around the texel and moved to its
- * height (hfs_split_far_slope); -1e30 where it does not rise above its
- * sub-direction's tangent plane (hfs_split_above_plane). */
-void hfs_cpu_far_slopes(const hfs_cpu_far *g, int i, int j, int d, const double n[3],
-                        double *slope);
+/* Where a texel lies on the far grid, the same for every direction: its
+ * four receivers' pairs (offsets into the grid), their bilinear weights,
+ * and how far the receivers' blended height stands above the texel
+ * (texels). */
+typedef struct hfs_cpu_far_place {
+    size_t at[4];
+    double wt[4];
+    double dz;
+} hfs_cpu_far_place;
+void hfs_cpu_far_place_of(const hfs_cpu_far *g, int i, int j, hfs_cpu_far_place *pl);
+
+/* The far slopes at a texel (its place pl, unit normal n) of environment
+ * direction d's k sub-directions (slope[0..k-1]): each occluder blended
+ * between the receivers and moved to the texel's height
+ * (hfs_split_far_slope); -1e30 where there is none or where it does not
+ * rise above its sub-direction's tangent plane (hfs_split_above_plane). */
+void hfs_cpu_far_slopes(const hfs_cpu_far *g, const hfs_cpu_far_place *pl, int d,
+                        const double n[3], double *slope);
 
 #endif /* HFS_CPU_FAR_GRID_H */

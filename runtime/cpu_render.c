@@ -120,15 +120,14 @@ static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int
                                c->tie, 0, 0);
 }
 
-/* The environment's exit radiance at texel i of the row (normal n, H(N)
- * hn), added to lo; its glossy term to sp when the surface is (nr > 0). */
-/* Split horizons (split_horizon.h): direction d's sub-horizons at texel
- * (i, j), max(near om, each far slope's elevation), into x[0..k-1]. */
-static int sub_horizons(const render_ctx *c, int i, int j, int d, const double n[3], double om,
-                        double *x)
+/* Split horizons (split_horizon.h): direction d's sub-horizons at a texel
+ * (its far place pl), max(near om, each far slope's elevation), into
+ * x[0..k-1]. */
+static int sub_horizons(const render_ctx *c, const hfs_cpu_far_place *pl, int d,
+                        const double n[3], double om, double *x)
 {
     double fs[HFS_SPLIT_MAX_K];
-    hfs_cpu_far_slopes(c->far, i, j, d, n, fs);
+    hfs_cpu_far_slopes(c->far, pl, d, n, fs);
     for (int h = 0; h < c->split.k; ++h) {
         const double a = atan(fs[h]);
         x[h] = a > om ? a : om;
@@ -155,9 +154,12 @@ static void env_texel(const render_ctx *c, worker_scratch *s, const swath_job *j
         hfs_env_open_lookup(c->env_open, n, c->env_rotate, e);
     if (c->slices.p) { /* exact slice lighting (slice_light.h) */
         memcpy(t, hn, sizeof t); /* the open hemisphere, exactly */
+        hfs_cpu_far_place pl; /* split horizons: once per texel */
+        if (c->far)
+            hfs_cpu_far_place_of(c->far, i, j, &pl);
         for (int d = 0; d < nd; ++d) {
             const double om = omega[(size_t)d * w + i];
-            const int nx = c->far ? sub_horizons(c, i, j, d, n, om, x) : (x[0] = om, 1);
+            const int nx = c->far ? sub_horizons(c, &pl, d, n, om, x) : (x[0] = om, 1);
             if (need_t)
                 hfs_slice_add_occluded_mean(&c->slices, d, n, x, nx, t);
             if (map)
@@ -384,19 +386,8 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
         goto done;
     /* Slice lighting: the environment's slices; key lights keep Legendre. */
     const int slice = q->visibility == HFS_VIS_SLICE;
-    if ((rc = hfs_cpu_ctx_build_all_visibility(&c, slice ? HFS_VIS_LEGENDRE : q->visibility, threads, err)))
-        goto done;
-    if (slice && c.has_env && (rc = hfs_slice_table_init(&c.slices, &c.jobs[0].swath, err)))
-        goto done;
-    hfs_split_make(q, l->bounces, &c.split);
-    if (c.split.on && c.has_env &&
-        (rc = hfs_cpu_far_create(f, pyr, q, &c.split, &c.jobs[0].swath, c.tie, threads, &c.far,
-                                 err)))
-        goto done;
-    if (slice && c.has_env && l->env_shade_map && l->env_open &&
-        (rc = hfs_map_slices_build(&c.map_slices, l->env_shade_map, l->env_map_width,
-                                   l->env_map_height, l->env_rotate, c.slices.dir, c.slices.n,
-                                   c.slices.dphi, err)))
+    if ((rc = hfs_cpu_ctx_build_all_visibility(&c, slice ? HFS_VIS_LEGENDRE : q->visibility, threads, err)) ||
+        (rc = hfs_cpu_ctx_make_slices(&c, l, q, pyr, threads, err)))
         goto done;
 
     /* Local lights (issue 4): NULL when none contributes. */

@@ -84,6 +84,11 @@ int hfs_cpu_ctx_make_plans(render_ctx *c, const hfs_cpu_pyramid *pyr, const hfs_
 /* Each job's visibility object on `path` (identical swaths share one). */
 int hfs_cpu_ctx_build_all_visibility(render_ctx *c, hfs_visibility_path path, int threads,
                                      hfs_error *err);
+/* The slice path's environment: its slice table, split horizons' far grid
+ * (split_horizon.h) and, with env-shade = map, the map along the slices;
+ * nothing off the slice path or without an environment. */
+int hfs_cpu_ctx_make_slices(render_ctx *c, const hfs_lighting *l, const hfs_quality *q,
+                            const hfs_cpu_pyramid *pyr, int threads, hfs_error *err);
 /* The workers' scratch rows and the jobs' offsets into them. */
 int hfs_cpu_ctx_alloc_scratch(render_ctx *c, int threads, int max_n, hfs_error *err);
 void hfs_cpu_ctx_free_scratch(worker_scratch *s);

@@ -181,3 +181,20 @@ int hfs_cpu_ctx_alloc_scratch(render_ctx *c, int threads, int max_n, hfs_error *
     }
     return HFS_OK;
 }
+
+int hfs_cpu_ctx_make_slices(render_ctx *c, const hfs_lighting *l, const hfs_quality *q,
+                            const hfs_cpu_pyramid *pyr, int threads, hfs_error *err)
+{
+    if (q->visibility != HFS_VIS_SLICE || !c->has_env)
+        return HFS_OK;
+    const hfs_swath *env = &c->jobs[0].swath;
+    int rc = hfs_slice_table_init(&c->slices, env, err);
+    hfs_split_make(q, l->bounces, &c->split);
+    if (!rc && c->split.on)
+        rc = hfs_cpu_far_create(c->f, pyr, q, &c->split, env, c->tie, threads, &c->far, err);
+    if (!rc && l->env_shade_map && l->env_open)
+        rc = hfs_map_slices_build(&c->map_slices, l->env_shade_map, l->env_map_width,
+                                  l->env_map_height, l->env_rotate, c->slices.dir, c->slices.n,
+                                  c->slices.dphi, err);
+    return rc;
+}

@@ -47,3 +47,17 @@ double hfs_horizon_tie_slope(double half_range, double zscale, double dx)
 {
     return 1e-6 * (half_range > 0.0 ? half_range : 1.0) * zscale / dx;
 }
+
+int hfs_grid_count(int n, int g)
+{
+    if (g < 1)
+        g = 1;
+    return (n - 1 + g - 1) / g + 1;
+}
+
+void hfs_grid_axis(int p, int g, int n, int *a0, double *t)
+{
+    const int a = p / g, x0 = a * g, x1 = x0 + g < n - 1 ? x0 + g : n - 1;
+    *a0 = a;
+    *t = x1 > x0 ? (double)(p - x0) / (double)(x1 - x0) : 0.0;
+}

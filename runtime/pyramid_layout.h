@@ -42,4 +42,12 @@ int hfs_pyramid_read_level(int n_levels, int k, int offset, int level);
  * path normalizes heights). */
 double hfs_horizon_tie_slope(double half_range, double zscale, double dx);
 
+/* Receiver grids (the visibility grid, the bounces', split horizons' far
+ * grid): of step g along an axis of n texels, receiver a at min(a g,
+ * n - 1).  Their count, ceil((n - 1) / g) + 1, and for texel p the
+ * receiver a0 before it and the weight t of the next one (0 when p is a
+ * receiver), as the GLES path's hfs_grid_uv places its bilinear read. */
+int hfs_grid_count(int n, int g);
+void hfs_grid_axis(int p, int g, int n, int *a0, double *t);
+
 #endif /* HFS_PYRAMID_LAYOUT_H */

@@ -28,7 +28,12 @@ void hfs_split_make(const hfs_quality *q, int bounces, hfs_split *s)
 void hfs_split_swath(const hfs_swath *env, int k, hfs_swath *far)
 {
     hfs_swath_full(env->n * k, far);
-    far->phi0 = env->phi0 + env->dphi * (0.5 / k - 0.5);
+    far->phi0 = env->phi0 + hfs_split_turn(0, k, env->dphi);
+}
+
+double hfs_split_turn(int h, int k, double dphi)
+{
+    return ((h + 0.5) / k - 0.5) * dphi;
 }
 
 int hfs_split_near_count(int n_levels, int k, double from)
@@ -38,20 +43,6 @@ int hfs_split_near_count(int n_levels, int k, double from)
         if (hfs_pyramid_spacing(n_levels, k, i) <= from * (1.0 + 1e-9))
             ++count;
     return count;
-}
-
-int hfs_grid_count(int n, int g)
-{
-    if (g < 1)
-        g = 1;
-    return (n - 1 + g - 1) / g + 1;
-}
-
-void hfs_grid_axis(int p, int g, int n, int *a0, double *t)
-{
-    const int a = p / g, x0 = a * g, x1 = x0 + g < n - 1 ? x0 + g : n - 1;
-    *a0 = a;
-    *t = x1 > x0 ? (double)(p - x0) / (double)(x1 - x0) : 0.0;
 }
 
 double hfs_split_far_slope(double h, double d, double dz, int g)

@@ -64,19 +64,14 @@ void hfs_split_make(const hfs_quality *q, int bounces, hfs_split *s);
  * j k + h, at phi_j + ((h + 1/2) / k - 1/2) dphi, evenly over the wedge
  * [phi_j - dphi/2, phi_j + dphi/2]. */
 void hfs_split_swath(const hfs_swath *env, int k, hfs_swath *far);
+/* Sub-direction h's turn from its direction: ((h + 1/2) / k - 1/2) dphi. */
+double hfs_split_turn(int h, int k, double dphi);
 
 /* How many of a pyramid's n_levels scales (k levels per octave, spacing
  * hfs_pyramid_spacing) are near: those at most `from` texels away (plus a
  * hair, so that from = 8 keeps the scale at 8).  The near ones are the
  * finest; scale index n_levels - count is the finest far one. */
 int hfs_split_near_count(int n_levels, int k, double from);
-
-/* Receivers of a grid of step g along an axis of n texels (receiver a at
- * min(a g, n - 1)): their count, and for texel p the receiver a0 before it
- * and the weight t of the next one (0 when p is a receiver), as the GLES
- * path's hfs_grid_uv places its bilinear read. */
-int hfs_grid_count(int n, int g);
-void hfs_grid_axis(int p, int g, int n, int *a0, double *t);
 
 /* A far occluder blended at a texel (height h over the receivers, distance
  * d, texels) seen from the texel, which lies dz below the receivers'

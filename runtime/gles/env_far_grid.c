@@ -6,8 +6,8 @@
  * runs on the far grid (step split.step): for each of the K x nphi_env
  * sub-directions the occluder beyond the near scales, as a (height,
  * distance) pair, 2 a texel, in an atlas of tiles drawn at once;
- * env_slices.frag blends and moves them per texel (hfs_gles_bind_env_far).  The CPU reference computes
- * the same pairs (cpu_far_grid.c).
+ * env_slices.frag blends and moves them per texel (hfs_gles_bind_env_far).
+ * The CPU reference computes the same pairs (cpu_far_grid.c).
  */
 #include "gles_backend.h"
 
@@ -26,7 +26,6 @@ int hfs_gles_env_far_layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     const hfs_gles_layout *L = &fr->L;
     hfs_split_make(fr->q, fr->bounces, &fr->split);
-    fr->split.on = fr->split.on && fr->slice;
     fr->env_coarsest = 0;
     fr->far_near = fr->far_w = fr->far_h = fr->far_cols = fr->far_aw = fr->far_ah = 0;
     fr->far_swath_tex = 0;
@@ -120,11 +119,11 @@ int hfs_gles_bind_env_far(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_
     hfs_gles_set_i1(gl, prog, "u_fstep", fr->split.step);
     hfs_gles_set_i1(gl, prog, "u_fcols", fr->far_cols);
     hfs_gles_set_f2(gl, prog, "u_fatlas", (float)fr->far_aw, (float)fr->far_ah);
-    /* the sub-directions' turns from their direction (hfs_split_swath) */
-    const double dphi = 2.0 * 3.14159265358979323846 / fr->q->nphi_env;
+    /* the sub-directions' turns from their direction */
+    const double dphi = hfs_visibility_swath(g->env_vis)->dphi;
     for (int h = 0; h < fr->split.k; ++h) {
         char name[24];
-        const double delta = ((h + 0.5) / fr->split.k - 0.5) * dphi;
+        const double delta = hfs_split_turn(h, fr->split.k, dphi);
         snprintf(name, sizeof name, "u_fsub[%d]", h);
         hfs_gles_set_f2(gl, prog, name, (float)cos(delta), (float)sin(delta));
     }

@@ -12,13 +12,6 @@
 
 #define PI 3.14159265358979323846
 
-int hfs_gles_grid_size(int n, int sub)
-{
-    if (sub < 1)
-        sub = 1;
-    return (n - 1 + sub - 1) / sub + 1;
-}
-
 int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quality *q,
                          hfs_error *err)
 {
@@ -36,8 +29,8 @@ int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quali
     L->lmin = hfs_pyramid_read_level(L->n_levels, q->k, q->offset, 0);
     L->n_layers = L->n_levels - L->lmin;
     L->sub = q->subsample < 1 ? 1 : q->subsample;
-    L->vw = hfs_gles_grid_size(L->w, L->sub);
-    L->vh = hfs_gles_grid_size(L->h, L->sub);
+    L->vw = hfs_grid_count(L->w, L->sub);
+    L->vh = hfs_grid_count(L->h, L->sub);
     for (int i = 0; i < L->n_levels; ++i) {
         hfs_pyramid_level_size(L->w, L->h, q->k, i, &L->lw[i], &L->lh[i]);
         L->spacing[i] = hfs_pyramid_spacing(L->n_levels, q->k, i);

@@ -39,9 +39,6 @@ typedef struct hfs_gles_layout {
 int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quality *q,
                          hfs_error *err);
 
-/* Visibility grid: receiver a of the sub-sampled grid sits on full-resolution
- * grid point min(a*sub, W-1) (same in y); vw = ceil((W-1)/sub) + 1. */
-int hfs_gles_grid_size(int n, int sub);
 
 /* Normalized heights, row-major W x H, two components per texel:
  *   fp32 = 0: uint16_t pairs (hi, lo): hi = half(v), lo = half(v - hi);

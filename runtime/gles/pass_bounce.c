@@ -22,6 +22,7 @@
 
 #include "gl_util.h"
 #include "lights.h"
+#include "pyramid_layout.h"
 
 #include <math.h>
 
@@ -43,8 +44,8 @@ static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     /* The bounce grid's receivers are visibility receivers (their horizons
      * cap the bands): its step is a multiple of the visibility grid's. */
     fr->bsub = fr->q->bounce_subsample > fr->L.sub ? fr->q->bounce_subsample : fr->L.sub;
-    fr->bw = hfs_gles_grid_size(fr->L.w, fr->bsub);
-    fr->bh = hfs_gles_grid_size(fr->L.h, fr->bsub);
+    fr->bw = hfs_grid_count(fr->L.w, fr->bsub);
+    fr->bh = hfs_grid_count(fr->L.h, fr->bsub);
     if (fr->bounces > HFS_GLES_MAX_BOUNCES)
         return hfs_fail(err, HFS_E_INVALID, "bounces %d: at most %d", fr->bounces,
                         HFS_GLES_MAX_BOUNCES);

@@ -51,11 +51,14 @@ static int run_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     const hfs_gles_layout *L = &fr->L;
     /* Per texel: normal, a horizon layer per 4 directions, and with the
-     * near scale its own height and 9 neighbours. */
+     * near scale its own height and 9 neighbours; split horizons: a far
+     * texel per 2 sub-directions and the 4 far receivers' heights. */
     const double per_layer = fr->hor_pairs ? 2.0 : 4.0;
+    const double far = fr->split.on ? ceil(g->env_vis_n * fr->split.k / 2.0) + 4.0 : 0.0;
     hfs_gles_stage_fetches(g, HFS_PASS_ENV_TRANSFER, 0,
                            (double)L->w * L->h *
-                               (1.0 + ceil(g->env_vis_n / per_layer) + 10.0 * fr->env_near));
+                               (1.0 + ceil(g->env_vis_n / per_layer) + 10.0 * fr->env_near +
+                                far));
     return hfs_gles_draw_env_slices(g, fr, 0, g->r.transfer_fbo, err);
 }
 
