@@ -117,8 +117,6 @@ uniform float u_tie;                     /* hfs_horizon_tie_slope */
 uniform int u_dir0;                      /* first direction of this draw */
 uniform int u_near;                      /* finest scales left to env_slices.frag
                                             (the far pass: the near ones) */
-uniform int u_far;                       /* 1: split horizons' far pass (pass_env_far.c):
-                                            every search starts below any plane */
 #endif
 uniform int u_coarsest;                  /* coarsest scale searched: split horizons'
                                             near part stops at far-from (0: all) */
@@ -296,7 +294,7 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
         vec2 cs = SW_DIR(j).xy;
         /* A receiver that is its own grid point starts at its tangent
          * plane (a slope below it never wins); the others below any. */
-        float best = u_sub == 1 && u_far == 0 ? -(n.x * cs.x + n.y * cs.y) / n.z : -1e30;
+        float best = u_sub == 1 ? -(n.x * cs.x + n.y * cs.y) / n.z : -1e30;
         float dist;
         best = clamp(horizon_tan(g, cs, hx, best, HFS_NLEV - 1 - u_near, fetches, dist), -1e18,
                      1e18);
@@ -320,7 +318,9 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
 
 #ifdef HFS_FAR_ATLAS
 /* Split horizons' far pass: this texel's tile, its receiver, and the
- * occluders of its two sub-directions beyond the u_near near scales. */
+ * occluders of its two sub-directions beyond the u_near near scales, each
+ * search starting below any tangent plane (cpu_horizon.h
+ * hfs_horizon_occluder). */
 void main()
 {
     ivec2 q = ivec2(gl_FragCoord.xy);

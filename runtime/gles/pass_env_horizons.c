@@ -179,10 +179,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_er
         if (fetch_sum)
             rc = hfs_gles_sum_counts(g, L, g->r.venv_fbo, fetch_sum, err);
     }
-    if (fr->slice) {
+    if (fr->slice)
         hfs_gles_set_i1(gl, prog, "u_near", fr->env_near);
-        hfs_gles_set_i1(gl, prog, "u_far", 0);
-    }
     hfs_gles_set_i1(gl, prog, "u_coarsest", fr->env_coarsest); /* split horizons' near part */
     const int per_layer = SLICE_DIRS_PER_LAYER(fr->hor_pairs), per = fr->hor_outs * per_layer;
     for (int d0 = 0; fr->slice && !rc && d0 < g->env_vis_n; d0 += per) {
