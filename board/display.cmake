@@ -7,7 +7,7 @@
 # A backend not built compiles to a stub that answers "display NAME: not
 # built (...)" with HFS_E_UNSUPPORTED, so the core needs neither library.
 # GL comes from the display's EGL context through the hfs_gl table
-# (runtime/gl_api.h) and the embedded shaders (fullscreen.vert,
+# (runtime/gl/gl_api.h) and the embedded shaders (fullscreen.vert,
 # display_blit.frag); no libGLESv2 is linked.
 
 pkg_check_modules(HFS_X11 IMPORTED_TARGET x11)
@@ -24,8 +24,8 @@ add_library(hfs_display STATIC
   ${CMAKE_CURRENT_LIST_DIR}/overlay.c)
 target_include_directories(hfs_display PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_compile_definitions(hfs_display PRIVATE HFS_BUILDING_LIBRARY)
-target_link_libraries(hfs_display PUBLIC hfs_base hfshade_io
-                      PRIVATE hfs_gl hfs_glctx PkgConfig::HFS_EGL m)
+target_link_libraries(hfs_display PUBLIC hfs_core hfshade_io
+                      PRIVATE hfs_gl PkgConfig::HFS_EGL m)
 
 set(hfs_displays "headless")
 if(HFS_X11_FOUND)

@@ -7,7 +7,7 @@
  * The platform code (display_x11.c, display_kms.c) owns the native objects
  * (X Display/Window, GBM device/surface) and must keep them alive until
  * hfs_dgl_close.  GL entry points come from eglGetProcAddress into an
- * hfs_gl table (runtime/gl_api.h), never from a linked libGLESv2.
+ * hfs_gl table (runtime/gl/gl_api.h), never from a linked libGLESv2.
  *
  * The EGLDisplay is keyed on our own native display (a private X connection
  * or GBM device), so unlike the surfaceless context's it is not shared with

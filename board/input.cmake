@@ -16,5 +16,5 @@ add_library(hfs_input STATIC
   ${CMAKE_CURRENT_LIST_DIR}/input_replay.c
   ${CMAKE_CURRENT_LIST_DIR}/input_clock.c)
 target_include_directories(hfs_input PUBLIC ${CMAKE_CURRENT_LIST_DIR})
-target_link_libraries(hfs_input PUBLIC hfs_base hfshade_scene
+target_link_libraries(hfs_input PUBLIC hfs_core hfshade_scene
                       PRIVATE PkgConfig::HFS_INPUT_INIH PkgConfig::HFS_INPUT_EVDEV m)

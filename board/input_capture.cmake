@@ -12,7 +12,7 @@ target_sources(hfs_input PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/camera_sky.c
   ${CMAKE_CURRENT_LIST_DIR}/capture.c
   ${CMAKE_CURRENT_LIST_DIR}/backoff.c)
-target_link_libraries(hfs_input PUBLIC hfshade_io hfs_envdec hfs_sh)
+target_link_libraries(hfs_input PUBLIC hfshade_io hfs_envmap hfs_sh)
 
 add_library(hfs_capture STATIC
   ${CMAKE_CURRENT_LIST_DIR}/capture_v4l2.c
@@ -22,7 +22,7 @@ add_library(hfs_capture STATIC
   ${CMAKE_CURRENT_LIST_DIR}/capture_synth_sky.c
   ${CMAKE_CURRENT_LIST_DIR}/capture_live.c)
 target_include_directories(hfs_capture PUBLIC ${CMAKE_CURRENT_LIST_DIR})
-target_link_libraries(hfs_capture PUBLIC hfs_input hfs_base PRIVATE m)
+target_link_libraries(hfs_capture PUBLIC hfs_input hfs_core PRIVATE m)
 
 add_executable(hfs-capture-info ${CMAKE_CURRENT_LIST_DIR}/capture_info_main.c)
 target_link_libraries(hfs-capture-info PRIVATE hfs_capture)

@@ -1,5 +1,5 @@
 # kiosk.cmake — hfshade-kiosk, the board's program (board/KIOSK.md): the
-# scene (hfshade_scene_load), the renderer (hfshade_lib), a display
+# scene (hfshade_scene), the renderer (hfshade_lib), a display
 # (hfs_display) and the knobs (hfs_input_dev), in one poll loop.
 # Included after display.cmake and input*.cmake (fragments go in name order).
 
@@ -12,7 +12,7 @@ add_executable(hfshade-kiosk
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_stats.c
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_log.c
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_capture.c)
-target_link_libraries(hfshade-kiosk PRIVATE hfs_display hfs_input_dev hfs_capture hfshade_scene_load
+target_link_libraries(hfshade-kiosk PRIVATE hfs_display hfs_input_dev hfs_capture hfshade_scene
                       hfshade_lib m)
 # GeoTIFF, SRTM .hgt, VRT ... DEMs where GDAL is there (tools/gdal.cmake,
 # defined after board/: hence the generator expression).

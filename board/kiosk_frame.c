@@ -1,7 +1,7 @@
 /*
  * kiosk_frame.c — one frame: render, picture, overlay, present.
  *
- * The renderer plans each frame (runtime/frame_plan.h): after a key-light
+ * The renderer plans each frame (runtime/core/frame_plan.h): after a key-light
  * knob only that light's passes and the shading run; after an overlay
  * toggle none.  So the kiosk simply renders the whole scene every time
  * something changed and lets the planner decide what work that is.

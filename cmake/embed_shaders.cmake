@@ -1,5 +1,5 @@
 # embed_shaders.cmake — build-time shader steps, run with `cmake -P`
-# (driven by runtime/gl.cmake).
+# (driven by runtime/gl/CMakeLists.txt).
 #
 #   -DMODE=validate -DVALIDATOR=<glslangValidator> -DINPUT=<x.vert.glsl>
 #        -DSTAGE=vert|frag -DSTAMP=<file>
@@ -11,7 +11,7 @@
 #   -DMODE=embed -DOUTPUT=<file.c> -DINPUTS=<a.glsl|b.glsl|...>
 #       Writes a C file with every input as a NUL-terminated char array and
 #       hfs_shader_source()/hfs_shader_count()/hfs_shader_name()
-#       (runtime/gl_shaders.h).  The name of x.vert.glsl is "x.vert".
+#       (runtime/gl/gl_shaders.h).  The name of x.vert.glsl is "x.vert".
 #
 # A shader file must not carry a #version line (the runtime adds it) and must
 # be plain ASCII: GLSL ES 3.00 defines no character set beyond it and some

@@ -1,6 +1,6 @@
 # shader_variants.cmake — the "// hfs-variant: NAME VALUE, NAME2 VALUE" lines
 # of a shader, shared by every build-time shader check (embed_shaders.cmake,
-# runtime/gles/gles.cmake) so they all compile the same variants.
+# runtime/gles/CMakeLists.txt) so they all compile the same variants.
 #
 # hfs_shader_variants(<text> <out_labels> <out_defines>): two parallel lists,
 # one entry without defines ("<none>", "") and then one per variant line;

@@ -391,7 +391,7 @@ HFS_API void hfs_renderer_set_field_serial(hfs_renderer *r, uint64_t serial);
 /* ---- objects above the field (issue 19) ---------------------------------------- */
 
 /* What stands above the terrain in a 3-D view: markers, pins, boxes
- * (runtime/objects.h, DESIGN.md "Objects above the field").  Each is an
+ * (runtime/core/objects.h, DESIGN.md "Objects above the field").  Each is an
  * axis-aligned box lit by the scene's lights: key lights through their
  * visibility at its surface (the renderer's point query: shadow height
  * maps, exact rays on the truth), the environment through horizons
@@ -548,7 +548,7 @@ HFS_API int hfs_renderer_render_texture(hfs_renderer *r, const hfs_field *field,
  * surface sees nothing), vis[i * n_key + k] the visible fraction of key
  * light k's disk in [0, 1], for every key light in lighting order (disabled
  * ones too: visibility is geometry).  The CPU reference reads Lee & Kim's
- * shadow height maps (runtime/shm.h: layers across the disk), the GLES
+ * shadow height maps (runtime/core/shm.h: layers across the disk), the GLES
  * backend builds the same maps on the GPU (doubling passes in fp16 hi +
  * lo), the truth casts exact rays (truth_light_samples per light).
  * Errors: a non-finite point or one off the footprint (one line naming

@@ -1,7 +1,7 @@
 # shared.cmake — hfshade_shared: the installed shared library libhfshade.so.MAJOR
 # (SONAME from project(hfshade VERSION ...)).  It is made of the objects of
 # the core static modules (hfshade_lib and what it links: hfs_gles, hfs_gl,
-# hfs_glctx, hfs_cpu, hfs_truth, hfs_shared, hfs_sh, hfs_base), so nothing is
+# hfs_cpu, hfs_truth, hfs_core, hfs_sh), so nothing is
 # compiled twice.  Everything is compiled with hidden visibility
 # (CMAKE_C_VISIBILITY_PRESET in the top-level CMakeLists.txt) and
 # position-independent: the library exports exactly the functions hfshade.h
@@ -12,10 +12,9 @@
 #
 # The static modules stay what the tools and tests link: they use internal
 # interfaces (scene loader, SH, contexts) that the shared library hides.
-# Included from runtime/CMakeLists.txt after renderer.cmake.
+# Included from runtime/CMakeLists.txt after the module folders.
 
-set(HFS_CORE_MODULES hfshade_lib hfs_gles hfs_gl hfs_glctx hfs_cpu hfs_truth
-    hfs_shared hfs_sh hfs_base)
+set(HFS_CORE_MODULES hfshade_lib hfs_gles hfs_gl hfs_cpu hfs_truth hfs_core hfs_sh)
 set(hfs_core_objects "")
 foreach(module IN LISTS HFS_CORE_MODULES)
   list(APPEND hfs_core_objects $<TARGET_OBJECTS:${module}>)

@@ -1,6 +1,6 @@
 /*
  * bounce_gather.frag - one indirect bounce on the visibility grid
- * (runtime/cpu_bounce.h, DESIGN.md "Indirect light"), the CPU reference's
+ * (runtime/cpu/cpu_bounce.h, DESIGN.md "Indirect light"), the CPU reference's
  * walk at each grid receiver g: along each bounce azimuth (u_edir[j * u_bhead.z]: every
  * u_bhead.z-th of the environment's), outward from the receiver's tangent
  * plane, its own cell (the near end's one-sided slopes or the far edge,

@@ -24,7 +24,7 @@
  * only follows the normal is then exact at every texel, and only the
  * terrain's occlusion is interpolated.
  *
- * HFS_SLICE (exact slice lighting, runtime/slice_light.h): instead of V,
+ * HFS_SLICE (exact slice lighting, runtime/core/slice_light.h): instead of V,
  * the horizons themselves (as tan(omega / 2)), four per target (a layer
  * each of the grid's horizon array), HFS_NOUT targets from direction
  * u_dir0; with HFS_PAIRS (a sub-sampled grid) each horizon's occluder,
@@ -33,7 +33,7 @@
  * that pass too (they differ from texel to texel), and the search starts
  * below any tangent plane, since the receivers that read it have their own.
  *
- * Split horizons (runtime/split_horizon.h): the near pass searches only
+ * Split horizons (runtime/core/split_horizon.h): the near pass searches only
  * the scales from u_coarsest in.  HFS_FAR_ATLAS 1 is the far pass
  * (env_far_grid.c): on the far grid (receivers u_sub apart, u_fgrid of
  * them), laid out as an atlas of tiles, tile i holding sub-directions 2i

@@ -26,7 +26,7 @@
  * direction, u_nearw, uniform_blocks.c): 9 fetches for every direction.
  * u_near = 0 only on a one-level layout.
  *
- * HFS_FARK K (split horizons, runtime/split_horizon.h): the grid holds
+ * HFS_FARK K (split horizons, runtime/core/split_horizon.h): the grid holds
  * the near part only; each slice's horizon is K sub-horizons, max(near,
  * the far occluder of sub-direction j K + h from u_far, the far grid's
  * pairs blended and moved to this texel's height), and the slice's part is
@@ -35,7 +35,7 @@
  * HFS_ENV_MAP 1 (env-shade = map, pass_env_map_slices.c): the same
  * horizons, but each slice's occluded part integrated against the
  * environment map itself, dphi (S_j(x) - S_j(floor)) with S_j = a F_j +
- * b G_j read from the slice's rows of u_mslices (runtime/env_map_slices.h;
+ * b G_j read from the slice's rows of u_mslices (runtime/core/env_map_slices.h;
  * over their largest value), into one target: the texel's occluded
  * irradiance over dphi (RGB, <= 0).
  */
@@ -141,7 +141,7 @@ layout(location = 3) out vec4 o_t3;
 #endif
 
 /* Sums over the slices, by azimuthal factor: Y_k along slice j is
- * trig_k(phi_j) sum_m a_km f_m(e) (runtime/slice_light.h
+ * trig_k(phi_j) sum_m a_km f_m(e) (runtime/core/slice_light.h
  * hfs_slice_profile), so T_k = sum_m a_km sum_j trig_k(phi_j) d_jm, d_jm
  * the slice's integral of f_m between its tangent plane and its horizon.
  * Each factor needs only a few m (uniform_blocks.h): accumulating those
@@ -165,7 +165,7 @@ void multiples(vec2 x, out float c[5], out float s[5])
 }
 
 /* d_m = g_m(x) - g_m(xf), g_m(x) = Int_x^{pi/2} f_m(e) (a cos e + b sin e)
- * cos e de (runtime/slice_light.c hfs_slice_integrals: the same closed
+ * cos e de (runtime/core/slice_light.c hfs_slice_integrals: the same closed
  * forms, differenced): cos kx, sin kx of x (cx, sx) and of xf (cf, sf),
  * k = 1..5, and dj0 = xf - x.  With Jc_k = Int_x^{pi/2} cos ke de and
  * Js_k = Int sin ke de, their differences need only those; all of it is
@@ -359,7 +359,7 @@ void dir_step(int j, float farj, float fsub[HFS_NSUB], vec3 n, vec4 s0, vec4 s1,
     for (int h = 0; h < HFS_NSUB; ++h) {
 #ifdef HFS_FARK
         /* only where it rises above its own sub-direction's tangent plane
-         * (runtime/split_horizon.h hfs_split_above_plane) */
+         * (runtime/core/split_horizon.h hfs_split_above_plane) */
         float plane = -(a * u_fsub[h].x + ap * u_fsub[h].y) / n.z;
         float th = max(tn, fsub[h] > plane + 1e-3 * (1.0 + abs(plane)) ? fsub[h] : -1e30);
 #else

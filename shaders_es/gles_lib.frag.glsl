@@ -110,7 +110,7 @@ vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas)
 
 /* A blended far occluder (height h over its receivers, distance d, texels)
  * seen from a texel dz below the receivers (a grid of step 1 / inv_step):
- * its slope, -1e30 where there is none (runtime/split_horizon.h
+ * its slope, -1e30 where there is none (runtime/core/split_horizon.h
  * hfs_split_far_slope). */
 float hfs_far_slope(float h, float d, float dz, float inv_step)
 {
@@ -141,7 +141,7 @@ vec2 hfs_snap(vec2 o)
 /* ---- Legendre (NS09 section 4) ---------------------------------------------- */
 
 /* Occlusion vector of the step "blocked below elevation sigma"
- * (runtime/sh_legendre.c hfs_nlp_occlusion). */
+ * (runtime/sh/sh_legendre.c hfs_nlp_occlusion). */
 vec4 hfs_nlp_occ(float sigma)
 {
     sigma = clamp(sigma, -HFS_HALF_PI, HFS_HALF_PI);
@@ -239,7 +239,7 @@ float hfs_sh_dot(vec4 a[4], vec4 b[4])
 }
 
 /* Rotation about +z by angle a given (cos ma), (sin ma), m = 1..3
- * (runtime/sh.h hfs_sh_rotate_z): per band l and m > 0,
+ * (runtime/sh/sh.h hfs_sh_rotate_z): per band l and m > 0,
  *   out[l(l+1)+m] = c in[l(l+1)+m] - s in[l(l+1)-m]
  *   out[l(l+1)-m] = s in[l(l+1)+m] + c in[l(l+1)-m]. */
 void hfs_sh_rotz(inout vec4 t[4], vec3 c, vec3 s)
@@ -269,7 +269,7 @@ void hfs_sh_mirror_y(inout vec4 t[4])
 }
 
 /* Texture coordinate of horizon omega in a wedge table of n entries over
- * [-pi/2, pi/2] (runtime/sh_wedge_table.c table_cell). */
+ * [-pi/2, pi/2] (runtime/sh/sh_wedge_table.c table_cell). */
 float hfs_table_coord(float omega, float n)
 {
     float u = clamp((omega + HFS_HALF_PI) * ((n - 1.0) / HFS_PI), 0.0, n - 1.0);
@@ -279,7 +279,7 @@ float hfs_table_coord(float omega, float n)
 /* V += one wedge's table placed in the sky: the four layers layer0..+3 of
  * `tab` at uv (the wedge's horizon pair, hfs_table_coord), mirrored in y
  * when `mirror` (a start boundary wedge), rotated about z by (cos ma),
- * (sin ma) (runtime/visibility.c table_placement).  Shared by the
+ * (sin ma) (runtime/core/visibility.c table_placement).  Shared by the
  * environment, key and local passes' wedge-table paths. */
 void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror, vec3 c,
                    vec3 s, inout vec4 V[4])
@@ -298,7 +298,7 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
 
 /* Irradiance of a uniform cap whose half-angle (< pi/2) has sine s and
  * cosine c and whose axis makes angle acos(cos_beta) with the normal
- * (runtime/lights.c).  Taking the half-angle by its sine spares a sphere
+ * (runtime/core/lights.c).  Taking the half-angle by its sine spares a sphere
  * light the atan of its angular radius (r/d is its sine): llvmpipe's atan
  * cost every local light a 4e-5 relative bias.  The cap is above the
  * tangent plane iff cos_beta >= s, below it iff cos_beta <= -s. */
@@ -312,7 +312,7 @@ float hfs_cap_irradiance_sc(float cos_beta, float s, float c)
         return HFS_PI * s2 * cos_beta;
     if (cos_beta <= -s)
         return 0.0;
-    /* Straddling: runtime/lights.c's cancellation-free form for small caps
+    /* Straddling: runtime/core/lights.c's cancellation-free form for small caps
      * (the textbook (cos_beta acos(y) - x q) s2 + atan(q, x) keeps a
      * 2-degree disk at the horizon 1/500 of float's precision). */
     float sin_beta = sqrt(max(1.0 - cos_beta * cos_beta, 0.0));
@@ -439,7 +439,7 @@ float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs
 }
 
 /* B-spline max over the scale index on the fly, fed per-scale angles from
- * fine (i = HFS_NLEV - 1) to coarse, indices clamped (runtime/cpu_horizon.c
+ * fine (i = HFS_NLEV - 1) to coarse, indices clamped (runtime/cpu/cpu_horizon.c
  * hfs_horizon_bspline_max, same expressions): after om[i] = a arrives,
  * w = om[i..i+3] and knot i+1 and midpoint i+1 are complete. */
 float hfs_bspline_knot(vec4 w)

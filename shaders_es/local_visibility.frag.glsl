@@ -1,6 +1,6 @@
 /*
  * local_visibility.frag - local spherical lights' visibility on the visibility
- * grid (DESIGN.md "Local lights", "GLES path"; mirrors runtime/cpu_local.c
+ * grid (DESIGN.md "Local lights", "GLES path"; mirrors runtime/cpu/cpu_local.c
  * shade() for the Legendre path).  One fragment per receiver of the grid
  * (grid point min(a*sub, W-1)), lights [u_light0, u_light0 + u_nl) of the
  * frame, two per RGBA target as fp16 (hi, lo) pairs, up to HFS_NOUT targets

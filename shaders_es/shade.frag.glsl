@@ -12,7 +12,7 @@
  *   local lights (HFS_LOCAL) Lo += rho/pi * Le * E_cap * ratio, E_cap at
  *                the texel, the ratio read bilinearly from the grid of
  *                local_visibility.frag (local_lights below).
- *   glossy (HFS_GLOSSY, runtime/gloss.h; DESIGN.md "Glossy surfaces") the
+ *   glossy (HFS_GLOSSY, runtime/core/gloss.h; DESIGN.md "Glossy surfaces") the
  *                Phong lobe about R = 2 (N.V) N - V, added after the albedo
  *                map: each key/local light's lobe at its centre times its
  *                factor E_cap ratio, the environment's ks (N.R) v L*lobe(R)
@@ -23,7 +23,7 @@
  *   env-shade = map (HFS_ENV_MAP; DESIGN.md "Shading from the map
  *                itself") the diffuse environment's open part is the map's
  *                own irradiance: H . L_env plus the table D(N') (u_eopen,
- *                runtime/env_open.h, N' = N turned by -rotate); with
+ *                runtime/core/env_open.h, N' = N turned by -rotate); with
  *                HFS_ENV_MAP 2 its occluded part is the map's too (u_mocc,
  *                pass_env_map_slices.c) instead of T . L_env's; the glossy
  *                lobe still reads T.
@@ -145,7 +145,7 @@ float gloss_lobe(vec3 d)
 #endif
 
 #if HFS_ENV_MAP > 0
-/* rho/pi D at normal n (runtime/env_open.c hfs_env_open_uv, lookup): n
+/* rho/pi D at normal n (runtime/core/env_open.c hfs_env_open_uv, lookup): n
  * turned by -rotate, azimuthal equidistant, node i at texel centre i. */
 vec3 env_open(vec3 n)
 {

@@ -1,6 +1,6 @@
 /*
  * shm_double.frag - one doubling pass of a shadow height map
- * (runtime/shm.h, runtime/gles/shm_query.c):
+ * (runtime/core/shm.h, runtime/gles/shm_query.c):
  *     S_{j+1}(x) = max(S_j(x), S_j(x + u_off) - u_drop),
  * S_j read bilinearly between the four grid points around x + u_off
  * (weighted in highp here, as shm.c hfs_shm_sample), nothing added where

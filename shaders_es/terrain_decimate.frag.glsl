@@ -1,7 +1,7 @@
 /*
  * terrain_decimate.frag - one pyramid level from the next finer one (DESIGN.md
  * "Height pyramid"): level i samples level i+1 bilinearly at its own texel
- * centres, clamped to the edge (runtime/cpu_pyramid.c decimate).  The
+ * centres, clamped to the edge (runtime/cpu/cpu_pyramid.c decimate).  The
  * target is the level's own RG texture; heights are normalized hi+lo pairs,
  * and bilinear filtering is linear, so filtering hi and lo separately and
  * adding them filters v.

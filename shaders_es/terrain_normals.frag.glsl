@@ -1,6 +1,6 @@
 /*
  * terrain_normals.frag - unit normals at full resolution (SPEC: central
- * differences of world z, one-sided at the border; runtime/field_geom.c
+ * differences of world z, one-sided at the border; runtime/core/field_geom.c
  * hfs_field_normal, including its overflow-safe scaling).  Output RGBA:
  * the upper-hemisphere octahedral coordinates p = (nx, ny) / (|nx| + |ny| +
  * nz) as (px hi, px lo, py hi, py lo); hfs_normal (gles_lib) decodes

@@ -6,7 +6,7 @@
  * weights w0..w3 of taps x0-1..x0+2 become two linear fetches at
  * x0 - 1 + w1/(w0+w1) and x0 + 1 + w3/(w2+w3) with weights g0 = w0+w1 and
  * g1 = w2+w3; CLAMP_TO_EDGE makes both fetches read clamped indices, like
- * the CPU's taps (runtime/cpu_pyramid.c bspline_taps).  Results are
+ * the CPU's taps (runtime/cpu/cpu_pyramid.c bspline_taps).  Results are
  * combined in difference (lerp) form, exact for a constant level.
  *
  * Default: separable, like the CPU: pass u_axis = 0 takes the level

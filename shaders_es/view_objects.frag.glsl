@@ -1,6 +1,6 @@
 /*
  * view_objects.frag - an object's face in the 3-D view: its vertices' lit
- * radiance (runtime/objects.h), interpolated across the triangle (the
+ * radiance (runtime/core/objects.h), interpolated across the triangle (the
  * truth's view reads the same vertex grid bilinearly).
  */
 precision highp float;

@@ -1,6 +1,6 @@
 /*
  * view_objects.vert - the objects of the 3-D view (runtime/gles/pass_view.c,
- * runtime/objects.h): their lit faces as triangles from a vertex buffer,
+ * runtime/core/objects.h): their lit faces as triangles from a vertex buffer,
  * a position (the view's world: z times the exaggeration) and an exit
  * radiance already times the view's scale per vertex; positions taken
  * relative to the eye before the projection, as the mesh's (view.vert).

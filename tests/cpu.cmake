@@ -1,4 +1,4 @@
-# CPU reference renderer (runtime/cpu_*.c): pure math and logic, no GPU.
+# CPU reference renderer (runtime/cpu/): pure math and logic, no GPU.
 foreach(t pyramid horizon visibility render)
   hfs_add_test(test_cpu_${t} SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_${t}.c
                LIBS hfs_cpu m LABEL unit TIMEOUT 120)
@@ -9,14 +9,14 @@ hfs_add_test(test_cpu_bounce SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_bounce
 # Indirect light against the truth on one scene (not a test):
 # build/tests/bench_bounce NAME KEY=VALUE... (tools/bench_bounce.sh).
 add_executable(bench_bounce ${CMAKE_CURRENT_SOURCE_DIR}/bench_bounce.c)
-target_link_libraries(bench_bounce PRIVATE hfshade_scene_load hfshade_lib m)
+target_link_libraries(bench_bounce PRIVATE hfshade_scene hfshade_lib m)
 # build/tests/bench_shm NAME KEY=VALUE... (tools/bench_shm.sh): shadow height
 # maps against the truth's rays, and their query time (BENCHMARKS.md).
 add_executable(bench_shm ${CMAKE_CURRENT_SOURCE_DIR}/bench_shm.c)
-target_link_libraries(bench_shm PRIVATE hfshade_scene_load hfshade_lib m)
+target_link_libraries(bench_shm PRIVATE hfshade_scene hfshade_lib m)
 target_include_directories(bench_shm PRIVATE ${PROJECT_SOURCE_DIR}/tools)
 # build/tests/bench_shm_passes [ROUNDS] [SIZE...]: the SHM's time against the
 # horizon path's key-light passes, side by side (BENCHMARKS.md).
 add_executable(bench_shm_passes ${CMAKE_CURRENT_SOURCE_DIR}/bench_shm_passes.c)
-target_link_libraries(bench_shm_passes PRIVATE hfshade_lib hfs_terrain_gen hfs_glctx m)
+target_link_libraries(bench_shm_passes PRIVATE hfshade_lib hfs_terrain_gen hfs_gl m)
 target_include_directories(bench_shm_passes PRIVATE ${PROJECT_SOURCE_DIR}/tools)

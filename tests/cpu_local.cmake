@@ -1,4 +1,4 @@
-# Local lights in the CPU reference (runtime/cpu_local.c, issue 4).
+# Local lights in the CPU reference (runtime/cpu/cpu_local.c, issue 4).
 hfs_add_test(test_cpu_local SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_local.c
              LIBS hfshade_lib m LABEL unit TIMEOUT 300)
 # Timing / swath-mode driver (not a test): see the header of test_cpu_local_bench.c.
@@ -6,4 +6,4 @@ add_executable(bench_cpu_local ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_local_bench.
 target_link_libraries(bench_cpu_local PRIVATE hfshade_lib hfshade_io hfshade_scene)
 # The shadow-range test of local lights (lights.h hfs_local_light_open).
 hfs_add_test(test_local_open SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_local_open.c
-             LIBS hfshade_lib hfs_base m LABEL unit TIMEOUT 120)
+             LIBS hfshade_lib hfs_core m LABEL unit TIMEOUT 120)

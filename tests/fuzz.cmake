@@ -23,7 +23,7 @@ if(HFS_FUZZ)
       -fno-omit-frame-pointer)
   # Coverage feedback and sanitizers inside the code under test; whatever
   # links these libraries links the sanitizer runtimes too.
-  foreach(lib hfs_base hfshade_io hfshade_scene)
+  foreach(lib hfs_core hfshade_io hfshade_scene)
     if(TARGET ${lib})
       target_compile_options(${lib} PRIVATE -fsanitize=fuzzer-no-link ${HFS_FUZZ_SAN})
       target_link_options(${lib} INTERFACE -fsanitize=address,undefined)

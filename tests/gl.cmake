@@ -16,13 +16,13 @@ target_include_directories(hfs_test_gl_pattern PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(hfs_test_gl_pattern PUBLIC hfs_gl m)
 
 hfs_add_test(test_gl_names LABEL gl SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gl_names.c
-             LIBS hfs_glctx)
+             LIBS hfs_gl)
 hfs_add_test(test_gl_half LABEL gl SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gl_half.c
              LIBS hfs_gl m)
 # One executable per program, one test per (backend, environment).
 foreach(exe test_gl_context test_gl_multi)
   add_executable(${exe} ${CMAKE_CURRENT_LIST_DIR}/${exe}.c)
-  target_link_libraries(${exe} PRIVATE hfs_glctx hfs_gl hfs_test_gl_pattern)
+  target_link_libraries(${exe} PRIVATE hfs_gl hfs_test_gl_pattern)
 endforeach()
 
 set(hfs_gl_tests test_gl_names test_gl_half)

@@ -4,7 +4,7 @@
  * any kind can be made here; every other failure fails the test (exit 1),
  * and with HFS_REQUIRE_GL=1 (CI) even that does.
  *
- * Header-only (static inline); link hfs_glctx.
+ * Header-only (static inline); link hfs_gl.
  */
 #ifndef HFS_TEST_GL_TEST_H
 #define HFS_TEST_GL_TEST_H

@@ -1,4 +1,4 @@
-# gles.cmake — the GLES renderer (runtime/gles_*.c).
+# gles.cmake — the GLES renderer (runtime/gles/).
 #   test_gles_units       capability layer and CPU-side setup, no driver ("unit")
 #   test_gles_*           against the CPU reference and on their own ("gl"):
 #     equal_SCENE_PREC_PATH  SPEC metrics vs cpu at default settings,
@@ -39,7 +39,7 @@ target_link_libraries(gles_bench PRIVATE hfs_test_gles_scenes)
 target_compile_definitions(gles_bench PRIVATE HFS_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
 
 hfs_add_test(test_gles_units LABEL unit TIMEOUT 120
-             SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gles_units.c LIBS hfs_gles m)
+             SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gles_units.c LIBS hfs_gles hfs_cpu m)
 
 set(hfs_gles_tests "")
 function(hfs_gles_test name mode)
@@ -140,7 +140,7 @@ hfs_gles_test(test_gles_sub2_cones_slice sub cones 2 9.6e-5 4.86e-4 1.17e-2 env 
 hfs_gles_test(test_gles_sub2_fractal_slice sub fractal 2 8.4e-3 6.7e-3 0.124 env slice)
 hfs_gles_test(test_gles_sub4_fractal_slice sub fractal 4 1.9e-3 1.66e-2 0.33 env slice)
 hfs_gles_test(test_gles_sub2_dem_slice sub dem 2 6.5e-4 1.45e-3 3.7e-2 env slice)
-# With split horizons (runtime/split_horizon.h), the same far settings at
+# With split horizons (runtime/core/split_horizon.h), the same far settings at
 # both steps (far-from 16, 2 sub-directions, far grid step 8, refine 2): the
 # sub-sampling of the near part alone.  Measurement + 20%:
 #   measured grid / mean / max  cones   sub 2 7.94e-5 / 3.70e-4 / 8.74e-3
@@ -204,7 +204,7 @@ set(hfs_gles_tests ${hfs_gles_tests} test_env_shade)
 # a pin in a wall's shadow, refused inputs, the GLES view against the
 # CPU's ray-cast one (test_objects.c).
 add_executable(test_objects ${CMAKE_CURRENT_LIST_DIR}/test_objects.c)
-target_link_libraries(test_objects PRIVATE hfshade_lib hfs_glctx m)
+target_link_libraries(test_objects PRIVATE hfshade_lib hfs_gl m)
 add_test(NAME test_objects COMMAND test_objects gles)
 set_tests_properties(test_objects PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
 set(hfs_gles_tests ${hfs_gles_tests} test_objects)
@@ -255,7 +255,7 @@ set(hfs_gles_tests ${hfs_gles_tests} test_gloss)
 # test's own EGL context against hfs_renderer_render's image, the planner
 # on the texture path, refusals (test_gles_embed.c states the bounds).
 add_executable(test_gles_embed ${CMAKE_CURRENT_LIST_DIR}/test_gles_embed.c)
-target_link_libraries(test_gles_embed PRIVATE hfs_test_gles_scenes hfs_glctx hfs_gl
+target_link_libraries(test_gles_embed PRIVATE hfs_test_gles_scenes hfs_gl
                       PkgConfig::HFS_EGL)
 foreach(env "" "MESA_GLES_VERSION_OVERRIDE=3.0")
   set(tname test_gles_embed)
@@ -268,7 +268,7 @@ foreach(env "" "MESA_GLES_VERSION_OVERRIDE=3.0")
   set(hfs_gles_tests ${hfs_gles_tests} ${tname})
 endforeach()
 
-# Shadow height maps and point queries (issue 19; runtime/shm.c, cpu_points.c,
+# Shadow height maps and point queries (issue 19; runtime/core/shm.c, cpu_points.c,
 # truth_points.c, gles/shm_query.c): closed forms and exact rays (unit),
 # and the GLES maps against the CPU's at both precisions (test_shm.c).
 add_executable(test_shm ${CMAKE_CURRENT_LIST_DIR}/test_shm.c)

@@ -40,7 +40,7 @@ if(TARGET hfshade-kiosk)
 
   add_executable(test_kiosk ${CMAKE_CURRENT_LIST_DIR}/test_kiosk.c
                             ${CMAKE_CURRENT_LIST_DIR}/kiosk_harness.c)
-  target_link_libraries(test_kiosk PRIVATE hfshade_scene_load hfs_display hfshade_lib
+  target_link_libraries(test_kiosk PRIVATE hfshade_scene hfs_display hfshade_lib
                         PkgConfig::HFS_PNG m)
   add_dependencies(test_kiosk hfshade-kiosk hfgen)
   set(hfs_kiosk_gl_tests test_kiosk_replay test_kiosk_amortize test_kiosk_signals

@@ -1,6 +1,6 @@
 /*
  * oracle_sh.h — SPEC.md's SH table written out for the oracle tests
- * (test_sh_oracle.c, test_sh_glsl_gpu.c), independent of runtime/sh*.c:
+ * (test_sh_oracle.c, test_sh_glsl_gpu.c), independent of runtime/sh/:
  *   the 16 polynomials of SPEC's table with constants from the
  *   normalization formula (oracle_sh_init fills them; test_sh_oracle checks
  *   them against SPEC's printed 6 digits), and the

@@ -1,7 +1,6 @@
 # plan.cmake — the frame planner (issue 6): its decisions on a small graph.
 hfs_add_test(test_frame_plan SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_frame_plan.c
-             LIBS hfs_base LABEL unit)
-target_include_directories(test_frame_plan PRIVATE ${PROJECT_SOURCE_DIR}/runtime)
+             LIBS hfs_core LABEL unit)
 # Planned frames equal from-scratch frames after random edits (GLES; 77
 # without a context): 2000 edits on a 24x24 field; the sanitizer build,
 # whose job is memory and UB errors and which runs ~8x slower, 400.
@@ -28,4 +27,3 @@ hfs_add_test(test_plan_amortize SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_plan_amor
 # runs exactly the passes that read it (the swath's sample count included).
 hfs_add_test(test_gles_plan_diff SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gles_plan_diff.c
              LIBS hfs_gles LABEL unit)
-target_include_directories(test_gles_plan_diff PRIVATE ${PROJECT_SOURCE_DIR}/runtime)

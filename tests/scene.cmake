@@ -2,7 +2,7 @@
 hfs_add_test(test_scene SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_scene.c
              LIBS hfshade_scene LABEL unit)
 
-# The table of scene keys (runtime/scene_keys.h) against its documents and
+# The table of scene keys (runtime/core/scene_keys.h) against its documents and
 # its readers: the parser, the renderer's validation, the knob limits.
 hfs_add_test(test_scene_keys SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_scene_keys.c
              LIBS hfshade_scene hfshade_lib hfs_input m

@@ -7,3 +7,11 @@ add_test(NAME library_stands_alone
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/structure.sh ${PROJECT_SOURCE_DIR}
                  ${PROJECT_BINARY_DIR})
 set_tests_properties(function_length library_stands_alone PROPERTIES LABELS unit TIMEOUT 60)
+# runtime/ in folders by role (issue 34): every #include keeps the rule of
+# its folder's README.md ("May include:"), and the check catches planted
+# violations (core -> cpu/gl/scene, truth -> gles/cpu, runtime -> board/tools).
+add_test(NAME include_rules
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/include_rules.sh ${PROJECT_SOURCE_DIR})
+add_test(NAME include_rules_planted
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/include_rules_planted.sh ${PROJECT_SOURCE_DIR})
+set_tests_properties(include_rules include_rules_planted PROPERTIES LABELS unit TIMEOUT 120)

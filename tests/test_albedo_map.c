@@ -1,6 +1,6 @@
 /*
  * test_albedo_map.c — the per-texel albedo map (hfs_lighting albedo_map,
- * runtime/albedo.h) through the renderer API:
+ * runtime/core/albedo.h) through the renderer API:
  *   cpu      the CPU reference, the truth and the unshadowed normalizer
  *            with a map equal, bit for bit, their output without it times
  *            the map (direct light is linear in the albedo)

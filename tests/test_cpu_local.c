@@ -1,6 +1,6 @@
 /*
  * test_cpu_local.c — local spherical lights in the CPU reference
- * (runtime/cpu_local.c, DESIGN.md "Local lights"):
+ * (runtime/cpu/cpu_local.c, DESIGN.md "Local lights"):
  *   1. building blocks: the closed-form Legendre fold equals
  *      hfs_visibility_eval on the same swath (partial and full, 1e-12);
  *      hfs_horizon_point_slopes equals a plan's hfs_horizon_point bit for bit;

@@ -1,6 +1,6 @@
 /*
  * test_env_decompose.c — the environment map decomposition (issue 17,
- * runtime/env_decompose.h) on synthetic skies with known disks
+ * runtime/envmap/env_decompose.h) on synthetic skies with known disks
  * (tools/sky_gen.h): directions, radii and energies recovered; energy of
  * lights + residual equal to the map's integral; the 0/360 seam and the
  * poles; black, constant, gradient-only and 1x1 maps (no lights); NaN, Inf

@@ -1,5 +1,5 @@
 /*
- * test_frame_plan.c — the frame planner's decisions (runtime/frame_plan.h)
+ * test_frame_plan.c — the frame planner's decisions (runtime/core/frame_plan.h)
  * on a small graph shaped like the GLES renderer's: heights -> terrain ->
  * env visibility -> transfer; terrain + key geometry -> key horizons -> key
  * factor; compose reads the transfer, the env coefficients, the key factor

@@ -115,7 +115,7 @@ static int mode_sub(int argc, char **argv)
 }
 
 /* Exact slice lighting (--visibility slice, issue 15) on GLES against the
- * CPU reference's (runtime/slice_light.c) at subsample 1: fp32 must match the
+ * CPU reference's (runtime/core/slice_light.c) at subsample 1: fp32 must match the
  * algorithm, fp16 its storage.  meas: measured {mean, max} (fp16, fp32),
  * llvmpipe, Mesa 22.3.6; the bound is 10x.  Each case with one horizon per
  * direction (split 0) and with split horizons (the defaults: far grid step

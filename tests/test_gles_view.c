@@ -1,6 +1,6 @@
 /*
  * test_gles_view.c — the GLES 3-D view (runtime/gles/pass_view.c) against
- * the truth's ray-cast view (runtime/truth_view.c) of the SAME lit image
+ * the truth's ray-cast view (runtime/truth/truth_view.c) of the SAME lit image
  * (the GLES frame's own), so that only the view differs:
  *
  *   compare fp16|fp32  a 33 x 33 field (an off-centre hill on a slope, a

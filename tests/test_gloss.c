@@ -1,6 +1,6 @@
 /*
  * test_gloss.c — glossy surfaces (hfs_lighting specular, gloss, view_dir;
- * runtime/gloss.h, DESIGN.md "Glossy surfaces") through the renderer API:
+ * runtime/core/gloss.h, DESIGN.md "Glossy surfaces") through the renderer API:
  *   off      specular 0 with any gloss and view direction is the default
  *            lighting's output bit for bit (cpu, truth; gles in gles mode)
  *   closed   a flat plane under one key light, albedo 0 (the lobe alone):

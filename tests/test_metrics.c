@@ -1,5 +1,5 @@
 /*
- * test_metrics.c — SPEC.md's error metrics (runtime/metrics.c) against values
+ * test_metrics.c — SPEC.md's error metrics (runtime/renderer/metrics.c) against values
  * worked out by hand: every bound in the suite is a bound on these numbers,
  * so a wrong percentile or normalization would loosen all of them at once.
  */

@@ -1,5 +1,5 @@
 /*
- * test_objects.c — objects above the field (runtime/objects.h; issue 19):
+ * test_objects.c — objects above the field (runtime/core/objects.h; issue 19):
  *   open     a box on open flat ground under a uniform sky of radiance 1:
  *            its top lit by pi (Lo = albedo), its sides by the upper half of
  *            their hemisphere, pi/2 (the ground below; the field's edge

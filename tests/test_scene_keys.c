@@ -1,5 +1,5 @@
 /*
- * test_scene_keys.c — the table of scene keys (runtime/scene_keys.h) and its
+ * test_scene_keys.c — the table of scene keys (runtime/core/scene_keys.h) and its
  * three readers:
  *   - the table: names unique and found, ranges well formed, every default
  *     accepted by the parser, the quality defaults those of

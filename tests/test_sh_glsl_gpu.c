@@ -1,8 +1,8 @@
 /*
  * test_sh_glsl_gpu.c — the generated GLSL SH product (tools/gen_sh_tables.c
  * -> sh_product.glsl.inc), exactly the text the GLES renderer embeds
- * (hfs_gles_sh_product_src, runtime/gles/gles.cmake), EXECUTED on the GL driver
- * and compared with hfs_sh_product (runtime/sh_product.c, double):
+ * (hfs_gles_sh_product_src, runtime/gles/CMakeLists.txt), EXECUTED on the GL driver
+ * and compared with hfs_sh_product (runtime/sh/sh_product.c, double):
  *
  *   random     2048 random pairs (a, b), |a_k|, |b_k| <= 1, fed as uniform
  *              arrays (16 pairs a draw), one pixel per (pair, output vec4);
@@ -38,7 +38,7 @@
 
 #include "check.h"
 
-extern const char hfs_gles_sh_product_src[]; /* runtime/gles/gles.cmake (hfs_gles) */
+extern const char hfs_gles_sh_product_src[]; /* runtime/gles/CMakeLists.txt (hfs_gles) */
 
 #define NP 16 /* pairs per draw */
 

@@ -1,7 +1,7 @@
 /*
  * test_sh_oracle.c — SH basis, z-rotation and the renderer's env-rotate
  * against DIRECT EVALUATION of SPEC.md's table, written out in
- * tests/oracle_sh.h (nothing from runtime/sh*.c builds the oracle):
+ * tests/oracle_sh.h (nothing from runtime/sh/ builds the oracle):
  *
  *   basis      the 16 SPEC polynomials with constants from the normalization
  *              formula; checked against SPEC's printed 6-digit constants

@@ -1,6 +1,6 @@
 /*
  * test_sh_util.h — reference pieces for the SH unit tests, written
- * independently of runtime/sh*.c so that the tests compare the library with
+ * independently of runtime/sh/ so that the tests compare the library with
  * brute force, not with itself:
  *   - the SPEC.md basis, transcribed from the table with exact constants,
  *   - a Gauss-Legendre rule (Newton on the three-term recurrence),

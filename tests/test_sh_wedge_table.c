@@ -5,7 +5,7 @@
  * the wedge, for random horizon pairs (negative ones included), the boundary
  * wedge (and its mirror for the start of a swath), clamping, and the open-sky
  * full swath.  Prints table creation time and the interpolation error at
- * n = 256, the figure quoted in runtime/sh_wedge_table.c.
+ * n = 256, the figure quoted in runtime/sh/sh_wedge_table.c.
  */
 #include "sh.h"
 #include "test_sh_util.h"

@@ -1,5 +1,5 @@
 /*
- * test_shm.c — shadow height maps (runtime/shm.h, issue 19) and the point
+ * test_shm.c — shadow height maps (runtime/core/shm.h, issue 19) and the point
  * queries (hfs_renderer_query_points) against answers computed here:
  *   axis      a light along +x: the doubling passes equal the paper's
  *             recurrence S(x) = max(H(x), S(x + 1) - dx tan e) run here,

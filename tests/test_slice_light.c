@@ -1,5 +1,5 @@
 /*
- * test_slice_light.c — exact per-slice lighting (runtime/slice_light.h,
+ * test_slice_light.c — exact per-slice lighting (runtime/core/slice_light.h,
  * issue 15) against independent computations:
  *   integrals  the 7 slice integrals against 64-point Gauss-Legendre
  *              quadrature of the integrand, over random normals and horizons

@@ -1,6 +1,6 @@
 /*
  * test_truth_envmap.c — the ground truth of an environment map
- * (runtime/truth_envmap.c), maps built in memory:
+ * (runtime/truth/truth_envmap.c), maps built in memory:
  *   constant      a constant map == the truth of the constant SH sky
  *   sh2           a map sampling an order-2 SH function == its SH truth
  *   disk          a small bright disk (all else 0) == the equivalent key light

@@ -1,4 +1,4 @@
-# Ground truth (runtime/truth*.c) and the unshadowed normalizer.
+# Ground truth (runtime/truth/) and the unshadowed normalizer.
 hfs_add_test(test_truth_geom SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_geom.c
              LIBS hfs_truth LABEL unit TIMEOUT 120)
 hfs_add_test(test_truth_render SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_render.c
@@ -6,7 +6,7 @@ hfs_add_test(test_truth_render SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_re
 # Timing of the ground truth (not a test): see the header of bench_truth.c.
 add_executable(bench_truth ${CMAKE_CURRENT_SOURCE_DIR}/bench_truth.c)
 target_link_libraries(bench_truth PRIVATE hfs_truth)
-# SPEC error metrics (runtime/metrics.c) on hand-worked distributions.
+# SPEC error metrics (runtime/renderer/metrics.c) on hand-worked distributions.
 hfs_add_test(test_metrics SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_metrics.c
              LIBS hfshade_lib m LABEL unit TIMEOUT 30)
 # Indirect light in the truth: first-hit rays, flat plane, wall closed form,
@@ -16,7 +16,7 @@ hfs_add_test(test_truth_bounce SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_bo
 # The 3-D view's camera and the truth's ray-cast view (test_truth_view.c).
 hfs_add_test(test_truth_view SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_view.c
              LIBS hfs_truth LABEL unit TIMEOUT 120)
-# The truth of an environment map (runtime/truth_envmap.c): constant, SH,
+# The truth of an environment map (runtime/truth/truth_envmap.c): constant, SH,
 # disk-as-key-light, flat, rotation, from_env, gloss, bad maps, convergence.
 hfs_add_test(test_truth_envmap SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_envmap.c
              LIBS hfshade_lib m LABEL unit TIMEOUT 300)

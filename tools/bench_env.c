@@ -1,6 +1,6 @@
 /*
  * bench_env — timings and temporal stability of the environment map
- * decomposition (runtime/env_decompose.h; BENCHMARKS.md "Environment map
+ * decomposition (runtime/envmap/env_decompose.h; BENCHMARKS.md "Environment map
  * decomposition").
  *
  *   bench_env time W H [RUNS] [THREADS]   a synthetic sky (gradient + a

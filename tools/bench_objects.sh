@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What objects cost a 3-D view (issue 19, runtime/objects.h): the wall time
+# What objects cost a 3-D view (issue 19, runtime/core/objects.h): the wall time
 # of `hfshade render --time FRAMES` (FRAMES + 1 frames, GLES, each frame
 # rerunning every pass and lighting the objects again) of the demo DEM's
 # view with and without data/demo-objects.txt (9 pins, 3 boxes: 1500 lit

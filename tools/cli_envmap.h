@@ -1,7 +1,7 @@
 /*
  * cli_envmap.h — `hfshade envmap decompose MAP [--max-lights N]
  * [--min-share F] [--contrast C] [--picture OUT.png]`: an environment map's
- * lights and residual as scene lines (runtime/env_decompose.h), and a
+ * lights and residual as scene lines (runtime/envmap/env_decompose.h), and a
  * picture of the map with the lights circled.
  */
 #ifndef HFS_CLI_ENVMAP_H

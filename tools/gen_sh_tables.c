@@ -3,7 +3,7 @@
  * C_ijk = integral over the sphere of y_i y_j y_k (order 4, SPEC basis).
  *
  * Usage: hfs_gen_sh_tables OUT.inc OUT.glsl.inc [CHECK.frag]
- *   OUT.inc       C fragment #included by runtime/sh_product.c: the nonzero
+ *   OUT.inc       C fragment #included by runtime/sh/sh_product.c: the nonzero
  *                 entries (i <= j, any k) as a const table and the unrolled
  *                 product function, so nothing is initialized at run time.
  *   OUT.glsl.inc  GLSL ES 3.00 function with the same unrolled product on

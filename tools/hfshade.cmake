@@ -1,8 +1,8 @@
 # The hfshade command-line tool.
 add_executable(hfshade ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_view.c
                ${CMAKE_CURRENT_SOURCE_DIR}/cli_query.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_envmap.c)
-target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfshade_scene_load hfs_glctx
-                      hfs_envdec)
+target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfs_gl
+                      hfs_envmap)
 
 # Deterministic procedural height fields for tests and benchmarks: the
 # generators (one definition for hfgen, tests and benchmarks) and the tool.
@@ -18,7 +18,7 @@ add_library(hfs_sky_gen STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sky_gen.c)
 target_include_directories(hfs_sky_gen PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(hfs_sky_gen PUBLIC m)
 add_executable(bench_env ${CMAKE_CURRENT_SOURCE_DIR}/bench_env.c)
-target_link_libraries(bench_env PRIVATE hfs_envdec hfs_sky_gen hfshade_io m)
+target_link_libraries(bench_env PRIVATE hfs_envmap hfs_sky_gen hfshade_io m)
 if(TARGET hfshade_gdal)
   target_link_libraries(hfshade PRIVATE hfshade_gdal)
 endif()

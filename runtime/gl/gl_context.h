@@ -12,7 +12,7 @@
  *                  is through hfs_gl_context_name(), never "auto".
  *
  * The GL must be called through function pointers obtained from the context
- * (hfs_gl_context_proc, or hfs_gl_load in runtime/gl_api.h with
+ * (hfs_gl_context_proc, or hfs_gl_load in runtime/gl/gl_api.h with
  * hfs_gl_context_loader): OSMesa is not behind libglvnd's libGLESv2, so
  * linking libGLESv2 and calling glFoo() directly would reach the wrong driver.
  *

@@ -1,6 +1,6 @@
 /*
  * shm_query.c — key-light visibility of points above the field on the
- * GLES path (hfs_renderer_query_points; runtime/shm.h): each key light's
+ * GLES path (hfs_renderer_query_points; runtime/core/shm.h): each key light's
  * shadow height maps at HFS_SHM_LAYERS elevations across its disk, built
  * on the GPU by shm_double.frag's doubling passes (ping-pong between two
  * fp16 targets holding the normalized S as hi + lo, as the heights), read

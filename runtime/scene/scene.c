@@ -1,6 +1,6 @@
 /*
  * scene.c — the scene keys: one setter for file and flags, driven by the
- * table of scene keys (runtime/scene_keys.h).
+ * table of scene keys (runtime/core/scene_keys.h).
  *
  * Invariants: every key in the table is accepted identically from a scene
  * file and from the command line; every number is range-checked here

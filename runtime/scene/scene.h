@@ -5,7 +5,7 @@
  * One setter, hfs_scene_set(), applies "key = value" for both sources, so the
  * scene file and the flags accept exactly the same keys with the same syntax
  * and ranges (the key is the flag without its leading "--").  The keys, their
- * ranges and defaults are the table of runtime/scene_keys.h.  Flags are
+ * ranges and defaults are the table of runtime/core/scene_keys.h.  Flags are
  * applied after the file and override it; a repeatable key (key, local) given
  * on the command line replaces the file's list instead of appending to it.
  *

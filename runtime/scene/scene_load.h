@@ -5,7 +5,7 @@
  *
  * Shared by the command-line tool (one render) and the kiosk (many frames):
  * the expensive part — reading the height file, reading the environment
- * map, decomposing it into lights (env-lights, runtime/env_decompose.h)
+ * map, decomposing it into lights (env-lights, runtime/envmap/env_decompose.h)
  * and projecting it to SH — is done once by hfs_scene_inputs_load; a
  * caller that edits only lights, the environment rotation or the preset
  * (the kiosk's knobs) calls hfs_scene_inputs_relight, which recomputes the
@@ -15,7 +15,7 @@
  *
  * Kept out of libhfshade (hfshade_lib): it needs the file formats
  * (hfshade_io) and the scene parser (hfshade_scene), which the renderer
- * core must not depend on.  Library: hfshade_scene_load.
+ * core must not depend on.  Library: hfshade_scene.
  *
  * Ownership: hfs_scene_inputs_load fills a caller-owned struct whose heights
  * it allocates; hfs_scene_inputs_free releases them (a zeroed struct is

@@ -13,9 +13,8 @@
  * R, equality at R = N, so albedo + ks <= 1 conserves energy).  Where N.V
  * <= 0 (R below the tangent plane) Lo_s = 0.
  *
- * Header-only (inline) so that the CPU reference, the truth and the
- * unshadowed normalizer (libraries that share hfs_sh, not hfs_shared) use
- * the very same definitions.
+ * Header-only (inline) so that the CPU reference, the GLES setup, the truth
+ * and the unshadowed normalizer use the very same definitions.
  */
 #ifndef HFS_GLOSS_H
 #define HFS_GLOSS_H

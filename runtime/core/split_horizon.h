@@ -27,7 +27,7 @@
  * grid's receivers and K horizon evaluations per slice.
  *
  * Shared by the CPU reference and the GLES path (the same rules and
- * numbers); pure functions, part of hfs_shared.
+ * numbers); pure functions, part of hfs_core.
  */
 #ifndef HFS_SPLIT_HORIZON_H
 #define HFS_SPLIT_HORIZON_H

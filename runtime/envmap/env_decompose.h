@@ -38,7 +38,7 @@
  * (parallel.h), everything else is serial.  Memory beside the map, which
  * is modified in place: about 3 MiB (the coarse pyramid, the detection's
  * prefix sums, 28 bytes per texel row and column); the tracker adds a copy
- * of the map.  libc, libm and threads only (library hfs_envdec).
+ * of the map.  libc, libm and threads only (library hfs_envmap).
  */
 #ifndef HFS_ENV_DECOMPOSE_H
 #define HFS_ENV_DECOMPOSE_H

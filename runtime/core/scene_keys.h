@@ -9,7 +9,7 @@
  *     hfs_scene_key_check;
  *   - the kiosk's input configuration (board/input_config.c) takes the
  *     limits of each knob action from the number the action edits;
- *   - the renderer's validation (hfs_validate_inputs, runtime/validate.c)
+ *   - the renderer's validation (hfs_validate_inputs, runtime/renderer/validate.c)
  *     checks the library field a number becomes with
  *     hfs_scene_key_check_lib, in the library's units: the scene speaks
  *     degrees, the library radians, and hfs_scene_key_lib_range is the one
@@ -17,7 +17,7 @@
  * A number's library field takes the same range (converted) unless its row
  * says otherwise (hfs_key_number.lib, with the reason at the row).
  *
- * Part of hfs_base: libc and libm only, no state.  Messages are one line.
+ * Part of hfs_core: libc and libm only, no state.  Messages are one line.
  */
 #ifndef HFS_SCENE_KEYS_H
 #define HFS_SCENE_KEYS_H
