@@ -8,14 +8,19 @@
 #include <string.h>
 
 #include "capture_v4l2.h"
+#include "cli_usage.h"
 
 int main(int argc, char **argv)
 {
-    if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
-        fprintf(argc < 2 ? stderr : stdout,
-                "usage: hfs-capture-info DEVICE...   (e.g. /dev/video0, "
-                "/dev/v4l/by-id/...)\n");
-        return argc < 2 ? 2 : 0;
+    if (argc < 2)
+        return hfs_usage_error("hfs-capture-info", "no device given (e.g. /dev/video0)");
+    for (int i = 1; i < argc; ++i) {
+        if (hfs_is_help(argv[i])) {
+            printf("usage: hfs-capture-info DEVICE...   (e.g. /dev/video0, /dev/v4l/by-id/...)\n");
+            return 0;
+        }
+        if (argv[i][0] == '-')
+            return hfs_usage_error("hfs-capture-info", "%s: unknown option", argv[i]);
     }
     int rc = 0;
     for (int i = 1; i < argc; ++i) {

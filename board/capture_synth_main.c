@@ -18,15 +18,29 @@
 
 #include "capture_synth.h"
 #include "capture_synth_sky.h"
+#include "cli_usage.h"
 
-static int usage(const char *why)
+#define PROG "hfs-capture-synth"
+
+static void usage(FILE *to)
 {
-    fprintf(stderr, "hfs-capture-synth: %s\nusage: hfs-capture-synth DIR [--frames N] "
-            "[--size WxH] [--noise-mm F] [--holes F] [--hand FROM,STOP,TO | --no-hand] "
-            "[--seed N]\n       hfs-capture-synth DIR --sky mirrorball|fisheye|equirect "
-            "[--frames N] [--size WxH] [--sun FROM,TO,ELEV] [--noise-codes F] [--seed N]\n",
-            why);
-    return 2;
+    fprintf(to, "usage: " PROG " DIR [--frames N] [--size WxH] [--noise-mm F] [--holes F] "
+                "[--hand FROM,STOP,TO | --no-hand] [--seed N]\n"
+                "       " PROG " DIR --sky mirrorball|fisheye|equirect [--frames N] "
+                "[--size WxH] [--sun FROM,TO,ELEV] [--noise-codes F] [--seed N]\n");
+}
+
+/* The error for option A that did not parse (with value V, or none). */
+static int bad_option(const char *a, const char *v)
+{
+    static const char *const valued[] = {"--sky",      "--sun",   "--noise-codes", "--frames",
+                                         "--size",     "--holes", "--noise-mm",    "--hand",
+                                         "--seed"};
+    for (size_t k = 0; k < sizeof valued / sizeof valued[0]; ++k)
+        if (!strcmp(a, valued[k]))
+            return v ? hfs_usage_error(PROG, "%s: '%s' is malformed or out of range", a, v)
+                     : hfs_usage_error(PROG, "%s: missing value", a);
+    return hfs_usage_error(PROG, "%s: unknown option", a);
 }
 
 int main(int argc, char **argv)
@@ -43,8 +57,11 @@ int main(int argc, char **argv)
         double x;
         if (a[0] != '-') {
             if (dir)
-                return usage("one directory only");
+                return hfs_usage_error(PROG, "%s: a second directory (one only)", a);
             dir = a;
+        } else if (hfs_is_help(a)) {
+            usage(stdout);
+            return 0;
         } else if (!strcmp(a, "--no-hand")) {
             d.hand_from = -1, depth_opt = 1;
         } else if (v && !strcmp(a, "--sky")) {
@@ -52,7 +69,8 @@ int main(int argc, char **argv)
             sky.cam.mapping = !strcmp(v, "fisheye") ? HFS_MAP_FISHEYE
                               : !strcmp(v, "equirect") ? HFS_MAP_EQUIRECT : HFS_MAP_MIRRORBALL;
             if (strcmp(v, "fisheye") && strcmp(v, "equirect") && strcmp(v, "mirrorball"))
-                return usage("--sky: not mirrorball, fisheye or equirect");
+                return hfs_usage_error(PROG, "--sky: '%s' is not mirrorball, fisheye or equirect",
+                                       v);
         } else if (v && !strcmp(a, "--sun") &&
                    sscanf(v, "%lf,%lf,%lf%c", &sky.az_from, &sky.az_to, &sky.elev, &tail) == 3 &&
                    fabs(sky.elev) <= 89.0) {
@@ -61,7 +79,7 @@ int main(int argc, char **argv)
                    x >= 0 && x <= 64) {
             sky.noise = x, sky_opt = 1, ++i;
         } else if (!v) {
-            return usage("an option lacks its value");
+            return bad_option(a, v);
         } else if (!strcmp(a, "--frames") && sscanf(v, "%d%c", &d.frames, &tail) == 1 &&
                    d.frames >= 1 && d.frames <= 100000) {
             frames_given = 1, ++i;
@@ -81,13 +99,14 @@ int main(int argc, char **argv)
         } else if (!strcmp(a, "--seed") && sscanf(v, "%u%c", &d.seed, &tail) == 1) {
             ++i;
         } else {
-            return usage(a);
+            return bad_option(a, v);
         }
     }
     if (!dir)
-        return usage("no directory");
+        return hfs_usage_error(PROG, "no directory given");
     if (is_sky ? depth_opt : sky_opt)
-        return usage(is_sky ? "a depth option with --sky" : "--sun or --noise-codes without --sky");
+        return hfs_usage_error(PROG, "%s", is_sky ? "a depth option with --sky"
+                                                 : "--sun or --noise-codes without --sky");
     hfs_error err = {{0}};
     if (is_sky) {
         sky.frames = frames_given ? d.frames : sky.frames;

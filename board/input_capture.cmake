@@ -25,6 +25,6 @@ target_include_directories(hfs_capture PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(hfs_capture PUBLIC hfs_input hfs_core PRIVATE m)
 
 add_executable(hfs-capture-info ${CMAKE_CURRENT_LIST_DIR}/capture_info_main.c)
-target_link_libraries(hfs-capture-info PRIVATE hfs_capture)
+target_link_libraries(hfs-capture-info PRIVATE hfs_capture hfs_cli_usage)
 add_executable(hfs-capture-synth ${CMAKE_CURRENT_LIST_DIR}/capture_synth_main.c)
-target_link_libraries(hfs-capture-synth PRIVATE hfs_capture m)
+target_link_libraries(hfs-capture-synth PRIVATE hfs_capture hfs_cli_usage m)

@@ -13,7 +13,7 @@ add_executable(hfshade-kiosk
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_log.c
   ${CMAKE_CURRENT_LIST_DIR}/kiosk_capture.c)
 target_link_libraries(hfshade-kiosk PRIVATE hfs_display hfs_input_dev hfs_capture hfshade_scene
-                      hfshade_lib m)
+                      hfshade_lib hfs_cli_usage m)
 # GeoTIFF, SRTM .hgt, VRT ... DEMs where GDAL is there (tools/gdal.cmake,
 # defined after board/: hence the generator expression).
 target_link_libraries(hfshade-kiosk PRIVATE $<TARGET_NAME_IF_EXISTS:hfshade_gdal>)

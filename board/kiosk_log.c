@@ -6,6 +6,7 @@
  * `journalctl -p err` finds errors, without linking libsystemd.  Anywhere
  * else (a terminal, a test harness) lines start with the program's name.
  */
+#include "cli_usage.h"
 #include "kiosk.h"
 
 #include <stdarg.h>
@@ -33,11 +34,8 @@ void kiosk_log(kiosk_level level, const char *fmt, ...)
     char msg[1024];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
+    hfs_vformat_line(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    for (char *p = msg; *p; ++p)
-        if (*p == '\n' || *p == '\r')
-            *p = ' ';
     if (to_journal)
         fprintf(stderr, "<%d>%s\n", (int)level, msg);
     else

@@ -35,9 +35,11 @@
 #include <sys/signalfd.h>
 #include <unistd.h>
 
+#include "cli_usage.h"
 #include "input_replay.h"
 
-#define EXIT_USAGE 2
+#define PROG "hfshade-kiosk"
+
 
 static void usage(FILE *f)
 {
@@ -71,15 +73,7 @@ static void usage(FILE *f)
             hfs_display_names());
 }
 
-static int usage_error(const char *fmt, const char *what)
-{
-    fprintf(stderr, "hfshade-kiosk: ");
-    fprintf(stderr, fmt, what);
-    fprintf(stderr, " (see --help)\n");
-    return EXIT_USAGE;
-}
-
-/* 0: run; -1: --help was printed; EXIT_USAGE: a one-line error was. */
+/* 0: run; -1: --help was printed; HFS_EXIT_USAGE: a one-line error was. */
 static int parse_args(kiosk_opts *o, int argc, char **argv)
 {
     memset(o, 0, sizeof *o);
@@ -89,7 +83,7 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
         const char *a = argv[i];
         if (a[0] != '-') {
             if (o->scene_path)
-                return usage_error("%s: a second scene file", a);
+                return hfs_usage_error(PROG, "%s: a second scene file", a);
             o->scene_path = a;
             continue;
         }
@@ -101,7 +95,7 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
          * winning hides a typo in a unit file. */
         for (int j = 1; j < i; ++j)
             if (!strcmp(argv[j], a))
-                return usage_error("%s: given twice (once is allowed)", a);
+                return hfs_usage_error(PROG, "%s: given twice (once is allowed)", a);
         int *flag = !strcmp(a, "--overlay")             ? &o->overlay
                     : !strcmp(a, "--view")              ? &o->view
                     : !strcmp(a, "--no-devices")        ? &o->no_devices
@@ -124,9 +118,9 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
         const int numeric =
             !strcmp(a, "--size") || !strcmp(a, "--exposure") || !strcmp(a, "--amortize");
         if (!val && !numeric)
-            return usage_error("%s: unknown option", a);
+            return hfs_usage_error(PROG, "%s: unknown option", a);
         if (i + 1 >= argc)
-            return usage_error("%s: missing value", a);
+            return hfs_usage_error(PROG, "%s: missing value", a);
         const char *v = argv[++i];
         if (val) {
             *val = v;
@@ -134,26 +128,26 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
             char *end;
             const long n = strtol(v, &end, 10);
             if (end == v || *end || n < 0 || n > 64)
-                return usage_error("--amortize: '%s' is not a pass count 0..64", v);
+                return hfs_usage_error(PROG, "--amortize: '%s' is not a pass count 0..64", v);
             o->amortize = (int)n;
         } else if (!strcmp(a, "--size")) {
             char tail;
             if (sscanf(v, "%dx%d%c", &o->width, &o->height, &tail) != 2 || o->width < 1 ||
                 o->height < 1 || o->width > 16384 || o->height > 16384)
-                return usage_error("--size: '%s' is not WxH (1..16384)", v);
+                return hfs_usage_error(PROG, "--size: '%s' is not WxH (1..16384)", v);
         } else {
             char *end;
             o->exposure = strtod(v, &end);
             if (end == v || *end || !(o->exposure > 0.0) || !isfinite(o->exposure))
-                return usage_error("--exposure: '%s' is not a positive number", v);
+                return hfs_usage_error(PROG, "--exposure: '%s' is not a positive number", v);
         }
     }
     if (!o->scene_path)
-        return usage_error("%s", "no scene file");
+        return hfs_usage_error(PROG, "no scene file");
     if (o->exit_after_replay && !o->replay_path)
-        return usage_error("%s", "--exit-after-replay needs --replay");
+        return hfs_usage_error(PROG, "--exit-after-replay needs --replay");
     if (o->out_pattern && strcmp(o->display, "headless"))
-        return usage_error("%s", "--out is for --display headless");
+        return hfs_usage_error(PROG, "--out is for --display headless");
     return 0;
 }
 

@@ -1,8 +1,15 @@
-# The command-line tool end to end: broken inputs and a good render.
+# The command-line tool end to end: broken inputs and a good render; and
+# every program's bad command lines, one line each (issue 34).
 add_test(NAME cli_bad_inputs
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_bad_inputs.sh
                  $<TARGET_FILE:hfshade> $<TARGET_FILE:hfgen>
-                 ${CMAKE_CURRENT_SOURCE_DIR}/data/broken)
+                 ${CMAKE_CURRENT_SOURCE_DIR}/data/broken
+                 # every other program, for its bad command lines (issue 34)
+                 hfstress=$<TARGET_FILE:hfstress> hfbench=$<TARGET_FILE:hfbench>
+                 bench_env=$<TARGET_FILE:bench_env> gles_bench=$<TARGET_FILE:gles_bench>
+                 hfshade-kiosk=$<TARGET_FILE:hfshade-kiosk>
+                 hfs-capture-info=$<TARGET_FILE:hfs-capture-info>
+                 hfs-capture-synth=$<TARGET_FILE:hfs-capture-synth>)
 set_tests_properties(cli_bad_inputs PROPERTIES LABELS io TIMEOUT 300)
 
 

@@ -2,9 +2,13 @@
 # Bad input to the command line tool: every case must exit non-zero with ONE
 # line on stderr that names the input, must not crash (no signal exit), and
 # must leave no output file.  One good render proves the harness can pass.
-# usage: cli_bad_inputs.sh HFSHADE HFGEN BROKEN_DIR
+# The last section (issue 34) runs every program the project builds on a
+# bad command line: TOOL=PATH arguments name the others.
+# usage: cli_bad_inputs.sh HFSHADE HFGEN BROKEN_DIR [TOOL=PATH ...]
 set -u
 HFSHADE=$1 HFGEN=$2 BROKEN=$3
+declare -A TOOL=([hfshade]=$HFSHADE [hfgen]=$HFGEN)
+for kv in "${@:4}"; do TOOL[${kv%%=*}]=${kv#*=}; done
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fails=0 cases=0
@@ -145,5 +149,120 @@ if "$HFSHADE" $R --height "$tmp/flat.pfm" --env-sh $sky --colormap terrain --qui
 else
     echo "FAIL [good-render]"; fails=$((fails + 1))
 fi
+
+# ---- every program's bad command line (issue 34) ---------------------------
+# An unknown flag, a missing value, a bad value, an unknown subcommand, case
+# or backend, a missing argument: non-zero exit (no signal, no hang),
+# nothing on stdout, at most two lines on stderr, the first naming the
+# problem (NEEDLE), a second one only pointing at --help.
+# expect_usage TOOL NAME NEEDLE ARGS...
+expect_usage() {
+    local tool=$1 name=$2 needle=$3; shift 3
+    local bin=${TOOL[$tool]:-} rc lines why=""
+    if [ -z "$bin" ]; then echo "skip [$tool/$name]: no $tool given"; return; fi
+    cases=$((cases + 1))
+    timeout -k 2 30 "$bin" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    rc=$?
+    lines=$(wc -l <"$tmp/stderr")
+    if [ $rc -eq 0 ] || [ $rc -ge 124 ]; then why="exit status $rc"
+    elif [ -s "$tmp/stdout" ]; then why="$(wc -l <"$tmp/stdout") lines on stdout"
+    elif [ "$lines" -lt 1 ] || [ "$lines" -gt 2 ]; then why="$lines lines on stderr"
+    elif ! head -1 "$tmp/stderr" | grep -qF -- "$needle"; then why="first line lacks '$needle'"
+    elif [ "$lines" -eq 2 ] && ! sed -n 2p "$tmp/stderr" | grep -qF -- "--help"; then
+        why="second line is not a pointer to --help"
+    fi
+    if [ -n "$why" ]; then
+        echo "FAIL [$tool/$name]: $why"; head -4 "$tmp/stderr" | sed 's/^/     stderr: /'
+        fails=$((fails + 1))
+    else
+        echo "ok   [$tool/$name] $(head -1 "$tmp/stderr")"
+    fi
+}
+# expect_help TOOL ARGS...: the usage on stdout, nothing on stderr, exit 0.
+expect_help() {
+    local tool=$1; shift
+    local bin=${TOOL[$tool]:-}
+    [ -n "$bin" ] || return 0
+    cases=$((cases + 1))
+    if timeout -k 2 30 "$bin" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null &&
+       [ -s "$tmp/stdout" ] && [ ! -s "$tmp/stderr" ]; then
+        echo "ok   [$tool/help $*] $(wc -l <"$tmp/stdout") lines"
+    else
+        echo "FAIL [$tool/help $*]: no usage on stdout, or stderr, or a failing exit"
+        fails=$((fails + 1))
+    fi
+}
+U=expect_usage
+$U hfshade no-command "no command"
+$U hfshade unknown-command "frob" frob
+$U hfshade flag-no-value "--bogus: unknown flag" render --bogus
+$U hfshade info-no-value "--context: missing value" info --context
+$U hfshade envmap-none "envmap" envmap
+$U hfshade envmap-unknown "frob" envmap frob
+$U hfshade envmap-no-map "no MAP" envmap decompose
+$U hfshade envmap-no-value "--max-lights: missing value" envmap decompose "$tmp/x.pfm" --max-lights
+$U hfgen no-kind "no kind"
+$U hfgen unknown-kind "'volcano'" volcano --size 8x8 -o "$tmp/out.pfm"
+$U hfgen unknown-kind-bare "'volcano'" volcano
+$U hfgen unknown-flag "--bogus" flat --bogus 1
+$U hfgen missing-value "--size: missing value" flat --size
+$U hfgen bad-size "--size: '0x3'" flat --size 0x3 -o "$tmp/out.pfm"
+$U hfgen bad-seed "--seed: 'x'" flat --size 4x4 --seed x -o "$tmp/out.pfm"
+$U hfgen no-output "no output" flat --size 4x4
+$U hfgen stray "stray" flat --size 4x4 stray -o "$tmp/out.pfm"
+$U hfgen crop-no-input "no input" crop -o "$tmp/out.pfm"
+$U hfgen crop-no-rect "--rect" crop "$tmp/flat.pfm" -o "$tmp/out.pfm"
+$U hfgen sky-bad-sun "--sun: '1'" sky --sun 1 -o "$tmp/out.pfm"
+$U hfgen sky-unknown "--bogus" sky --bogus 1 -o "$tmp/out.pfm"
+$U hfgen sky-no-value "--noise: missing value" sky -o "$tmp/out.pfm" --noise
+$U hfgen sky-no-output "no output" sky
+$U hfstress unknown-case "'nosuchcase'" --case nosuchcase
+$U hfstress unknown-backend "'vulkan'" --backend vulkan
+$U hfstress unknown-flag "--bogus" --bogus
+$U hfstress missing-value "--case: missing value" --case
+$U hfstress stray "stray" stray
+$U hfstress bad-lights "'foo'" --list --lights foo
+$U hfstress bad-subsample "--subsample: '3'" --list --subsample 3
+$U hfstress bad-visibility "--visibility: 'x'" --list --visibility x
+$U hfbench no-output "no output"
+$U hfbench unknown-flag "--bogus: unknown" --bogus
+$U hfbench missing-value "-o: missing value" -o
+$U hfbench stray "stray" stray
+$U hfbench bad-size "--size: '1'" -o "$tmp/b.csv" --size 1
+$U hfbench bad-lights "'moon'" -o "$tmp/b.csv" --lights moon --size 8 --scenes flat
+$U hfbench bad-truth-env "--truth-env: 'x'" -o "$tmp/b.csv" --truth-env x
+$U bench_env no-mode "no mode"
+$U bench_env unknown-mode "'frob'" frob
+$U bench_env time-short "time: needs W H" time
+$U bench_env time-bad "'x'" time 4 x
+$U bench_env track-bad "'x'" track x
+$U bench_env file-short "file: needs MAP" file
+$U bench_env extra "9" time 4 4 1 1 9
+$U gles_bench unknown-flag "--bogus" --bogus
+$U gles_bench stray "stray" stray
+$U gles_bench missing-value "--size: missing value" --size
+$U gles_bench bad-size "--size: 'x'" --size x
+$U gles_bench bad-precision "'fp64'" --size 16 --frames 1 --precision fp64
+$U gles_bench bad-path "'foo'" --size 16 --frames 1 --path foo
+$U gles_bench bad-lights "'sun'" --size 16 --frames 1 --lights sun
+$U gles_bench bad-dx "--dx: '-1'" --size 16 --frames 1 --dx -1
+$U hfshade-kiosk no-scene "no scene file"
+$U hfshade-kiosk unknown-flag "--bogus" "$tmp/x.ini" --bogus
+$U hfshade-kiosk missing-value "--input: missing value" "$tmp/x.ini" --input
+$U hfs-capture-info no-device "no device"
+$U hfs-capture-info unknown-flag "--bogus" --bogus
+$U hfs-capture-info missing-device "video9" "$tmp/video9"
+$U hfs-capture-synth no-dir "no directory"
+$U hfs-capture-synth unknown-flag "--bogus" "$tmp/syn" --bogus
+$U hfs-capture-synth missing-value "--frames: missing value" "$tmp/syn" --frames
+$U hfs-capture-synth bad-frames "--frames: 'x'" "$tmp/syn" --frames x
+$U hfs-capture-synth bad-sky "'moon'" "$tmp/syn" --sky moon
+$U hfs-capture-synth two-dirs "syn2" "$tmp/syn" "$tmp/syn2"
+for t in hfshade hfgen hfstress hfbench bench_env gles_bench hfshade-kiosk hfs-capture-info \
+         hfs-capture-synth; do
+    expect_help "$t" --help
+done
+expect_help hfshade envmap --help
+
 echo "$((cases - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

@@ -35,7 +35,7 @@ endforeach()
 
 # Measurement tool (not a test): see the header of test_gles_bench.c.
 add_executable(gles_bench ${CMAKE_CURRENT_LIST_DIR}/test_gles_bench.c)
-target_link_libraries(gles_bench PRIVATE hfs_test_gles_scenes)
+target_link_libraries(gles_bench PRIVATE hfs_test_gles_scenes hfs_cli_usage)
 target_compile_definitions(gles_bench PRIVATE HFS_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
 
 hfs_add_test(test_gles_units LABEL unit TIMEOUT 120

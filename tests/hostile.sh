@@ -284,6 +284,9 @@ F colormap "--colormap" $R -o "$out/a.png" --colormap rainbow
 F no_output "no output" $R
 F extra_arg "stray" $R -o "$out/a.png" stray
 F unknown_command "frobnicate" frobnicate
+F no_command "no command"
+F unknown_no_value "--bogus: unknown flag" $R -o "$out/a.png" --bogus
+F envmap_no_map "no MAP" envmap decompose
 F no_height "height" render --backend cpu --env-sh $sky -o "$out/a.png"
 F compare_one "compare" compare --height "$in/h.pfm" "$in/h.pfm"
 F info_bad_context "vulkan" info --context vulkan

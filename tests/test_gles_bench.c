@@ -23,6 +23,7 @@
 #include "backends.h"
 #include "test_gles_scenes.h"
 #include "gl_test.h"
+#include "cli_usage.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -63,50 +64,136 @@ static double minimum(const double *v, int n)
     return m;
 }
 
-int main(int argc, char **argv)
-{
-    const char *scene_name = "fractal25", *prec = "fp16", *path = "legendre", *lights = "both";
-    const char *context = NULL, *profile = NULL, *data = HFS_DATA_DIR;
-    int n = 256, sub = 2, frames = 5, cold = 0, count = 0, compare = 0, vs32 = 0;
-    double dx = 0.0, zscale = 0.0;
+typedef struct bench_opts {
+    const char *scene, *prec, *path, *lights, *context, *profile, *data;
+    int n, sub, frames, cold, count, compare, vs32;
+    double dx, zscale;
     hfs_quality q;
-    hfs_quality_defaults(&q);
+} bench_opts;
+
+#define PROG "gles_bench"
+
+static void usage(FILE *to)
+{
+    fprintf(to, "usage: gles_bench [--scene NAME|FILE] [--size N] [--precision fp16|fp32]\n"
+                "    [--path legendre|tables|slice] [--subsample S] [--lights env|key|both]\n"
+                "    [--frames F] [--cold] [--count] [--compare] [--k K] [--offset O]\n"
+                "    [--nphi-env N] [--nphi-key N] [--refine N] [--split 0|1] [--far-from N]\n"
+                "    [--far-dirs K] [--far-step G] [--context NAME] [--profile P]\n"
+                "    [--data DIR] [--dx F] [--zscale F] [--vs-fp32]\n"
+                "(the header of tests/test_gles_bench.c says what each does)\n");
+}
+
+/* V, one of NAMES ("a|b|c"), into *out; non-zero after the message. */
+static int choice_arg(const char *a, const char *v, const char *names, const char **out)
+{
+    const size_t n = strlen(v);
+    for (const char *p = names; *p;) {
+        const size_t len = strcspn(p, "|");
+        if (n && len == n && !strncmp(p, v, n)) {
+            *out = v;
+            return 0;
+        }
+        p += len + (p[len] == '|');
+    }
+    return hfs_usage_error(PROG, "%s: '%s' is not %s", a, v, names);
+}
+
+/* Flag A with value V; 1 when A takes no value or is unknown, 2 after a message. */
+static int value_arg(bench_opts *o, const char *a, const char *v)
+{
+    const struct { const char *flag; int *field; long lo, hi; } ints[] = {
+        {"--size", &o->n, 2, 16384},          {"--subsample", &o->sub, 1, 64},
+        {"--frames", &o->frames, 1, 1000},    {"--k", &o->q.k, -1000000, 1000000},
+        {"--offset", &o->q.offset, -1000000, 1000000},
+        {"--nphi-env", &o->q.nphi_env, -1000000, 1000000},
+        {"--nphi-key", &o->q.nphi_key, -1000000, 1000000},
+        {"--refine", &o->q.refine, -1000000, 1000000}, {"--split", &o->q.split, 0, 1},
+        {"--far-from", &o->q.far_from, -1000000, 1000000},
+        {"--far-dirs", &o->q.far_dirs, -1000000, 1000000},
+        {"--far-step", &o->q.far_step, -1000000, 1000000}};
+    const struct { const char *flag; const char **field; const char *names; } strs[] = {
+        {"--scene", &o->scene, NULL},     {"--context", &o->context, NULL},
+        {"--profile", &o->profile, NULL}, {"--data", &o->data, NULL},
+        {"--precision", &o->prec, "fp16|fp32"}, {"--path", &o->path, "legendre|tables|slice"},
+        {"--lights", &o->lights, "env|key|both"}};
+    for (size_t k = 0; k < sizeof ints / sizeof ints[0]; ++k) {
+        if (strcmp(a, ints[k].flag))
+            continue;
+        char *end;
+        const long x = v ? strtol(v, &end, 10) : 0;
+        if (!v || end == v || *end || x < ints[k].lo || x > ints[k].hi)
+            return v ? hfs_usage_error(PROG, "%s: '%s' is not a whole number in [%ld, %ld]", a, v,
+                                       ints[k].lo, ints[k].hi)
+                     : hfs_usage_error(PROG, "%s: missing value", a);
+        *ints[k].field = (int)x;
+        return 0;
+    }
+    for (size_t k = 0; k < sizeof strs / sizeof strs[0]; ++k)
+        if (!strcmp(a, strs[k].flag)) {
+            if (!v)
+                return hfs_usage_error(PROG, "%s: missing value", a);
+            if (strs[k].names)
+                return choice_arg(a, v, strs[k].names, strs[k].field);
+            *strs[k].field = v;
+            return 0;
+        }
+    double *real = !strcmp(a, "--dx") ? &o->dx : !strcmp(a, "--zscale") ? &o->zscale : NULL;
+    if (!real)
+        return 1;
+    char *end;
+    if (!v)
+        return hfs_usage_error(PROG, "%s: missing value", a);
+    *real = strtod(v, &end);
+    if (end == v || *end || !(*real > 0.0) || !isfinite(*real))
+        return hfs_usage_error(PROG, "%s: '%s' is not a positive number", a, v);
+    return 0;
+}
+
+/* 0, -1 after --help, HFS_EXIT_USAGE after a one-line message. */
+static int parse_args(int argc, char **argv, bench_opts *o)
+{
+    *o = (bench_opts){"fractal25", "fp16", "legendre", "both", NULL, NULL, HFS_DATA_DIR,
+                      256, 2, 5, 0, 0, 0, 0, 0.0, 0.0, {0}};
+    hfs_quality_defaults(&o->q);
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-#define ARG(name) (!strcmp(a, name) && v && ++i)
-        if (ARG("--scene")) scene_name = v;
-        else if (ARG("--size")) n = atoi(v);
-        else if (ARG("--precision")) prec = v;
-        else if (ARG("--path")) path = v;
-        else if (ARG("--subsample")) sub = atoi(v);
-        else if (ARG("--lights")) lights = v;
-        else if (ARG("--frames")) frames = atoi(v);
-        else if (ARG("--k")) q.k = atoi(v);
-        else if (ARG("--offset")) q.offset = atoi(v);
-        else if (ARG("--nphi-env")) q.nphi_env = atoi(v);
-        else if (ARG("--nphi-key")) q.nphi_key = atoi(v);
-        else if (ARG("--refine")) q.refine = atoi(v);
-        else if (ARG("--split")) q.split = atoi(v);
-        else if (ARG("--far-from")) q.far_from = atoi(v);
-        else if (ARG("--far-dirs")) q.far_dirs = atoi(v);
-        else if (ARG("--far-step")) q.far_step = atoi(v);
-        else if (ARG("--context")) context = v;
-        else if (ARG("--profile")) profile = v;
-        else if (ARG("--data")) data = v;
-        else if (!strcmp(a, "--cold")) cold = 1;
-        else if (!strcmp(a, "--count")) count = 1;
-        else if (!strcmp(a, "--compare")) compare = 1;
-        else if (!strcmp(a, "--vs-fp32")) vs32 = 1;
-        else if (ARG("--dx")) dx = atof(v);
-        else if (ARG("--zscale")) zscale = atof(v);
-        else {
-            fprintf(stderr, "gles_bench: unknown argument %s (see the header of test_gles_bench.c)\n", a);
-            return 2;
+        int *flag = !strcmp(a, "--cold")      ? &o->cold
+                    : !strcmp(a, "--count")   ? &o->count
+                    : !strcmp(a, "--compare") ? &o->compare
+                    : !strcmp(a, "--vs-fp32") ? &o->vs32
+                                              : NULL;
+        if (hfs_is_help(a)) {
+            usage(stdout);
+            return -1;
         }
-#undef ARG
+        if (flag) {
+            *flag = 1;
+            continue;
+        }
+        const int rc = value_arg(o, a, v);
+        if (rc == 1)
+            return hfs_usage_error(PROG, "%s: %s", a,
+                                   a[0] == '-' ? "unknown option" : "unexpected argument");
+        if (rc)
+            return HFS_EXIT_USAGE;
+        ++i;
     }
-    if (frames < 1 || frames > 1000)
-        frames = 5;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    bench_opts o;
+    const int parsed = parse_args(argc, argv, &o);
+    if (parsed)
+        return parsed < 0 ? 0 : parsed;
+    const char *scene_name = o.scene, *prec = o.prec, *path = o.path, *lights = o.lights;
+    const char *context = o.context, *profile = o.profile, *data = o.data;
+    const int n = o.n, sub = o.sub, frames = o.frames, cold = o.cold, count = o.count;
+    const int compare = o.compare, vs32 = o.vs32;
+    const double dx = o.dx, zscale = o.zscale;
+    hfs_quality q = o.q;
     q.precision = !strcmp(prec, "fp32") ? HFS_PRECISION_FP32 : HFS_PRECISION_FP16;
     q.visibility = !strcmp(path, "tables") ? HFS_VIS_WEDGE_TABLE
                  : !strcmp(path, "slice") ? HFS_VIS_SLICE : HFS_VIS_LEGENDRE;

@@ -15,6 +15,7 @@
  *       the largest frame-to-frame jump of the sun light's direction and
  *       energy, the identity switches and the light count changes.
  */
+#include "cli_usage.h"
 #include "env_decompose.h"
 #include "hfs_io.h"
 #include "median.h"
@@ -190,38 +191,87 @@ static int track(int frames)
     return 0;
 }
 
+static void usage(FILE *to)
+{
+    fprintf(to, "usage: bench_env time W H [RUNS] [THREADS] | file MAP [RUNS] | track [FRAMES]\n");
+}
+
+/* argv[i] as a whole number in [lo, hi], DEF when absent; -1 after the message. */
+static int count_arg(int argc, char **argv, int i, const char *what, int lo, int hi, int def,
+                     int *out)
+{
+    *out = def;
+    if (i >= argc)
+        return 0;
+    char *end;
+    const long x = strtol(argv[i], &end, 10);
+    if (end == argv[i] || *end || x < lo || x > hi) {
+        hfs_usage_error("bench_env", "%s %s: '%s' is not a whole number in [%d, %d]", argv[1],
+                        what, argv[i], lo, hi);
+        return -1;
+    }
+    *out = (int)x;
+    return 0;
+}
+
+static int time_synthetic(int argc, char **argv)
+{
+    int w, h, runs, threads;
+    if (argc < 4)
+        return hfs_usage_error("bench_env", "time: needs W H");
+    if (count_arg(argc, argv, 2, "W", 1, 16384, 0, &w) ||
+        count_arg(argc, argv, 3, "H", 1, 16384, 0, &h) ||
+        count_arg(argc, argv, 4, "RUNS", 1, 100000, 9, &runs) ||
+        count_arg(argc, argv, 5, "THREADS", 0, 1024, 0, &threads))
+        return HFS_EXIT_USAGE;
+    float *m = sun_sky(w, h, 135, 35, 0.0, 1, 0.8, 0.0);
+    if (!m) {
+        fprintf(stderr, "bench_env: out of memory for %dx%d\n", w, h);
+        return 1;
+    }
+    const int rc = time_map(m, w, h, runs, threads);
+    free(m);
+    return rc;
+}
+
+static int time_file(int argc, char **argv)
+{
+    int runs;
+    if (argc < 3)
+        return hfs_usage_error("bench_env", "file: needs MAP");
+    if (count_arg(argc, argv, 3, "RUNS", 1, 100000, 9, &runs))
+        return HFS_EXIT_USAGE;
+    hfs_envmap em;
+    hfs_error err = {{0}};
+    if (hfs_envmap_load(argv[2], &em, &err)) {
+        fprintf(stderr, "bench_env: %s\n", err.msg);
+        return 1;
+    }
+    const int rc = time_map(em.rgb, em.width, em.height, runs, 0);
+    hfs_envmap_free(&em);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
-    if (argc >= 4 && !strcmp(argv[1], "time")) {
-        const int w = atoi(argv[2]), h = atoi(argv[3]);
-        const int runs = argc > 4 ? atoi(argv[4]) : 9, threads = argc > 5 ? atoi(argv[5]) : 0;
-        if (w < 1 || h < 1 || runs < 1 || threads < 0) {
-            fprintf(stderr, "bench_env: bad size, runs or threads\n");
-            return 2;
-        }
-        float *m = sun_sky(w, h, 135, 35, 0.0, 1, 0.8, 0.0);
-        if (!m) {
-            fprintf(stderr, "bench_env: out of memory for %dx%d\n", w, h);
-            return 1;
-        }
-        const int rc = time_map(m, w, h, runs, threads);
-        free(m);
-        return rc;
+    if (argc < 2)
+        return hfs_usage_error("bench_env", "no mode given (time, file or track)");
+    const char *m = argv[1];
+    if (hfs_is_help(m)) {
+        usage(stdout);
+        return 0;
     }
-    if (argc >= 3 && !strcmp(argv[1], "file")) {
-        hfs_envmap em;
-        hfs_error err = {{0}};
-        if (hfs_envmap_load(argv[2], &em, &err)) {
-            fprintf(stderr, "bench_env: %s\n", err.msg);
-            return 1;
-        }
-        const int rc = time_map(em.rgb, em.width, em.height, argc > 3 ? atoi(argv[3]) : 9, 0);
-        hfs_envmap_free(&em);
-        return rc;
-    }
-    if (argc >= 2 && !strcmp(argv[1], "track"))
-        return track(argc > 2 ? atoi(argv[2]) : 200);
-    fprintf(stderr, "usage: bench_env time W H [RUNS] [THREADS] | file MAP [RUNS] | "
-                    "track [FRAMES]\n");
-    return 2;
+    const int most = !strcmp(m, "time") ? 6 : !strcmp(m, "file") ? 4 : !strcmp(m, "track") ? 3 : 0;
+    if (!most)
+        return hfs_usage_error("bench_env", "'%s' is not a mode (time, file or track)", m);
+    if (argc > most)
+        return hfs_usage_error("bench_env", "%s: %s: unexpected argument", m, argv[most]);
+    if (!strcmp(m, "time"))
+        return time_synthetic(argc, argv);
+    if (!strcmp(m, "file"))
+        return time_file(argc, argv);
+    int frames;
+    if (count_arg(argc, argv, 2, "FRAMES", 2, 1000000, 200, &frames))
+        return HFS_EXIT_USAGE;
+    return track(frames);
 }

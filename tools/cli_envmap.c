@@ -14,6 +14,7 @@
  * red (at least 3 texels across so a small sun stays visible).
  */
 #include "cli_envmap.h"
+#include "cli_usage.h"
 #include "env_decompose.h"
 #include "hfs_io.h"
 
@@ -30,20 +31,40 @@ typedef struct envmap_args {
     hfs_env_decompose_opts o;
 } envmap_args;
 
-static int usage(void)
+static void usage(void)
 {
-    fprintf(stderr, "usage: hfshade envmap decompose MAP [--max-lights N] [--min-share F] "
-                    "[--contrast C] [--max-radius DEG] [--picture OUT.png]\n");
-    return 2;
+    printf("usage: hfshade envmap decompose MAP [--max-lights N] [--min-share F] "
+           "[--contrast C] [--max-radius DEG] [--picture OUT.png]\n");
+}
+
+/* The error for argument A that is not understood (V: the next one). */
+static int bad_argument(const char *a, const char *v)
+{
+    static const char *const valued[] = {"--max-lights", "--min-share", "--contrast",
+                                         "--max-radius", "--picture"};
+    for (size_t k = 0; k < sizeof valued / sizeof valued[0] && !v; ++k)
+        if (!strcmp(a, valued[k]))
+            return hfs_usage_error("hfshade", "envmap: %s: missing value", a);
+    return hfs_usage_error("hfshade", "envmap: %s: %s", a,
+                           a[0] == '-' ? "unknown option" : "unexpected argument");
 }
 
 static int parse(int argc, char **argv, envmap_args *a)
 {
     memset(a, 0, sizeof *a);
     hfs_env_decompose_defaults(&a->o);
-    if (argc < 2 || strcmp(argv[1], "decompose"))
+    if (argc >= 2 && hfs_is_help(argv[1]))
         return -1;
+    if (argc < 2 || strcmp(argv[1], "decompose")) {
+        if (argc < 2)
+            hfs_usage_error("hfshade", "envmap: no subcommand (decompose)");
+        else
+            hfs_usage_error("hfshade", "envmap: '%s' is not a subcommand (decompose)", argv[1]);
+        return -2;
+    }
     for (int i = 2; i < argc; ++i) {
+        if (hfs_is_help(argv[i]))
+            return -1;
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         char *end = NULL;
         if (!strcmp(argv[i], "--max-lights") && v) {
@@ -77,12 +98,14 @@ static int parse(int argc, char **argv, envmap_args *a)
             a->map = argv[i];
             continue;
         } else {
-            fprintf(stderr, "hfshade: envmap: unexpected argument '%s'\n", argv[i]);
+            bad_argument(argv[i], v);
             return -2;
         }
         ++i;
     }
-    return a->map ? 0 : -1;
+    if (!a->map)
+        hfs_usage_error("hfshade", "envmap decompose: no MAP given");
+    return a->map ? 0 : -2;
 }
 
 static double lum3(const double *v)
@@ -177,10 +200,12 @@ int hfs_cli_envmap(int argc, char **argv)
 {
     envmap_args a;
     const int p = parse(argc, argv, &a);
-    if (p == -1)
-        return usage();
+    if (p == -1) {
+        usage();
+        return 0;
+    }
     if (p)
-        return 2;
+        return HFS_EXIT_USAGE;
     hfs_envmap m;
     hfs_error err = {{0}};
     if (hfs_envmap_load(a.map, &m, &err)) {

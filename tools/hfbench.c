@@ -27,6 +27,7 @@
 #include "bench_scene.h"
 #include "bench_sweep.h"
 #include "bench_truth.h"
+#include "cli_usage.h"
 #include "median.h"
 #include "scene_keys.h"
 
@@ -65,9 +66,9 @@ typedef struct options {
     bench_budget budget;
 } options;
 
-static void usage(void)
+static void usage(FILE *to)
 {
-    fprintf(stderr,
+    fprintf(to,
             "usage: hfbench -o OUT.csv [--plots DIR] [--scenes a,b,c] [--size N] [--lights "
             "sky+sun|sky|sun|local] [--bounces B]\n"
             "               [--grid \"key=v1,v2 ...\"]... [--frames N] [--cache DIR] [--data DIR]\n"
@@ -95,10 +96,105 @@ static int parse_number(const char *flag, const char *v, double lo, double hi, d
     char *end;
     const double x = strtod(v, &end);
     if (end == v || *end || !(x >= lo && x <= hi)) {
-        fprintf(stderr, "hfbench: %s: '%s' is not a number in [%g, %g]\n", flag, v, lo, hi);
+        hfs_usage_error("hfbench", "%s: '%s' is not a number in [%g, %g]", flag, v, lo, hi);
         return -1;
     }
     *out = x;
+    return 0;
+}
+
+/* 1 if A is a flag that takes a value. */
+static int is_flag(const char *a)
+{
+    static const char *const flags[] = {"-o",      "--plots",  "--scenes",    "--lights",
+                                        "--cache", "--data",   "--grid",      "--size",
+                                        "--bounces", "--frames", "--truth-env", "--truth-samples"};
+    for (size_t k = 0; k < sizeof flags / sizeof flags[0]; ++k)
+        if (!strcmp(a, flags[k]))
+            return 1;
+    bench_budget b;
+    return budget_field(&b, a) != NULL;
+}
+
+/* The whole-number option A and its range, or NULL. */
+static int *int_flag(options *o, const char *a, double *lo, double *hi)
+{
+    /* --bounces, --truth-samples: the scene key's range */
+    const hfs_key_range *b = &hfs_scene_key_number(HFS_SK_BOUNCES, 0)->range;
+    const hfs_key_range *t = &hfs_scene_key_number(HFS_SK_TRUTH_SAMPLES, 0)->range;
+    const struct {
+        const char *flag;
+        int *field;
+        double lo, hi;
+    } f[] = {{"--size", &o->size, 2, 16384},
+             {"--frames", &o->frames, 1, 1000},
+             {"--bounces", &o->bounces, b->lo, b->hi},
+             {"--truth-samples", &o->truth_samples, t->lo, t->hi}};
+    for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k)
+        if (!strcmp(a, f[k].flag)) {
+            *lo = f[k].lo, *hi = f[k].hi;
+            return f[k].field;
+        }
+    return NULL;
+}
+
+/* Flag A with value V; non-zero after a one-line message. */
+static int parse_value(options *o, const char *a, const char *v, const char **scenes)
+{
+    double x = 0.0, lo, hi;
+    int *n;
+    if (!strcmp(a, "-o"))
+        o->out_csv = v;
+    else if (!strcmp(a, "--plots"))
+        o->plots = v;
+    else if (!strcmp(a, "--scenes"))
+        *scenes = v;
+    else if (!strcmp(a, "--cache"))
+        o->cache = v;
+    else if (!strcmp(a, "--data"))
+        o->data = v;
+    else if (!strcmp(a, "--lights")) {
+        if (strcmp(v, "sky+sun") && strcmp(v, "sky") && strcmp(v, "sun") && strcmp(v, "local"))
+            return hfs_usage_error("hfbench", "--lights: '%s' is not sky+sun, sky, sun or local",
+                                   v);
+        o->lights = v;
+    } else if (!strcmp(a, "--grid")) {
+        if (o->n_grids == 31)
+            return hfs_usage_error("hfbench", "--grid: at most 31");
+        o->grids[o->n_grids++] = v;
+    } else if (!strcmp(a, "--truth-env")) {
+        if (strcmp(v, "map") && strcmp(v, "sh"))
+            return hfs_usage_error("hfbench", "--truth-env: '%s' is not map or sh", v);
+        o->truth_env_sh = !strcmp(v, "sh");
+    } else if ((n = int_flag(o, a, &lo, &hi))) {
+        if (parse_number(a, v, lo, hi, &x))
+            return -1;
+        *n = (int)x;
+    } else if (budget_field(&o->budget, a)) {
+        return parse_number(a, v, 0, 1e9, budget_field(&o->budget, a));
+    } else {
+        return hfs_usage_error("hfbench", "%s: unknown option", a);
+    }
+    return 0;
+}
+
+/* --scenes into o->scenes; -1 after a one-line message. */
+static int split_scenes(options *o, const char *scenes)
+{
+    char buf[1024];
+    snprintf(buf, sizeof buf, "%s", scenes);
+    char *save = NULL;
+    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        if (o->n_scenes == MAX_SCENES || strlen(t) >= sizeof o->scenes[0]) {
+            hfs_usage_error("hfbench", "--scenes: too many or too long names");
+            return -1;
+        }
+        snprintf(o->scenes[o->n_scenes++], sizeof o->scenes[0], "%s", t);
+    }
+    if (!o->n_scenes) {
+        hfs_usage_error("hfbench", "--scenes: '%s' names no scene", scenes);
+        return -1;
+    }
     return 0;
 }
 
@@ -116,83 +212,31 @@ static int parse_args(int argc, char **argv, options *o)
                                .kiosk_err = 0.01, .kiosk_p99 = 0.10};
     const char *scenes = "cones,fractal,dem";
     for (int i = 1; i < argc; ++i) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        double x = 0.0;
+        const char *a = argv[i];
         if (!strcmp(a, "--quiet")) {
             o->quiet = 1;
-            continue;
-        }
-        if (!v) {
-            fprintf(stderr, "hfbench: %s: unknown flag or missing value\n", a);
-            usage();
+        } else if (hfs_is_help(a)) {
+            usage(stdout);
+            exit(0);
+        } else if (a[0] != '-') {
+            hfs_usage_error("hfbench", "%s: unexpected argument", a);
             return -1;
-        }
-        ++i;
-        if (!strcmp(a, "-o"))
-            o->out_csv = v;
-        else if (!strcmp(a, "--plots"))
-            o->plots = v;
-        else if (!strcmp(a, "--scenes"))
-            scenes = v;
-        else if (!strcmp(a, "--lights"))
-            o->lights = v;
-        else if (!strcmp(a, "--cache"))
-            o->cache = v;
-        else if (!strcmp(a, "--data"))
-            o->data = v;
-        else if (!strcmp(a, "--grid")) {
-            if (o->n_grids == 31) {
-                fprintf(stderr, "hfbench: --grid: at most 31\n");
-                return -1;
-            }
-            o->grids[o->n_grids++] = v;
-        } else if (!strcmp(a, "--size")) {
-            if (parse_number(a, v, 2, 16384, &x))
-                return -1;
-            o->size = (int)x;
-        } else if (!strcmp(a, "--bounces")) { /* the scene key's range */
-            const hfs_key_range *r = &hfs_scene_key_number(HFS_SK_BOUNCES, 0)->range;
-            if (parse_number(a, v, r->lo, r->hi, &x))
-                return -1;
-            o->bounces = (int)x;
-        } else if (!strcmp(a, "--truth-env")) {
-            if (strcmp(v, "map") && strcmp(v, "sh")) {
-                fprintf(stderr, "hfbench: --truth-env: '%s' is not map or sh\n", v);
-                return -1;
-            }
-            o->truth_env_sh = !strcmp(v, "sh");
-        } else if (!strcmp(a, "--frames")) {
-            if (parse_number(a, v, 1, 1000, &x))
-                return -1;
-            o->frames = (int)x;
-        } else if (!strcmp(a, "--truth-samples")) { /* the scene key's range */
-            const hfs_key_range *r = &hfs_scene_key_number(HFS_SK_TRUTH_SAMPLES, 0)->range;
-            if (parse_number(a, v, r->lo, r->hi, &x))
-                return -1;
-            o->truth_samples = (int)x;
-        } else if (budget_field(&o->budget, a)) {
-            if (parse_number(a, v, 0, 1e9, budget_field(&o->budget, a)))
-                return -1;
-        } else {
-            fprintf(stderr, "hfbench: %s: unknown flag\n", a);
-            usage();
+        } else if (!is_flag(a)) {
+            hfs_usage_error("hfbench", "%s: unknown option", a);
+            return -1;
+        } else if (i + 1 >= argc) {
+            hfs_usage_error("hfbench", "%s: missing value", a);
+            return -1;
+        } else if (parse_value(o, a, argv[++i], &scenes)) {
             return -1;
         }
     }
     if (!o->out_csv) {
-        usage();
+        hfs_usage_error("hfbench", "no output file (-o OUT.csv)");
         return -1;
     }
-    char buf[1024];
-    snprintf(buf, sizeof buf, "%s", scenes);
-    char *save = NULL;
-    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-        if (o->n_scenes == MAX_SCENES || strlen(t) >= sizeof o->scenes[0]) {
-            fprintf(stderr, "hfbench: --scenes: too many or too long names\n");
-            return -1;
-        }
-        snprintf(o->scenes[o->n_scenes++], sizeof o->scenes[0], "%s", t);
-    }
+    if (split_scenes(o, scenes))
+        return -1;
     if (!o->n_grids)
         for (int g = 0; DEFAULT_GRIDS[g]; ++g)
             o->grids[o->n_grids++] = DEFAULT_GRIDS[g];
@@ -413,7 +457,7 @@ int main(int argc, char **argv)
     run R;
     memset(&R, 0, sizeof R);
     if (parse_args(argc, argv, &R.o))
-        return 2;
+        return HFS_EXIT_USAGE;
     const options *o = &R.o;
     hfs_error err = {{0}};
     int rc = HFS_OK;

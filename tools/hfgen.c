@@ -31,6 +31,7 @@
 #ifdef HFS_HAVE_GDAL
 #include "height_gdal.h"
 #endif
+#include "cli_usage.h"
 #include "sky_gen.h"
 #include "terrain_gen.h"
 
@@ -40,13 +41,45 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void usage(void)
+static void usage(FILE *to)
 {
-    fprintf(stderr, "usage: hfgen %s --size WxH -o OUT.pfm [--seed N] [--relief R]\n"
-                    "       hfgen crop IN --rect X,Y,W,H -o OUT.pfm\n"
-                    "       hfgen albedo IN -o OUT.pfm\n"
-                    "       hfgen sky [--size WxH] -o OUT.pfm [--sun PHI,ELEV] [--sun-diameter D]\n"
-                    "                 [--share S] [--noise A] [--seed N]\n", hfs_terrain_names());
+    fprintf(to, "usage: hfgen %s --size WxH -o OUT.pfm [--seed N] [--relief R]\n"
+                "       hfgen crop IN --rect X,Y,W,H -o OUT.pfm\n"
+                "       hfgen albedo IN -o OUT.pfm\n"
+                "       hfgen sky [--size WxH] -o OUT.pfm [--sun PHI,ELEV] [--sun-diameter D]\n"
+                "                 [--share S] [--noise A] [--seed N]\n", hfs_terrain_names());
+}
+
+/* A seed: a whole number in [0, 2^32). */
+static int parse_seed(const char *v, unsigned *seed)
+{
+    char *end;
+    const unsigned long long x = strtoull(v, &end, 10);
+    if (end == v || *end || v[0] == '-' || x > 0xffffffffull)
+        return -1;
+    *seed = (unsigned)x;
+    return 0;
+}
+
+/* A number in [lo, hi], the whole of V. */
+static int parse_real(const char *v, double lo, double hi, double *x)
+{
+    char *end;
+    const double d = strtod(v, &end);
+    if (end == v || *end || !(d >= lo && d <= hi))
+        return -1;
+    *x = d;
+    return 0;
+}
+
+/* WxH, each side in [lo, 16384]. */
+static int parse_size(const char *v, int lo, int *w, int *h)
+{
+    char tail;
+    return sscanf(v, "%dx%d%c", w, h, &tail) == 2 && *w >= lo && *h >= lo && *w <= 16384 &&
+                   *h <= 16384
+               ? 0
+               : -1;
 }
 
 /* hfgen albedo: the map described above, written as RGB PFM. */
@@ -80,64 +113,179 @@ static int albedo_map(const char *in, const char *out)
     return rc ? 1 : 0;
 }
 
+/* hfgen sky's flags: 0, or the usage error printed (HFS_EXIT_USAGE). */
+typedef struct sky_args {
+    int w, h;
+    double phi, elev, diam, share, noise;
+    unsigned seed;
+    const char *out;
+} sky_args;
+
+static int sky_flag(sky_args *s, const char *a, const char *v)
+{
+    int bad = 0;
+    if (!strcmp(a, "--size"))
+        bad = parse_size(v, 1, &s->w, &s->h);
+    else if (!strcmp(a, "--sun")) {
+        char tail;
+        bad = !(sscanf(v, "%lf,%lf%c", &s->phi, &s->elev, &tail) == 2 && isfinite(s->phi) &&
+                s->elev >= -90.0 && s->elev <= 90.0);
+    } else if (!strcmp(a, "--sun-diameter"))
+        bad = parse_real(v, 0.0, 90.0, &s->diam) || !(s->diam > 0.0);
+    else if (!strcmp(a, "--share"))
+        bad = parse_real(v, 0.0, 1.0, &s->share) || !(s->share > 0.0 && s->share < 1.0);
+    else if (!strcmp(a, "--noise"))
+        bad = parse_real(v, 0.0, 1.0, &s->noise) || !(s->noise < 1.0);
+    else if (!strcmp(a, "--seed"))
+        bad = parse_seed(v, &s->seed);
+    else if (!strcmp(a, "-o"))
+        s->out = v;
+    else
+        return hfs_usage_error("hfgen", "sky: %s: unknown option", a);
+    return bad ? hfs_usage_error("hfgen", "sky: %s: '%s' is malformed or out of range", a, v) : 0;
+}
+
 /* hfgen sky: the sky described above. */
 static int sky_map(int argc, char **argv)
 {
-    int w = 2048, h = 1024;
-    double phi = 135.0, elev = 35.0, diam = 0.5, share = 0.8, noise = 0.0;
-    unsigned seed = 1;
-    const char *out = NULL;
-    for (int i = 2; i < argc; ++i) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int ok = v != NULL;
-        if (ok && !strcmp(a, "--size"))
-            ok = sscanf(v, "%dx%d", &w, &h) == 2 && w >= 1 && h >= 1 && w <= 16384 && h <= 16384;
-        else if (ok && !strcmp(a, "--sun"))
-            ok = sscanf(v, "%lf,%lf", &phi, &elev) == 2 && elev >= -90.0 && elev <= 90.0;
-        else if (ok && !strcmp(a, "--sun-diameter"))
-            ok = sscanf(v, "%lf", &diam) == 1 && diam > 0.0 && diam <= 90.0;
-        else if (ok && !strcmp(a, "--share"))
-            ok = sscanf(v, "%lf", &share) == 1 && share > 0.0 && share < 1.0;
-        else if (ok && !strcmp(a, "--noise"))
-            ok = sscanf(v, "%lf", &noise) == 1 && noise >= 0.0 && noise < 1.0;
-        else if (ok && !strcmp(a, "--seed"))
-            seed = (unsigned)strtoul(v, NULL, 10);
-        else if (ok && !strcmp(a, "-o"))
-            out = v;
-        else {
-            fprintf(stderr, "hfgen: sky: %s%s%s: unexpected or out of range\n", a, v ? " " : "",
-                    v ? v : "");
-            return 2;
-        }
-        if (!ok) {
-            fprintf(stderr, "hfgen: sky: %s %s: malformed or out of range\n", a, v ? v : "");
-            return 2;
-        }
-        ++i;
+    sky_args s = {2048, 1024, 135.0, 35.0, 0.5, 0.8, 0.0, 1, NULL};
+    for (int i = 2; i < argc; i += 2) {
+        if (argv[i][0] != '-')
+            return hfs_usage_error("hfgen", "sky: %s: unexpected argument", argv[i]);
+        if (i + 1 >= argc)
+            return hfs_usage_error("hfgen", "sky: %s: missing value", argv[i]);
+        if (sky_flag(&s, argv[i], argv[i + 1]))
+            return HFS_EXIT_USAGE;
     }
-    if (!out) {
-        usage();
-        return 2;
-    }
+    if (!s.out)
+        return hfs_usage_error("hfgen", "sky: no output file (-o OUT.pfm)");
     hfs_sky_desc d;
-    hfs_sky_defaults(&d, w, h);
-    d.noise = noise;
-    d.seed = seed;
+    hfs_sky_defaults(&d, s.w, s.h);
+    d.noise = s.noise;
+    d.seed = s.seed;
     d.n_disks = 1;
-    d.disk[0] = (hfs_sky_disk){phi, elev, 0.5 * diam, {1.0f, 0.96f, 0.9f}};
+    d.disk[0] = (hfs_sky_disk){s.phi, s.elev, 0.5 * s.diam, {1.0f, 0.96f, 0.9f}};
     hfs_error err = {{0}};
     hfs_image img;
     double e[1][3];
-    if (hfs_image_alloc(&img, w, h, &err) || hfs_sky_render(&d, img.rgb, e)) {
-        fprintf(stderr, "hfgen: sky: out of memory for %dx%d\n", w, h);
+    if (hfs_image_alloc(&img, s.w, s.h, &err) || hfs_sky_render(&d, img.rgb, e)) {
+        fprintf(stderr, "hfgen: sky: out of memory for %dx%d\n", s.w, s.h);
         return 1;
     }
-    hfs_sky_set_share(&d, 0, share, img.rgb, e);
-    const int rc = hfs_pfm_write(out, &img, 0, &err);
+    hfs_sky_set_share(&d, 0, s.share, img.rgb, e);
+    const int rc = hfs_pfm_write(s.out, &img, 0, &err);
     if (rc)
         fprintf(stderr, "hfgen: %s\n", err.msg);
     hfs_image_free(&img);
     return rc ? 1 : 0;
+}
+
+/* The arguments of the other kinds (crop, albedo, the terrains). */
+typedef struct gen_args {
+    const char *kind, *out, *in, *rect;
+    int w, h;
+    unsigned seed;
+    double relief;
+} gen_args;
+
+/* 1 if KIND is one of hfs_terrain_names()' "a|b|c". */
+static int is_terrain(const char *kind)
+{
+    const size_t n = strlen(kind);
+    for (const char *p = hfs_terrain_names(); *p;) {
+        const char *bar = strchr(p, '|');
+        const size_t len = bar ? (size_t)(bar - p) : strlen(p);
+        if (len == n && n && !strncmp(p, kind, n))
+            return 1;
+        p += len + (bar != NULL);
+    }
+    return 0;
+}
+
+static int gen_flag(gen_args *g, const char *a, const char *v)
+{
+    if (!strcmp(a, "--size")) {
+        if (parse_size(v, 2, &g->w, &g->h))
+            return hfs_usage_error("hfgen", "--size: '%s' is not WxH within [2, 16384]", v);
+    } else if (!strcmp(a, "--seed")) {
+        if (parse_seed(v, &g->seed))
+            return hfs_usage_error("hfgen", "--seed: '%s' is not a whole number", v);
+    } else if (!strcmp(a, "--relief")) {
+        if (parse_real(v, 0.0, 100.0, &g->relief))
+            return hfs_usage_error("hfgen", "--relief: '%s' is out of range [0, 100]", v);
+    } else if (!strcmp(a, "-o")) {
+        g->out = v;
+    } else if (!strcmp(a, "--rect")) {
+        g->rect = v;
+    } else {
+        return hfs_usage_error("hfgen", "%s: unknown option", a);
+    }
+    return 0;
+}
+
+/* 0, or HFS_EXIT_USAGE with the one line printed. */
+static int gen_parse(int argc, char **argv, gen_args *g)
+{
+    *g = (gen_args){argv[1], NULL, NULL, NULL, 0, 0, 1, 0.25};
+    const int terrain = is_terrain(g->kind), takes_in = !terrain;
+    if (!terrain && strcmp(g->kind, "crop") && strcmp(g->kind, "albedo"))
+        return hfs_usage_error("hfgen", "'%s' is not a kind (%s|crop|albedo|sky)", g->kind,
+                               hfs_terrain_names());
+    for (int i = 2; i < argc; ++i) {
+        const char *a = argv[i];
+        if (a[0] != '-') {
+            if (!takes_in || g->in)
+                return hfs_usage_error("hfgen", "%s: unexpected argument", a);
+            g->in = a;
+        } else if (i + 1 >= argc) {
+            return hfs_usage_error("hfgen", "%s: missing value", a);
+        } else if (gen_flag(g, a, argv[++i])) {
+            return HFS_EXIT_USAGE;
+        }
+    }
+    if (takes_in && !g->in)
+        return hfs_usage_error("hfgen", "%s: no input height file", g->kind);
+    if (!strcmp(g->kind, "crop") && !g->rect)
+        return hfs_usage_error("hfgen", "crop: no --rect X,Y,W,H");
+    if (terrain && g->w < 2)
+        return hfs_usage_error("hfgen", "%s needs --size WxH", g->kind);
+    if (!g->out)
+        return hfs_usage_error("hfgen", "%s: no output file (-o OUT.pfm)", g->kind);
+    return 0;
+}
+
+/* hfgen crop: the rectangle of the input's heights; NULL after a message. */
+static float *crop(gen_args *g, int *rc)
+{
+    int x0, y0;
+    char tail;
+    if (sscanf(g->rect, "%d,%d,%d,%d%c", &x0, &y0, &g->w, &g->h, &tail) != 4) {
+        *rc = hfs_usage_error("hfgen", "--rect: '%s' is not X,Y,W,H", g->rect);
+        return NULL;
+    }
+    hfs_error err = {{0}};
+    hfs_heightmap hm;
+    if (hfs_height_load(g->in, NULL, &hm, &err)) {
+        fprintf(stderr, "hfgen: %s\n", err.msg);
+        *rc = 1;
+        return NULL;
+    }
+    float *z = NULL;
+    if (x0 < 0 || y0 < 0 || g->w < 2 || g->h < 2 || x0 > hm.width - g->w ||
+        y0 > hm.height - g->h) {
+        fprintf(stderr, "hfgen: --rect %s lies outside %s (%dx%d)\n", g->rect, g->in, hm.width,
+                hm.height);
+        *rc = 2;
+    } else if (!(z = malloc((size_t)g->w * g->h * sizeof *z))) {
+        fprintf(stderr, "hfgen: out of memory\n");
+        *rc = 1;
+    } else {
+        for (int j = 0; j < g->h; ++j)
+            memcpy(z + (size_t)j * g->w, hm.z + (size_t)(y0 + j) * hm.width + x0,
+                   (size_t)g->w * sizeof *z);
+    }
+    hfs_heightmap_free(&hm);
+    return z;
 }
 
 int main(int argc, char **argv)
@@ -145,108 +293,32 @@ int main(int argc, char **argv)
 #ifdef HFS_HAVE_GDAL
     hfs_gdal_register(); /* hfgen crop reads GeoTIFF, SRTM .hgt, VRT ... */
 #endif
-    if (argc < 2) {
-        usage();
-        return 2;
+    if (argc < 2)
+        return hfs_usage_error("hfgen", "no kind given (%s|crop|albedo|sky)", hfs_terrain_names());
+    if (hfs_is_help(argv[1])) {
+        usage(stdout);
+        return 0;
     }
     if (!strcmp(argv[1], "sky"))
         return sky_map(argc, argv);
-    const char *kind = argv[1], *out = NULL, *in = NULL, *rect = NULL;
-    int w = 0, h = 0;
-    unsigned seed = 1;
-    double relief = 0.25;
-    for (int i = 2; i < argc; ++i) {
-        const char *a = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--size") && v) {
-            if (sscanf(v, "%dx%d", &w, &h) != 2 || w < 2 || h < 2 || w > 16384 || h > 16384) {
-                fprintf(stderr, "hfgen: --size: '%s' is not WxH within [2, 16384]\n", v);
-                return 2;
-            }
-            ++i;
-        } else if (!strcmp(a, "-o") && v) {
-            out = v;
-            ++i;
-        } else if (!strcmp(a, "--seed") && v) {
-            seed = (unsigned)strtoul(v, NULL, 10);
-            ++i;
-        } else if (!strcmp(a, "--relief") && v) {
-            relief = strtod(v, NULL);
-            if (!(relief >= 0.0 && relief <= 100.0)) {
-                fprintf(stderr, "hfgen: --relief: '%s' is out of range [0, 100]\n", v);
-                return 2;
-            }
-            ++i;
-        } else if (!strcmp(a, "--rect") && v) {
-            rect = v;
-            ++i;
-        } else if (a[0] != '-' && !in) {
-            in = a;
-        } else {
-            fprintf(stderr, "hfgen: %s: unexpected argument\n", a);
-            usage();
-            return 2;
-        }
-    }
-    if (!out) {
-        usage();
-        return 2;
-    }
-    if (!strcmp(kind, "albedo")) {
-        if (!in) {
-            usage();
-            return 2;
-        }
-        return albedo_map(in, out);
-    }
-    hfs_error err = {{0}};
+    gen_args g;
+    if (gen_parse(argc, argv, &g))
+        return HFS_EXIT_USAGE;
+    if (!strcmp(g.kind, "albedo"))
+        return albedo_map(g.in, g.out);
+    int rc = 0;
     float *z = NULL;
-    if (!strcmp(kind, "crop")) {
-        int x0, y0;
-        hfs_heightmap hm;
-        if (!in || !rect || sscanf(rect, "%d,%d,%d,%d", &x0, &y0, &w, &h) != 4) {
-            usage();
-            return 2;
-        }
-        if (hfs_height_load(in, NULL, &hm, &err)) {
-            fprintf(stderr, "hfgen: %s\n", err.msg);
-            return 1;
-        }
-        if (x0 < 0 || y0 < 0 || w < 2 || h < 2 || x0 + w > hm.width || y0 + h > hm.height) {
-            fprintf(stderr, "hfgen: --rect %s lies outside %s (%dx%d)\n", rect, in, hm.width, hm.height);
-            hfs_heightmap_free(&hm);
-            return 2;
-        }
-        z = malloc((size_t)w * h * sizeof *z);
-        if (z)
-            for (int j = 0; j < h; ++j)
-                memcpy(z + (size_t)j * w, hm.z + (size_t)(y0 + j) * hm.width + x0, (size_t)w * sizeof *z);
-        hfs_heightmap_free(&hm);
-    } else {
-        if (w < 2) {
-            fprintf(stderr, "hfgen: %s needs --size WxH\n", kind);
-            return 2;
-        }
-        z = calloc((size_t)w * h, sizeof *z);
-        if (z) {
-            const int rc = hfs_terrain_make(kind, z, w, h, seed, relief);
-            if (rc == -1) {
-                fprintf(stderr, "hfgen: unknown kind '%s'\n", kind);
-                free(z);
-                usage();
-                return 2;
-            }
-            if (rc) {
-                free(z);
-                z = NULL;
-            }
-        }
-    }
-    if (!z) {
+    if (!strcmp(g.kind, "crop")) {
+        if (!(z = crop(&g, &rc)))
+            return rc;
+    } else if (!(z = calloc((size_t)g.w * g.h, sizeof *z)) ||
+               hfs_terrain_make(g.kind, z, g.w, g.h, g.seed, g.relief)) {
         fprintf(stderr, "hfgen: out of memory\n");
+        free(z);
         return 1;
     }
-    int rc = hfs_pfm_write_grey(out, w, h, z, &err);
+    hfs_error err = {{0}};
+    rc = hfs_pfm_write_grey(g.out, g.w, g.h, z, &err);
     free(z);
     if (rc) {
         fprintf(stderr, "hfgen: %s\n", err.msg);

@@ -20,6 +20,7 @@
 #include "scene_load.h"
 #include "median.h"
 #include "cli_query.h"
+#include "cli_usage.h"
 #include "cli_view.h"
 #ifdef HFS_HAVE_GDAL
 #include "geotiff_write.h"
@@ -35,7 +36,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#define EXIT_USAGE 2
 
 typedef struct cli {
     const char *command;
@@ -162,6 +162,18 @@ static int check_repeats(int argc, char **argv, hfs_error *err)
     return HFS_OK;
 }
 
+/* 1 if --NAME is a flag with a value: the tool's own, the view's, a scene key. */
+static int takes_value(const char *name)
+{
+    static const char *const own[] = {"o",    "pfm",      "geotiff",  "points",       "time",
+                                      "colormap", "exposure", "view", "camera", "exaggeration",
+                                      "view-size"};
+    for (size_t k = 0; k < sizeof own / sizeof own[0]; ++k)
+        if (!strcmp(name, own[k]))
+            return 1;
+    return hfs_scene_is_key(name);
+}
+
 /* Two passes over argv: the scene file first, then flags, so flags always
  * override the file whatever their position. */
 static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
@@ -207,7 +219,8 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
             exit(0);
         }
         if (i + 1 >= argc)
-            return hfs_fail(err, HFS_E_INVALID, "%s: missing value", a);
+            return hfs_fail(err, HFS_E_INVALID, takes_value(name) ? "%s: missing value"
+                                                : "%s: unknown flag (see 'hfshade keys')", a);
         const char *v = argv[++i];
         if (cli_view_flag(&c->v, name, v, &rc, err)) {
             if (rc)
@@ -525,10 +538,9 @@ static int cmd_query(const cli *c, hfs_error *err)
 
 int main(int argc, char **argv)
 {
-    if (argc < 2) {
-        usage(stderr);
-        return EXIT_USAGE;
-    }
+    if (argc < 2)
+        return hfs_usage_error("hfshade", "no command given (render, compare, query, envmap, "
+                                          "info, keys)");
 #ifdef HFS_HAVE_GDAL
     hfs_gdal_register(); /* GeoTIFF, SRTM .hgt, VRT ... as height fields */
 #endif
@@ -556,10 +568,10 @@ int main(int argc, char **argv)
         for (int i = 2; i < argc; ++i) {
             if (!strcmp(argv[i], "--context") && i + 1 < argc)
                 name = argv[++i];
-            else {
-                fprintf(stderr, "hfshade: info: unexpected argument '%s'\n", argv[i]);
-                return EXIT_USAGE;
-            }
+            else
+                return hfs_usage_error("hfshade", "info: %s: %s", argv[i],
+                                       !strcmp(argv[i], "--context") ? "missing value"
+                                                                     : "unexpected argument");
         }
         hfs_error e = {{0}};
         hfs_gl_context *ctx = NULL;
@@ -572,14 +584,13 @@ int main(int argc, char **argv)
         return 0;
     }
     if (strcmp(c.command, "render") && strcmp(c.command, "compare") && strcmp(c.command, "query")) {
-        fprintf(stderr, "hfshade: unknown command '%s' (see hfshade --help)\n", c.command);
-        return EXIT_USAGE;
+        return hfs_usage_error("hfshade", "unknown command '%s'", c.command);
     }
     hfs_error err = {{0}};
     int rc = parse_args(&c, argc, argv, &err);
     if (rc) {
         fprintf(stderr, "hfshade: %s\n", err.msg);
-        return EXIT_USAGE;
+        return HFS_EXIT_USAGE;
     }
     rc = !strcmp(c.command, "render")    ? cmd_render(&c, &err)
          : !strcmp(c.command, "compare") ? cmd_compare(&c, &err)

@@ -33,6 +33,7 @@
  * --fast is the CI subset (ctest label "stress").
  */
 #include "hfstress.h"
+#include "cli_usage.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -107,22 +108,56 @@ static int add_cases(options *o, const char *list)
     static size_t used;
     const size_t len = strlen(list) + 1;
     if (used + len > sizeof names) {
-        fprintf(stderr, "hfstress: --case: too many names\n");
+        hfs_usage_error("hfstress", "--case: too many names");
         return -1;
     }
     char *copy = memcpy(names + used, list, len);
     used += len;
     for (char *save = NULL, *t = strtok_r(copy, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
         if (!stress_case_find(t)) {
-            fprintf(stderr, "hfstress: --case: unknown case '%s' (see --list)\n", t);
+            hfs_usage_error("hfstress", "--case: unknown case '%s' (--list lists them)", t);
             return -1;
         }
         if (o->n_only == (int)(sizeof o->only / sizeof o->only[0])) {
-            fprintf(stderr, "hfstress: --case: too many names\n");
+            hfs_usage_error("hfstress", "--case: too many names");
             return -1;
         }
         o->only[o->n_only++] = t;
     }
+    return 0;
+}
+
+/* --lights: a comma-separated list of env, key, local. */
+static int parse_lights(const char *v, int *lights)
+{
+    static const char *const names[] = {"env", "key", "local"};
+    static const int bits[] = {LIGHTS_ENV, LIGHTS_KEY, LIGHTS_LOCAL};
+    *lights = 0;
+    for (const char *p = v; *p;) {
+        const size_t len = strcspn(p, ",");
+        int found = 0;
+        for (int k = 0; k < 3; ++k)
+            if (len == strlen(names[k]) && !strncmp(p, names[k], len))
+                *lights |= bits[k], found = 1;
+        if (!found) {
+            hfs_usage_error("hfstress", "--lights: '%.*s' is not env, key or local", (int)len, p);
+            return -1;
+        }
+        p += len + (p[len] == ',');
+    }
+    if (!*lights)
+        hfs_usage_error("hfstress", "--lights: empty list (env, key, local)");
+    return *lights ? 0 : -1;
+}
+
+/* 1 if A is a flag that takes a value (it was given without one). */
+static int is_valued(const char *a)
+{
+    static const char *const flags[] = {"--backend", "--case", "--subsample", "--visibility",
+                                        "--lights"};
+    for (size_t k = 0; k < sizeof flags / sizeof flags[0]; ++k)
+        if (!strcmp(a, flags[k]))
+            return 1;
     return 0;
 }
 
@@ -149,9 +184,9 @@ static int parse_args(int argc, char **argv, options *o)
                 return -1;
             ++i;
         } else if (!strcmp(a, "--subsample") && v) {
-            o->subsample = atoi(v);
+            o->subsample = !strcmp(v, "1") ? 1 : !strcmp(v, "2") ? 2 : !strcmp(v, "4") ? 4 : 0;
             if (o->subsample != 1 && o->subsample != 2 && o->subsample != 4) {
-                fprintf(stderr, "hfstress: --subsample: '%s' is not 1, 2 or 4\n", v);
+                hfs_usage_error("hfstress", "--subsample: '%s' is not 1, 2 or 4", v);
                 return -1;
             }
             ++i;
@@ -161,20 +196,22 @@ static int parse_args(int argc, char **argv, options *o)
                             : !strcmp(v, "slice")  ? HFS_VIS_SLICE
                                                    : 0;
             if (!o->visibility) {
-                fprintf(stderr, "hfstress: --visibility: '%s' is not legendre, wedge or slice\n",
-                        v);
+                hfs_usage_error("hfstress", "--visibility: '%s' is not legendre, wedge or slice",
+                                v);
                 return -1;
             }
             ++i;
         } else if (!strcmp(a, "--lights") && v) {
-            o->lights = (strstr(v, "env") ? LIGHTS_ENV : 0) | (strstr(v, "key") ? LIGHTS_KEY : 0) |
-                        (strstr(v, "local") ? LIGHTS_LOCAL : 0);
+            if (parse_lights(v, &o->lights))
+                return -1;
             ++i;
-        } else if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+        } else if (hfs_is_help(a)) {
             usage(stdout);
             exit(0);
         } else {
-            fprintf(stderr, "hfstress: unknown or incomplete argument '%s'\n", a);
+            hfs_usage_error("hfstress", "%s: %s", a, is_valued(a) ? "missing value"
+                                                   : a[0] == '-'  ? "unknown option"
+                                                                  : "unexpected argument");
             return -1;
         }
     }
@@ -475,10 +512,8 @@ static void run_case(runner *rn, const stress_case *c)
 int main(int argc, char **argv)
 {
     options o;
-    if (parse_args(argc, argv, &o)) {
-        usage(stderr);
-        return 2;
-    }
+    if (parse_args(argc, argv, &o))
+        return HFS_EXIT_USAGE;
     int n_cases;
     const stress_case *cases = stress_cases(&n_cases);
     if (o.list) {

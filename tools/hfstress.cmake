@@ -11,7 +11,7 @@ add_executable(hfstress
   ${CMAKE_CURRENT_SOURCE_DIR}/hfstress_backends.c
   ${CMAKE_CURRENT_SOURCE_DIR}/hfstress_cases.c
   ${CMAKE_CURRENT_SOURCE_DIR}/hfstress_checks.c)
-target_link_libraries(hfstress PRIVATE hfshade_lib hfshade_io hfs_terrain_gen hfs_sh m)
+target_link_libraries(hfstress PRIVATE hfshade_lib hfshade_io hfs_terrain_gen hfs_sh hfs_cli_usage m)
 
 add_test(NAME stress_fast_cpu COMMAND hfstress --fast --backend cpu,truth)
 add_test(NAME stress_fast_gles COMMAND hfstress --fast --backend gles)

@@ -5,6 +5,7 @@
  * instead of failing every case.
  */
 #include "hfstress.h"
+#include "cli_usage.h"
 #include "gl_require.h"
 
 #include <stdio.h>
@@ -54,11 +55,16 @@ int stress_backend_parse(const char *list, int want[BK_COUNT])
                 (!strcmp(t, "gles") && defs[b].kind == HFS_BACKEND_GLES))
                 want[b] = found = 1;
         if (!found) {
-            fprintf(stderr, "hfstress: --backend: unknown backend '%s'\n", t);
+            hfs_usage_error("hfstress", "--backend: unknown backend '%s' (cpu, gles, gles-fp16, "
+                            "gles-fp32, gles-es32-fp16, gles-es32-fp32, truth, all)", t);
             return -1;
         }
     }
-    return 0;
+    for (int b = 0; b < BK_COUNT; ++b)
+        if (want[b])
+            return 0;
+    hfs_usage_error("hfstress", "--backend: '%s' names no backend", list);
+    return -1;
 }
 
 int stress_render(stress_backends *s, int b, const stress_scene *sc, hfs_image *img,
