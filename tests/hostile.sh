@@ -498,7 +498,7 @@ if [ -z "$ONLY" ] || [ "$ONLY" = kiosk ]; then
     fi
     if [ -n "$why" ]; then
         fails=$((fails + 1)); fail_class[kiosk]=$(( ${fail_class[kiosk]:-0} + 1 ))
-        echo "FAIL [kiosk/term_during_reload_check]: $why"; tail -3 "$w.klog" | sed 's/^/     log: /'
+        echo "FAIL [kiosk/term_during_reload_check]: ${why#; }"; tail -3 "$w.klog" | sed 's/^/     log: /'
     else
         echo "ok   [kiosk/term_during_reload_check] exited during the check (process $cpid stopped)"
     fi
