@@ -12,7 +12,7 @@
 #include <string.h>
 
 typedef enum ckey {
-    C_DEVICE, C_REPLAY, C_LOOP, C_FORMAT, C_SIZE, C_RATE, C_BUFFERS, C_ROLE, C_SCALE,
+    C_DEVICE, C_REPLAY, C_LOOP, C_PACE, C_FORMAT, C_SIZE, C_RATE, C_BUFFERS, C_ROLE, C_SCALE,
     C_MIN_DEPTH, C_MAX_DEPTH, C_PLANE, C_ROI, C_GRID, C_ZGAIN, C_WINDOW, C_GATE, C_HYST,
     C_JUMP, C_MAPPING, C_CENTER, C_RADIUS, C_FOV, C_ROTATE, C_HEMI, C_TRANSFER, C_EXPOSURE,
     C_ENV_SIZE, C_SMOOTHING, C_ENV_LIGHTS, C_COUNT
@@ -24,7 +24,7 @@ typedef enum ckey {
 #define FIRST_ENV C_MAPPING
 
 static const char *const ckey_names[C_COUNT] = {
-    "device", "replay", "loop", "format", "size", "rate", "buffers", "role", "depth_scale",
+    "device", "replay", "loop", "pace", "format", "size", "rate", "buffers", "role", "depth_scale",
     "min_depth", "max_depth", "plane", "roi", "grid", "zgain", "window", "gate_mm",
     "hysteresis_mm", "jump_mm", "mapping", "center", "radius", "fov", "rotate", "hemisphere",
     "transfer", "exposure", "env_size", "smoothing", "env_lights"};
@@ -192,6 +192,11 @@ static int set_key(hfs_capture_config *c, ckey k, const char *v, char *msg, size
     case C_LOOP:
         return yes_no(v, &c->loop) ? (snprintf(msg, size, "loop: '%s' is not yes or no", v), -1)
                                    : 0;
+    case C_PACE:
+        if (strcmp(v, "time") && strcmp(v, "shown"))
+            return snprintf(msg, size, "pace: '%s' is not time or shown", v), -1;
+        c->pace_shown = !strcmp(v, "shown");
+        return 0;
     case C_FORMAT:
         if (!(c->format = hfs_pixfmt_from_name(v)))
             return snprintf(msg, size, "format: '%s' is not Z16, Y16, GREY or YUYV", v), -1;
@@ -320,6 +325,8 @@ int hfs_capture_config_end(hfs_capture_configs *cc, char *msg, size_t size)
                    "[capture %s]: give device = PATH or replay = DIR (one of them)", c->name);
     if (kl[C_LOOP] && !c->replay[0])
         return bad(kl[C_LOOP], msg, size, "loop: applies to replay");
+    if (kl[C_PACE] && !c->replay[0])
+        return bad(kl[C_PACE], msg, size, "pace: applies to replay");
     if (c->role == HFS_ROLE_ENVIRONMENT)
         return end_environment(cc, msg, size);
     for (int k = FIRST_ENV; k < C_COUNT; ++k)

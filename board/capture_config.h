@@ -6,6 +6,7 @@
  *
  *     [capture sandbox]
  *     device = /dev/v4l/by-id/usb-Intel_RealSense-video-index0  ; or replay = DIR
+ *     pace = time               ; replay: or shown (no frame skipped)
  *     format = Z16
  *     size = 640x480
  *     rate = 30
@@ -57,6 +58,7 @@ typedef struct hfs_capture_config {
     char device[256];            /* a V4L2 node, or ""                     */
     char replay[256];            /* a recording directory, or ""           */
     int loop;                    /* replay: start again at the end         */
+    int pace_shown;              /* replay: pace = shown (capture_record.h) */
     hfs_pixfmt format;           /* default Z16                            */
     int width, height;           /* 0: the driver's                        */
     int fps;                     /* 0: the driver's                        */

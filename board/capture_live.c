@@ -70,8 +70,12 @@ static void record(void *user, const hfs_capture_frame *f)
 static int open_source(const hfs_capture_live_desc *d, hfs_capture **out, hfs_error *err)
 {
     const hfs_capture_config *c = d->config;
-    if (c->replay[0])
-        return hfs_capture_replay_open(c->replay, d->start_ns, c->loop, out, err);
+    if (c->replay[0]) {
+        const int rc = hfs_capture_replay_open(c->replay, d->start_ns, c->loop, out, err);
+        if (!rc && c->pace_shown)
+            hfs_capture_replay_pace_shown(*out);
+        return rc;
+    }
     hfs_v4l2_desc v = {.path = c->device, .format = c->format, .width = c->width,
                        .height = c->height, .fps = c->fps, .buffers = c->buffers,
                        .ops = d->ops};
@@ -248,6 +252,7 @@ const hfs_camsky_out *hfs_capture_live_sky(const hfs_capture_live *l, uint64_t *
 void hfs_capture_live_stats_get(const hfs_capture_live *l, hfs_capture_live_stats *s)
 {
     memset(s, 0, sizeof *s);
+    s->name = l->name;
     s->sequence = l->seq;
     s->t_ns = l->t_ns;
     s->cpu_ns = l->cpu_ns;

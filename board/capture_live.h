@@ -72,6 +72,7 @@ const float *hfs_capture_live_heights(const hfs_capture_live *l, int *width, int
 const hfs_camsky_out *hfs_capture_live_sky(const hfs_capture_live *l, uint64_t *serial);
 
 typedef struct hfs_capture_live_stats {
+    const char *name;         /* the section's NAME (valid while l is open) */
     uint32_t sequence;        /* the last converted frame                   */
     int64_t t_ns;             /* its capture time                            */
     int64_t cpu_ns;           /* thread CPU of the last drain (read, record, */

@@ -121,6 +121,7 @@ typedef struct replay_cap {
     int n, next;
     int64_t base_ns;          /* due time of frame 0 in this pass */
     int loop;
+    int pace_shown;           /* never skip: the clock waits for next() */
     uint8_t *buf;             /* the frame handed out */
     size_t frame_bytes;
     int have_seq;
@@ -246,7 +247,9 @@ static int r_next(hfs_capture *base, int64_t now_ns, hfs_capture_frame *out, hfs
         return 0;
     int i = c->next;
     long skipped = 0;
-    while (i + 1 < c->n && due(c, i + 1) <= now_ns) {
+    if (c->pace_shown)
+        c->base_ns += now_ns - due(c, i); /* late by that much: the clock waited */
+    while (!c->pace_shown && i + 1 < c->n && due(c, i + 1) <= now_ns) {
         skipped++;
         i++;
     }
@@ -335,6 +338,11 @@ int hfs_capture_replay_open(const char *dir, int64_t start_ns, int loop, hfs_cap
     }
     *out = &c->base;
     return HFS_OK;
+}
+
+void hfs_capture_replay_pace_shown(hfs_capture *base)
+{
+    ((replay_cap *)base)->pace_shown = 1;
 }
 
 int hfs_capture_replay_count(const hfs_capture *base)

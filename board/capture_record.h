@@ -41,6 +41,14 @@ int hfs_capture_record_close(hfs_capture_recorder *r, hfs_error *err);
  * a frame file of the wrong size is an error when it is due. */
 int hfs_capture_replay_open(const char *dir, int64_t start_ns, int loop, hfs_capture **out,
                             hfs_error *err);
+/* pace = shown (docs/CAPTURE.md): a frame is due no earlier than its
+ * recorded time AND one recorded interval after the previous one was
+ * returned, so frames are never superseded: a consumer that takes a frame
+ * and shows it before asking again (the kiosk's loop) shows every frame,
+ * however slow it is.  The replay's clock stops while a due frame waits:
+ * its time is when it was returned.  For tests and demos; a camera does not
+ * wait. */
+void hfs_capture_replay_pace_shown(hfs_capture *c);
 int hfs_capture_replay_count(const hfs_capture *c);
 /* The recording's format and size. */
 void hfs_capture_replay_format(const hfs_capture *c, hfs_pixfmt *format, int *width,

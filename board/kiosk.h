@@ -210,8 +210,9 @@ int kiosk_check_start(kiosk_check *c, const kiosk_opts *o, hfs_error *err);
  * the check has ended (c is idle again): *ok = it admitted the scene, msg =
  * its last line otherwise; 0 while it runs. */
 int kiosk_check_poll(kiosk_check *c, int *ok, char *msg, size_t size);
-/* Ends a running check (SIGKILL) and reaps it. */
-void kiosk_check_stop(kiosk_check *c);
+/* Ends a running check (SIGKILL) and reaps it: 1 when it was still
+ * running (it died of that SIGKILL), 0 when none ran or it had ended. */
+int kiosk_check_stop(kiosk_check *c);
 
 typedef struct kiosk {
     kiosk_opts opt;

@@ -140,16 +140,21 @@ int kiosk_check_poll(kiosk_check *c, int *ok, char *msg, size_t size)
     return 1;
 }
 
-void kiosk_check_stop(kiosk_check *c)
+int kiosk_check_stop(kiosk_check *c)
 {
+    int killed = 0;
     if (c->pid > 0) {
         kill(c->pid, SIGKILL);
-        while (waitpid(c->pid, NULL, 0) < 0 && errno == EINTR)
+        int st = 0;
+        while (waitpid(c->pid, &st, 0) < 0 && errno == EINTR)
             ;
+        /* Killed here, not ended by itself: it was still checking. */
+        killed = WIFSIGNALED(st) && WTERMSIG(st) == SIGKILL;
     }
     if (c->fd >= 0)
         close(c->fd);
     c->pid = 0;
     c->fd = -1;
     c->again = 0;
+    return killed;
 }

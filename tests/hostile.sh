@@ -455,9 +455,16 @@ kiosk_session reload_alternating refused good refused good bad good fifo good
 kiosk_session term_only
 
 # SIGTERM while a reload is being checked (issue 13): the check runs in a
-# child process (board/kiosk_check.c), so the kiosk ends within a second even
-# when the new scene's admission frame takes many (a 1536^2 field), exit 0,
-# and the child does not outlive it.
+# child process (board/kiosk_check.c), so the kiosk ends without waiting for
+# it, however long the new scene's admission frame takes (a 1536^2 field),
+# exit 0, and the child does not outlive it.  Promptness is shown by the
+# order of events, not by a wall-clock budget a loaded machine misses: the
+# kiosk names the check's process ("SIGHUP: checking ... in process PID"),
+# the test stops that process (SIGSTOP: the check can then never end by
+# itself), and on SIGTERM the kiosk must say "exiting", then that it
+# stopped the check still running, with no reload verdict before it.  A
+# kiosk that waited for the check would never exit: the 60 s below only
+# tells such a hang from a slow exit (measured: well under 1 s, idle).
 if [ -z "$ONLY" ] || [ "$ONLY" = kiosk ]; then
     cases=$((cases + 1)); n_class[kiosk]=$(( ${n_class[kiosk]:-0} + 1 ))
     "$HFGEN" fractal --size 1536x1536 -o "$in/big.pfm" >/dev/null
@@ -465,27 +472,38 @@ if [ -z "$ONLY" ] || [ "$ONLY" = kiosk ]; then
     cp "$in/good.ini" "$in/live.ini"
     : >"$w.klog" # as kiosk_session: no stale "started"
     HFS_GL_STRICT_LIMITS=1 "$KIOSK" "$in/live.ini" --display headless 2>"$w.klog" &
-    pid=$! why=""
-    for _ in $(seq 50); do grep -q started "$w.klog" && break; sleep 0.1; done
+    pid=$! why="" cpid=""
+    for _ in $(seq 600); do grep -q started "$w.klog" && break; sleep 0.1; done
     grep -q started "$w.klog" || why="did not start"
     cp "$in/big.ini" "$in/live.ini"
     kill -HUP $pid 2>/dev/null
-    sleep 0.5
-    t0=$(date +%s%N)
+    for _ in $(seq 600); do
+        cpid=$(sed -n 's/.*SIGHUP: checking .* in process \([0-9]*\)$/\1/p' "$w.klog")
+        [ -n "$cpid" ] && break; sleep 0.1
+    done
+    if [ -z "$cpid" ]; then
+        why="$why; no check process named"
+    elif ! kill -STOP "$cpid" 2>/dev/null; then
+        why="$why; the check (process $cpid) ended before it could be held"
+    fi
     kill -TERM $pid 2>/dev/null
-    for _ in $(seq 20); do kill -0 $pid 2>/dev/null || break; sleep 0.05; done
-    if kill -0 $pid 2>/dev/null; then why="$why still running 1 s after SIGTERM"; kill -KILL $pid; fi
+    for _ in $(seq 600); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+    if kill -0 $pid 2>/dev/null; then why="$why; still running 60 s after SIGTERM"; kill -KILL $pid; fi
     wait $pid; rc=$?
     [ -n "$why" ] || [ $rc -eq 0 ] || why="exit status $rc"
-    sleep 0.2
-    if pgrep -f -- "$in/live.ini --check" >/dev/null; then
-        why="$why; the reload check outlived the kiosk"; pkill -KILL -f -- "$in/live.ini --check"
+    # The events after the check's start: exiting, then the check stopped.
+    events=$(sed -n '/SIGHUP: checking/,$p' "$w.klog" | sed 's/^hfshade-kiosk: //' |
+             grep -E 'reloaded|reload failed|exiting|was still running' | tr '\n' '|')
+    want="Terminated: exiting|the check in process $cpid was still running: stopped|"
+    [ -n "$why" ] || [ "$events" = "$want" ] || why="events after the check began: $events"
+    if [ -n "$cpid" ] && kill -0 "$cpid" 2>/dev/null; then
+        why="$why; the reload check outlived the kiosk"; kill -KILL "$cpid"
     fi
     if [ -n "$why" ]; then
         fails=$((fails + 1)); fail_class[kiosk]=$(( ${fail_class[kiosk]:-0} + 1 ))
-        echo "FAIL [kiosk/term_during_reload_check]: $why"; tail -3 "$w.klog" | sed 's/^/     log: /'
+        echo "FAIL [kiosk/term_during_reload_check]: ${why#; }"; tail -3 "$w.klog" | sed 's/^/     log: /'
     else
-        echo "ok   [kiosk/term_during_reload_check] $(( ($(date +%s%N) - t0) / 1000000 )) ms to exit"
+        echo "ok   [kiosk/term_during_reload_check] exited during the check (process $cpid stopped)"
     fi
     rm -f "$in/big.pfm" "$in/big.ini"
 fi

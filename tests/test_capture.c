@@ -232,6 +232,20 @@ static void test_replay(const char *tmp)
     hfs_synth_frame(&d, 2, depth, NULL);
     CHECK(fr.width == 32 && fr.height == 24 && !memcmp(fr.data, depth, 32 * 24 * 2),
           "bytes as recorded");
+    /* pace = shown: the frame due, never a newer one; the clock waited. */
+    hfs_capture *p = NULL;
+    CHECK(hfs_capture_replay_open(dir, 100, 0, &p, &err) == 0, "replay: %s", err.msg);
+    if (p) {
+        hfs_capture_replay_pace_shown(p);
+        const int64_t late = 100 + 70000000;
+        CHECK(hfs_capture_next(p, late, &fr, &err) == 1 && fr.sequence == 0 &&
+                  p->superseded == 0 && fr.t_ns == late, "paced: frame %u at %lld", fr.sequence,
+              (long long)fr.t_ns);
+        CHECK(hfs_capture_deadline(p) == late + 33333333, "paced: next one interval later");
+        CHECK(hfs_capture_next(p, INT64_MAX / 2, &fr, &err) == 1 && fr.sequence == 1 &&
+                  p->superseded == 0 && !p->finished, "paced: frame %u", fr.sequence);
+        hfs_capture_destroy(p);
+    }
     snprintf(path, sizeof path, "%s/frame-000003.raw", dir);
     CHECK(truncate(path, 100) == 0, "truncate");
     CHECK(hfs_capture_next(c, 100 + 100000000, &fr, &err) == HFS_E_FORMAT &&

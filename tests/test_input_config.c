@@ -175,9 +175,11 @@ static const bad_case bad[] = {
     {"bad_capture_plane.ini", HFS_E_FORMAT, ":4: plane: '0 0' is not 'auto' or A B C (metres; "
      "C > 0)"},
     {"bad_capture_key.ini", HFS_E_FORMAT, ":4: unknown capture key 'zoom' (known: device, "
-     "replay, loop, format, size, rate, buffers, role, depth_scale, min_depth, max_depth, "
+     "replay, loop, pace, format, size, rate, buffers, role, depth_scale, min_depth, max_depth, "
      "plane, roi, grid, zgain, window, gate_mm, hysteresis_mm, jump_mm, mapping, center, "
      "radius, fov, rotate, hemisphere, transfer, exposure, env_size, smoothing, env_lights)"},
+    {"bad_capture_pace.ini", HFS_E_FORMAT, ":4: pace: 'fast' is not time or shown"},
+    {"bad_capture_pace_device.ini", HFS_E_FORMAT, ":4: pace: applies to replay"},
     {"missing.ini", HFS_E_IO, ": cannot open input configuration: No such file or directory"},
 };
 
@@ -192,7 +194,8 @@ static void capture_only(void)
     const hfs_capture_config *c = &cfg.captures.c[0];
     const hfs_depth_params *p = &c->depth;
     CHECK(cfg.n_controls == 0 && cfg.captures.n == 1 && !strcmp(c->name, "cam") &&
-              !strcmp(c->replay, "rec") && c->loop && c->width == 512 && c->height == 384 &&
+              !strcmp(c->replay, "rec") && c->loop && c->pace_shown && c->width == 512 &&
+              c->height == 384 &&
               c->role == HFS_ROLE_HEIGHTS && c->format == HFS_PIX_Z16 && c->config_line == 2,
           "capture_only: the section");
     CHECK(p->roi[2] == 512 && p->grid_w == 128 && p->grid_h == 96 && p->plane_set &&
