@@ -141,6 +141,7 @@ add_library(hfs_gles STATIC
   ${CMAKE_CURRENT_LIST_DIR}/wedge_textures.c
   ${CMAKE_CURRENT_LIST_DIR}/albedo_texture.c
   ${CMAKE_CURRENT_LIST_DIR}/block_texture.c
+  ${CMAKE_CURRENT_LIST_DIR}/pass_common.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_table.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_terrain.c
   ${CMAKE_CURRENT_LIST_DIR}/pass_env_horizons.c
