@@ -58,10 +58,10 @@ cycles=$(nm -A "${libs[@]}" 2>/dev/null | awk -v prefix="$build/" '
             size++
         } while (w != v)
         if (size > 1)
-            report(v, members)
+            report(v, members, size)
     }
-    function report(root, members,   i, j, a, b) {
-        printf "cycle of %s:%s\n  calls inside it:\n", root, members
+    function report(root, members, size,   i, j, a, b) {
+        printf "cycle of %d files:%s\n  calls inside it:\n", size, members
         for (i = 1; i <= n_nodes; i++) {
             a = order[i]
             if (member[a] != root) continue
