@@ -1,8 +1,9 @@
 # install.cmake — what `cmake --install` puts where (docs/INSTALL.md), in four
 # components, one Debian package each (cmake/package.cmake):
 #   runtime  libhfshade.so.MAJOR.MINOR.PATCH and its SONAME link   libhfshade0
-#   dev      include/hfshade/{hfshade.h,hfshade_version.h}, the .so link,
-#            lib/pkgconfig/hfshade.pc, lib/cmake/hfshade/              libhfshade-dev
+#   dev      include/hfshade/{hfshade.h,hfshade_inputs.h,hfshade_version.h},
+#            the .so link, lib/pkgconfig/hfshade.pc, lib/cmake/hfshade/
+#                                                                  libhfshade-dev
 #   tools    bin/{hfshade,hfgen,hfbench}                           hfshade-tools
 #   kiosk    bin/{hfshade-kiosk,hfs-capture-info,hfs-capture-synth},
 #            SYSCONFDIR/hfshade/{kiosk.ini,demo.ini}, the systemd unit,

@@ -42,5 +42,5 @@ target_include_directories(hfshade_shared INTERFACE
   $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/hfshade>
   $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 # The public headers, installed to include/hfshade/ (cmake/install.cmake).
-set(HFS_PUBLIC_HEADERS ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.h
+set(HFS_PUBLIC_HEADERS ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.h ${CMAKE_CURRENT_SOURCE_DIR}/hfshade_inputs.h
     ${HFS_GENERATED_INCLUDE}/hfshade_version.h CACHE INTERNAL "Installed headers")

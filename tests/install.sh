@@ -33,7 +33,7 @@ libdir=$(sed -n 's/^libdir=${prefix}\///p' "$pc")   # lib or lib/<triplet>
 
 # 1. places
 for f in "$libdir/libhfshade.so.$version" "$libdir/libhfshade.so.$major" "$libdir/libhfshade.so" \
-         include/hfshade/hfshade.h include/hfshade/hfshade_version.h \
+         include/hfshade/hfshade.h include/hfshade/hfshade_inputs.h include/hfshade/hfshade_version.h \
          "$libdir/pkgconfig/hfshade.pc" "$libdir/cmake/hfshade/hfshadeConfig.cmake" \
          "$libdir/cmake/hfshade/hfshadeConfigVersion.cmake" "$libdir/cmake/hfshade/hfshadeTargets.cmake" \
          bin/hfshade bin/hfgen bin/hfbench bin/hfshade-kiosk bin/hfs-capture-info bin/hfs-capture-synth \

@@ -44,7 +44,8 @@ expect_files() { # PACKAGE FILE... : exactly these files (and links), and its do
 libdir=$(files libhfshade-dev | sed -n 's|^\(.*\)/pkgconfig/hfshade.pc$|\1|p')
 case $libdir in /usr/lib|/usr/lib/*-linux-*) ;; *) bad "libdir '$libdir' is not /usr/lib[/triplet]" ;; esac
 expect_files "libhfshade$major" "$libdir/libhfshade.so.$major" "$libdir/libhfshade.so.$version"
-expect_files libhfshade-dev /usr/include/hfshade/hfshade.h /usr/include/hfshade/hfshade_version.h \
+expect_files libhfshade-dev /usr/include/hfshade/hfshade.h /usr/include/hfshade/hfshade_inputs.h \
+    /usr/include/hfshade/hfshade_version.h \
     "$libdir/libhfshade.so" "$libdir/pkgconfig/hfshade.pc" \
     "$libdir/cmake/hfshade/hfshadeConfig.cmake" "$libdir/cmake/hfshade/hfshadeConfigVersion.cmake" \
     "$libdir/cmake/hfshade/hfshadeTargets.cmake" \

@@ -113,6 +113,97 @@ void hfs_cpu_local_destroy(hfs_cpu_local *lc)
     free(lc);
 }
 
+/* The local lights that contribute, with their radiance and whether they
+ * lie beyond the terrain's shadow range. */
+static void take_sources(hfs_cpu_local *lc, const hfs_field *f, const hfs_lighting *l)
+{
+    hfs_field_extent ext;
+    hfs_field_extent_make(f, &ext);
+    for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i) {
+        if (!hfs_local_light_contributes(&l->local[i]))
+            continue;
+        local_src *s = &lc->src[lc->n_src++];
+        s->light = l->local[i];
+        s->open = hfs_local_light_open(&ext, &l->local[i]);
+        for (int ch = 0; ch < 3; ++ch)
+            s->le[ch] = l->local[i].radiance[ch];
+    }
+}
+
+/* The horizon scales and their world distances, the full swath's nphi
+ * directions (snapped, with their SH weights), and what the row pass and
+ * the wedge-table path read in those directions. */
+static int make_directions(hfs_cpu_local *lc, const hfs_field *f, const hfs_quality *q,
+                           const hfs_cpu_pyramid *p, hfs_error *err)
+{
+    int rc;
+    if ((rc = hfs_horizon_scales_create(p, f->dx, f->zscale, q->offset, &lc->scales, err)))
+        return rc;
+    const int n = hfs_horizon_scales_count(lc->scales);
+    lc->n_levels = n;
+    lc->dist_world = malloc((size_t)n * sizeof *lc->dist_world);
+    const int nphi = lc->nphi;
+    lc->full.n = nphi;
+    lc->full.full = 1;
+    lc->full.phi0 = 0.0;
+    lc->full.dphi = 2.0 * PI / nphi;
+    lc->full_cs = malloc((size_t)nphi * 2 * sizeof *lc->full_cs);
+    lc->full_A = malloc((size_t)nphi * HFS_SH_N * sizeof *lc->full_A);
+    double *phi = malloc((size_t)nphi * sizeof *phi);
+    if (!lc->dist_world || !lc->full_cs || !lc->full_A || !phi) {
+        free(phi);
+        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
+    }
+    for (int s = 0; s < n; ++s)
+        lc->dist_world[s] = hfs_horizon_scales_dist(lc->scales, s) * f->dx;
+    for (int k = 0; k < nphi; ++k) {
+        phi[k] = lc->full.phi0 + k * lc->full.dphi;
+        hfs_horizon_snap_dir(phi[k], &lc->full_cs[2 * k], &lc->full_cs[2 * k + 1]);
+        hfs_local_sample_weights(&lc->full, k, lc->full_A + (size_t)k * HFS_SH_N);
+    }
+    if (lc->row_pass)
+        rc = hfs_horizon_plan_create(p, f->dx, f->zscale, q->offset, phi, nphi, &lc->plan, err);
+    free(phi);
+    if (rc)
+        return rc;
+    if (lc->path == HFS_VIS_WEDGE_TABLE) {
+        hfs_swath sw;
+        hfs_swath_full(nphi, &sw);
+        return hfs_visibility_create(&sw, HFS_VIS_WEDGE_TABLE, &lc->tables, err);
+    }
+    return HFS_OK;
+}
+
+/* Each worker's scratch: the row pass's horizons (full mode or tables)
+ * and the per-sample arrays. */
+static int alloc_scratch(hfs_cpu_local *lc, hfs_error *err)
+{
+    lc->scratch = calloc((size_t)lc->threads, sizeof *lc->scratch);
+    if (!lc->scratch)
+        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
+    const size_t w = (size_t)lc->w, nn = (size_t)lc->n_levels, np = (size_t)lc->nphi;
+    for (int t = 0; t < lc->threads; ++t) {
+        local_scratch *s = &lc->scratch[t];
+        if (lc->row_pass) {
+            s->om = malloc(np * nn * w * sizeof *s->om);
+            s->co = malloc(np * nn * w * sizeof *s->co);
+            s->si = malloc(np * nn * w * sizeof *s->si);
+            s->floors = malloc(np * w * sizeof *s->floors);
+            if (!s->om || !s->co || !s->si || !s->floors)
+                return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for local-light "
+                                "horizons (%d workers)", lc->threads);
+        }
+        s->slope = malloc(nn * sizeof *s->slope);
+        s->in_grid = malloc(nn * sizeof *s->in_grid);
+        s->lv_omega = malloc(nn * sizeof *s->lv_omega);
+        s->om_k = malloc(np * sizeof *s->om_k);
+        s->fl_k = malloc(np * sizeof *s->fl_k);
+        if (!s->slope || !s->in_grid || !s->lv_omega || !s->om_k || !s->fl_k)
+            return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
+    }
+    return HFS_OK;
+}
+
 int hfs_cpu_local_create(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                          const hfs_cpu_local_options *opt, const hfs_cpu_pyramid *p,
                          int threads, hfs_cpu_local **out, hfs_error *err)
@@ -133,7 +224,6 @@ int hfs_cpu_local_create(const hfs_field *f, const hfs_lighting *l, const hfs_qu
     hfs_cpu_local *lc = calloc(1, sizeof *lc);
     if (!lc)
         return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
-    int rc = HFS_OK;
     lc->f = f;
     lc->w = f->width;
     lc->h = f->height;
@@ -146,90 +236,14 @@ int hfs_cpu_local_create(const hfs_field *f, const hfs_lighting *l, const hfs_qu
     hfs_gloss_make(l, &lc->gloss);
     hfs_zh_clamped_cosine(lc->h_zonal);
     hfs_wedge_elevation_moments(lc->E);
-    hfs_field_extent ext;
-    hfs_field_extent_make(f, &ext);
-    for (int i = 0; i < l->n_local && i < HFS_MAX_LOCAL_LIGHTS; ++i) {
-        if (!hfs_local_light_contributes(&l->local[i]))
-            continue;
-        local_src *s = &lc->src[lc->n_src++];
-        s->light = l->local[i];
-        s->open = hfs_local_light_open(&ext, &l->local[i]);
-        for (int ch = 0; ch < 3; ++ch)
-            s->le[ch] = l->local[i].radiance[ch];
-    }
-
-    if ((rc = hfs_horizon_scales_create(p, f->dx, f->zscale, q->offset, &lc->scales, err)))
-        goto fail;
-    const int n = hfs_horizon_scales_count(lc->scales);
-    lc->n_levels = n;
-    lc->dist_world = malloc((size_t)n * sizeof *lc->dist_world);
-    const int nphi = lc->nphi;
-    lc->full.n = nphi;
-    lc->full.full = 1;
-    lc->full.phi0 = 0.0;
-    lc->full.dphi = 2.0 * PI / nphi;
-    lc->full_cs = malloc((size_t)nphi * 2 * sizeof *lc->full_cs);
-    lc->full_A = malloc((size_t)nphi * HFS_SH_N * sizeof *lc->full_A);
-    double *phi = malloc((size_t)nphi * sizeof *phi);
-    if (!lc->dist_world || !lc->full_cs || !lc->full_A || !phi) {
-        free(phi);
-        rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
-        goto fail;
-    }
-    for (int s = 0; s < n; ++s)
-        lc->dist_world[s] = hfs_horizon_scales_dist(lc->scales, s) * f->dx;
-    for (int k = 0; k < nphi; ++k) {
-        phi[k] = lc->full.phi0 + k * lc->full.dphi;
-        hfs_horizon_snap_dir(phi[k], &lc->full_cs[2 * k], &lc->full_cs[2 * k + 1]);
-        hfs_local_sample_weights(&lc->full, k, lc->full_A + (size_t)k * HFS_SH_N);
-    }
-    if (lc->row_pass)
-        rc = hfs_horizon_plan_create(p, f->dx, f->zscale, q->offset, phi, nphi, &lc->plan, err);
-    free(phi);
-    if (rc)
-        goto fail;
-    if (lc->path == HFS_VIS_WEDGE_TABLE) {
-        hfs_swath sw;
-        hfs_swath_full(nphi, &sw);
-        if ((rc = hfs_visibility_create(&sw, HFS_VIS_WEDGE_TABLE, &lc->tables, err)))
-            goto fail;
-    }
-
-    lc->scratch = calloc((size_t)threads, sizeof *lc->scratch);
-    if (!lc->scratch) {
-        rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
-        goto fail;
-    }
-    const size_t w = (size_t)lc->w, nn = (size_t)n, np = (size_t)nphi;
-    for (int t = 0; t < threads; ++t) {
-        local_scratch *s = &lc->scratch[t];
-        if (lc->row_pass) {
-            s->om = malloc(np * nn * w * sizeof *s->om);
-            s->co = malloc(np * nn * w * sizeof *s->co);
-            s->si = malloc(np * nn * w * sizeof *s->si);
-            s->floors = malloc(np * w * sizeof *s->floors);
-            if (!s->om || !s->co || !s->si || !s->floors) {
-                rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for local-light "
-                              "horizons (%d workers)", threads);
-                goto fail;
-            }
-        }
-        s->slope = malloc(nn * sizeof *s->slope);
-        s->in_grid = malloc(nn * sizeof *s->in_grid);
-        s->lv_omega = malloc(nn * sizeof *s->lv_omega);
-        s->om_k = malloc(np * sizeof *s->om_k);
-        s->fl_k = malloc(np * sizeof *s->fl_k);
-        if (!s->slope || !s->in_grid || !s->lv_omega || !s->om_k || !s->fl_k) {
-            rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
-            goto fail;
-        }
+    take_sources(lc, f, l);
+    int rc = make_directions(lc, f, q, p, err);
+    if (rc || (rc = alloc_scratch(lc, err))) {
+        hfs_cpu_local_destroy(lc);
+        return rc;
     }
     *out = lc;
     return HFS_OK;
-
-fail:
-    hfs_cpu_local_destroy(lc);
-    return rc;
 }
 
 /* Full mode: per-scale horizons of row j in the fixed directions, with the
@@ -391,6 +405,102 @@ static void add_spec(double *sp, double w, const local_src *src)
 
 /* One light at one receiver: adds to lo[3] and, when glossy (r: R with
  * N.R = nr > 0), to sp[3] (may be NULL). */
+/* The visible fraction of the light's cap as seen from receiver (i, j)
+ * (normal n, H(N) hn): the swath's samples, each with its window, floor
+ * and horizons, summed in the Legendre bands or through the wedge tables,
+ * in the ratio form (num / den). */
+static double cap_visible_ratio(const hfs_cpu_local *lc, local_scratch *s,
+                                const hfs_local_view *lv, int i, int j, const double n[3],
+                                const double hn[HFS_SH_N])
+{
+    double zh[HFS_ZH_N], l_sh[HFS_SH_N], m[HFS_SH_N];
+    hfs_zh_cap(lv->alpha, zh);
+    hfs_sh_rotate_zonal(zh, lv->dir[0], lv->dir[1], lv->dir[2], l_sh);
+    hfs_sh_product(hn, l_sh, m);
+
+    hfs_local_swath sw;
+    hfs_local_swath_make(lv, lc->nphi, lc->mode, lc->path, &sw);
+    const int use_rows = sw.full && lc->row_pass;
+    /* Every sample meets the cap when the swath is partial or the light covers
+     * every azimuth: exact per-sample windows.  Otherwise the key-light
+     * window (a full swath around a light that does not surround). */
+    const int exact_window = !sw.full || lv->surround;
+    double glo = lv->elev_l - lv->alpha, ghi = lv->elev_l + lv->alpha;
+    glo = glo < -HALF_PI ? -HALF_PI : glo;
+    ghi = ghi > HALF_PI ? HALF_PI : ghi;
+    /* Farthest horizontal distance that can lie in front of the light: an
+     * entry point (on the sphere: <= rho_h + r) or a closest approach (<= d). */
+    const double reach = exact_window ? fmin(lv->d, lv->rho_h + lv->r) : lv->d;
+    const int nl = lc->n_levels;
+    int s_lo = 0; /* first scale within reach (distances fall with the index) */
+    while (s_lo < nl && lc->dist_world[s_lo] > reach)
+        ++s_lo;
+
+    hfs_local_hat hats[3];
+    if (!sw.full)
+        hfs_local_swath_hats(&sw, hats);
+    double num = 0.0, den = 0.0, den_scale = 0.0;
+    for (int k = 0; k < sw.n; ++k) {
+        double c, sn;
+        const double phi = sw.phi0 + k * sw.dphi;
+        if (sw.full) {
+            c = lc->full_cs[2 * k];
+            sn = lc->full_cs[2 * k + 1];
+        } else {
+            hfs_horizon_snap_dir(phi, &c, &sn);
+        }
+        clamp_trig ct = {0};
+        int has_window = 1;
+        if (exact_window)
+            has_window = hfs_local_cap_window(lv, c, sn, &ct.lo, &ct.hi);
+        else
+            ct.lo = glo, ct.hi = ghi;
+        const int tables = lc->path == HFS_VIS_WEDGE_TABLE;
+        if (!has_window) {
+            if (!tables)
+                continue; /* empty band: contributes 0 to num and den */
+            ct.lo = glo;  /* tables have no window; it only orients the */
+            ct.hi = ghi;  /* distance test below                          */
+        }
+        const double floor = use_rows ? s->floors[(size_t)k * lc->w + i]
+                                      : hfs_horizon_floor(n, c, sn);
+        /* With an exact window every ray tested enters the sphere, at a
+         * point of the sphere's section by this azimuth's half-plane, whose
+         * horizontal extent is [u - g, u + g]: scales nearer than u - g
+         * certainly count, scales beyond u + g certainly do not (the same
+         * decisions as the entry test, made without it). */
+        double t_near = -1.0;
+        int k_lo = s_lo;
+        if (exact_window) {
+            const double u = c * lv->v[0] + sn * lv->v[1], wp = -sn * lv->v[0] + c * lv->v[1];
+            const double g = sqrt(fmax(0.0, lv->r * lv->r - wp * wp));
+            t_near = u - g;
+            while (k_lo < nl && lc->dist_world[k_lo] > u + g)
+                ++k_lo;
+        }
+        double *om = s->lv_omega;
+        scale_angles(lc, s, lv, &ct, use_rows, i, j, k, c, sn, floor, t_near, k_lo, om);
+        const double omega = hfs_horizon_bspline_max(om, nl, 1, floor);
+        if (tables) {
+            s->om_k[k] = omega;
+            s->fl_k[k] = floor;
+            continue;
+        }
+        double sums[3] = {num, den, den_scale};
+        legendre_sums(lc, &sw, hats, m, k, c, sn, omega, floor, &ct, sums);
+        num = sums[0], den = sums[1], den_scale = sums[2];
+    }
+    if (lc->path == HFS_VIS_WEDGE_TABLE) {
+        double vk[HFS_SH_N], vo[HFS_SH_N];
+        hfs_visibility_eval(lc->tables, s->om_k, vk);
+        hfs_visibility_eval(lc->tables, s->fl_k, vo);
+        num = hfs_sh_dot(vk, m);
+        den = hfs_sh_dot(vo, m);
+        den_scale = sqrt(hfs_sh_dot(m, m) * hfs_sh_dot(vo, vo));
+    }
+    return visible_ratio(num, den, den_scale);
+}
+
 static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *src, int i,
                   int j, const double p[3], const double n[3], const double hn[HFS_SH_N],
                   const double r[3], double nr, double lo[3], double *sp)
@@ -418,92 +528,7 @@ static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *sr
         return;
     }
 
-    double zh[HFS_ZH_N], l_sh[HFS_SH_N], m[HFS_SH_N];
-    hfs_zh_cap(lv.alpha, zh);
-    hfs_sh_rotate_zonal(zh, lv.dir[0], lv.dir[1], lv.dir[2], l_sh);
-    hfs_sh_product(hn, l_sh, m);
-
-    hfs_local_swath sw;
-    hfs_local_swath_make(&lv, lc->nphi, lc->mode, lc->path, &sw);
-    const int use_rows = sw.full && lc->row_pass;
-    /* Every sample meets the cap when the swath is partial or the light covers
-     * every azimuth: exact per-sample windows.  Otherwise the key-light
-     * window (a full swath around a light that does not surround). */
-    const int exact_window = !sw.full || lv.surround;
-    double glo = lv.elev_l - lv.alpha, ghi = lv.elev_l + lv.alpha;
-    glo = glo < -HALF_PI ? -HALF_PI : glo;
-    ghi = ghi > HALF_PI ? HALF_PI : ghi;
-    /* Farthest horizontal distance that can lie in front of the light: an
-     * entry point (on the sphere: <= rho_h + r) or a closest approach (<= d). */
-    const double reach = exact_window ? fmin(lv.d, lv.rho_h + lv.r) : lv.d;
-    const int nl = lc->n_levels;
-    int s_lo = 0; /* first scale within reach (distances fall with the index) */
-    while (s_lo < nl && lc->dist_world[s_lo] > reach)
-        ++s_lo;
-
-    hfs_local_hat hats[3];
-    if (!sw.full)
-        hfs_local_swath_hats(&sw, hats);
-    double num = 0.0, den = 0.0, den_scale = 0.0;
-    for (int k = 0; k < sw.n; ++k) {
-        double c, sn;
-        const double phi = sw.phi0 + k * sw.dphi;
-        if (sw.full) {
-            c = lc->full_cs[2 * k];
-            sn = lc->full_cs[2 * k + 1];
-        } else {
-            hfs_horizon_snap_dir(phi, &c, &sn);
-        }
-        clamp_trig ct = {0};
-        int has_window = 1;
-        if (exact_window)
-            has_window = hfs_local_cap_window(&lv, c, sn, &ct.lo, &ct.hi);
-        else
-            ct.lo = glo, ct.hi = ghi;
-        const int tables = lc->path == HFS_VIS_WEDGE_TABLE;
-        if (!has_window) {
-            if (!tables)
-                continue; /* empty band: contributes 0 to num and den */
-            ct.lo = glo;  /* tables have no window; it only orients the */
-            ct.hi = ghi;  /* distance test below                          */
-        }
-        const double floor = use_rows ? s->floors[(size_t)k * lc->w + i]
-                                      : hfs_horizon_floor(n, c, sn);
-        /* With an exact window every ray tested enters the sphere, at a
-         * point of the sphere's section by this azimuth's half-plane, whose
-         * horizontal extent is [u - g, u + g]: scales nearer than u - g
-         * certainly count, scales beyond u + g certainly do not (the same
-         * decisions as the entry test, made without it). */
-        double t_near = -1.0;
-        int k_lo = s_lo;
-        if (exact_window) {
-            const double u = c * lv.v[0] + sn * lv.v[1], wp = -sn * lv.v[0] + c * lv.v[1];
-            const double g = sqrt(fmax(0.0, lv.r * lv.r - wp * wp));
-            t_near = u - g;
-            while (k_lo < nl && lc->dist_world[k_lo] > u + g)
-                ++k_lo;
-        }
-        double *om = s->lv_omega;
-        scale_angles(lc, s, &lv, &ct, use_rows, i, j, k, c, sn, floor, t_near, k_lo, om);
-        const double omega = hfs_horizon_bspline_max(om, nl, 1, floor);
-        if (tables) {
-            s->om_k[k] = omega;
-            s->fl_k[k] = floor;
-            continue;
-        }
-        double sums[3] = {num, den, den_scale};
-        legendre_sums(lc, &sw, hats, m, k, c, sn, omega, floor, &ct, sums);
-        num = sums[0], den = sums[1], den_scale = sums[2];
-    }
-    if (lc->path == HFS_VIS_WEDGE_TABLE) {
-        double vk[HFS_SH_N], vo[HFS_SH_N];
-        hfs_visibility_eval(lc->tables, s->om_k, vk);
-        hfs_visibility_eval(lc->tables, s->fl_k, vo);
-        num = hfs_sh_dot(vk, m);
-        den = hfs_sh_dot(vo, m);
-        den_scale = sqrt(hfs_sh_dot(m, m) * hfs_sh_dot(vo, vo));
-    }
-    const double ratio = visible_ratio(num, den, den_scale);
+    const double ratio = cap_visible_ratio(lc, s, &lv, i, j, n, hn);
     const double scale = lc->rho / PI * e_cap * ratio;
     for (int ch = 0; ch < 3; ++ch)
         lo[ch] += scale * src->le[ch];

@@ -318,6 +318,89 @@ int hfs_cpu_render(const hfs_field *f, const hfs_lighting *l,
     return rc;
 }
 
+/* Workers: the quality's count (else the machine's), at most 64
+ * (hfs_parallel_rows' own cap) and at most one per row. */
+static int worker_count(const hfs_quality *q, int rows)
+{
+    int threads = q->threads > 0 ? q->threads : hfs_parallel_default_threads();
+    if (threads > 64)
+        threads = 64;
+    if (threads > rows)
+        threads = rows;
+    return threads;
+}
+
+/* What every row reads, built once per frame: the swath jobs, the pyramid
+ * (*pyr), the plans and visibility objects, the slices, the local lights,
+ * each worker's scratch and the glossy term.  On failure the caller frees
+ * what was built (free_frame). */
+static int build_frame(render_ctx *c, const hfs_lighting *l, const hfs_quality *q,
+                       const hfs_cpu_local_options *local_opt, int n_key, int n_local,
+                       int threads, hfs_cpu_pyramid **pyr, hfs_error *err)
+{
+    const hfs_field *f = c->f;
+    /* + 1: a frame may have local lights only (no swath job). */
+    c->jobs = calloc((size_t)(c->has_env + n_key) + 1, sizeof *c->jobs);
+    c->omega_at = calloc((size_t)(c->has_env + n_key) + 1, sizeof *c->omega_at);
+    if (!c->jobs || !c->omega_at)
+        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
+    hfs_cpu_ctx_add_jobs(c, l, q);
+
+    /* Pyramid, plans, visibility. */
+    const int n_levels = hfs_pyramid_level_count(c->w, c->h, q->k);
+    c->n_levels = n_levels;
+    c->refine = q->refine;
+    c->tie = tie_slope(f);
+    int rc = hfs_cpu_pyramid_create(f, q->k, hfs_pyramid_read_level(n_levels, q->k, q->offset, 0),
+                                    threads, pyr, err);
+    if (rc)
+        return rc;
+    int max_n = 1;
+    if ((rc = hfs_cpu_ctx_make_plans(c, *pyr, q, &max_n, err)))
+        return rc;
+    /* Slice lighting: the environment's slices; key lights keep Legendre. */
+    const int slice = q->visibility == HFS_VIS_SLICE;
+    if ((rc = hfs_cpu_ctx_build_all_visibility(c, slice ? HFS_VIS_LEGENDRE : q->visibility, threads, err)) ||
+        (rc = hfs_cpu_ctx_make_slices(c, l, q, *pyr, threads, err)))
+        return rc;
+
+    /* Local lights (issue 4): NULL when none contributes. */
+    if (n_local > 0) {
+        hfs_cpu_local *local = NULL;
+        rc = hfs_cpu_local_create(f, l, q, local_opt, *pyr, threads, &local, err);
+        if (rc)
+            return rc;
+        c->local = local;
+    }
+    if ((rc = hfs_cpu_ctx_alloc_scratch(c, threads, max_n, err)))
+        return rc;
+    if (c->gloss.on && !(c->spec = malloc((size_t)c->w * (size_t)c->h * 3 * sizeof *c->spec)))
+        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the glossy term");
+    return HFS_OK;
+}
+
+/* Frees what build_frame built (any part of it). */
+static void free_frame(render_ctx *c, int threads, hfs_cpu_pyramid *pyr)
+{
+    hfs_cpu_local_destroy((hfs_cpu_local *)c->local); /* local lights (issue 4) */
+    if (c->scratch)
+        for (int t = 0; t < threads; ++t)
+            hfs_cpu_ctx_free_scratch(&c->scratch[t]);
+    free(c->scratch);
+    for (int j = 0; j < c->n_jobs; ++j) {
+        hfs_horizon_plan_destroy(c->jobs[j].plan);
+        if (c->jobs[j].vis_of < 0)
+            hfs_visibility_destroy(c->jobs[j].vis);
+    }
+    hfs_cpu_far_destroy(c->far);
+    hfs_slice_table_free(&c->slices);
+    hfs_map_slices_free(&c->map_slices);
+    free(c->spec);
+    free(c->jobs);
+    free(c->omega_at);
+    hfs_cpu_pyramid_destroy(pyr);
+}
+
 int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                         const hfs_cpu_local_options *local_opt, hfs_image *out,
                         hfs_progress_fn progress, void *user, hfs_error *err)
@@ -338,13 +421,7 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     c.h = h;
     c.rho_pi = l->albedo / PI;
     hfs_zh_clamped_cosine(c.h_zonal);
-    hfs_cpu_pyramid *pyr = NULL;
-    int threads = q->threads > 0 ? q->threads : hfs_parallel_default_threads();
-    if (threads > 64)
-        threads = 64; /* hfs_parallel_rows' own cap */
-    if (threads > h)
-        threads = h;
-    int rc = HFS_OK;
+    const int threads = worker_count(q, h);
 
     /* Which lights contribute. */
     const int has_env = hfs_env_contributes(l);
@@ -363,70 +440,14 @@ int hfs_cpu_render_with(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     }
 
     c.has_env = has_env;
-    /* + 1: a frame may have local lights only (no swath job). */
-    c.jobs = calloc((size_t)(has_env + n_key) + 1, sizeof *c.jobs);
-    c.omega_at = calloc((size_t)(has_env + n_key) + 1, sizeof *c.omega_at);
-    if (!c.jobs || !c.omega_at) {
-        rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory");
-        goto done;
+    hfs_cpu_pyramid *pyr = NULL;
+    const int rc = build_frame(&c, l, q, local_opt, n_key, n_local, threads, &pyr, err);
+    if (!rc) {
+        hfs_parallel_rows(h, threads, render_row, &c, progress, user);
+        hfs_albedo_map_apply(l->albedo_map, out);
+        for (size_t p = 0; c.spec && p < (size_t)w * (size_t)h * 3; ++p)
+            out->rgb[p] += c.spec[p]; /* the lobe is not the albedo's */
     }
-    hfs_cpu_ctx_add_jobs(&c, l, q);
-
-    /* Pyramid, plans, visibility. */
-    const int n_levels = hfs_pyramid_level_count(w, h, q->k);
-    c.n_levels = n_levels;
-    c.refine = q->refine;
-    c.tie = tie_slope(f);
-    rc = hfs_cpu_pyramid_create(f, q->k, hfs_pyramid_read_level(n_levels, q->k, q->offset, 0),
-                                threads, &pyr, err);
-    if (rc)
-        goto done;
-    int max_n = 1;
-    if ((rc = hfs_cpu_ctx_make_plans(&c, pyr, q, &max_n, err)))
-        goto done;
-    /* Slice lighting: the environment's slices; key lights keep Legendre. */
-    const int slice = q->visibility == HFS_VIS_SLICE;
-    if ((rc = hfs_cpu_ctx_build_all_visibility(&c, slice ? HFS_VIS_LEGENDRE : q->visibility, threads, err)) ||
-        (rc = hfs_cpu_ctx_make_slices(&c, l, q, pyr, threads, err)))
-        goto done;
-
-    /* Local lights (issue 4): NULL when none contributes. */
-    hfs_cpu_local *local = NULL;
-    if (n_local > 0) {
-        rc = hfs_cpu_local_create(f, l, q, local_opt, pyr, threads, &local, err);
-        if (rc)
-            goto done;
-        c.local = local;
-    }
-    if ((rc = hfs_cpu_ctx_alloc_scratch(&c, threads, max_n, err)))
-        goto done;
-
-    if (c.gloss.on && !(c.spec = malloc((size_t)w * (size_t)h * 3 * sizeof *c.spec))) {
-        rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the glossy term");
-        goto done;
-    }
-    hfs_parallel_rows(h, threads, render_row, &c, progress, user);
-    hfs_albedo_map_apply(l->albedo_map, out);
-    for (size_t p = 0; c.spec && p < (size_t)w * (size_t)h * 3; ++p)
-        out->rgb[p] += c.spec[p]; /* the lobe is not the albedo's */
-
-done:
-    hfs_cpu_local_destroy((hfs_cpu_local *)c.local); /* local lights (issue 4) */
-    if (c.scratch)
-        for (int t = 0; t < threads; ++t)
-            hfs_cpu_ctx_free_scratch(&c.scratch[t]);
-    free(c.scratch);
-    for (int j = 0; j < c.n_jobs; ++j) {
-        hfs_horizon_plan_destroy(c.jobs[j].plan);
-        if (c.jobs[j].vis_of < 0)
-            hfs_visibility_destroy(c.jobs[j].vis);
-    }
-    hfs_cpu_far_destroy(c.far);
-    hfs_slice_table_free(&c.slices);
-    hfs_map_slices_free(&c.map_slices);
-    free(c.spec);
-    free(c.jobs);
-    free(c.omega_at);
-    hfs_cpu_pyramid_destroy(pyr);
+    free_frame(&c, threads, pyr);
     return rc;
 }

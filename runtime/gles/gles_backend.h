@@ -7,6 +7,8 @@
  *   gles_frame.c     one frame: limits, resources, the plan, the loop over
  *                    the pass table
  *   pass_*.c         the passes (pass.h), one file each
+ *   pass_common.c    what the passes share (scratch, stage timing, grid
+ *                    inputs and draws), below them: never calls a pass
  *   resources.c      textures and framebuffers
  *   programs.c       the program cache (programs.def)
  *   wedge_textures.c the table path's wedge tables as textures
@@ -183,7 +185,8 @@ int hfs_gles_lit_texture_black(hfs_gles *g, int w, int h, const hfs_lit_texture_
 int hfs_gles_lit_texture_hand_out(hfs_gles *g, hfs_lit_texture *out, hfs_error *err);
 void hfs_gles_lit_texture_free(hfs_gles *g);
 
-/* Scratch memory of at least `bytes`, kept between frames (NULL: none). */
+/* Scratch memory of at least `bytes`, kept between frames (NULL: none;
+ * pass_common.c, as are the stage timing and grid helpers below). */
 void *hfs_gles_scratch(hfs_gles *g, size_t bytes);
 /* One frame (gles_frame.c): fr holds the frame's lights. */
 int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err);
@@ -206,12 +209,12 @@ int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
 int hfs_gles_bind_env_far(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_program *prog,
                           hfs_error *err);
 
-/* Binds the textures every grid pass reads (levels, normals) and the
- * per-scale constants, and sets the grid uniforms. */
 /* The environment's swath (HfsSwath, or its block texture) for prog
  * (pass_env_horizons.c uploads it). */
 int hfs_gles_bind_env_swath(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_program *prog,
                             hfs_error *err);
+/* Binds the textures every grid pass reads (levels, normals) and the
+ * per-scale constants, and sets the grid uniforms. */
 int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
                               const hfs_gles_layout *L, hfs_error *err);
 /* env_slices.frag over the field into fbo: the transfer's occluded part

@@ -1,88 +1,14 @@
 /*
  * gles_frame.c — one GLES frame: the profile and its limits, the
  * resources, the plan (which passes and which of their instances run, and
- * why), then a loop over the pass table (pass.h).  Also the helpers the
- * passes share (grid inputs, layered draws, timing by stage).
+ * why), then a loop over the pass table (pass.h).  What the passes share
+ * is in pass_common.c, below them.
  */
 #include "gles_backend.h"
 
-#include "gl_util.h"
 #include "lights.h"
 
-#include <stdlib.h>
 #include <string.h>
-
-void *hfs_gles_scratch(hfs_gles *g, size_t bytes)
-{
-    if (bytes > g->scratch_cap) {
-        char *p = realloc(g->scratch, bytes);
-        if (!p)
-            return NULL;
-        g->scratch = p;
-        g->scratch_cap = bytes;
-    }
-    return g->scratch;
-}
-
-void hfs_gles_lit_targets(const hfs_gles *g, const hfs_gles_frame *fr, GLuint tex[2])
-{
-    const GLuint *t = fr->bounces > 0 ? g->bounce.fin : g->r.out;
-    tex[0] = t[0], tex[1] = t[1];
-}
-
-void hfs_gles_stage_begin(hfs_gles *g, hfs_gles_pass_id p, int stage)
-{
-    hfs_gles_timing_begin(&g->timing, &g->gl, g->stage_slot[p] + stage);
-}
-
-void hfs_gles_stage_end(hfs_gles *g, hfs_gles_pass_id p, int stage)
-{
-    hfs_gles_timing_end(&g->timing, &g->gl, g->stage_slot[p] + stage);
-}
-
-void hfs_gles_stage_fetches(hfs_gles *g, hfs_gles_pass_id p, int stage, double fetches)
-{
-    g->timing.fetch[g->stage_slot[p] + stage] += fetches;
-}
-
-int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
-                              const hfs_gles_layout *L, hfs_error *err)
-{
-    const hfs_gl *gl = &g->gl;
-    int rc;
-    if ((rc = hfs_gles_program_texture(gl, prog, "u_levels", GL_TEXTURE_2D_ARRAY, g->r.arr, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, g->r.normals, err)))
-        return rc;
-    hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
-    hfs_gles_set_i1(gl, prog, "u_sub", L->sub);
-    gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SCALES, g->ubo[HFS_UBO_SCALES]);
-    return HFS_OK;
-}
-
-int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, double *sum,
-                        hfs_error *err)
-{
-    float *px = hfs_gles_scratch(g, (size_t)L->vw * L->vh * 4 * sizeof(float));
-    if (!px)
-        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
-    int rc = hfs_gl_read_rgba(&g->gl, fbo, 0, 0, L->vw, L->vh, HFS_GL_READ_AUTO, px, NULL, err);
-    if (rc)
-        return rc;
-    for (size_t i = 0; i < (size_t)L->vw * L->vh; ++i)
-        *sum += px[4 * i] + 1024.0 * px[4 * i + 1];
-    return HFS_OK;
-}
-
-int hfs_gles_draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, GLuint tex,
-                              int layer0, int outs, const char *what, double *fetch_sum,
-                              hfs_error *err)
-{
-    int rc = hfs_gles_fbo_layers(&g->gl, fbo, tex, layer0, outs, what, err);
-    if (rc)
-        return rc;
-    hfs_gles_draw(&g->gl, fbo, L->vw, L->vh);
-    return fetch_sum ? hfs_gles_sum_counts(g, L, fbo, fetch_sum, err) : HFS_OK;
-}
 
 /* The profile, the layout, and every limit the frame must meet (each
  * pass's own through its layout hook), before anything is allocated. */

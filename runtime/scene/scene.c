@@ -1,6 +1,8 @@
 /*
  * scene.c — the scene keys: one setter for file and flags, driven by the
- * table of scene keys (runtime/core/scene_keys.h).
+ * table of scene keys (runtime/core/scene_keys.h).  It reads no file: the
+ * objects key's file is read by hfs_scene_set (scene_ini.c) on top of it,
+ * so the INI reader depends on the setter and never the reverse.
  *
  * Invariants: every key in the table is accepted identically from a scene
  * file and from the command line; every number is range-checked here
@@ -358,10 +360,11 @@ static int set_word(hfs_scene *s, hfs_scene_key_id id, const char *value, const 
     return HFS_OK;
 }
 
-int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
-                  const char *value, const char *where, const char *base_dir,
-                  hfs_error *err)
+int hfs_scene_apply_key(hfs_scene *s, hfs_scene_source src, const char *key,
+                        const char *value, const char *where, const char *base_dir,
+                        char objects_file[HFS_PATH_MAX], hfs_error *err)
 {
+    objects_file[0] = '\0';
     const int found = hfs_scene_key_find(key);
     if (found < 0)
         return hfs_fail(err, HFS_E_INVALID, "%s: unknown key '%s'", where, key);
@@ -376,11 +379,8 @@ int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
     int rc, n = 0;
     switch (k->form) {
     case HFS_FORM_PATH:
-        if (id == HFS_SK_OBJECTS) {
-            char path[HFS_PATH_MAX];
-            rc = set_path(path, value, base_dir, where, key, err);
-            return rc ? rc : hfs_scene_load_objects(s, path, err);
-        }
+        if (id == HFS_SK_OBJECTS) /* read by the caller (hfs_scene_set) */
+            return set_path(objects_file, value, base_dir, where, key, err);
         return set_path(id == HFS_SK_HEIGHT ? s->height
                         : id == HFS_SK_ENV_MAP ? s->env_map
                                                : s->albedo_map,

@@ -102,10 +102,17 @@ void hfs_scene_init(hfs_scene *s);
 
 /* Applies one key.  where names the origin for messages ("scene.ini:12" or
  * "--k").  base_dir, if non-NULL, resolves relative paths (scene files).
- * Returns 0 or HFS_E_INVALID with a one-line message. */
+ * The objects key reads its file here (scene_ini.c).  Returns 0 or
+ * HFS_E_INVALID with a one-line message. */
 int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
                   const char *value, const char *where, const char *base_dir,
                   hfs_error *err);
+/* hfs_scene_set without reading a file (scene.c): the objects key's path,
+ * resolved and checked, is written to objects_file for the caller to read
+ * (else objects_file is ""). */
+int hfs_scene_apply_key(hfs_scene *s, hfs_scene_source src, const char *key,
+                        const char *value, const char *where, const char *base_dir,
+                        char objects_file[HFS_PATH_MAX], hfs_error *err);
 
 /* Reads a scene file (INI).  Errors name the file and line. */
 int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err);

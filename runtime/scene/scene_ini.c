@@ -1,5 +1,7 @@
 /*
- * scene_ini.c — scene files, parsed by libinih (Debian's libinih-dev).
+ * scene_ini.c — scene files, parsed by libinih (Debian's libinih-dev), and
+ * hfs_scene_set: the setter of scene.c plus the objects key's file, read
+ * here so that the setter never calls back into the reader.
  *
  * Debian builds inih without per-key line numbers, but ini_parse_string()
  * returns the line of the first error; the handler therefore keeps the first
@@ -98,6 +100,17 @@ static int load_ini(hfs_scene *s, const char *path, int objects_only, hfs_error 
     if (strncmp(rest, path, plen) == 0 && rest[plen] == ':')
         rest += plen + 1;
     return hfs_fail(err, HFS_E_INVALID, "%s:%d:%s", path, bad_line, rest);
+}
+
+int hfs_scene_set(hfs_scene *s, hfs_scene_source src, const char *key,
+                  const char *value, const char *where, const char *base_dir,
+                  hfs_error *err)
+{
+    char objects_file[HFS_PATH_MAX];
+    const int rc = hfs_scene_apply_key(s, src, key, value, where, base_dir, objects_file, err);
+    if (rc || !objects_file[0])
+        return rc;
+    return load_ini(s, objects_file, 1, err);
 }
 
 int hfs_scene_load_file(hfs_scene *s, const char *path, hfs_error *err)
