@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The generated GLSL SH product (gles.cmake embeds sh_product.glsl.inc),
+/* The generated GLSL SH product (runtime/gles/CMakeLists.txt embeds sh_product.glsl.inc),
  * NUL-terminated. */
 extern const char hfs_gles_sh_product_src[];
 
