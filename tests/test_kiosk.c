@@ -240,6 +240,17 @@ static void replay(const char *kiosk, const char *hfgen, int amortize)
 
 /* ---- signals ----------------------------------------------------------------- */
 
+/* The kiosk log's lines that start a reload check, and all the others. */
+static int checking_lines(void)
+{
+    return kh_count_lines(kh_path("err.txt"), "<6>SIGHUP: checking ");
+}
+
+static int outcome_lines(void)
+{
+    return kh_count_lines(kh_path("err.txt"), "") - checking_lines();
+}
+
 static void signals(const char *kiosk, const char *hfgen)
 {
     make_scene(hfgen, "30,20,3,100");
@@ -272,16 +283,20 @@ static void signals(const char *kiosk, const char *hfgen)
     CHECK(frame_is(kh_path("f-01.png"), NAN, NAN), "frame after SIGHUP != the edited scene");
     CHECK(kh_count_lines(kh_path("err.txt"), "<6>reloaded ") == 1, "no <6>reloaded line");
 
-    /* A broken scene: one error line, the kiosk keeps running. */
-    const int lines_before = kh_count_lines(kh_path("err.txt"), "");
+    /* A broken scene: one error line, the kiosk keeps running.  Each SIGHUP
+     * also says, when its check starts, which process checks (the event
+     * hostile.sh's term_during_reload_check waits on): one such line per
+     * SIGHUP, and one line for the outcome. */
+    CHECK(checking_lines() == 1, "SIGHUP: %d 'checking' lines, want 1", checking_lines());
+    const int lines_before = outcome_lines();
     kh_write(kh_path("scene.ini"), "height = cones.pfm\nk = 99\n");
     kill(pid, SIGHUP);
     CHECK(kh_wait_lines(pid, kh_path("stats.txt"), "reload ", 2, 60), "second reload not seen");
     kh_sleep(0.2);
     CHECK(kill(pid, 0) == 0 && waitpid(pid, NULL, WNOHANG) == 0, "died on a broken scene");
-    CHECK(kh_count_lines(kh_path("err.txt"), "") == lines_before + 1,
-          "broken scene: %d lines logged, want 1",
-          kh_count_lines(kh_path("err.txt"), "") - lines_before);
+    CHECK(outcome_lines() == lines_before + 1, "broken scene: %d lines logged, want 1",
+          outcome_lines() - lines_before);
+    CHECK(checking_lines() == 2, "second SIGHUP: %d 'checking' lines, want 2", checking_lines());
     CHECK(kh_count_lines(kh_path("err.txt"), "<3>reload failed") == 1 &&
               kh_count_lines(kh_path("err.txt"), "") > 0,
           "no <3>reload failed line");
@@ -296,7 +311,7 @@ static void signals(const char *kiosk, const char *hfgen)
     kill(pid, SIGHUP);
     CHECK(kh_wait_lines(pid, kh_path("stats.txt"), "reload ", 3, 60), "third reload not seen");
     CHECK(kh_count_lines(kh_path("err.txt"), "<3>reload failed") == 2 &&
-              kh_count_lines(kh_path("err.txt"), "") == lines_before + 2,
+              outcome_lines() == lines_before + 2 && checking_lines() == 3,
           "broken configuration: not one <3> line");
     err = kh_read(kh_path("err.txt"));
     CHECK(err && strstr(err, "c.ini:3: step: '2x' is not a number"),
