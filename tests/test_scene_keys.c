@@ -202,6 +202,12 @@ static int set_lib(inputs *in, hfs_scene_key_id id, int i, double x)
     case HFS_SK_ENV_SH: in->l.env_sh[1][i] = v; return 1;
     case HFS_SK_ENV_ROTATE: in->l.env_rotate = v; return 1;
     case HFS_SK_ALBEDO: in->l.albedo = v; return 1;
+    /* Glossy surfaces: albedo + specular <= 1 is a rule of its own (albedo 0
+     * leaves specular's range alone), and gloss is checked only where there
+     * is a lobe (specular > 0; validate.c check_gloss). */
+    case HFS_SK_SPECULAR: in->l.albedo = 0.0, in->l.specular = v; return 1;
+    case HFS_SK_GLOSS: in->l.albedo = 0.5, in->l.specular = 0.5, in->l.gloss = v; return 1;
+    case HFS_SK_BOUNCES: count = &in->l.bounces; break;
     case HFS_SK_KEY:
         if (i < 3)
             (i == 0 ? &in->l.key[0].phi : i == 1 ? &in->l.key[0].elev : &in->l.key[0].alpha)[0] = v;
@@ -221,6 +227,14 @@ static int set_lib(inputs *in, hfs_scene_key_id id, int i, double x)
     case HFS_SK_NPHI_ENV: count = &in->q.nphi_env; break;
     case HFS_SK_NPHI_KEY: count = &in->q.nphi_key; break;
     case HFS_SK_NPHI_LOCAL: count = &in->q.nphi_local; break;
+    case HFS_SK_REFINE: count = &in->q.refine; break;
+    case HFS_SK_SPLIT: count = &in->q.split; break;
+    case HFS_SK_FAR_FROM: count = &in->q.far_from; break;
+    case HFS_SK_FAR_DIRS: count = &in->q.far_dirs; break;
+    case HFS_SK_FAR_STEP: count = &in->q.far_step; break;
+    case HFS_SK_NPHI_BOUNCE: count = &in->q.nphi_bounce; break;
+    case HFS_SK_BOUNCE_REFINE: count = &in->q.bounce_refine; break;
+    case HFS_SK_BOUNCE_SUBSAMPLE: count = &in->q.bounce_subsample; break;
     case HFS_SK_SUBSAMPLE: count = &in->q.subsample; break;
     case HFS_SK_THREADS: count = &in->q.threads; break;
     case HFS_SK_TRUTH_AZIMUTHS: count = &in->q.truth_azimuths; break;
@@ -365,6 +379,40 @@ static void check_agreement(void)
           "hfs_scene_lighting converts otherwise than the library's ranges");
 }
 
+/* env-lights, a word or a count: both ends of the count accepted (the
+ * documented maximum is HFS_MAX_KEY_LIGHTS), one past each end and
+ * non-numbers refused in one line naming the key. */
+static void check_env_lights(void)
+{
+    char v[32];
+    const struct { int n; int ok; } counts[] = {{1, 1}, {HFS_MAX_KEY_LIGHTS, 1}, {0, 0},
+                                                 {HFS_MAX_KEY_LIGHTS + 1, 0}, {-1, 0}};
+    for (size_t i = 0; i < sizeof counts / sizeof counts[0]; ++i) {
+        hfs_scene s;
+        hfs_error err = {{0}};
+        hfs_scene_init(&s);
+        snprintf(v, sizeof v, "%d", counts[i].n);
+        const int ok = !hfs_scene_set(&s, HFS_SOURCE_FLAG, "env-lights", v, "--env-lights", NULL,
+                                      &err);
+        CHECK(ok == counts[i].ok, "env-lights %s: %s", v, ok ? "accepted" : err.msg);
+        CHECK(!ok || s.env_lights == counts[i].n, "env-lights %s: stored as %d", v, s.env_lights);
+        CHECK(ok || (strstr(err.msg, "env-lights") && !strchr(err.msg, '\n')),
+              "env-lights %s: message '%s'", v, err.msg);
+    }
+    const char *words[][2] = {{"auto", "-1"}, {"off", "0"}, {"2x", ""}, {"", ""}, {"AUTO", ""}};
+    for (size_t i = 0; i < sizeof words / sizeof words[0]; ++i) {
+        hfs_scene s;
+        hfs_error err = {{0}};
+        hfs_scene_init(&s);
+        const int ok = !hfs_scene_set(&s, HFS_SOURCE_FLAG, "env-lights", words[i][0],
+                                      "--env-lights", NULL, &err);
+        CHECK(ok == (words[i][1][0] != '\0'), "env-lights '%s': %s", words[i][0],
+              ok ? "accepted" : err.msg);
+        CHECK(!ok || s.env_lights == atoi(words[i][1]), "env-lights '%s': stored as %d",
+              words[i][0], s.env_lights);
+    }
+}
+
 /* ---- knob limits ------------------------------------------------------------------- */
 
 static void check_actions(void)
@@ -406,6 +454,7 @@ int main(int argc, char **argv)
     if (argc > 2)
         check_spec_md(argv[2]);
     check_agreement();
+    check_env_lights();
     check_actions();
     printf("%s: %ld checks, %d failure(s)\n", failures ? "FAIL" : "PASS", checks, failures);
     return failures ? 1 : 0;
