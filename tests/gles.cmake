@@ -288,3 +288,17 @@ if(HFS_SANITIZE)
                  "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
   endforeach()
 endif()
+
+# Metamorphic relations (issue 35): the world scaled (dx, zscale, local
+# lights, points) leaves the image and the points' visibility unchanged, on
+# the CPU reference and on GLES at subsample 1 and 2 (test_metamorphic.c).
+add_executable(test_metamorphic ${CMAKE_CURRENT_LIST_DIR}/test_metamorphic.c)
+target_link_libraries(test_metamorphic PRIVATE hfs_test_gles_scenes)
+add_test(NAME test_metamorphic_cpu COMMAND test_metamorphic cpu)
+set_tests_properties(test_metamorphic_cpu PROPERTIES LABELS unit TIMEOUT 120)
+foreach(sub 1 2)
+  add_test(NAME test_metamorphic_gles_sub${sub} COMMAND test_metamorphic gles ${sub})
+  set_tests_properties(test_metamorphic_gles_sub${sub} PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
+                       TIMEOUT 120)
+  set(hfs_gles_tests ${hfs_gles_tests} test_metamorphic_gles_sub${sub})
+endforeach()
