@@ -281,14 +281,6 @@ foreach(prec fp16 fp32)
   set(hfs_gles_tests ${hfs_gles_tests} test_shm_gles_${prec})
 endforeach()
 
-
-if(HFS_SANITIZE)
-  foreach(t IN LISTS hfs_gles_tests)
-    set_property(TEST ${t} APPEND PROPERTY ENVIRONMENT
-                 "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
-  endforeach()
-endif()
-
 # Metamorphic relations (issue 35): the world scaled (dx, zscale, local
 # lights, points) leaves the image and the points' visibility unchanged, on
 # the CPU reference and on GLES at subsample 1 and 2 (test_metamorphic.c).
@@ -302,3 +294,14 @@ foreach(sub 1 2)
                        TIMEOUT 120)
   set(hfs_gles_tests ${hfs_gles_tests} test_metamorphic_gles_sub${sub})
 endforeach()
+add_test(NAME test_metamorphic_gles_sub2_es30 COMMAND test_metamorphic gles 2)
+set_tests_properties(test_metamorphic_gles_sub2_es30 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
+                     TIMEOUT 120 ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
+set(hfs_gles_tests ${hfs_gles_tests} test_metamorphic_gles_sub2_es30)
+
+if(HFS_SANITIZE)
+  foreach(t IN LISTS hfs_gles_tests)
+    set_property(TEST ${t} APPEND PROPERTY ENVIRONMENT
+                 "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+  endforeach()
+endif()
