@@ -25,6 +25,7 @@
 #include "gl_test.h"
 #include "cli_usage.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -120,9 +121,8 @@ static int value_arg(bench_opts *o, const char *a, const char *v)
     for (size_t k = 0; k < sizeof ints / sizeof ints[0]; ++k) {
         if (strcmp(a, ints[k].flag))
             continue;
-        char *end;
-        const long x = v ? strtol(v, &end, 10) : 0;
-        if (!v || end == v || *end || x < ints[k].lo || x > ints[k].hi)
+        long x = 0;
+        if (!v || hfs_cli_long(v, ints[k].lo, ints[k].hi, &x))
             return v ? hfs_usage_error(PROG, "%s: '%s' is not a whole number in [%ld, %ld]", a, v,
                                        ints[k].lo, ints[k].hi)
                      : hfs_usage_error(PROG, "%s: missing value", a);
@@ -141,11 +141,9 @@ static int value_arg(bench_opts *o, const char *a, const char *v)
     double *real = !strcmp(a, "--dx") ? &o->dx : !strcmp(a, "--zscale") ? &o->zscale : NULL;
     if (!real)
         return 1;
-    char *end;
     if (!v)
         return hfs_usage_error(PROG, "%s: missing value", a);
-    *real = strtod(v, &end);
-    if (end == v || *end || !(*real > 0.0) || !isfinite(*real))
+    if (hfs_cli_real(v, 0.0, DBL_MAX, real) || !(*real > 0.0))
         return hfs_usage_error(PROG, "%s: '%s' is not a positive number", a, v);
     return 0;
 }

@@ -203,9 +203,8 @@ static int count_arg(int argc, char **argv, int i, const char *what, int lo, int
     *out = def;
     if (i >= argc)
         return 0;
-    char *end;
-    const long x = strtol(argv[i], &end, 10);
-    if (end == argv[i] || *end || x < lo || x > hi) {
+    long x;
+    if (hfs_cli_long(argv[i], lo, hi, &x)) {
         hfs_usage_error("bench_env", "%s %s: '%s' is not a whole number in [%d, %d]", argv[1],
                         what, argv[i], lo, hi);
         return -1;

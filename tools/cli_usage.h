@@ -28,6 +28,15 @@ int hfs_usage_error(const char *prog, const char *fmt, ...)
 /* FMT's message formatted into buf[n] as one line: newlines become spaces. */
 void hfs_vformat_line(char *buf, size_t n, const char *fmt, va_list ap);
 
+/* V, the whole of it, as a number in [lo, hi] (NaN and overflow never are):
+ * 0 and *out, else -1 and *out untouched.  The caller words the message
+ * (its flag, its range). */
+int hfs_cli_real(const char *v, double lo, double hi, double *out);
+
+/* V, the whole of it, as a decimal whole number in [lo, hi]: 0 and *out,
+ * else -1 and *out untouched. */
+int hfs_cli_long(const char *v, long lo, long hi, long *out);
+
 /* 1 if ARG asks for the usage: --help or -h. */
 int hfs_is_help(const char *arg);
 

@@ -93,13 +93,10 @@ static double *budget_field(bench_budget *b, const char *flag)
 
 static int parse_number(const char *flag, const char *v, double lo, double hi, double *out)
 {
-    char *end;
-    const double x = strtod(v, &end);
-    if (end == v || *end || !(x >= lo && x <= hi)) {
+    if (hfs_cli_real(v, lo, hi, out)) {
         hfs_usage_error("hfbench", "%s: '%s' is not a number in [%g, %g]", flag, v, lo, hi);
         return -1;
     }
-    *out = x;
     return 0;
 }
 

@@ -61,17 +61,6 @@ static int parse_seed(const char *v, unsigned *seed)
     return 0;
 }
 
-/* A number in [lo, hi], the whole of V. */
-static int parse_real(const char *v, double lo, double hi, double *x)
-{
-    char *end;
-    const double d = strtod(v, &end);
-    if (end == v || *end || !(d >= lo && d <= hi))
-        return -1;
-    *x = d;
-    return 0;
-}
-
 /* WxH, each side in [lo, 16384]. */
 static int parse_size(const char *v, int lo, int *w, int *h)
 {
@@ -131,11 +120,11 @@ static int sky_flag(sky_args *s, const char *a, const char *v)
         bad = !(sscanf(v, "%lf,%lf%c", &s->phi, &s->elev, &tail) == 2 && isfinite(s->phi) &&
                 s->elev >= -90.0 && s->elev <= 90.0);
     } else if (!strcmp(a, "--sun-diameter"))
-        bad = parse_real(v, 0.0, 90.0, &s->diam) || !(s->diam > 0.0);
+        bad = hfs_cli_real(v, 0.0, 90.0, &s->diam) || !(s->diam > 0.0);
     else if (!strcmp(a, "--share"))
-        bad = parse_real(v, 0.0, 1.0, &s->share) || !(s->share > 0.0 && s->share < 1.0);
+        bad = hfs_cli_real(v, 0.0, 1.0, &s->share) || !(s->share > 0.0 && s->share < 1.0);
     else if (!strcmp(a, "--noise"))
-        bad = parse_real(v, 0.0, 1.0, &s->noise) || !(s->noise < 1.0);
+        bad = hfs_cli_real(v, 0.0, 1.0, &s->noise) || !(s->noise < 1.0);
     else if (!strcmp(a, "--seed"))
         bad = parse_seed(v, &s->seed);
     else if (!strcmp(a, "-o"))
@@ -211,7 +200,7 @@ static int gen_flag(gen_args *g, const char *a, const char *v)
         if (parse_seed(v, &g->seed))
             return hfs_usage_error("hfgen", "--seed: '%s' is not a whole number", v);
     } else if (!strcmp(a, "--relief")) {
-        if (parse_real(v, 0.0, 100.0, &g->relief))
+        if (hfs_cli_real(v, 0.0, 100.0, &g->relief))
             return hfs_usage_error("hfgen", "--relief: '%s' is out of range [0, 100]", v);
     } else if (!strcmp(a, "-o")) {
         g->out = v;
