@@ -63,6 +63,7 @@ ivec2 hfs_receiver(ivec2 size, int sub);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
+bool hfs_scale_takes_over(float sl, float ref, float tie);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
 uniform highp sampler2D u_normals;       /* full resolution */
@@ -79,6 +80,7 @@ uniform ivec2 u_vsize;                   /* and size */
 #endif
 uniform float u_vmax;                    /* largest normalized height, a hair up */
 uniform int u_refine;                    /* samples per scale besides the scale's own */
+uniform float u_tie;                     /* hfs_horizon_tie_slope */
 #ifdef HFS_GLOSSY
 uniform vec4 u_gpar;                     /* (S, step, 1e-6^(1/S), 0): hfs_lobe_slice */
 uniform vec4 u_gview;                    /* (V towards the viewer, ks (S+2)/(2 pi) dphi) */
@@ -208,7 +210,8 @@ void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
         vec2 h = hx[int(sc.z)];
         float most = (u_vmax - hfs_h(h)) * sc.y; /* the largest slope at distance d */
         float f = 1.0, t_best = w.t_top;
-        vec2 o_best = vec2(0.0);
+        vec2 o_best = vec2(0.0), o_clear = vec2(0.0);
+        bool cleared = false;
         for (int q = 0; q <= u_refine; ++q, f *= step) {
             vec2 o;
             if (!hfs_scale_offset(g, u_size, sc.x * f, cs, o)) {
@@ -218,13 +221,19 @@ void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
             if (most <= t_best * f)
                 continue; /* cannot rise above the group's best */
             float t = hfs_scale_slope(u_levels, g, u_size, o, sc, h) / f;
+            if (!cleared && hfs_scale_takes_over(t, w.t_top, u_tie)) {
+                o_clear = o;
+                cleared = true;
+            }
             if (t > t_best) {
                 if (t_best == w.t_top)
                     o_best = o; /* the band's radiance: the first sample that rises */
                 t_best = t;
             }
         }
-        cast_band(w, t_best, g, o_best);
+        /* ... by more than the horizons' tie: a rise of a rounding error
+         * must not pick the light (cpu_bounce.c slice_gather). */
+        cast_band(w, t_best, g, cleared ? o_clear : o_best);
     }
 }
 

@@ -76,10 +76,10 @@ static double cast(const bounce_ctx *b, slice_sums *ss, double top, double e, do
 
 /* The sample at distance dist (texels) along (c, s) from receiver (i, j),
  * read from level `read` as the horizons read it (h0: the receiver's value
- * there): its elevation into *e and its grid position; 0 when it lies off
+ * there): its slope into *slope and its grid position; 0 when it lies off
  * the grid. */
 static int sample(const bounce_ctx *b, int read, double h0, int i, int j, double c, double s,
-                  double dist, double *e, double *gx, double *gy)
+                  double dist, double *slope, double *gx, double *gy)
 {
     const hfs_field *f = b->f;
     *gx = i + dist * c, *gy = j + dist * s;
@@ -88,7 +88,7 @@ static int sample(const bounce_ctx *b, int read, double h0, int i, int j, double
         *gy > f->height - 1.0 + slack)
         return 0;
     const double dz = hfs_cpu_pyramid_sample(b->pyr, read, *gx, *gy) - h0;
-    *e = atan(dz * f->zscale / (dist * f->dx));
+    *slope = dz * f->zscale / (dist * f->dx);
     return 1;
 }
 
@@ -111,7 +111,9 @@ static double direct_horizon(const bounce_ctx *b, double *omega, int d, int i, i
  * cell, then each scale's sample and `refine` more between it and the next
  * (the spacing the refined horizons reach about their max), nearest first;
  * each scale's group casts one band up to its highest sample, lit at the
- * first sample that rose (bounce_gather.frag walk_scales says why). */
+ * first sample that rose (bounce_gather.frag walk_scales says why) by more
+ * than the horizons' tie: a rise of a rounding error must not pick the
+ * light, or scaling the world would move it (test_metamorphic). */
 static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j,
                          const double n[3], const double r[3], slice_sums *ss)
 {
@@ -136,18 +138,26 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
     for (int sc = b->n_levels - 1; sc >= 0 && top < cap; --sc) {
         const double d0 = hfs_cpu_pyramid_spacing(b->pyr, sc);
         const double h0 = hfs_cpu_pyramid_sample(b->pyr, taps[sc].read, i, j);
-        double best = top, bx = 0.0, by = 0.0;
-        int off = 0;
+        const double t_top = tan(top);
+        const double rise = t_top + HFS_HORIZON_TIE * fabs(t_top) + b->tie;
+        double best = top, at[2] = {0.0, 0.0}, clear[2] = {0.0, 0.0};
+        int off = 0, cleared = 0;
         for (int q = 0; q <= b->refine && !off; ++q) {
-            double e, gx, gy;
-            if (!(off = !sample(b, taps[sc].read, h0, i, j, c, s, d0 * b->step[q], &e, &gx, &gy)) &&
-                e > best) {
+            double sl, gx, gy;
+            if ((off = !sample(b, taps[sc].read, h0, i, j, c, s, d0 * b->step[q], &sl, &gx, &gy)))
+                break;
+            if (!cleared && sl > rise)
+                clear[0] = gx, clear[1] = gy, cleared = 1;
+            const double e = atan(sl);
+            if (e > best) {
                 if (best == top)
-                    bx = gx, by = gy;
+                    at[0] = gx, at[1] = gy;
                 best = e;
             }
         }
-        top = cast(b, ss, top, fmin(best, cap), bx, by);
+        if (cleared) /* a rise within the tie is rounding: it must not pick the light */
+            at[0] = clear[0], at[1] = clear[1];
+        top = cast(b, ss, top, fmin(best, cap), at[0], at[1]);
         if (off)
             break; /* the grid is convex: every farther sample is off too */
     }

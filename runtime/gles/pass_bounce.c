@@ -150,6 +150,7 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
         return rc;
     hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
     hfs_gles_set_i1(gl, prog, "u_refine", fr->q->bounce_refine);
+    hfs_gles_set_f1(gl, prog, "u_tie", (float)hfs_horizon_tie_slope(L->hscale, L->zscale, L->dx));
     hfs_gles_set_i1(gl, prog, "u_sub", fr->bsub); /* the bounce grid's receivers */
     hfs_gles_set_i1(gl, prog, "u_vsub", L->sub);  /* the visibility grid's, for u_hor */
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
