@@ -33,7 +33,7 @@
  * against the bounds table below, and checks that no output of either
  * backend is non-finite.
  *
- * The sky (env_sh below) is a constant plus two clamped-cosine lobes (azimuth
+ * The sky (test_sky.h) is a constant plus two clamped-cosine lobes (azimuth
  * 50, elevation 25 degrees and azimuth 205, elevation 8) plus a few band-3
  * terms: min 0.48, max 2.05 over the sphere, not rotationally symmetric, and
  * not symmetric under x -> -x or y -> -y (|L(phi) - L(pi - phi)| and
@@ -49,6 +49,7 @@
 #include "hfs_io.h"
 #include "hfshade.h"
 #include "terrain_gen.h"
+#include "test_sky.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -112,13 +113,6 @@ static int make_scene(const char *name, float *z, hfs_field *f)
 
 /* ---- lightings --------------------------------------------------------------------- */
 
-/* 0.6 sqrt(4 pi) + 1.4 lobe(50, 25) + 0.6 lobe(205, 8) (clamped-cosine ZH
- * rotated to those azimuths / elevations, in degrees) + 0.06 y9 - 0.05 y10
- * + 0.04 y11 - 0.03 y13 + 0.07 y15, written out so that no library function
- * under test makes the test's input. */
-static const double env_sh[HFS_SH_COEFFS] = {
-    3.899398, 0.737693, 0.690919, 0.283560, 0.679263, 0.322494, -0.300963, 0.231459,
-    0.076591, 0.060000, -0.050000, 0.040000, 0.000000, -0.030000, 0.000000, 0.070000};
 
 /* Key lights: azimuth, elevation, angular radius (degrees).  a-c: low suns
  * at angles on no lattice.  d: a broad disk low over the cliff, along its
@@ -137,7 +131,7 @@ static int make_lighting(const char *name, const hfs_field *f, hfs_lighting *l)
     if (!strcmp(name, "env") || !strcmp(name, "env_rotated")) {
         l->has_env = 1;
         for (int c = 0; c < 3; ++c)
-            memcpy(l->env_sh[c], env_sh, sizeof env_sh);
+            memcpy(l->env_sh[c], test_sky_sh, sizeof test_sky_sh);
         l->env_rotate = !strcmp(name, "env_rotated") ? 137.0 * DEG : 0.0;
         return 0;
     }

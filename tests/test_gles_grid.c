@@ -121,7 +121,15 @@ static int mode_sub(int argc, char **argv)
  * direction (split 0) and with split horizons (the defaults: far grid step
  * 2, 3 sub-directions).  Split's larger max: an occluder blended with a
  * receiver that has none (near the field's edge) moves far with a tiny
- * weight, and texture filtering's weights are not the CPU's exactly.  Then
+ * weight, and texture filtering's weights are not the CPU's exactly.
+ * The 99th percentile (p99: fp16, fp32; measured at 2156b87 by
+ * `build/tests/test_gles_grid slice`; the same in Release, Debug+ASan,
+ * under MESA_GLES_VERSION_OVERRIDE=3.0 and HFS_GL_STRICT_LIMITS=1, and
+ * with GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 but fractal split 1 fp32, 5.400e-6)
+ * is bounded at
+ * 1.2x: a drift of a few texels hides in the mean and under the max's
+ * 10x (the far sub-directions' turns mirrored on GLES alone: split 1 fp32
+ * dem mean 4.5x, p99 140x; issue 35).  Then
  * a turned environment on the kept slices (only the shading reruns)
  * equals a fresh renderer's frame. */
 static int mode_slice(void)
@@ -131,13 +139,14 @@ static int mode_slice(void)
         const char *scene;
         int n, keys, split;
         double meas[2][2];
+        double p99[2]; /* fp16, fp32 */
     } cases[] = {
-        {"cones", 48, 0, 0, {{3.5e-6, 4.3e-5}, {8.3e-8, 4.1e-7}}},
-        {"fractal", 48, 1, 0, {{2.8e-5, 1.8e-4}, {1.4e-7, 3.5e-6}}},
-        {"dem", 40, 0, 0, {{9.0e-6, 8.3e-5}, {1.1e-7, 6.1e-7}}},
-        {"cones", 48, 0, 1, {{4.9e-6, 3.0e-4}, {5.5e-7, 2.8e-4}}},
-        {"fractal", 48, 1, 1, {{3.2e-5, 7.2e-4}, {1.5e-6, 6.4e-4}}},
-        {"dem", 40, 0, 1, {{1.3e-5, 1.8e-3}, {2.8e-6, 1.7e-3}}},
+        {"cones", 48, 0, 0, {{3.5e-6, 4.3e-5}, {8.3e-8, 4.1e-7}}, {2.358e-5, 2.015e-7}},
+        {"fractal", 48, 1, 0, {{2.8e-5, 1.8e-4}, {1.4e-7, 3.5e-6}}, {1.375e-4, 6.996e-7}},
+        {"dem", 40, 0, 0, {{9.0e-6, 8.3e-5}, {1.1e-7, 6.1e-7}}, {4.880e-5, 3.525e-7}},
+        {"cones", 48, 0, 1, {{4.9e-6, 3.0e-4}, {5.5e-7, 2.8e-4}}, {2.761e-5, 5.038e-7}},
+        {"fractal", 48, 1, 1, {{3.2e-5, 7.2e-4}, {1.5e-6, 6.4e-4}}, {1.358e-4, 5.378e-6}},
+        {"dem", 40, 0, 1, {{1.3e-5, 1.8e-3}, {2.8e-6, 1.7e-3}}, {5.560e-5, 6.044e-7}},
     };
     for (size_t ci = 0; ci < sizeof cases / sizeof cases[0]; ++ci)
         for (int prec = 0; prec < 2; ++prec) {
@@ -154,13 +163,15 @@ static int mode_slice(void)
                 hfs_metrics m = compare(&s, &l, &q, &g, &c);
                 const double bmean = 10.0 * cases[ci].meas[prec][0];
                 const double bmax = 10.0 * cases[ci].meas[prec][1];
-                printf("slice %-8s %2dx%-2d keys %d split %d %s: mean %.2e max %.2e\n",
+                const double bp99 = 1.2 * cases[ci].p99[prec];
+                printf("slice %-8s %2dx%-2d keys %d split %d %s: mean %.2e max %.2e p99 %.3e\n",
                        cases[ci].scene, cases[ci].n, cases[ci].n, l.n_key, cases[ci].split,
-                       prec ? "fp32" : "fp16", m.mean_abs, m.max_abs);
-                CHECK(m.nonfinite == 0 && m.mean_abs <= bmean && m.max_abs <= bmax,
-                      "slice %s split %d %s: mean %.3e (bound %.1e) max %.3e (bound %.1e)",
-                      cases[ci].scene, cases[ci].split, prec ? "fp32" : "fp16", m.mean_abs, bmean,
-                      m.max_abs, bmax);
+                       prec ? "fp32" : "fp16", m.mean_abs, m.max_abs, m.p99_abs);
+                CHECK(m.nonfinite == 0 && m.mean_abs <= bmean && m.max_abs <= bmax &&
+                          m.p99_abs <= bp99,
+                      "slice %s split %d %s: mean %.3e (bound %.1e) max %.3e (bound %.1e) p99 "
+                      "%.3e (bound %.3e)", cases[ci].scene, cases[ci].split,
+                      prec ? "fp32" : "fp16", m.mean_abs, bmean, m.max_abs, bmax, m.p99_abs, bp99);
             } else {
                 CHECK(0, "slice %s: a render failed", cases[ci].scene);
             }

@@ -23,6 +23,7 @@ void hfs_split_make(const hfs_quality *q, int bounces, hfs_split *s)
     s->k = s->k > HFS_SPLIT_MAX_K ? HFS_SPLIT_MAX_K : s->k;
     s->step = q->far_step > 0 ? q->far_step : by_subsample[i].step;
     s->near_refine = i == 0 || q->refine < 2 ? q->refine : 2;
+    s->far_refine = q->refine;
 }
 
 void hfs_split_swath(const hfs_swath *env, int k, hfs_swath *far)
@@ -43,6 +44,11 @@ int hfs_split_near_count(int n_levels, int k, double from)
         if (hfs_pyramid_spacing(n_levels, k, i) <= from * (1.0 + 1e-9))
             ++count;
     return count;
+}
+
+int hfs_split_first_far(int n_levels, int k, double from)
+{
+    return n_levels - 1 - hfs_split_near_count(n_levels, k, from);
 }
 
 double hfs_split_far_slope(double h, double d, double dz, int g)

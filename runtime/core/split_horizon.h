@@ -47,7 +47,10 @@ typedef struct hfs_split {
     double from;  /* far_from, texels */
     int k;        /* far sub-directions per direction */
     int step;     /* the far grid's step G */
-    int near_refine; /* samples refining the near part (the far part's: q->refine) */
+    int near_refine; /* samples refining the near part                  */
+    int far_refine;  /* samples refining the far part: q->refine at every
+                        subsample (the far grid is cheap; the CPU's far
+                        grid and the GLES far pass both read it here)     */
 } hfs_split;
 
 /* The split of a frame with quality q and `bounces` indirect bounces: on
@@ -70,8 +73,13 @@ double hfs_split_turn(int h, int k, double dphi);
 /* How many of a pyramid's n_levels scales (k levels per octave, spacing
  * hfs_pyramid_spacing) are near: those at most `from` texels away (plus a
  * hair, so that from = 8 keeps the scale at 8).  The near ones are the
- * finest; scale index n_levels - count is the finest far one. */
+ * finest; scale index n_levels - count is the coarsest near one. */
 int hfs_split_near_count(int n_levels, int k, double from);
+/* The index of the finest far scale, where the far grid's search starts
+ * (going coarser), n_levels - 1 - hfs_split_near_count: the near/far
+ * boundary of the CPU's far grid and of the GLES near and far passes
+ * alike.  -1: every scale is near. */
+int hfs_split_first_far(int n_levels, int k, double from);
 
 /* A far occluder blended at a texel (height h over the receivers, distance
  * d, texels) seen from the texel, which lies dz below the receivers'

@@ -74,9 +74,8 @@ int hfs_cpu_far_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, const hfs
     g->gw = hfs_grid_count(f->width, split->step);
     g->gh = hfs_grid_count(f->height, split->step);
     g->n_levels = hfs_cpu_pyramid_count(pyr);
-    g->first_far = g->n_levels - 1 -
-                   hfs_split_near_count(g->n_levels, hfs_cpu_pyramid_k(pyr), split->from);
-    g->refine = q->refine;
+    g->first_far = hfs_split_first_far(g->n_levels, hfs_cpu_pyramid_k(pyr), split->from);
+    g->refine = split->far_refine;
     g->tie = tie;
     double *phi = malloc((size_t)g->n_sub * sizeof *phi);
     const int workers = threads < 1 ? 1 : threads;

@@ -31,8 +31,9 @@ int hfs_gles_env_far_layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     fr->far_swath_tex = 0;
     if (!fr->split.on)
         return HFS_OK;
-    fr->far_near = hfs_split_near_count(L->n_levels, L->k, fr->split.from);
-    fr->env_coarsest = L->n_levels - fr->far_near;
+    const int first_far = hfs_split_first_far(L->n_levels, L->k, fr->split.from);
+    fr->far_near = L->n_levels - 1 - first_far;
+    fr->env_coarsest = first_far + 1;
     fr->far_w = hfs_grid_count(L->w, fr->split.step);
     fr->far_h = hfs_grid_count(L->h, fr->split.step);
     /* Tiles of 2 sub-directions, as many a row as the profile's textures
@@ -92,7 +93,7 @@ int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     hfs_gles_set_i2(gl, prog, "u_fgrid", fr->far_w, fr->far_h);
     hfs_gles_set_i1(gl, prog, "u_fcols", fr->far_cols);
     hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
-    hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
+    hfs_gles_set_i1(gl, prog, "u_refine", fr->split.far_refine);
     hfs_gles_set_f1(gl, prog, "u_lk", (float)L->k);
     hfs_gles_set_f1(gl, prog, "u_tie", (float)hfs_horizon_tie_slope(L->hscale, L->zscale, L->dx));
     hfs_gles_set_i1(gl, prog, "u_near", fr->far_near);
