@@ -289,6 +289,8 @@ endforeach()
 #   test_metamorphic_turn  the world turned, mirrored or transposed turns,
 #                          mirrors or transposes them
 #   test_metamorphic_pad   a border far below changes nothing inside
+#   test_metamorphic_view  the 3-D view with objects of a scaled world, and a
+#                          wide view against a square one
 macro(hfs_metamorphic_test prog)
   add_executable(${prog} ${CMAKE_CURRENT_LIST_DIR}/${prog}.c)
   target_link_libraries(${prog} PRIVATE hfs_test_gles_scenes)
@@ -305,7 +307,7 @@ macro(hfs_metamorphic_test prog)
                        TIMEOUT 120 ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
   set(hfs_gles_tests ${hfs_gles_tests} ${prog}_gles_sub2_es30)
 endmacro()
-foreach(prog test_metamorphic test_metamorphic_turn test_metamorphic_pad)
+foreach(prog test_metamorphic test_metamorphic_turn test_metamorphic_pad test_metamorphic_view)
   hfs_metamorphic_test(${prog})
 endforeach()
 
