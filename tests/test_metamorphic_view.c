@@ -184,7 +184,12 @@ static void frame_views(void)
         frame_extent(sizes[i][0], sizes[i][1], &ex, &ey);
         printf("frame %dx%d: corners out to %.3f of the half-width, %.3f of the half-height\n",
                sizes[i][0], sizes[i][1], ex, ey);
-        CHECK(ex <= 1.0 && ey <= 1.0);
+        if (!(ex <= 1.0 && ey <= 1.0)) {
+            ++failures;
+            fprintf(stderr, "FAIL: the field framed in a %dx%d view reaches %.3f of its "
+                    "half-width, %.3f of its half-height (outside past 1)\n", sizes[i][0],
+                    sizes[i][1], ex, ey);
+        }
     }
 }
 
