@@ -14,33 +14,33 @@
  *     border once padded (SPEC's rule, a different surface).
  *   - the field has a moat: its outer texels at its lowest height minus 1.
  *     Without it the relation does not hold, and not by a bug: a horizon
- *     sample that lands just past the edge is dropped (off the grid), and
- *     the edge texels' heights between the last sample on the grid and the
- *     edge are never seen, while the padded field's sample, between the
- *     edge and the border, still holds part of the edge's height (a ridge
- *     along the edge: 0.66 rad of horizon at one texel, 9e-2 of the image's
- *     maximum).  A moat below everything leaves no occluder there.
- *   - the CPU reference, split horizons off: 8.2e-7 (the same samples in
- *     double precision; the tie between scales, hfs_horizon_tie_slope,
- *     scales with the field's height range).  With split horizons:
- *     2.2e-6 at subsample 2 (far-from 16), and 4.1e-3 at subsample 1
- *     (far-from 8),
- *     where the far part's finest scale (11.3 texels) lies off the field:
- *     the far search stops there and never refines about it, while on the
- *     padded field that scale lands in the border and its refinement
- *     (8.6..14.9 texels) finds an occluder on the field.  Which of the two
- *     is nearer the truth is the edge treatment's question, not this
- *     test's: it bounds the difference.
+ *     sample that lands just past the edge is dropped (off the grid), so
+ *     the edge texels' heights beyond the last sample on the grid are
+ *     never seen, while the padded field's sample, between the edge and
+ *     the border, still holds part of the edge's height (a ridge along the
+ *     edge, a border 100 below: 0.66 rad of horizon at one texel, 9e-2 of
+ *     the image's maximum).  A moat below everything leaves no occluder
+ *     there.
+ *   - the CPU reference, split horizons off: 8.2e-7 (rounding; the same
+ *     samples).  With split horizons: 2.2e-6 at subsample 2 (far-from
+ *     16), and 4.1e-3 at subsample 1 (far-from 8), where the far part's
+ *     finest scale (11.3 texels) lies off the field: the far search stops
+ *     there and never refines about it, while on the padded field that
+ *     scale lands in the border and its refinement (8.6..14.9 texels)
+ *     finds an occluder on the field.  Which of the two is nearer the
+ *     truth is the edge treatment's question, not this test's: it bounds
+ *     the difference.
  *   - GLES: fp16 keeps heights as a (hi, lo) pair normalized by the
- *     field's height range, which the border widens 150-fold: 4.6e-4 at
- *     subsample 1 without split horizons, 4.0e-3 with them (the CPU's
- *     4.1e-3).  At subsample 2 without key lights (1.0e-3, the sky):
- *     there the 2x2 grid's key-light search reads the heights with a
- *     LINEAR fetch in coordinates over the field's size, whose rounding
- *     (and llvmpipe's 8-bit weights) moves with the size; a single column
- *     added at the moat's height moves a shadow edge by a texel (0.16 of
- *     the key light's maximum, 0.77 with the whole border).  The points
- *     (shadow height maps, normalized heights in float): 1.2e-5.
+ *     field's height range, which the border changes, so every height
+ *     rounds differently: 4.6e-4 at subsample 1 without split horizons
+ *     (fp32: 9e-6), 4.0e-3 with them (the CPU's 4.1e-3).  At subsample 2
+ *     without key lights (1.0e-3, the sky): there the 2x2 grid's key-light
+ *     search reads the heights with a LINEAR fetch in coordinates over the
+ *     field's size, whose rounding (and the sampler's quantized weights)
+ *     moves with the size; a single column added at the moat's height
+ *     moves a shadow edge by a texel (0.16 of the key light's maximum,
+ *     0.77 with the whole border).  The points (shadow height maps,
+ *     normalized heights in float): 1.2e-5.
  *
  *   test_metamorphic_pad cpu | gles SUBSAMPLE   (gles: 77 without a context)
  */

@@ -119,26 +119,28 @@ static double compare_moved(const turn *t, const hfs_image *a, const hfs_image *
 
 /* GLES, per subsample (1, 2): the product (fp16, split horizons), one
  * bounce (which turns split horizons off), and fp32.  Measured on Mesa
- * 22.3.6 llvmpipe, the largest over the six moves; bounds 1.2x that.
+ * 22.3.6 llvmpipe, the largest over the seven moves; bounds 1.2x that.
  *   - fp32 without the split (subsample 1) and with it (subsample 2):
  *     1.9e-6 and 1.4e-6, float rounding (directions as cos/sin of turned
  *     angles): the algorithm keeps the relation.
  *   - fp16: 1.4e-5 (1 bounce, subsample 1), 5.3e-6 (subsample 2): fp16
- *     rounding of the same values; at subsample 2 with the split 4.6e-4 at
- *     one texel, a grid occluder's (height, distance) pair rounded to fp16
- *     on one side of a tie.
- *   - the product at subsample 1: 6.8e-3 at a few isolated texels (fp32
- *     measures the same: not fp16).  The far grid (step 2) is read with one
- *     LINEAR fetch of its atlas (env_slices.frag); a texel that lies on a
- *     receiver should get that receiver's pair alone, but the atlas
- *     coordinate, divided by the atlas size and multiplied back by the
- *     sampler, lands a rounding error off the texel centre, and llvmpipe's
- *     weights then give the neighbour a weight of up to 1/256.  Where that
- *     neighbour has no occluder (HFS_SPLIT_NONE_H, -3e4) the blend loses
- *     this texel's occluder.  Which texels it hits depends on the
- *     coordinates' rounding, so it is not symmetric.  (Reading the four
- *     receivers with texelFetch and blending them exactly measured 1.4e-5,
- *     the fp16 level; the CPU blends exactly: 0.)
+ *     rounding of the same values; at subsample 2 with the split, 4.6e-4
+ *     at one texel, where fp16's rounding of a stored occluder flips a
+ *     decision (fp32 there: 1.4e-6).
+ *   - the product at subsample 1: 6.8e-3 at a few isolated texels, fp32
+ *     the same (so not fp16).  The far grid (step 2) is read with one
+ *     LINEAR fetch of its atlas (env_slices.frag); a texel on a receiver
+ *     should get that receiver's pair alone, but its coordinate (the grid
+ *     coordinate divided by the tile size and multiplied back, then by the
+ *     atlas size in the sampler) lands a rounding error off the texel
+ *     centre, and the sampler's quantized weights then give the neighbour
+ *     a small weight.  Where the neighbour has no occluder
+ *     (HFS_SPLIT_NONE_H, -3e4) that loses this texel's occluder.  Which
+ *     texels it hits follows the coordinates' rounding, which no turn
+ *     keeps.  Measured by hand: the coordinate computed without the
+ *     round trip through the tile size, 1.4e-3; the four receivers read
+ *     with texelFetch and blended exactly, 1.4e-5 (the fp16 level; the CPU
+ *     blends exactly: 0).
  * Points: the shadow height maps in float, 1.2e-6 (10 ulps of 1). */
 static const mm_setting gles_settings[2][3] = {
     {{HFS_PRECISION_FP16, 1, 0, 1, 8.2e-3, 1.5e-6},
