@@ -281,23 +281,35 @@ foreach(prec fp16 fp32)
   set(hfs_gles_tests ${hfs_gles_tests} test_shm_gles_${prec})
 endforeach()
 
-# Metamorphic relations (issue 35): the world scaled (dx, zscale, local
-# lights, points) leaves the image and the points' visibility unchanged, on
-# the CPU reference and on GLES at subsample 1 and 2 (test_metamorphic.c).
-add_executable(test_metamorphic ${CMAKE_CURRENT_LIST_DIR}/test_metamorphic.c)
-target_link_libraries(test_metamorphic PRIVATE hfs_test_gles_scenes)
-add_test(NAME test_metamorphic_cpu COMMAND test_metamorphic cpu)
-set_tests_properties(test_metamorphic_cpu PROPERTIES LABELS unit TIMEOUT 120)
-foreach(sub 1 2)
-  add_test(NAME test_metamorphic_gles_sub${sub} COMMAND test_metamorphic gles ${sub})
-  set_tests_properties(test_metamorphic_gles_sub${sub} PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
-                       TIMEOUT 120)
-  set(hfs_gles_tests ${hfs_gles_tests} test_metamorphic_gles_sub${sub})
+# Metamorphic relations (issue 35), each a program run on the CPU reference
+# and on GLES at subsample 1 and 2 (and 2 in an ES 3.0 context):
+#   test_metamorphic       the world scaled (dx, zscale, local lights,
+#                          points) leaves the image and the points'
+#                          visibility unchanged
+#   test_metamorphic_turn  the world turned, mirrored or transposed turns,
+#                          mirrors or transposes them
+#   test_metamorphic_pad   a border far below changes nothing inside
+#   test_metamorphic_view  the 3-D view with objects of a scaled world, and a
+#                          wide view against a square one
+macro(hfs_metamorphic_test prog)
+  add_executable(${prog} ${CMAKE_CURRENT_LIST_DIR}/${prog}.c)
+  target_link_libraries(${prog} PRIVATE hfs_test_gles_scenes)
+  add_test(NAME ${prog}_cpu COMMAND ${prog} cpu)
+  set_tests_properties(${prog}_cpu PROPERTIES LABELS unit TIMEOUT 120)
+  foreach(sub 1 2)
+    add_test(NAME ${prog}_gles_sub${sub} COMMAND ${prog} gles ${sub})
+    set_tests_properties(${prog}_gles_sub${sub} PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
+                         TIMEOUT 120)
+    set(hfs_gles_tests ${hfs_gles_tests} ${prog}_gles_sub${sub})
+  endforeach()
+  add_test(NAME ${prog}_gles_sub2_es30 COMMAND ${prog} gles 2)
+  set_tests_properties(${prog}_gles_sub2_es30 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
+                       TIMEOUT 120 ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
+  set(hfs_gles_tests ${hfs_gles_tests} ${prog}_gles_sub2_es30)
+endmacro()
+foreach(prog test_metamorphic test_metamorphic_turn test_metamorphic_pad test_metamorphic_view)
+  hfs_metamorphic_test(${prog})
 endforeach()
-add_test(NAME test_metamorphic_gles_sub2_es30 COMMAND test_metamorphic gles 2)
-set_tests_properties(test_metamorphic_gles_sub2_es30 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
-                     TIMEOUT 120 ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
-set(hfs_gles_tests ${hfs_gles_tests} test_metamorphic_gles_sub2_es30)
 
 if(HFS_SANITIZE)
   foreach(t IN LISTS hfs_gles_tests)

@@ -10,6 +10,10 @@
  *              the smaller size and said in the note; its one nodata
  *              texel filled before the resampling (one hole, not four)
  *   south-up   a positive row step: rows flipped, row 0 the north edge
+ *   columns    a UTM GeoTIFF of 30 m x 20 m cells: its columns resampled
+ *              (the other tests' cells are narrower than tall, so only
+ *              rows are), node 0's centre and the last node's kept, the
+ *              heights the ramp at each new column's position
  *   hgt, vrt   an SRTM .hgt (N36W084.hgt, 1201 x 1201) and a VRT of the
  *              UTM GeoTIFF read as the originals
  *   refused    a rotated geotransform: one line; a text file: the usual
@@ -209,6 +213,40 @@ static void test_geo_and_south(void)
     free(flipped), free(z);
 }
 
+/* Cells wider than tall: the columns are resampled to the rows' 20 m. */
+static void test_columns(void)
+{
+    const int w = 13, h = 6;
+    float *z = ramp(w, h);
+    const double gt[6] = {500000.0, 30.0, 0.0, 4000000.0, 0.0, -20.0};
+    write_raster("GTiff", "cols.tif", w, h, z, gt, 32617, 0, 0.0, GDT_Float32);
+    hfs_heightmap hm;
+    hfs_error err = {""};
+    REQUIRE(hfs_height_load(path_of("cols.tif"), NULL, &hm, &err) == HFS_OK, "%s", err.msg);
+    const int want_w = (int)lround((w - 1) * 30.0 / 20.0) + 1; /* 19 */
+    CHECK(hm.width == want_w && hm.height == h && fabs(hm.cellsize - 20.0) < 1e-12 &&
+          strstr(hm.note, "resampled"));
+    /* Its georeferencing: columns closer, rows as they were, the first and
+     * the last node's centres where they were (GDAL places a cell's
+     * centre half a cell in from its corner). */
+    const double *g = hm.geotransform;
+    CHECK(hm.has_georef && fabs(g[1] - 30.0 * (w - 1.0) / (want_w - 1.0)) < 1e-9 &&
+          g[3] == gt[3] && g[5] == gt[5] && g[2] == 0.0 && g[4] == 0.0);
+    CHECK(fabs(g[0] + 0.5 * g[1] - (gt[0] + 15.0)) < 1e-6 &&
+          fabs(g[0] + (want_w - 0.5) * g[1] - (gt[0] + (w - 0.5) * 30.0)) < 1e-6);
+    /* Resampled columns: the ramp (3 a column) at each new column's place. */
+    double worst = 0.0;
+    for (int j = 0; j < hm.height && hm.width == want_w; ++j)
+        for (int i = 0; i < hm.width; ++i)
+            worst = fmax(worst, fabs(hm.z[(size_t)j * hm.width + i] -
+                                     (100.0 + 7.0 * j + 3.0 * fmin(i * 20.0 / 30.0, w - 1))));
+    CHECK(worst < 1e-4);
+    printf("columns: cells 30 x 20 m -> %dx%d of %.1f m, node 0 at x %.3f; note: %s\n",
+           hm.width, hm.height, hm.cellsize, g[0] + 0.5 * g[1], hm.note);
+    hfs_heightmap_free(&hm);
+    free(z);
+}
+
 static void test_hgt_and_refused(void)
 {
     const int n = 1201;
@@ -246,6 +284,7 @@ int main(void)
     hfs_gdal_register();
     test_utm();
     test_geo_and_south();
+    test_columns();
     test_hgt_and_refused();
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
