@@ -177,10 +177,13 @@ static void run(hfs_renderer *r, const char *backend, int sub)
             turn_invariance(r, "gles", sub, &gles_settings[sub == 1 ? 0 : 1][i]);
         return;
     }
-    /* Double precision, the same arithmetic mirrored: measured 0. */
-    const mm_setting exact = {HFS_PRECISION_FP32, 1, 0, 1, 1e-6, 1e-6};
+    /* Double precision, the same arithmetic mirrored: measured 0, also
+     * with a bounce. */
+    const mm_setting exact[2] = {{HFS_PRECISION_FP32, 1, 0, 1, 1e-6, 1e-6},
+                                 {HFS_PRECISION_FP32, 1, 1, 1, 1e-6, 1e-6}};
     for (sub = 1; sub <= 2; ++sub)
-        turn_invariance(r, "cpu", sub, &exact);
+        for (int i = 0; i < 2; ++i)
+            turn_invariance(r, "cpu", sub, &exact[i]);
 }
 
 int main(int argc, char **argv)
