@@ -75,6 +75,7 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     s->has_env = fr->has_env;
     s->nphi_env = q->nphi_env;
     s->vis_path = (int)q->visibility;
+    s->hz_refine = q->refine;
     if (fr->split.on) {
         s->far_from = (int)fr->split.from;
         s->far_k = fr->split.k;
