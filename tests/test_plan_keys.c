@@ -97,7 +97,7 @@ static int scene_load(const pk_scene *ps, hfs_scene *s, hfs_scene_inputs *in)
 
 /* What a renderer made of a scene. */
 typedef struct pk_out {
-    int w, h, vw, vh, n_vis;
+    int w, h, vw, vh, n_vis, noted;
     float *img, *lit, *view, *tex; /* tex: GLES only */
     float vis[PK_POINTS * HFS_MAX_KEY_LIGHTS];
     char ran[256];                 /* the passes of the scene's first frame */
@@ -142,10 +142,21 @@ static float *take(hfs_image *im)
     return p;
 }
 
-/* The four outputs, in this order: view (and the lit image it renders),
- * lit texture, image, point queries. */
+/* The passes of r's last frame, if it is the scene's first. */
+static void note(const hfs_renderer *r, pk_out *o)
+{
+    if (!o->noted)
+        gl_test_ran(r, o->ran, sizeof o->ran);
+    o->noted = 1;
+}
+
+/* The four outputs: the view (and the lit image it renders) first or last
+ * (view_last), the lit texture, the image, point queries.  A view frame
+ * right after another keeps the view unless the planner sees a change: a
+ * kept renderer's base ends with the view and its change begins with it,
+ * so that a stale view shows. */
 static int render_all(hfs_renderer *r, const hfs_scene *s, const hfs_scene_inputs *in,
-                      pk_out *o)
+                      int view_last, pk_out *o)
 {
     const hfs_field *f = &in->field;
     const hfs_lighting *l = &in->lighting;
@@ -159,23 +170,25 @@ static int render_all(hfs_renderer *r, const hfs_scene *s, const hfs_scene_input
     int rc = hfs_image_alloc(&lit, f->width, f->height, &err) ||
              hfs_image_alloc(&view, v.width, v.height, &err) ||
              hfs_image_alloc(&img, f->width, f->height, &err);
-    if (!rc && !(rc = hfs_renderer_render_view(r, f, l, q, &v, &lit, &view, &err)))
-        gl_test_ran(r, o->ran, sizeof o->ran);
+    if (!rc && !view_last && !(rc = hfs_renderer_render_view(r, f, l, q, &v, &lit, &view, &err)))
+        note(r, o);
     if (!rc && gles) {
         hfs_lit_texture t;
         o->tex = malloc((size_t)f->width * f->height * 4 * sizeof *o->tex);
         rc = o->tex ? hfs_renderer_render_texture(r, f, l, q, NULL, &t, &err)
                     : hfs_fail(&err, HFS_E_NOMEM, "no memory");
-        if (!rc)
-            rc = gl_app_read(&app, &t, o->tex, &err);
+        if (!rc && !(rc = gl_app_read(&app, &t, o->tex, &err)))
+            note(r, o);
     }
-    if (!rc)
-        rc = hfs_renderer_render(r, f, l, q, &img, NULL, NULL, &err);
+    if (!rc && !(rc = hfs_renderer_render(r, f, l, q, &img, NULL, NULL, &err)))
+        note(r, o);
     double xyz[3 * PK_POINTS];
     points_of(f, xyz);
     o->n_vis = PK_POINTS * l->n_key;
     if (!rc)
         rc = hfs_renderer_query_points(r, f, l, q, xyz, PK_POINTS, o->vis, &err);
+    if (!rc && view_last)
+        rc = hfs_renderer_render_view(r, f, l, q, &v, &lit, &view, &err);
     o->lit = take(&lit), o->view = take(&view), o->img = take(&img);
     CHECK(!rc, "render: %s", err.msg);
     return rc;
@@ -227,10 +240,11 @@ static hfs_renderer *renderer(void)
     return gl_test_renderer(&d);
 }
 
-/* The scene on the kept renderer and on a fresh one (the fresh outputs
- * into *fresh; cached: already there); kept_ran: the passes of the kept
- * renderer's first frame of it (256 bytes). */
-static int step(hfs_renderer *kept, const pk_scene *ps, pk_out *fresh, int cached,
+/* The scene on the kept renderer (its view last when it is a row's base)
+ * and on a fresh one (the fresh outputs into *fresh; cached: already
+ * there); kept_ran: the passes of the kept renderer's first frame of it
+ * (256 bytes). */
+static int step(hfs_renderer *kept, const pk_scene *ps, pk_out *fresh, int cached, int base,
                 const char *row, char *kept_ran)
 {
     hfs_scene s;
@@ -238,11 +252,11 @@ static int step(hfs_renderer *kept, const pk_scene *ps, pk_out *fresh, int cache
     if (scene_load(ps, &s, &in))
         return 1;
     pk_out k;
-    int rc = render_all(kept, &s, &in, &k);
+    int rc = render_all(kept, &s, &in, base, &k);
     snprintf(kept_ran, 256, "%s", k.ran);
     if (!rc && !cached) {
         hfs_renderer *r = renderer();
-        rc = render_all(r, &s, &in, fresh);
+        rc = render_all(r, &s, &in, 0, fresh);
         hfs_renderer_destroy(r);
     }
     if (!rc)
@@ -265,10 +279,10 @@ static void run_row(hfs_renderer *kept, const pk_row *row, pk_out *base_fresh)
     pk_out own = {0}, changed = {0};
     pk_out *fb = common ? base_fresh : &own;
     snprintf(what, sizeof what, "%s = %.24s: back to its base", row->key, row->to[0].value);
-    if (step(kept, &b, fb, common && fb->img, what, ran))
+    if (step(kept, &b, fb, common && fb->img, 1, what, ran))
         return;
     snprintf(what, sizeof what, "%s = %.24s", row->key, row->to[0].value);
-    if (!step(kept, &c, &changed, 0, what, ran)) {
+    if (!step(kept, &c, &changed, 0, 0, what, ran)) {
         const unsigned mine = gles ? PK_GLES : PK_CPU;
         CHECK(!(row->shows & mine) || !compare(fb, &changed, NULL),
               "%s: the change shows in no output; pick a value that matters", what);
