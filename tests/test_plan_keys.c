@@ -76,6 +76,7 @@ static void scene_put(pk_scene *s, const pk_set *sets, int n)
             if (!first || strcmp(s->line[j].key, sets[i].key))
                 s->line[kept++] = s->line[j];
         s->n = kept;
+        CHECK(!sets[i].value || s->n < PK_LINES, "more than %d lines in a scene", PK_LINES);
         if (sets[i].value && s->n < PK_LINES)
             s->line[s->n++] = sets[i];
     }
