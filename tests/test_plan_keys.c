@@ -267,8 +267,41 @@ static int step(hfs_renderer *kept, const pk_scene *ps, pk_out *fresh, int cache
     return rc;
 }
 
+/* Fresh renderers' outputs of the rows' bases, kept: rows share bases
+ * (the common one, the map's, the colour sky's, ...). */
+#define PK_BASES 8
+typedef struct pk_bases {
+    int n;
+    pk_scene scene[PK_BASES];
+    pk_out out[PK_BASES];
+} pk_bases;
+
+static int scene_same(const pk_scene *a, const pk_scene *b)
+{
+    int same = a->n == b->n;
+    for (int i = 0; same && i < a->n; ++i)
+        same = !strcmp(a->line[i].key, b->line[i].key) &&
+               !strcmp(a->line[i].value, b->line[i].value);
+    return same;
+}
+
+/* The slot of base b in the cache (*cached: its outputs are there). */
+static pk_out *base_slot(pk_bases *c, const pk_scene *b, int *cached)
+{
+    for (int i = 0; i < c->n; ++i)
+        if (scene_same(&c->scene[i], b)) {
+            *cached = 1;
+            return &c->out[i];
+        }
+    *cached = 0;
+    const int i = c->n < PK_BASES ? c->n++ : PK_BASES - 1;
+    out_free(&c->out[i]);
+    c->scene[i] = *b;
+    return &c->out[i];
+}
+
 /* One row: its base (the last change undone), then its change. */
-static void run_row(hfs_renderer *kept, const pk_row *row, pk_out *base_fresh)
+static void run_row(hfs_renderer *kept, const pk_row *row, pk_bases *bases)
 {
     pk_scene b = {0}, c;
     scene_put(&b, pk_base, (int)(sizeof pk_base / sizeof pk_base[0]));
@@ -276,12 +309,13 @@ static void run_row(hfs_renderer *kept, const pk_row *row, pk_out *base_fresh)
     c = b;
     scene_put(&c, row->to, PK_SETS);
     char what[200], ran[256];
-    const int common = !row->base[0].key;
-    pk_out own = {0}, changed = {0};
-    pk_out *fb = common ? base_fresh : &own;
+    int cached;
+    pk_out changed = {0}, *fb = base_slot(bases, &b, &cached);
     snprintf(what, sizeof what, "%s = %.24s: back to its base", row->key, row->to[0].value);
-    if (step(kept, &b, fb, common && fb->img, 1, what, ran))
+    if (step(kept, &b, fb, cached, 1, what, ran)) {
+        bases->scene[fb - bases->out].n = -1; /* nothing there: matches no scene */
         return;
+    }
     snprintf(what, sizeof what, "%s = %.24s", row->key, row->to[0].value);
     if (!step(kept, &c, &changed, 0, 0, what, ran)) {
         const unsigned mine = gles ? PK_GLES : PK_CPU;
@@ -289,7 +323,6 @@ static void run_row(hfs_renderer *kept, const pk_row *row, pk_out *base_fresh)
               "%s: the change shows in no output; pick a value that matters", what);
         printf("%-40s kept renderer ran: %s\n", what, ran[0] ? ran : "(nothing)");
     }
-    out_free(&own);
     out_free(&changed);
 }
 
@@ -371,15 +404,16 @@ int main(int argc, char **argv)
         gl_app_make(&app);
     const clock_t t0 = clock();
     hfs_renderer *kept = renderer();
-    pk_out base_fresh = {0};
+    static pk_bases bases;
     int rows = 0;
     for (size_t i = 0; i < sizeof pk_rows / sizeof pk_rows[0]; ++i)
         if (argc < 3 || !strcmp(argv[2], pk_rows[i].key)) {
-            run_row(kept, &pk_rows[i], &base_fresh);
+            run_row(kept, &pk_rows[i], &bases);
             rows++;
         }
     hfs_renderer_destroy(kept);
-    out_free(&base_fresh);
+    for (int i = 0; i < bases.n; ++i)
+        out_free(&bases.out[i]);
     if (gles)
         gl_app_free(&app);
     char cmd[128];
