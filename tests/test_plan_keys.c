@@ -14,7 +14,8 @@
  * later is covered or named.  A change must show in some output on the
  * backends its row names, so that every row tests a cache.
  *
- *   test_plan_keys gles|cpu [KEY]     (KEY: that key's rows only)
+ *   test_plan_keys gles|cpu [KEY | every N]   (KEY: that key's rows only;
+ *                                              every N: rows 0, N, 2N, ...)
  *
  * The field is 16x16 and the view 32x24: every row renders on fresh
  * renderers too, and on llvmpipe each fresh renderer compiles its shaders
@@ -389,10 +390,19 @@ static int fixtures(void)
     return rc;
 }
 
+/* Which rows to run: argv[2] a key (its rows), or "every N" (rows 0, N,
+ * 2N, ...: the sanitizer build's subset), or none (all). */
+static int wanted(int argc, char **argv, size_t i)
+{
+    if (argc > 3 && !strcmp(argv[2], "every"))
+        return i % (size_t)(atoi(argv[3]) > 0 ? atoi(argv[3]) : 1) == 0;
+    return argc < 3 || !strcmp(argv[2], pk_rows[i].key);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2 || (strcmp(argv[1], "gles") && strcmp(argv[1], "cpu"))) {
-        fprintf(stderr, "usage: test_plan_keys gles|cpu [KEY]\n");
+        fprintf(stderr, "usage: test_plan_keys gles|cpu [KEY | every N]\n");
         return 2;
     }
     gles = !strcmp(argv[1], "gles");
@@ -407,7 +417,7 @@ int main(int argc, char **argv)
     static pk_bases bases;
     int rows = 0;
     for (size_t i = 0; i < sizeof pk_rows / sizeof pk_rows[0]; ++i)
-        if (argc < 3 || !strcmp(argv[2], pk_rows[i].key)) {
+        if (wanted(argc, argv, i)) {
             run_row(kept, &pk_rows[i], &bases);
             rows++;
         }
