@@ -2,7 +2,9 @@
 #   test_capture         the V4L2 source against the fake device
 #                        (capture_fake.c: buffer ownership, queue order,
 #                        EAGAIN, a skipped sequence number, a short frame,
-#                        ENODEV mid-stream and the back-off, a driver that
+#                        ENODEV mid-stream and the back-off, EIO mid-stream
+#                        and a sequence restarted by the reopen (no drops
+#                        counted for it), a driver that
 #                        changes the size), hfs-capture-info's listing,
 #                        recordings and their replay ("unit")
 #   test_depth_heights   plane fit, resampling, holes, the temporal filter

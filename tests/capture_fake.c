@@ -125,6 +125,8 @@ static int buf_ioctl(capture_fake *f, unsigned long req, struct v4l2_buffer *b)
     if (b->type != V4L2_BUF_TYPE_VIDEO_CAPTURE || b->memory != V4L2_MEMORY_MMAP)
         return fail(EINVAL);
     if (req == VIDIOC_DQBUF) {
+        if (f->dqbuf_errno)
+            return fail(f->dqbuf_errno);
         if (f->dn == 0)
             return fail(EAGAIN);
         const int i = f->done[0];
@@ -227,6 +229,8 @@ static int fake_ioctl(void *user, int fd, unsigned long req, void *arg)
             return fail(EINVAL);
         f->streaming = 1;
         f->streamons++;
+        if (f->seq_restarts)
+            f->seq = 0;
         return 0;
     case VIDIOC_STREAMOFF:
         f->streaming = 0;

@@ -28,6 +28,10 @@ typedef struct capture_fake {
     int max_buffers;          /* REQBUFS grants at most this (default 8)      */
     int min_buffers;          /* ... and at least this (default 2)            */
     int gone;                 /* unplugged: ENODEV                            */
+    int dqbuf_errno;          /* not 0: DQBUF fails with it (a device dying
+                                 mid-stream: EIO), the rest still works       */
+    int seq_restarts;         /* the sequence starts at 0 again at STREAMON,
+                                 as real drivers do (default: it goes on)     */
     int skip_seq;             /* the next produced frame skips this many      */
     int short_next;           /* the next produced frame has too few bytes    */
     int not_monotonic;        /* timestamps flagged UNKNOWN                    */

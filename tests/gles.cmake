@@ -268,6 +268,15 @@ foreach(env "" "MESA_GLES_VERSION_OVERRIDE=3.0")
   set(hfs_gles_tests ${hfs_gles_tests} ${tname})
 endforeach()
 
+# Uniform data in textures (block_texture.h) grown on a kept renderer under
+# strict limits: every block a texture, then more rows of each; kept ==
+# fresh, bit for bit (test_gles_block_grow.c).
+add_executable(test_gles_block_grow ${CMAKE_CURRENT_LIST_DIR}/test_gles_block_grow.c)
+target_link_libraries(test_gles_block_grow PRIVATE hfshade_lib hfs_gles hfs_terrain_gen m)
+add_test(NAME test_gles_block_grow COMMAND test_gles_block_grow)
+set_tests_properties(test_gles_block_grow PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 120)
+set(hfs_gles_tests ${hfs_gles_tests} test_gles_block_grow)
+
 # Shadow height maps and point queries (issue 19; runtime/core/shm.c, cpu_points.c,
 # truth_points.c, gles/shm_query.c): closed forms and exact rays (unit),
 # and the GLES maps against the CPU's at both precisions (test_shm.c).

@@ -12,8 +12,9 @@
 #   test_kiosk_amortize    the same with --amortize 1: the last frame, after
 #                          the amortized passes caught up, is still the
 #                          direct render ("gl")
-#   test_kiosk_signals     SIGHUP reload (good and broken scene), journal
-#                          priorities, SIGTERM exit 0 ("gl")
+#   test_kiosk_signals     SIGHUP reload (good and broken scene, a check
+#                          process killed by a signal), journal priorities,
+#                          SIGTERM exit 0 ("gl")
 #   test_kiosk_idle        3 s without events: no frame, < 5% of a core ("gl")
 #   test_kiosk_view        a button turns the 3-D view on, knobs turn the
 #                          camera: last frame == the library's view ("gl")

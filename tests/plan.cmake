@@ -27,3 +27,25 @@ hfs_add_test(test_plan_amortize SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_plan_amor
 # runs exactly the passes that read it (the swath's sample count included).
 hfs_add_test(test_gles_plan_diff SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gles_plan_diff.c
              LIBS hfs_gles LABEL unit)
+# Every scene key through the planner (issue 35, test_plan_keys.c): the
+# table of scene keys walked, each key changed on a kept renderer against
+# a fresh one, bit for bit (image, 3-D view, lit texture, point queries);
+# on GLES ("gl", 77 without a context) and on the CPU reference ("unit").
+add_executable(test_plan_keys ${CMAKE_CURRENT_LIST_DIR}/test_plan_keys.c)
+target_link_libraries(test_plan_keys PRIVATE hfshade_scene hfshade_io hfshade_lib hfs_gl
+                      hfs_terrain_gen hfs_sky_gen PkgConfig::HFS_EGL m)
+# The sanitizer build, whose job is memory and UB errors and where the
+# walk takes ~6x longer (90 s for both), walks every 5th row; the table
+# is checked whole in every build.
+set(hfs_plan_keys_rows "")
+if(HFS_SANITIZE)
+  set(hfs_plan_keys_rows every 5)
+endif()
+add_test(NAME test_plan_keys_gles COMMAND test_plan_keys gles ${hfs_plan_keys_rows})
+set_tests_properties(test_plan_keys_gles PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
+add_test(NAME test_plan_keys_cpu COMMAND test_plan_keys cpu ${hfs_plan_keys_rows})
+set_tests_properties(test_plan_keys_cpu PROPERTIES LABELS unit TIMEOUT 300)
+if(HFS_SANITIZE)
+  set_property(TEST test_plan_keys_gles APPEND PROPERTY ENVIRONMENT
+               "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+endif()

@@ -290,6 +290,28 @@ static void collect(void *user, int warning, const char *line)
     snprintf(l->last, sizeof l->last, "%s", line);
 }
 
+/* A heights camera on the fake device through the kiosk's capture path
+ * (capture_live.h), its log lines collected; retries after 1 us, 2 us, ...
+ * NULL on failure (counted). */
+static hfs_capture_live *live_open(capture_fake *f, hfs_v4l2_ops *ops, log_lines *lines)
+{
+    *ops = capture_fake_ops(f);
+    hfs_capture_configs cc = {0};
+    char msg[300];
+    hfs_capture_config_begin(&cc, "sand", 1, msg, sizeof msg);
+    hfs_capture_config_key(&cc, "device", "/dev/video7", 2, msg, sizeof msg);
+    hfs_capture_config_key(&cc, "window", "1", 3, msg, sizeof msg);
+    hfs_capture_config_key(&cc, "plane", "0 0 1", 4, msg, sizeof msg);
+    CHECK(hfs_capture_config_end(&cc, msg, sizeof msg) == 0, "config: %s", msg);
+    hfs_capture_live_desc d = {.config = &cc.c[0], .grid_w = 32, .grid_h = 24, .ops = ops,
+                               .log = collect, .log_user = lines, .retry_min_ns = 1000,
+                               .retry_max_ns = 8000};
+    hfs_capture_live *live = NULL;
+    hfs_error err = {{0}};
+    CHECK(hfs_capture_live_open(&d, &live, &err) == 0, "live: %s", err.msg);
+    return live;
+}
+
 /* The kiosk's capture path (capture_live.h) against the fake device:
  * heights from frames, ENODEV mid-stream survived with the last heights
  * kept, one report, the back-off's reopen, frames again. */
@@ -298,23 +320,12 @@ static void test_live(void)
     capture_fake f;
     capture_fake_init(&f, "/dev/video7");
     f.fill = fill_block;
-    hfs_v4l2_ops ops = capture_fake_ops(&f);
-    hfs_capture_configs cc = {0};
-    char msg[300];
-    hfs_capture_config_begin(&cc, "sand", 1, msg, sizeof msg);
-    hfs_capture_config_key(&cc, "device", "/dev/video7", 2, msg, sizeof msg);
-    hfs_capture_config_key(&cc, "window", "1", 3, msg, sizeof msg);
-    hfs_capture_config_key(&cc, "plane", "0 0 1", 4, msg, sizeof msg);
-    CHECK(hfs_capture_config_end(&cc, msg, sizeof msg) == 0, "config: %s", msg);
+    hfs_v4l2_ops ops;
     log_lines lines = {0};
-    hfs_capture_live_desc d = {.config = &cc.c[0], .grid_w = 32, .grid_h = 24, .ops = &ops,
-                               .log = collect, .log_user = &lines, .retry_min_ns = 1000,
-                               .retry_max_ns = 8000};
-    hfs_capture_live *live = NULL;
-    hfs_error err = {{0}};
-    CHECK(hfs_capture_live_open(&d, &live, &err) == 0, "live: %s", err.msg);
+    hfs_capture_live *live = live_open(&f, &ops, &lines);
     if (!live)
         return;
+    hfs_error err = {{0}};
     int w, h;
     uint64_t serial;
     CHECK(!hfs_capture_live_heights(live, &w, &h, &serial) && serial == 0, "none yet");
@@ -352,6 +363,60 @@ static void test_live(void)
     capture_fake_free(&f);
 }
 
+/* A device dying mid-stream with EIO on DQBUF (the kernel's other answer
+ * for a device going away) and back with its sequence restarted at 0, as
+ * real drivers count from STREAMON: one line, the last heights kept, the
+ * back-off's reopen, and no frame counted dropped for the restart (the
+ * unsigned gap 0 - 4 - 1 is 4294967291); a gap after it still counts. */
+static void test_restart(void)
+{
+    capture_fake f;
+    capture_fake_init(&f, "/dev/video7");
+    f.fill = fill_block;
+    f.seq_restarts = 1;
+    hfs_v4l2_ops ops;
+    log_lines lines = {0};
+    hfs_capture_live *live = live_open(&f, &ops, &lines);
+    if (!live)
+        return;
+    hfs_capture_live_stats st;
+    for (int i = 0; i < 5; ++i) {
+        capture_fake_produce(&f, 1);
+        CHECK(hfs_capture_live_drain(live, 10 + i) == 1, "frame %d", i);
+    }
+    hfs_capture_live_stats_get(live, &st);
+    CHECK(st.sequence == 4 && st.dropped == 0 && st.frames == 5, "seq %u dropped %ld frames %ld",
+          st.sequence, st.dropped, st.frames);
+    f.dqbuf_errno = EIO;
+    capture_fake_produce(&f, 1);
+    CHECK(hfs_capture_live_drain(live, 100) == 0 && lines.n == 1 &&
+              !strcmp(lines.last, "video /dev/video7: VIDIOC_DQBUF: Input/output error "
+                                  "(showing the last frame; retrying)"),
+          "died mid-stream: %d lines, last '%s'", lines.n, lines.last);
+    hfs_capture_live_stats_get(live, &st);
+    CHECK(st.lost && f.open_fds == 0 && f.maps == f.unmaps, "lost, released");
+    f.dqbuf_errno = 0;
+    hfs_capture_live_drain(live, 100000);
+    CHECK(lines.n == 2 && !strcmp(lines.last, "video /dev/video7: back"), "back: %s",
+          lines.last);
+    capture_fake_produce(&f, 1); /* seq 0, flat as seq 4 was: the heights stay */
+    hfs_capture_live_drain(live, 100001);
+    hfs_capture_live_stats_get(live, &st);
+    CHECK(st.sequence == 0 && st.dropped == 0 && st.frames == 6,
+          "after the restart: seq %u, dropped %ld (want 0), frames %ld", st.sequence, st.dropped,
+          st.frames);
+    f.skip_seq = 2;
+    capture_fake_produce(&f, 1); /* seq 3: the block */
+    CHECK(hfs_capture_live_drain(live, 100002) == 1, "new heights after a gap");
+    hfs_capture_live_stats_get(live, &st);
+    CHECK(st.sequence == 3 && st.dropped == 2, "gap after the restart: seq %u dropped %ld",
+          st.sequence, st.dropped);
+    hfs_error err = {{0}};
+    CHECK(hfs_capture_live_close(live, &err) == 0, "close");
+    CHECK(f.open_fds == 0 && f.maps == f.unmaps && f.bad_qbuf == 0, "all released");
+    capture_fake_free(&f);
+}
+
 int main(void)
 {
     char tmp[] = "/tmp/test_capture_XXXXXX";
@@ -362,6 +427,7 @@ int main(void)
     test_negotiation();
     test_info();
     test_live();
+    test_restart();
     test_replay(tmp);
     char cmd[600];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);

@@ -5,9 +5,10 @@
  * lights + residual equal to the map's integral; the 0/360 seam and the
  * poles; black, constant, gradient-only and 1x1 maps (no lights); NaN, Inf
  * and negative texels (one-line errors, map untouched); determinism across
- * thread counts; the tracker's identities on a moving sun; 400 maps of odd
- * sizes (1..97 x 1..61) and hostile content (hot texels of 1e30 on zeros,
- * 1e-30 noise): finite lights within the budget and energy kept.
+ * thread counts; the tracker's identities on a moving sun, the frame at
+ * which a faded one is dropped; 400 maps of odd sizes (1..97 x 1..61) and
+ * hostile content (hot texels of 1e30 on zeros, 1e-30 noise): finite
+ * lights within the budget and energy kept.
  * Every bound is the value measured when the test was written plus the
  * margin stated beside it.
  */
@@ -251,16 +252,23 @@ static void test_bad_texels(void)
     CHECK(hfs_env_decompose(m, 0, h, NULL, "x", &d, &err) == HFS_E_INVALID, "0 wide");
 }
 
+/* A w x h sky (s) whose one disk holds the share of its energy. */
+static float *one_sun(int w, int h, hfs_sky_disk disk, double share, hfs_sky_desc *s)
+{
+    hfs_sky_defaults(s, w, h);
+    s->n_disks = 1;
+    s->disk[0] = disk;
+    double e[1][3];
+    float *m = sky(s, e);
+    hfs_sky_set_share(s, 0, share, m, e);
+    return m;
+}
+
 /* The demo's must-show sky: a 0.5-degree sun holding 80% of the energy. */
 static void test_sun(int w, int h, double dir_px, double share_abs)
 {
     hfs_sky_desc s;
-    hfs_sky_defaults(&s, w, h);
-    s.n_disks = 1;
-    s.disk[0] = (hfs_sky_disk){135, 35, 0.25, {1, 0.95, 0.9}};
-    double e[1][3];
-    float *m = sky(&s, e);
-    hfs_sky_set_share(&s, 0, 0.8, m, e);
+    float *m = one_sun(w, h, (hfs_sky_disk){135, 35, 0.25, {1, 0.95, 0.9}}, 0.8, &s);
     double map[3];
     integral(m, w, h, map);
     hfs_env_decomp d;
@@ -334,6 +342,39 @@ static void test_tracking_skip(void)
             id = d.light[k].id;
         if (k >= 0)
             CHECK(d.light[k].id == id, "skip %d: sun id %d, was %d", f, d.light[k].id, id);
+        free(m);
+    }
+}
+
+/* The vanish rule (env_decompose.h): a tracked light below vanish_share
+ * for vanish_frames frames in a row is dropped.  A sun tracked from frame
+ * 0 falls to a tenth of vanish_share at frame 3: it is still reported (its
+ * identity kept, found where it was) in frames 3, 4, 5, the third weak one
+ * its last, and not from frame 6 (too weak to come back as a new light).
+ * Exact frames: one frame late or early fails. */
+static void test_tracking_vanish(void)
+{
+    const int w = 128, h = 64, weak_from = 3;
+    hfs_env_tracker t;
+    hfs_env_tracker_init(&t, NULL);
+    const int last = weak_from + t.vanish_frames - 1;
+    int id = -1;
+    for (int f = 0; f <= last + 2; ++f) {
+        hfs_sky_desc s;
+        float *m = one_sun(w, h, (hfs_sky_disk){100, 30, 1.5, {1, 1, 1}},
+                           f < weak_from ? 0.6 : 0.1 * t.vanish_share, &s);
+        hfs_env_decomp d;
+        hfs_error err = {{0}};
+        CHECK(!hfs_env_track(&t, m, w, h, "frame", &d, &err), "vanish %d: %s", f, err.msg);
+        const int k = find(&d, &s.disk[0]);
+        if (f == 0 && k >= 0)
+            id = d.light[k].id;
+        CHECK((k >= 0) == (f <= last), "vanish: frame %d: the sun %s (weak from frame %d, "
+              "reported up to frame %d)", f, k >= 0 ? "reported" : "not reported", weak_from,
+              last);
+        CHECK(k < 0 || d.light[k].id == id, "vanish: frame %d: id %d, was %d", f,
+              k >= 0 ? d.light[k].id : 0, id);
+        CHECK(f <= last || t.n == 0, "vanish: frame %d: %d lights still tracked", f, t.n);
         free(m);
     }
 }
@@ -449,6 +490,7 @@ int main(int argc, char **argv)
     test_determinism();
     test_tracking();
     test_tracking_skip();
+    test_tracking_vanish();
     test_odd_maps();
     printf("test_env_decompose: %ld checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;

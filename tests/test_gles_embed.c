@@ -19,14 +19,9 @@
  * application's context is current again after every call (renders,
  * point queries, destroy); refusals.
  */
-#include "gl_api.h"
-#include "gl_test.h"
-#include "gl_util.h"
+#include "gl_app.h"
 #include "hfs_io.h"
 #include "test_gles_scenes.h"
-
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
 
 #include <math.h>
 #include <string.h>
@@ -42,77 +37,13 @@ static int failures;
         }                                                                                    \
     } while (0)
 
-typedef struct app {
-    EGLDisplay dpy;
-    EGLContext ctx;
-    hfs_gl gl;
-    GLuint fbo;
-} app;
+typedef gl_app app;
 
-static void *app_proc(void *user, const char *name)
-{
-    (void)user;
-    return (void *)eglGetProcAddress(name);
-}
-
-/* The application's own context: surfaceless Mesa, ES 3; exits 77 where
- * this machine has no GLES context at all. */
-static void app_make(app *a)
-{
-    hfs_error err = {""};
-    PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
-        (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-    a->dpy = get_display ? get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL)
-                         : EGL_NO_DISPLAY;
-    const EGLint cfg_attr[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_SURFACE_TYPE, 0,
-                               EGL_NONE};
-    const EGLint ctx_attr[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_NONE};
-    EGLConfig cfg = EGL_NO_CONFIG_KHR;
-    EGLint n = 0;
-    if (a->dpy == EGL_NO_DISPLAY || !eglInitialize(a->dpy, NULL, NULL) ||
-        !eglBindAPI(EGL_OPENGL_ES_API) || !eglChooseConfig(a->dpy, cfg_attr, &cfg, 1, &n) ||
-        (a->ctx = eglCreateContext(a->dpy, n ? cfg : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT,
-                                   ctx_attr)) == EGL_NO_CONTEXT ||
-        !eglMakeCurrent(a->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, a->ctx)) {
-        hfs_fail(&err, HFS_E_CONTEXT, "EGL error 0x%x", (unsigned)eglGetError());
-        gl_test_unavailable("the application's own EGL context", &err);
-    }
-    if (hfs_gl_load(&a->gl, app_proc, NULL, &err))
-        gl_test_unavailable("GL entry points of the application's context", &err);
-    a->gl.GenFramebuffers(1, &a->fbo);
-}
-
-static void app_free(app *a)
-{
-    a->gl.DeleteFramebuffers(1, &a->fbo);
-    eglMakeCurrent(a->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(a->dpy, a->ctx);
-}
-
-/* The lit texture as the application sees it: wait on the fence, attach
- * the texture to the application's framebuffer, read RGBA floats. */
+/* The lit texture as the application sees it (gl_app.h). */
 static int app_read(app *a, const hfs_lit_texture *t, float *rgba)
 {
-    const hfs_gl *gl = &a->gl;
     hfs_error err = {""};
-    gl->WaitSync((GLsync)t->fence, 0, GL_TIMEOUT_IGNORED);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, a->fbo);
-    gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->texture, 0);
-    int rc = HFS_OK;
-    if (t->internal_format == GL_RGBA16F) {
-        rc = hfs_gl_read_rgba(gl, a->fbo, 0, 0, t->width, t->height, HFS_GL_READ_AUTO, rgba,
-                              NULL, &err);
-    } else { /* RGBA8: the one pair ES 3.0 guarantees for it */
-        const size_t n = (size_t)t->width * t->height * 4;
-        unsigned char *b = malloc(n);
-        gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
-        if (b)
-            gl->ReadPixels(0, 0, t->width, t->height, GL_RGBA, GL_UNSIGNED_BYTE, b);
-        for (size_t i = 0; b && i < n; ++i)
-            rgba[i] = (float)b[i] / 255.0f;
-        rc = b ? hfs_gl_check(gl, "read RGBA8", &err) : hfs_fail(&err, HFS_E_NOMEM, "no memory");
-        free(b);
-    }
+    const int rc = gl_app_read(a, t, rgba, &err);
     CHECK(!rc, "read in the application's context: %s", err.msg);
     return rc;
 }
@@ -254,7 +185,7 @@ static void planned(app *a, hfs_renderer *r, const hfs_field *f, hfs_lighting l,
 int main(void)
 {
     app a;
-    app_make(&a);
+    gl_app_make(&a);
     scene s;
     if (scene_make("fractal", 96, NULL, &s))
         return 1;
@@ -309,7 +240,7 @@ int main(void)
     check_current(&a, "destroy");
     hfs_image_free(&img);
     scene_free(&s);
-    app_free(&a);
+    gl_app_free(&a);
     printf("embed: %s\n", failures ? "FAILED" : "ok");
     return failures ? 1 : 0;
 }

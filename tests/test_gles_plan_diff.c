@@ -24,7 +24,7 @@ static hfs_gles_frame_sig base_sig(void)
     hfs_gles_frame_sig s;
     memset(&s, 0, sizeof s);
     s.sub = 2, s.vw = 17, s.vh = 17;
-    s.has_env = 1, s.nphi_env = 16, s.vis_path = 0;
+    s.has_env = 1, s.nphi_env = 16, s.vis_path = 0, s.hz_refine = 4;
     s.l_env[0][0] = s.l_env[1][0] = s.l_env[2][0] = 1.0;
     s.rho_pi = 1.0 / 3.14159;
     s.n_keys = 2;
@@ -111,6 +111,10 @@ int main(void)
     EXPECT("local 0 out of shadow range", s.local[0].open = 1, shade);
     EXPECT("local settings", s.nphi_local = 16, "local 0 local 1 shade readback ");
     EXPECT("environment azimuths", s.nphi_env = 32, "env transfer shade readback ");
+    /* refine: every env and key horizon's samples between scales (the
+     * key factor reads the horizons; local lights have none). */
+    EXPECT("horizon refinement", s.hz_refine = 1,
+           "env key 0 key 1 transfer key 0 factor key 1 factor shade readback ");
     EXPECT("visibility path", s.vis_path = 1,
            "env key 0 key 1 local 0 local 1 transfer key 0 factor key 1 factor shade readback ");
     EXPECT("subsample", (s.sub = 1, s.vw = s.vh = 33),

@@ -11,7 +11,8 @@
  *   test_kiosk signals KIOSK HFGEN   SIGHUP reloads an edited scene (the
  *                                    next frame is the new scene's); a
  *                                    broken scene on SIGHUP is one "<3>"
- *                                    journal line and the kiosk goes on;
+ *                                    journal line and the kiosk goes on,
+ *                                    as for a check process that crashes;
  *                                    SIGTERM: exit 0, stats complete
  *   test_kiosk idle    KIOSK HFGEN   3 s without events: no frame, < 5% of
  *                                    one core
@@ -20,11 +21,13 @@
  *                                    drives the demo scene (--no-devices)
  * Exit 77 only when no GLES context of any kind can be made here (gl_test.h).
  */
+#define _GNU_SOURCE /* prlimit */
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -251,6 +254,88 @@ static int outcome_lines(void)
     return kh_count_lines(kh_path("err.txt"), "") - checking_lines();
 }
 
+/* The state letter of process pid in /proc/PID/stat (R, S, T stopped, Z
+ * a zombie, ...), 0 when there is no such process. */
+static char proc_state(pid_t pid)
+{
+    char path[64], buf[512];
+    snprintf(path, sizeof path, "/proc/%d/stat", (int)pid);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return 0;
+    const size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = '\0';
+    const char *p = strrchr(buf, ')'); /* the name may hold spaces and parentheses */
+    return p && p[1] == ' ' ? p[2] : 0;
+}
+
+/* The process the n-th (from 1) "SIGHUP: checking ... in process PID"
+ * line of the kiosk's log names, or -1. */
+static pid_t check_pid(int n)
+{
+    char *log = kh_read(kh_path("err.txt"));
+    const char *p = log;
+    for (int i = 0; p && i < n; ++i)
+        if ((p = strstr(p, "SIGHUP: checking ")) != NULL)
+            p += 17;
+    const char *in = p ? strstr(p, " in process ") : NULL;
+    const pid_t pid = in ? (pid_t)atoi(in + 12) : -1;
+    free(log);
+    return pid > 0 ? pid : -1;
+}
+
+/* A reload check that crashes (killed by SIGABRT, as a failed assertion
+ * in a driver would; not SIGSEGV, which AddressSanitizer builds catch and
+ * turn into an exit status) is a failed check, not a passed one: one
+ * "<3>reload failed" line saying what killed it, the running scene kept.
+ * The check process the kiosk names is held (SIGSTOP, seen stopped in
+ * /proc) before it can end, sent SIGABRT and let go (SIGCONT); one that
+ * ended first (a fast machine) is tried again with another SIGHUP. */
+static void crashed_check(pid_t pid)
+{
+    kh_write(kh_path("c.ini"), config); /* the configuration mended */
+    for (int attempt = 0; attempt < 5; ++attempt) {
+        const int n = checking_lines() + 1, failed = kh_count_lines(kh_path("err.txt"),
+                                                                     "<3>reload failed");
+        const int reloads = kh_count_lines(kh_path("stats.txt"), "reload ");
+        kill(pid, SIGHUP);
+        if (!kh_wait_lines(pid, kh_path("err.txt"), "<6>SIGHUP: checking ", n, 60)) {
+            CHECK(0, "crashed check: no 'checking' line");
+            return;
+        }
+        const pid_t c = check_pid(n);
+        int held = c > 0 && kill(c, SIGSTOP) == 0;
+        for (int i = 0; held && i < 400 && proc_state(c) != 'T' && proc_state(c) != 'Z' &&
+                        proc_state(c) != 0; ++i)
+            kh_sleep(0.005);
+        held = held && proc_state(c) == 'T';
+        if (held) {
+            const struct rlimit no_core = {0, 0}; /* no core file of a GL process */
+            prlimit(c, RLIMIT_CORE, &no_core, NULL);
+            kill(c, SIGABRT);
+            kill(c, SIGCONT);
+        }
+        CHECK(kh_wait_lines(pid, kh_path("stats.txt"), "reload ", reloads + 1, 60),
+              "crashed check: no reload line");
+        if (!held)
+            continue;
+        char *err = kh_read(kh_path("err.txt"));
+        const char *last = err ? strstr(err, "SIGHUP: checking") : NULL;
+        for (int i = 1; last && i < n; ++i)
+            last = strstr(last + 1, "SIGHUP: checking");
+        printf("crashed check (process %d, attempt %d): %s", (int)c, attempt + 1,
+               last ? strchr(last, '\n') + 1 : "");
+        CHECK(kh_count_lines(kh_path("err.txt"), "<3>reload failed") == failed + 1 && last &&
+                  strstr(last, "died of Aborted") && !strstr(last, "reloaded"),
+              "a check killed by SIGABRT: not one '<3>reload failed ... died of' line");
+        free(err);
+        CHECK(kill(pid, 0) == 0 && waitpid(pid, NULL, WNOHANG) == 0, "died on a crashed check");
+        return;
+    }
+    CHECK(0, "crashed check: the check ended before it could be held, 5 times");
+}
+
 static void signals(const char *kiosk, const char *hfgen)
 {
     make_scene(hfgen, "30,20,3,100");
@@ -318,6 +403,7 @@ static void signals(const char *kiosk, const char *hfgen)
           "the error names the configuration's line");
     free(err);
     CHECK(kill(pid, 0) == 0 && waitpid(pid, NULL, WNOHANG) == 0, "died on a broken config");
+    crashed_check(pid);
 
     kill(pid, SIGTERM);
     const int st = kh_wait(pid, 60);

@@ -7,10 +7,13 @@
  *   nadir        a flat field seen straight down: every pixel is the lit
  *                image's bilinear value where its ray meets z = 0
  *   background   rays that miss show the sky: radiance 1 under a uniform sky
+ *   sky rotation the sky turned by env-rotate: the SH at each ray turned
+ *                back, and the view of the coefficients rotated beforehand
  *   exaggeration a ramp with exaggeration 2 is the ramp at zscale 2,
  *                bit for bit
  */
 #include "field_geom.h"
+#include "sh.h"
 #include "test_util.h"
 #include "truth_view.h"
 
@@ -116,6 +119,57 @@ static void test_background(void)
     free(z), free(lit), free(view);
 }
 
+/* The sky turned by env-rotate (a feature at azimuth phi seen at phi +
+ * angle, sh.h hfs_sh_rotate_z): every pixel of an all-sky view is the
+ * unrotated SH evaluated at its ray turned back, R_z(-angle) d, and the
+ * same view as with the coefficients rotated beforehand; a sky with a
+ * sideways gradient, so that the turn shows. */
+static void test_sky_rotation(void)
+{
+    const int w = 8, h = 8, vw = 16, vh = 8;
+    float *z = calloc((size_t)w * h, sizeof *z), *lit = lit_pattern(w, h);
+    float *a = malloc(sizeof(float) * vw * vh * 3), *b = malloc(sizeof(float) * vw * vh * 3);
+    const hfs_field f = {w, h, z, 1.0, 1.0};
+    hfs_lighting l, pre;
+    hfs_lighting_defaults(&l);
+    l.has_env = 1;
+    for (int c = 0; c < 3; ++c) /* constant, +z, +x and +y gradients, a little m = 2 */
+        l.env_sh[c][0] = 3.0, l.env_sh[c][2] = 0.5, l.env_sh[c][3] = 1.0 + 0.2 * c,
+        l.env_sh[c][1] = 0.4, l.env_sh[c][8] = 0.3;
+    pre = l;
+    const double angle = 1.1;
+    l.env_rotate = angle;
+    for (int c = 0; c < 3; ++c)
+        hfs_sh_rotate_z(l.env_sh[c], angle, pre.env_sh[c]);
+    const hfs_camera cam = {0.0, -0.3, 100.0, 0.5, {3.5, 3.5, 50.0}, 1.0, 0};
+    hfs_error err = {""};
+    REQUIRE(hfs_truth_view(&f, lit, &l, &cam, NULL, vw, vh, a, 1, &err) == HFS_OK, "%s", err.msg);
+    REQUIRE(hfs_truth_view(&f, lit, &pre, &cam, NULL, vw, vh, b, 1, &err) == HFS_OK, "%s",
+            err.msg);
+    hfs_camera_frame fr;
+    hfs_camera_frame_make(&cam, &fr);
+    double worst = 0.0, worst_pre = 0.0, turned = 0.0;
+    for (int p = 0; p < vw * vh; ++p) {
+        double d[3], y[HFS_SH_N], y0[HFS_SH_N];
+        hfs_camera_ray(&fr, vw, vh, p % vw, p / vw, d);
+        const double cs = cos(angle), sn = sin(angle);
+        hfs_sh_eval(cs * d[0] + sn * d[1], -sn * d[0] + cs * d[1], d[2], y);
+        hfs_sh_eval(d[0], d[1], d[2], y0);
+        for (int c = 0; c < 3; ++c) {
+            const double want = hfs_sh_dot(y, l.env_sh[c]);
+            worst = fmax(worst, fabs(a[3 * p + c] - want) / fabs(want));
+            worst_pre = fmax(worst_pre, fabs(a[3 * p + c] - b[3 * p + c]) / fabs(want));
+            turned = fmax(turned, fabs(a[3 * p + c] - hfs_sh_dot(y0, l.env_sh[c])));
+        }
+    }
+    CHECK(worst < 1e-6);
+    CHECK(worst_pre < 1e-6);
+    CHECK(turned > 0.1);
+    printf("sky rotation: the turned sky within %.1e of the SH at the turned-back rays, %.1e of "
+           "the rotated coefficients (the turn moves it by %.2f)\n", worst, worst_pre, turned);
+    free(z), free(lit), free(a), free(b);
+}
+
 static void test_exaggeration(void)
 {
     const int w = 24, h = 20, vw = 40, vh = 30;
@@ -172,6 +226,7 @@ int main(void)
     test_frame();
     test_nadir();
     test_background();
+    test_sky_rotation();
     test_exaggeration();
     return finish_checks("test_truth_view");
 }

@@ -13,7 +13,8 @@ hfs_add_test(test_metrics SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_metrics.c
 # white furnace (test_truth_bounce.c).
 hfs_add_test(test_truth_bounce SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_bounce.c
              LIBS hfs_truth LABEL unit TIMEOUT 300)
-# The 3-D view's camera and the truth's ray-cast view (test_truth_view.c).
+# The 3-D view's camera and the truth's ray-cast view, its sky turned by
+# env-rotate (test_truth_view.c).
 hfs_add_test(test_truth_view SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_view.c
              LIBS hfs_truth LABEL unit TIMEOUT 120)
 # The truth of an environment map (runtime/truth/truth_envmap.c): constant, SH,

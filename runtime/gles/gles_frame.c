@@ -75,6 +75,7 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     s->has_env = fr->has_env;
     s->nphi_env = q->nphi_env;
     s->vis_path = (int)q->visibility;
+    s->hz_refine = q->refine;
     if (fr->split.on) {
         s->far_from = (int)fr->split.from;
         s->far_k = fr->split.k;
@@ -270,14 +271,15 @@ int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     g->stats.offset_mismatches = 0;
     for (int p = 0; p < HFS_PASS_COUNT; ++p) {
         if (p == HFS_PASS_SHADE && !fr->run[p][0]) {
-            /* Neither shading nor read-back: the kept image holds; the
-             * passes after the read-back (lit texture, view) may still run. */
+            /* No shading: the kept image holds (a frame with an image
+             * shades whenever it reads back, plan()), and so do the
+             * shaded targets, so the passes after it run as planned: the
+             * bounce for new bounce settings in a lit-texture frame (it
+             * was skipped too, and the texture kept the old bounces),
+             * the lit texture, the view. */
             if (fr->out)
                 memcpy(fr->out->rgb, g->last_img, n_img * sizeof *fr->out->rgb);
             mark_cached(g, fr, HFS_PASS_SHADE);
-            mark_cached(g, fr, HFS_PASS_BOUNCE);
-            mark_cached(g, fr, HFS_PASS_READBACK);
-            p = HFS_PASS_READBACK;
             continue;
         }
         if ((rc = run_pass(g, fr, p, err)))

@@ -141,7 +141,8 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
     if (a->sub != b->sub || a->vw != b->vw || a->vh != b->vh)
         hfs_plan_change(p, gp->in_grid, "subsample changed");
     if (a->nphi_env != b->nphi_env || a->vis_path != b->vis_path || a->has_env != b->has_env ||
-        a->far_from != b->far_from || a->far_k != b->far_k || a->far_step != b->far_step)
+        a->far_from != b->far_from || a->far_k != b->far_k || a->far_step != b->far_step ||
+        a->hz_refine != b->hz_refine)
         hfs_plan_change(p, gp->in_env_set, "environment settings changed");
     if (a->has_env != b->has_env || memcmp(a->l_env, b->l_env, sizeof a->l_env))
         hfs_plan_change(p, gp->in_env_light, "environment light changed (rotation, tint)");
@@ -159,9 +160,12 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
         if (!ha && !hb)
             continue;
         if (ha != hb || !swath_equal(&a->key[i].swath, &b->key[i].swath) ||
-            a->key[i].hz_layer != b->key[i].hz_layer || a->vis_path != b->vis_path) {
+            a->key[i].hz_layer != b->key[i].hz_layer || a->vis_path != b->vis_path ||
+            a->hz_refine != b->hz_refine) {
             snprintf(why, sizeof why, "key %d: %s", i,
-                     ha != hb ? "light added or removed" : "moved to a new swath");
+                     ha != hb                         ? "light added or removed"
+                     : a->hz_refine != b->hz_refine ? "horizon refinement changed"
+                                                      : "moved to a new swath");
             hfs_plan_change(p, gp->in_key_geom[i], why);
         }
         if (ha != hb || memcmp(a->key[i].dir, b->key[i].dir, sizeof a->key[i].dir) ||

@@ -7,9 +7,10 @@
  * difference between two signatures into changed inputs.
  *
  *   inputs   terrain (heights, size, dx, zscale, k, offset, precision),
- *            grid (subsample), env settings (nphi_env, visibility path),
- *            env light (rotated SH), albedo, key i geometry (its swath and
- *            horizon layers), key i direction (direction, size, elevation
+ *            grid (subsample), env settings (nphi_env, visibility path,
+ *            split horizons, horizon refinement),
+ *            env light (rotated SH), albedo, key i geometry (its swath,
+ *            horizon layers and refinement), key i direction (direction, size, elevation
  *            window), key i radiance, local settings (nphi_local, swath
  *            mode, path), local i geometry (centre, radius, and whether the
  *            terrain can shadow it at all: lights.h hfs_local_light_open),
@@ -71,6 +72,8 @@ typedef struct hfs_gles_frame_sig {
     int sub, vw, vh;
     int has_env, nphi_env, vis_path;
     int far_from, far_k, far_step; /* split horizons (0: not split) */
+    int hz_refine;                /* quality refine: samples between scales of
+                                     every env and key horizon */
     double l_env[3][HFS_SH_COEFFS];
     int env_map;                  /* gles_backend.h hfs_gles_frame env_map */
     const float *emap;            /* env-shade = map: the map, its size and */
