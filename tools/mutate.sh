@@ -2,6 +2,7 @@
 # mutate.sh — does the test suite notice when the product breaks?
 #
 #   tools/mutate.sh [-l LIST] [-o REPORT.md] [-k ID[,ID...]] [-j JOBS] [-w WORKDIR]
+#                   [-t HINTS]
 #
 # Applies each mutation of LIST (default tools/mutations.txt) alone to a
 # scratch copy of the working tree (tracked and untracked, not ignored
@@ -19,6 +20,13 @@
 # "\t" and "\n" stand for a tab and a newline.  Lines starting with # are
 # comments.
 #
+# HINTS (optional): lines "ID TEST", the test that killed mutant ID before
+# (docs/MUTATION.md's tables; tools/mutate_hints.sh writes them from the
+# reports).  That test runs first, alone; when it fails the mutant is
+# KILLED by it, otherwise the whole suite runs as above.  Only the order
+# changes (a test of the suite fails or none does), and a run takes
+# seconds a mutant instead of the unit/io group's minute or more.
+#
 # The report (REPORT, default WORKDIR/mutate-report.md) is a markdown table:
 # id, what, verdict, the first test that failed, seconds.  Exit 0 when the
 # killed share of the mutants that built is at least 95% (MUTATE_MIN_KILLED,
@@ -31,14 +39,16 @@ work="$root/build-mutate"
 report=""
 only=""
 jobs=2
-while getopts "l:o:k:j:w:h" opt; do
+hints=""
+while getopts "l:o:k:j:w:t:h" opt; do
     case $opt in
     l) list="$(realpath "$OPTARG")" ;;
     o) report="$(realpath -m "$OPTARG")" ;;
     k) only=",$OPTARG," ;;
     j) jobs="$OPTARG" ;;
     w) work="$(realpath -m "$OPTARG")" ;;
-    *) sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit 2 ;;
+    t) hints="$(realpath "$OPTARG")" ;;
+    *) sed -n '2,35p' "$0" | sed 's/^# \{0,1\}//'; exit 2 ;;
     esac
 done
 [ -n "$report" ] || report="$work/mutate-report.md"
@@ -55,16 +65,23 @@ rm -rf "$src"
 mkdir -p "$src"
 (cd "$root" && git ls-files -co --exclude-standard -z | tar --null -T - -cf -) | (cd "$src" && tar -xf -)
 
-build_and_test() { # $1 = log name; prints "verdict first_failed"
-    local name="$1"
+build_and_test() { # $1 = log name, $2 = a test to run first; prints "verdict first_failed"
+    local name="$1" hint="${2:-}"
     if ! cmake --build "$bld" -j"$jobs" >"$log/$name.build" 2>&1; then
         echo "NO-BUILD -"
         return
     fi
-    # Unit and io tests first (seconds), then the rest; stop at the first
-    # failure.  Tests that hang count as failures through their TIMEOUTs.
     local out="$log/$name.ctest"
     : >"$out"
+    # The hinted test alone first (-t HINTS): a failure there is a kill.
+    if [ -n "$hint" ] &&
+       ! ctest --test-dir "$bld" -R "^${hint}\$" --timeout 900 >>"$out" 2>&1 &&
+       grep -q -E '\*\*\*(Failed|Timeout|Exception)' "$out"; then
+        echo "KILLED $hint"
+        return
+    fi
+    # Unit and io tests first (seconds), then the rest; stop at the first
+    # failure.  Tests that hang count as failures through their TIMEOUTs.
     for sel in "-L unit|io" "-LE unit|io"; do
         # shellcheck disable=SC2086
         if ! ctest --test-dir "$bld" $sel -j"$jobs" --stop-on-failure --timeout 900 \
@@ -110,8 +127,10 @@ while IFS=$'\t' read -r id file find replace what; do
     [ -z "$only" ] || [[ "$only" == *",$id,"* ]] || continue
     t0=$(date +%s)
     cp "$src/$file" "$work/orig"
+    hint=""
+    [ -z "$hints" ] || hint="$(awk -v id="$id" '$1 == id { print $2; exit }' "$hints")"
     if apply "$src/$file" "$find" "$replace"; then
-        read -r verdict first < <(build_and_test "$id")
+        read -r verdict first < <(build_and_test "$id" "$hint")
     else
         verdict=STALE first=-
     fi
