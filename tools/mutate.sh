@@ -64,6 +64,9 @@ echo "mutate.sh: copying the working tree to $src"
 rm -rf "$src"
 mkdir -p "$src"
 (cd "$root" && git ls-files -co --exclude-standard -z | tar --null -T - -cf -) | (cd "$src" && tar -xf -)
+# tar keeps the files' times: a build left by a run stopped mid-mutant
+# would be newer than the restored source and keep the mutant.
+find "$src" -type f -exec touch {} +
 
 build_and_test() { # $1 = log name, $2 = a test to run first; prints "verdict first_failed"
     local name="$1" hint="${2:-}"
