@@ -123,6 +123,18 @@ uniform int u_coarsest;                  /* coarsest scale searched: split horiz
 #ifdef HFS_FAR_ATLAS
 uniform ivec2 u_fgrid;                   /* the far grid's receivers (a tile) */
 uniform int u_fcols;                     /* tiles a row of the atlas */
+/* The gap search (runtime/core/ray_bound.h) from far-from on: the max
+ * pyramid's atlas, its levels' corners, the slope per normalized height
+ * and texel, and far-from. */
+#define HFS_RAY_LEVELS 16
+float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float zf, float tie, vec2 h0,
+                     float best, float stop, inout float dist, inout int fetches);
+uniform highp sampler2D u_height;        /* the input heights (hi, lo) */
+uniform highp sampler2D u_bounds;
+uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
+uniform float u_zf;
+uniform float u_gap_from;
 #endif
 #ifdef HFS_SWATH_TEX
 /* The same data from a texture (too large for a uniform block): vec4 i of
@@ -320,7 +332,8 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
 /* Split horizons' far pass: this texel's tile, its receiver, and the
  * occluders of its two sub-directions beyond the u_near near scales, each
  * search starting below any tangent plane (cpu_horizon.h
- * hfs_horizon_occluder). */
+ * hfs_horizon_occluder), then searched in every gap from far-from on
+ * (hfs_gap_search; cpu_far_grid.c). */
 void main()
 {
     ivec2 q = ivec2(gl_FragCoord.xy);
@@ -336,8 +349,12 @@ void main()
         if (j >= HFS_NDIR)
             continue;
         float dist;
-        float best = clamp(horizon_tan(g, SW_DIR(j).xy, hx, -1e30, HFS_NLEV - 1 - u_near, fetches,
-                                       dist), -1e18, 1e18);
+        vec2 cs = SW_DIR(j).xy;
+        float best = horizon_tan(g, cs, hx, -1e30, HFS_NLEV - 1 - u_near, fetches, dist);
+        best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, u_zf,
+                              u_tie, hx[HFS_NLAYERS - 1], dist > 0.0 ? best : -1e30, 1e30, dist,
+                              fetches);
+        best = clamp(best, -1e18, 1e18);
         if (dist > 0.0) {
             res[2 * h] = clamp(best * dist, -3e4, 3e4);
             res[2 * h + 1] = dist;

@@ -71,6 +71,10 @@ void hfs_bspline_close_at(inout float best, inout float bd, vec4 w, float dk, fl
 bool hfs_scale_takes_over(float sl, float ref, float tie);
 float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs, vec4 sc,
                        vec2 h, int n, float k, float best, inout float dist, inout int fetches);
+#define HFS_RAY_LEVELS 16
+float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float zf, float tie, vec2 h0,
+                     float best, float stop, inout float dist, inout int fetches);
 
 uniform highp sampler2DArray u_levels;
 uniform highp sampler2D u_normals;
@@ -82,6 +86,15 @@ uniform int u_near;                      /* finest scales left to key_visibility
 uniform float u_lk;                      /* the pyramid's levels per octave k */
 uniform int u_refine;                    /* samples refining the max between scales; 0: B-spline */
 uniform float u_tie;                     /* hfs_horizon_tie_slope */
+/* The gap search (runtime/core/ray_bound.h) after the refined max: the
+ * max pyramid's atlas, its levels' corners, the slope per normalized
+ * height and texel (hscale zscale / dx), and where the search starts
+ * (where the grid's scales start: the near ones are the texels'). */
+uniform highp sampler2D u_height;        /* the input heights (hi, lo) */
+uniform highp sampler2D u_bounds;
+uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
+uniform float u_zf;
+uniform float u_gap_from;
 
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];
@@ -161,8 +174,10 @@ float bspline_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
  * hfs_horizon_refined): the plain max of the scales' slopes from fine
  * to coarse (the first scale off the grid contributes the floor, and every
  * coarser one is off the grid too), then u_refine samples about the finest
- * scale t holding it (hfs_scale_takes_over, hfs_refine_about).  Slopes,
- * not angles, are compared: one atan. */
+ * scale t holding it (hfs_scale_takes_over, hfs_refine_about), then the
+ * gap search from u_gap_from (hfs_gap_search: every crossing of the ray
+ * with the grid's lines that could beat it).  Slopes, not angles, are
+ * compared: one atan. */
 float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout int fetches,
                       out float dist, out bool seen)
 {
@@ -196,6 +211,9 @@ float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
     dist = sc.x;
     best = hfs_refine_about(u_levels, g, u_size, cs, sc, hx[int(sc.z)], u_refine, u_lk, best,
                             dist, fetches);
+    /* and every band between the scales: no narrow occluder is stepped over */
+    best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, u_zf, u_tie,
+                          hx[HFS_NLAYERS - 1], best, 1e30, dist, fetches);
     return atan(best);
 }
 

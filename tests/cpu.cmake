@@ -20,3 +20,6 @@ target_include_directories(bench_shm PRIVATE ${PROJECT_SOURCE_DIR}/tools)
 add_executable(bench_shm_passes ${CMAKE_CURRENT_SOURCE_DIR}/bench_shm_passes.c)
 target_link_libraries(bench_shm_passes PRIVATE hfshade_lib hfs_terrain_gen hfs_gl m)
 target_include_directories(bench_shm_passes PRIVATE ${PROJECT_SOURCE_DIR}/tools)
+# The gap search's max pyramid and search against brute force (issue 36).
+hfs_add_test(test_ray_bound SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_ray_bound.c
+             LIBS hfs_core m LABEL unit TIMEOUT 60)

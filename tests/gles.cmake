@@ -94,6 +94,9 @@ endforeach()
 # whole-frame breakage):
 #   measured grid flips / mean / max  cones   sub 2  6 / 1.15e-3 / 4.48e-2
 #                                             sub 4  0 / 2.72e-3 / 3.71e-2
+#                                             (issue 36's gap search: 0 /
+#                                             2.73e-3 / 6.96e-2, a shadow
+#                                             edge of subsample 1 moved)
 #                                     fractal sub 2  8 / 2.81e-2 / 0.487
 #                                             sub 4  5 / 5.32e-2 / 0.552
 #                                     DEM     sub 2 23 / 4.46e-3 / 0.107
@@ -110,7 +113,7 @@ endforeach()
 #                                     fractal sub 2 11 / 5.27e-3 / 0.926
 # (before the near search: mean 3.75e-3, 1.08e-2, 9.40e-3.)
 hfs_gles_test(test_gles_sub2_cones sub cones 2 f7.35e-3 1.38e-3 5.38e-2)
-hfs_gles_test(test_gles_sub4_cones sub cones 4 f0 3.27e-3 4.45e-2)
+hfs_gles_test(test_gles_sub4_cones sub cones 4 f0 3.27e-3 8.4e-2)
 hfs_gles_test(test_gles_sub2_fractal sub fractal 2 f9.18e-3 3.37e-2 0.585)
 hfs_gles_test(test_gles_sub4_fractal sub fractal 4 f2.08e-2 6.39e-2 0.662)
 hfs_gles_test(test_gles_sub2_dem sub dem 2 f1.17e-2 5.35e-3 0.128)
@@ -319,6 +322,10 @@ endmacro()
 foreach(prog test_metamorphic test_metamorphic_turn test_metamorphic_pad test_metamorphic_view)
   hfs_metamorphic_test(${prog})
 endforeach()
+# test_long_shadow: a post a few texels wide keeps its long shadow under a
+# low sun (issue 36; the umbra and the lit ground told by geometry), the
+# same backends and subsamples.
+hfs_metamorphic_test(test_long_shadow)
 
 if(HFS_SANITIZE)
   foreach(t IN LISTS hfs_gles_tests)

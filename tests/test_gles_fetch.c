@@ -84,7 +84,9 @@ static int mode_timing(void)
  *          + sum over the nphi_env directions of the in-grid scales
  *          (+ 4 per wedge on the wedge-table path: one table fetch each);
  *   key    per draw of up to 8 directions: 1 + NL, + the in-grid scales of
- *          each direction of the light's swath;
+ *          each direction of the light's swath, + its gap search's reads
+ *          ("Gap search": on a flat field no bound beats the flat max, so
+ *          the walk never halves a run: fc_gap);
  *   local  per draw of up to 8 lights: 1 + NL; per light (receiver outside
  *          its sphere; full swath of nphi_local) the scales in-grid and not
  *          farther than the light's centre (the entry cut of a full swath;
@@ -155,6 +157,38 @@ static long fc_scales(int gx, int gy, int w, int h, int n_lev, int k, double phi
                       double *margin)
 {
     return fc_scales_from(gx, gy, w, h, n_lev, k, phi, cut, margin, 0);
+}
+
+/* DESIGN.md "Horizons", gap search, on a flat field: the crossings m of
+ * the direction's major axis from the first at distance >= t_first to the
+ * last on the grid (the minor coordinate within 1e-3 of it): the first
+ * crossing evaluated (2 fetches: two grid points), then runs of 2, 4, 8 ...
+ * crossings (clipped at the last), one bound fetch each. */
+static long fc_gap(int gx, int gy, int w, int h, double phi, double t_first)
+{
+    double c = cos(phi), s = sin(phi);
+    c = fabs(c) < 1e-12 ? 0.0 : c;
+    s = fabs(s) < 1e-12 ? 0.0 : s;
+    const int xm = fabs(c) >= fabs(s);
+    const double ma = fabs(xm ? c : s), r = (xm ? s : c) / ma;
+    const int p = xm ? gx : gy, q = xm ? gy : gx, nq = xm ? h : w;
+    long last = (xm ? c : s) >= 0.0 ? (xm ? w : h) - 1 - p : p;
+    const double lim = r > 0.0 ? (nq - 1 - q + 1e-3) / r : r < 0.0 ? (q + 1e-3) / -r : 1e9;
+    if (lim < last)
+        last = (long)floor(lim);
+    long m = (long)ceil(t_first * ma - 1e-4), n = 0;
+    m = m < 1 ? 1 : m;
+    int l = 0;
+    while (m <= last) {
+        if (l == 0) {
+            n += 2, ++m, l = 1;
+        } else {
+            n += 1;
+            m = (m + (1L << l) - 1 < last ? m + (1L << l) - 1 : last) + 1;
+            ++l;
+        }
+    }
+    return n;
 }
 
 /* DESIGN.md "Azimuth swaths": the key light's sample azimuths. */
@@ -244,6 +278,8 @@ static fc_counts fc_expect(int w, int h, const hfs_quality *q, const hfs_lightin
                     if (top >= 0)
                         e.key += fc_refined(gx, gy, w, h, exp2((double)(n_lev - 1 - top) / k),
                                             q->refine, k, phi[j]);
+                    if (q->refine > 0) /* from where the grid's scales start */
+                        e.key += fc_gap(gx, gy, w, h, phi[j], exp2((double)near / k));
                 }
             }
             if (l->n_local > 0)

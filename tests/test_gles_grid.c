@@ -125,7 +125,12 @@ static int mode_sub(int argc, char **argv)
  * The 99th percentile (p99: fp16, fp32; measured at 2156b87 by
  * `build/tests/test_gles_grid slice`; the same in Release, Debug+ASan,
  * under MESA_GLES_VERSION_OVERRIDE=3.0 and HFS_GL_STRICT_LIMITS=1, and
- * with GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 but fractal split 1 fp32, 5.400e-6)
+ * with GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 but fractal split 1 fp32, 1.294e-5;
+ * re-measured for issue 36's gap search, which the keys' horizons and the
+ * far grid now take: split 1 fp32 rose from 5.4e-6 / 6.0e-7 (fractal /
+ * dem) to 1.3e-5 / 3.4e-5, the fp16 cases by at most 1.2x; the far
+ * occluders are now crossings, which float and double can pick apart
+ * where slopes nearly tie, not traced further)
  * is bounded at
  * 1.2x: a drift of a few texels hides in the mean and under the max's
  * 10x (the far sub-directions' turns mirrored on GLES alone: split 1 fp32
@@ -142,11 +147,11 @@ static int mode_slice(void)
         double p99[2]; /* fp16, fp32 */
     } cases[] = {
         {"cones", 48, 0, 0, {{3.5e-6, 4.3e-5}, {8.3e-8, 4.1e-7}}, {2.358e-5, 2.015e-7}},
-        {"fractal", 48, 1, 0, {{2.8e-5, 1.8e-4}, {1.4e-7, 3.5e-6}}, {1.375e-4, 6.996e-7}},
+        {"fractal", 48, 1, 0, {{2.8e-5, 1.8e-4}, {1.4e-7, 3.5e-6}}, {1.375e-4, 8.308e-7}},
         {"dem", 40, 0, 0, {{9.0e-6, 8.3e-5}, {1.1e-7, 6.1e-7}}, {4.880e-5, 3.525e-7}},
-        {"cones", 48, 0, 1, {{4.9e-6, 3.0e-4}, {5.5e-7, 2.8e-4}}, {2.761e-5, 5.038e-7}},
-        {"fractal", 48, 1, 1, {{3.2e-5, 7.2e-4}, {1.5e-6, 6.4e-4}}, {1.358e-4, 5.378e-6}},
-        {"dem", 40, 0, 1, {{1.3e-5, 1.8e-3}, {2.8e-6, 1.7e-3}}, {5.560e-5, 6.044e-7}},
+        {"cones", 48, 0, 1, {{4.9e-6, 3.0e-4}, {5.5e-7, 2.8e-4}}, {2.569e-5, 3.023e-7}},
+        {"fractal", 48, 1, 1, {{3.2e-5, 7.2e-4}, {1.5e-6, 6.4e-4}}, {1.547e-4, 1.299e-5}},
+        {"dem", 40, 0, 1, {{1.3e-5, 1.8e-3}, {2.8e-6, 1.7e-3}}, {6.532e-5, 3.354e-5}},
     };
     for (size_t ci = 0; ci < sizeof cases / sizeof cases[0]; ++ci)
         for (int prec = 0; prec < 2; ++prec) {

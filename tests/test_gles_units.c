@@ -17,7 +17,10 @@
  *           float tolerance).
  *   blocks  the std140 swath block carries hfs_visibility_sample_matrix
  *           and the wedge placements; scales and output scale.
+ *   bounds  the gap search's bounds round up (bounds_texture.h): each
+ *           stored value is the least fp16 / float at or above the bound.
  */
+#include "bounds_texture.h"
 #include "cpu_pyramid.h"
 #include "gl_caps.h"
 #include "gl_util.h"
@@ -367,9 +370,34 @@ static void test_blocks(void)
               hfs_gles_local_max_irradiance(&L, &touch) == PI, "local max irradiance");
 }
 
+/* Every stored bound is at or above its value, and the next value down
+ * is below it (the least such), in fp16 and float, over many magnitudes
+ * and both signs. */
+static void test_bounds(void)
+{
+    unsigned x = 2463534242u;
+    int bad = 0;
+    for (int t = 0; t < 200000; ++t) {
+        x ^= x << 13, x ^= x >> 17, x ^= x << 5;
+        const double v = ((x & 1u) ? -1.0 : 1.0) * ldexp((double)(x >> 8) / 16777216.0,
+                                                          (int)(x % 40u) - 30);
+        const uint16_t h = hfs_gles_half_up(v);
+        const double hv = hfs_half_to_float(h);
+        const uint16_t below = hv > 0.0 ? (uint16_t)(h - 1u) : (uint16_t)(h + 1u);
+        bad += !(hv >= v) || (hv != 0.0 && !((double)hfs_half_to_float(below) < v));
+        const float f = hfs_gles_float_up(v);
+        bad += !((double)f >= v) || !((double)nextafterf(f, -INFINITY) < v);
+    }
+    CHECK(bad == 0, "bounds: %d values not rounded up to the least value above", bad);
+    CHECK(hfs_half_to_float(hfs_gles_half_up(0.0)) == 0.0f &&
+              hfs_half_to_float(hfs_gles_half_up(-2.0)) == -2.0f,
+          "bounds: exact values kept");
+}
+
 int main(void)
 {
     setvbuf(stdout, NULL, _IONBF, 0);
+    test_bounds();
     test_caps();
     test_layout();
     test_split();

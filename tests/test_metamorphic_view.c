@@ -199,13 +199,16 @@ static void frame_views(void)
  * one dark pixel one fp16 ulp apart (2.1e-5 of the maximum: x 2.5 at
  * subsample 1 and 2, the aspect at subsample 1), 0 otherwise; bound 1.2x
  * that, 2.5e-5 (so it holds for this scene only: with objects a third the
- * size, one pixel at 0.52 measured 5.4e-4). */
+ * size, one pixel at 0.52 measured 5.4e-4).  The aspect at subsample 1
+ * measured 8.4e-5 since issue 36's gap search (the lit field's shadows
+ * moved, and with them which pixel lands on a rounding boundary): its
+ * bound is 1.2x that, 1.0e-4. */
 static void run(hfs_renderer *r, const char *backend, int sub)
 {
     view_sub = sub > 0 ? sub : 2;
     const double bound = !strcmp(backend, "gles") ? 2.5e-5 : 1e-6;
     scale_view(r, backend, bound);
-    aspect_view(r, backend, bound);
+    aspect_view(r, backend, !strcmp(backend, "gles") ? 1.0e-4 : bound);
     if (!strcmp(backend, "cpu"))
         frame_views();
 }

@@ -482,6 +482,24 @@ out:
     return rc;
 }
 
+/* Long shadows (issue 36): of the texels the reference holds in umbra
+ * (below 1% of their unshadowed value, where that is above 1% of the
+ * norm), how many the result renders lit (at least half their unshadowed
+ * value); over the first channel. */
+static void umbra_lit(const hfs_image *res, const hfs_image *ref, const hfs_image *unsh,
+                      double norm, long *lit, long *umbra)
+{
+    *lit = *umbra = 0;
+    const size_t n = (size_t)ref->width * (size_t)ref->height;
+    for (size_t t = 0; t < n; ++t) {
+        const double u = unsh->rgb[3 * t], r = ref->rgb[3 * t], v = res->rgb[3 * t];
+        if (!(u > 0.01 * norm) || !(r < 0.01 * u))
+            continue;
+        ++*umbra;
+        *lit += v >= 0.5 * u;
+    }
+}
+
 static int cmd_compare(const cli *c, hfs_error *err)
 {
     if (c->n_positional != 2)
@@ -506,8 +524,11 @@ static int cmd_compare(const cli *c, hfs_error *err)
     hfs_metrics m;
     if ((rc = hfs_compare_images(&res, &ref, norm, &m, err)))
         goto out;
-    printf("mean_abs %.3e rmse %.3e p99_abs %.3e max_abs %.3e nonfinite %ld norm %.6g\n",
-           m.mean_abs, m.rmse, m.p99_abs, m.max_abs, m.nonfinite, m.norm);
+    long lit, umbra;
+    umbra_lit(&res, &ref, &unsh, norm, &lit, &umbra);
+    printf("mean_abs %.3e rmse %.3e p99_abs %.3e max_abs %.3e nonfinite %ld norm %.6g "
+           "umbra_lit %ld/%ld\n",
+           m.mean_abs, m.rmse, m.p99_abs, m.max_abs, m.nonfinite, m.norm, lit, umbra);
 out:
     hfs_image_free(&res);
     hfs_image_free(&ref);

@@ -175,6 +175,31 @@ void hfs_terrain_cliff(float *z, int w, int h)
             z[(size_t)j * w + i] = i > 0.5 * (w - 1) + 0.2 * (j - 0.5 * (h - 1)) ? (float)top : 0.0f;
 }
 
+void hfs_terrain_tower(float *z, int w, int h, int bw, int bh)
+{
+    memset(z, 0, (size_t)w * h * sizeof *z);
+    const int x0 = w / 8, y0 = (h - bw) / 2;
+    for (int j = y0 < 0 ? 0 : y0; j < y0 + bw && j < h; ++j)
+        for (int i = x0; i < x0 + bw && i < w; ++i)
+            z[(size_t)j * w + i] = (float)bh;
+}
+
+void hfs_terrain_boxes(float *z, int w, int h, uint32_t seed)
+{
+    memset(z, 0, (size_t)w * h * sizeof *z);
+    const long count = ((long)w * h + 2499) / 2500;
+    for (long b = 0; b < count; ++b) {
+        const uint32_t u = (uint32_t)b;
+        const int bw = 2 + (int)(hash3(u, 1, seed) % 39u), bd = 2 + (int)(hash3(u, 2, seed) % 39u);
+        const float bh = (float)(5 + hash3(u, 3, seed) % 36u);
+        const int x0 = (int)(hash3(u, 4, seed) % (uint32_t)w), y0 = (int)(hash3(u, 5, seed) % (uint32_t)h);
+        for (int j = y0; j < y0 + bd && j < h; ++j)
+            for (int i = x0; i < x0 + bw && i < w; ++i)
+                if (z[(size_t)j * w + i] < bh)
+                    z[(size_t)j * w + i] = bh;
+    }
+}
+
 int hfs_terrain_make(const char *name, float *z, int w, int h, uint32_t seed, double relief)
 {
     if (!strcmp(name, "flat"))
@@ -193,6 +218,10 @@ int hfs_terrain_make(const char *name, float *z, int w, int h, uint32_t seed, do
         hfs_terrain_cliff(z, w, h);
     else if (!strcmp(name, "panel"))
         hfs_terrain_panel(z, w, h);
+    else if (!strcmp(name, "tower"))
+        hfs_terrain_tower(z, w, h, 40, 30);
+    else if (!strcmp(name, "boxes"))
+        hfs_terrain_boxes(z, w, h, seed);
     else if (!strcmp(name, "fractal"))
         return hfs_terrain_fractal(z, w, h, seed, relief) ? -2 : 0;
     else
@@ -202,5 +231,5 @@ int hfs_terrain_make(const char *name, float *z, int w, int h, uint32_t seed, do
 
 const char *hfs_terrain_names(void)
 {
-    return "flat|cones|sine|eggtray|city|spike|cliff|fractal|panel";
+    return "flat|cones|sine|eggtray|city|spike|cliff|fractal|panel|tower|boxes";
 }

@@ -41,8 +41,18 @@ void hfs_terrain_spike(float *z, int w, int h);
  * no direction is axis-aligned with it): 0 on one side, side/4 beyond. */
 void hfs_terrain_cliff(float *z, int w, int h);
 
+/* One square block bw x bw texels, bh tall, on a flat field: its near
+ * side at x = w/8, centred in y (issue 36: the long shadow of a narrow
+ * feature under a low sun from -x). */
+void hfs_terrain_tower(float *z, int w, int h, int bw, int bh);
+
+/* Random boxes on a flat field, one per 2500 texels: sides 2-40 texels,
+ * heights 5-40 (the taller wins where two overlap). */
+void hfs_terrain_boxes(float *z, int w, int h, uint32_t seed);
+
 /* Every generator by name, for the tools: flat, cones, sine, eggtray,
- * city, spike, cliff, fractal (seed, relief), panel.  Returns 0, -1 for an
+ * city, spike, cliff, fractal (seed, relief), panel, tower (40 x 30; hfgen's
+ * --block W,H sets it), boxes (seed).  Returns 0, -1 for an
  * unknown name, -2 when out of memory.  hfs_terrain_names() lists them
  * separated by '|'. */
 int hfs_terrain_make(const char *name, float *z, int w, int h, uint32_t seed, double relief);

@@ -45,8 +45,12 @@ static void far_row(void *ctx, int b, int worker)
         for (int e = 0; e < g->n_sub; ++e) {
             double slope, dist;
             hfs_horizon_point(g->plan, e, x, y, -HALF_PI, NULL, NULL, omega);
-            if (hfs_horizon_occluder(g->plan, e, x, y, omega, 1, g->first_far, g->refine, g->tie,
-                                     &slope, &dist)) {
+            const int has = hfs_horizon_occluder(g->plan, e, x, y, omega, 1, g->first_far,
+                                                 g->refine, g->tie, &slope, &dist);
+            /* and every gap from far-from on (issue 36; env_horizons.frag) */
+            slope = hfs_horizon_gap(g->plan, e, x, y, g->split.from, HUGE_VAL, g->tie,
+                                    has ? slope : -1e30, &dist, NULL);
+            if (dist > 0.0) {
                 double h = slope * dist;
                 h = h > HFS_SPLIT_MAX_H ? HFS_SPLIT_MAX_H : (h < -HFS_SPLIT_MAX_H ? -HFS_SPLIT_MAX_H : h);
                 out[2 * e] = (float)h;

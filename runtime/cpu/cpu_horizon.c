@@ -3,6 +3,8 @@
  */
 #include "cpu_horizon.h"
 
+#include "ray_bound.h"
+
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -13,6 +15,7 @@ struct hfs_horizon_plan {
     const hfs_cpu_pyramid *p;
     int n_dirs, n_levels, w, h;
     size_t stride;
+    double zs;                  /* zscale / dx: slope per height over distance */
     double *cs;                 /* n_dirs x (cos, sin), snapped */
     hfs_horizon_tap *taps;      /* n_dirs x n_levels */
 };
@@ -59,6 +62,7 @@ int hfs_horizon_plan_create(const hfs_cpu_pyramid *p, double dx, double zscale,
     hp->w = hfs_cpu_pyramid_width(p);
     hp->h = hfs_cpu_pyramid_height(p);
     hp->stride = (size_t)hfs_cpu_pyramid_stride(p);
+    hp->zs = zscale / dx;
     hp->cs = malloc(((size_t)n_dirs * 2 + 1) * sizeof *hp->cs);
     hp->taps = malloc(((size_t)n_dirs * (size_t)n + 1) * sizeof *hp->taps);
     if (!hp->cs || !hp->taps) {
@@ -332,6 +336,17 @@ int hfs_horizon_occluder(const hfs_horizon_plan *hp, int dir, int i, int j,
         best = refine_about(hp, dir, i, j, bi, refine, best, dist);
     *slope = best;
     return *dist > 0.0;
+}
+
+double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double t_first,
+                       double t_last, double tie, double best, double *dist, long *reads)
+{
+    const hfs_ray_bound_layout *L;
+    const double *atlas = hfs_cpu_pyramid_bounds(hp->p, &L);
+    const double *z = hfs_cpu_pyramid_full(hp->p, hp->n_levels - 1);
+    return hfs_ray_bound_search(L, atlas, z, hp->stride, i, j, hp->cs[2 * dir],
+                                hp->cs[2 * dir + 1], t_first, t_last, hp->zs, tie, best, dist,
+                                reads);
 }
 
 double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,

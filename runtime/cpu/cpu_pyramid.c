@@ -10,6 +10,7 @@
 #include "cpu_pyramid.h"
 
 #include "parallel.h"
+#include "ray_bound.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -24,6 +25,8 @@ struct hfs_cpu_pyramid {
     double *pool;          /* all decimated levels */
     double *full;          /* reconstructed levels first_full..N-1 */
     size_t full_size;      /* (w+1)*(h+1) */
+    hfs_ray_bound_layout rb; /* the gap search's bounds (ray_bound.h) */
+    double *rb_atlas;
 };
 
 /* ---- filters ------------------------------------------------------------------ */
@@ -240,6 +243,15 @@ int hfs_cpu_pyramid_create(const hfs_field *f, int k, int first_full,
     free(scratch);
     if (!ok)
         goto err_nomem;
+    /* The gap search's bounds of the input heights (ray_bound.h). */
+    hfs_ray_bound_layout_make(w, h, &p->rb);
+    p->rb_atlas = malloc((size_t)p->rb.aw * (size_t)p->rb.ah * sizeof *p->rb_atlas);
+    double *rb_scratch = malloc(2 * (size_t)p->rb.lw[1] * (size_t)p->rb.lh[1] * sizeof *rb_scratch);
+    if (p->rb_atlas && rb_scratch)
+        hfs_ray_bound_build(&p->rb, f->z, 0.0, 1.0, -HUGE_VAL, p->rb_atlas, rb_scratch);
+    free(rb_scratch);
+    if (!p->rb_atlas || !rb_scratch)
+        goto err_nomem;
     *out = p;
     return HFS_OK;
 
@@ -252,6 +264,7 @@ void hfs_cpu_pyramid_destroy(hfs_cpu_pyramid *p)
 {
     if (!p)
         return;
+    free(p->rb_atlas);
     free(p->full);
     free(p->pool);
     free(p->samples);
@@ -304,4 +317,10 @@ double hfs_cpu_pyramid_sample(const hfs_cpu_pyramid *p, int level, double gx, do
     const double top = r0[0] + fx * (r0[1] - r0[0]);
     const double bot = r1[0] + fx * (r1[1] - r1[0]);
     return top + fy * (bot - top);
+}
+
+const double *hfs_cpu_pyramid_bounds(const hfs_cpu_pyramid *p, const hfs_ray_bound_layout **L)
+{
+    *L = &p->rb;
+    return p->rb_atlas;
 }

@@ -40,6 +40,7 @@
 /* ---- object ------------------------------------------------------------------ */
 
 typedef struct hfs_cpu_pyramid hfs_cpu_pyramid;
+typedef struct hfs_ray_bound_layout hfs_ray_bound_layout;
 
 /* Builds the pyramid of f's heights with level step k (>= 1) and reconstructs
  * levels max(first_full, 0)..N-1 to full resolution.  threads: workers for the
@@ -71,5 +72,9 @@ int hfs_cpu_pyramid_stride(const hfs_cpu_pyramid *p);
  * level must be reconstructed. */
 double hfs_cpu_pyramid_sample(const hfs_cpu_pyramid *p, int level, double gx,
                               double gy);
+
+/* The gap search's bounds of the input heights (ray_bound.h: the max
+ * pyramid's atlas, built with base 0 and scale 1) and their layout. */
+const double *hfs_cpu_pyramid_bounds(const hfs_cpu_pyramid *p, const hfs_ray_bound_layout **L);
 
 #endif /* HFS_CPU_PYRAMID_H */

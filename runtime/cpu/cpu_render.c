@@ -110,14 +110,20 @@ static double tie_slope(const hfs_field *f)
 
 /* A key light's horizon at receiver (i, j) in direction d of plan from the
  * row's per-scale angles: SN08's B-spline max (refine 0) or the max
- * refined between scales (cpu_horizon.h). */
+ * refined between scales and searched in every gap between them
+ * (cpu_horizon.h). */
 static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int d, int i,
                           int j, const double *levels, double floor)
 {
     if (c->refine <= 0)
         return hfs_horizon_bspline_max(levels + i, c->n_levels, (size_t)c->w, floor);
-    return hfs_horizon_refined(plan, d, i, j, levels + i, (size_t)c->w, floor, c->refine,
-                               c->tie, 0, 0);
+    const double o = hfs_horizon_refined(plan, d, i, j, levels + i, (size_t)c->w, floor,
+                                         c->refine, c->tie, 0, 0);
+    /* and every band between the scales (issue 36: no narrow occluder's
+     * long shadow is lost) */
+    double dist = 0.0;
+    const double t = tan(o), g = hfs_horizon_gap(plan, d, i, j, 0.0, HUGE_VAL, c->tie, t, &dist, NULL);
+    return g > t ? atan(g) : o;
 }
 
 /* Split horizons (split_horizon.h): direction d's sub-horizons at a texel

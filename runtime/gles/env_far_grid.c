@@ -87,7 +87,8 @@ int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
                                 .far_atlas = 1};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_HORIZONS, &v, &prog, err);
-    if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)))
+    if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
+        (rc = hfs_gles_bind_bounds(g, prog, L, (float)fr->split.from, err)))
         return rc;
     hfs_gles_set_i1(gl, prog, "u_sub", fr->split.step); /* receivers on the far grid */
     hfs_gles_set_i2(gl, prog, "u_fgrid", fr->far_w, fr->far_h);

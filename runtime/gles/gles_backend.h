@@ -217,6 +217,11 @@ int hfs_gles_bind_env_swath(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gle
  * per-scale constants, and sets the grid uniforms. */
 int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
                               const hfs_gles_layout *L, hfs_error *err);
+/* Binds the gap search's heights and bounds (u_height, u_bounds, u_rb_at;
+ * bounds_texture.h) and sets its slope factor u_zf and start u_gap_from
+ * (texels). */
+int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
+                         float gap_from, hfs_error *err);
 /* env_slices.frag over the field into fbo: the transfer's occluded part
  * (env_map 0, pass_env_transfer.c) or the map's occluded irradiance
  * (env_map 1, pass_env_map_slices.c). */

@@ -36,6 +36,7 @@ int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quali
         L->spacing[i] = hfs_pyramid_spacing(L->n_levels, q->k, i);
         L->read_layer[i] = hfs_pyramid_read_level(L->n_levels, q->k, q->offset, i) - L->lmin;
     }
+    hfs_ray_bound_layout_make(L->w, L->h, &L->rb);
     double lo, hi;
     hfs_field_range(f, &lo, &hi);
     L->base = 0.5 * lo + 0.5 * hi; /* no overflow for any float range */

@@ -16,6 +16,7 @@
 #include <stdint.h>
 
 #include "hfshade.h"
+#include "ray_bound.h"
 
 #define HFS_GLES_MAX_LEVELS 256
 
@@ -32,6 +33,7 @@ typedef struct hfs_gles_layout {
     double base, hscale;      /* v = (z - base) / hscale, v in [-1, 1]        */
     double vmax;              /* max v (1, or 0 for a flat field)            */
     double dx, zscale;
+    hfs_ray_bound_layout rb;  /* the gap search's bounds (bounds_texture.h)   */
 } hfs_gles_layout;
 
 /* Fills L for field f and quality q (validated inputs).  HFS_E_UNSUPPORTED

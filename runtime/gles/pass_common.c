@@ -57,6 +57,26 @@ int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
     return HFS_OK;
 }
 
+int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
+                         float gap_from, hfs_error *err)
+{
+    const hfs_gl *gl = &g->gl;
+    int rc;
+    if ((rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, g->r.input, err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_bounds", GL_TEXTURE_2D, g->r.bounds, err)))
+        return rc;
+    GLint at[2 * HFS_RAY_BOUND_MAX_LEVELS] = {0};
+    for (int l = 1; l < L->rb.n_levels; ++l)
+        at[2 * l] = L->rb.x0[l], at[2 * l + 1] = L->rb.y0[l];
+    const GLint loc = gl->GetUniformLocation(prog->name, "u_rb_at");
+    if (loc >= 0)
+        gl->Uniform2iv(loc, HFS_RAY_BOUND_MAX_LEVELS, at);
+    const double zf = L->hscale * L->zscale / L->dx;
+    hfs_gles_set_f1(gl, prog, "u_zf", (float)(zf < 1e30 ? zf : 1e30));
+    hfs_gles_set_f1(gl, prog, "u_gap_from", gap_from);
+    return HFS_OK;
+}
+
 int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, double *sum,
                         hfs_error *err)
 {

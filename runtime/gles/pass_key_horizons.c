@@ -193,9 +193,14 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
                                            err)) ||
                 (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)))
                 return rc;
+            /* the gap search starts where the grid's scales do: the near
+             * ones are searched per texel (key_visibility.frag) */
+            const int near = hfs_gles_key_near_make(L, &k->k.swath).n;
+            if ((rc = hfs_gles_bind_bounds(g, prog, L, (float)exp2((double)near / L->k), err)))
+                return rc;
             hfs_gles_set_i1(gl, prog, "u_dir0", d0);
             hfs_gles_set_i1(gl, prog, "u_ndir", cnt);
-            hfs_gles_set_i1(gl, prog, "u_near", hfs_gles_key_near_make(L, &k->k.swath).n);
+            hfs_gles_set_i1(gl, prog, "u_near", near);
             hfs_gles_set_f1(gl, prog, "u_lk", (float)L->k);
             hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
             hfs_gles_set_f1(gl, prog, "u_tie",

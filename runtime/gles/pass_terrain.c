@@ -10,6 +10,7 @@
  */
 #include "gles_backend.h"
 
+#include "bounds_texture.h"
 #include "gl_util.h"
 
 #include <stdio.h>
@@ -75,8 +76,9 @@ static int upload(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     gl->TexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, L->n_layers - 1, w, h, 1, GL_RG,
                       g->caps.type_upload, buf);
     gl->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    int rc = hfs_gles_bounds_upload(gl, &g->caps, g->r.bounds, L, fr->f, err);
     hfs_gles_stage_end(g, HFS_PASS_TERRAIN, 0);
-    return hfs_gl_check(gl, "backend gles: upload", err);
+    return rc ? rc : hfs_gl_check(gl, "backend gles: upload", err);
 }
 
 static int normals(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)

@@ -125,6 +125,7 @@ void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
 {
     grid_free(r, gl);
     hfs_gles_tex_delete(gl, &r->input);
+    hfs_gles_tex_delete(gl, &r->bounds);
     for (int i = 0; i < HFS_GLES_MAX_LEVELS; ++i) {
         hfs_gles_tex_delete(gl, &r->lev[i]);
         fbo_delete(gl, &r->lev_fbo[i]);
@@ -165,6 +166,8 @@ static int pyramid_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_c
     int rc;
     r->input = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, w, h, 1, 1);
     r->bytes += (size_t)w * h * c->bytes_rg;
+    r->bounds = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_r, L->rb.aw, L->rb.ah, 1, 0);
+    r->bytes += (size_t)L->rb.aw * L->rb.ah * c->bytes_r;
     for (int l = L->lmin; l < L->n_levels - 1; ++l) {
         r->lev[l] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, L->lw[l], L->lh[l], 1, 1);
         r->bytes += (size_t)L->lw[l] * L->lh[l] * c->bytes_rg;

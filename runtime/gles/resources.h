@@ -26,6 +26,7 @@ typedef struct hfs_gles_resources {
     int valid;
     int w, h, n_levels, lmin, n_layers, vw, vh, fp32;
     GLuint input;                                                       /* heights, hi+lo */
+    GLuint bounds;                        /* the gap search's max pyramid (bounds_texture.h) */
     GLuint lev[HFS_GLES_MAX_LEVELS], lev_fbo[HFS_GLES_MAX_LEVELS];      /* decimated levels */
     GLuint half[HFS_GLES_MAX_LEVELS], half_fbo[HFS_GLES_MAX_LEVELS];    /* W x lh: x pass */
     GLuint arr, arr_fbo[HFS_GLES_MAX_LEVELS];   /* reconstructed levels, one layer each */

@@ -1,0 +1,99 @@
+/*
+ * ray_bound.h — horizon searches that cannot step over an occluder
+ * (issue 36; DESIGN.md "Horizons", "Gap search").
+ *
+ * The scales sample a direction at distances d_i = b^m (and `refine` more
+ * about the best): between two samples lies a band d_i (b - 1) long, 128
+ * texels at distance 512 with k = 2, and a block narrower than the band
+ * casts no shadow there. The gap search closes every band:
+ *
+ *   crossings  in direction (c, s) from grid point (i, j), the ray meets
+ *              the lines of its major axis (x when |c| >= |s|) at
+ *              m = 1, 2, ...: the point (i + m sgn c, j + m s / |c|), at
+ *              distance t_m = m / |c|, where the surface is the linear
+ *              interpolation of two grid points along the minor axis
+ *              (SPEC's bilinear surface, exactly). Crossing m's slope is
+ *              (z_m - z_0) zscale / (t_m dx).
+ *   bounds     a max pyramid of the grid points: level l (l >= 1) holds,
+ *              at (a, b), the largest height of the points in
+ *              [a 2^l, a 2^l + 2^(l+1)) x [b 2^l, b 2^l + 2^(l+1)) (2x2
+ *              blocks of 2^l points, so one read bounds any box whose
+ *              corners fall in neighbouring blocks: hfs_ray_bound_level).
+ *              A run of crossings [m0, m1] touches the points of its
+ *              bounding box (the minor coordinate's floor and ceiling), all
+ *              at distance >= t_m0 and <= t_m1, so no crossing in it has a
+ *              slope above (bound - z_0) zscale / (t dx), t = t_m0 where
+ *              the bound rises above z_0 and t_m1 where it falls below.
+ *   search     from crossing m_first to the last inside the grid, runs of
+ *              2^l crossings are skipped while their bound is at most the
+ *              best slope so far; a run whose bound beats it is halved, a
+ *              single crossing is evaluated, and after a skip or an
+ *              evaluation the run doubles: a clear ray costs about two
+ *              reads per octave of distance.  (Capping runs at a quarter of
+ *              their distance, for tighter bounds, read more on every
+ *              benchmark scene: 21-35 reads a search against 11-33.)
+ *
+ * Why it cannot miss: every crossing either is evaluated or lies in a run
+ * whose bound was at most the best slope at that moment, and the best only
+ * grows; so the result is max(start, every crossing's slope) exactly,
+ * whatever the order, the level cap or the rounding of the bounds (as long
+ * as they round up: the GLES atlas stores them rounded up to fp16).
+ * Between two crossings the surface along the ray is a bilinear cell's
+ * quadratic, at most the larger of its corners above them: a feature one
+ * texel wide is seen at its crossing.
+ *
+ * Shared by the CPU reference (this file's search) and the GLES path
+ * (gles_lib.frag hfs_gap_search, the same steps); pure functions.
+ */
+#ifndef HFS_RAY_BOUND_H
+#define HFS_RAY_BOUND_H
+
+#include <stddef.h>
+
+#define HFS_RAY_BOUND_MAX_LEVELS 16 /* levels 1..15: fields up to 32768 texels */
+
+/* The max pyramid's atlas: level 1 at (0, 0), levels 2.. stacked in a
+ * column to its right (width about 3/4 of the field's, height about
+ * half). */
+typedef struct hfs_ray_bound_layout {
+    int w, h;      /* the field's grid points */
+    int n_levels;  /* levels 1..n_levels - 1 are stored (index 0 unused) */
+    int aw, ah;    /* the atlas' size */
+    int x0[HFS_RAY_BOUND_MAX_LEVELS], y0[HFS_RAY_BOUND_MAX_LEVELS];
+    int lw[HFS_RAY_BOUND_MAX_LEVELS], lh[HFS_RAY_BOUND_MAX_LEVELS];
+} hfs_ray_bound_layout;
+
+/* The layout for a w x h field (w, h >= 1): levels up to the first whose
+ * blocks 2^l cover the longer side, so that any box has a level. */
+void hfs_ray_bound_layout_make(int w, int h, hfs_ray_bound_layout *L);
+
+/* Fills atlas (aw x ah doubles, row-major) with the bounds of the heights
+ * (z[j w + i] - base) / scale (scale > 0), and `fill` where no level lies.
+ * scratch: w * h doubles (level 1's plain block maxima, then each
+ * coarser one's). */
+void hfs_ray_bound_build(const hfs_ray_bound_layout *L, const float *z, double base,
+                         double scale, double fill, double *atlas, double *scratch);
+
+/* The level whose one read bounds the grid points [x0, x1] x [y0, y1]
+ * (0 <= x0 <= x1, 0 <= y0 <= y1): the smallest l >= 1 with x1 >> l at
+ * most one block past x0 >> l and the same in y. */
+int hfs_ray_bound_level(int x0, int x1, int y0, int y1);
+
+/* One receiver's gap search, as described above, on the CPU: grid point
+ * (i, j) of heights z (row stride `stride`, w x h), direction (c, s)
+ * (snapped as the horizon plans snap them), crossings at distances in
+ * [t_first, t_last] (HUGE_VAL: to the grid's edge), slopes (z - z_0) * zs / t with zs = zscale / dx,
+ * bounds from atlas (built with base 0, scale 1).  Returns the largest of
+ * `best` and every crossing's slope, where a crossing takes over only when
+ * it beats the best so far by more than the horizons' tie
+ * (HFS_HORIZON_TIE |best| + tie, pyramid_layout.h: so that float and double
+ * searches pick the same crossing on a plateau's top, where slopes tie);
+ * *dist becomes the distance of the crossing that set it (unchanged when
+ * none beat `best`).  *reads, when
+ * not NULL, grows by the reads made (bounds and heights). */
+double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
+                            size_t stride, int i, int j, double c, double s, double t_first,
+                            double t_last, double zs, double tie, double best, double *dist,
+                            long *reads);
+
+#endif /* HFS_RAY_BOUND_H */

@@ -1,0 +1,57 @@
+/*
+ * bounds_texture.c — see bounds_texture.h.
+ */
+#include "bounds_texture.h"
+
+#include "gl_util.h"
+#include "ray_bound.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+/* fp16 bit patterns step monotonically in magnitude: the next value up is
+ * one pattern further from zero for positives, one nearer for negatives. */
+uint16_t hfs_gles_half_up(double v)
+{
+    uint16_t h = hfs_float_to_half((float)v);
+    if ((double)hfs_half_to_float(h) >= v)
+        return h;
+    if (h == 0x8000u)
+        return 0x0001u; /* -0 up to the least positive */
+    return (h & 0x8000u) ? (uint16_t)(h - 1u) : (uint16_t)(h + 1u);
+}
+
+float hfs_gles_float_up(double v)
+{
+    const float f = (float)v;
+    return (double)f >= v ? f : nextafterf(f, INFINITY);
+}
+
+int hfs_gles_bounds_upload(const hfs_gl *gl, const hfs_gl_caps *c, GLuint tex,
+                           const hfs_gles_layout *L, const hfs_field *f, hfs_error *err)
+{
+    const hfs_ray_bound_layout *rb = &L->rb;
+    const size_t n = (size_t)rb->aw * (size_t)rb->ah;
+    double *atlas = malloc(n * sizeof *atlas);
+    double *scratch = malloc(2 * (size_t)rb->lw[1] * (size_t)rb->lh[1] * sizeof *scratch);
+    void *buf = malloc(n * (c->fp32 ? sizeof(float) : sizeof(uint16_t)));
+    if (!atlas || !scratch || !buf) {
+        free(atlas), free(scratch), free(buf);
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the height bounds");
+    }
+    hfs_ray_bound_build(rb, f->z, L->base, L->hscale, -2.0, atlas, scratch);
+    for (size_t i = 0; i < n; ++i) {
+        if (c->fp32)
+            ((float *)buf)[i] = hfs_gles_float_up(atlas[i]);
+        else
+            ((uint16_t *)buf)[i] = hfs_gles_half_up(atlas[i]);
+    }
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl->BindTexture(GL_TEXTURE_2D, tex);
+    gl->TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, rb->aw, rb->ah, GL_RED, c->type_upload, buf);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    free(atlas), free(scratch), free(buf);
+    return hfs_gl_check(gl, "backend gles: height bounds upload", err);
+}

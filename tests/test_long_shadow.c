@@ -1,0 +1,187 @@
+/*
+ * test_long_shadow.c — narrow features keep their long shadows (issue 36,
+ * deliverable 1): a post a few texels wide on a flat field under a small
+ * low sun, its umbra and its lit ground told by geometry alone (no truth
+ * render): a ground texel is in umbra where every ray to the sun's disk
+ * (its centre and both sides, at the disk's top) passes over the post's
+ * top square below its height, with a margin; it is lit where every ray
+ * misses the post's footprint grown by the one-texel ramp of the bilinear
+ * surface, or passes above its height.  Each umbra texel must render below
+ * 5% of its unshadowed value (50% on a sub-sampled grid: run_case), each
+ * lit one above 95%.
+ *
+ * Before the gap search (runtime/core/ray_bound.h) the scales sampled the
+ * sun's direction at distances 2^(m/k) and stepped over the post beyond a
+ * few times its width: the shadow came out in stripes, lit texels deep in
+ * the umbra.  The cases: axis-aligned and oblique suns (3-15 degrees),
+ * posts 2-6 texels wide, the post's shadow crossing 100-300 texels.
+ *
+ *   test_long_shadow cpu | gles SUBSAMPLE [fp32]
+ */
+#include "metamorphic.h" /* mm_main: the backend from the command line */
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+#define LS_CHECK(c, ...)                                                                     \
+    do {                                                                                     \
+        if (!(c)) {                                                                          \
+            fprintf(stderr, "FAIL: " __VA_ARGS__);                                           \
+            fputc('\n', stderr);                                                             \
+            ++failures;                                                                      \
+        }                                                                                    \
+    } while (0)
+
+typedef struct post_case {
+    int w, h;          /* field */
+    int x0, y0, side;  /* the post's grid points [x0, x0 + side - 1]^2 */
+    double height;
+    double phi, elev, alpha; /* the sun, degrees */
+} post_case;
+
+/* Entry distance of the 2-D ray from (px, py) along (c, s) into the square
+ * [a0, a1] x [b0, b1], or -1 when it misses (slab method). */
+static double ray_enter(double px, double py, double c, double s, double a0, double a1,
+                        double b0, double b1)
+{
+    double t0 = 0.0, t1 = 1e30;
+    const double o[2] = {px, py}, d[2] = {c, s}, lo[2] = {a0, b0}, hi[2] = {a1, b1};
+    for (int k = 0; k < 2; ++k) {
+        if (fabs(d[k]) < 1e-12) {
+            if (o[k] < lo[k] || o[k] > hi[k])
+                return -1.0;
+            continue;
+        }
+        double ta = (lo[k] - o[k]) / d[k], tb = (hi[k] - o[k]) / d[k];
+        if (ta > tb) {
+            const double t = ta;
+            ta = tb;
+            tb = t;
+        }
+        t0 = fmax(t0, ta);
+        t1 = fmin(t1, tb);
+    }
+    return t0 <= t1 ? t0 : -1.0;
+}
+
+/* 1: umbra, 0: lit, -1: neither (penumbra, the post, its ramp), for the
+ * ground point (i, j). */
+static int classify(const post_case *pc, double i, double j)
+{
+    const double a0 = pc->x0, a1 = pc->x0 + pc->side - 1, b0 = pc->y0, b1 = pc->y0 + pc->side - 1;
+    if (i >= a0 - 1 && i <= a1 + 1 && j >= b0 - 1 && j <= b1 + 1)
+        return -1;
+    const double al = pc->alpha * PI / 180.0, e = pc->elev * PI / 180.0;
+    const double side = asin(sin(al) / cos(e)); /* the disk's half-width in azimuth */
+    int umbra = 1, lit = 1;
+    for (int k = -1; k <= 1; ++k) {
+        const double phi = pc->phi * PI / 180.0 + k * side;
+        const double c = cos(phi), s = sin(phi);
+        const double t_in = ray_enter(i, j, c, s, a0, a1, b0, b1);
+        /* the whole disk blocked: its top (e + alpha) below the top
+         * square's height with a margin, and the sides in the square */
+        if (t_in < 0.0 || t_in * tan(e + al) > pc->height - 0.5 ||
+            ray_enter(i, j, c, s, a0 + 0.5, a1 - 0.5, b0 + 0.5, b1 - 0.5) < 0.0)
+            umbra = 0;
+        const double t_ramp = ray_enter(i, j, c, s, a0 - 1.5, a1 + 1.5, b0 - 1.5, b1 + 1.5);
+        if (t_ramp >= 0.0 && t_ramp * tan(e - al) < pc->height + 0.5)
+            lit = 0;
+    }
+    return umbra ? 1 : (lit ? 0 : -1);
+}
+
+/* Umbra texels render below umbra_max of their unshadowed value: 5% at
+ * subsample 1, and none of them lit (at half of it or more) at subsample
+ * 1.  On a sub-sampled grid a texel blends its grid receivers'
+ * occluders, and across the lateral edge of a shadow one or two texels
+ * wide some of them miss the post: the edge lands within the grid step
+ * (issue 36's "sharp lights on the grid", not done).  There the bound is
+ * the issue's: at most 1% of the umbra lit (rounded up to whole texels),
+ * umbra_max 50%; along the shadow nothing may be lost. */
+static void run_case(hfs_renderer *r, const char *name, const post_case *pc,
+                     const hfs_quality *q)
+{
+    const double umbra_max = q->subsample > 1 ? 0.5 : 0.05;
+    const int w = pc->w, h = pc->h;
+    float *z = calloc((size_t)w * h, sizeof *z);
+    for (int j = pc->y0; j < pc->y0 + pc->side; ++j)
+        for (int i = pc->x0; i < pc->x0 + pc->side; ++i)
+            z[(size_t)j * w + i] = (float)pc->height;
+    const hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
+    hfs_lighting l;
+    hfs_lighting_defaults(&l);
+    l.n_key = 1;
+    l.key[0] = (hfs_key_light){.phi = pc->phi * PI / 180.0, .elev = pc->elev * PI / 180.0,
+                               .alpha = pc->alpha * PI / 180.0, .radiance = {1000, 1000, 1000}};
+    hfs_image img = {0}, un = {0};
+    hfs_error err = {""};
+    if (hfs_image_alloc(&img, w, h, &err) || hfs_image_alloc(&un, w, h, &err) ||
+        hfs_renderer_render(r, &f, &l, q, &img, NULL, NULL, &err) ||
+        hfs_render_unshadowed(&f, &l, q, &un, &err)) {
+        fprintf(stderr, "FAIL %s: %s\n", name, err.msg);
+        ++failures;
+    } else {
+        long n_umbra = 0, n_lit = 0, bad_umbra = 0, bad_lit = 0;
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i) {
+                const int k = classify(pc, i, j);
+                const size_t t = 3 * ((size_t)j * w + i);
+                const double v = img.rgb[t], u = un.rgb[t];
+                if (k == 1) {
+                    ++n_umbra;
+                    bad_umbra += v > umbra_max * u;
+                    if (v > umbra_max * u && bad_umbra <= 3)
+                        printf("  umbra texel (%d, %d) at %.3f of its unshadowed value\n", i, j,
+                               v / u);
+                } else if (k == 0) {
+                    ++n_lit;
+                    bad_lit += v < 0.95 * u;
+                }
+            }
+        printf("%s: post %d wide, %.0f tall, sun %.0f/%.0f: umbra %ld texels, %ld lit; "
+               "lit ground %ld texels, %ld shadowed\n", name, pc->side, pc->height, pc->phi,
+               pc->elev, n_umbra, bad_umbra, n_lit, bad_lit);
+        LS_CHECK(n_umbra > 100, "%s: only %ld umbra texels (the case is wrong)", name, n_umbra);
+        const long allowed = q->subsample > 1 ? (n_umbra + 99) / 100 : 0;
+        LS_CHECK(bad_umbra <= allowed, "%s: %ld of %ld umbra texels lit (at most %ld)", name,
+                 bad_umbra, n_umbra, allowed);
+        LS_CHECK(bad_lit == 0, "%s: %ld of %ld lit texels shadowed", name, bad_lit, n_lit);
+    }
+    hfs_image_free(&img);
+    hfs_image_free(&un);
+    free(z);
+}
+
+/* Every case with the defaults at subsample sub (fp32 textures on GLES
+ * when the test is named so: TEST gles SUB fp32). */
+static int fp32;
+static void run(hfs_renderer *r, const char *backend, int sub)
+{
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    q.subsample = sub > 0 ? sub : 1;
+    if (fp32)
+        q.precision = HFS_PRECISION_FP32;
+    static const post_case cases[] = {
+        {320, 20, 20, 8, 4, 10.0, 180.0, 3.0, 0.25},  /* along -x: 190 texels of umbra */
+        {24, 260, 9, 230, 6, 24.0, 90.0, 6.0, 0.25},  /* along +y, towards row 0 */
+        {200, 160, 20, 20, 3, 14.0, 213.0, 5.0, 0.25}, /* oblique */
+        {160, 160, 140, 140, 3, 12.0, 45.0, 4.0, 0.1}, /* diagonal */
+        {300, 40, 30, 18, 5, 40.0, 184.0, 15.0, 0.5}, /* a steeper sun */
+    };
+    char name[64];
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
+        snprintf(name, sizeof name, "%s sub %d case %zu", backend, q.subsample, c);
+        run_case(r, name, &cases[c], &q);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    fp32 = argc > 3 && !strcmp(argv[3], "fp32");
+    return mm_main(argc, argv, "test_long_shadow", run);
+}
