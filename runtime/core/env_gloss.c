@@ -11,115 +11,114 @@
 #include "sh.h"
 
 #define PI 3.14159265358979323846
-#define CELL_COLS 128
+#define NW HFS_ENV_GLOSS_NW
 #define CELL_ROWS 64
 #define LOBE_CUT 1e-4 /* lobe values below this share of its peak: skipped */
 
-/* The map gathered into cells: per cell its solid angle, its radiance
- * times solid angle per channel and its solid-angle centroid (unit after
- * the gather).  Rows of cells are bands of elevation, listed with the
- * extreme elevations their pixels reach. */
+/* The map gathered into NW columns of cells (the table's columns: cell k
+ * centred at azimuth 2 pi (k + 1/2) / NW) and at most CELL_ROWS rows:
+ * per cell its radiance times solid angle per channel; per row its cells'
+ * solid angle (all equal) and the elevation of its solid-angle centroid.
+ * A map narrower than NW gives each cell the pixel at its centre. */
 typedef struct gloss_cells {
-    int cols, rows;
-    double *omega, *energy, *dir; /* cols x rows, x 3, x 3 */
-    double *top, *bottom;         /* per row of cells: elevations, radians */
+    int rows;
+    double *energy;     /* rows x NW x 3 */
+    double *omega, *e;  /* per row */
 } gloss_cells;
 
 static void cells_free(gloss_cells *g)
 {
-    free(g->omega);
     free(g->energy);
-    free(g->dir);
-    free(g->top);
-    free(g->bottom);
+    free(g->omega);
+    free(g->e);
 }
 
 static int cells_gather(const float *rgb, int w, int h, gloss_cells *g)
 {
-    g->cols = w < CELL_COLS ? w : CELL_COLS;
     g->rows = h < CELL_ROWS ? h : CELL_ROWS;
-    const size_t n = (size_t)g->cols * (size_t)g->rows;
-    g->omega = calloc(n, sizeof *g->omega);
-    g->energy = calloc(3 * n, sizeof *g->energy);
-    g->dir = calloc(3 * n, sizeof *g->dir);
-    g->top = malloc((size_t)g->rows * sizeof *g->top);
-    g->bottom = malloc((size_t)g->rows * sizeof *g->bottom);
-    if (!g->omega || !g->energy || !g->dir || !g->top || !g->bottom)
+    g->energy = calloc((size_t)g->rows * NW * 3, sizeof *g->energy);
+    g->omega = calloc((size_t)g->rows, sizeof *g->omega);
+    g->e = calloc((size_t)g->rows, sizeof *g->e);
+    double *mz = calloc((size_t)g->rows * 2, sizeof *mz); /* per row: Int z, Int rho */
+    if (!g->energy || !g->omega || !g->e || !mz) {
+        free(mz);
         return HFS_E_NOMEM;
-    for (int r = 0; r < g->rows; ++r)
-        g->top[r] = -PI, g->bottom[r] = PI;
+    }
     for (int y = 0; y < h; ++y) {
         const double e0 = 0.5 * PI - PI * y / h, e1 = 0.5 * PI - PI * (y + 1.0) / h;
-        const double em = 0.5 * (e0 + e1), om = 2.0 * PI / w * (sin(e0) - sin(e1));
+        const double band = 2.0 * PI * (sin(e0) - sin(e1)); /* the pixel row's solid angle */
         const int r = (int)((long)y * g->rows / h);
-        g->top[r] = fmax(g->top[r], e0);
-        g->bottom[r] = fmin(g->bottom[r], e1);
+        g->omega[r] += band / NW;
+        mz[2 * r] += PI * (sin(e0) * sin(e0) - sin(e1) * sin(e1)); /* Int z dw */
+        mz[2 * r + 1] += PI * (e0 - e1 + 0.5 * (sin(2.0 * e0) - sin(2.0 * e1))); /* Int rho */
         const float *px = rgb + (size_t)y * (size_t)w * 3;
-        for (int x = 0; x < w; ++x) {
-            const double phi = 2.0 * PI * (x + 0.5) / w;
-            const size_t c = (size_t)r * (size_t)g->cols + (size_t)((long)x * g->cols / w);
-            g->omega[c] += om;
-            g->dir[3 * c] += om * cos(em) * cos(phi);
-            g->dir[3 * c + 1] += om * cos(em) * sin(phi);
-            g->dir[3 * c + 2] += om * sin(em);
-            for (int k = 0; k < 3; ++k)
-                g->energy[3 * c + (size_t)k] += om * (double)px[3 * x + k];
+        double *row = g->energy + (size_t)r * NW * 3;
+        if (w >= NW) { /* pixel x into cell x NW / w, each its own solid angle */
+            for (int x = 0; x < w; ++x)
+                for (int k = 0; k < 3; ++k)
+                    row[3 * ((long)x * NW / w) + k] += band / w * (double)px[3 * x + k];
+        } else {
+            for (int c = 0; c < NW; ++c) {
+                const int x = (int)((c + 0.5) * w / NW);
+                for (int k = 0; k < 3; ++k)
+                    row[3 * c + k] += band / NW * (double)px[3 * x + k];
+            }
         }
     }
-    for (size_t c = 0; c < n; ++c) {
-        double *d = g->dir + 3 * c;
-        const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        for (int k = 0; k < 3 && len > 0.0; ++k)
-            d[k] /= len;
-    }
+    for (int r = 0; r < g->rows; ++r)
+        g->e[r] = atan2(mz[2 * r], mz[2 * r + 1]);
+    free(mz);
     return HFS_OK;
 }
 
-/* Node (i, j)'s direction, the map's frame. */
-static void node_dir(int i, int j, double r[3])
+/* Node row j of the table: P_map at its NW nodes into p (NW x 3).  Cell
+ * (r, k) lies at azimuth offset 2 pi (k - i + 1/2) / NW from node i, so
+ * the lobe's weight depends on k - i alone: per cell row a circular
+ * convolution whose kernel is non-zero only within the lobe's reach, and
+ * a denominator the same for every node of the row. */
+static void node_row(const gloss_cells *g, int j, double s, double *kern, int *dk, double *p)
 {
-    const double phi = 2.0 * PI * i / HFS_ENV_GLOSS_NW;
-    const double e = 0.5 * PI - PI * j / (HFS_ENV_GLOSS_NH - 1);
-    r[0] = cos(e) * cos(phi);
-    r[1] = cos(e) * sin(phi);
-    r[2] = sin(e);
-}
-
-/* P_map at r: the lobe-weighted mean radiance of the cells (env_gloss.h). */
-static void lobe_mean(const gloss_cells *g, const double r[3], double s, double out[3])
-{
-    const double cut = exp(log(LOBE_CUT) / s);      /* R.d below it: skipped */
-    const double reach = acos(cut);                 /* the lobe's angular reach */
-    const double er = asin(r[2] > 1.0 ? 1.0 : (r[2] < -1.0 ? -1.0 : r[2]));
-    double num[3] = {0.0, 0.0, 0.0}, den = 0.0, best = -2.0;
-    size_t best_c = 0;
-    for (int row = 0; row < g->rows; ++row) {
-        /* A row wholly farther than the reach in elevation cannot hold a
-         * cell the lobe sees; the nearest cell is still tracked below. */
-        const int far = g->bottom[row] > er + reach || g->top[row] < er - reach;
-        for (int col = 0; col < g->cols; ++col) {
-            const size_t c = (size_t)row * (size_t)g->cols + (size_t)col;
-            if (far && best > -2.0)
-                break;
-            const double *d = g->dir + 3 * c;
-            const double rd = r[0] * d[0] + r[1] * d[1] + r[2] * d[2];
-            if (rd > best)
-                best = rd, best_c = c;
-            if (!(rd > cut))
+    const double ej = 0.5 * PI - PI * j / (HFS_ENV_GLOSS_NH - 1);
+    const double cut = exp(log(LOBE_CUT) / s);
+    double den = 0.0, all = 0.0;
+    for (int i = 0; i < 3 * NW; ++i)
+        p[i] = 0.0;
+    for (int r = 0; r < g->rows; ++r) {
+        const double a = cos(ej) * cos(g->e[r]), b = sin(ej) * sin(g->e[r]);
+        const double *row = g->energy + (size_t)r * NW * 3;
+        all += g->omega[r] * NW;
+        int nk = 0; /* kern[q] at offset dk[q]: the non-zero weights */
+        for (int d = 0; d < NW; ++d) {
+            const double c = a * cos(2.0 * PI * (d + 0.5) / NW) + b;
+            if (!(c > cut))
                 continue;
-            const double wt = exp(s * log(rd));
-            den += wt * g->omega[c];
-            for (int k = 0; k < 3; ++k)
-                num[k] += wt * g->energy[3 * c + (size_t)k];
+            kern[nk] = exp(s * log(c));
+            dk[nk++] = d;
+            den += kern[nk - 1] * g->omega[r];
+        }
+        for (int q = 0; q < nk; ++q) { /* p[i] += kern[q] row[(i + dk[q]) mod NW] */
+            const double wq = kern[q];
+            const int n1 = 3 * (NW - dk[q]);
+            const double *src = row + 3 * dk[q];
+            for (int i = 0; i < n1; ++i)
+                p[i] += wq * src[i];
+            for (int i = n1; i < 3 * NW; ++i)
+                p[i] += wq * row[i - n1];
         }
     }
-    if (!(den > 0.0)) { /* a lobe narrower than a cell: the nearest cell */
-        den = g->omega[best_c];
-        for (int k = 0; k < 3; ++k)
-            num[k] = g->energy[3 * best_c + (size_t)k];
+    if (den > 0.0) {
+        for (int i = 0; i < 3 * NW; ++i)
+            p[i] /= den;
+        return;
     }
-    for (int k = 0; k < 3; ++k)
-        out[k] = den > 0.0 ? num[k] / den : 0.0;
+    /* No cell within the lobe's reach (a map of a row or two against a
+     * lobe narrower than its rows): the map's mean radiance. */
+    double m[3] = {0.0, 0.0, 0.0};
+    for (size_t c = 0; c < (size_t)g->rows * NW; ++c)
+        for (int k = 0; k < 3; ++k)
+            m[k] += g->energy[3 * c + (size_t)k];
+    for (int i = 0; i < 3 * NW; ++i)
+        p[i] = all > 0.0 ? m[i % 3] / all : 0.0;
 }
 
 int hfs_env_gloss_build(const float *rgb, int w, int h, const double sh[3][HFS_SH_COEFFS],
@@ -130,29 +129,31 @@ int hfs_env_gloss_build(const float *rgb, int w, int h, const double sh[3][HFS_S
                         "environment map: size %dx%d, gloss %g (needs 1x1 or more, gloss >= 1)",
                         w, h, s);
     gloss_cells g = {0};
-    if (cells_gather(rgb, w, h, &g)) {
+    double *p = malloc(3 * NW * sizeof *p);
+    double *kern = malloc(NW * sizeof *kern);
+    int *dk = malloc(NW * sizeof *dk);
+    if (!p || !kern || !dk || cells_gather(rgb, w, h, &g)) {
+        free(p), free(kern), free(dk);
         cells_free(&g);
         return hfs_fail(err, HFS_E_NOMEM, "environment map: out of memory for its glossy table");
     }
     double zh[HFS_ZH_N];
     hfs_gloss_zh(s, zh);
-    for (int j = 0; j < HFS_ENV_GLOSS_NH; ++j)
-        for (int i = 0; i < HFS_ENV_GLOSS_NW; ++i) {
-            double r[3], p[3], y[HFS_SH_N];
-            node_dir(i, j, r);
-            lobe_mean(&g, r, s, p);
-            hfs_sh_eval(r[0], r[1], r[2], y);
+    for (int j = 0; j < HFS_ENV_GLOSS_NH; ++j) {
+        node_row(&g, j, s, kern, dk, p);
+        const double e = 0.5 * PI - PI * j / (HFS_ENV_GLOSS_NH - 1);
+        for (int i = 0; i <= NW; ++i) { /* column NW repeats column 0 */
+            const double phi = 2.0 * PI * (i % NW) / NW;
+            double y[HFS_SH_N];
+            hfs_sh_eval(cos(e) * cos(phi), cos(e) * sin(phi), sin(e), y);
             for (int k = 0; k < HFS_SH_N; ++k) /* Q_lm = g_l y_lm(R) */
                 y[k] *= zh[hfs_sh_band(k)];
-            float *t = table + 3 * ((size_t)j * (HFS_ENV_GLOSS_NW + 1) + (size_t)i);
+            float *t = table + 3 * ((size_t)j * (NW + 1) + (size_t)i);
             for (int k = 0; k < 3; ++k)
-                t[k] = (float)(p[k] - hfs_sh_dot(sh[k], y));
+                t[k] = (float)(p[3 * (i % NW) + k] - hfs_sh_dot(sh[k], y));
         }
-    for (int j = 0; j < HFS_ENV_GLOSS_NH; ++j) { /* column W = column 0 */
-        float *t = table + 3 * (size_t)j * (HFS_ENV_GLOSS_NW + 1);
-        for (int k = 0; k < 3; ++k)
-            t[3 * HFS_ENV_GLOSS_NW + k] = t[k];
     }
+    free(p), free(kern), free(dk);
     cells_free(&g);
     return HFS_OK;
 }

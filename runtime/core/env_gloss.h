@@ -18,18 +18,25 @@
  * fraction v stays the order-4 ratio of gloss.h.
  *
  * The table: (HFS_ENV_GLOSS_NW + 1) x HFS_ENV_GLOSS_NH RGB floats, row-major,
- * node (i, j) at azimuth 2 pi i / W (column W repeats column 0, so a
- * bilinear lookup never wraps) and elevation pi/2 - pi j / (H - 1) (rows 0
- * and H-1 the poles), in the map's frame (SPEC's equirect: column u at
- * phi = 2 pi u, row 0 the zenith): 2.8 degrees apart.  P_map is the lobe's
- * weighted mean of the map gathered into at most 128 x 64 cells, each
- * cell's radiance-weighted solid angle at its solid-angle centroid:
+ * node (i, j) at azimuth 2 pi i / NW (column NW repeats column 0, so a
+ * bilinear lookup never wraps) and elevation pi/2 - pi j / (NH - 1) (rows
+ * 0 and NH - 1 the poles), in the map's frame (SPEC's equirect: column u at
+ * phi = 2 pi u, row 0 the zenith): 2.8 degrees apart.  P_map is the
+ * lobe's weighted mean of the map gathered into cells, NW columns (the
+ * nodes' azimuths, offset by half a column) by at most 64 rows, each
+ * cell's radiance times solid angle at its centre's azimuth and its row's
+ * solid-angle centroid elevation:
  *     P_map(R) = sum_c E_c lobe(R.d_c) / sum_c Omega_c lobe(R.d_c),
  * the same cells' solid angles in the denominator so that a constant map
- * gives its constant exactly (D_g = 0 up to rounding), cells where the lobe
- * is below 1e-4 of its peak skipped (the lobe's share there is < 1e-3 at
- * S = 32).  Good while the lobe spans a few cells (S up to a few hundred:
- * 1/sqrt(S) against 2.8 degrees); narrower lobes are blurred to a cell.
+ * gives its constant exactly (D_g = 0 up to the SH's own rounding), cells
+ * where the lobe is below 1e-4 of its peak skipped (their share is < 1e-3
+ * at S = 32).  Within a row of nodes the weight of a cell depends only on
+ * the difference of columns, so each row is a circular convolution along
+ * azimuth (and one denominator): O(65 x cells in the lobe's reach x 128)
+ * per build, a few tens of ms for S = 32 (BENCHMARKS.md).  Good while the
+ * lobe spans a few cells (S up to a few hundred: 1/sqrt(S) rad against
+ * 2.8 degrees); narrower lobes are blurred to about a cell.  A map too
+ * small for any cell to fall in the lobe's reach gives its mean radiance.
  * libc and libm only.
  */
 #ifndef HFS_ENV_GLOSS_H
@@ -49,7 +56,7 @@
 int hfs_env_gloss_build(const float *rgb, int w, int h, const double sh[3][HFS_SH_COEFFS],
                         double s, float *table, hfs_error *err);
 
-/* The table's node coordinates (x in [0, W], y in [0, H - 1]) of unit
+/* The table's node coordinates (x in [0, NW], y in [0, NH - 1]) of unit
  * direction r (world frame) for a sky turned by rotate.  GLES mirrors it
  * (shade.frag env_gloss). */
 void hfs_env_gloss_xy(const double r[3], double rotate, double xy[2]);
