@@ -76,7 +76,8 @@ typedef struct hfs_lighting {
      * DESIGN.md "Shading from the map itself").  Order 4 holds a map's
      * light only up to the bands it drops, and the drop covers the whole
      * image; with these two the diffuse environment term comes from the
-     * map instead (the glossy lobe still reads env_sh):
+     * map instead, and a glossy surface's lobe too (its visibility is
+     * still order 4):
      *   env_open: NULL (default) or the table hfs_env_open_build writes
      *     (env_open.h: 33 x 33 normals x RGB, D(N) = the map's unshadowed
      *     irradiance minus env_sh's, in the map's frame), added to the
@@ -87,7 +88,10 @@ typedef struct hfs_lighting {
      *     residual), env_map_width x env_map_height; needs env_open.  On
      *     the exact-slice path (HFS_VIS_SLICE) each slice's occluded part
      *     is then integrated against this map along the slice
-     *     (env_map_slices.h) instead of against env_sh.
+     *     (env_map_slices.h) instead of against env_sh.  On every path a
+     *     glossy surface (specular > 0) reflects this map convolved with
+     *     its lobe: the renderers build the table of env_gloss.h from it,
+     *     env_sh and gloss.
      * The truth ignores both (it integrates env_map, or env_sh without
      * it).  The scene layer builds them for an env-map (scene key
      * env-shade = map).  Read during hfs_renderer_render only; the caller

@@ -26,7 +26,10 @@
  *                runtime/core/env_open.h, N' = N turned by -rotate); with
  *                HFS_ENV_MAP 2 its occluded part is the map's too (u_mocc,
  *                pass_env_map_slices.c) instead of T . L_env's; the glossy
- *                lobe still reads T.
+ *                lobe still reads T.  HFS_GLOSS_MAP (glossy): the lobe's
+ *                radiance is the map's own, L*lobe(R) plus the table D_g(R')
+ *                (u_egloss, runtime/core/env_gloss.h, R' = R turned by
+ *                -rotate), its visible fraction v as above.
  * Everything that depends on the visibility was computed by those passes,
  * so this pass is what a turned or re-tinted environment or a change of
  * radiance costs.
@@ -49,6 +52,8 @@
 // hfs-variant: HFS_ENV 1, HFS_ENV_MAP 1
 // hfs-variant: HFS_ENV 1, HFS_ENV_MAP 2, HFS_NKEYS 1
 // hfs-variant: HFS_ENV 1, HFS_ENV_MAP 2, HFS_GLOSSY 1, HFS_FP32 1
+// hfs-variant: HFS_ENV 1, HFS_ENV_MAP 2, HFS_GLOSSY 1, HFS_GLOSS_MAP 1
+// hfs-variant: HFS_ENV 1, HFS_ENV_MAP 1, HFS_GLOSSY 2, HFS_GLOSS_MAP 1, HFS_FP32 1
 
 #ifndef HFS_PI
 #define HFS_PI 3.14159265358979
@@ -91,6 +96,9 @@ uniform highp sampler2D u_eopen;         /* D(N) / D_max, 33 x 33, LINEAR */
 #if HFS_ENV_MAP == 2
 uniform highp sampler2D u_mocc;          /* the map's occluded light / (F_max dphi) */
 #endif
+#ifdef HFS_GLOSS_MAP
+uniform highp sampler2D u_egloss;        /* D_g(R) / D_g max, 129 x 65, LINEAR */
+#endif
 #ifdef HFS_GLOSSY
 #if HFS_GLOSSY == 2
 #define HFS_GLOSS_EYE 1                  /* each texel's own view vector */
@@ -116,7 +124,7 @@ layout(std140) uniform HfsShade {
                                             sin rotate, rho/pi F_max dphi) */
 #ifdef HFS_GLOSSY
     vec4 u_gview;                        /* (V towards the viewer, ks) */
-    vec4 u_gpar;                         /* (S, ks (S+2)/(2 pi), 0, 0) */
+    vec4 u_gpar;                         /* (S, ks (S+2)/(2 pi), D_g max, 0) */
     vec4 u_gzh[4];                       /* the lobe's g_l per coefficient */
     vec4 u_kspec[8];                     /* per key light: ks (S+2)/(2 pi) Le E_max */
     vec4 u_kdir[8];                      /* per key light: unit direction */
@@ -154,6 +162,20 @@ vec3 env_open(vec3 n)
     float r = acos(clamp(n.z, 0.0, 1.0)) / (0.5 * HFS_PI);
     vec2 uv = rxy > 0.0 ? (r / rxy) * xy : vec2(0.0);
     return u_emap.x * texture(u_eopen, ((uv + 1.0) * 16.0 + 0.5) / 33.0).rgb;
+}
+#endif
+
+#ifdef HFS_GLOSS_MAP
+/* D_g at R (runtime/core/env_gloss.c hfs_env_gloss_xy, lookup): R turned by
+ * -rotate, equirect, node (i, j) at texel centre (i, j), column 128 = 0. */
+vec3 env_gloss(vec3 r)
+{
+    vec2 xy = vec2(u_emap.y * r.x + u_emap.z * r.y, u_emap.y * r.y - u_emap.z * r.x);
+    float phi = atan(xy.y, xy.x);
+    phi = phi < 0.0 ? phi + 2.0 * HFS_PI : phi;
+    float e = asin(clamp(r.z, -1.0, 1.0));
+    vec2 f = vec2(phi / (2.0 * HFS_PI) * 128.0, (0.5 * HFS_PI - e) / HFS_PI * 64.0);
+    return u_gpar.z * texture(u_egloss, (f + 0.5) / vec2(129.0, 65.0)).rgb;
 }
 #endif
 
@@ -291,10 +313,14 @@ void main()
             float num = hfs_sh_dot(T, Q), den = hfs_sh_dot(H, Q);
             float v = den > 1e-9 * sqrt(hfs_sh_dot(H, H) * hfs_sh_dot(Q, Q))
                           ? clamp(num / den, 0.0, 1.0) : 0.0;
+            vec3 dg = vec3(0.0);
+#ifdef HFS_GLOSS_MAP
+            dg = env_gloss(g_r);
+#endif
             for (int c = 0; c < 3; ++c) {
                 for (int g = 0; g < 4; ++g)
                     L[g] = u_env[4 * c + g];
-                g_spec[c] += u_gview.w * g_nr * v * hfs_sh_dot(L, Q);
+                g_spec[c] += u_gview.w * g_nr * v * (hfs_sh_dot(L, Q) + dg[c]);
             }
         }
 #endif

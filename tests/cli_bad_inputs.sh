@@ -237,6 +237,7 @@ $U bench_env time-short "time: needs W H" time
 $U bench_env time-bad "'x'" time 4 x
 $U bench_env track-bad "'x'" track x
 $U bench_env file-short "file: needs MAP" file
+$U bench_env gloss-short "gloss: needs MAP S" gloss x.exr
 $U bench_env extra "9" time 4 4 1 1 9
 $U gles_bench unknown-flag "--bogus" --bogus
 $U gles_bench stray "stray" stray

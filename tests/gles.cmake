@@ -203,6 +203,14 @@ add_test(NAME test_env_shade COMMAND test_env_shade gles)
 set_tests_properties(test_env_shade PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
 set(hfs_gles_tests ${hfs_gles_tests} test_env_shade)
 
+# A glossy surface's lobe from the map itself beyond order 4 (issue 36;
+# test_env_gloss.c).
+add_executable(test_env_gloss ${CMAKE_CURRENT_LIST_DIR}/test_env_gloss.c)
+target_link_libraries(test_env_gloss PRIVATE hfs_test_gles_scenes)
+add_test(NAME test_env_gloss COMMAND test_env_gloss gles)
+set_tests_properties(test_env_gloss PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300)
+set(hfs_gles_tests ${hfs_gles_tests} test_env_gloss)
+
 # Objects above the field (issue 19): lit against closed forms on the CPU,
 # a pin in a wall's shadow, refused inputs, the GLES view against the
 # CPU's ray-cast one (test_objects.c).

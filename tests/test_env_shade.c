@@ -30,6 +30,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "env_map_test.h"
 #include "env_open.h"
 #include "sh.h"
 
@@ -59,47 +60,13 @@ static float *make_map(void)
     return m;
 }
 
-typedef struct shaded {
-    hfs_lighting l;
-    float open[HFS_ENV_OPEN_FLOATS];
-} shaded;
-
-/* The map's lighting, as the scene layer makes it; with_map: env-shade =
- * map (open table + the map itself), else its SH only. */
+/* The map's lighting (env_map_test.h); with_map: env-shade = map. */
 static void make_lighting(shaded *s, const float *map, double rot, int with_map)
 {
-    hfs_lighting *l = &s->l;
-    hfs_lighting_defaults(l);
-    l->has_env = 1;
-    hfs_sh_project_equirect(map, MW, MH, l->env_sh);
-    l->env_rotate = rot;
-    l->env_map = map;
-    l->env_map_width = MW, l->env_map_height = MH;
-    hfs_error err = {""};
-    CHECK(hfs_env_open_build(map, MW, MH, (const double(*)[HFS_SH_COEFFS])l->env_sh, s->open,
-                             &err) == HFS_OK, "open table: %s", err.msg);
-    if (with_map) {
-        l->env_open = s->open;
-        l->env_shade_map = map;
-    }
+    env_map_lighting(&s->l, map, MW, MH, rot, s->open, with_map);
 }
 
-static int render(hfs_backend b, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
-                  hfs_image *out)
-{
-    hfs_renderer_desc d = {.backend = b};
-    hfs_renderer *r = b == HFS_BACKEND_GLES ? gl_test_gles() : NULL;
-    hfs_error err = {""};
-    if (!r && hfs_renderer_create(&d, &r, &err)) {
-        CHECK(0, "create: %s", err.msg);
-        return -1;
-    }
-    hfs_image_alloc(out, f->width, f->height, &err);
-    const int rc = hfs_renderer_render(r, f, l, q, out, NULL, NULL, &err);
-    CHECK(rc == HFS_OK, "render: %s", err.msg);
-    hfs_renderer_destroy(r);
-    return rc;
-}
+#define render env_map_render
 
 /* Mean and max of |a - b| over b's largest value. */
 static void errors(const hfs_image *a, const hfs_image *b, double *mean, double *max)
@@ -179,14 +146,9 @@ static void check_planes(const float *map)
 
 static void check_accuracy(const scene *sc, const float *map, hfs_image *truth)
 {
-    shaded on, off;
-    make_lighting(&on, map, 0.3, 1);
-    make_lighting(&off, map, 0.3, 0);
     const hfs_quality q = quality();
     hfs_image a = {0}, b = {0};
-    int rc = render(HFS_BACKEND_TRUTH, &sc->f, &on.l, &q, truth);
-    rc |= render(HFS_BACKEND_CPU, &sc->f, &on.l, &q, &a) |
-          render(HFS_BACKEND_CPU, &sc->f, &off.l, &q, &b);
+    int rc = env_map_truth_and_cpu(&sc->f, map, 0.3, make_lighting, &q, truth, &a, &b);
     double ma, xa, mb, xb;
     errors(&a, truth, &ma, &xa);
     errors(&b, truth, &mb, &xb);
@@ -212,25 +174,13 @@ static void check_accuracy(const scene *sc, const float *map, hfs_image *truth)
 
 static void check_rotate(const scene *sc, const float *map)
 {
-    float *rolled = malloc((size_t)MW * MH * 3 * sizeof *rolled);
-    for (int v = 0; v < MH; ++v) /* a pixel at phi moves to phi + 90 degrees */
-        for (int u = 0; u < MW; ++u)
-            memcpy(rolled + 3 * ((size_t)v * MW + (u + MW / 4) % MW), map + 3 * ((size_t)v * MW + u),
-                   3 * sizeof *map);
-    shaded a, b;
-    make_lighting(&a, map, 0.5 * PI, 1);
-    make_lighting(&b, rolled, 0.0, 1);
     const hfs_quality q = quality();
-    hfs_image x = {0}, y = {0};
-    int rc = render(HFS_BACKEND_CPU, &sc->f, &a.l, &q, &x) | render(HFS_BACKEND_CPU, &sc->f, &b.l, &q, &y);
-    double mean, max;
-    errors(&x, &y, &mean, &max);
+    int rc;
+    const double max = env_map_turn_error(&sc->f, map, MW, MH, make_lighting, &q, &rc);
     /* Measured 0 (bit for bit); allowed: float rounding of cos, sin
      * (pi/2) and of the two SH projections. */
     CHECK(!rc && max <= 1e-6, "rotate: turned sky vs rolled map max %.2e", max);
     printf("rotate: a sky turned by 90 degrees = the map rolled, max %.2e (bound 1e-6)\n", max);
-    hfs_image_free(&x), hfs_image_free(&y);
-    free(rolled);
 }
 
 static void check_invalid(const scene *sc, const float *map)
@@ -294,23 +244,14 @@ static void check_gles(const scene *sc, const float *map, const hfs_image *truth
            GLES_FP16_BOUND);
     hfs_image_free(&g), hfs_image_free(&c);
     /* A turned sky on a kept renderer. */
-    hfs_renderer *r = gl_test_gles(), *fresh = gl_test_gles();
-    hfs_error err = {""};
-    hfs_image a = {0}, b = {0};
-    hfs_image_alloc(&a, N, N, &err), hfs_image_alloc(&b, N, N, &err);
-    rc = hfs_renderer_render(r, &sc->f, &s.l, &q, &a, NULL, NULL, &err);
-    s.l.env_rotate = 1.1;
-    rc |= hfs_renderer_render(r, &sc->f, &s.l, &q, &a, NULL, NULL, &err);
+    shaded turned = s;
+    turned.l.env_rotate = 1.1;
     char ran[256];
-    gl_test_ran(r, ran, sizeof ran);
-    CHECK(!rc && !strcmp(ran, "map occlusion shade readback "),
+    const int same = env_map_kept_is_fresh(&sc->f, &s.l, &turned.l, &q, NULL, ran, sizeof ran);
+    CHECK(!strcmp(ran, "map occlusion shade readback "),
           "turned sky: ran '%s', want the map's occlusion, shade and readback", ran);
-    rc |= hfs_renderer_render(fresh, &sc->f, &s.l, &q, &b, NULL, NULL, &err);
-    CHECK(!rc && !memcmp(a.rgb, b.rgb, sizeof(float) * N * N * 3),
-          "turned sky: the planned frame differs from a fresh one");
+    CHECK(same, "turned sky: the planned frame differs from a fresh one");
     printf("gles: a turned sky runs '%s', bit for bit a fresh frame\n", ran);
-    hfs_image_free(&a), hfs_image_free(&b);
-    hfs_renderer_destroy(r), hfs_renderer_destroy(fresh);
 }
 
 int main(int argc, char **argv)

@@ -8,6 +8,9 @@
  *       decomposed RUNS times (default 9) from a fresh copy; prints the
  *       median, min and max milliseconds and the peak resident memory.
  *   bench_env file MAP [RUNS]             the same for a map file.
+ *   bench_env gloss MAP S [RUNS]          the glossy table of a map file for
+ *       Phong exponent S (runtime/core/env_gloss.h, issue 36), built RUNS
+ *       times (default 9): median, min and max milliseconds.
  *   bench_env track [FRAMES]              a 256x128 probe sequence: the sun
  *       moving 0.25 degree a frame across a noisy gradient sky, beside a
  *       weak window whose share wanders about the 2% threshold; decomposed
@@ -17,8 +20,10 @@
  */
 #include "cli_usage.h"
 #include "env_decompose.h"
+#include "env_gloss.h"
 #include "hfs_io.h"
 #include "median.h"
+#include "sh.h"
 #include "sky_gen.h"
 
 #include <math.h>
@@ -193,7 +198,8 @@ static int track(int frames)
 
 static void usage(FILE *to)
 {
-    fprintf(to, "usage: bench_env time W H [RUNS] [THREADS] | file MAP [RUNS] | track [FRAMES]\n");
+    fprintf(to, "usage: bench_env time W H [RUNS] [THREADS] | file MAP [RUNS] | gloss MAP S "
+                "[RUNS] | track [FRAMES]\n");
 }
 
 /* argv[i] as a whole number in [lo, hi], DEF when absent; -1 after the message. */
@@ -251,6 +257,48 @@ static int time_file(int argc, char **argv)
     return rc;
 }
 
+/* bench_env gloss MAP S [RUNS]: hfs_env_gloss_build's time. */
+static int time_gloss(int argc, char **argv)
+{
+    int s, runs;
+    if (argc < 4)
+        return hfs_usage_error("bench_env", "gloss: needs MAP S");
+    if (count_arg(argc, argv, 3, "S", 1, 10000, 32, &s) ||
+        count_arg(argc, argv, 4, "RUNS", 1, 100000, 9, &runs))
+        return HFS_EXIT_USAGE;
+    hfs_envmap em;
+    hfs_error err = {{0}};
+    float *table = malloc(HFS_ENV_GLOSS_FLOATS * sizeof *table);
+    double *t = malloc((size_t)runs * sizeof *t);
+    if (!table || !t || hfs_envmap_load(argv[2], &em, &err)) {
+        fprintf(stderr, "bench_env: %s\n", table && t ? err.msg : "out of memory");
+        free(table), free(t);
+        return 1;
+    }
+    double sh[3][HFS_SH_COEFFS];
+    hfs_sh_project_equirect(em.rgb, em.width, em.height, sh);
+    int rc = 0;
+    for (int r = 0; r < runs && !rc; ++r) {
+        const double t0 = now_ms();
+        rc = hfs_env_gloss_build(em.rgb, em.width, em.height, (const double(*)[HFS_SH_COEFFS])sh,
+                                 s, table, &err);
+        t[r] = now_ms() - t0;
+    }
+    if (rc)
+        fprintf(stderr, "bench_env: %s\n", err.msg);
+    else {
+        double lo = t[0], hi = t[0];
+        for (int r = 1; r < runs; ++r)
+            lo = fmin(lo, t[r]), hi = fmax(hi, t[r]);
+        printf("%dx%d, S %d: the glossy table in median %.2f ms (min %.2f, max %.2f, %d runs), "
+               "largest |D_g| %.4g\n", em.width, em.height, s, hfs_median(t, runs), lo, hi, runs,
+               hfs_env_gloss_max(table));
+    }
+    hfs_envmap_free(&em);
+    free(table), free(t);
+    return rc ? 1 : 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2)
@@ -260,15 +308,21 @@ int main(int argc, char **argv)
         usage(stdout);
         return 0;
     }
-    const int most = !strcmp(m, "time") ? 6 : !strcmp(m, "file") ? 4 : !strcmp(m, "track") ? 3 : 0;
+    const int most = !strcmp(m, "time")    ? 6
+                     : !strcmp(m, "file")  ? 4
+                     : !strcmp(m, "gloss") ? 5
+                     : !strcmp(m, "track") ? 3
+                                           : 0;
     if (!most)
-        return hfs_usage_error("bench_env", "'%s' is not a mode (time, file or track)", m);
+        return hfs_usage_error("bench_env", "'%s' is not a mode (time, file, gloss or track)", m);
     if (argc > most)
         return hfs_usage_error("bench_env", "%s: %s: unexpected argument", m, argv[most]);
     if (!strcmp(m, "time"))
         return time_synthetic(argc, argv);
     if (!strcmp(m, "file"))
         return time_file(argc, argv);
+    if (!strcmp(m, "gloss"))
+        return time_gloss(argc, argv);
     int frames;
     if (count_arg(argc, argv, 2, "FRAMES", 2, 1000000, 200, &frames))
         return HFS_EXIT_USAGE;

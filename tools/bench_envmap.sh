@@ -17,6 +17,9 @@
 # the extra flags, so every row of a scene shares one normalizer); the last
 # column is the mean abs error against the truth of the SH instead.  Prints
 # a Markdown table; each truth's wall time is in its log beside it.
+# BENCH_ENV_BASE: scene flags added to every row, the truths and the
+# normalizer included (e.g. "--specular 0.3 --gloss 32": a glossy surface,
+# issue 36); the truths' cache names carry them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=tools/bench_lib.sh
@@ -44,10 +47,12 @@ for map in "${maps[@]}"; do
         IFS='|' read -r name hf flags <<<"$sc"
         [ "$name" = cones ] && continue
         # shellcheck disable=SC2206 # flags are words
-        base=(--height "$hf" $flags --env-map "$map")
-        truth=$C/envtruth-$name$N-$tag.pfm
+        # shellcheck disable=SC2206 # BENCH_ENV_BASE is words
+        base=(--height "$hf" $flags --env-map "$map" ${BENCH_ENV_BASE:-})
+        btag=$(printf '%s' "${BENCH_ENV_BASE:-}" | tr -c 'A-Za-z0-9.' '_')
+        truth=$C/envtruth-$name$N-$tag$btag.pfm
         bench_truth "$HFS" "$truth" "${base[@]}" --truth-azimuths 720
-        shtruth=$C/envshtruth-$name$N-$tag.pfm
+        shtruth=$C/envshtruth-$name$N-$tag$btag.pfm
         bench_truth "$HFS" "$shtruth" "${base[@]}" --truth-azimuths 720 --truth-env sh
         row() { # LABEL RESULT.pfm
             local m vs

@@ -101,7 +101,7 @@ static inline double hfs_gloss_lobe(const hfs_gloss *g, const double r[3], const
 }
 
 /* The environment's glossy term (CPU reference; shade.frag mirrors it):
- *     out_c += ks (N.R) v L_c*lobe(R),   v = clamp(T.Q / H.Q, 0, 1),
+ *     out_c += ks (N.R) v (L_c*lobe(R) + dmap_c),   v = clamp(T.Q / H.Q, 0, 1),
  * Q = the lobe's ZH rotated to R (Q_lm = g_l y_lm(R)), T the texel's
  * transfer (H * V_env: the slice path's exact one or the SH product), H its
  * clamped cosine, L_env per channel (already rotated).  N.R stands for the
@@ -109,10 +109,13 @@ static inline double hfs_gloss_lobe(const hfs_gloss *g, const double r[3], const
  * constant sky (the lobe's mean direction is (S+1)/(S+2) R, and
  * (S+2)/(S+1) of it is the normalization).  v is the visible fraction of
  * the cosine-weighted lobe at order 4, the key lights' ratio form; 0 where
- * H.Q <= 1e-9 |H| |Q|. */
+ * H.Q <= 1e-9 |H| |Q|.  dmap: NULL, or the map's lobe beyond order 4 at R
+ * (env_gloss.h D_g; env-shade = map), so that L*lobe + dmap is the map
+ * itself convolved with the lobe. */
 static inline void hfs_gloss_env(const hfs_gloss *g, double n_dot_r, const double r[3],
                                  const double t[HFS_SH_N], const double hn[HFS_SH_N],
-                                 const double l_env[3][HFS_SH_N], double out[3])
+                                 const double l_env[3][HFS_SH_N], const double *dmap,
+                                 double out[3])
 {
     if (!(n_dot_r > 0.0))
         return;
@@ -128,7 +131,7 @@ static inline void hfs_gloss_env(const hfs_gloss *g, double n_dot_r, const doubl
         v = num / den < 0.0 ? 0.0 : (num / den > 1.0 ? 1.0 : num / den);
     const double w = g->ks * n_dot_r * v;
     for (int ch = 0; ch < 3; ++ch)
-        out[ch] += w * hfs_sh_dot(l_env[ch], q);
+        out[ch] += w * (hfs_sh_dot(l_env[ch], q) + (dmap ? dmap[ch] : 0.0));
 }
 
 #endif /* HFS_GLOSS_H */

@@ -57,6 +57,7 @@
 #include "visibility.h"
 #include "cpu_bounce.h"
 #include "field_geom.h"
+#include "env_gloss.h"
 #include "gloss.h"
 #include "lights.h"
 #include "parallel.h"
@@ -180,8 +181,12 @@ static void env_texel(const render_ctx *c, worker_scratch *s, const swath_job *j
     for (int ch = 0; ch < 3; ++ch)
         lo[ch] += env_clamp(c->rho_pi * (hfs_sh_dot(map ? hn : t, c->l_env[ch]) + e[ch]),
                             c->rho_pi * (hfs_sh_dot(hn, c->l_env[ch]) + e[ch]), c->env_neg[ch]);
-    if (nr > 0.0)
-        hfs_gloss_env(&c->gloss, nr, r, t, hn, c->l_env, sp);
+    if (nr > 0.0) {
+        double dg[3]; /* the map's lobe beyond order 4 (env_gloss.h) */
+        if (c->env_gloss)
+            hfs_env_gloss_lookup(c->env_gloss, r, c->env_rotate, dg);
+        hfs_gloss_env(&c->gloss, nr, r, t, hn, c->l_env, c->env_gloss ? dg : NULL, sp);
+    }
 }
 
 /* Horizons of row j for every job: omega (and, for key lights, the floors
@@ -382,7 +387,16 @@ static int build_frame(render_ctx *c, const hfs_lighting *l, const hfs_quality *
         return rc;
     if (c->gloss.on && !(c->spec = malloc((size_t)c->w * (size_t)c->h * 3 * sizeof *c->spec)))
         return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the glossy term");
-    return HFS_OK;
+    /* env-shade = map: the lobe from the map itself (env_gloss.h), of the
+     * map whose projection l_env is. */
+    if (c->gloss.on && c->has_env && l->env_shade_map && l->env_open) {
+        if (!(c->env_gloss = malloc(HFS_ENV_GLOSS_FLOATS * sizeof *c->env_gloss)))
+            return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the glossy table");
+        rc = hfs_env_gloss_build(l->env_shade_map, l->env_map_width, l->env_map_height,
+                                 (const double(*)[HFS_SH_COEFFS])l->env_sh, c->gloss.s,
+                                 c->env_gloss, err);
+    }
+    return rc;
 }
 
 /* Frees what build_frame built (any part of it). */
@@ -401,6 +415,7 @@ static void free_frame(render_ctx *c, int threads, hfs_cpu_pyramid *pyr)
     hfs_cpu_far_destroy(c->far);
     hfs_slice_table_free(&c->slices);
     hfs_map_slices_free(&c->map_slices);
+    free(c->env_gloss);
     free(c->spec);
     free(c->jobs);
     free(c->omega_at);

@@ -72,6 +72,8 @@ typedef struct render_ctx {
     hfs_cpu_far *far;          /* their far grid, NULL when not split */
     hfs_gloss gloss;           /* glossy surfaces (gloss.h) */
     float *spec;               /* W x H x 3 glossy term when gloss.on, added after the map */
+    float *env_gloss;          /* env-shade = map, glossy: the map's lobe beyond order 4
+                                  (env_gloss.h), NULL otherwise */
 } render_ctx;
 
 /* cpu_render_setup.c.  The jobs of the frame's environment (jobs[0], its

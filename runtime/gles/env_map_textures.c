@@ -34,7 +34,8 @@ static void tex_bytes(hfs_gles_env_map_textures *t)
                                    (t->open_fp32 ? 4 : 2) : 0) +
                (t->slices ? (size_t)HFS_MAP_SLICE_E * 2 * (size_t)t->n_slices * 4 *
                                 (t->slices_fp32 ? 4 : 2) : 0) +
-               (t->occ ? (size_t)t->occ_w * (size_t)t->occ_h * 4 * (t->occ_fp32 ? 4 : 2) : 0);
+               (t->occ ? (size_t)t->occ_w * (size_t)t->occ_h * 4 * (t->occ_fp32 ? 4 : 2) : 0) +
+               (t->gloss ? (size_t)HFS_ENV_GLOSS_FLOATS / 3 * 4 * (t->gloss_fp32 ? 4 : 2) : 0);
 }
 
 /* Uploads rgb (w x h RGB, times s) into *tex, made at the caps' format. */
@@ -72,6 +73,7 @@ int hfs_gles_env_open_follow(hfs_gles_env_map_textures *t, const hfs_gl *gl,
     t->open_fp32 = c->fp32;
     memcpy(t->open_copy, l->env_open, sizeof t->open_copy);
     t->map = NULL; /* a new table: the map it stands for may be new too */
+    t->gloss_map = NULL;
     tex_bytes(t);
     return rc;
 }
@@ -121,6 +123,41 @@ int hfs_gles_env_slices_follow(hfs_gles_env_map_textures *t, const hfs_gl *gl,
     return rc;
 }
 
+int hfs_gles_env_gloss_follow(hfs_gles_env_map_textures *t, const hfs_gl *gl,
+                              const hfs_gl_caps *c, const hfs_lighting *l, double s,
+                              hfs_error *err)
+{
+    if (t->gloss && t->gloss_map == l->env_shade_map && t->gloss_w == l->env_map_width &&
+        t->gloss_h == l->env_map_height && t->gloss_s == s && t->gloss_fp32 == c->fp32)
+        return HFS_OK; /* the open table's contents (compared first) stand for the map's */
+    float *table = malloc(HFS_ENV_GLOSS_FLOATS * sizeof *table);
+    double *rgb = malloc(HFS_ENV_GLOSS_FLOATS * sizeof *rgb);
+    int rc = !table || !rgb ? hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the "
+                                       "glossy table")
+                            : hfs_env_gloss_build(l->env_shade_map, l->env_map_width,
+                                                  l->env_map_height,
+                                                  (const double(*)[HFS_SH_COEFFS])l->env_sh, s,
+                                                  table, err);
+    if (!rc) {
+        for (int i = 0; i < HFS_ENV_GLOSS_FLOATS; ++i)
+            rgb[i] = table[i];
+        t->gmax = hfs_env_gloss_max(table);
+        if (t->gloss_fp32 != c->fp32)
+            hfs_gles_tex_delete(gl, &t->gloss);
+        rc = upload(&t->gloss, gl, c, rgb, HFS_ENV_GLOSS_NW + 1, HFS_ENV_GLOSS_NH,
+                    t->gmax > 0.0 ? 1.0 / t->gmax : 0.0, "the glossy table", err);
+    }
+    free(table);
+    free(rgb);
+    t->gloss_map = rc ? NULL : l->env_shade_map;
+    t->gloss_w = l->env_map_width, t->gloss_h = l->env_map_height;
+    t->gloss_s = s, t->gloss_fp32 = c->fp32;
+    if (rc)
+        hfs_gles_tex_delete(gl, &t->gloss);
+    tex_bytes(t);
+    return rc;
+}
+
 int hfs_gles_env_occ_ensure(hfs_gles_env_map_textures *t, const hfs_gl *gl,
                             const hfs_gl_caps *c, int w, int h, hfs_error *err)
 {
@@ -154,6 +191,7 @@ void hfs_gles_env_map_textures_free(hfs_gles_env_map_textures *t, const hfs_gl *
     hfs_gles_tex_delete(gl, &t->occ);
     hfs_gles_tex_delete(gl, &t->open);
     hfs_gles_tex_delete(gl, &t->slices);
+    hfs_gles_tex_delete(gl, &t->gloss);
     const unsigned gen = t->occ_gen;
     memset(t, 0, sizeof *t);
     t->occ_gen = gen;

@@ -217,6 +217,7 @@ static void frame_lights(const hfs_lighting *l, const hfs_quality *q, hfs_gles_f
     if (fr->has_env) {
         hfs_env_rotated(l, fr->l_env);
         fr->env_map = !l->env_open ? 0 : q->visibility == HFS_VIS_SLICE && l->env_shade_map ? 2 : 1;
+        fr->gloss_map = fr->gloss.on && fr->env_map > 0 && l->env_shade_map != NULL;
     }
 }
 

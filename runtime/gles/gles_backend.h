@@ -80,6 +80,10 @@ struct hfs_gles_frame {
      * (HFS_ENV_MAP 1), 2 that and the map's occluded light along the
      * slices (the slice path with env_shade_map). */
     int env_map;
+    /* 1: a glossy frame with env_map > 0 and env_shade_map: the lobe adds
+     * the map's beyond order 4 (env_gloss.h; HFS_GLOSS_MAP). */
+    int gloss_map;
+    double gloss_map_max;                 /* its table's scale (set by its prepare) */
     const hfs_lighting *l;                /* the frame's lighting */
     double rho_pi;
     const float *albedo;                  /* the lighting's albedo map, or NULL */

@@ -9,7 +9,8 @@
  * Unlike the transfer it depends on the sky's rotation (the slices' wedges
  * turn over the map): a turned sky reruns this pass and the shading, not
  * the horizons.  Its prepare also keeps the open-sky table the shading
- * reads on every path with env-shade = map.
+ * reads on every path with env-shade = map, and a glossy frame's table of
+ * the map's lobe (env_gloss.h).
  */
 #include "gles_backend.h"
 
@@ -28,6 +29,9 @@ static int prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     if (!rc && fr->env_map == 2)
         rc = hfs_gles_env_slices_follow(&g->envmap, &g->gl, &g->caps, fr->l, &g->env_slices,
                                         err);
+    if (!rc && fr->gloss_map) /* the shading's glossy table (env_gloss.h) */
+        rc = hfs_gles_env_gloss_follow(&g->envmap, &g->gl, &g->caps, fr->l, fr->gloss.s, err);
+    fr->gloss_map_max = fr->gloss_map ? g->envmap.gmax : 0.0;
     return rc;
 }
 

@@ -39,6 +39,8 @@ static double gloss_bound(const hfs_gles_frame *fr)
             s += fabs(fr->l_env[c][k]);
         b = fmax(b, 4.0 * s);
     }
+    if (fr->gloss_map) /* the map's lobe beyond order 4 (env_gloss.h) */
+        b += fr->gloss_map_max;
     for (int i = 0; i < fr->n_keys; ++i)
         b += fmax(fr->keys[i].k.le[0], fmax(fr->keys[i].k.le[1], fr->keys[i].k.le[2])) *
              gl->norm * hfs_cap_irradiance(1.0, fr->keys[i].k.alpha);
@@ -58,6 +60,7 @@ static void fill_gloss(const hfs_gles_frame *fr, double s, hfs_gles_shade_block 
     sb->gview[3] = (float)gl->ks;
     sb->gpar[0] = (float)gl->s;
     sb->gpar[1] = (float)(gl->ks * gl->norm);
+    sb->gpar[2] = (float)(fr->gloss_map_max * s); /* D_g's scale, a radiance */
     /* g_l per coefficient k = l(l+1)+m: bands 0 | 1 1 1 | 2 x5 | 3 x7. */
     for (int k = 0; k < HFS_SH_N; ++k)
         sb->gzh[k] = (float)gl->zh[k < 1 ? 0 : k < 4 ? 1 : k < 9 ? 2 : 3];
@@ -175,6 +178,10 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     if (fr->env_map == 2 &&
         (rc = hfs_gles_program_texture(gl, prog, "u_mocc", GL_TEXTURE_2D, g->envmap.occ, err)))
         return rc;
+    if (fr->gloss_map &&
+        (rc = hfs_gles_program_texture(gl, prog, "u_egloss", GL_TEXTURE_2D, g->envmap.gloss,
+                                       err)))
+        return rc;
     hfs_gles_set_i2(gl, prog, "u_size", fr->L.w, fr->L.h);
     hfs_gles_set_i2(gl, prog, "u_vsize", fr->L.vw, fr->L.vh);
     hfs_gles_set_i1(gl, prog, "u_sub", fr->L.sub);
@@ -202,7 +209,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
                                 .local_dirs = local ? fr->q->nphi_local : 0,
                                 .n_local = fr->n_local, .fp32 = g->caps.fp32,
                                 .albedo_map = fr->albedo != NULL, .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0,
-                                .env_map = fr->has_env ? fr->env_map : 0};
+                                .env_map = fr->has_env ? fr->env_map : 0,
+                                .gloss_map = fr->has_env && fr->gloss_map};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_SHADE, &v, &prog, err);
     if (rc || (rc = bind_inputs(g, fr, prog, err)))
@@ -213,7 +221,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
      * open-sky table and the map's occlusion (pass_env_map_slices.c). */
     const int env_fetches = !fr->has_env ? 0
                             : (fr->env_map == 2 && !fr->gloss.on ? 0 : 4) + (fr->env_map > 0) +
-                                  (fr->env_map == 2);
+                                  (fr->env_map == 2) + fr->gloss_map;
     double fetches = (double)L->w * L->h * (1 + env_fetches + fr->n_keys + (fr->albedo != NULL));
     if (local) /* the texel's height, one ratio layer per two lights */
         fetches += (double)L->w * L->h * (1 + (fr->n_local + 1) / 2);

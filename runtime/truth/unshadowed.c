@@ -40,7 +40,7 @@ static void gloss_unshadowed(const hfs_field *f, const hfs_lighting *l, const hf
         double zh[HFS_ZH_N], h[HFS_SH_N];
         hfs_zh_clamped_cosine(zh);
         hfs_sh_rotate_zonal(zh, n[0], n[1], n[2], h);
-        hfs_gloss_env(g, nr, r, h, h, env, sp);
+        hfs_gloss_env(g, nr, r, h, h, env, NULL, sp);
     }
     for (int k = 0; k < l->n_key; ++k) {
         const hfs_key_light *kl = &l->key[k];
