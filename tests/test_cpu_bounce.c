@@ -49,15 +49,20 @@ static void test_flat(void)
 }
 
 
-/* Bound: the bands stop at the direct light's horizon (energy), which
- * samples the distance at the scales refined about their max (k2 o8,
- * refine 4: at D = 41 the wall's top lies between samples and is seen
- * 2 degrees low), and the azimuth at 12 slices (at D = 3 the wall's
- * elevation falls steeply near the azimuth along it).  Measured, always
- * low: 7.2%, 4.7%, 1.8%, 8.0%, 9.5% of F at D = 3, 5, 9, 17, 41; bound
- * 12%.  (Without the cap the bands reach 0.7-7%, but direct + bounces
+/* Bound: the bands stop at the direct light's horizons (energy), which
+ * sample the distance at the scales refined about their max (k2 o8), and
+ * the azimuth at 12 slices (at D = 3 the wall's elevation falls steeply
+ * near the azimuth along it).  Since issue 36 they are the direct light's
+ * split horizons at the defaults (subsample 2: the near part refined with
+ * 2 samples up to 16 texels, the far part on the 8-step grid), as the
+ * frame without bounces has them, not one horizon refined with 4: the
+ * wall's top just beyond 16 texels comes from far occluders blended
+ * between grid receivers 8 apart, seen lower.  Measured, always low:
+ * 7.4%, 4.2%, 10.5%, 12.7%, 8.4% of F at D = 3, 5, 9, 17, 41 (one
+ * horizon: 7.2%, 4.7%, 1.8%, 8.0%, 9.5%, bound 12%); bound 15%, 1.2x the
+ * worst.  (Without the cap the bands reach 0.7-7%, but direct + bounces
  * then exceed 1 by 3% in the furnace below.) */
-#define WALL_REL 0.12
+#define WALL_REL 0.15
 
 static void test_wall(void)
 {

@@ -23,7 +23,10 @@
  * point sample: the approximation for fields above 2^offset + 1).
  * Under an environment on the exact-slice path the bands stop at the
  * slice's horizon as the direct light computes it (refined scales and own
- * cell; lights.h hfs_bounce_capped): what a receiver gathers and the sky it sees
+ * cell; lights.h hfs_bounce_capped; with split horizons, each band clipped
+ * to each of the slice's sub-horizons and the parts averaged,
+ * split_horizon.h hfs_split_band, the far grid computed again as the
+ * direct light's): what a receiver gathers and the sky it sees
  * never overlap, so with albedo <= 1 direct + bounces never exceed the
  * unshadowed maximum (without the cap, 3% over in a white furnace).
  * Without an environment there is no sky to overlap, and on the seeds'
