@@ -15,7 +15,11 @@
  * direct light's horizon of the slice (the grid's horizons of
  * env_horizons.frag, and the own cell), so what a receiver gathers and the
  * sky it sees never overlap (lights.h hfs_bounce_capped).
- * Writes E_b = dphi / pi * sum over slices and bands (RGB); HFS_SLICE also
+ * Writes E_b = dphi / pi * sum over slices and bands (RGB), the bands lit
+ * by the receiver's own radiance (its own cell below the near end's slope,
+ * issue 36) left out: their weight S (dphi / pi times it) goes to the
+ * second target's alpha, and bounce_light.frag lights it with each
+ * texel's own radiance; HFS_SLICE also
  * the receiver's occluded part over pi, W = dphi / pi sum over all of the
  * environment's slices of the clamped cosine's integral below the direct
  * horizon (alpha: 1 would be the whole hemisphere), by which
@@ -128,9 +132,7 @@ layout(std140) uniform HfsBounce {
 };
 
 layout(location = 0) out vec4 o_e;
-#ifdef HFS_GLOSSY
-layout(location = 1) out vec4 o_g;       /* G (RGB) */
-#endif
+layout(location = 1) out vec4 o_g;       /* (G (RGB; HFS_GLOSSY, else 0), S) */
 
 /* Int_x^{pi/2} (a cos e + b sin e) cos e de (slice_light.h). */
 float slice_cosine(float a, float b, float x)
@@ -182,8 +184,10 @@ struct Walk {
     float x_cap[HFS_NSUB]; /* and its elevation (-1e30 below the plane) */
 #endif
 #endif
-    vec3 acc;        /* sum of Lo_{b-1} W */
+    vec3 acc;        /* sum of Lo_{b-1} W, the receiver's own light left out */
+    float wself;     /* sum of W lit by the receiver's own radiance */
     vec3 last;       /* the last band's radiance */
+    bool last_self;  /* and whether it was the receiver's own */
 #ifdef HFS_GLOSSY
     vec4 l;          /* (R.d, R_z, N.d, N_z) */
     vec2 sup;        /* the lobe's support along the slice (x > y: none) */
@@ -235,6 +239,30 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
     w.gacc += lo * wl;
 #endif
     w.last = lo;
+    w.last_self = false;
+    w.t_top = t;
+    w.s_top = s;
+}
+
+/* The own cell's band up to slope t where the ray meets the cell at once
+ * (below its near end's slope): lit by the receiver's own radiance lo,
+ * whose weight goes to w.wself, for bounce_light.frag to take each
+ * texel's own radiance instead of interpolating the receivers' (the
+ * glossy lobe's part stays with lo). */
+void cast_self(inout Walk w, float t, vec3 lo)
+{
+    t = min(t, w.t_cap);
+    if (!(t > w.t_top))
+        return;
+    float x = atan(t);
+    float s = slice_cosine(w.a, w.b, x);
+    float wl;
+    w.wself += band_weight(w, s, x, wl);
+#ifdef HFS_GLOSSY
+    w.gacc += lo * wl;
+#endif
+    w.last = lo;
+    w.last_self = true;
     w.t_top = t;
     w.s_top = s;
 }
@@ -242,16 +270,18 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
 /* The receiver's own cell along cs: the elevation of the max of the near
  * end's slope (the axis neighbours' one-sided slopes, weighted by |cos|,
  * |sin|; ns = (+x, -x, +y, -y)) and the far edge's (bilinear on the finest
- * level) as a slope t, at the far edge's offset o; false when the cell
- * leaves the field. */
-bool own_cell(ivec2 g, vec2 cs, vec4 ns, vec4 sc, vec2 h0, out float t, out vec2 o)
+ * level) as a slope t, at the far edge's offset o, the two ends' slopes in
+ * nf (near, far); false when the cell leaves the field. */
+bool own_cell(ivec2 g, vec2 cs, vec4 ns, vec4 sc, vec2 h0, out float t, out vec2 o, out vec2 nf)
 {
     float tc = 1.0 / max(abs(cs.x), abs(cs.y));
     t = -1e30;
+    nf = vec2(-1e30);
     if (!hfs_scale_offset(g, u_size, tc, cs, o))
         return false;
     float near = abs(cs.x) * (cs.x > 0.0 ? ns.x : ns.y) + abs(cs.y) * (cs.y > 0.0 ? ns.z : ns.w);
     float far = hfs_scale_slope(u_levels, g, u_size, o, sc, h0) * sc.x / tc;
+    nf = vec2(near, far);
     t = max(near, far);
     return true;
 }
@@ -276,7 +306,7 @@ void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
         vec2 h = hx[int(sc.z)];
         float most = (u_vmax - hfs_h(h)) * sc.y; /* the largest slope at distance d */
         float f = 1.0, t_best = w.t_top;
-        vec2 o_best = vec2(0.0), o_clear = vec2(0.0);
+        vec2 o_clear = vec2(0.0); /* the band's light: the first sample that rose */
         bool cleared = false;
         for (int q = 0; q <= u_refine; ++q, f *= step) {
             vec2 o;
@@ -291,15 +321,13 @@ void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
                 o_clear = o;
                 cleared = true;
             }
-            if (t > t_best) {
-                if (t_best == w.t_top)
-                    o_best = o; /* the band's radiance: the first sample that rises */
-                t_best = t;
-            }
+            t_best = max(t_best, t);
         }
         /* ... by more than the horizons' tie: a rise of a rounding error
-         * must not pick the light (cpu_bounce.c slice_gather). */
-        cast_band(w, t_best, g, cleared ? o_clear : o_best);
+         * must not pick the light, nor cast a band (cpu_bounce.c
+         * slice_gather). */
+        if (cleared)
+            cast_band(w, t_best, g, o_clear);
     }
 }
 
@@ -373,8 +401,8 @@ float skipped_occluded(ivec2 g, vec3 n, vec4 ns, vec4 fine, vec2 h0)
             continue;
         vec2 cs = u_edir[je].xy;
         float t1;
-        vec2 o1;
-        own_cell(g, cs, ns, fine, h0, t1, o1);
+        vec2 o1, nf;
+        own_cell(g, cs, ns, fine, h0, t1, o1, nf);
         float t[HFS_NSUB];
         w += sub_horizons(je, cs, n, direct_horizon(g, je, t1), t);
     }
@@ -403,6 +431,8 @@ void main()
                     fine.x;
     }
     vec3 acc = vec3(0.0);
+    float wself = 0.0; /* the receiver's own light's weight */
+    vec3 rad0 = texture(u_rad, (vec2(g) + 0.5) / vec2(u_size)).rgb; /* and that light */
     float w_occ = 0.0; /* slice_occluded summed over the environment's directions */
 #ifdef HFS_GLOSSY
     /* R at the receiver (gloss.h hfs_gloss_reflect); nv <= 0: no lobe. */
@@ -425,7 +455,9 @@ void main()
         w.s_top = slice_cosine(w.a, w.b, atan(-w.a, n.z));
         w.t_cap = 1e30;
         w.acc = vec3(0.0);
+        w.wself = 0.0;
         w.last = vec3(0.0);
+        w.last_self = false;
         float s0 = w.s_top;
 #ifdef HFS_GLOSSY
         w.l = vec4(dot(r.xy, cs), r.z, w.a, w.b);
@@ -440,8 +472,8 @@ void main()
         /* The caps: the direct horizons (the own cell's among them), then
          * the own cell's band. */
         float t1;
-        vec2 o1;
-        bool cell = own_cell(g, cs, ns, fine, h0, t1, o1);
+        vec2 o1, nf;
+        bool cell = own_cell(g, cs, ns, fine, h0, t1, o1, nf);
 #ifdef HFS_SLICE
         float tc[HFS_NSUB];
         float occ = sub_horizons(je, cs, n, direct_horizon(g, je, t1), tc);
@@ -455,16 +487,33 @@ void main()
             w.t_cap = max(w.t_cap, tc[h]);
         }
 #endif
-        if (cell)
-            cast_band(w, t1, g, o1);
+        if (cell) {
+            /* Below the near end's slope the ray meets the cell at once:
+             * the receiver's own radiance; the rest (a twisted cell) where
+             * the ray at its middle elevation meets it; each part only
+             * where it rises by more than the tie (cpu_bounce.c
+             * slice_gather). */
+            if (hfs_scale_takes_over(nf.x, w.t_top, u_tie))
+                cast_self(w, nf.x, rad0);
+            float e = min(nf.y, w.t_cap);
+            if (hfs_scale_takes_over(nf.y, max(nf.x, w.t_top), u_tie) && e > w.t_top) {
+                float u = tan(0.5 * (atan(w.t_top) + atan(e)));
+                float tc = 1.0 / max(abs(cs.x), abs(cs.y));
+                float tx = clamp(tc * (u - nf.x) / (nf.y - nf.x), 0.0, tc);
+                cast_band(w, e, g, cs * tx);
+            }
+        }
         walk_scales(w, g, cs, hx);
 #ifdef HFS_SLICE
         /* The terrain reaches the direct horizons, which the sparser walk
          * may not (a peak between its samples): the last band's radiance
          * fills the rest up to each (cpu_bounce.c slice_gather). */
         if (w.s_top < s0 && w.t_top < w.t_cap) {
-            float wl;
-            w.acc += w.last * band_weight(w, -1e30, 1e30, wl);
+            float wl, wf = band_weight(w, -1e30, 1e30, wl);
+            if (w.last_self)
+                w.wself += wf;
+            else
+                w.acc += w.last * wf;
 #ifdef HFS_GLOSSY
             w.gacc += w.last * wl;
 #endif
@@ -472,6 +521,7 @@ void main()
         w_occ += occ;
 #endif
         acc += w.acc;
+        wself += w.wself;
 #ifdef HFS_GLOSSY
         gacc += w.gacc;
 #endif
@@ -482,8 +532,12 @@ void main()
     vec3 e = acc * u_bhead.x;
     e = clamp(e, vec3(0.0), vec3(65504.0));
     o_e = vec4(mix(vec3(0.0), e, equal(e, e)), clamp(w_occ, 0.0, 1.0));
+    float ws = clamp(wself * u_bhead.x, 0.0, 65504.0);
+    ws = ws == ws ? ws : 0.0;
 #ifdef HFS_GLOSSY
     vec3 gs = clamp(gacc * u_gview.w, vec3(0.0), vec3(65504.0));
-    o_g = vec4(mix(vec3(0.0), gs, equal(gs, gs)), 0.0);
+    o_g = vec4(mix(vec3(0.0), gs, equal(gs, gs)), ws);
+#else
+    o_g = vec4(0.0, 0.0, 0.0, ws);
 #endif
 }

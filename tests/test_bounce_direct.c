@@ -4,7 +4,8 @@
  * them (split_horizon.h hfs_split_make), its bounce bands clipped to each
  * sub-horizon (hfs_split_band), so its direct part is that frame's and the
  * bounces (>= 0) only add.  64^2 fields under a uniform sky, albedo 0.8,
- * one bounce: the Hurst-0.25 fractal (hfgen fractal) at subsample 2 and 4,
+ * one bounce: the fractal at relief 0.25 (hfgen fractal) at subsample 2
+ * and 4,
  * city blocks (hfgen city) at subsample 2.
  *   cpu   (argv[1] "cpu") the bounce frame >= the direct frame at every
  *         texel, and = the direct frame + hfs_cpu_bounces of it bit for

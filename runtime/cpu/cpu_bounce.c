@@ -89,6 +89,13 @@ static double cast(const bounce_ctx *b, slice_sums *ss, double top, double e, do
     return e;
 }
 
+/* The slope a sample must exceed to rise above slope t by more than the
+ * horizons' tie (cpu_horizon.h; GLES hfs_scale_takes_over). */
+static double rise_over(const bounce_ctx *b, double t)
+{
+    return t + HFS_HORIZON_TIE * fabs(t) + b->tie;
+}
+
 /* The sample at distance dist (texels) along (c, s) from receiver (i, j),
  * read from level `read` as the horizons read it (h0: the receiver's value
  * there): its slope into *slope and its grid position; 0 when it lies off
@@ -163,21 +170,38 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
         ss->last[k] = 0.0;
     double top = atan2(-a, n[2]); /* the tangent plane */
     const double top0 = top;
-    const double m1 = hfs_field_first_cell_slope(b->f, i, j, c, s);
+    double near, far;
+    const double m1 = hfs_field_first_cell(b->f, i, j, c, s, &near, &far);
     ss->k = 0;
     const double cap =
         b->capped ? direct_horizons(b, omega, d, i, j, n, c, s, m1, pl, top0, ss) : 0.5 * PI;
-    /* The receiver's own cell; its band takes the far edge's radiance. */
+    /* The receiver's own cell, where the bilinear surface along the ray is
+     * z(t) = t (near + (far - near) t / tc) (issue 36): a ray below the
+     * near end's slope meets it at once, so that part of the band takes
+     * the receiver's own radiance (in a pit, its own dark walls, not the
+     * lit rim beyond); the rest, up to the far edge's slope (a twisted
+     * cell), the radiance where the ray at the part's middle elevation
+     * meets it, t = tc (u - near) / (far - near).  Each part only where it
+     * rises by more than the horizons' tie, as a scale's group below: a
+     * part of a rounding error's width must not pick the light that fills
+     * the rest (scaling the world would move it, test_metamorphic). */
     const double tc = 1.0 / fmax(fabs(c), fabs(s));
-    if (m1 > -DBL_MAX)
-        top = cast(b, ss, top, fmin(atan(m1), cap), i + c * tc, j + s * tc);
+    if (m1 > -DBL_MAX) {
+        if (near > rise_over(b, tan(top)))
+            top = cast(b, ss, top, fmin(atan(near), cap), i, j);
+        const double e = fmin(atan(far), cap);
+        if (far > rise_over(b, fmax(near, tan(top))) && e > top) {
+            const double u = tan(0.5 * (top + e));
+            const double t = fmin(fmax(tc * (u - near) / (far - near), 0.0), tc);
+            top = cast(b, ss, top, e, i + c * t, j + s * t);
+        }
+    }
     const hfs_horizon_tap *taps = hfs_horizon_plan_taps(b->plan, d);
     /* Once the top reaches the cap nothing farther can cast a band. */
     for (int sc = b->n_levels - 1; sc >= 0 && top < cap; --sc) {
         const double d0 = hfs_cpu_pyramid_spacing(b->pyr, sc);
         const double h0 = hfs_cpu_pyramid_sample(b->pyr, taps[sc].read, i, j);
-        const double t_top = tan(top);
-        const double rise = t_top + HFS_HORIZON_TIE * fabs(t_top) + b->tie;
+        const double rise = rise_over(b, tan(top));
         double best = top, at[2] = {0.0, 0.0}, clear[2] = {0.0, 0.0};
         int off = 0, cleared = 0;
         for (int q = 0; q <= b->refine && !off; ++q) {
@@ -195,7 +219,12 @@ static void slice_gather(const bounce_ctx *b, double *omega, int d, int i, int j
         }
         if (cleared) /* a rise within the tie is rounding: it must not pick the light */
             at[0] = clear[0], at[1] = clear[1];
-        top = cast(b, ss, top, fmin(best, cap), at[0], at[1]);
+        /* ... nor cast a band of a rounding error's width, whose light
+         * would fill the rest where the walk stops (issue 36: the own
+         * cell's is the receiver's own, the next scale's first sample at
+         * its far edge). */
+        if (cleared)
+            top = cast(b, ss, top, fmin(best, cap), at[0], at[1]);
         if (off)
             break; /* the grid is convex: every farther sample is off too */
     }
