@@ -15,11 +15,7 @@
  * direct light's horizon of the slice (the grid's horizons of
  * env_horizons.frag, and the own cell), so what a receiver gathers and the
  * sky it sees never overlap (lights.h hfs_bounce_capped).
- * Writes E_b = dphi / pi * sum over slices and bands (RGB), the bands lit
- * by the receiver's own radiance (its own cell below the near end's slope,
- * issue 36) left out: their weight S (dphi / pi times it) goes to the
- * second target's alpha, and bounce_light.frag lights it with each
- * texel's own radiance; HFS_SLICE also
+ * Writes E_b = dphi / pi * sum over slices and bands (RGB); HFS_SLICE also
  * the receiver's occluded part over pi, W = dphi / pi sum over all of the
  * environment's slices of the clamped cosine's integral below the direct
  * horizon (alpha: 1 would be the whole hemisphere), by which
@@ -132,7 +128,9 @@ layout(std140) uniform HfsBounce {
 };
 
 layout(location = 0) out vec4 o_e;
-layout(location = 1) out vec4 o_g;       /* (G (RGB; HFS_GLOSSY, else 0), S) */
+#ifdef HFS_GLOSSY
+layout(location = 1) out vec4 o_g;       /* G (RGB) */
+#endif
 
 /* Int_x^{pi/2} (a cos e + b sin e) cos e de (slice_light.h). */
 float slice_cosine(float a, float b, float x)
@@ -184,10 +182,8 @@ struct Walk {
     float x_cap[HFS_NSUB]; /* and its elevation (-1e30 below the plane) */
 #endif
 #endif
-    vec3 acc;        /* sum of Lo_{b-1} W, the receiver's own light left out */
-    float wself;     /* sum of W lit by the receiver's own radiance */
+    vec3 acc;        /* sum of Lo_{b-1} W */
     vec3 last;       /* the last band's radiance */
-    bool last_self;  /* and whether it was the receiver's own */
 #ifdef HFS_GLOSSY
     vec4 l;          /* (R.d, R_z, N.d, N_z) */
     vec2 sup;        /* the lobe's support along the slice (x > y: none) */
@@ -239,30 +235,6 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
     w.gacc += lo * wl;
 #endif
     w.last = lo;
-    w.last_self = false;
-    w.t_top = t;
-    w.s_top = s;
-}
-
-/* The own cell's band up to slope t where the ray meets the cell at once
- * (below its near end's slope): lit by the receiver's own radiance lo,
- * whose weight goes to w.wself, for bounce_light.frag to take each
- * texel's own radiance instead of interpolating the receivers' (the
- * glossy lobe's part stays with lo). */
-void cast_self(inout Walk w, float t, vec3 lo)
-{
-    t = min(t, w.t_cap);
-    if (!(t > w.t_top))
-        return;
-    float x = atan(t);
-    float s = slice_cosine(w.a, w.b, x);
-    float wl;
-    w.wself += band_weight(w, s, x, wl);
-#ifdef HFS_GLOSSY
-    w.gacc += lo * wl;
-#endif
-    w.last = lo;
-    w.last_self = true;
     w.t_top = t;
     w.s_top = s;
 }
@@ -431,8 +403,6 @@ void main()
                     fine.x;
     }
     vec3 acc = vec3(0.0);
-    float wself = 0.0; /* the receiver's own light's weight */
-    vec3 rad0 = texture(u_rad, (vec2(g) + 0.5) / vec2(u_size)).rgb; /* and that light */
     float w_occ = 0.0; /* slice_occluded summed over the environment's directions */
 #ifdef HFS_GLOSSY
     /* R at the receiver (gloss.h hfs_gloss_reflect); nv <= 0: no lobe. */
@@ -455,9 +425,7 @@ void main()
         w.s_top = slice_cosine(w.a, w.b, atan(-w.a, n.z));
         w.t_cap = 1e30;
         w.acc = vec3(0.0);
-        w.wself = 0.0;
         w.last = vec3(0.0);
-        w.last_self = false;
         float s0 = w.s_top;
 #ifdef HFS_GLOSSY
         w.l = vec4(dot(r.xy, cs), r.z, w.a, w.b);
@@ -487,14 +455,21 @@ void main()
             w.t_cap = max(w.t_cap, tc[h]);
         }
 #endif
-        if (cell) {
+        if (cell && u_sub > 1) {
+            /* A sub-sampled grid: the band takes the far edge's light.
+             * The receiver's own light would stand for the texels between
+             * receivers, whose own cells differ (issue 36: measured worse
+             * on the DEM, the fractal and the cones at the defaults, with
+             * and without that part lit per texel by its own light). */
+            cast_band(w, t1, g, o1);
+        } else if (cell) {
             /* Below the near end's slope the ray meets the cell at once:
              * the receiver's own radiance; the rest (a twisted cell) where
              * the ray at its middle elevation meets it; each part only
              * where it rises by more than the tie (cpu_bounce.c
              * slice_gather). */
             if (hfs_scale_takes_over(nf.x, w.t_top, u_tie))
-                cast_self(w, nf.x, rad0);
+                cast_band(w, nf.x, g, vec2(0.0));
             float e = min(nf.y, w.t_cap);
             if (hfs_scale_takes_over(nf.y, max(nf.x, w.t_top), u_tie) && e > w.t_top) {
                 float u = tan(0.5 * (atan(w.t_top) + atan(e)));
@@ -509,11 +484,8 @@ void main()
          * may not (a peak between its samples): the last band's radiance
          * fills the rest up to each (cpu_bounce.c slice_gather). */
         if (w.s_top < s0 && w.t_top < w.t_cap) {
-            float wl, wf = band_weight(w, -1e30, 1e30, wl);
-            if (w.last_self)
-                w.wself += wf;
-            else
-                w.acc += w.last * wf;
+            float wl;
+            w.acc += w.last * band_weight(w, -1e30, 1e30, wl);
 #ifdef HFS_GLOSSY
             w.gacc += w.last * wl;
 #endif
@@ -521,7 +493,6 @@ void main()
         w_occ += occ;
 #endif
         acc += w.acc;
-        wself += w.wself;
 #ifdef HFS_GLOSSY
         gacc += w.gacc;
 #endif
@@ -532,12 +503,8 @@ void main()
     vec3 e = acc * u_bhead.x;
     e = clamp(e, vec3(0.0), vec3(65504.0));
     o_e = vec4(mix(vec3(0.0), e, equal(e, e)), clamp(w_occ, 0.0, 1.0));
-    float ws = clamp(wself * u_bhead.x, 0.0, 65504.0);
-    ws = ws == ws ? ws : 0.0;
 #ifdef HFS_GLOSSY
     vec3 gs = clamp(gacc * u_gview.w, vec3(0.0), vec3(65504.0));
-    o_g = vec4(mix(vec3(0.0), gs, equal(gs, gs)), ws);
-#else
-    o_g = vec4(0.0, 0.0, 0.0, ws);
+    o_g = vec4(mix(vec3(0.0), gs, equal(gs, gs)), 0.0);
 #endif
 }

@@ -4,12 +4,7 @@
  *   v = u_direct * (hi + lo) + rho(x) * sum_{l in [u_first, u_first +
  *       u_count)} E_l(x),
  * E_l read bilinearly from the grid like the local lights' ratios
- * (hfs_grid_uv), plus S_l read the same way times this texel's own Lo_l
- * (the direct light, then rho E_l + G_l in turn): the part of bounce l + 1
- * that a receiver's own cell lights with its own radiance
- * (bounce_gather.frag, issue 36), which interpolated would bring the
- * receivers' light to this texel; rho(x) = the albedo times the texel's
- * albedo map
+ * (hfs_grid_uv) and rho(x) = the albedo times the texel's albedo map
  * (HFS_ALBEDO_MAP).  HFS_SLICE (the bands stop at the direct horizon):
  * E_l times this texel's own occluded part of the hemisphere over the
  * receivers' (W_l in the alpha, interpolated like E), the occluded part
@@ -25,10 +20,9 @@
  * target) and as the frame's result (direct + every bounce, an fp16 hi +
  * lo pair like the shading pass's).  Radiances carry the frame's output
  * scale (pass_shade.c).
- * Layers: (E_l, W_l) at 2 l, (G_l, S_l) at 2 l + 1.  HFS_GLOSSY: a glossy
- * receiver's lobe of each bounce, G_l, read and scaled like E_l, is added
- * after the albedo (not the albedo map's, as the direct lobe; 0 on a
- * diffuse surface).
+ * HFS_GLOSSY: a glossy receiver's lobe of each bounce, G_l (layer 2 l + 1;
+ * E_l is then at 2 l), read and scaled like E_l, is added after the
+ * albedo (not the albedo map's, as the direct lobe).
  */
 // hfs-variant: HFS_ALBEDO_MAP 1
 // hfs-variant: HFS_SLICE 1
@@ -49,8 +43,7 @@ vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 
 uniform highp sampler2D u_hi;            /* the shading pass's output, hi */
 uniform highp sampler2D u_lo;            /* and lo */
-uniform highp sampler2DArray u_e;        /* on the grid, two layers a bounce, LINEAR: (E_b, W_b),
-                                            (G_b, S_b) */
+uniform highp sampler2DArray u_e;        /* (E_b, W_b) on the grid, a layer a bounce, LINEAR */
 #ifdef HFS_SLICE
 uniform highp sampler2D u_t0;            /* the slices' occluded transfer, coefficients 0-3 */
 #endif
@@ -71,8 +64,7 @@ layout(location = 1) out vec4 o_lo;
 void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec3 direct = texelFetch(u_hi, p, 0).rgb + texelFetch(u_lo, p, 0).rgb;
-    vec3 v = u_direct * direct;
+    vec3 v = u_direct * (texelFetch(u_hi, p, 0).rgb + texelFetch(u_lo, p, 0).rgb);
     vec3 rho = vec3(u_rho);
 #ifdef HFS_ALBEDO_MAP
     rho *= texelFetch(u_albedo, p, 0).rgb;
@@ -81,27 +73,26 @@ void main()
 #ifdef HFS_SLICE
     float w_occ = -texelFetch(u_t0, p, 0).x * (2.0 / sqrt(HFS_PI)); /* over pi */
 #endif
-    /* Each bounce from the first: its light from the grid plus its part lit
-     * by this texel's own radiance (S_l times Lo_l here: the direct light,
-     * then each bounce's own result), summed over [u_first, u_first +
-     * u_count). */
-    vec3 lo_prev = direct, sum = vec3(0.0);
-    for (int l = 0; l < u_first + u_count; ++l) {
-        vec4 eb = texture(u_e, vec3(uv, float(2 * l)));
-        vec4 gb = texture(u_e, vec3(uv, float(2 * l + 1)));
-        vec3 e = eb.rgb + gb.a * lo_prev, g = gb.rgb;
+    vec3 e = vec3(0.0), gs = vec3(0.0);
+    for (int l = 0; l < u_count; ++l) {
+#ifdef HFS_GLOSSY
+        vec4 eb = texture(u_e, vec3(uv, float(2 * (u_first + l))));
+        vec3 gb = texture(u_e, vec3(uv, float(2 * (u_first + l) + 1))).rgb;
+#else
+        vec4 eb = texture(u_e, vec3(uv, float(u_first + l)));
+        vec3 gb = vec3(0.0);
+#endif
 #ifdef HFS_SLICE
         if (eb.a >= 1e-3) {
             float ratio = max(w_occ, 0.0) / eb.a;
-            e *= ratio;
-            g *= ratio;
+            eb.rgb *= ratio;
+            gb *= ratio;
         }
 #endif
-        lo_prev = rho * e + g;
-        if (l >= u_first)
-            sum += lo_prev;
+        e += eb.rgb;
+        gs += gb;
     }
-    v += sum;
+    v += rho * e + gs;
     v = clamp(v, vec3(-65504.0), vec3(65504.0));
     v = mix(vec3(0.0), v, equal(v, v));
     vec2 r = hfs_split(v.r), g = hfs_split(v.g), b = hfs_split(v.b);

@@ -33,8 +33,7 @@ int hfs_gles_bounce_targets_ensure(hfs_gles_bounce_targets *t, const hfs_gl *gl,
         return HFS_OK;
     hfs_gles_bounce_targets_free(t, gl);
     t->w = w, t->h = h, t->bw = bw, t->bh = bh, t->fp32 = c->fp32, t->glossy = glossy;
-    /* (E, W) and (G, S) a bounce (bounce_gather.frag) */
-    const int layers = 2 * HFS_GLES_MAX_BOUNCES;
+    const int layers = (1 + glossy) * HFS_GLES_MAX_BOUNCES;
     t->rad = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 1);
     t->e = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, bw, bh, layers, 1);
     t->fin[0] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);

@@ -5,12 +5,10 @@
  * bounces:
  *   rad      full resolution, RGBA, LINEAR: the exit radiance the next
  *            bounce gathers (Lo_{b-1}, times the frame's output scale);
- *   e        the bounce grid (quality bounce_subsample), 6 layers, LINEAR:
- *            two a bounce (pass_bounce.c): at 2 (b-1) its gathered
- *            irradiance over pi, E_b, and the receivers' occluded part;
- *            after it the glossy lobe's G_b (0 on a diffuse surface) and
- *            the weight of the light the receivers' own cells give
- *            themselves (issue 36);
+ *   e        the bounce grid (quality bounce_subsample), 3 layers, LINEAR:
+ *            each bounce's gathered irradiance over pi, E_b, and the
+ *            receivers' occluded part (pass_bounce.c); 6 for a glossy
+ *            surface, E_b at 2 (b-1) and the lobe's G_b after it;
  *   fin      full resolution hi + lo pair: direct + indirect, what the
  *            read-back (and any later pass) takes instead of the shading
  *            pass's output.

@@ -159,11 +159,11 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
     hfs_gles_set_i1(gl, prog, "u_vsub", L->sub);  /* the visibility grid's, for u_hor */
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_BOUNCE, g->ubo[HFS_UBO_BOUNCE]);
-    if (fr->gloss.on)
+    const int glossy = fr->gloss.on;
+    if (glossy)
         set_gloss(gl, prog, fr);
-    /* (E, W) and (G, S): two layers a bounce */
-    if ((rc = hfs_gles_fbo_layers(gl, g->bounce.e_fbo, g->bounce.e, 2 * layer, 2,
-                                  "bounce irradiance", err)))
+    if ((rc = hfs_gles_fbo_layers(gl, g->bounce.e_fbo, g->bounce.e, (1 + glossy) * layer,
+                                  1 + glossy, "bounce irradiance", err)))
         return rc;
     hfs_gles_draw(gl, g->bounce.e_fbo, fr->bw, fr->bh);
     return HFS_OK;
