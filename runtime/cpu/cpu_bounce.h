@@ -5,9 +5,11 @@
  * Bounce b at receiver x: along hfs_bounce_dirs(q) azimuth slices (every
  * (nphi_env / that)-th of the environment's directions, lights.h), the
  * horizon is walked outward from the tangent plane: the receiver's own
- * cell (hfs_field_first_cell_slope), then each scale of the multi-scale
- * horizons (cpu_horizon.h) with q->bounce_refine samples after it towards
- * the next (read as the scale reads), nearest first.  A sample that rises
+ * cell (hfs_field_first_cell: lit where the ray meets the bilinear surface,
+ * below its near slope by the receiver itself, issue 36), then each scale
+ * of the multi-scale horizons (cpu_horizon.h) with q->bounce_refine
+ * samples after it towards the next (read as the scale reads), nearest
+ * first.  A sample that rises
  * above everything nearer casts the band of elevations between the old top
  * and its own: those directions hit the terrain between the two samples,
  * and the band takes the sample's radiance Lo_{b-1} (NS09's casting set,
