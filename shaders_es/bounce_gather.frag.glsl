@@ -23,6 +23,13 @@
  * Samples whose best case (the field's largest height, u_vmax) cannot
  * rise above the current top are skipped without a fetch: they could not
  * cast a band.
+ * HFS_FARK K (HFS_SLICE with split horizons, split_horizon.h): the direct
+ * light's horizon of a slice is K sub-horizons, max(the grid's near part,
+ * each sub-direction's far occluder from u_far moved to the receiver, as
+ * env_slices.frag), and each band is clipped to each of them, the slice
+ * taking the mean of the parts (hfs_split_band), as W takes the mean of
+ * the occluded parts: turning bounces on leaves the direct light as it is
+ * (issue 36).
  * HFS_GLOSSY (a glossy receiver, gloss.h): each band is also weighed by
  * the Phong lobe about the receiver's R times its cosine (lobe_band, as
  * slice_light.c hfs_lobe_slice_band), written as G = ks (S+2)/(2 pi)
@@ -34,6 +41,8 @@
 // hfs-variant: HFS_SLICE 1, HFS_GLOSSY 1
 // hfs-variant: HFS_SLICE 1, HFS_PAIRS 1
 // hfs-variant: HFS_SLICE 1, HFS_GLOSSY 2, HFS_FP32 1
+// hfs-variant: HFS_SLICE 1, HFS_FARK 3
+// hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_FARK 2, HFS_GLOSSY 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -50,6 +59,11 @@
 #ifndef HFS_HALF_PI
 #define HFS_HALF_PI 1.5707963267948966
 #endif
+#ifndef HFS_FARK
+#define HFS_NSUB 1                       /* the direct light's horizons per slice */
+#else
+#define HFS_NSUB HFS_FARK
+#endif
 
 precision highp float;
 precision highp int;
@@ -64,6 +78,12 @@ void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
 bool hfs_scale_takes_over(float sl, float ref, float tie);
+#ifdef HFS_FARK
+vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
+vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
+float hfs_far_slope(float h, float d, float dz, float inv_step);
+float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc);
+#endif
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
 uniform highp sampler2D u_normals;       /* full resolution */
@@ -77,6 +97,17 @@ uniform int u_sub;                       /* the bounce grid's step */
 #ifdef HFS_SLICE
 uniform int u_vsub;                      /* the visibility grid's (u_hor's) step */
 uniform ivec2 u_vsize;                   /* and size */
+#endif
+#ifdef HFS_FARK
+uniform highp sampler2DArray u_far;      /* far occluders, 2 a texel, LINEAR: an atlas of
+                                            tiles (env_slices.frag, hfs_gles_bind_env_far) */
+uniform ivec2 u_fsize;                   /* the far grid's size (a tile) */
+uniform int u_fstep;                     /* and step */
+uniform int u_fcols;                     /* tiles a row */
+uniform vec2 u_fatlas;                   /* the atlas' size */
+uniform vec2 u_fsub[HFS_FARK];           /* sub-direction h's turn: (cos, sin) */
+vec2 g_fpix;                             /* the receiver's place in a far tile */
+float g_fdz;                             /* and how far the far receivers stand above it */
 #endif
 uniform float u_vmax;                    /* largest normalized height, a hair up */
 uniform int u_refine;                    /* samples per scale besides the scale's own */
@@ -144,7 +175,13 @@ struct Walk {
     float a, b;      /* N.d, N_z */
     float t_top;     /* slope of the highest sample so far */
     float s_top;     /* slice_cosine at its elevation */
-    float t_cap;     /* the slope where the bands stop */
+    float t_cap;     /* the slope where the bands stop: the highest sub-horizon */
+#ifdef HFS_SLICE
+    float s_cap[HFS_NSUB]; /* slice_cosine at each sub-horizon (at least the plane) */
+#ifdef HFS_GLOSSY
+    float x_cap[HFS_NSUB]; /* and its elevation (-1e30 below the plane) */
+#endif
+#endif
     vec3 acc;        /* sum of Lo_{b-1} W */
     vec3 last;       /* the last band's radiance */
 #ifdef HFS_GLOSSY
@@ -153,6 +190,34 @@ struct Walk {
     vec3 gacc;       /* sum of Lo_{b-1} W_lobe */
 #endif
 };
+
+/* The band from the top to elevation x (slice_cosine s there; s = -1e30,
+ * x = 1e30: up to each sub-horizon), HFS_SLICE: clipped to each
+ * sub-horizon, the mean of the parts (split_horizon.h hfs_split_band).
+ * Its cosine weight, and HFS_GLOSSY its lobe's into *wl. */
+float band_weight(Walk w, float s, float x, out float wl)
+{
+    wl = 0.0;
+#ifdef HFS_SLICE
+    float sum = 0.0;
+#ifdef HFS_GLOSSY
+    float xt = atan(w.t_top);
+#endif
+    for (int h = 0; h < HFS_NSUB; ++h) {
+        sum += max(w.s_top, w.s_cap[h]) - max(s, w.s_cap[h]);
+#ifdef HFS_GLOSSY
+        if (w.x_cap[h] > xt)
+            wl += lobe_band(w.l, w.sup, xt, min(x, w.x_cap[h])) / float(HFS_NSUB);
+#endif
+    }
+    return sum / float(HFS_NSUB);
+#else
+#ifdef HFS_GLOSSY
+    wl = lobe_band(w.l, w.sup, atan(w.t_top), x);
+#endif
+    return w.s_top - s;
+#endif
+}
 
 /* A sample at grid position g + o rising to slope t: casts the band
  * (top, min(t, cap)] lit by the radiance there. */
@@ -164,9 +229,10 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
     vec3 lo = texture(u_rad, (vec2(g) + o + 0.5) / vec2(u_size)).rgb;
     float x = atan(t);
     float s = slice_cosine(w.a, w.b, x);
-    w.acc += lo * (w.s_top - s);
+    float wl;
+    w.acc += lo * band_weight(w, s, x, wl);
 #ifdef HFS_GLOSSY
-    w.gacc += lo * lobe_band(w.l, w.sup, atan(w.t_top), x);
+    w.gacc += lo * wl;
 #endif
     w.last = lo;
     w.t_top = t;
@@ -176,16 +242,18 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
 /* The receiver's own cell along cs: the elevation of the max of the near
  * end's slope (the axis neighbours' one-sided slopes, weighted by |cos|,
  * |sin|; ns = (+x, -x, +y, -y)) and the far edge's (bilinear on the finest
- * level) as a slope t, at the far edge's offset o; false when the cell
- * leaves the field. */
-bool own_cell(ivec2 g, vec2 cs, vec4 ns, vec4 sc, vec2 h0, out float t, out vec2 o)
+ * level) as a slope t, at the far edge's offset o, the two ends' slopes in
+ * nf (near, far); false when the cell leaves the field. */
+bool own_cell(ivec2 g, vec2 cs, vec4 ns, vec4 sc, vec2 h0, out float t, out vec2 o, out vec2 nf)
 {
     float tc = 1.0 / max(abs(cs.x), abs(cs.y));
     t = -1e30;
+    nf = vec2(-1e30);
     if (!hfs_scale_offset(g, u_size, tc, cs, o))
         return false;
     float near = abs(cs.x) * (cs.x > 0.0 ? ns.x : ns.y) + abs(cs.y) * (cs.y > 0.0 ? ns.z : ns.w);
     float far = hfs_scale_slope(u_levels, g, u_size, o, sc, h0) * sc.x / tc;
+    nf = vec2(near, far);
     t = max(near, far);
     return true;
 }
@@ -210,7 +278,7 @@ void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
         vec2 h = hx[int(sc.z)];
         float most = (u_vmax - hfs_h(h)) * sc.y; /* the largest slope at distance d */
         float f = 1.0, t_best = w.t_top;
-        vec2 o_best = vec2(0.0), o_clear = vec2(0.0);
+        vec2 o_clear = vec2(0.0); /* the band's light: the first sample that rose */
         bool cleared = false;
         for (int q = 0; q <= u_refine; ++q, f *= step) {
             vec2 o;
@@ -225,15 +293,13 @@ void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
                 o_clear = o;
                 cleared = true;
             }
-            if (t > t_best) {
-                if (t_best == w.t_top)
-                    o_best = o; /* the band's radiance: the first sample that rises */
-                t_best = t;
-            }
+            t_best = max(t_best, t);
         }
         /* ... by more than the horizons' tie: a rise of a rounding error
-         * must not pick the light (cpu_bounce.c slice_gather). */
-        cast_band(w, t_best, g, cleared ? o_clear : o_best);
+         * must not pick the light, nor cast a band (cpu_bounce.c
+         * slice_gather). */
+        if (cleared)
+            cast_band(w, t_best, g, o_clear);
     }
 }
 
@@ -264,6 +330,36 @@ float slice_occluded(float a, float nz, float t_cap)
                            : 0.0;
 }
 
+/* The direct light's sub-horizons of environment direction je (cs) at
+ * receiver g (normal n) as slopes into t, from its near part tn
+ * (direct_horizon): HFS_FARK, each at least its sub-direction's far
+ * occluder where that rises above its own tangent plane (env_slices.frag
+ * dir_step).  Returns the mean of their slice_occluded. */
+float sub_horizons(int je, vec2 cs, vec3 n, float tn, out float t[HFS_NSUB])
+{
+    float a = n.x * cs.x + n.y * cs.y, occ = 0.0;
+#ifdef HFS_FARK
+    float ap = n.y * cs.x - n.x * cs.y; /* N.d rotated a quarter turn */
+    vec4 fv = vec4(0.0);
+#endif
+    for (int h = 0; h < HFS_NSUB; ++h) {
+#ifdef HFS_FARK
+        int e = je * HFS_FARK + h;
+        if (h == 0 || e % 2 == 0)
+            fv = texture(u_far, vec3(hfs_far_tile_uv(g_fpix, float(e / 2), u_fcols, u_fsize,
+                                                     u_fatlas), 0.0));
+        float fs = hfs_far_slope(fv[2 * (e % 2)], fv[2 * (e % 2) + 1], g_fdz,
+                                 1.0 / float(u_fstep));
+        float plane = -(a * u_fsub[h].x + ap * u_fsub[h].y) / n.z;
+        t[h] = clamp(max(tn, fs > plane + 1e-3 * (1.0 + abs(plane)) ? fs : -1e30), -1e18, 1e18);
+#else
+        t[h] = tn;
+#endif
+        occ += slice_occluded(a, n.z, t[h]);
+    }
+    return occ / float(HFS_NSUB);
+}
+
 /* The sum of slice_occluded over the environment's directions the bounces
  * skip (the walk adds its own directions'): with the walk's, dphi / pi
  * times it is the receiver's occluded part over pi, what env_slices.frag's
@@ -277,9 +373,10 @@ float skipped_occluded(ivec2 g, vec3 n, vec4 ns, vec4 fine, vec2 h0)
             continue;
         vec2 cs = u_edir[je].xy;
         float t1;
-        vec2 o1;
-        own_cell(g, cs, ns, fine, h0, t1, o1);
-        w += slice_occluded(n.x * cs.x + n.y * cs.y, n.z, direct_horizon(g, je, t1));
+        vec2 o1, nf;
+        own_cell(g, cs, ns, fine, h0, t1, o1, nf);
+        float t[HFS_NSUB];
+        w += sub_horizons(je, cs, n, direct_horizon(g, je, t1), t);
     }
     return w;
 }
@@ -293,6 +390,10 @@ void main()
     hfs_receiver_heights(u_levels, g, hx);
     vec4 fine = u_scale[HFS_NLEV - 1];
     vec2 h0 = hx[int(fine.z)];
+#ifdef HFS_FARK
+    g_fpix = hfs_grid_uv(g, u_fstep, u_size, u_fsize) * vec2(u_fsize);
+    g_fdz = hfs_grid_rise(u_levels, g, u_fstep, u_size, fine);
+#endif
     vec4 ns = vec4(-1e30); /* one-sided slopes to (+x, -x, +y, -y), -1e30 off the field */
     ivec2 nb[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
     for (int k = 0; k < 4; ++k) {
@@ -336,24 +437,57 @@ void main()
         }
         w.gacc = vec3(0.0);
 #endif
-        /* The own cell's band, then the cap: the direct horizon. */
+        /* The caps: the direct horizons (the own cell's among them), then
+         * the own cell's band. */
         float t1;
-        vec2 o1;
-        if (own_cell(g, cs, ns, fine, h0, t1, o1))
-            cast_band(w, t1, g, o1);
+        vec2 o1, nf;
+        bool cell = own_cell(g, cs, ns, fine, h0, t1, o1, nf);
 #ifdef HFS_SLICE
-        w.t_cap = direct_horizon(g, je, t1);
+        float tc[HFS_NSUB];
+        float occ = sub_horizons(je, cs, n, direct_horizon(g, je, t1), tc);
+        w.t_cap = w.t_top;
+        for (int h = 0; h < HFS_NSUB; ++h) {
+            bool above = tc[h] > w.t_top; /* the tangent plane */
+            w.s_cap[h] = above ? slice_cosine(w.a, w.b, atan(tc[h])) : s0;
+#ifdef HFS_GLOSSY
+            w.x_cap[h] = above ? atan(tc[h]) : -1e30;
 #endif
+            w.t_cap = max(w.t_cap, tc[h]);
+        }
+#endif
+        if (cell && u_sub > 1) {
+            /* A sub-sampled grid: the band takes the far edge's light.
+             * The receiver's own light would stand for the texels between
+             * receivers, whose own cells differ (issue 36: measured worse
+             * on the DEM, the fractal and the cones at the defaults, with
+             * and without that part lit per texel by its own light). */
+            cast_band(w, t1, g, o1);
+        } else if (cell) {
+            /* Below the near end's slope the ray meets the cell at once:
+             * the receiver's own radiance; the rest (a twisted cell) where
+             * the ray at its middle elevation meets it; each part only
+             * where it rises by more than the tie (cpu_bounce.c
+             * slice_gather). */
+            if (hfs_scale_takes_over(nf.x, w.t_top, u_tie))
+                cast_band(w, nf.x, g, vec2(0.0));
+            float e = min(nf.y, w.t_cap);
+            if (hfs_scale_takes_over(nf.y, max(nf.x, w.t_top), u_tie) && e > w.t_top) {
+                float u = tan(0.5 * (atan(w.t_top) + atan(e)));
+                float tc = 1.0 / max(abs(cs.x), abs(cs.y));
+                float tx = clamp(tc * (u - nf.x) / (nf.y - nf.x), 0.0, tc);
+                cast_band(w, e, g, cs * tx);
+            }
+        }
         walk_scales(w, g, cs, hx);
 #ifdef HFS_SLICE
-        /* The terrain reaches the direct horizon, which the sparser walk
+        /* The terrain reaches the direct horizons, which the sparser walk
          * may not (a peak between its samples): the last band's radiance
-         * fills the rest (cpu_bounce.c slice_gather). */
-        float occ = slice_occluded(w.a, w.b, w.t_cap);
-        if (w.s_top < s0 && w.t_top < w.t_cap) { /* s0 - occ: the cap's slice_cosine */
-            w.acc += w.last * (w.s_top - (s0 - occ));
+         * fills the rest up to each (cpu_bounce.c slice_gather). */
+        if (w.s_top < s0 && w.t_top < w.t_cap) {
+            float wl;
+            w.acc += w.last * band_weight(w, -1e30, 1e30, wl);
 #ifdef HFS_GLOSSY
-            w.gacc += w.last * lobe_band(w.l, w.sup, atan(w.t_top), atan(w.t_cap));
+            w.gacc += w.last * wl;
 #endif
         }
         w_occ += occ;

@@ -73,6 +73,7 @@ vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
 float hfs_far_slope(float h, float d, float dz, float inv_step);
 float hfs_hdiff(vec2 a, vec2 b);
+float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
 uniform highp sampler2D u_normals;       /* full resolution */
@@ -305,24 +306,14 @@ float near_rise(int i, vec4 s0, vec4 s1, float s8)
  * fetches. */
 float grid_rise(ivec2 p, int step, vec4 s0, vec4 s1, float s8)
 {
-    ivec2 a = p / step;
-    ivec2 x0 = a * step;
+    if (step != 2 || u_near == 0)
+        return hfs_grid_rise(u_levels, p, step, u_size, u_scale[HFS_NLEV - 1]);
+    ivec2 x0 = (p / step) * step;
     ivec2 x1 = min(x0 + step, u_size - 1);
     vec2 f = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
-    vec4 r; /* (x0, y0), (x1, y0), (x0, y1), (x1, y1) */
-    if (step == 2 && u_near > 0) {
-        ivec2 o0 = x0 - p + 1, o1 = x1 - p + 1; /* 0..2 */
-        r = vec4(near_rise(3 * o0.y + o0.x, s0, s1, s8), near_rise(3 * o0.y + o1.x, s0, s1, s8),
-                 near_rise(3 * o1.y + o0.x, s0, s1, s8), near_rise(3 * o1.y + o1.x, s0, s1, s8));
-    } else {
-        vec4 sc = u_scale[HFS_NLEV - 1];
-        int layer = int(sc.z);
-        vec2 h = texelFetch(u_levels, ivec3(p, layer), 0).xy;
-        r = sc.y * vec4(hfs_hdiff(texelFetch(u_levels, ivec3(x0, layer), 0).xy, h),
-                        hfs_hdiff(texelFetch(u_levels, ivec3(x1.x, x0.y, layer), 0).xy, h),
-                        hfs_hdiff(texelFetch(u_levels, ivec3(x0.x, x1.y, layer), 0).xy, h),
-                        hfs_hdiff(texelFetch(u_levels, ivec3(x1, layer), 0).xy, h));
-    }
+    ivec2 o0 = x0 - p + 1, o1 = x1 - p + 1; /* 0..2 */
+    vec4 r = vec4(near_rise(3 * o0.y + o0.x, s0, s1, s8), near_rise(3 * o0.y + o1.x, s0, s1, s8),
+                  near_rise(3 * o1.y + o0.x, s0, s1, s8), near_rise(3 * o1.y + o1.x, s0, s1, s8));
     return mix(mix(r.x, r.y, f.x), mix(r.z, r.w, f.x), f.y);
 }
 

@@ -119,6 +119,25 @@ float hfs_far_slope(float h, float d, float dz, float inv_step)
     return (h + dz * min(d * inv_step, 1.0)) / d;
 }
 
+/* How far the receivers of the grid of step `step` around texel p stand
+ * above it, in texels: their heights (on layer sc.z, scaled by sc.y: the
+ * finest scale's (d, inv_run, layer)) blended with p's bilinear weights,
+ * minus p's; 4 fetches (env_slices.frag grid_rise; bounce_gather.frag's
+ * far occluders). */
+float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc)
+{
+    ivec2 x0 = (p / step) * step;
+    ivec2 x1 = min(x0 + step, size - 1);
+    vec2 f = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
+    int layer = int(sc.z);
+    vec2 h = texelFetch(levels, ivec3(p, layer), 0).xy;
+    vec4 r = sc.y * vec4(hfs_hdiff(texelFetch(levels, ivec3(x0, layer), 0).xy, h),
+                         hfs_hdiff(texelFetch(levels, ivec3(x1.x, x0.y, layer), 0).xy, h),
+                         hfs_hdiff(texelFetch(levels, ivec3(x0.x, x1.y, layer), 0).xy, h),
+                         hfs_hdiff(texelFetch(levels, ivec3(x1, layer), 0).xy, h));
+    return mix(mix(r.x, r.y, f.x), mix(r.z, r.w, f.x), f.y);
+}
+
 /* Unit normal from an RGBA texel of terrain_normals.frag: octahedral
  * coordinates (px hi, px lo, py hi, py lo) of the upper hemisphere; nz > 0. */
 vec3 hfs_normal(vec4 t)

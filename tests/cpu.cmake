@@ -6,6 +6,10 @@ endforeach()
 # Indirect light in the CPU reference against closed forms and the truth.
 hfs_add_test(test_cpu_bounce SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_bounce.c
              LIBS hfs_cpu hfs_truth m LABEL unit TIMEOUT 300)
+# Turning bounces on never lowers a texel (issue 36): the CPU here, GLES
+# as test_bounce_direct_gles (gles.cmake).
+hfs_add_test(test_bounce_direct SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_bounce_direct.c
+             LIBS hfshade_lib hfs_cpu hfs_gl hfs_terrain_gen m ARGS cpu LABEL unit TIMEOUT 120)
 # Indirect light against the truth on one scene (not a test):
 # build/tests/bench_bounce NAME KEY=VALUE... (tools/bench_bounce.sh).
 add_executable(bench_bounce ${CMAKE_CURRENT_SOURCE_DIR}/bench_bounce.c)

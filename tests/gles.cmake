@@ -235,6 +235,11 @@ add_test(NAME test_gles_bounce_fp16_es30 COMMAND test_gles_bounce fp16)
 set_tests_properties(test_gles_bounce_fp16_es30 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 300
                      ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
 set(hfs_gles_tests ${hfs_gles_tests} test_gles_bounce_fp16_es30)
+# Turning bounces on never lowers a texel, on GLES (test_bounce_direct.c;
+# the executable is cpu.cmake's).
+add_test(NAME test_bounce_direct_gles COMMAND test_bounce_direct gles)
+set_tests_properties(test_bounce_direct_gles PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 120)
+set(hfs_gles_tests ${hfs_gles_tests} test_bounce_direct_gles)
 
 # The 3-D view (issue 16): GLES against the truth's ray-cast view of the
 # same lit image, fp16 and fp32, on an ES 3.0 context too; a camera move

@@ -6,6 +6,9 @@
  *             ramp subtending a vertical wall at its top edge, the finite
  *             wall by Lambert's polygon formula): the slices' bands within
  *             the bound below of rho Lw F, never above it
+ *   pit       a pit a texel wide, dark at its bottom: the bottom gathers
+ *             its own walls' light (the walls meet every ray below their
+ *             slope at once), not the lit rim's (issue 36)
  *   furnace   a V-groove, albedo 1, sky 1: every bounce >= 0 exactly (band
  *             weights and radiances are >= 0, no order-4 ringing) and
  *             direct + 3 bounces <= 1 + 1e-9
@@ -49,15 +52,20 @@ static void test_flat(void)
 }
 
 
-/* Bound: the bands stop at the direct light's horizon (energy), which
- * samples the distance at the scales refined about their max (k2 o8,
- * refine 4: at D = 41 the wall's top lies between samples and is seen
- * 2 degrees low), and the azimuth at 12 slices (at D = 3 the wall's
- * elevation falls steeply near the azimuth along it).  Measured, always
- * low: 7.2%, 4.7%, 1.8%, 8.0%, 9.5% of F at D = 3, 5, 9, 17, 41; bound
- * 12%.  (Without the cap the bands reach 0.7-7%, but direct + bounces
+/* Bound: the bands stop at the direct light's horizons (energy), which
+ * sample the distance at the scales refined about their max (k2 o8), and
+ * the azimuth at 12 slices (at D = 3 the wall's elevation falls steeply
+ * near the azimuth along it).  Since issue 36 they are the direct light's
+ * split horizons at the defaults (subsample 2: the near part refined with
+ * 2 samples up to 16 texels, the far part on the 8-step grid), as the
+ * frame without bounces has them, not one horizon refined with 4: the
+ * wall's top just beyond 16 texels comes from far occluders blended
+ * between grid receivers 8 apart, seen lower.  Measured, always low:
+ * 7.4%, 4.2%, 10.5%, 12.7%, 8.4% of F at D = 3, 5, 9, 17, 41 (one
+ * horizon: 7.2%, 4.7%, 1.8%, 8.0%, 9.5%, bound 12%); bound 15%, 1.2x the
+ * worst.  (Without the cap the bands reach 0.7-7%, but direct + bounces
  * then exceed 1 by 3% in the furnace below.) */
-#define WALL_REL 0.12
+#define WALL_REL 0.15
 
 static void test_wall(void)
 {
@@ -88,6 +96,39 @@ static void test_wall(void)
     }
     CHECK(worst <= WALL_REL);
     free(z), free(lo), free(direct);
+}
+
+/* A pit a texel wide (its bottom 3 below the flat ground around it), lit
+ * 0 at the bottom and 1 everywhere else (the exit radiance given, as the
+ * wall's): from the bottom every ray below the pit's walls' slope meets
+ * the wall at once (the bilinear surface rises from the receiver at slope
+ * 3 along every axis, 3 and 3 / sqrt(2)-ish along the diagonals' near
+ * end), where the radiance is the bottom's own, 0; above the walls nothing
+ * is seen but the sky.  So the bottom gathers almost nothing (issue 36:
+ * the walk lit the wall's band with its far edge, the lit rim, and
+ * gathered 0.93 of rho Lw).  Measured 0; bound 1e-3 of rho Lw. */
+#define PIT_MAX 1e-3
+
+static void test_pit(void)
+{
+    const int w = 9, h = 9, c = 4;
+    float *z = calloc((size_t)w * h, sizeof *z), *lo = malloc(sizeof(float) * w * h * 3);
+    z[c * w + c] = -3.0f;
+    for (int p = 0; p < w * h * 3; ++p)
+        lo[p] = p / 3 == c * w + c ? 0.0f : 1.0f;
+    const hfs_field f = {w, h, z, 1.0, 1.0};
+    hfs_lighting l = bounce_uniform_sky();
+    l.albedo = 0.5;
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    const size_t p = 3 * ((size_t)c * w + c);
+    const double before = lo[p];
+    hfs_error err = {""};
+    REQUIRE(hfs_cpu_bounces(&f, &l, &q, 1, lo, NULL, NULL, &err) == HFS_OK, "%s", err.msg);
+    const double got = (lo[p] - before) / l.albedo;
+    printf("pit: the bottom gathers %.2e of rho Lw (bound %.0e)\n", got, PIT_MAX);
+    CHECK(got >= 0.0 && got <= PIT_MAX);
+    free(z), free(lo);
 }
 
 /* Glossy: the sky's lobe is order 4 (hfs_gloss_env, N.R for the cosine),
@@ -206,6 +247,7 @@ int main(void)
     test_bounce_dirs();
     test_flat();
     test_wall();
+    test_pit();
     test_furnace(0);
     test_furnace(1);
     test_truth(0);

@@ -23,9 +23,11 @@
  *               subsample (DESIGN.md "Split horizons": 8/3/2 at 1, 16/2/8
  *               at 2, 16/2/16 at 4), overrides, the near part's refining (2
  *               at most on a sub-sampled grid) and the far part's (refine at
- *               every subsample), on only on the slice path without bounces;
+ *               every subsample), on only on the slice path (bounces or
+ *               not: their bands are clipped per sub-horizon, issue 36);
  *     far       hfs_split_far_slope (an occluder moved in proportion within
- *               a grid step) and hfs_split_above_plane's tie.
+ *               a grid step), hfs_split_above_plane's tie, and hfs_split_band
+ *               (bounce bands clipped per sub-horizon tile the occluded part);
  *   map_slices  (runtime/core/env_map_slices.h) a map lit in one sector of
  *               azimuths: each slice's occluded part under a flat receiver
  *               fully blocked is -dphi/2 times the map's mean over exactly
@@ -36,6 +38,7 @@
  */
 #include "env_map_slices.h"
 #include "pyramid_layout.h"
+#include "slice_light.h"
 #include "split_horizon.h"
 #include "visibility.h"
 
@@ -161,19 +164,18 @@ static void check_make(void)
     static const int refines[] = {0, 1, 2, 3, 4, 16};
     for (int si = 0; si < 3; ++si)
         for (int ri = 0; ri < 6; ++ri)
-            for (int v = 0; v < 8; ++v) {
+            for (int v = 0; v < 4; ++v) { /* bounces or not (issue 36) */
                 hfs_quality q;
                 hfs_quality_defaults(&q);
                 q.subsample = subs[si];
                 q.refine = refines[ri];
                 q.split = !(v & 1);
                 q.visibility = v & 2 ? HFS_VIS_LEGENDRE : HFS_VIS_SLICE;
-                const int bounces = (v & 4) != 0;
                 hfs_split s;
-                hfs_split_make(&q, bounces, &s);
+                hfs_split_make(&q, &s);
                 const int near = subs[si] == 1 || q.refine < 2 ? q.refine : 2;
-                CHECK(s.on == (v == 0), "sub %d split %d vis %d bounces %d: on %d", subs[si],
-                      q.split, (int)q.visibility, bounces, s.on);
+                CHECK(s.on == (v == 0), "sub %d split %d vis %d: on %d", subs[si], q.split,
+                      (int)q.visibility, s.on);
                 CHECK(s.from == from[si] && s.k == kk[si] && s.step == step[si],
                       "sub %d: far-from %g, %d sub-directions, step %d; want %d, %d, %d",
                       subs[si], s.from, s.k, s.step, from[si], kk[si], step[si]);
@@ -185,7 +187,7 @@ static void check_make(void)
     hfs_quality_defaults(&q);
     q.far_from = 5, q.far_dirs = HFS_SPLIT_MAX_K, q.far_step = 3, q.subsample = 4;
     hfs_split s;
-    hfs_split_make(&q, 0, &s);
+    hfs_split_make(&q, &s);
     CHECK(s.from == 5.0 && s.k == HFS_SPLIT_MAX_K && s.step == 3,
           "overrides: far-from %g, %d sub-directions, step %d", s.from, s.k, s.step);
 }
@@ -213,6 +215,29 @@ static void check_far(void)
               "tie %d", plane, tie, hfs_split_above_plane(plane + 1.05 * tie, a_hs[i], nn),
               hfs_split_above_plane(plane + 0.95 * tie, a_hs[i], nn));
     }
+    /* hfs_split_band (issue 36): a bounce slice's bands clipped to each of
+     * 3 sub-horizons tile what the direct light takes as occluded, the
+     * mean of each sub-horizon's part above the tangent plane, with the
+     * last band's fill up to each; no cap (k 0): the band as it is. */
+    const double a = 0.3, nz = 0.95, top0 = atan2(-a, nz), caps[3] = {0.2, 0.9, 0.5};
+    double s_cap[3], want = 0.0, got = 0.0;
+    for (int h = 0; h < 3; ++h) {
+        s_cap[h] = hfs_slice_cosine(a, nz, caps[h]);
+        want += (hfs_slice_cosine(a, nz, top0) - s_cap[h]) / 3.0;
+    }
+    const double edge[4] = {top0, 0.1, 0.45, 0.7}; /* the walk's tops, below the highest cap */
+    for (int e = 0; e < 3; ++e)
+        got += hfs_split_band(s_cap, 3, hfs_slice_cosine(a, nz, edge[e]),
+                              hfs_slice_cosine(a, nz, edge[e + 1]));
+    got += hfs_split_band(s_cap, 3, hfs_slice_cosine(a, nz, edge[3]), -HUGE_VAL);
+    CHECK(fabs(got - want) <= 1e-12 && want > 0.0,
+          "clipped bands and the fill %.15f, the sub-horizons' occluded part %.15f", got, want);
+    const double s1 = hfs_slice_cosine(a, nz, 0.1), s2 = hfs_slice_cosine(a, nz, 0.45);
+    CHECK(hfs_split_band(s_cap, 0, s1, s2) == s1 - s2 &&
+              fabs(hfs_split_band(s_cap, 3, s1, s2) -
+                   (s1 - s_cap[0] + 2.0 * (s1 - s2)) / 3.0) <= 1e-15,
+          "one band: uncapped %g, clipped %g", hfs_split_band(s_cap, 0, s1, s2),
+          hfs_split_band(s_cap, 3, s1, s2));
 }
 
 /* ---- an environment map's slices ------------------------------------------------ */

@@ -118,15 +118,19 @@ static double compare_moved(const turn *t, const hfs_image *a, const hfs_image *
 }
 
 /* GLES, per subsample (1, 2): the product (fp16, split horizons), one
- * bounce (which turns split horizons off), and fp32.  Measured on Mesa
- * 22.3.6 llvmpipe, the largest over the seven moves; bounds 1.2x that.
+ * bounce, and fp32.  Measured on Mesa 22.3.6 llvmpipe, the largest over
+ * the seven moves; bounds 1.2x that.
  *   - fp32 without the split (subsample 1) and with it (subsample 2):
  *     1.9e-6 and 1.4e-6, float rounding (directions as cos/sin of turned
  *     angles): the algorithm keeps the relation.
- *   - fp16: 1.4e-5 (1 bounce, subsample 1), 5.3e-6 (subsample 2): fp16
- *     rounding of the same values; at subsample 2 with the split, 4.6e-4
- *     at one texel, where fp16's rounding of a stored occluder flips a
- *     decision (fp32 there: 1.4e-6).
+ *   - fp16 at subsample 2 with the split, 4.6e-4 at one texel, where
+ *     fp16's rounding of a stored occluder flips a decision (fp32 there:
+ *     1.4e-6).
+ *   - one bounce: before issue 36 bounce frames turned split horizons
+ *     off, 1.4e-5 (subsample 1) and 5.3e-6 (subsample 2), fp16 rounding
+ *     of the same values; since then they keep them, and the direct part
+ *     brings the split's own moves: 5.9e-3 (subsample 1, the atlas fetch
+ *     below) and 3.6e-4 (subsample 2, the stored occluder above).
  *   - the product at subsample 1: 6.8e-3 at a few isolated texels, fp32
  *     the same (so not fp16).  The far grid (step 2) is read with one
  *     LINEAR fetch of its atlas (env_slices.frag); a texel on a receiver
@@ -144,10 +148,10 @@ static double compare_moved(const turn *t, const hfs_image *a, const hfs_image *
  * Points: the shadow height maps in float, 1.2e-6 (10 ulps of 1). */
 static const mm_setting gles_settings[2][3] = {
     {{HFS_PRECISION_FP16, 1, 0, 1, 8.2e-3, 1.5e-6},
-     {HFS_PRECISION_FP16, 1, 1, 1, 1.7e-5, 1.5e-6},
+     {HFS_PRECISION_FP16, 1, 1, 1, 7.1e-3, 1.5e-6},
      {HFS_PRECISION_FP32, 0, 0, 1, 2.3e-6, 1.5e-6}},
     {{HFS_PRECISION_FP16, 1, 0, 1, 5.5e-4, 1.5e-6},
-     {HFS_PRECISION_FP16, 1, 1, 1, 6.3e-6, 1.5e-6},
+     {HFS_PRECISION_FP16, 1, 1, 1, 4.4e-4, 1.5e-6},
      {HFS_PRECISION_FP32, 1, 0, 1, 1.7e-6, 1.5e-6}},
 };
 

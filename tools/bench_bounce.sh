@@ -4,8 +4,8 @@
 # under the demo's sky + sun, the CPU reference against the truth with the
 # same bounces: the whole image's mean and p99 error (fractions of the
 # unshadowed maximum), the indirect part alone (image(B) - image(0))
-# against the truth's (mean error over its largest value, and the mean
-# signed error over the same: its bias), and the wall
+# against the truth's (mean error over its largest value, its 99th
+# percentile, and the mean signed error over the same: its bias), and the wall
 # time of each (this machine's cores).  The truth is that of the sky's SH
 # projection, the renderers' input (truth-env=sh): the bounces' error, not
 # the projection's.  Prints a Markdown table.
@@ -27,8 +27,8 @@ AL=${6:-uniform}
 C=$B/bench-cache
 mkdir -p "$C"
 bench_scenes "$B/tools/hfgen" "$C" "$N"
-echo "| scene (${N}x${N}) | backend | bounces | mean abs | p99 abs | indirect alone | its bias | backend s | truth s |"
-echo "|---|---|---|---|---|---|---|---|---|"
+echo "| scene (${N}x${N}) | backend | bounces | mean abs | p99 abs | indirect alone | its p99 | its bias | backend s | truth s |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
 for sc in "${scenes[@]}"; do
     bench_scene_keys "$sc"
     if [ "$AL" = map ]; then

@@ -25,6 +25,14 @@ int hfs_field_bilinear(const hfs_field *f, double gx, double gy, double *z)
 
 double hfs_field_first_cell_slope(const hfs_field *f, int i, int j, double c, double s)
 {
+    double near, far;
+    return hfs_field_first_cell(f, i, j, c, s, &near, &far);
+}
+
+double hfs_field_first_cell(const hfs_field *f, int i, int j, double c, double s, double *near_out,
+                            double *far_out)
+{
+    *near_out = *far_out = -DBL_MAX;
     const double ac = fabs(c) < 1e-12 ? 0.0 : fabs(c), as = fabs(s) < 1e-12 ? 0.0 : fabs(s);
     const int sx = c > 0.0 ? 1 : -1, sy = s > 0.0 ? 1 : -1;
     const int x = ac > 0.0 ? i + sx : i, y = as > 0.0 ? j + sy : j;
@@ -45,6 +53,8 @@ double hfs_field_first_cell_slope(const hfs_field *f, int i, int j, double c, do
         zf = hfs_field_z(f, i, y) * (1.0 - fx) + hfs_field_z(f, x, y) * fx;
         run = 1.0 / as;
     }
+    *near_out = near / f->dx;
+    *far_out = (zf - z0) / run / f->dx;
     return fmax(near, (zf - z0) / run) / f->dx;
 }
 

@@ -34,6 +34,13 @@ void hfs_field_normal(const hfs_field *f, int i, int j, double n[3]);
  * sees its steepest occluder arbitrarily close).  -DBL_MAX when the cell
  * lies off the grid.  c, s with |c| or |s| < 1e-12 count as 0. */
 double hfs_field_first_cell_slope(const hfs_field *f, int i, int j, double c, double s);
+/* The same, with its two ends: the near end's slope (t -> 0) into *near,
+ * the far edge's (z at the far edge over its distance) into *far; the
+ * surface along the ray is z(t) - z(0) = t (near + (far - near) t / t_far)
+ * (the bounce walk's own cell, issue 36: a ray below the near slope hits
+ * the cell at once).  Both -DBL_MAX off the grid. */
+double hfs_field_first_cell(const hfs_field *f, int i, int j, double c, double s, double *near,
+                            double *far);
 
 /* Bilinear value of a W x H grid of RGB triples (rgb, row-major, row j = 0
  * first) at grid coordinates (gx, gy), clamped into the grid: the exit

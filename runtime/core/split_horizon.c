@@ -14,10 +14,10 @@
  * single horizon did. */
 static const struct { int from, k, step; } by_subsample[3] = {{8, 3, 2}, {16, 2, 8}, {16, 2, 16}};
 
-void hfs_split_make(const hfs_quality *q, int bounces, hfs_split *s)
+void hfs_split_make(const hfs_quality *q, hfs_split *s)
 {
     const int i = q->subsample <= 1 ? 0 : (q->subsample == 2 ? 1 : 2);
-    s->on = q->split != 0 && q->visibility == HFS_VIS_SLICE && bounces == 0;
+    s->on = q->split != 0 && q->visibility == HFS_VIS_SLICE;
     s->from = q->far_from > 0 ? q->far_from : by_subsample[i].from;
     s->k = q->far_dirs > 0 ? q->far_dirs : by_subsample[i].k;
     s->k = s->k > HFS_SPLIT_MAX_K ? HFS_SPLIT_MAX_K : s->k;
@@ -63,4 +63,14 @@ int hfs_split_above_plane(double t, double a_h, const double n[3])
 {
     const double plane = -a_h / n[2];
     return t > plane + HFS_SPLIT_PLANE_TIE * (1.0 + fabs(plane));
+}
+
+double hfs_split_band(const double *s_cap, int k, double s_top, double s_e)
+{
+    if (k <= 0)
+        return s_top - s_e;
+    double sum = 0.0;
+    for (int h = 0; h < k; ++h)
+        sum += fmax(s_top, s_cap[h]) - fmax(s_e, s_cap[h]);
+    return sum / k;
 }

@@ -53,14 +53,27 @@ typedef struct hfs_split {
                         grid and the GLES far pass both read it here)     */
 } hfs_split;
 
-/* The split of a frame with quality q and `bounces` indirect bounces: on
- * where q->split is, q->visibility is the slice path and there are no
- * bounces (their bands stop at one direct horizon per direction, which
- * split horizons do not have: a frame with bounces keeps one); far_* at 0
- * by q->subsample, and on a sub-sampled grid at most 2 samples refining
- * the near part (at 256^2 on the 2x2 grid that pays for the far part,
- * BENCHMARKS.md "Split horizons"). */
-void hfs_split_make(const hfs_quality *q, int bounces, hfs_split *s);
+/* The split of a frame with quality q: on where q->split is and
+ * q->visibility is the slice path, with or without bounces (their bands
+ * are clipped per sub-horizon, hfs_split_band, so that turning bounces on
+ * leaves the direct light as it is); far_* at 0 by q->subsample, and on
+ * a sub-sampled grid at most 2 samples refining the near part (at 256^2
+ * on the 2x2 grid that pays for the far part, BENCHMARKS.md "Split
+ * horizons"). */
+void hfs_split_make(const hfs_quality *q, hfs_split *s);
+
+/* A bounce band (top, e] of a slice whose direct light has K
+ * sub-horizons (issue 36): the band clipped to each of them, and the mean
+ * of the parts, so that what a receiver gathers and the sky it sees never
+ * overlap in any sub-direction.  Given as the clamped cosine's integrals
+ * from each elevation up (slice_light.h hfs_slice_cosine, S): s_top =
+ * S(top) >= s_e = S(e), s_cap[h] = S(sub-horizon h), each sub-horizon at
+ * or above the slice's tangent plane (where S is decreasing, so that
+ * S(min(x, cap)) = max(S(x), S(cap))):
+ *   (1/K) sum_h max(s_top, s_cap[h]) - max(s_e, s_cap[h]).
+ * s_e = -HUGE_VAL: the rest up to each sub-horizon (the last band's fill).
+ * k = 0: no cap, s_top - s_e. */
+double hfs_split_band(const double *s_cap, int k, double s_top, double s_e);
 
 /* The far sub-directions of the environment's full swath env, as a full
  * swath of k n: sub-direction h (0 <= h < k) of direction j is its sample

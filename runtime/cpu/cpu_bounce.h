@@ -5,9 +5,11 @@
  * Bounce b at receiver x: along hfs_bounce_dirs(q) azimuth slices (every
  * (nphi_env / that)-th of the environment's directions, lights.h), the
  * horizon is walked outward from the tangent plane: the receiver's own
- * cell (hfs_field_first_cell_slope), then each scale of the multi-scale
- * horizons (cpu_horizon.h) with q->bounce_refine samples after it towards
- * the next (read as the scale reads), nearest first.  A sample that rises
+ * cell (hfs_field_first_cell: lit where the ray meets the bilinear surface,
+ * below its near slope by the receiver itself, issue 36), then each scale
+ * of the multi-scale horizons (cpu_horizon.h) with q->bounce_refine
+ * samples after it towards the next (read as the scale reads), nearest
+ * first.  A sample that rises
  * above everything nearer casts the band of elevations between the old top
  * and its own: those directions hit the terrain between the two samples,
  * and the band takes the sample's radiance Lo_{b-1} (NS09's casting set,
@@ -23,7 +25,10 @@
  * point sample: the approximation for fields above 2^offset + 1).
  * Under an environment on the exact-slice path the bands stop at the
  * slice's horizon as the direct light computes it (refined scales and own
- * cell; lights.h hfs_bounce_capped): what a receiver gathers and the sky it sees
+ * cell; lights.h hfs_bounce_capped; with split horizons, each band clipped
+ * to each of the slice's sub-horizons and the parts averaged,
+ * split_horizon.h hfs_split_band, the far grid computed again as the
+ * direct light's): what a receiver gathers and the sky it sees
  * never overlap, so with albedo <= 1 direct + bounces never exceed the
  * unshadowed maximum (without the cap, 3% over in a white furnace).
  * Without an environment there is no sky to overlap, and on the seeds'

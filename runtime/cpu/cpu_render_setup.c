@@ -189,7 +189,7 @@ int hfs_cpu_ctx_make_slices(render_ctx *c, const hfs_lighting *l, const hfs_qual
         return HFS_OK;
     const hfs_swath *env = &c->jobs[0].swath;
     int rc = hfs_slice_table_init(&c->slices, env, err);
-    hfs_split_make(q, l->bounces, &c->split);
+    hfs_split_make(q, &c->split);
     if (!rc && c->split.on)
         rc = hfs_cpu_far_create(c->f, pyr, q, &c->split, env, c->tie, threads, &c->far, err);
     if (!rc && l->env_shade_map && l->env_open)

@@ -25,7 +25,7 @@ static int n_sub(const hfs_gles_frame *fr)
 int hfs_gles_env_far_layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     const hfs_gles_layout *L = &fr->L;
-    hfs_split_make(fr->q, fr->bounces, &fr->split);
+    hfs_split_make(fr->q, &fr->split);
     fr->env_coarsest = 0;
     fr->far_near = fr->far_w = fr->far_h = fr->far_cols = fr->far_aw = fr->far_ah = 0;
     fr->far_swath_tex = 0;

@@ -11,7 +11,9 @@
  * local lights' ratios, scaled to the texel's own occluded part (slice
  * path) and multiplied by its own albedo.  A glossy surface's receivers
  * also weigh each band by the lobe about their R (G_b beside E_b, added
- * after the albedo).
+ * after the albedo).  With split horizons the bands are clipped to each
+ * sub-horizon (the far grid's occluders, hfs_gles_bind_env_far), so that
+ * the direct light stays the frame's without bounces (issue 36).
  *
  * A bounce depends on the radiance of every light, so the pass reruns
  * whenever the shading does, and when its own settings change (plan.h
@@ -139,14 +141,16 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
                                 .n_dir = fr->q->nphi_env, .n_bdir = hfs_bounce_dirs(fr->q),
                                 .fp32 = g->caps.fp32, .slice = capped,
                                 .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0,
-                                .pairs = capped && fr->hor_pairs};
+                                .pairs = capped && fr->hor_pairs,
+                                .far_k = capped && fr->split.on ? fr->split.k : 0};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_GATHER, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
         (rc = hfs_gles_program_texture(gl, prog, "u_rad", GL_TEXTURE_2D, g->bounce.rad, err)))
         return rc;
     if (capped &&
-        (rc = hfs_gles_program_texture(gl, prog, "u_hor", GL_TEXTURE_2D_ARRAY, g->r.hor, err)))
+        ((rc = hfs_gles_program_texture(gl, prog, "u_hor", GL_TEXTURE_2D_ARRAY, g->r.hor, err)) ||
+         (rc = hfs_gles_bind_env_far(g, fr, prog, err)))) /* split horizons' far part */
         return rc;
     hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
     hfs_gles_set_i1(gl, prog, "u_refine", fr->q->bounce_refine);
