@@ -474,9 +474,9 @@ int hfs_ray_level(ivec2 lo, ivec2 hi)
 /* max(best, the slope of every crossing at distance >= t_first) of
  * receiver g (height h0 at g) in direction cs: bounds from the atlas
  * `bounds` (level l at at[l]), heights (hi, lo) from `heights` (the input,
- * texelFetch), slopes (v - v0) zf / t (zf = hscale zscale / dx), a
- * crossing taking over only past the horizons' tie (hfs_scale_takes_over,
- * as ray_bound.c); it
+ * texelFetch), slopes (v - v0) zf / t (zf = hscale zscale / dx); *dist
+ * moves to a crossing only past the horizons' tie (hfs_scale_takes_over,
+ * as ray_bound.c), the value is the max; it
  * returns as soon as best reaches `stop` (1e30: never; a key light's
  * window fully blocked needs no more).  *dist: the distance of the
  * crossing that raised best.  Counts its reads. */
@@ -498,6 +498,7 @@ float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
     int m = max(1, int(ceil(t_first * abs(ma) - 1e-4)));
     float v0 = hfs_h(h0);
     int l = 0;
+    float lead = best; /* the slope of the crossing dist names (ray_bound.c) */
     while (m <= last && best < stop) {
         float t = float(m) * inv;
         if (l == 0) { /* one crossing: the surface there, exactly */
@@ -511,10 +512,11 @@ float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
             vec2 b = texelFetch(heights, ib, 0).xy;
             float sl = (hfs_hdiff(a, h0) + f * hfs_hdiff(b, a)) * zf / t;
             fetches += 2;
-            if (hfs_scale_takes_over(sl, best, tie)) {
-                best = sl;
+            if (hfs_scale_takes_over(sl, lead, tie)) {
+                lead = sl;
                 dist = t;
             }
+            best = max(best, sl);
             ++m;
             l = 1;
             continue;
@@ -531,7 +533,7 @@ float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
         ++fetches;
         /* the largest slope the run can hold: a rise over its nearest
          * crossing, a fall over its farthest */
-        if (hfs_scale_takes_over(rise * zf / (rise >= 0.0 ? t : float(m1) * inv), best, tie)) {
+        if (rise * zf / (rise >= 0.0 ? t : float(m1) * inv) > best) {
             --l;
             continue;
         }

@@ -27,3 +27,7 @@ target_include_directories(bench_shm_passes PRIVATE ${PROJECT_SOURCE_DIR}/tools)
 # The gap search's max pyramid and search against brute force (issue 36).
 hfs_add_test(test_ray_bound SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_ray_bound.c
              LIBS hfs_core m LABEL unit TIMEOUT 60)
+# The gap search's reads on a field (not a test): build/tests/bench_ray_bound
+# FIELD.pfm [ZS] [PHI] [ELEV] (BENCHMARKS.md "Long shadows of narrow features").
+add_executable(bench_ray_bound ${CMAKE_CURRENT_SOURCE_DIR}/bench_ray_bound.c)
+target_link_libraries(bench_ray_bound PRIVATE hfs_core hfshade_io m)

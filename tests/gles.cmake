@@ -93,6 +93,8 @@ endforeach()
 # + 20% (fraction: the count + 20%, rounded up; 10x would allow
 # whole-frame breakage):
 #   measured grid flips / mean / max  cones   sub 2  6 / 1.15e-3 / 4.48e-2
+#                                             (issue 36: 1 / 1.09e-3 /
+#                                             5.47e-2)
 #                                             sub 4  0 / 2.72e-3 / 3.71e-2
 #                                             (issue 36's gap search: 0 /
 #                                             2.73e-3 / 6.96e-2, a shadow
@@ -110,16 +112,21 @@ endforeach()
 # flips a texel, so only the mean says much):
 #   measured grid flips / mean / max  DEM     sub 2 51 / 2.94e-3 / 0.595
 #                                             sub 4 11 / 5.87e-3 / 0.690
+#                                             (issue 36: 16 / 5.13e-3 /
+#                                             0.690: subsample 1's key
+#                                             light searches every near
+#                                             crossing, the grid's texels
+#                                             their near scales only)
 #                                     fractal sub 2 11 / 5.27e-3 / 0.926
 # (before the near search: mean 3.75e-3, 1.08e-2, 9.40e-3.)
-hfs_gles_test(test_gles_sub2_cones sub cones 2 f7.35e-3 1.38e-3 5.38e-2)
+hfs_gles_test(test_gles_sub2_cones sub cones 2 f7.35e-3 1.38e-3 6.6e-2)
 hfs_gles_test(test_gles_sub4_cones sub cones 4 f0 3.27e-3 8.4e-2)
 hfs_gles_test(test_gles_sub2_fractal sub fractal 2 f9.18e-3 3.37e-2 0.585)
 hfs_gles_test(test_gles_sub4_fractal sub fractal 4 f2.08e-2 6.39e-2 0.662)
 hfs_gles_test(test_gles_sub2_dem sub dem 2 f1.17e-2 5.35e-3 0.128)
 hfs_gles_test(test_gles_sub4_dem sub dem 4 f8.0e-3 1.44e-2 0.171)
 hfs_gles_test(test_gles_sub2_dem_key sub dem 2 f2.58e-2 3.53e-3 0.714 key)
-hfs_gles_test(test_gles_sub4_dem_key sub dem 4 f2.24e-2 7.05e-3 0.828 key)
+hfs_gles_test(test_gles_sub4_dem_key sub dem 4 f3.1e-2 7.05e-3 0.828 key)
 hfs_gles_test(test_gles_sub2_fractal_key sub fractal 2 f1.29e-2 6.33e-3 1.11 key)
 # The same on the exact slice path (sky alone).  Grid texels: at subsample
 # 2 and 4 the finest scale is searched per texel (env_slices.frag), so the

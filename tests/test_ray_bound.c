@@ -98,8 +98,8 @@ static void check_boxes(const float *z, int w, int h, const hfs_ray_bound_layout
 
 /* Brute force: the slope of every crossing from (i, j) in (c, s) at
  * distance >= t_first, as ray_bound.h defines them, nearest first; returns
- * the max of best and those (a crossing taking over past the relative
- * tie), *dist its distance. */
+ * the max of best and those, *dist the distance of the crossing that leads
+ * (taking the lead past the relative tie). */
 static double brute(const double *zd, int w, int h, int i, int j, double c, double s,
                     double t_first, double zs, double best, double *dist)
 {
@@ -107,6 +107,7 @@ static double brute(const double *zd, int w, int h, int i, int j, double c, doub
     const double ma = xm ? c : s, mi = xm ? s : c, inv = 1.0 / fabs(ma), r = mi / fabs(ma);
     const int step = ma >= 0 ? 1 : -1, p = xm ? i : j, q = xm ? j : i, np = xm ? w : h,
               nq = xm ? h : w;
+    double lead = best;
     for (int m = 1;; ++m) {
         const int x = p + step * m;
         double y = q + m * r;
@@ -122,10 +123,11 @@ static double brute(const double *zd, int w, int h, int i, int j, double c, doub
         const double a = xm ? zd[y0 * w + x] : zd[x * w + y0];
         const double b = nq >= 2 ? (xm ? zd[(y0 + 1) * w + x] : zd[x * w + y0 + 1]) : a;
         const double sl = (a + f * (b - a) - zd[j * w + i]) * zs / (m * inv);
-        if (sl > best + 1e-5 * fabs(best)) { /* the horizons' tie (HFS_HORIZON_TIE) */
-            best = sl;
+        if (sl > lead + 1e-5 * fabs(lead)) { /* the horizons' tie (HFS_HORIZON_TIE) */
+            lead = sl;
             *dist = m * inv;
         }
+        best = sl > best ? sl : best;
     }
     return best;
 }

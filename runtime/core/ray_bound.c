@@ -144,6 +144,8 @@ double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, 
     m = m < 1 ? 1 : m;
     long n_reads = 0;
     int l = 0;
+    /* the slope of the crossing *dist names: it moves only past the tie */
+    double lead = best;
     while (m <= k.last) {
         const double t = m * k.inv;
         if (l == 0) { /* one crossing: the surface there, exactly */
@@ -159,10 +161,11 @@ double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, 
             const double v = a[0] + f * (b - a[0]);
             const double sl = (v - z0) * zs / t;
             ++n_reads;
-            if (sl > best + HFS_HORIZON_TIE * fabs(best) + tie) {
-                best = sl;
+            if (sl > lead + HFS_HORIZON_TIE * fabs(lead) + tie) {
+                lead = sl;
                 *dist = t;
             }
+            best = sl > best ? sl : best;
             ++m;
             l = 1;
             continue;
@@ -184,7 +187,7 @@ double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, 
         ++n_reads;
         /* the largest slope the run can hold: a rise over its nearest
          * crossing, a fall over its farthest */
-        if (rise * zs / (rise >= 0.0 ? t : m1 * k.inv) > best + HFS_HORIZON_TIE * fabs(best) + tie) {
+        if (rise * zs / (rise >= 0.0 ? t : m1 * k.inv) > best) {
             --l;
             continue;
         }

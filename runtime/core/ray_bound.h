@@ -84,12 +84,14 @@ int hfs_ray_bound_level(int x0, int x1, int y0, int y1);
  * (snapped as the horizon plans snap them), crossings at distances in
  * [t_first, t_last] (HUGE_VAL: to the grid's edge), slopes (z - z_0) * zs / t with zs = zscale / dx,
  * bounds from atlas (built with base 0, scale 1).  Returns the largest of
- * `best` and every crossing's slope, where a crossing takes over only when
- * it beats the best so far by more than the horizons' tie
- * (HFS_HORIZON_TIE |best| + tie, pyramid_layout.h: so that float and double
- * searches pick the same crossing on a plateau's top, where slopes tie);
- * *dist becomes the distance of the crossing that set it (unchanged when
- * none beat `best`).  *reads, when
+ * `best` and every crossing's slope, exactly; *dist becomes the distance
+ * of the crossing that leads (unchanged when none beat `best`), where a
+ * crossing takes the lead only when it beats the leader by more than the
+ * horizons' tie (HFS_HORIZON_TIE |lead| + tie, pyramid_layout.h), as a
+ * scale does: so that float and double searches name the same crossing on
+ * a plateau's top, where slopes tie, while the value stays the max (a tie
+ * from the field's height range must not move it: a border far below
+ * would).  *reads, when
  * not NULL, grows by the reads made (bounds and heights). */
 double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
                             size_t stride, int i, int j, double c, double s, double t_first,
