@@ -113,7 +113,10 @@ static const char *const presets[] = {"kiosk", "panel", "headless"};
 
 /* Measured mean and p99 per mode, scene and preset at 2156b87
  * (RelWithDebInfo, llvmpipe, Mesa 22.3.6) by `build/tests/test_drift MODE
- * SCENE`, which prints them; the bound is 1.2x each. */
+ * SCENE`, which prints them, and re-measured with issue 36's gap search
+ * (the far grid's occluders between the scales: the narrow blocks against
+ * the truth 4.630e-2 -> 4.080e-2 mean at the defaults, 1.437e-1 ->
+ * 1.340e-1 p99; the others within 3%); the bound is 1.2x each. */
 typedef struct measured {
     const char *mode, *scene;
     /* per preset (kiosk, panel, headless): {mean, p99} over every texel,
@@ -122,15 +125,15 @@ typedef struct measured {
 } measured;
 
 static const measured table[] = {
-    {"truth", "fractal", {{3.820e-3, 2.326e-2}, {2.867e-3, 1.807e-2}, {3.891e-3, 2.384e-2}}},
-    {"truth", "rough", {{1.175e-2, 4.862e-2}, {1.333e-2, 4.681e-2}, {1.182e-2, 4.862e-2}}},
-    {"truth", "blocks", {{4.630e-2, 1.437e-1}, {1.886e-2, 6.513e-2}, {4.745e-2, 1.527e-1}}},
-    {"gles", "fractal", {{2.109e-3, 1.448e-2, 1.956e-5, 1.386e-4}, {2.048e-5, 3.084e-4},
-                         {6.703e-3, 5.524e-2, 1.887e-5, 9.089e-5}}},
-    {"gles", "rough", {{1.146e-2, 7.853e-2, 4.850e-5, 5.163e-4}, {3.642e-5, 1.916e-4},
-                       {2.413e-2, 1.610e-1, 3.166e-5, 1.529e-4}}},
-    {"gles", "blocks", {{5.091e-2, 2.178e-1, 6.721e-5, 2.223e-4}, {1.017e-4, 2.066e-3},
-                        {7.551e-2, 2.582e-1, 1.030e-4, 2.500e-3}}},
+    {"truth", "fractal", {{3.862e-3, 2.394e-2}, {3.027e-3, 1.807e-2}, {3.832e-3, 2.423e-2}}},
+    {"truth", "rough", {{1.164e-2, 4.862e-2}, {1.348e-2, 4.681e-2}, {1.171e-2, 4.862e-2}}},
+    {"truth", "blocks", {{4.080e-2, 1.340e-1}, {1.829e-2, 6.301e-2}, {4.306e-2, 1.391e-1}}},
+    {"gles", "fractal", {{2.091e-3, 1.410e-2, 1.940e-5, 1.434e-4}, {2.093e-5, 3.464e-4},
+                         {6.677e-3, 5.561e-2, 1.917e-5, 9.176e-5}}},
+    {"gles", "rough", {{1.125e-2, 7.853e-2, 4.963e-5, 5.163e-4}, {3.716e-5, 1.967e-4},
+                       {2.408e-2, 1.610e-1, 3.265e-5, 1.529e-4}}},
+    {"gles", "blocks", {{4.829e-2, 2.071e-1, 7.189e-5, 2.223e-4}, {1.125e-4, 2.316e-3},
+                        {7.245e-2, 2.527e-1, 1.038e-4, 2.525e-3}}},
 };
 
 /* ---- rendering --------------------------------------------------------------------- */
