@@ -1,7 +1,7 @@
 /*
  * pass_terrain.c — the terrain pass: the heights uploaded as fp16 hi+lo
  * pairs (layout.h) into the input texture and the last layer of the level
- * array; normals at full resolution (terrain_normals.frag, octahedral RGBA
+ * array, with the gap search's bounds (bounds_texture.h); normals at full resolution (terrain_normals.frag, octahedral RGBA
  * hi/lo); the pyramid decimated from level N-2 down to lmin
  * (terrain_decimate.frag, bilinear) and reconstructed to the full grid
  * (terrain_reconstruct.frag: a B-spline, x passes then y passes with
