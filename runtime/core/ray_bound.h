@@ -43,7 +43,7 @@
  * texel wide is seen at its crossing.
  *
  * Shared by the CPU reference (this file's search) and the GLES path
- * (gles_lib.frag hfs_gap_search, the same steps); pure functions.
+ * (gles_ray.frag hfs_gap_search, the same steps); pure functions.
  */
 #ifndef HFS_RAY_BOUND_H
 #define HFS_RAY_BOUND_H
