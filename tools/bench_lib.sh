@@ -50,3 +50,25 @@ bench_scene_keys() {
     read -r -a flags <<<"$extra"
     for ((i = 0; i < ${#flags[@]}; i += 2)); do keys+=("${flags[i]#--}=${flags[i + 1]}"); done
 }
+
+# bench_builds LABEL=DIR...: the builds a side-by-side script compares
+# (default now=build): sets BUILDS (the arguments), and from the first
+# build GEN, HFS0 (its hfgen and hfshade) and C (its bench-cache, made).
+bench_builds() {
+    [ $# -gt 0 ] || set -- now=build
+    BUILDS=("$@")
+    local b0=${BUILDS[0]#*=}
+    # shellcheck disable=SC2034 # the caller reads them
+    GEN=$b0/tools/hfgen HFS0=$b0/tools/hfshade
+    C=$b0/bench-cache
+    mkdir -p "$C"
+}
+
+# bench_frame_ms HFS ARGS...: the median frame time (ms) `render --time 3`
+# prints for the scene ARGS (the image goes to $C/frame-time.png).
+bench_frame_ms() {
+    local hfs=$1
+    shift
+    "$hfs" render "$@" --time 3 --quiet -o "$C/frame-time.png" 2>&1 |
+        awk '$1 == "frame" { print $2 }'
+}

@@ -13,21 +13,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=tools/bench_lib.sh
 . tools/bench_lib.sh
-[ $# -gt 0 ] || set -- now=build
-BUILDS=("$@")
-B0=${BUILDS[0]#*=}
-GEN=$B0/tools/hfgen
-HFS0=$B0/tools/hfshade
-C=$B0/bench-cache
-mkdir -p "$C"
+bench_builds "$@"
 "$GEN" fractal --size 64x64 --relief 0.25 -o "$C/sharp-fractal64.pfm"
 HF=$C/sharp-fractal64.pfm
-
-frame_ms() {
-    local hfs=$1
-    shift
-    "$hfs" render "$@" --time 3 --quiet -o "$C/sharp-time.png" 2>&1 | awk '$1 == "frame" { print $2 }'
-}
 
 echo "| sun elevation | env-lights | build | sub 2 mean | sub 2 p99 | sub 1 mean | sub 1 p99 | p99 sub 2 / sub 1 | frame ms sub 2 / sub 1 |"
 echo "|---|---|---|---|---|---|---|---|---|"
@@ -45,7 +33,7 @@ for el in 5 10 20 40; do
                 "$dir/tools/hfshade" render "${a[@]}" --pfm "$C/sharp.pfm" -o "$C/sharp.png" --quiet
                 read -r _ m _ _ _ p _ <<<"$("$HFS0" compare --height "$HF" --env-map "$sky" \
                     "$C/sharp.pfm" "$truth")"
-                mean[$sub]=$m p99[$sub]=$p ms[$sub]=$(frame_ms "$dir/tools/hfshade" "${a[@]}")
+                mean[$sub]=$m p99[$sub]=$p ms[$sub]=$(bench_frame_ms "$dir/tools/hfshade" "${a[@]}")
             done
             ratio=$(awk -v a="${p99[2]}" -v b="${p99[1]}" 'BEGIN { printf "%.2f", a / b }')
             echo "| $el | $lights | $label | ${mean[2]} | ${p99[2]} | ${mean[1]} | ${p99[1]} | $ratio | ${ms[2]} / ${ms[1]} |"

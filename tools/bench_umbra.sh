@@ -21,20 +21,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=tools/bench_lib.sh
 . tools/bench_lib.sh
-[ $# -gt 0 ] || set -- now=build
-BUILDS=("$@")
-B0=${BUILDS[0]#*=}
-GEN=$B0/tools/hfgen
-HFS0=$B0/tools/hfshade
-C=$B0/bench-cache
-mkdir -p "$C"
-
-# frame_ms HFS ARGS...: the median frame time (ms) --time 3 prints.
-frame_ms() {
-    local hfs=$1
-    shift
-    "$hfs" render "$@" --time 3 --quiet -o "$C/umbra-time.png" 2>&1 | awk '$1 == "frame" { print $2 }'
-}
+bench_builds "$@"
 
 # row NAME HEIGHT LIGHT...: one table row per build and backend.
 row() {
@@ -52,7 +39,7 @@ row() {
             local m ms
             m=$("$HFS0" compare --height "$hf" "$@" "$out" "$truth")
             # shellcheck disable=SC2086
-            ms=$(frame_ms "$dir/tools/hfshade" --height "$hf" "$@" $bflags)
+            ms=$(bench_frame_ms "$dir/tools/hfshade" --height "$hf" "$@" $bflags)
             local mean p99 lit
             read -r _ mean _ _ _ p99 _ _ _ _ _ _ _ lit <<<"$m"
             echo "| $name | $label | $bname | $lit | $mean | $p99 | ${ms:--} |"

@@ -2,7 +2,7 @@
  * hfshade — the command-line front end (SPEC.md "Command-line contract").
  *
  *   hfshade render  [SCENE.ini] [flags] -o OUT.png [--pfm OUT.pfm]
- *   hfshade compare [SCENE.ini] [flags] RESULT.pfm REFERENCE.pfm
+ *   hfshade compare [SCENE.ini] [flags] RESULT.pfm REFERENCE.pfm   (cli_compare.h)
  *   hfshade query   [SCENE.ini] [flags] --points FILE   (cli_query.h)
  *   hfshade keys                      (lists every scene key / flag)
  *   hfshade info [--context NAME]     (makes a GL context and describes it)
@@ -19,6 +19,7 @@
 #include "scene.h"
 #include "scene_load.h"
 #include "median.h"
+#include "cli_compare.h"
 #include "cli_query.h"
 #include "cli_usage.h"
 #include "cli_view.h"
@@ -482,57 +483,15 @@ out:
     return rc;
 }
 
-/* Long shadows (issue 36): of the texels the reference holds in umbra
- * (below 1% of their unshadowed value, where that is above 1% of the
- * norm), how many the result renders lit (at least half their unshadowed
- * value); over the first channel. */
-static void umbra_lit(const hfs_image *res, const hfs_image *ref, const hfs_image *unsh,
-                      double norm, long *lit, long *umbra)
-{
-    *lit = *umbra = 0;
-    const size_t n = (size_t)ref->width * (size_t)ref->height;
-    for (size_t t = 0; t < n; ++t) {
-        const double u = unsh->rgb[3 * t], r = ref->rgb[3 * t], v = res->rgb[3 * t];
-        if (!(u > 0.01 * norm) || !(r < 0.01 * u))
-            continue;
-        ++*umbra;
-        *lit += v >= 0.5 * u;
-    }
-}
-
 static int cmd_compare(const cli *c, hfs_error *err)
 {
     if (c->n_positional != 2)
         return hfs_fail(err, HFS_E_INVALID, "compare: give RESULT.pfm and REFERENCE.pfm");
     scene_inputs in;
-    hfs_image res = {0}, ref = {0}, unsh = {0};
     int rc = load_inputs(c, &in, err);
-    if (rc)
-        goto out;
-    if ((rc = hfs_pfm_read_image(c->positional[0], &res, err)) ||
-        (rc = hfs_pfm_read_image(c->positional[1], &ref, err)))
-        goto out;
-    if (res.width != in.field.width || res.height != in.field.height) {
-        rc = hfs_fail(err, HFS_E_INVALID, "%s: %dx%d does not match the scene's %dx%d",
-                      c->positional[0], res.width, res.height, in.field.width, in.field.height);
-        goto out;
-    }
-    if ((rc = hfs_image_alloc(&unsh, in.field.width, in.field.height, err)) ||
-        (rc = hfs_render_unshadowed(&in.field, &in.lighting, &in.quality, &unsh, err)))
-        goto out;
-    const double norm = hfs_image_max(&unsh);
-    hfs_metrics m;
-    if ((rc = hfs_compare_images(&res, &ref, norm, &m, err)))
-        goto out;
-    long lit, umbra;
-    umbra_lit(&res, &ref, &unsh, norm, &lit, &umbra);
-    printf("mean_abs %.3e rmse %.3e p99_abs %.3e max_abs %.3e nonfinite %ld norm %.6g "
-           "umbra_lit %ld/%ld\n",
-           m.mean_abs, m.rmse, m.p99_abs, m.max_abs, m.nonfinite, m.norm, lit, umbra);
-out:
-    hfs_image_free(&res);
-    hfs_image_free(&ref);
-    hfs_image_free(&unsh);
+    if (!rc)
+        rc = cli_compare_run(&in.field, &in.lighting, &in.quality, c->positional[0],
+                             c->positional[1], err);
     scene_inputs_free(&in);
     return rc;
 }
