@@ -158,7 +158,7 @@ static void check_search(int w, int h, int trials, double tx, double ty, int wav
         double d_b = -1.0, d_s = -1.0;
         const double want = brute(zd, w, h, i, j, c, s, t_first, zs, start, &d_b);
         const double got = hfs_ray_bound_search(&L, atlas, zd, (size_t)w, i, j, c, s, t_first,
-                                                HUGE_VAL, zs, 0.0, start, &d_s, &reads);
+                                                zs, 0.0, start, &d_s, &reads);
         CHECK(got == want && d_s == d_b, "%dx%d (%d,%d) at %g deg from %g: %.17g (d %g), brute "
               "force %.17g (d %g)", w, h, i, j, deg, t_first, got, d_s, want, d_b);
     }
@@ -181,13 +181,13 @@ static void check_post(void)
     hfs_ray_bound_build(&L, z, 0.0, 1.0, -HUGE_VAL, atlas, scr);
     double d = 0.0;
     long reads = 0;
-    const double sl = hfs_ray_bound_search(&L, atlas, zd, (size_t)w, 50, 4, 1.0, 0.0, 0.0, HUGE_VAL, 1.0, 0.0,
+    const double sl = hfs_ray_bound_search(&L, atlas, zd, (size_t)w, 50, 4, 1.0, 0.0, 0.0, 1.0, 0.0,
                                            0.0, &d, &reads);
     CHECK(sl == 10.0 / 200.0 && d == 200.0, "post: slope %g at %g", sl, d);
     CHECK(reads < 60, "post: %ld reads", reads);
     /* missed off its row: the post lies one row beside the ray */
     d = 0.0;
-    const double off = hfs_ray_bound_search(&L, atlas, zd, (size_t)w, 50, 3, 1.0, 0.0, 0.0, HUGE_VAL, 1.0, 0.0,
+    const double off = hfs_ray_bound_search(&L, atlas, zd, (size_t)w, 50, 3, 1.0, 0.0, 0.0, 1.0, 0.0,
                                             0.0, &d, NULL);
     CHECK(off == 0.0 && d == 0.0, "post beside the ray: slope %g", off);
     printf("post 200 texels away: %ld reads\n", reads);

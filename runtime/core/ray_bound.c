@@ -132,12 +132,9 @@ static ray_walk walk_make(int w, int h, int i, int j, double c, double s)
 
 double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
                             size_t stride, int i, int j, double c, double s, double t_first,
-                            double t_last, double zs, double tie, double best, double *dist,
-                            long *reads)
+                            double zs, double tie, double best, double *dist, long *reads)
 {
-    ray_walk k = walk_make(L->w, L->h, i, j, c, s);
-    if (t_last / k.inv + 1e-4 < k.last) /* as in float */
-        k.last = (int)floor(t_last / k.inv + 1e-4);
+    const ray_walk k = walk_make(L->w, L->h, i, j, c, s);
     const int p = k.x_major ? i : j, q = k.x_major ? j : i, nq = k.x_major ? L->h : L->w;
     const double z0 = z[(size_t)j * stride + (size_t)i];
     int m = (int)ceil(t_first / k.inv - 1e-4); /* as in float */

@@ -81,8 +81,8 @@ int hfs_ray_bound_level(int x0, int x1, int y0, int y1);
 
 /* One receiver's gap search, as described above, on the CPU: grid point
  * (i, j) of heights z (row stride `stride`, w x h), direction (c, s)
- * (snapped as the horizon plans snap them), crossings at distances in
- * [t_first, t_last] (HUGE_VAL: to the grid's edge), slopes (z - z_0) * zs / t with zs = zscale / dx,
+ * (snapped as the horizon plans snap them), crossings from the first at
+ * distance >= t_first to the grid's edge, slopes (z - z_0) * zs / t with zs = zscale / dx,
  * bounds from atlas (built with base 0, scale 1).  Returns the largest of
  * `best` and every crossing's slope, exactly; *dist becomes the distance
  * of the crossing that leads (unchanged when none beat `best`), where a
@@ -95,7 +95,6 @@ int hfs_ray_bound_level(int x0, int x1, int y0, int y1);
  * not NULL, grows by the reads made (bounds and heights). */
 double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
                             size_t stride, int i, int j, double c, double s, double t_first,
-                            double t_last, double zs, double tie, double best, double *dist,
-                            long *reads);
+                            double zs, double tie, double best, double *dist, long *reads);
 
 #endif /* HFS_RAY_BOUND_H */

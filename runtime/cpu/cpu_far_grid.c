@@ -48,7 +48,7 @@ static void far_row(void *ctx, int b, int worker)
             const int has = hfs_horizon_occluder(g->plan, e, x, y, omega, 1, g->first_far,
                                                  g->refine, g->tie, &slope, &dist);
             /* and every gap from far-from on (issue 36; env_horizons.frag) */
-            slope = hfs_horizon_gap(g->plan, e, x, y, g->split.from, HUGE_VAL, g->tie,
+            slope = hfs_horizon_gap(g->plan, e, x, y, g->split.from, g->tie,
                                     has ? slope : -1e30, &dist, NULL);
             if (dist > 0.0) {
                 double h = slope * dist;

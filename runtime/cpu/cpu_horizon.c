@@ -339,13 +339,13 @@ int hfs_horizon_occluder(const hfs_horizon_plan *hp, int dir, int i, int j,
 }
 
 double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double t_first,
-                       double t_last, double tie, double best, double *dist, long *reads)
+                       double tie, double best, double *dist, long *reads)
 {
     const hfs_ray_bound_layout *L;
     const double *atlas = hfs_cpu_pyramid_bounds(hp->p, &L);
     const double *z = hfs_cpu_pyramid_full(hp->p, hp->n_levels - 1);
     return hfs_ray_bound_search(L, atlas, z, hp->stride, i, j, hp->cs[2 * dir],
-                                hp->cs[2 * dir + 1], t_first, t_last, hp->zs, tie, best, dist,
+                                hp->cs[2 * dir + 1], t_first, hp->zs, tie, best, dist,
                                 reads);
 }
 

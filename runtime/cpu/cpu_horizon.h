@@ -121,13 +121,14 @@ double hfs_horizon_refined_within(const hfs_horizon_plan *hp, int dir, int i, in
 
 /* The gap search (ray_bound.h) of receiver (i, j) in direction dir over
  * the pyramid's input heights: the largest of `best` and the slope of
- * every crossing of the ray with the grid's major-axis lines at distances
- * in [t_first, t_last] (HUGE_VAL: to the edge; a crossing beats the best
- * by more than the tie, hfs_ray_bound_search), so that no occluder between the scales' samples is missed.
- * *dist becomes the distance of the crossing that set the result (left
- * when none beat `best`); *reads (if not NULL) grows by the reads made. */
+ * every crossing of the ray with the grid's major-axis lines from distance
+ * t_first to the grid's edge, so that no occluder
+ * between the scales' samples is missed.  *dist becomes the distance of
+ * the leading crossing (one takes the lead past the horizons' tie `tie`,
+ * hfs_ray_bound_search; left when none beats `best`); *reads (if not
+ * NULL) grows by the reads made. */
 double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double t_first,
-                       double t_last, double tie, double best, double *dist, long *reads);
+                       double tie, double best, double *dist, long *reads);
 
 /* The far occluder of split horizons (split_horizon.h) at receiver (i, j)
  * in direction dir, as env_horizons.frag's far pass finds it: going from
