@@ -128,8 +128,9 @@ uniform int u_fcols;                     /* tiles a row of the atlas */
  * and texel, and far-from. */
 #define HFS_RAY_LEVELS 16
 float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
-                     ivec2 size, ivec2 g, vec2 cs, float t_first, float zf, float tie, vec2 h0,
-                     float best, float stop, inout float dist, inout int fetches);
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
+                     float tie, vec2 h0, float best, float stop, inout float dist,
+                     inout int fetches);
 uniform highp sampler2D u_height;        /* the input heights (hi, lo) */
 uniform highp sampler2D u_bounds;
 uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
@@ -351,9 +352,9 @@ void main()
         float dist;
         vec2 cs = SW_DIR(j).xy;
         float best = horizon_tan(g, cs, hx, -1e30, HFS_NLEV - 1 - u_near, fetches, dist);
-        best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, u_zf,
-                              u_tie, hx[HFS_NLAYERS - 1], dist > 0.0 ? best : -1e30, 1e30, dist,
-                              fetches);
+        best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, 1e9,
+                              u_zf, u_tie, hx[HFS_NLAYERS - 1], dist > 0.0 ? best : -1e30, 1e30,
+                              dist, fetches);
         best = clamp(best, -1e18, 1e18);
         if (dist > 0.0) {
             res[2 * h] = clamp(best * dist, -3e4, 3e4);

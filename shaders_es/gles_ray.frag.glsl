@@ -29,8 +29,8 @@ int hfs_ray_level(ivec2 lo, ivec2 hi)
     return l;
 }
 
-/* max(best, the slope of every crossing at distance >= t_first) of
- * receiver g (height h0 at g) in direction cs: bounds from the atlas
+/* max(best, the slope of every crossing at distance >= t_first and <=
+ * t_last) of receiver g (height h0 at g) in direction cs: bounds from the atlas
  * `bounds` (level l at at[l]), heights (hi, lo) from `heights` (the input,
  * texelFetch), slopes (v - v0) zf / t (zf = hscale zscale / dx); *dist
  * moves to a crossing only past the horizons' tie (hfs_scale_takes_over,
@@ -39,8 +39,9 @@ int hfs_ray_level(ivec2 lo, ivec2 hi)
  * window fully blocked needs no more).  *dist: the distance of the
  * crossing that raised best.  Counts its reads. */
 float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
-                     ivec2 size, ivec2 g, vec2 cs, float t_first, float zf, float tie, vec2 h0,
-                     float best, float stop, inout float dist, inout int fetches)
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
+                     float tie, vec2 h0, float best, float stop, inout float dist,
+                     inout int fetches)
 {
     bool xm = abs(cs.x) >= abs(cs.y);
     float ma = xm ? cs.x : cs.y, mi = xm ? cs.y : cs.x;
@@ -53,6 +54,9 @@ float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
                         : (r < 0.0 ? (float(q) + HFS_RAY_EDGE_TOL) / -r : 1e9);
     if (lim < float(last))
         last = int(floor(lim));
+    float lim_t = floor(t_last * abs(ma) + 1e-4);
+    if (lim_t < float(last))
+        last = int(max(lim_t, 0.0));
     int m = max(1, int(ceil(t_first * abs(ma) - 1e-4)));
     float v0 = hfs_h(h0);
     int l = 0;

@@ -73,8 +73,9 @@ float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs
                        vec2 h, int n, float k, float best, inout float dist, inout int fetches);
 #define HFS_RAY_LEVELS 16
 float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
-                     ivec2 size, ivec2 g, vec2 cs, float t_first, float zf, float tie, vec2 h0,
-                     float best, float stop, inout float dist, inout int fetches);
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
+                     float tie, vec2 h0, float best, float stop, inout float dist,
+                     inout int fetches);
 
 uniform highp sampler2DArray u_levels;
 uniform highp sampler2D u_normals;
@@ -212,8 +213,8 @@ float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
     best = hfs_refine_about(u_levels, g, u_size, cs, sc, hx[int(sc.z)], u_refine, u_lk, best,
                             dist, fetches);
     /* and every band between the scales: no narrow occluder is stepped over */
-    best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, u_zf, u_tie,
-                          hx[HFS_NLAYERS - 1], best, 1e30, dist, fetches);
+    best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, 1e9, u_zf,
+                          u_tie, hx[HFS_NLAYERS - 1], best, 1e30, dist, fetches);
     return atan(best);
 }
 

@@ -48,6 +48,11 @@ bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
 float hfs_refine_factor(int q, int n, float k);
+#define HFS_RAY_LEVELS 16
+float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
+                     float tie, vec2 h0, float best, float stop, inout float dist,
+                     inout int fetches);
 
 uniform highp sampler2D u_normals;       /* full resolution */
 uniform highp sampler2DArray u_keyhz;    /* key horizons (hi, lo, D, 0), a direction a layer */
@@ -72,6 +77,13 @@ uniform float u_reach;
 uniform vec2 u_near_cs;
 uniform float u_lk;                      /* levels per octave: d_m = 2^(m / k) */
 uniform int u_refine;                    /* samples refining the near max */
+/* and every crossing of the texel's ray with the grid's lines up to
+ * u_near_to texels (where the grid pass's gap search starts): the max
+ * pyramid's atlas (runtime/core/ray_bound.h) */
+uniform float u_near_to;
+uniform float u_edge;                    /* each direction's own ray from u_near_to to here */
+uniform highp sampler2D u_bounds;
+uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
 
 #ifdef HFS_KEYS_TEX
 /* The records from a texture (too large for a uniform block). */
@@ -115,15 +127,21 @@ float near_slope(ivec2 p, vec2 cs, float d, vec2 zp)
 }
 
 /* Texel p's near horizon on a sub-sampled grid (DESIGN.md "Key lights on
- * the 2x2 grid"): the max over the u_near finest scales, then u_refine
- * samples about the finest scale holding it, as the grid pass refines
- * (hfs_refine_about); one search serves every direction of the swath.
- * -1e30 when there is none (subsample 1, a full swath). */
-float near_horizon(ivec2 p, vec2 zp)
+ * the 2x2 grid", "Sharp edges on the grid"): the max over the u_near
+ * finest scales, u_refine samples about the finest scale holding it (as
+ * the grid pass refines, hfs_refine_about), then every crossing of the
+ * texel's own ray up to u_near_to (hfs_gap_search): no occluder within
+ * reach is stepped over, and a shadow edge falls on the texel it falls on.
+ * One search serves every direction of the swath.  win_t: the slopes at
+ * which the light's window starts and closes; the search starts at the
+ * first (a lower horizon shows the light the same) and stops at the second
+ * (the light is hidden).  win_t.x when there is none (subsample 1, a full
+ * swath). */
+float near_horizon(ivec2 p, vec2 zp, vec2 win_t)
 {
-    float best = -1e30;
+    float best = win_t.x;
     int bm = -1;
-    for (int m = 0; u_near_dir == 0 && m < u_near; ++m) {
+    for (int m = 0; u_near_dir == 0 && m < u_near && best < win_t.y; ++m) {
         float sl = near_slope(p, u_near_cs, exp2(float(m) / u_lk), zp);
         if (sl > best) {
             best = sl;
@@ -131,8 +149,14 @@ float near_horizon(ivec2 p, vec2 zp)
         }
     }
     float d = exp2(float(bm) / u_lk);
-    for (int q = 0; bm >= 0 && q < u_refine; ++q)
+    for (int q = 0; bm >= 0 && q < u_refine && best < win_t.y; ++q)
         best = max(best, near_slope(p, u_near_cs, d * hfs_refine_factor(q, u_refine, u_lk), zp));
+    if (u_near_dir == 0 && u_near > 0) {
+        float dist = 0.0;
+        int fetches = 0;
+        best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, p, u_near_cs, 1.0, u_near_to,
+                              u_rise, 0.0, zp, best, win_t.y, dist, fetches);
+    }
     return best;
 }
 
@@ -173,8 +197,11 @@ Cell grid_cell(ivec2 p, vec2 zp)
  * (one that ends up less than u_reach ahead of p, which the near search
  * covers, or a neighbour with no sample on the grid, lends p's floor); the
  * four slopes are blended with the bilinear weights, and p's own near
- * horizon (slope `near`) can only raise the result: one atan. */
-float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, ivec2 p, vec2 zp)
+ * horizon (slope `near`, and its own ray's crossings from u_near_to to
+ * u_edge, searched until the slope reaches `stop`) can only raise the
+ * result: one atan. */
+float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, float stop,
+                  ivec2 p, vec2 zp)
 {
     if (u_sub == 1) {
         vec4 t = texelFetch(u_keyhz, ivec3(c.ga[0], int(layer)), 0);
@@ -192,6 +219,12 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, iv
     float s = mix(mix(sl[0], sl[1], c.f.x), mix(sl[2], sl[3], c.f.x), c.f.y);
     for (int m = 0; u_near_dir > 0 && m < u_near; ++m)
         near = max(near, near_slope(p, cs, exp2(float(m) / u_lk), zp));
+    if (u_near_dir == 0 && u_edge > u_near_to) {
+        float dist = 0.0;
+        int fetches = 0;
+        near = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, p, cs, u_near_to, u_edge,
+                              u_rise, 0.0, zp, near, stop, dist, fetches);
+    }
     return max(fl, atan(max(s, near)));
 }
 
@@ -213,12 +246,20 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
     hfs_sh_basis(n, y);
 #endif
 
-    float near = near_horizon(p, zp);
     int nd = int(h0.x);
     bool full = h0.y > 0.5;
     float layer0 = h0.z;
     int sw = b + 7;                      /* the light's HfsSwath record */
     vec4 win = KREC(sw), occtop = KREC(sw + 1);
+    /* The Legendre path sees a horizon only through max(omega, win.x) and
+     * not at all from win.y (hfs_visible); the table path counts every
+     * elevation (visibility.h). */
+#ifdef HFS_TABLES
+    vec2 win_t = vec2(-1e30, 1e30);
+#else
+    vec2 win_t = vec2(tan(max(win.x, -1.5)), win.y < 1.57 ? tan(win.y) : 1e30);
+#endif
+    float near = near_horizon(p, zp, win_t);
     int dirs = sw + 2, cm = sw + 2 + nd, rot = sw + 2 + 17 * nd;
 #ifdef HFS_TABLES
     vec4 Vk[4], Vo[4];
@@ -239,7 +280,8 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
     for (int j = 0; j < nd; ++j) {
         vec4 dj = KREC(dirs + j);
         float fl = atan(-(n.x * dj.x + n.y * dj.y), n.z);
-        float om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), near, p, zp), HFS_HALF_PI);
+        float om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), near, win_t.y, p, zp),
+                       HFS_HALF_PI);
 #ifdef HFS_TABLES
         if (j == 0) {
             om_first = om;

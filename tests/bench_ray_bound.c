@@ -59,11 +59,11 @@ int main(int argc, char **argv)
         for (int i = 0; i < w; i += 3) {
             double d = 0.0;
             const double top = hfs_ray_bound_search(&L, atlas, z, (size_t)w, i, j, c, s, 0.0,
-                                                    zs, 0.0, -1e30, &d, &reads[0]);
+                                                    HUGE_VAL, zs, 0.0, -1e30, &d, &reads[0]);
             const double at = top - 1e-9 * (1.0 + fabs(top));
-            hfs_ray_bound_search(&L, atlas, z, (size_t)w, i, j, c, s, 0.0, zs, 0.0, at,
+            hfs_ray_bound_search(&L, atlas, z, (size_t)w, i, j, c, s, 0.0, HUGE_VAL, zs, 0.0, at,
                                  &d, &reads[1]);
-            hfs_ray_bound_search(&L, atlas, z, (size_t)w, i, j, c, s, 0.0, zs, 0.0,
+            hfs_ray_bound_search(&L, atlas, z, (size_t)w, i, j, c, s, 0.0, HUGE_VAL, zs, 0.0,
                                  fmax(at, tan(elev - 2.0 * PI / 180.0)), &d, &reads[2]);
             ++n;
         }

@@ -221,10 +221,11 @@ static int fc_key_swath(const hfs_key_light *kl, int nphi_key, int nphi_env, dou
     return n;
 }
 
-/* DESIGN.md "Key lights on the 2x2 grid": on a sub-sampled grid a partial
- * swath's finest scales within min(16, 0.5 / sin(half its extent)) texels
- * (at least one) are the factor pass's, a full swath's finest; none at
- * subsample 1. */
+/* DESIGN.md "Key lights on the 2x2 grid", "Sharp edges on the grid": on a
+ * sub-sampled grid a partial swath's finest scales within 0.5 / sin(half
+ * its extent) texels (at least one), and one octave more per doubling of
+ * the step (at most all but the coarsest), are the factor pass's, a full
+ * swath's finest; none at subsample 1. */
 static int fc_key_near(int sub, int n_lev, int k, int full, int ns, const double *phi)
 {
     if (sub == 1 || n_lev < 2)
@@ -232,11 +233,11 @@ static int fc_key_near(int sub, int n_lev, int k, int full, int ns, const double
     if (full)
         return 1;
     const double span = 0.5 * (phi[ns - 1] - phi[0]);
-    const double reach = sin(span) * 16.0 > 0.5 ? 0.5 / sin(span) : 16.0;
     int near = 1;
-    while (near < n_lev - 1 && exp2((double)near / k) <= reach * (1.0 + 1e-12))
+    while (near < n_lev - 1 && sin(span) * exp2((double)near / k) <= 0.5 * (1.0 + 1e-12))
         ++near;
-    return near;
+    near += sub == 4 ? 2 * k : k;
+    return near < n_lev - 1 ? near : n_lev - 1;
 }
 
 typedef struct fc_counts {

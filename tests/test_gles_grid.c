@@ -27,7 +27,8 @@
  * texel's own, along the swath's centre and refined apart from the far
  * scales, so a grid texel's shadow can flip where subsample 1's single
  * refinement misses a peak; DESIGN.md "Key lights on the 2x2 grid").
- * LIGHTS: both (default: sky + key light), env, key. */
+ * LIGHTS: both (default: sky + key light), env, key; then "slice" (the
+ * exact slice path) or "tables" (the wedge-table path), and "split". */
 static int mode_sub(int argc, char **argv)
 {
     if (argc < 7)
@@ -39,6 +40,8 @@ static int mode_sub(int argc, char **argv)
                  max_max = atof(argv[6]);
     const char *lights = argc > 7 ? argv[7] : "both";
     const int slice = argc > 8 && !strcmp(argv[8], "slice");
+    /* "tables": the wedge-table path, which counts every elevation */
+    const int tables = argc > 8 && !strcmp(argv[8], "tables");
     /* "split": split horizons with the same far settings at both steps
      * (far-from 16, 2 sub-directions, far grid step 8, refine 2, so that
      * the near part's refining is the same too): the sub-sampling alone. */
@@ -52,6 +55,8 @@ static int mode_sub(int argc, char **argv)
     hfs_quality q1 = quality("fp16", "legendre", 1), qs = quality("fp16", "legendre", sub);
     if (slice)
         q1.visibility = qs.visibility = HFS_VIS_SLICE;
+    if (tables)
+        q1.visibility = qs.visibility = HFS_VIS_WEDGE_TABLE;
     if (split) {
         q1.split = qs.split = 1;
         q1.far_from = qs.far_from = 16;
@@ -89,7 +94,7 @@ static int mode_sub(int argc, char **argv)
         printf("%s %dx%d %s%s subsample %d vs 1: %ld of %ld grid texels bit-equal (largest "
                "difference %.3e at (%d, %d); %ld (%.2e) by more than 1e-2; bound %s%.2e), %ld "
                "others differ; mean %.3e rmse %.3e p99 %.3e max %.3e (bounds %.2e %.2e)\n",
-               name, n, n, lights, slice ? " slice" : "", sub, same, grid, grid_max, gi, gj,
+               name, n, n, lights, slice ? " slice" : (tables ? " tables" : ""), sub, same, grid, grid_max, gi, gj,
                flipped, (double)flipped / (double)grid, grid_frac ? "fraction " : "", max_grid,
                differ, m.mean_abs, m.rmse, m.p99_abs, m.max_abs, max_mean, max_max);
         CHECK(m.nonfinite == 0, "%ld non-finite outputs", m.nonfinite);

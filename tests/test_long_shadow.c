@@ -95,13 +95,14 @@ static int classify(const post_case *pc, double i, double j)
 }
 
 /* Umbra texels render below umbra_max of their unshadowed value: 5% at
- * subsample 1, and none of them lit (at half of it or more) at subsample
- * 1.  On a sub-sampled grid a texel blends its grid receivers'
- * occluders, and across the lateral edge of a shadow one or two texels
- * wide some of them miss the post: the edge lands within the grid step
- * (issue 36's "sharp lights on the grid", not done).  There the bound is
- * the issue's: at most 1% of the umbra lit (rounded up to whole texels),
- * umbra_max 50%; along the shadow nothing may be lost. */
+ * subsample 1.  On a sub-sampled grid each texel searches its own ray
+ * only to where the disk's penumbra is a grid step wide (DESIGN.md "Sharp
+ * edges on the grid"); beyond, it blends its grid receivers' occluders,
+ * and an umbra narrower than the step comes out partly lit (case 4 at
+ * subsample 2: 4 texels at 19-21%).  There the bound is the issue's
+ * "rendered lit": none of the umbra at half of its unshadowed value or
+ * more (before the edge search, at subsample 2 one texel of case 2, at
+ * subsample 4 18-72 of cases 3-6). */
 static void run_case(hfs_renderer *r, const char *name, const post_case *pc,
                      const hfs_quality *q)
 {
@@ -146,9 +147,7 @@ static void run_case(hfs_renderer *r, const char *name, const post_case *pc,
                "lit ground %ld texels, %ld shadowed\n", name, pc->side, pc->height, pc->phi,
                pc->elev, n_umbra, bad_umbra, n_lit, bad_lit);
         LS_CHECK(n_umbra > 100, "%s: only %ld umbra texels (the case is wrong)", name, n_umbra);
-        const long allowed = q->subsample > 1 ? (n_umbra + 99) / 100 : 0;
-        LS_CHECK(bad_umbra <= allowed, "%s: %ld of %ld umbra texels lit (at most %ld)", name,
-                 bad_umbra, n_umbra, allowed);
+        LS_CHECK(bad_umbra == 0, "%s: %ld of %ld umbra texels lit", name, bad_umbra, n_umbra);
         LS_CHECK(bad_lit == 0, "%s: %ld of %ld lit texels shadowed", name, bad_lit, n_lit);
     }
     hfs_image_free(&img);
@@ -172,6 +171,12 @@ static void run(hfs_renderer *r, const char *backend, int sub)
         {200, 160, 20, 20, 3, 14.0, 213.0, 5.0, 0.25}, /* oblique */
         {160, 160, 140, 140, 3, 12.0, 45.0, 4.0, 0.1}, /* diagonal */
         {300, 40, 30, 18, 5, 40.0, 184.0, 15.0, 0.5}, /* a steeper sun */
+        /* as bench_umbra.sh's towers (on the 2x2 grid before its
+         * per-texel edge search 17 of 196 and 17 of 1272 umbra texels
+         * lit, BENCHMARKS.md "Sharp edges on the grid"): a 5 x 14 post
+         * under a 6-degree sun, a 10 x 20 block under 8 degrees */
+        {300, 40, 20, 18, 5, 14.0, 180.0, 6.0, 0.25},
+        {300, 60, 20, 25, 10, 20.0, 180.0, 8.0, 0.25},
     };
     char name[64];
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c) {

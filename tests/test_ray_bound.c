@@ -97,11 +97,11 @@ static void check_boxes(const float *z, int w, int h, const hfs_ray_bound_layout
 }
 
 /* Brute force: the slope of every crossing from (i, j) in (c, s) at
- * distance >= t_first, as ray_bound.h defines them, nearest first; returns
+ * distance >= t_first and <= t_last, as ray_bound.h defines them, nearest first; returns
  * the max of best and those, *dist the distance of the crossing that leads
  * (taking the lead past the relative tie). */
 static double brute(const double *zd, int w, int h, int i, int j, double c, double s,
-                    double t_first, double zs, double best, double *dist)
+                    double t_first, double t_last, double zs, double best, double *dist)
 {
     const int xm = fabs(c) >= fabs(s);
     const double ma = xm ? c : s, mi = xm ? s : c, inv = 1.0 / fabs(ma), r = mi / fabs(ma);
@@ -111,7 +111,7 @@ static double brute(const double *zd, int w, int h, int i, int j, double c, doub
     for (int m = 1;; ++m) {
         const int x = p + step * m;
         double y = q + m * r;
-        if (x < 0 || x > np - 1 || y < -1e-3 || y > nq - 1 + 1e-3)
+        if (x < 0 || x > np - 1 || y < -1e-3 || y > nq - 1 + 1e-3 || m > t_last / inv + 1e-4)
             break;
         if (m < t_first / inv - 1e-4)
             continue;
@@ -154,13 +154,16 @@ static void check_search(int w, int h, int trials, double tx, double ty, int wav
         c = fabs(c) < 1e-12 ? 0.0 : c;
         s = fabs(s) < 1e-12 ? 0.0 : s;
         const double zs = 0.5 + urand(), t_first = k % 3 == 0 ? 10.0 * urand() : 0.0;
+        /* every fifth search ends short of the grid's edge (a key light's
+         * per-texel search stops where the grid's starts) */
+        const double t_last = k % 5 == 1 ? t_first + 1.0 + 30.0 * urand() : HUGE_VAL;
         const double start = k % 2 ? -1e30 : 0.2 * urand() - 0.1;
         double d_b = -1.0, d_s = -1.0;
-        const double want = brute(zd, w, h, i, j, c, s, t_first, zs, start, &d_b);
+        const double want = brute(zd, w, h, i, j, c, s, t_first, t_last, zs, start, &d_b);
         const double got = hfs_ray_bound_search(&L, atlas, zd, (size_t)w, i, j, c, s, t_first,
-                                                zs, 0.0, start, &d_s, &reads);
-        CHECK(got == want && d_s == d_b, "%dx%d (%d,%d) at %g deg from %g: %.17g (d %g), brute "
-              "force %.17g (d %g)", w, h, i, j, deg, t_first, got, d_s, want, d_b);
+                                                t_last, zs, 0.0, start, &d_s, &reads);
+        CHECK(got == want && d_s == d_b, "%dx%d (%d,%d) at %g deg from %g to %g: %.17g (d %g), "
+              "brute force %.17g (d %g)", w, h, i, j, deg, t_first, t_last, got, d_s, want, d_b);
     }
     free(z), free(zd), free(atlas), free(scr);
 }
@@ -181,14 +184,14 @@ static void check_post(void)
     hfs_ray_bound_build(&L, z, 0.0, 1.0, -HUGE_VAL, atlas, scr);
     double d = 0.0;
     long reads = 0;
-    const double sl = hfs_ray_bound_search(&L, atlas, zd, (size_t)w, 50, 4, 1.0, 0.0, 0.0, 1.0, 0.0,
-                                           0.0, &d, &reads);
+    const double sl = hfs_ray_bound_search(&L, atlas, zd, (size_t)w, 50, 4, 1.0, 0.0, 0.0,
+                                           HUGE_VAL, 1.0, 0.0, 0.0, &d, &reads);
     CHECK(sl == 10.0 / 200.0 && d == 200.0, "post: slope %g at %g", sl, d);
     CHECK(reads < 60, "post: %ld reads", reads);
     /* missed off its row: the post lies one row beside the ray */
     d = 0.0;
-    const double off = hfs_ray_bound_search(&L, atlas, zd, (size_t)w, 50, 3, 1.0, 0.0, 0.0, 1.0, 0.0,
-                                            0.0, &d, NULL);
+    const double off = hfs_ray_bound_search(&L, atlas, zd, (size_t)w, 50, 3, 1.0, 0.0, 0.0,
+                                            HUGE_VAL, 1.0, 0.0, 0.0, &d, NULL);
     CHECK(off == 0.0 && d == 0.0, "post beside the ray: slope %g", off);
     printf("post 200 texels away: %ld reads\n", reads);
     free(z), free(zd), free(atlas), free(scr);

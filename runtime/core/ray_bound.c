@@ -132,9 +132,13 @@ static ray_walk walk_make(int w, int h, int i, int j, double c, double s)
 
 double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
                             size_t stride, int i, int j, double c, double s, double t_first,
-                            double zs, double tie, double best, double *dist, long *reads)
+                            double t_last, double zs, double tie, double best, double *dist,
+                            long *reads)
 {
-    const ray_walk k = walk_make(L->w, L->h, i, j, c, s);
+    ray_walk k = walk_make(L->w, L->h, i, j, c, s);
+    const double m_last = floor(t_last / k.inv + 1e-4); /* as in float */
+    if (m_last < k.last)
+        k.last = m_last < 0.0 ? 0 : (int)m_last;
     const int p = k.x_major ? i : j, q = k.x_major ? j : i, nq = k.x_major ? L->h : L->w;
     const double z0 = z[(size_t)j * stride + (size_t)i];
     int m = (int)ceil(t_first / k.inv - 1e-4); /* as in float */

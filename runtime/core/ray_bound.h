@@ -82,7 +82,8 @@ int hfs_ray_bound_level(int x0, int x1, int y0, int y1);
 /* One receiver's gap search, as described above, on the CPU: grid point
  * (i, j) of heights z (row stride `stride`, w x h), direction (c, s)
  * (snapped as the horizon plans snap them), crossings from the first at
- * distance >= t_first to the grid's edge, slopes (z - z_0) * zs / t with zs = zscale / dx,
+ * distance >= t_first to the last at distance <= t_last or the grid's
+ * edge, whichever comes first, slopes (z - z_0) * zs / t with zs = zscale / dx,
  * bounds from atlas (built with base 0, scale 1).  Returns the largest of
  * `best` and every crossing's slope, exactly; *dist becomes the distance
  * of the crossing that leads (unchanged when none beat `best`), where a
@@ -95,6 +96,7 @@ int hfs_ray_bound_level(int x0, int x1, int y0, int y1);
  * not NULL, grows by the reads made (bounds and heights). */
 double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
                             size_t stride, int i, int j, double c, double s, double t_first,
-                            double zs, double tie, double best, double *dist, long *reads);
+                            double t_last, double zs, double tie, double best, double *dist,
+                            long *reads);
 
 #endif /* HFS_RAY_BOUND_H */

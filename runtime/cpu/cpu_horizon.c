@@ -345,8 +345,8 @@ double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double
     const double *atlas = hfs_cpu_pyramid_bounds(hp->p, &L);
     const double *z = hfs_cpu_pyramid_full(hp->p, hp->n_levels - 1);
     return hfs_ray_bound_search(L, atlas, z, hp->stride, i, j, hp->cs[2 * dir],
-                                hp->cs[2 * dir + 1], t_first, hp->zs, tie, best, dist,
-                                reads);
+                                hp->cs[2 * dir + 1], t_first, HUGE_VAL, hp->zs, tie, best,
+                                dist, reads);
 }
 
 double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,

@@ -21,8 +21,11 @@ double hfs_gles_key_emax(const hfs_gles_key *k)
 
 /* Texture fetches per texel of key_visibility.frag for swath s: normal
  * and height; on a sub-sampled grid the four grid neighbours' heights, the
- * near scales and their refinement (at most; fewer near the edges), and
- * four horizon fetches per direction, else one. */
+ * near scales and their refinement (at most; fewer near the edges), the
+ * gap search to nr.to (a clear ray's: about two reads per octave,
+ * ray_bound.h; a blocked one stops sooner, a partly lit one reads more),
+ * and per direction its own gap search to nr.edge and four horizon
+ * fetches; at subsample 1 one per direction. */
 static double factor_fetches(const hfs_gles_layout *L, const hfs_swath *s, int refine)
 {
     if (L->sub == 1)
@@ -30,7 +33,9 @@ static double factor_fetches(const hfs_gles_layout *L, const hfs_swath *s, int r
     const hfs_gles_key_near nr = hfs_gles_key_near_make(L, s);
     if (nr.per_dir)
         return 2.0 + 4.0 + 5.0 * s->n;
-    return 2.0 + 4.0 + (nr.n > 0 ? nr.n + refine : 0) + 4.0 * s->n;
+    const double dir_gap = 2.0 * ceil(log2(nr.edge / nr.to));
+    return 2.0 + 4.0 + (nr.n > 0 ? nr.n + refine + 2.0 * ceil(log2(nr.to)) : 0) +
+           (4.0 + dir_gap) * s->n;
 }
 
 static int present(const hfs_gles_frame *fr)
@@ -61,6 +66,8 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     hfs_gles_set_i1(gl, prog, "u_refine", fr->q->refine);
     hfs_gles_set_f1(gl, prog, "u_far", (float)(2 * L->sub));
     hfs_gles_set_f1(gl, prog, "u_rise", (float)(L->hscale * L->zscale / L->dx));
+    if ((rc = hfs_gles_bind_bounds(g, prog, L, 0.0f, err)))
+        return rc;
     if (fr->keys_tex)
         return hfs_gles_program_texture(gl, prog, "u_keys_tex", GL_TEXTURE_2D, g->keys_tex.tex,
                                         err);
@@ -89,6 +96,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
         hfs_gles_set_i1(gl, prog, "u_near_dir", nr.per_dir);
         hfs_gles_set_f1(gl, prog, "u_reach", nr.reach);
         hfs_gles_set_f2(gl, prog, "u_near_cs", nr.cs[0], nr.cs[1]);
+        hfs_gles_set_f1(gl, prog, "u_near_to", nr.to);
+        hfs_gles_set_f1(gl, prog, "u_edge", nr.edge);
         if ((rc = hfs_gles_fbo_layers(gl, g->r.kf_fbo, g->r.kf, q, 1, "key factor", err)))
             return rc;
         hfs_gles_draw(gl, g->r.kf_fbo, L->w, L->h);
