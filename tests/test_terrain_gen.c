@@ -67,8 +67,45 @@ static void check_kind(const char *name, int w, int h)
     free(b);
 }
 
+/* The mean |discrete Laplacian| of a field over its height range: the
+ * share of the relief at the texel scale. */
+static double texel_roughness(const float *z, int w, int h)
+{
+    double sum = 0.0, lo = INFINITY, hi = -INFINITY;
+    for (int j = 1; j < h - 1; ++j)
+        for (int i = 1; i < w - 1; ++i) {
+            const float *p = z + (size_t)j * w + i;
+            sum += fabs(4.0 * p[0] - p[-1] - p[1] - p[-w] - p[w]);
+        }
+    for (int k = 0; k < w * h; ++k)
+        lo = fmin(lo, z[k]), hi = fmax(hi, z[k]);
+    return sum / ((w - 2.0) * (h - 2.0)) / (hi - lo);
+}
+
+/* hfs_terrain_fbm: Hurst 1 is hfs_terrain_fractal bit for bit; a lower
+ * exponent puts more of the relief at the texel scale (issue 36's Hurst
+ * 0.25 field), and the heights still span [0, relief * side]. */
+static void check_hurst(void)
+{
+    enum { W = 64, H = 48 };
+    static float a[W * H], b[W * H], c[W * H];
+    CHECK(!hfs_terrain_fractal(a, W, H, 3, 0.5) && !hfs_terrain_fbm(b, W, H, 3, 0.5, 1.0) &&
+              !hfs_terrain_fbm(c, W, H, 3, 0.5, 0.25),
+          "fbm failed");
+    CHECK(!memcmp(a, b, sizeof a), "Hurst 1 is not hfs_terrain_fractal");
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k = 0; k < W * H; ++k)
+        lo = fmin(lo, c[k]), hi = fmax(hi, c[k]);
+    CHECK(lo == 0.0 && fabs(hi - 0.5 * H) < 1e-3 * H, "Hurst 0.25: range [%g, %g]", lo, hi);
+    const double r1 = texel_roughness(a, W, H), r025 = texel_roughness(c, W, H);
+    CHECK(r025 > 3.0 * r1, "texel-scale roughness: Hurst 0.25 %g, Hurst 1 %g", r025, r1);
+    printf("texel-scale roughness (mean |Laplacian| / range): Hurst 1 %.4f, 0.25 %.4f\n", r1,
+           r025);
+}
+
 int main(void)
 {
+    check_hurst();
     static const int sizes[][2] = {{64, 64}, {97, 61}, {2, 2}, {1024, 3}};
     char names[256];
     snprintf(names, sizeof names, "%s", hfs_terrain_names());

@@ -5,7 +5,8 @@
  *   hfgen KIND    --size WxH -o OUT.pfm [--seed N] [--relief R]
  *       KIND = flat | cones (SN08 figs. 3-10 style) | sine (grating) |
  *              eggtray | city (blocks, vertical walls) | spike (one texel) |
- *              cliff | fractal (--seed, --relief) | panel (grooved, embossed) |
+ *              cliff | fractal (--seed, --relief, --hurst H: the octaves'
+ *              amplitude ratio 2^-H, default 1) | panel (grooved, embossed) |
  *              tower (--block W,H: one block, default 40,30) | boxes (--seed)
  *   hfgen crop    IN --rect X,Y,W,H -o OUT.pfm   (any loadable height file)
  *   hfgen albedo  IN -o OUT.pfm                  (an albedo map for IN's heights)
@@ -45,7 +46,7 @@
 static void usage(FILE *to)
 {
     fprintf(to, "usage: hfgen %s --size WxH -o OUT.pfm [--seed N] [--relief R]\n"
-                "             [--block W,H (tower)]\n"
+                "             [--block W,H (tower)] [--hurst H (fractal, default 1)]\n"
                 "       hfgen crop IN --rect X,Y,W,H -o OUT.pfm\n"
                 "       hfgen albedo IN -o OUT.pfm\n"
                 "       hfgen sky [--size WxH] -o OUT.pfm [--sun PHI,ELEV] [--sun-diameter D]\n"
@@ -178,6 +179,7 @@ typedef struct gen_args {
     unsigned seed;
     double relief;
     int block_w, block_h; /* tower: --block W,H (0: the default 40,30) */
+    double hurst;         /* fractal: --hurst H (default 1) */
 } gen_args;
 
 /* 1 if KIND is one of hfs_terrain_names()' "a|b|c". */
@@ -205,6 +207,9 @@ static int gen_flag(gen_args *g, const char *a, const char *v)
     } else if (!strcmp(a, "--relief")) {
         if (hfs_cli_real(v, 0.0, 100.0, &g->relief))
             return hfs_usage_error("hfgen", "--relief: '%s' is out of range [0, 100]", v);
+    } else if (!strcmp(a, "--hurst")) {
+        if (hfs_cli_real(v, 0.0, 2.0, &g->hurst))
+            return hfs_usage_error("hfgen", "--hurst: '%s' is out of range [0, 2]", v);
     } else if (!strcmp(a, "--block")) {
         char tail;
         if (sscanf(v, "%d,%d%c", &g->block_w, &g->block_h, &tail) != 2 || g->block_w < 1 ||
@@ -223,7 +228,7 @@ static int gen_flag(gen_args *g, const char *a, const char *v)
 /* 0, or HFS_EXIT_USAGE with the one line printed. */
 static int gen_parse(int argc, char **argv, gen_args *g)
 {
-    *g = (gen_args){argv[1], NULL, NULL, NULL, 0, 0, 1, 0.25, 0, 0};
+    *g = (gen_args){argv[1], NULL, NULL, NULL, 0, 0, 1, 0.25, 0, 0, 1.0};
     const int terrain = is_terrain(g->kind), takes_in = !terrain;
     if (!terrain && strcmp(g->kind, "crop") && strcmp(g->kind, "albedo"))
         return hfs_usage_error("hfgen", "'%s' is not a kind (%s|crop|albedo|sky)", g->kind,
@@ -316,6 +321,12 @@ int main(int argc, char **argv)
     }
     if (g.block_w && !strcmp(g.kind, "tower"))
         hfs_terrain_tower(z, g.w, g.h, g.block_w, g.block_h);
+    if (g.hurst != 1.0 && !strcmp(g.kind, "fractal") &&
+        hfs_terrain_fbm(z, g.w, g.h, g.seed, g.relief, g.hurst)) {
+        fprintf(stderr, "hfgen: out of memory\n");
+        free(z);
+        return 1;
+    }
     hfs_error err = {{0}};
     rc = hfs_pfm_write_grey(g.out, g.w, g.h, z, &err);
     free(z);

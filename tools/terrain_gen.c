@@ -92,10 +92,16 @@ static double value_noise(double x, double y, uint32_t seed)
     return (a + (b - a) * ux) * (1 - uy) + (c + (d - c) * ux) * uy;
 }
 
-/* fBm, 8 octaves, gain 0.5, base period = the field's smaller side / 2;
- * rescaled so heights span [0, relief * side]. */
 int hfs_terrain_fractal(float *z, int w, int h, uint32_t seed, double relief)
 {
+    return hfs_terrain_fbm(z, w, h, seed, relief, 1.0);
+}
+
+/* fBm, 8 octaves, gain 2^-hurst, base period = the field's smaller side / 2;
+ * rescaled so heights span [0, relief * side]. */
+int hfs_terrain_fbm(float *z, int w, int h, uint32_t seed, double relief, double hurst)
+{
+    const double gain = exp2(-hurst);
     const double side = w < h ? w : h;
     double lo = INFINITY, hi = -INFINITY;
     double *tmp = malloc((size_t)w * h * sizeof *tmp);
@@ -106,7 +112,7 @@ int hfs_terrain_fractal(float *z, int w, int h, uint32_t seed, double relief)
             double v = 0.0, amp = 1.0, freq = 2.0 / side;
             for (int o = 0; o < 8; ++o) {
                 v += amp * value_noise(i * freq, j * freq, seed + (uint32_t)o * 101u);
-                amp *= 0.5;
+                amp *= gain;
                 freq *= 2.0;
             }
             tmp[(size_t)j * w + i] = v;

@@ -21,6 +21,12 @@ void hfs_terrain_panel(float *z, int w, int h);
  * Returns 0, or -1 when out of memory (z untouched). */
 int hfs_terrain_fractal(float *z, int w, int h, uint32_t seed, double relief);
 
+/* The same with Hurst exponent `hurst`: each octave's amplitude 2^-hurst
+ * of the previous one's (hfs_terrain_fractal: 1).  A lower exponent puts
+ * more of the relief at the texel scale (issue 36's "Hurst 0.25" field: a
+ * rough surface of pits and spikes; 0.8 a realistic terrain). */
+int hfs_terrain_fbm(float *z, int w, int h, uint32_t seed, double relief, double hurst);
+
 /* A sine grating: ridges along 30 degrees from +x, period side/8, heights
  * in [0, 2a] with a = period / (2 pi) (steepest slope 1). */
 void hfs_terrain_sine(float *z, int w, int h);
