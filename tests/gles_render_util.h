@@ -37,6 +37,12 @@ static inline hfs_quality quality(const char *prec, const char *path, int sub)
     q.split = 0;
     q.precision = prec && !strcmp(prec, "fp32") ? HFS_PRECISION_FP32 : HFS_PRECISION_FP16;
     q.visibility = path && !strcmp(path, "tables") ? HFS_VIS_WEDGE_TABLE : HFS_VIS_LEGENDRE;
+    /* "slice": the exact slice path, one horizon per direction; "split":
+     * the same with split horizons (the product's default) */
+    if (path && (!strcmp(path, "slice") || !strcmp(path, "split"))) {
+        q.visibility = HFS_VIS_SLICE;
+        q.split = !strcmp(path, "split");
+    }
     q.subsample = sub;
     return q;
 }

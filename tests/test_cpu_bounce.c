@@ -78,6 +78,7 @@ static void test_wall(void)
     l.albedo = rho;
     hfs_quality q;
     hfs_quality_defaults(&q);
+    q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
     float *direct = malloc(sizeof(float) * w * h * 3);
     memcpy(direct, lo, sizeof(float) * w * h * 3);
     hfs_error err = {""};
@@ -121,6 +122,7 @@ static void test_pit(void)
     l.albedo = 0.5;
     hfs_quality q;
     hfs_quality_defaults(&q);
+    q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
     const size_t p = 3 * ((size_t)c * w + c);
     const double before = lo[p];
     hfs_error err = {""};
@@ -217,6 +219,7 @@ static void render(hfs_backend_fn fn, const hfs_field *f, hfs_lighting *l, int b
 {
     hfs_quality q;
     hfs_quality_defaults(&q);
+    q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
     l->bounces = bounces;
     hfs_image img = {f->width, f->height, out};
     hfs_error err = {""};
@@ -236,6 +239,7 @@ static void test_bounce_dirs(void)
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         hfs_quality q;
         hfs_quality_defaults(&q);
+        q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
         q.nphi_env = cases[k][0], q.nphi_bounce = cases[k][1];
         CHECK(hfs_bounce_dirs(&q) == cases[k][2]);
     }

@@ -91,6 +91,7 @@ static void test_flat_uniform_sky(void)
                     z[q] = 7.25f;
                 hfs_quality q;
                 hfs_quality_defaults(&q);
+                q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
                 q.visibility = (hfs_visibility_path)path;
                 q.threads = 2;
                 hfs_image img;
@@ -136,6 +137,7 @@ static void test_key_flat(void)
                                        .alpha = lights[t][1], .radiance = {1.0f, 2.0f, 3.0f}};
             hfs_quality q;
             hfs_quality_defaults(&q);
+            q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
             q.visibility = (hfs_visibility_path)path;
             hfs_image img;
             if (render(z, w, h, 1.0, 1.0, &l, &q, &img) != HFS_OK)
@@ -176,6 +178,7 @@ static void test_key_below_horizon(void)
         l.key[1] = (hfs_key_light){.phi = PI, .elev = -0.8, .alpha = 0.1, .radiance = {0, 0, 0}};
         hfs_quality q;
         hfs_quality_defaults(&q);
+        q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
         q.visibility = (hfs_visibility_path)path;
         hfs_image img;
         if (render(z, w, h, 1.0, 1.0, &l, &q, &img) == HFS_OK) {
@@ -226,6 +229,7 @@ static void test_determinism(void)
         for (int t = 0; t < 3; ++t) {
             hfs_quality q;
             hfs_quality_defaults(&q);
+            q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
             q.visibility = (hfs_visibility_path)path;
             q.threads = t + 1;
             ok &= render(z, w, h, 1.0, 1.0, &l, &q, &img[t]) == HFS_OK;
@@ -261,6 +265,7 @@ static void test_wall(void)
         l.key[0] = (hfs_key_light){.phi = 0.0, .elev = elev, .alpha = alpha, .radiance = {1, 1, 1}};
         hfs_quality q;
         hfs_quality_defaults(&q);
+        q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
         q.visibility = (hfs_visibility_path)path;
         hfs_image img;
         if (render(z, w, h, 1.0, 1.0, &l, &q, &img) != HFS_OK)
@@ -301,6 +306,7 @@ static void test_rotation(void)
     for (int path = HFS_VIS_LEGENDRE; path <= HFS_VIS_WEDGE_TABLE; ++path) {
         hfs_quality q;
         hfs_quality_defaults(&q);
+        q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
         q.visibility = (hfs_visibility_path)path;
         hfs_image a, b;
         if (render(z, n, n, 1.0, 1.0, &l, &q, &a) == HFS_OK &&
@@ -339,6 +345,7 @@ static void test_hostile_and_api(void)
 {
     hfs_quality q;
     hfs_quality_defaults(&q);
+    q.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
     hfs_error err = {{0}};
     /* Tall spiky terrain, tiny field, lights at the limits. */
     const int sizes[][2] = {{2, 2}, {2, 9}, {31, 3}};

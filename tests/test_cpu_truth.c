@@ -1,5 +1,6 @@
 /*
- * test_cpu_truth.c — the CPU reference (HFS_BACKEND_CPU at hfs_quality_defaults)
+ * test_cpu_truth.c — the CPU reference (HFS_BACKEND_CPU at hfs_quality_defaults,
+ * subsample 1)
  * against the brute-force ground truth (HFS_BACKEND_TRUTH) through the public
  * API, for every kind of light on non-flat terrain, with SPEC's metrics.
  *
@@ -293,6 +294,7 @@ int main(int argc, char **argv)
 
     hfs_quality q_cpu, q_truth;
     hfs_quality_defaults(&q_cpu);
+    q_cpu.subsample = 1; /* the full-resolution reference (cpu_grid.h: 2, 4) */
     hfs_quality_defaults(&q_truth);
     q_truth.truth_azimuths = 720;
     q_truth.truth_elev_order = 16;

@@ -5,8 +5,9 @@
  * the slice path test_gles_grid.c's):
  *
  *   equal SCENE PREC PATH [SUB MEAN MAX [CONTEXT]]
- *       GLES (precision PREC = fp16|fp32, visibility PATH = legendre|tables,
- *       subsample SUB, default 1) vs CPU at default settings otherwise, on
+ *       GLES (precision PREC = fp16|fp32, visibility PATH = legendre|tables|
+ *       slice|split (split: the slice path with split horizons), subsample
+ *       SUB, default 1) vs CPU at the same settings, on
  *       scene SCENE = cones (64x64), fractal (64x64, relief 1), dem (96x96
  *       crop of data/jacksboro.png, dx 83, zscale 2).  SPEC metrics with the
  *       unshadowed normalizer; fails if mean > MEAN or max > MAX (defaults:

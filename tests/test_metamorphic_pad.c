@@ -141,7 +141,7 @@ static void run(hfs_renderer *r, const char *backend, int sub)
     /* Split horizons off, and on (subsample 1, 2: far-from 8, 16). */
     const mm_setting settings[2][2] = {
         {{HFS_PRECISION_FP32, 0, 0, 1, 1e-6, 1e-6}, {HFS_PRECISION_FP32, 1, 0, 1, 4.9e-3, 1e-6}},
-        {{HFS_PRECISION_FP32, 0, 0, 1, 1e-6, 1e-6}, {HFS_PRECISION_FP32, 1, 0, 1, 2.7e-6, 1e-6}},
+        {{HFS_PRECISION_FP32, 0, 0, 0, 1e-6, 1e-6}, {HFS_PRECISION_FP32, 1, 0, 0, 2.7e-6, 1e-6}},
     };
     for (sub = 1; sub <= 2; ++sub)
         for (int i = 0; i < 2; ++i)

@@ -27,3 +27,36 @@ void hfs_env_rotated(const hfs_lighting *l, double out[3][HFS_SH_N])
     for (int c = 0; c < 3; ++c)
         hfs_sh_rotate_z(l->env_sh[c], l->env_rotate, out[c]);
 }
+
+hfs_key_near hfs_key_near_make(int sub, int n_levels, int k, const hfs_swath *s)
+{
+    hfs_key_near nr = {0, 0, 0, 1.0, 1.0, 1.0, 0.0, {1.0, 0.0}};
+    if (sub == 1 || n_levels < 2)
+        return nr;
+    if (s->full) {
+        nr.n = nr.n_grid = nr.per_dir = 1;
+        return nr;
+    }
+    const double span = 0.5 * (s->n - 1) * s->dphi, centre = s->phi0 + span;
+    /* scales d_m = 2^(m / k) <= reach, at least the finest, at most all
+     * of the pyramid's: a swath of one direction has no sideways */
+    int n = n_levels - 1;
+    if (sin(span) * exp2((double)(n - 1) / k) > HFS_KEY_NEAR_SIDE) {
+        const double reach = HFS_KEY_NEAR_SIDE / sin(span);
+        const int nr_reach = reach > 1.0 ? (int)floor(k * log2(reach) + 1e-9) + 1 : 1;
+        n = nr_reach < n ? nr_reach : n;
+    }
+    /* and one octave more per doubling of the grid's step, each direction
+     * on its own ray: to where the disk's penumbra is a step wide */
+    int n_grid = n + (int)lround(k * log2((double)sub));
+    n_grid = n_grid < n_levels - 1 ? n_grid : n_levels - 1;
+    nr.n = n;
+    nr.n_grid = n_grid;
+    nr.reach = exp2((double)(n_grid - 1) / k);
+    nr.to = exp2((double)n / k);
+    nr.edge = exp2((double)n_grid / k);
+    nr.centre = centre;
+    nr.cs[0] = cos(centre);
+    nr.cs[1] = sin(centre);
+    return nr;
+}

@@ -29,6 +29,38 @@ typedef struct hfs_key_setup {
 
 void hfs_key_setup_make(const hfs_key_light *k, const hfs_quality *q, hfs_key_setup *out);
 
+/* A key light's near search on a sub-sampled grid (DESIGN.md "Key lights
+ * on the 2x2 grid", "Sharp edges on the grid"), what each texel searches
+ * itself, so that a shadow edge falls on its own texel:
+ *   - along the swath's centre azimuth cs, for all its directions: the n
+ *     finest scales (within 0.5 / sin(half the swath's extent) texels,
+ *     HFS_KEY_NEAR_SIDE: no direction lies more than half a texel
+ *     sideways of the centre there), refined, and every crossing of the
+ *     ray with the grid's lines up to `to` = 2^(n / k);
+ *   - along each direction's own ray, every crossing from `to` to `edge`
+ *     = 2^(n_grid / k), one octave more per doubling of the grid's step:
+ *     beyond it the disk's penumbra (2 d sin(alpha) wide at distance d)
+ *     is wider than the grid's step, and the grid's blend is as good;
+ * the grid leaves the n_grid finest scales out and searches from `edge`
+ * on; an occluder of the grid's less than `reach` = 2^((n_grid - 1) / k)
+ * ahead of a texel lends its floor.  A swath of one direction searches the
+ * whole pyramid's reach per texel.  A full swath (a disk over the pole)
+ * has no centre: its finest scale alone (reach 1) is searched in each of
+ * its directions (per_dir), unrefined.  n = 0 (reach 1) at subsample 1
+ * and on a one-level pyramid.  A function of the grid step, the pyramid
+ * (n_levels, k levels per octave) and the swath only, so horizons kept
+ * for a swath stay consistent with it.  The GLES passes
+ * (key_horizons.frag, key_visibility.frag) and the CPU reference
+ * (cpu_grid.c) both take theirs from here. */
+#define HFS_KEY_NEAR_SIDE 0.5
+typedef struct hfs_key_near {
+    int n, n_grid, per_dir;
+    double reach, to, edge; /* texels */
+    double centre;          /* the swath's centre azimuth, radians */
+    double cs[2];           /* its (cos, sin) */
+} hfs_key_near;
+hfs_key_near hfs_key_near_make(int sub, int n_levels, int k, const hfs_swath *s);
+
 /* out[c] = environment channel c rotated about z by l->env_rotate. */
 void hfs_env_rotated(const hfs_lighting *l, double out[3][HFS_SH_N]);
 

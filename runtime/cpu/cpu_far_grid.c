@@ -13,11 +13,9 @@
 
 struct hfs_cpu_far {
     const hfs_field *f;
-    hfs_split split;
+    hfs_cpu_occ_desc d;
     int n_env, n_sub;           /* directions, sub-directions (k n_env)      */
     int gw, gh;                 /* grid receivers                            */
-    int first_far;              /* finest far scale index                    */
-    int refine;
     double tie;
     hfs_horizon_plan *plan;     /* the sub-directions                        */
     double *omega;              /* per worker: n_levels angles               */
@@ -37,19 +35,22 @@ static double height_texels(const hfs_field *f, int i, int j)
 static void far_row(void *ctx, int b, int worker)
 {
     const hfs_cpu_far *g = ctx;
-    const int y = b * g->split.step < g->f->height - 1 ? b * g->split.step : g->f->height - 1;
+    const int st = g->d.step;
+    const int y = b * st < g->f->height - 1 ? b * st : g->f->height - 1;
     double *omega = g->omega + (size_t)worker * (size_t)g->n_levels;
     for (int a = 0; a < g->gw; ++a) {
-        const int x = a * g->split.step < g->f->width - 1 ? a * g->split.step : g->f->width - 1;
+        const int x = a * st < g->f->width - 1 ? a * st : g->f->width - 1;
         float *out = g->pairs + ((size_t)b * (size_t)g->gw + (size_t)a) * (size_t)g->n_sub * 2;
         for (int e = 0; e < g->n_sub; ++e) {
             double slope, dist;
             hfs_horizon_point(g->plan, e, x, y, -HALF_PI, NULL, NULL, omega);
-            const int has = hfs_horizon_occluder(g->plan, e, x, y, omega, 1, g->first_far,
-                                                 g->refine, g->tie, &slope, &dist);
+            const int has = hfs_horizon_occluder(g->plan, e, x, y, omega, 1, g->d.first,
+                                                 g->d.coarsest, g->d.refine, g->tie, &slope,
+                                                 &dist);
             /* and every gap from far-from on (issue 36; env_horizons.frag) */
-            slope = hfs_horizon_gap(g->plan, e, x, y, g->split.from, g->tie,
-                                    has ? slope : -1e30, &dist, NULL);
+            if (g->d.gap_from >= 0.0)
+                slope = hfs_horizon_gap(g->plan, e, x, y, g->d.gap_from, g->tie,
+                                        has ? slope : -1e30, &dist, NULL);
             if (dist > 0.0) {
                 double h = slope * dist;
                 h = h > HFS_SPLIT_MAX_H ? HFS_SPLIT_MAX_H : (h < -HFS_SPLIT_MAX_H ? -HFS_SPLIT_MAX_H : h);
@@ -63,37 +64,35 @@ static void far_row(void *ctx, int b, int worker)
     }
 }
 
-int hfs_cpu_far_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, const hfs_quality *q,
-                       const hfs_split *split, const hfs_swath *env, double tie, int threads,
-                       hfs_cpu_far **out, hfs_error *err)
+int hfs_cpu_occ_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, int offset,
+                       const hfs_cpu_occ_desc *desc, const hfs_swath *env, double tie,
+                       int threads, hfs_cpu_far **out, hfs_error *err)
 {
     *out = NULL;
     hfs_cpu_far *g = calloc(1, sizeof *g);
     if (!g)
-        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the far grid");
+        return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for an occluder grid");
     g->f = f;
-    g->split = *split;
+    g->d = *desc;
     g->n_env = env->n;
-    g->n_sub = env->n * split->k;
-    g->gw = hfs_grid_count(f->width, split->step);
-    g->gh = hfs_grid_count(f->height, split->step);
+    g->n_sub = env->n * desc->k;
+    g->gw = hfs_grid_count(f->width, desc->step);
+    g->gh = hfs_grid_count(f->height, desc->step);
     g->n_levels = hfs_cpu_pyramid_count(pyr);
-    g->first_far = hfs_split_first_far(g->n_levels, hfs_cpu_pyramid_k(pyr), split->from);
-    g->refine = split->far_refine;
     g->tie = tie;
     double *phi = malloc((size_t)g->n_sub * sizeof *phi);
     const int workers = threads < 1 ? 1 : threads;
     g->omega = malloc((size_t)workers * (size_t)g->n_levels * sizeof *g->omega);
     g->pairs = malloc((size_t)g->gw * (size_t)g->gh * (size_t)g->n_sub * 2 * sizeof *g->pairs);
     int rc = !phi || !g->omega || !g->pairs
-                 ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the far grid")
+                 ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for an occluder grid")
                  : HFS_OK;
     hfs_swath sub;
-    hfs_split_swath(env, split->k, &sub);
+    hfs_split_swath(env, desc->k, &sub);
     for (int e = 0; !rc && e < g->n_sub; ++e)
         phi[e] = hfs_swath_phi(&sub, e);
     if (!rc)
-        rc = hfs_horizon_plan_create(pyr, f->dx, f->zscale, q->offset, phi, g->n_sub, &g->plan,
+        rc = hfs_horizon_plan_create(pyr, f->dx, f->zscale, offset, phi, g->n_sub, &g->plan,
                                      err);
     free(phi);
     if (!rc)
@@ -104,6 +103,18 @@ int hfs_cpu_far_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, const hfs
     }
     *out = g;
     return HFS_OK;
+}
+
+int hfs_cpu_far_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, const hfs_quality *q,
+                       const hfs_split *split, const hfs_swath *env, double tie, int threads,
+                       hfs_cpu_far **out, hfs_error *err)
+{
+    const int n_levels = hfs_cpu_pyramid_count(pyr);
+    const hfs_cpu_occ_desc d = {
+        .step = split->step, .k = split->k,
+        .first = hfs_split_first_far(n_levels, hfs_cpu_pyramid_k(pyr), split->from),
+        .coarsest = 0, .refine = split->far_refine, .gap_from = split->from, .plane = 1};
+    return hfs_cpu_occ_create(f, pyr, q->offset, &d, env, tie, threads, out, err);
 }
 
 void hfs_cpu_far_destroy(hfs_cpu_far *g)
@@ -118,12 +129,12 @@ void hfs_cpu_far_destroy(hfs_cpu_far *g)
 
 int hfs_cpu_far_coarsest_near(const hfs_cpu_far *g)
 {
-    return g->first_far + 1;
+    return g->d.first + 1;
 }
 
 void hfs_cpu_far_place_of(const hfs_cpu_far *g, int i, int j, hfs_cpu_far_place *pl)
 {
-    const int s = g->split.step;
+    const int s = g->d.step;
     int a0, b0;
     double tx, ty;
     hfs_grid_axis(i, s, g->f->width, &a0, &tx);
@@ -145,15 +156,17 @@ void hfs_cpu_far_place_of(const hfs_cpu_far *g, int i, int j, hfs_cpu_far_place 
 void hfs_cpu_far_slopes(const hfs_cpu_far *g, const hfs_cpu_far_place *pl, int d,
                         const double n[3], double *slope)
 {
-    for (int h = 0; h < g->split.k; ++h) {
-        const int e = d * g->split.k + h;
+    for (int h = 0; h < g->d.k; ++h) {
+        const int e = d * g->d.k + h;
         double hb = 0.0, db = 0.0;
         for (int r = 0; r < 4; ++r) {
             const float *p = g->pairs + pl->at[r] + 2 * (size_t)e;
             hb += pl->wt[r] * p[0];
             db += pl->wt[r] * p[1];
         }
-        slope[h] = hfs_split_far_slope(hb, db, pl->dz, g->split.step);
+        slope[h] = hfs_split_far_slope(hb, db, pl->dz, g->d.step);
+        if (!g->d.plane)
+            continue;
         double cs, sn;
         hfs_horizon_plan_dir(g->plan, e, &cs, &sn);
         if (!hfs_split_above_plane(slope[h], n[0] * cs + n[1] * sn, n))

@@ -3,7 +3,9 @@
  * CPU reference: each far occluder at the receivers of the coarse grid, for
  * the K sub-directions of every environment direction, and their blend at
  * a texel.  The GLES path computes the same pairs in its far pass
- * (pass_env_far.c) and blends them by texture filtering.
+ * (env_far_grid.c) and blends them by texture filtering.  The same grid,
+ * one sub-direction a direction, holds the slice path's near occluders on
+ * a sub-sampled visibility grid (env_horizons.frag HFS_PAIRS; cpu_grid.h).
  */
 #ifndef HFS_CPU_FAR_GRID_H
 #define HFS_CPU_FAR_GRID_H
@@ -15,11 +17,30 @@
 
 typedef struct hfs_cpu_far hfs_cpu_far;
 
-/* The far grid of field f over pyramid pyr for the environment's swath env
- * (its n directions, each split into split->k), split->from and
- * split->step as split_horizon.h says; q gives refine and the level offset,
- * tie the slope tie (hfs_horizon_tie_slope).  Computed on `threads`
- * workers.  Returns HFS_OK, HFS_E_NOMEM or HFS_E_INVALID. */
+/* What a grid of occluders holds: each receiver's occluder (height over
+ * it, distance, texels; env_horizons.frag's pairs) in each of k
+ * sub-directions of every direction of a full swath. */
+typedef struct hfs_cpu_occ_desc {
+    int step;        /* receivers every `step` texels, the last on the edge */
+    int k;           /* sub-directions a direction (hfs_split_swath; 1: itself) */
+    int first;       /* the finest scale searched, going coarser ... */
+    int coarsest;    /* ... at most to this one (hfs_horizon_occluder) */
+    int refine;      /* samples refining the max */
+    double gap_from; /* then the gap search from this distance; < 0: none */
+    int plane;       /* a texel counts a slope only where it rises above its
+                        sub-direction's tangent plane (hfs_split_above_plane) */
+} hfs_cpu_occ_desc;
+
+/* The grid desc of field f over pyramid pyr (level offset `offset`) for
+ * the full swath env; tie the slope tie (hfs_horizon_tie_slope).  Computed
+ * on `threads` workers.  Returns HFS_OK, HFS_E_NOMEM or HFS_E_INVALID. */
+int hfs_cpu_occ_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, int offset,
+                       const hfs_cpu_occ_desc *desc, const hfs_swath *env, double tie,
+                       int threads, hfs_cpu_far **out, hfs_error *err);
+
+/* Split horizons' far grid (hfs_cpu_occ_create with split's far_step,
+ * far_dirs, the far scales, far_refine, the gap search from far-from and
+ * the plane rule); q gives the level offset. */
 int hfs_cpu_far_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, const hfs_quality *q,
                        const hfs_split *split, const hfs_swath *env, double tie, int threads,
                        hfs_cpu_far **out, hfs_error *err);
@@ -40,11 +61,12 @@ typedef struct hfs_cpu_far_place {
 } hfs_cpu_far_place;
 void hfs_cpu_far_place_of(const hfs_cpu_far *g, int i, int j, hfs_cpu_far_place *pl);
 
-/* The far slopes at a texel (its place pl, unit normal n) of environment
+/* The slopes at a texel (its place pl, unit normal n) of environment
  * direction d's k sub-directions (slope[0..k-1]): each occluder blended
  * between the receivers and moved to the texel's height
- * (hfs_split_far_slope); -1e30 where there is none or where it does not
- * rise above its sub-direction's tangent plane (hfs_split_above_plane). */
+ * (hfs_split_far_slope); -1e30 where there is none or (desc.plane) where
+ * it does not rise above its sub-direction's tangent plane
+ * (hfs_split_above_plane). */
 void hfs_cpu_far_slopes(const hfs_cpu_far *g, const hfs_cpu_far_place *pl, int d,
                         const double n[3], double *slope);
 

@@ -239,7 +239,7 @@ double hfs_horizon_env_from_maxd(double maxd, double floor)
 
 /* The distance factor 2^(u/k) of refining sample q of `refine` (k levels
  * per octave); gles_lib.frag hfs_refine_about spells the same. */
-static double refine_factor(int q, int refine, int k)
+double hfs_horizon_refine_factor(int q, int refine, int k)
 {
     return exp2((-1.0 + 2.0 * (q + 1) / (refine + 1)) / k);
 }
@@ -257,7 +257,7 @@ static double refine_about(const hfs_horizon_plan *hp, int dir, int i, int j, in
     const double *r = hfs_cpu_pyramid_full(hp->p, t->read);
     const double h0 = r[(size_t)j * hp->stride + (size_t)i];
     for (int q = 0; q < refine; ++q) {
-        const double f = refine_factor(q, refine, k);
+        const double f = hfs_horizon_refine_factor(q, refine, k);
         int ix, iy, xlo, xhi, ylo, yhi;
         double fx, fy;
         split_offset(d0 * f * hp->cs[2 * dir], &ix, &fx);
@@ -312,13 +312,13 @@ double hfs_horizon_refined_within(const hfs_horizon_plan *hp, int dir, int i, in
 }
 
 int hfs_horizon_occluder(const hfs_horizon_plan *hp, int dir, int i, int j,
-                         const double *omega, size_t stride, int first, int refine, double tie,
-                         double *slope, double *dist)
+                         const double *omega, size_t stride, int first, int coarsest, int refine,
+                         double tie, double *slope, double *dist)
 {
     double best = -1e30, ref = -1e30;
     int bi = first;
     *dist = 0.0;
-    for (int s = first; s >= 0; --s) { /* fine to coarse, as env_horizons.frag */
+    for (int s = first; s >= coarsest; --s) { /* fine to coarse, as env_horizons.frag */
         const double o = omega[(size_t)s * stride];
         if (!(o > -HALF_PI))
             break; /* off the grid: so is every farther scale */
@@ -336,6 +336,35 @@ int hfs_horizon_occluder(const hfs_horizon_plan *hp, int dir, int i, int j,
         best = refine_about(hp, dir, i, j, bi, refine, best, dist);
     *slope = best;
     return *dist > 0.0;
+}
+
+double hfs_horizon_key_grid(const hfs_horizon_plan *hp, int dir, int i, int j,
+                            const double *omega, double floor, int refine, double tie, int skip,
+                            double gap_from, double *dist, int *seen)
+{
+    const double tfl = tan(floor);
+    double best = -DBL_MAX, ref = 0.0;
+    int bi = -1;
+    *seen = 0;
+    *dist = 0.0;
+    for (int s = hp->n_levels - 1 - skip; s >= 0; --s) { /* fine to coarse */
+        const int in_grid = omega[s] > HFS_HORIZON_OFF;
+        const double sl = in_grid ? tan(omega[s]) : tfl;
+        *seen |= in_grid;
+        if (bi < 0 || sl > ref + HFS_HORIZON_TIE * fabs(ref) + tie) {
+            ref = sl;
+            bi = s;
+        }
+        best = sl > best ? sl : best;
+        if (!in_grid)
+            break;
+    }
+    if (bi < 0)
+        return tfl;
+    *dist = hfs_cpu_pyramid_spacing(hp->p, bi);
+    best = refine_about(hp, dir, i, j, bi, refine, best, dist);
+    /* and every band between the scales: no narrow occluder is stepped over */
+    return hfs_horizon_gap(hp, dir, i, j, gap_from, tie, best, dist, NULL);
 }
 
 double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double t_first,

@@ -113,6 +113,11 @@ double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
                            const double *omega, size_t stride, double floor, int refine,
                            double tie, int seeded, int skip);
 
+/* The distance factor 2^(u/k), u = -1 + 2 (q + 1) / (refine + 1), of
+ * refining sample q of `refine` (k levels per octave): strictly between
+ * a scale's neighbours (gles_lib.frag hfs_refine_factor). */
+double hfs_horizon_refine_factor(int q, int refine, int k);
+
 /* hfs_horizon_refined over the scales coarsest..N-1-skip only (the near
  * part of split horizons, split_horizon.h; coarsest = 0: all). */
 double hfs_horizon_refined_within(const hfs_horizon_plan *hp, int dir, int i, int j,
@@ -131,17 +136,38 @@ double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double
                        double tie, double best, double *dist, long *reads);
 
 /* The far occluder of split horizons (split_horizon.h) at receiver (i, j)
- * in direction dir, as env_horizons.frag's far pass finds it: going from
- * scale `first` (the finest far one) to coarser ones until one is off the
- * grid (omega[s * stride] = -pi/2: the row form's angles with floor -pi/2),
+ * in direction dir, as env_horizons.frag's far pass finds it (and, with
+ * `coarsest` > 0, its near pass on a sub-sampled grid): going from
+ * scale `first` (the finest far one) to coarser ones, at most to
+ * `coarsest`, until one is off the grid (omega[s * stride] = -pi/2: the row form's angles with floor -pi/2),
  * the largest slope, then `refine` samples about the scale that leads (a
  * scale takes over when it beats the leader by more than the tie, as in
  * hfs_horizon_refined, unseeded).  *slope: the largest slope (-1e30 if
  * none), *dist its distance in texels (0 if none).  Returns whether there
  * is one. */
 int hfs_horizon_occluder(const hfs_horizon_plan *hp, int dir, int i, int j,
-                         const double *omega, size_t stride, int first, int refine, double tie,
-                         double *slope, double *dist);
+                         const double *omega, size_t stride, int first, int coarsest, int refine,
+                         double tie, double *slope, double *dist);
+
+/* A key light's horizon at receiver (i, j) of a sub-sampled grid, as
+ * key_horizons.frag's grid pass finds it with `refine` > 0 (DESIGN.md
+ * "Key lights on the 2x2 grid"): over the scales from N-1-skip (the
+ * `skip` finest are each texel's own near search) to coarser ones, the
+ * plain max of their slopes, the first scale off the grid contributing
+ * the floor's slope and ending the search (omega: the row or point
+ * form's angles made with floor HFS_HORIZON_OFF, which marks the off-grid
+ * scales), then `refine` samples about the leading scale (a scale takes
+ * over past the tie, from the finest one's own), then the gap search
+ * from gap_from.  Unlike hfs_horizon_refined it is not raised to the
+ * floor: it is the occluder a neighbouring texel, whose floor differs,
+ * borrows.  Returns the slope (tan floor where no scale is searched);
+ * *dist its distance (the leading scale's, or the refining sample's or
+ * crossing's that raised it), *seen whether some scale's sample lay on the
+ * grid. */
+#define HFS_HORIZON_OFF (-4.0)
+double hfs_horizon_key_grid(const hfs_horizon_plan *hp, int dir, int i, int j,
+                            const double *omega, double floor, int refine, double tie, int skip,
+                            double gap_from, double *dist, int *seen);
 
 /* Key-light horizon, SN08's: max(floor, max over knots and midpoints of the
  * cubic B-spline of omega[0], omega[stride], ..., omega[(n-1)*stride]),

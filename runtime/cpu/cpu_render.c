@@ -49,6 +49,7 @@
 #include "env_map_slices.h"
 #include "env_open.h"
 #include "backends.h"
+#include "cpu_grid.h"
 #include "cpu_horizon.h"
 #include "cpu_local.h"
 #include "cpu_pyramid.h"
@@ -173,9 +174,13 @@ static void env_texel(const render_ctx *c, worker_scratch *s, const swath_job *j
                 hfs_map_slices_occluded_mean(&c->map_slices, d, n, x, nx, e);
         }
     } else {
-        for (int d = 0; d < nd; ++d)
-            s->om[d] = omega[(size_t)d * w + i];
-        hfs_visibility_eval(job->vis, s->om, v);
+        if (c->vgrid) { /* a sub-sampled grid (cpu_grid.h) */
+            hfs_cpu_grid_env_v(c, i, j, n, v);
+        } else {
+            for (int d = 0; d < nd; ++d)
+                s->om[d] = omega[(size_t)d * w + i];
+            hfs_visibility_eval(job->vis, s->om, v);
+        }
         hfs_sh_product(hn, v, t);
     }
     for (int ch = 0; ch < 3; ++ch)
@@ -189,12 +194,48 @@ static void env_texel(const render_ctx *c, worker_scratch *s, const swath_job *j
     }
 }
 
+/* trace_row on a sub-sampled grid (cpu_grid.h): the slice path's
+ * horizons from the grid's near occluders, each key light's from its
+ * grid and its near search; Legendre and tables read V from the grid in
+ * env_texel. */
+static void trace_row_grid(const render_ctx *c, worker_scratch *s, int j)
+{
+    const int w = c->w;
+    if (c->near)
+        hfs_cpu_grid_env_places(c, s, j);
+    for (int q = 0; q < c->n_jobs; ++q) {
+        const swath_job *job = &c->jobs[q];
+        if (job->is_env && !c->near)
+            continue;
+        const hfs_horizon_plan *plan = job->plan ? job->plan : c->jobs[0].plan;
+        for (int i = 0; !job->is_env && i < w; ++i)
+            s->key_near[i] = hfs_cpu_grid_key_near(c, job, i, j);
+        for (int d = 0; d < job->swath.n; ++d) {
+            double cs, sn;
+            hfs_horizon_plan_dir(plan, d, &cs, &sn);
+            double *fl = job->is_env ? s->floor_row : s->floors + c->omega_at[q] + (size_t)d * w;
+            double *om = s->omega + c->omega_at[q] + (size_t)d * w;
+            for (int i = 0; i < w; ++i)
+                fl[i] = hfs_horizon_floor(s->normals + 3 * i, cs, sn);
+            if (job->is_env)
+                hfs_cpu_grid_env_row(c, s, d, j, fl, om);
+            for (int i = 0; !job->is_env && i < w; ++i)
+                om[i] = hfs_cpu_grid_key_horizon(c, job, d, i, j, s->normals + 3 * i, fl[i],
+                                                 s->key_near[i]);
+        }
+    }
+}
+
 /* Horizons of row j for every job: omega (and, for key lights, the floors
  * that make V_open).  Directions are traced one at a time over the whole row
  * so that each (direction, scale) streams through contiguous memory. */
 static void trace_row(const render_ctx *c, worker_scratch *s, int j)
 {
     const int w = c->w;
+    if (c->sub > 1) {
+        trace_row_grid(c, s, j);
+        return;
+    }
     for (int q = 0; q < c->n_jobs; ++q) {
         const swath_job *job = &c->jobs[q];
         if (job->shares_env)
@@ -360,6 +401,8 @@ static int build_frame(render_ctx *c, const hfs_lighting *l, const hfs_quality *
     /* Pyramid, plans, visibility. */
     const int n_levels = hfs_pyramid_level_count(c->w, c->h, q->k);
     c->n_levels = n_levels;
+    c->k = q->k;
+    c->sub = q->subsample > 1 ? q->subsample : 1;
     c->refine = q->refine;
     c->tie = tie_slope(f);
     int rc = hfs_cpu_pyramid_create(f, q->k, hfs_pyramid_read_level(n_levels, q->k, q->offset, 0),
@@ -372,7 +415,8 @@ static int build_frame(render_ctx *c, const hfs_lighting *l, const hfs_quality *
     /* Slice lighting: the environment's slices; key lights keep Legendre. */
     const int slice = q->visibility == HFS_VIS_SLICE;
     if ((rc = hfs_cpu_ctx_build_all_visibility(c, slice ? HFS_VIS_LEGENDRE : q->visibility, threads, err)) ||
-        (rc = hfs_cpu_ctx_make_slices(c, l, q, *pyr, threads, err)))
+        (rc = hfs_cpu_ctx_make_slices(c, l, q, *pyr, threads, err)) ||
+        (rc = hfs_cpu_grid_build(c, q, *pyr, threads, err)))
         return rc;
 
     /* Local lights (issue 4): NULL when none contributes. */
@@ -413,6 +457,7 @@ static void free_frame(render_ctx *c, int threads, hfs_cpu_pyramid *pyr)
             hfs_visibility_destroy(c->jobs[j].vis);
     }
     hfs_cpu_far_destroy(c->far);
+    hfs_cpu_grid_free(c);
     hfs_slice_table_free(&c->slices);
     hfs_map_slices_free(&c->map_slices);
     free(c->env_gloss);

@@ -2,8 +2,8 @@
  * cpu_render_ctx.h — the CPU reference's per-frame state (cpu_render.c
  * shades with it, cpu_render_setup.c builds it): the swath jobs (the
  * environment's and each key light's), the workers' scratch rows, and the
- * frame's lighting in the form the texels read it.  Private to those two
- * files.
+ * frame's lighting in the form the texels read it; on a sub-sampled grid
+ * what cpu_grid.c builds.  Private to those three files.
  */
 #ifndef HFS_CPU_RENDER_CTX_H
 #define HFS_CPU_RENDER_CTX_H
@@ -15,6 +15,7 @@
 #include "env_map_slices.h"
 #include "gloss.h"
 #include "hfshade.h"
+#include "key_setup.h"
 #include "sh.h"
 #include "slice_light.h"
 #include "visibility.h"
@@ -33,6 +34,10 @@ typedef struct swath_job {
     double le[3];              /* radiance per channel */
     double l_sh[HFS_SH_N];     /* SH of the disk, unit radiance */
     double l_norm;             /* |l_sh| */
+    /* on a sub-sampled grid (cpu_grid.h) */
+    hfs_key_near near;         /* the texels' near search */
+    double *grid;              /* per receiver and direction: tan of the
+                                  horizon, its distance (0: none) */
 } swath_job;
 
 typedef struct worker_scratch {
@@ -45,13 +50,23 @@ typedef struct worker_scratch {
     double *om, *fl;           /* gathered per texel: max n */
     double *local_lo;          /* local lights (issue 4): W x 3, or NULL */
     double *local_sp;          /* their glossy term: W x 3 when glossy, or NULL */
+    hfs_cpu_far_place *grid_pl; /* sub-sampled slice path: W places (cpu_grid.h) */
+    double *key_near;          /* sub-sampled grid: W, a key light's near search */
 } worker_scratch;
 
 typedef struct render_ctx {
     const hfs_field *f;
     hfs_image *out;
     int w, h, n_levels;
+    int k;                     /* the pyramid's levels per octave */
     int refine;                /* hfs_quality.refine */
+    /* the visibility grid (hfs_quality.subsample; cpu_grid.h): receivers
+     * every sub texels, gw x gh of them; sub 1 computes every texel as
+     * its own receiver, without these */
+    int sub, gw, gh;
+    hfs_cpu_far *near;         /* slice path: the grid's near occluders */
+    double *vgrid;             /* Legendre, tables: V_env - hemisphere, 16 a receiver */
+    double h_hemi[HFS_ZH_N];   /* the hemisphere's ZH (hfs_zh_cap(pi/2)) */
     double tie;                /* its absolute slope tie, hfs_horizon_tie_slope */
     double rho_pi;             /* albedo / pi */
     double h_zonal[HFS_ZH_N];  /* clamped cosine */

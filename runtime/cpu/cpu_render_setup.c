@@ -47,6 +47,8 @@ void hfs_cpu_ctx_free_scratch(worker_scratch *s)
     free(s->fl);
     free(s->local_lo);
     free(s->local_sp);
+    free(s->grid_pl);
+    free(s->key_near);
 }
 
 /* The swath jobs: the environment's (jobs[0]) and each contributing key
@@ -173,7 +175,11 @@ int hfs_cpu_ctx_alloc_scratch(render_ctx *c, int threads, int max_n, hfs_error *
             s->local_lo = malloc((size_t)w * 3 * sizeof(double));
         if (local && c->gloss.on)
             s->local_sp = malloc((size_t)w * 3 * sizeof(double));
-        if (!s->normals || !s->floor_row || !s->maxd || !s->levels || !s->omega ||
+        if (c->near)
+            s->grid_pl = malloc((size_t)w * sizeof *s->grid_pl);
+        if (c->sub > 1)
+            s->key_near = malloc((size_t)w * sizeof *s->key_near);
+        if ((c->near && !s->grid_pl) || (c->sub > 1 && !s->key_near) || !s->normals || !s->floor_row || !s->maxd || !s->levels || !s->omega ||
             !s->floors || !s->om || !s->fl || (local && !s->local_lo) ||
             (local && c->gloss.on && !s->local_sp))
             return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for %d workers",

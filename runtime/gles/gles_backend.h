@@ -27,6 +27,7 @@
 #include "gl_caps.h"
 #include "gl_context.h"
 #include "gloss.h"
+#include "key_setup.h"
 #include "lights.h"
 #include "pass.h"
 #include "plan.h"
@@ -241,33 +242,9 @@ int hfs_gles_draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo,
 int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, double *sum,
                         hfs_error *err);
 
-/* A key light's near search on a sub-sampled grid (DESIGN.md "Key lights
- * on the 2x2 grid", "Sharp edges on the grid"), what the factor pass
- * searches at every texel, so that a shadow edge falls on its own texel:
- *   - along the swath's centre azimuth cs, for all its directions: the n
- *     finest scales (within 0.5 / sin(half the swath's extent) texels,
- *     HFS_GLES_KEY_NEAR_SIDE: no direction lies more than half a texel
- *     sideways of the centre there), refined, and every crossing of the
- *     ray with the grid's lines up to `to` = 2^(n / k);
- *   - along each direction's own ray, every crossing from `to` to `edge`
- *     = 2^(n_grid / k), one octave more per doubling of the grid's step:
- *     beyond it the disk's penumbra (2 d sin(alpha) wide at distance d)
- *     is wider than the grid's step, and the grid's blend is as good;
- * the grid pass leaves the n_grid finest scales out and searches from
- * `edge` on; an occluder of the grid's less than `reach` = 2^((n_grid - 1)
- * / k) ahead of a texel lends its floor.  A swath of one direction
- * searches the whole pyramid's reach per texel.  A full swath (a disk
- * over the pole) has no centre: its finest scale alone (reach 1) is
- * searched in each of its directions (per_dir), unrefined.  n = 0 (reach
- * 1) at subsample 1.  A function of the layout and the swath only, so
- * horizons kept for a swath stay consistent with it. */
-#define HFS_GLES_KEY_NEAR_SIDE 0.5
-typedef struct hfs_gles_key_near {
-    int n, n_grid, per_dir;
-    float reach, to, edge;
-    float cs[2];
-} hfs_gles_key_near;
-hfs_gles_key_near hfs_gles_key_near_make(const hfs_gles_layout *L, const hfs_swath *s);
+/* A key light's near search on layout L's grid (key_setup.h
+ * hfs_key_near_make, the CPU reference's too). */
+hfs_key_near hfs_gles_key_near_make(const hfs_gles_layout *L, const hfs_swath *s);
 
 /* A key light's irradiance at normal incidence, pi sin^2 alpha: the
  * largest value of its factor (never 0 in float). */

@@ -19,36 +19,9 @@
 
 #define DIRS_PER_DRAW 4 /* 4 RGBA targets (ES 3.0's minimum), one direction each */
 
-hfs_gles_key_near hfs_gles_key_near_make(const hfs_gles_layout *L, const hfs_swath *s)
+hfs_key_near hfs_gles_key_near_make(const hfs_gles_layout *L, const hfs_swath *s)
 {
-    hfs_gles_key_near nr = {0, 0, 0, 1.0f, 1.0f, 1.0f, {1.0f, 0.0f}};
-    if (L->sub == 1 || L->n_levels < 2)
-        return nr;
-    if (s->full) {
-        nr.n = nr.n_grid = nr.per_dir = 1;
-        return nr;
-    }
-    const double span = 0.5 * (s->n - 1) * s->dphi, centre = s->phi0 + span;
-    /* scales d_m = 2^(m / k) <= reach, at least the finest, at most all
-     * of the pyramid's: a swath of one direction has no sideways */
-    int n = L->n_levels - 1;
-    if (sin(span) * exp2((double)(n - 1) / L->k) > HFS_GLES_KEY_NEAR_SIDE) {
-        const double reach = HFS_GLES_KEY_NEAR_SIDE / sin(span);
-        const int nr_reach = reach > 1.0 ? (int)floor(L->k * log2(reach) + 1e-9) + 1 : 1;
-        n = nr_reach < n ? nr_reach : n;
-    }
-    /* and one octave more per doubling of the grid's step, each direction
-     * on its own ray: to where the disk's penumbra is a step wide */
-    int n_grid = n + (int)lround(L->k * log2((double)L->sub));
-    n_grid = n_grid < L->n_levels - 1 ? n_grid : L->n_levels - 1;
-    nr.n = n;
-    nr.n_grid = n_grid;
-    nr.reach = (float)exp2((double)(n_grid - 1) / L->k);
-    nr.to = (float)exp2((double)n / L->k);
-    nr.edge = (float)exp2((double)n_grid / L->k);
-    nr.cs[0] = (float)cos(centre);
-    nr.cs[1] = (float)sin(centre);
-    return nr;
+    return hfs_key_near_make(L->sub, L->n_levels, L->k, s);
 }
 
 static int present(const hfs_gles_frame *fr)

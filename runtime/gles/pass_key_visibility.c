@@ -30,7 +30,7 @@ static double factor_fetches(const hfs_gles_layout *L, const hfs_swath *s, int r
 {
     if (L->sub == 1)
         return 2.0 + s->n;
-    const hfs_gles_key_near nr = hfs_gles_key_near_make(L, s);
+    const hfs_key_near nr = hfs_gles_key_near_make(L, s);
     if (nr.per_dir)
         return 2.0 + 4.0 + 5.0 * s->n;
     const double dir_gap = 2.0 * ceil(log2(nr.edge / nr.to));
@@ -90,14 +90,14 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
         if (!which[q])
             continue;
         hfs_gles_set_i1(gl, prog, "u_kb", fr->keys[q].rec_off);
-        const hfs_gles_key_near nr = hfs_gles_key_near_make(L, &fr->keys[q].k.swath);
+        const hfs_key_near nr = hfs_gles_key_near_make(L, &fr->keys[q].k.swath);
         hfs_gles_set_f1(gl, prog, "u_emax", (float)hfs_gles_key_emax(&fr->keys[q].k));
         hfs_gles_set_i1(gl, prog, "u_near", nr.n);
         hfs_gles_set_i1(gl, prog, "u_near_dir", nr.per_dir);
-        hfs_gles_set_f1(gl, prog, "u_reach", nr.reach);
-        hfs_gles_set_f2(gl, prog, "u_near_cs", nr.cs[0], nr.cs[1]);
-        hfs_gles_set_f1(gl, prog, "u_near_to", nr.to);
-        hfs_gles_set_f1(gl, prog, "u_edge", nr.edge);
+        hfs_gles_set_f1(gl, prog, "u_reach", (float)nr.reach);
+        hfs_gles_set_f2(gl, prog, "u_near_cs", (float)nr.cs[0], (float)nr.cs[1]);
+        hfs_gles_set_f1(gl, prog, "u_near_to", (float)nr.to);
+        hfs_gles_set_f1(gl, prog, "u_edge", (float)nr.edge);
         if ((rc = hfs_gles_fbo_layers(gl, g->r.kf_fbo, g->r.kf, q, 1, "key factor", err)))
             return rc;
         hfs_gles_draw(gl, g->r.kf_fbo, L->w, L->h);
