@@ -23,7 +23,8 @@
  *     there.
  *   - the CPU reference, split horizons off: 8.2e-7 (rounding; the same
  *     samples).  With split horizons: 2.2e-6 at subsample 2 (far-from
- *     16), and 4.1e-3 at subsample 1 (far-from 8), where the far part's
+ *     16; since the CPU computes the 2x2 grid, issue 36 item 5, 0 there,
+ *     without key lights: see run()), and 4.1e-3 at subsample 1 (far-from 8), where the far part's
  *     finest scale (11.3 texels) lies off the field: the far search stops
  *     there and never refines about it, while on the padded field that
  *     scale lands in the border and its refinement (8.6..14.9 texels)
@@ -138,7 +139,15 @@ static void run(hfs_renderer *r, const char *backend, int sub)
             pad_invariance(r, "gles", sub, &gles_settings[sub == 1 ? 0 : 1][i]);
         return;
     }
-    /* Split horizons off, and on (subsample 1, 2: far-from 8, 16). */
+    /* Split horizons off, and on (subsample 1, 2: far-from 8, 16).  At
+     * subsample 2 without key lights, as GLES's: the CPU computes the 2x2
+     * grid (cpu_grid.h), and a key light's grid occluder takes its
+     * receiver's floor where the search leaves the grid
+     * (key_horizons.frag, cpu_horizon.h hfs_horizon_key_grid), which the
+     * texels around it borrow; padded, that sample lies in the border
+     * and gives the border's own, far lower slope: 2.8e-2 of the image's
+     * maximum (0 with the floor left out there, a temporary edit).  The
+     * sky alone: 0. */
     const mm_setting settings[2][2] = {
         {{HFS_PRECISION_FP32, 0, 0, 1, 1e-6, 1e-6}, {HFS_PRECISION_FP32, 1, 0, 1, 4.9e-3, 1e-6}},
         {{HFS_PRECISION_FP32, 0, 0, 0, 1e-6, 1e-6}, {HFS_PRECISION_FP32, 1, 0, 0, 2.7e-6, 1e-6}},

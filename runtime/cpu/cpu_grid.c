@@ -16,7 +16,7 @@
 /* key_horizons.frag HFS_KEY_TAN_ANGLE: horizons stored as tangents are
  * clamped to this elevation (tan < 1e4) */
 #define KEY_TAN_ANGLE 1.5706963
-#define MAX_LEVELS 256
+#define MAX_LEVELS 512 /* k 16 on a side of 2^31 needs 497 */
 
 /* The nearest fp16 value of a distance v >= 0 (ties to even): the GLES key
  * pass rounds D to fp16 in every precision (key_horizons.frag), so that
@@ -141,16 +141,15 @@ static void env_receiver(const render_ctx *c, int x, int y, const double n[3], d
 static void grid_row(void *ctx, int b, int worker)
 {
     const render_ctx *c = ctx;
-    (void)worker;
     double omega[MAX_LEVELS];
-    double *om = c->vgrid ? malloc((size_t)c->jobs[0].swath.n * sizeof *om) : NULL;
+    double *om = c->scratch[worker].om; /* the most directions a job has */
     const int y = receiver(b, c->sub, c->h);
     for (int a = 0; a < c->gw; ++a) {
         const int x = receiver(a, c->sub, c->w);
         const size_t at = (size_t)b * (size_t)c->gw + (size_t)a;
         double n[3];
         hfs_field_normal(c->f, x, y, n);
-        if (c->vgrid && om)
+        if (c->vgrid)
             env_receiver(c, x, y, n, omega, om, c->vgrid + at * HFS_SH_N);
         for (int q = 0; q < c->n_jobs; ++q) {
             const swath_job *job = &c->jobs[q];
@@ -158,7 +157,6 @@ static void grid_row(void *ctx, int b, int worker)
                 key_receiver(c, job, x, y, n, omega, job->grid + at * 2 * (size_t)job->swath.n);
         }
     }
-    free(om);
 }
 
 /* The slice path's near occluders (env_horizons.frag HFS_PAIRS): from
@@ -292,13 +290,16 @@ double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d
     const hfs_horizon_plan *plan = job->plan ? job->plan : c->jobs[0].plan;
     double cs, sn, t[2];
     hfs_horizon_plan_dir(plan, d, &cs, &sn);
-    int a[2], x[2][2];
-    hfs_grid_axis(i, c->sub, c->w, &a[0], &t[0]);
-    hfs_grid_axis(j, c->sub, c->h, &a[1], &t[1]);
-    for (int k = 0; k < 2; ++k) { /* the receivers' grid points, each axis */
-        x[k][0] = receiver(a[k], c->sub, k ? c->h : c->w);
-        x[k][1] = receiver(a[k] + 1 < (k ? c->gh : c->gw) ? a[k] + 1 : a[k], c->sub,
-                           k ? c->h : c->w);
+    /* per axis: the receivers a[0], a[1] around the texel (key_visibility.frag
+     * grid_cell), their grid points x and the texel's weight t */
+    int a[2][2], x[2][2];
+    hfs_grid_axis(i, c->sub, c->w, &a[0][0], &t[0]);
+    hfs_grid_axis(j, c->sub, c->h, &a[1][0], &t[1]);
+    const int count[2] = {c->gw, c->gh}, len[2] = {c->w, c->h};
+    for (int k = 0; k < 2; ++k) {
+        a[k][1] = a[k][0] + 1 < count[k] ? a[k][0] + 1 : a[k][0];
+        x[k][0] = receiver(a[k][0], c->sub, len[k]);
+        x[k][1] = receiver(a[k][1], c->sub, len[k]);
     }
     const double zp = hfs_field_z(c->f, i, j) / c->f->dx;
     /* the floor's slope, as the stored tangents are clamped */
@@ -307,9 +308,8 @@ double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d
     double sl[4];
     for (int k = 0; k < 4; ++k) {
         const int gx = x[0][k % 2], gy = x[1][k / 2];
-        const int ga = k % 2 ? (a[0] + 1 < c->gw ? a[0] + 1 : a[0]) : a[0];
-        const int gb = k / 2 ? (a[1] + 1 < c->gh ? a[1] + 1 : a[1]) : a[1];
-        const double *g = job->grid + (((size_t)gb * c->gw + ga) * job->swath.n + d) * 2;
+        const size_t at = (size_t)a[1][k / 2] * (size_t)c->gw + (size_t)a[0][k % 2];
+        const double *g = job->grid + (at * (size_t)job->swath.n + (size_t)d) * 2;
         const double ahead = g[1] + (gx - i) * cs + (gy - j) * sn;
         /* the height term only for occluders 2 sub texels away (u_far) */
         const double rz = g[1] >= 2 * c->sub ? hfs_field_z(c->f, gx, gy) / c->f->dx - zp : 0.0;

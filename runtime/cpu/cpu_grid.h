@@ -24,9 +24,10 @@
  *                is that one function).
  *
  * Where the CPU still differs from GLES at these subsamples (fp16 storage
- * of the occluders, float grid coordinates and filtering): DESIGN.md
- * "One reference".  Private to the CPU renderer (cpu_render.c,
- * cpu_render_setup.c).
+ * of the occluders, float grid coordinates and filtering, ties of the
+ * occluders' distances): DESIGN.md "One reference at every subsample".
+ * Local lights, bounces and points stay at full resolution.  Private to
+ * the CPU renderer (cpu_render.c, cpu_render_setup.c).
  */
 #ifndef HFS_CPU_GRID_H
 #define HFS_CPU_GRID_H
@@ -35,7 +36,8 @@
 
 /* Builds the frame's grids when c->sub > 1 (nothing at subsample 1): the
  * environment's (slice path: near occluders; Legendre and tables: V) and
- * each key light's.  Needs the jobs, plans and visibility objects. */
+ * each key light's.  Needs the jobs, plans, visibility objects, the slice
+ * path's far grid and the workers' scratch. */
 int hfs_cpu_grid_build(render_ctx *c, const hfs_quality *q, const hfs_cpu_pyramid *pyr,
                        int threads, hfs_error *err);
 void hfs_cpu_grid_free(render_ctx *c);

@@ -12,7 +12,9 @@
  *      (folded Legendre matrices or wedge tables);
  *   3. per row, per direction: horizons of the whole row (environment: fast
  *      level max; key lights: B-spline max over scale), floors from the
- *      row's normals;
+ *      row's normals; on a sub-sampled visibility grid (subsample 2, 4)
+ *      the horizons from the grid's receivers as the GLES path forms them
+ *      (cpu_grid.h, built once per frame: trace_row_grid, env_texel);
  *   4. per texel: H(N), then
  *        environment  Lo += rho/pi * (H * V_env) . L_env          (per channel)
  *        key light    Lo += rho/pi * Le * E_cap(N.d, alpha) * clamp(num/den, 0, 1)
@@ -35,7 +37,12 @@
  * Deliberate choices (also in DESIGN.md "Shading"): den counts as zero when
  * den <= 1e-12 |L_key| |V_open| (scales with the swath, so a tiny alpha keeps
  * its light); a disk wholly below the tangent plane (E_cap = 0) skips the
- * visibility work; subsample and precision are the GLES path's only.
+ * visibility work.  subsample is honoured (subsample 1: every texel its
+ * own receiver; 2 and 4: cpu_grid.h, DESIGN.md "One reference at every
+ * subsample", which also says where the CPU still differs from GLES
+ * there: fp16 storage, float grid coordinates, ties of the occluders'
+ * distances; local lights, bounces and points stay at full resolution);
+ * precision is the GLES path's only (the CPU is double throughout).
  *
  * Local lights (issue 4) live in cpu_local.c (DESIGN.md "Local lights"); this
  * file only hooks them in, marked "local lights (issue 4)": the module is
@@ -415,8 +422,7 @@ static int build_frame(render_ctx *c, const hfs_lighting *l, const hfs_quality *
     /* Slice lighting: the environment's slices; key lights keep Legendre. */
     const int slice = q->visibility == HFS_VIS_SLICE;
     if ((rc = hfs_cpu_ctx_build_all_visibility(c, slice ? HFS_VIS_LEGENDRE : q->visibility, threads, err)) ||
-        (rc = hfs_cpu_ctx_make_slices(c, l, q, *pyr, threads, err)) ||
-        (rc = hfs_cpu_grid_build(c, q, *pyr, threads, err)))
+        (rc = hfs_cpu_ctx_make_slices(c, l, q, *pyr, threads, err)))
         return rc;
 
     /* Local lights (issue 4): NULL when none contributes. */
@@ -427,7 +433,8 @@ static int build_frame(render_ctx *c, const hfs_lighting *l, const hfs_quality *
             return rc;
         c->local = local;
     }
-    if ((rc = hfs_cpu_ctx_alloc_scratch(c, threads, max_n, err)))
+    if ((rc = hfs_cpu_ctx_alloc_scratch(c, threads, max_n, err)) ||
+        (rc = hfs_cpu_grid_build(c, q, *pyr, threads, err))) /* a sub-sampled grid */
         return rc;
     if (c->gloss.on && !(c->spec = malloc((size_t)c->w * (size_t)c->h * 3 * sizeof *c->spec)))
         return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the glossy term");

@@ -175,11 +175,12 @@ int hfs_cpu_ctx_alloc_scratch(render_ctx *c, int threads, int max_n, hfs_error *
             s->local_lo = malloc((size_t)w * 3 * sizeof(double));
         if (local && c->gloss.on)
             s->local_sp = malloc((size_t)w * 3 * sizeof(double));
-        if (c->near)
+        const int grid = c->sub > 1, near = grid && c->slices.p; /* cpu_grid.h */
+        if (near)
             s->grid_pl = malloc((size_t)w * sizeof *s->grid_pl);
-        if (c->sub > 1)
+        if (grid)
             s->key_near = malloc((size_t)w * sizeof *s->key_near);
-        if ((c->near && !s->grid_pl) || (c->sub > 1 && !s->key_near) || !s->normals || !s->floor_row || !s->maxd || !s->levels || !s->omega ||
+        if ((near && !s->grid_pl) || (grid && !s->key_near) || !s->normals || !s->floor_row || !s->maxd || !s->levels || !s->omega ||
             !s->floors || !s->om || !s->fl || (local && !s->local_lo) ||
             (local && c->gloss.on && !s->local_sp))
             return hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for %d workers",
