@@ -89,7 +89,7 @@ endforeach()
 # 1.20e-2 / 0.149, split 3.19e-3 / 0.135.  The DEM's split max (2e-3, fp32
 # too, as at subsample 1: 1.7e-3) is a few texels where two samples tie
 # for a receiver's occluder at different distances (DESIGN.md "One
-# reference").
+# reference at every subsample").
 #                                       bound (mean max)   measured mean / max
 set(hfs_eq_sub2_fractal_fp16_legendre   4.2e-5 4.1e-4)    # 3.52e-5 / 3.37e-4
 set(hfs_eq_sub2_fractal_fp32_legendre   9.3e-8 6.9e-6)    # 7.70e-8 / 5.69e-6

@@ -66,7 +66,9 @@ for map in "${maps[@]}"; do
         }
         row "truth of the SH" "$shtruth"
         for be in cpu gles; do
-            "$HFS" render "${base[@]}" "${extra[@]}" --backend $be --pfm "$C/envmap-$be.pfm" --quiet
+            sub=() # the CPU reference at full resolution (issue 36 item 5: it honours --subsample)
+            [ "$be" = cpu ] && sub=(--subsample 1)
+            "$HFS" render "${base[@]}" "${extra[@]}" --backend $be "${sub[@]}" --pfm "$C/envmap-$be.pfm" --quiet
             row "$be${extra[*]:+ ${extra[*]}}" "$C/envmap-$be.pfm"
         done
     done

@@ -23,7 +23,7 @@ for n in 128 256 512; do
     "$B/tools/hfgen" fractal --size ${n}x${n} -o "$C/frac$n.pfm"
     for li in "env|$SKY" "key|$SUN" "env+key|$SKY $SUN"; do
         IFS='|' read -r lname L <<<"$li"
-        cpu=$(F=3 frame_ms --height "$C/frac$n.pfm" $L --backend cpu | cut -d' ' -f1)
+        cpu=$(F=3 frame_ms --height "$C/frac$n.pfm" $L --backend cpu --subsample 1 | cut -d' ' -f1)
         for sub in 1 2 4; do
             for prec in fp16 fp32; do
                 read -r ms mib <<<"$(frame_ms --height "$C/frac$n.pfm" $L --backend gles --subsample $sub --precision $prec)"

@@ -25,7 +25,7 @@ for sc in "${scenes[@]}"; do
   IFS='|' read -r name hf extra <<<"$sc"
   for li in "${lightings[@]}"; do
     IFS='|' read -r lname L <<<"$li"
-    "$HFS" render --height "$hf" $extra $L --backend cpu --pfm "$C/ref.pfm" --quiet
+    "$HFS" render --height "$hf" $extra $L --backend cpu --subsample 1 --pfm "$C/ref.pfm" --quiet
     for st in "fp16 --subsample 1" "fp32 --subsample 1" "fp16 --subsample 2" "fp16 --subsample 4"; do
         read -r prec rest <<<"$st"
         "$HFS" render --height "$hf" $extra $L --backend gles --precision $prec $rest --pfm "$C/g.pfm" --quiet

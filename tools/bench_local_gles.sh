@@ -29,7 +29,7 @@ for sc in cones panel; do
                          --pfm "$truth" 2> "$C/truth-$sc-$n.log"
     for mode in partial full; do
       A="--height $C/$sc.pfm $L --local-swath $mode"
-      "$HFS" render $A --backend cpu --pfm "$C/c.pfm" --quiet
+      "$HFS" render $A --backend cpu --subsample 1 --pfm "$C/c.pfm" --quiet
       for sub in 1 2; do
         read -r fms lms sms <<<"$("$HFS" render $A --backend gles --subsample $sub --time "$F" --pfm "$C/g.pfm" |
                               awk '$1 == "frame" {f = $2} $1 == "local" {l = $2} $1 == "shade" {s = $2}

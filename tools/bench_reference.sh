@@ -47,7 +47,7 @@ for sc in "${scenes[@]}"; do
     for st in "${settings[@]}"; do
         IFS='|' read -r label flags <<<"$st"
         out=$C/cpu-$name$N.pfm
-        "$HFS" render --height "$hf" $extra $LIGHT --backend cpu $flags --pfm "$out" 2>"$C/cpu.log"
+        "$HFS" render --height "$hf" $extra $LIGHT --backend cpu --subsample 1 $flags --pfm "$out" 2>"$C/cpu.log"
         csec=$(bench_seconds "$C/cpu.log")
         m=$("$HFS" compare --height "$hf" $extra $LIGHT "$out" "$truth")
         read -r _ mean _ rmse _ p99 _ mx _ nf _ <<<"$m"

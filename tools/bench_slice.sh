@@ -41,7 +41,7 @@ for sc in "${scenes[@]}"; do
         truth=$C/truth-$name$N-$lname.pfm
         # shellcheck disable=SC2086
         bench_truth "$HFS" "$truth" --height "$hf" $extra $LIGHT
-        for run in "cpu|legendre|" "cpu|wedge|" "cpu|slice|" "gles|legendre|--subsample 1" \
+        for run in "cpu|legendre|--subsample 1" "cpu|wedge|--subsample 1" "cpu|slice|--subsample 1" "gles|legendre|--subsample 1" \
                    "gles|slice|--subsample 1" "gles|legendre|--subsample 2" "gles|slice|--subsample 2"; do
             IFS='|' read -r be vis sub <<<"$run"
             out=$C/slice-$name$N.pfm

@@ -31,7 +31,7 @@ row() {
     bench_truth "$HFS0" "$truth" --height "$hf" "$@"
     for b in "${BUILDS[@]}"; do
         local label=${b%%=*} dir=${b#*=}
-        for be in "cpu|--backend cpu" "gles sub 2|--backend gles" "gles sub 1|--backend gles --subsample 1"; do
+        for be in "cpu|--backend cpu --subsample 1" "gles sub 2|--backend gles" "gles sub 1|--backend gles --subsample 1"; do
             IFS='|' read -r bname bflags <<<"$be"
             local out=$C/umbra-$name.pfm
             # shellcheck disable=SC2086

@@ -8,9 +8,10 @@
 #   tools/output_checksums.sh BUILD check checksums.txt   # exit 1 on any difference
 #
 # Scenes: the demo scene (data/demo.ini, 403x344: environment map + sun) on
-# gles fp16 at subsample 2 and 1 and on cpu; hfgen cones, fractal and panel
-# (96x96) with an environment, a key light and two local lights on gles
-# fp16 subsample 2 and 1, gles fp32, and cpu; the same at 24x24 on truth.
+# gles fp16 at subsample 2 and 1 and on cpu at subsample 1 and 2; hfgen
+# cones, fractal and panel (96x96) with an environment, a key light and two
+# local lights on gles fp16 subsample 2 and 1, gles fp32, and cpu at
+# subsample 1 and 2; the same at 24x24 on truth.
 # GLES checksums hold for one machine and driver (llvmpipe's results depend
 # on the CPU's vector width): compare records made on the same machine.
 set -euo pipefail
@@ -31,7 +32,8 @@ one() { # NAME ARGS...
 }
 one demo-gles-sub2 "$root/data/demo.ini" --backend gles
 one demo-gles-sub1 "$root/data/demo.ini" --backend gles --subsample 1
-one demo-cpu "$root/data/demo.ini" --backend cpu
+one demo-cpu "$root/data/demo.ini" --backend cpu --subsample 1
+one demo-cpu-sub2 "$root/data/demo.ini" --backend cpu
 for t in cones fractal panel; do
     "$GEN" "$t" --size 96x96 -o "$w/$t.pfm" >/dev/null
     "$GEN" "$t" --size 24x24 -o "$w/${t}24.pfm" >/dev/null
@@ -39,7 +41,8 @@ for t in cones fractal panel; do
     one "$t-gles-sub2" --height "$w/$t.pfm" "${L[@]}" --backend gles
     one "$t-gles-sub1" --height "$w/$t.pfm" "${L[@]}" --backend gles --subsample 1
     one "$t-gles-fp32" --height "$w/$t.pfm" "${L[@]}" --backend gles --precision fp32
-    one "$t-cpu" --height "$w/$t.pfm" "${L[@]}" --backend cpu
+    one "$t-cpu" --height "$w/$t.pfm" "${L[@]}" --backend cpu --subsample 1
+    one "$t-cpu-sub2" --height "$w/$t.pfm" "${L[@]}" --backend cpu
     L24=(--env-sh "$sky" --key 40,25,2,40 --local 8,10,9,1,200)
     one "$t-truth" --height "$w/${t}24.pfm" "${L24[@]}" --backend truth --truth-azimuths 720
 done
