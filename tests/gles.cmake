@@ -124,7 +124,7 @@ endforeach()
 # hfs_grid_uv: ((a + 0.5) / 49) * 49 - 0.5 != a for a = 3, 13, 27, 28: 2.2e-6
 # of the max unshadowed); the key light's differ where its near search
 # differs from subsample 1's horizons: at subsample 2 and 4 every texel
-# searches the finest scales itself (hfs_gles_key_near, up to 11 texels for
+# searches the finest scales itself (hfs_key_near_make, up to 11 texels for
 # the test's light) along the swath's centre, refined apart from the far
 # scales the grid refines, so a texel's shadow flips where subsample 1's
 # single refinement misses a peak the second one finds (or the reverse).
