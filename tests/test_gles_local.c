@@ -261,12 +261,12 @@ static int mode_mixed(void)
         if (!render_with(HFS_BACKEND_GLES, r, &s.f, &l, &q, &g) &&
             !render_with(HFS_BACKEND_CPU, NULL, &s.f, &l, &q, &c)) {
             hfs_metrics m = compare(&s.f, &l, &q, &g, &c);
-            /* sub 1: measured 2.23e-6 / 1.95e-5, bound ~10x; sub 2 (vs the
-             * full-resolution CPU: the interpolation error, the same to 4
-             * digits in every build and llvmpipe variant): measured 4.83e-4
-             * / 2.56e-2, bound the measurement + 20%, as the env/key
-             * sub-sampling tests (tests/gles.cmake). */
-            const double bmean = sub == 1 ? 2.2e-5 : 5.8e-4, bmax = sub == 1 ? 2e-4 : 3.1e-2;
+            /* sub 1: measured 2.23e-6 / 1.95e-5, bound ~10x; sub 2, the
+             * CPU on the same grid (issue 36 item 5, cpu_grid.h,
+             * cpu_local_grid.c): 1.79e-6 / 1.88e-5, bound ~10x (before,
+             * against the full-resolution CPU, the interpolation error:
+             * 4.83e-4 / 2.56e-2). */
+            const double bmean = sub == 1 ? 2.2e-5 : 1.8e-5, bmax = sub == 1 ? 2e-4 : 1.9e-4;
             printf("mixed sub %d: mean %.3e max %.3e (bounds %.1e %.1e)\n", sub, m.mean_abs,
                    m.max_abs, bmean, bmax);
             CHECK(m.nonfinite == 0, "non-finite outputs");

@@ -18,6 +18,8 @@
  * (wedge tables) V and V_open from the full swath's table object.
  */
 #include "cpu_local.h"
+#include "cpu_local_priv.h"
+#include "pyramid_layout.h"
 #include "gloss.h"
 
 #include "local_geometry.h"
@@ -33,7 +35,6 @@
 
 #define PI 3.14159265358979323846
 #define HALF_PI 1.57079632679489661923
-#define LIFT 1e-4 /* receiver lift, units of dx (SPEC; truth.c, unshadowed.c) */
 
 /* ---- options ------------------------------------------------------------------ */
 
@@ -44,44 +45,6 @@ void hfs_cpu_local_options_default(hfs_cpu_local_options *o)
 
 /* ---- renderer ---------------------------------------------------------------------------- */
 
-typedef struct local_src {
-    hfs_local_light light;
-    double le[3];
-    int open;                  /* beyond the terrain's shadow range: ratio 1 */
-} local_src;
-
-typedef struct local_scratch {
-    /* full mode: per direction d, scale s, receiver x at [(d*N + s)*W + x] */
-    double *om, *co, *si;
-    double *floors;            /* full mode: nphi x W */
-    /* per sample */
-    double *slope;             /* N */
-    unsigned char *in_grid;    /* N */
-    double *lv_omega;          /* N */
-    double *om_k, *fl_k;       /* nphi: per-sample horizons / floors (tables) */
-} local_scratch;
-
-struct hfs_cpu_local {
-    const hfs_field *f;
-    int w, h, n_levels, nphi, threads;
-    hfs_local_swath_mode mode;
-    hfs_visibility_path path;
-    int row_pass;              /* full mode: horizons of the fixed directions per row */
-    double rho;                /* albedo */
-    hfs_gloss gloss;           /* glossy surfaces (gloss.h) */
-    double h_zonal[HFS_ZH_N];
-    double E[HFS_SH_N * HFS_NLP_N];
-    int n_src;
-    local_src src[HFS_MAX_LOCAL_LIGHTS];
-    hfs_horizon_scales *scales;
-    double *dist_world;        /* N: d_s dx */
-    hfs_local_swath full;      /* the full swath */
-    double *full_cs;           /* nphi x (c, s), snapped */
-    double *full_A;            /* nphi x 16 */
-    hfs_horizon_plan *plan;    /* row pass */
-    hfs_visibility *tables;    /* wedge-table path */
-    local_scratch *scratch;
-};
 
 static void free_scratch(local_scratch *s)
 {
@@ -110,6 +73,7 @@ void hfs_cpu_local_destroy(hfs_cpu_local *lc)
     free(lc->dist_world);
     free(lc->full_cs);
     free(lc->full_A);
+    free(lc->grid);
     free(lc);
 }
 
@@ -238,7 +202,9 @@ int hfs_cpu_local_create(const hfs_field *f, const hfs_lighting *l, const hfs_qu
     hfs_wedge_elevation_moments(lc->E);
     take_sources(lc, f, l);
     int rc = make_directions(lc, f, q, p, err);
-    if (rc || (rc = alloc_scratch(lc, err))) {
+    if (!rc)
+        rc = alloc_scratch(lc, err);
+    if (rc) {
         hfs_cpu_local_destroy(lc);
         return rc;
     }
@@ -409,9 +375,9 @@ static void add_spec(double *sp, double w, const local_src *src)
  * (normal n, H(N) hn): the swath's samples, each with its window, floor
  * and horizons, summed in the Legendre bands or through the wedge tables,
  * in the ratio form (num / den). */
-static double cap_visible_ratio(const hfs_cpu_local *lc, local_scratch *s,
-                                const hfs_local_view *lv, int i, int j, const double n[3],
-                                const double hn[HFS_SH_N])
+double hfs_cpu_local_cap_ratio(const hfs_cpu_local *lc, local_scratch *s,
+                               const hfs_local_view *lv, int i, int j, const double n[3],
+                               const double hn[HFS_SH_N], int rows)
 {
     double zh[HFS_ZH_N], l_sh[HFS_SH_N], m[HFS_SH_N];
     hfs_zh_cap(lv->alpha, zh);
@@ -420,7 +386,7 @@ static double cap_visible_ratio(const hfs_cpu_local *lc, local_scratch *s,
 
     hfs_local_swath sw;
     hfs_local_swath_make(lv, lc->nphi, lc->mode, lc->path, &sw);
-    const int use_rows = sw.full && lc->row_pass;
+    const int use_rows = sw.full && lc->row_pass && rows; /* rows: row j's pass ran */
     /* Every sample meets the cap when the swath is partial or the light covers
      * every azimuth: exact per-sample windows.  Otherwise the key-light
      * window (a full swath around a light that does not surround). */
@@ -501,6 +467,22 @@ static double cap_visible_ratio(const hfs_cpu_local *lc, local_scratch *s,
     return visible_ratio(num, den, den_scale);
 }
 
+/* Light q's fraction at texel (i, j): the grid's, read bilinearly
+ * (shade.frag local_lights), clamped to [0, 1]. */
+static double grid_ratio_at(const hfs_cpu_local *lc, int q, int i, int j)
+{
+    int a0, b0;
+    double tx, ty;
+    hfs_grid_axis(i, lc->sub, lc->w, &a0, &tx);
+    hfs_grid_axis(j, lc->sub, lc->h, &b0, &ty);
+    const int a1 = a0 + 1 < lc->gw ? a0 + 1 : a0, b1 = b0 + 1 < lc->gh ? b0 + 1 : b0;
+    const double *g = lc->grid + (size_t)q * lc->gh * lc->gw;
+    const double r = (g[(size_t)b0 * lc->gw + a0] * (1.0 - tx) + g[(size_t)b0 * lc->gw + a1] * tx) *
+                         (1.0 - ty) +
+                     (g[(size_t)b1 * lc->gw + a0] * (1.0 - tx) + g[(size_t)b1 * lc->gw + a1] * tx) * ty;
+    return fmin(1.0, fmax(0.0, r));
+}
+
 static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *src, int i,
                   int j, const double p[3], const double n[3], const double hn[HFS_SH_N],
                   const double r[3], double nr, double lo[3], double *sp)
@@ -528,7 +510,8 @@ static void shade(const hfs_cpu_local *lc, local_scratch *s, const local_src *sr
         return;
     }
 
-    const double ratio = cap_visible_ratio(lc, s, &lv, i, j, n, hn);
+    const double ratio = lc->grid ? grid_ratio_at(lc, (int)(src - lc->src), i, j)
+                                  : hfs_cpu_local_cap_ratio(lc, s, &lv, i, j, n, hn, 1);
     const double scale = lc->rho / PI * e_cap * ratio;
     for (int ch = 0; ch < 3; ++ch)
         lo[ch] += scale * src->le[ch];
@@ -544,7 +527,7 @@ void hfs_cpu_local_row(const hfs_cpu_local *lc, int worker, int j, const double 
         lo_row[x] = 0.0;
     for (int x = 0; sp_row && x < 3 * lc->w; ++x)
         sp_row[x] = 0.0;
-    if (lc->row_pass)
+    if (lc->row_pass && !lc->grid)
         row_pass(lc, s, j, normals);
     for (int i = 0; i < lc->w; ++i) {
         const double *n = normals + 3 * i;

@@ -67,6 +67,14 @@ int hfs_cpu_local_create(const hfs_field *f, const hfs_lighting *l, const hfs_qu
                          int threads, hfs_cpu_local **out, hfs_error *err);
 void hfs_cpu_local_destroy(hfs_cpu_local *lc);
 
+/* On a sub-sampled visibility grid (subsample sub = 2, 4; issue 36 item
+ * 5, cpu_local_grid.c): each light's visible fraction at the grid's
+ * receivers, as the GLES path's local pass computes it, which
+ * hfs_cpu_local_row then reads bilinearly per texel (E_cap, the inside
+ * test and the glossy lobe stay per texel).  Call once after create,
+ * before the rows; lc NULL: nothing. */
+int hfs_cpu_local_grid_build(hfs_cpu_local *lc, int sub, int threads, hfs_error *err);
+
 /* Exit radiance of every local light at receivers (0..W-1, j): lo_row
  * (W x 3 doubles) is overwritten.  normals: the row's unit normals (W x 3).
  * worker in 0..threads-1 selects the scratch.  sp_row (W x 3, or NULL when

@@ -41,7 +41,8 @@
  * own receiver; 2 and 4: cpu_grid.h, DESIGN.md "One reference at every
  * subsample", which also says where the CPU still differs from GLES
  * there: fp16 storage, float grid coordinates, ties of the occluders'
- * distances; local lights, bounces and points stay at full resolution);
+ * distances; local lights on the grid too, cpu_local_grid.c; bounces and
+ * points stay at full resolution);
  * precision is the GLES path's only (the CPU is double throughout).
  *
  * Local lights (issue 4) live in cpu_local.c (DESIGN.md "Local lights"); this
@@ -429,9 +430,11 @@ static int build_frame(render_ctx *c, const hfs_lighting *l, const hfs_quality *
     if (n_local > 0) {
         hfs_cpu_local *local = NULL;
         rc = hfs_cpu_local_create(f, l, q, local_opt, *pyr, threads, &local, err);
+        c->local = local;
+        if (!rc && local && c->sub > 1) /* a sub-sampled grid */
+            rc = hfs_cpu_local_grid_build(local, c->sub, threads, err);
         if (rc)
             return rc;
-        c->local = local;
     }
     if ((rc = hfs_cpu_ctx_alloc_scratch(c, threads, max_n, err)) ||
         (rc = hfs_cpu_grid_build(c, q, *pyr, threads, err))) /* a sub-sampled grid */
