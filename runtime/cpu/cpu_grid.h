@@ -26,9 +26,9 @@
  * Where the CPU still differs from GLES at these subsamples (fp16 storage
  * of the occluders, float grid coordinates and filtering, ties of the
  * occluders' distances): DESIGN.md "One reference at every subsample".
- * Local lights' grid is cpu_local_grid.c's; bounces and points stay at
- * full resolution.  Private to the CPU renderer (cpu_render.c,
- * cpu_render_setup.c).
+ * Local lights' grid is cpu_local_grid.c's; the bounces stay per texel
+ * (GLES gathers them on its bounce_subsample grid).  Private to the CPU
+ * renderer (cpu_render.c, cpu_render_setup.c).
  */
 #ifndef HFS_CPU_GRID_H
 #define HFS_CPU_GRID_H

@@ -41,8 +41,8 @@
  * own receiver; 2 and 4: cpu_grid.h, DESIGN.md "One reference at every
  * subsample", which also says where the CPU still differs from GLES
  * there: fp16 storage, float grid coordinates, ties of the occluders'
- * distances; local lights on the grid too, cpu_local_grid.c; bounces and
- * points stay at full resolution);
+ * distances; local lights on the grid too, cpu_local_grid.c; the bounces
+ * stay per texel);
  * precision is the GLES path's only (the CPU is double throughout).
  *
  * Local lights (issue 4) live in cpu_local.c (DESIGN.md "Local lights"); this
