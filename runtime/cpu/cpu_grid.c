@@ -95,7 +95,7 @@ static void key_receiver(const render_ctx *c, const swath_job *job, int x, int y
                          const double n[3], double *omega, double *out)
 {
     const hfs_horizon_plan *plan = job->plan ? job->plan : c->jobs[0].plan;
-    const int skip = job->near.n;
+    const int skip = job->near.n_grid; /* the texels search those themselves */
     for (int d = 0; d < job->swath.n; ++d) {
         double cs, sn, dist;
         int seen;
@@ -104,8 +104,7 @@ static void key_receiver(const render_ctx *c, const swath_job *job, int x, int y
         hfs_horizon_point(plan, d, x, y, HFS_HORIZON_OFF, NULL, NULL, omega);
         double om = c->refine > 0
                         ? atan(hfs_horizon_key_grid(plan, d, x, y, omega, fl, c->refine, c->tie,
-                                                    skip, exp2((double)skip / c->k), &dist,
-                                                    &seen))
+                                                    skip, job->near.edge, &dist, &seen))
                         : bspline_grid(omega, c->n_levels, c->k, skip, fl, &dist, &seen);
         om = om > HALF_PI ? HALF_PI : (om < -HALF_PI ? -HALF_PI : om);
         out[2 * d] = tan(om > KEY_TAN_ANGLE ? KEY_TAN_ANGLE : (om < -KEY_TAN_ANGLE ? -KEY_TAN_ANGLE : om));
@@ -266,22 +265,41 @@ static double near_slope(const render_ctx *c, int i, int j, double cs, double sn
     return (z / c->f->dx - zp) / d;
 }
 
+/* The slopes (tan) at which key light job's elevation window starts and
+ * closes (key_visibility.frag win_t): on the Legendre path a horizon below
+ * the window shows the light as the window's start does, and one at its
+ * end hides it (hfs_visible); the wedge tables count every elevation. */
+static void key_window(const render_ctx *c, const swath_job *job, double win_t[2])
+{
+    win_t[0] = c->key_tables ? -1e30 : tan(fmax(job->swath.elev_lo, -1.5));
+    win_t[1] = c->key_tables || !(job->swath.elev_hi < 1.57) ? 1e30 : tan(job->swath.elev_hi);
+}
+
 double hfs_cpu_grid_key_near(const render_ctx *c, const swath_job *job, int i, int j)
 {
     const hfs_key_near *nr = &job->near;
     const double zp = hfs_field_z(c->f, i, j) / c->f->dx;
-    double best = -1e30;
+    double win_t[2], cs, sn;
+    key_window(c, job, win_t);
+    double best = win_t[0];
     int bm = -1;
-    for (int m = 0; !nr->per_dir && m < nr->n; ++m) {
+    for (int m = 0; !nr->per_dir && m < nr->n && best < win_t[1]; ++m) {
         const double sl = near_slope(c, i, j, nr->cs[0], nr->cs[1], exp2((double)m / c->k), zp);
         if (sl > best)
             best = sl, bm = m;
     }
     const double d = exp2((double)bm / c->k);
-    for (int q = 0; bm >= 0 && q < c->refine; ++q)
+    for (int q = 0; bm >= 0 && q < c->refine && best < win_t[1]; ++q)
         best = fmax(best, near_slope(c, i, j, nr->cs[0], nr->cs[1],
                                      d * hfs_horizon_refine_factor(q, c->refine, c->k), zp));
-    return best;
+    if (nr->per_dir || nr->n <= 0)
+        return best;
+    /* and every crossing of the texel's own ray up to `to` (issue 36 item
+     * 2); GLES stops once the window closes (the same visibility) */
+    double dist = 0.0;
+    hfs_horizon_snap_dir(nr->centre, &cs, &sn);
+    return hfs_horizon_gap_along(job->plan ? job->plan : c->jobs[0].plan, cs, sn, i, j, 1.0,
+                                 nr->to, 0.0, best, &dist, NULL);
 }
 
 double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d, int i, int j,
@@ -320,6 +338,12 @@ double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d
                      (sl[2] * (1.0 - t[0]) + sl[3] * t[0]) * t[1];
     for (int m = 0; job->near.per_dir && m < job->near.n; ++m)
         near = fmax(near, near_slope(c, i, j, cs, sn, exp2((double)m / c->k), zp));
+    if (!job->near.per_dir && job->near.edge > job->near.to) {
+        /* the direction's own ray from `to` to `edge` (issue 36 item 2) */
+        double dist = 0.0;
+        near = hfs_horizon_gap_along(plan, cs, sn, i, j, job->near.to, job->near.edge, 0.0, near,
+                                     &dist, NULL);
+    }
     const double om = fmax(fl, atan(fmax(s, near)));
     return om < HALF_PI ? om : HALF_PI;
 }

@@ -17,11 +17,14 @@
  *                (env_horizons.frag), read bilinearly and given back the
  *                hemisphere of the texel's own normal (env_transfer.frag);
  *   key lights   per receiver and direction the occluder (tan of the
- *                horizon and its distance; key_horizons.frag, the near
- *                scales left out), and per texel the near search along
- *                the swath's centre and the four neighbours' occluders
- *                moved to it (key_visibility.frag; hfs_cpu_grid_key_horizon
- *                is that one function).
+ *                horizon and its distance; key_horizons.frag, the
+ *                texels' scales left out, hfs_key_near_make), and per
+ *                texel the near search along the swath's centre (scales,
+ *                refinement, the ray's crossings to `to`), the four
+ *                neighbours' occluders moved to it and each direction's
+ *                own crossings from `to` to `edge` (key_visibility.frag
+ *                near_horizon, key_horizon; hfs_cpu_grid_key_near and
+ *                hfs_cpu_grid_key_horizon are those two functions).
  *
  * Where the CPU still differs from GLES at these subsamples (fp16 storage
  * of the occluders, float grid coordinates and filtering, ties of the
@@ -55,12 +58,16 @@ void hfs_cpu_grid_env_v(const render_ctx *c, int i, int j, const double n[3],
                         double v[HFS_SH_N]);
 
 /* A key light's near search at texel (i, j) along its swath's centre (one
- * for all its directions; -1e30 where there is none). */
+ * for all its directions, key_visibility.frag near_horizon): the slope of
+ * its finest scales, refined, and every crossing of the ray to `to`, not
+ * below the slope where the light's window starts (tables: -1e30); that
+ * start where there is none (a full swath searches per direction). */
 double hfs_cpu_grid_key_near(const render_ctx *c, const swath_job *job, int i, int j);
 
 /* A key light's horizon at texel (i, j) (unit normal n, floor fl) in
- * direction d of its swath, from the grid's four receivers around it and
- * its near search `near` (key_visibility.frag key_horizon). */
+ * direction d of its swath, from the grid's four receivers around it, its
+ * near search `near` and its own ray's crossings from `to` to `edge`
+ * (key_visibility.frag key_horizon). */
 double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d, int i, int j,
                                 const double n[3], double fl, double near);
 

@@ -370,12 +370,19 @@ double hfs_horizon_key_grid(const hfs_horizon_plan *hp, int dir, int i, int j,
 double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double t_first,
                        double tie, double best, double *dist, long *reads)
 {
+    return hfs_horizon_gap_along(hp, hp->cs[2 * dir], hp->cs[2 * dir + 1], i, j, t_first,
+                                 HUGE_VAL, tie, best, dist, reads);
+}
+
+double hfs_horizon_gap_along(const hfs_horizon_plan *hp, double c, double s, int i, int j,
+                             double t_first, double t_last, double tie, double best,
+                             double *dist, long *reads)
+{
     const hfs_ray_bound_layout *L;
     const double *atlas = hfs_cpu_pyramid_bounds(hp->p, &L);
     const double *z = hfs_cpu_pyramid_full(hp->p, hp->n_levels - 1);
-    return hfs_ray_bound_search(L, atlas, z, hp->stride, i, j, hp->cs[2 * dir],
-                                hp->cs[2 * dir + 1], t_first, HUGE_VAL, hp->zs, tie, best,
-                                dist, reads);
+    return hfs_ray_bound_search(L, atlas, z, hp->stride, i, j, c, s, t_first, t_last, hp->zs,
+                                tie, best, dist, reads);
 }
 
 double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,

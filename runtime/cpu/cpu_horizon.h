@@ -134,6 +134,12 @@ double hfs_horizon_refined_within(const hfs_horizon_plan *hp, int dir, int i, in
  * NULL) grows by the reads made. */
 double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double t_first,
                        double tie, double best, double *dist, long *reads);
+/* The same along any snapped direction (c, s) (hfs_horizon_snap_dir), the
+ * crossings from distance t_first to t_last (ray_bound.h; HUGE_VAL: to the
+ * grid's edge), over the heights of hp's pyramid. */
+double hfs_horizon_gap_along(const hfs_horizon_plan *hp, double c, double s, int i, int j,
+                             double t_first, double t_last, double tie, double best,
+                             double *dist, long *reads);
 
 /* The far occluder of split horizons (split_horizon.h) at receiver (i, j)
  * in direction dir, as env_horizons.frag's far pass finds it (and, with

@@ -411,6 +411,7 @@ static int build_frame(render_ctx *c, const hfs_lighting *l, const hfs_quality *
     c->n_levels = n_levels;
     c->k = q->k;
     c->sub = q->subsample > 1 ? q->subsample : 1;
+    c->key_tables = q->visibility == HFS_VIS_WEDGE_TABLE;
     c->refine = q->refine;
     c->tie = tie_slope(f);
     int rc = hfs_cpu_pyramid_create(f, q->k, hfs_pyramid_read_level(n_levels, q->k, q->offset, 0),

@@ -64,6 +64,7 @@ typedef struct render_ctx {
      * every sub texels, gw x gh of them; sub 1 computes every texel as
      * its own receiver, without these */
     int sub, gw, gh;
+    int key_tables;            /* key lights on the wedge-table path */
     hfs_cpu_far *near;         /* slice path: the grid's near occluders */
     double *vgrid;             /* Legendre, tables: V_env - hemisphere, 16 a receiver */
     double h_hemi[HFS_ZH_N];   /* the hemisphere's ZH (hfs_zh_cap(pi/2)) */
