@@ -68,7 +68,7 @@ uniform int u_kb;                        /* this light's record in u_k */
 uniform float u_emax;                    /* pi sin^2 alpha */
 uniform float u_rise;                    /* normalized height to texels: hscale zscale / dx */
 uniform float u_far;                     /* occluders this far (texels) move to each texel's height */
-/* The near search (runtime/gles/gles_backend.h hfs_gles_key_near): the
+/* The near search (runtime/core/key_setup.h hfs_key_near_make): the
  * u_near finest scales, within u_reach texels, along u_near_cs, or (u_near_dir,
  * a full swath) in each direction. */
 uniform int u_near;
