@@ -224,8 +224,11 @@ float horizon_tan(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], float best, int first,
             bi = i;
         }
         if (sl > best) {
+            /* the distance moves only past the tie (as ray_bound.c's), so
+             * that float and double name the same sample where slopes tie */
+            if (hfs_scale_takes_over(sl, best, u_tie))
+                dist = sc.x;
             best = sl;
-            dist = sc.x;
         }
     }
     if (bi < 0)

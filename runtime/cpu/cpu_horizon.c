@@ -328,8 +328,10 @@ int hfs_horizon_occluder(const hfs_horizon_plan *hp, int dir, int i, int j,
             bi = s;
         }
         if (sl > best) {
+            /* the distance moves only past the tie (env_horizons.frag) */
+            if (sl > best + HFS_HORIZON_TIE * fabs(best) + tie)
+                *dist = hfs_cpu_pyramid_spacing(hp->p, s);
             best = sl;
-            *dist = hfs_cpu_pyramid_spacing(hp->p, s);
         }
     }
     if (bi >= 0 && first >= 0)
