@@ -56,6 +56,7 @@
 // hfs-variant: HFS_SLICE 1, HFS_COUNT 1
 // hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 1
 // hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 1, HFS_SWATH_TEX 1
+// hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 1, HFS_COUNT 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33

@@ -64,6 +64,29 @@ static int mode_timing(void)
     render(r, &s, &l, &q, &img);
     CHECK(bitequal(&img, &again), "frame after a counting frame differs");
     CHECK(hfs_renderer_set_timing(r, 3) == HFS_E_INVALID, "timing level 3 accepted");
+    /* The slice path's split horizons: their far grid is the env pass's
+     * "far" stage, counted at level 2 (-1 at level 1), and the frame after
+     * the count is the frame before it. */
+    hfs_quality qs = quality("fp16", "slice", 2);
+    qs.split = 1;
+    for (int level = 1; level <= 2; ++level) {
+        hfs_renderer_set_timing(r, level);
+        hfs_renderer_invalidate(r);
+        render(r, &s, &l, &qs, &img);
+        hfs_renderer_timings(r, &t);
+        int far = -1;
+        for (int p = 0; p < t.n_passes; ++p)
+            far = strcmp(t.pass[p].name, "far") ? far : p;
+        CHECK(far >= 0, "slice path with split horizons: no far stage timed");
+        if (far >= 0)
+            CHECK(level == 2 ? t.pass[far].fetches > 1000.0 : t.pass[far].fetches == -1.0,
+                  "level %d: far stage fetches %g", level, t.pass[far].fetches);
+    }
+    hfs_renderer_set_timing(r, 0);
+    render(r, &s, &l, &qs, &again);
+    hfs_renderer_invalidate(r);
+    render(r, &s, &l, &qs, &img);
+    CHECK(bitequal(&img, &again), "slice frame after a counting frame differs");
     flat_fetch_counts(r);
     hfs_image_free(&img);
     hfs_image_free(&again);

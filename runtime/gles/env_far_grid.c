@@ -75,7 +75,8 @@ int hfs_gles_env_far_prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     return HFS_OK;
 }
 
-int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
+int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum,
+                          hfs_error *err)
 {
     if (!fr->split.on)
         return HFS_OK;
@@ -84,7 +85,7 @@ int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                 .n_dir = n_sub(fr), .fp32 = g->caps.fp32,
                                 .swath_tex = fr->far_swath_tex, .slice = 1, .n_out = 1,
-                                .far_atlas = 1};
+                                .far_atlas = 1, .count = fetch_sum != NULL};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_HORIZONS, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
@@ -106,6 +107,8 @@ int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
         gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SWATH, g->ubo[HFS_UBO_FAR_SWATH]);
     if (!rc && !(rc = hfs_gles_fbo_layers(gl, g->r.far_fbo, g->r.far, 0, 1, "far horizons", err)))
         hfs_gles_draw(gl, g->r.far_fbo, fr->far_aw, fr->far_ah);
+    if (!rc && fetch_sum)
+        rc = hfs_gles_sum_counts_rect(g, g->r.far_fbo, fr->far_aw, fr->far_ah, fetch_sum, err);
     gl->UseProgram(0);
     return rc ? rc : hfs_gl_check(gl, "backend gles: far horizon pass", err);
 }

@@ -207,10 +207,12 @@ const char *hfs_gles_terrain_change(const hfs_gles *g, const hfs_field *f, const
 
 /* Split horizons' far grid (env_far_grid.c): its sizes and limits (the
  * env pass's layout), its directions' block (prepare), its draw (the env
- * pass's "far" stage), and its texture for the slice passes. */
+ * pass's "far" stage; fetch_sum not NULL: its counting twin, the fetches
+ * added there), and its texture for the slice passes. */
 int hfs_gles_env_far_layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err);
 int hfs_gles_env_far_prepare(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err);
-int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err);
+int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum,
+                          hfs_error *err);
 int hfs_gles_bind_env_far(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_program *prog,
                           hfs_error *err);
 
@@ -238,9 +240,11 @@ int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, int env_map, GLuin
 int hfs_gles_draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, GLuint tex,
                               int layer0, int outs, const char *what, double *fetch_sum,
                               hfs_error *err);
-/* Adds the fetch counts a counting twin wrote to target 0 of fbo (vw x vh). */
+/* Adds the fetch counts a counting twin wrote to target 0 of fbo (vw x vh;
+ * _rect: w x h). */
 int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, double *sum,
                         hfs_error *err);
+int hfs_gles_sum_counts_rect(hfs_gles *g, GLuint fbo, int w, int h, double *sum, hfs_error *err);
 
 /* A key light's near search on layout L's grid (key_setup.h
  * hfs_key_near_make, the CPU reference's too). */

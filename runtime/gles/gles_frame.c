@@ -232,11 +232,10 @@ static int count_fetches(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
         if (!pass->count)
             continue;
         double *fetch = &g->timing.fetch[g->stage_slot[p]];
-        if (g->timing.level < 2) {
-            *fetch = -1.0;
+        for (int s = 0; s < HFS_PASS_MAX_STAGES && pass->stages[s]; ++s)
+            fetch[s] = g->timing.level < 2 ? -1.0 : 0.0;
+        if (g->timing.level < 2)
             continue;
-        }
-        *fetch = 0.0;
         int rc;
         if ((!pass->present || pass->present(fr)) && (rc = pass->count(g, fr, fetch, err)))
             return rc;

@@ -70,6 +70,8 @@ typedef struct hfs_gles_pass {
     int (*layout)(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err);
     int (*prepare)(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err);
     int (*run)(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err);
+    /* Its counting twin (timing level 2): adds each stage's texture
+     * fetches to fetches[stage] (set to 0 before). */
     int (*count)(hfs_gles *g, hfs_gles_frame *fr, double *fetches, hfs_error *err);
 } hfs_gles_pass;
 

@@ -77,18 +77,23 @@ int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gl
     return HFS_OK;
 }
 
+int hfs_gles_sum_counts_rect(hfs_gles *g, GLuint fbo, int w, int h, double *sum, hfs_error *err)
+{
+    float *px = hfs_gles_scratch(g, (size_t)w * h * 4 * sizeof(float));
+    if (!px)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
+    int rc = hfs_gl_read_rgba(&g->gl, fbo, 0, 0, w, h, HFS_GL_READ_AUTO, px, NULL, err);
+    if (rc)
+        return rc;
+    for (size_t i = 0; i < (size_t)w * h; ++i)
+        *sum += px[4 * i] + 1024.0 * px[4 * i + 1];
+    return HFS_OK;
+}
+
 int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, double *sum,
                         hfs_error *err)
 {
-    float *px = hfs_gles_scratch(g, (size_t)L->vw * L->vh * 4 * sizeof(float));
-    if (!px)
-        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
-    int rc = hfs_gl_read_rgba(&g->gl, fbo, 0, 0, L->vw, L->vh, HFS_GL_READ_AUTO, px, NULL, err);
-    if (rc)
-        return rc;
-    for (size_t i = 0; i < (size_t)L->vw * L->vh; ++i)
-        *sum += px[4 * i] + 1024.0 * px[4 * i + 1];
-    return HFS_OK;
+    return hfs_gles_sum_counts_rect(g, fbo, L->vw, L->vh, sum, err);
 }
 
 int hfs_gles_draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, GLuint tex,

@@ -207,7 +207,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     hfs_gles_stage_end(g, HFS_PASS_ENV_HORIZONS, 0);
     if (!rc && fr->split.on) {
         hfs_gles_stage_begin(g, HFS_PASS_ENV_HORIZONS, 1);
-        rc = hfs_gles_env_far_draw(g, fr, err);
+        rc = hfs_gles_env_far_draw(g, fr, NULL, err);
         hfs_gles_stage_end(g, HFS_PASS_ENV_HORIZONS, 1);
     }
     if (!rc)
@@ -217,7 +217,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
 
 static int count(hfs_gles *g, hfs_gles_frame *fr, double *fetches, hfs_error *err)
 {
-    return draw(g, fr, fetches, err);
+    int rc = draw(g, fr, &fetches[0], err);
+    return rc || !fr->split.on ? rc : hfs_gles_env_far_draw(g, fr, &fetches[1], err);
 }
 
 const hfs_gles_pass hfs_pass_env_horizons = {
