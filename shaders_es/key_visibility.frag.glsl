@@ -13,11 +13,15 @@
  * fp16's range) as an fp16 (hi, lo) pair in one layer of an RG array.
  * HfsKeys holds one record per key light (runtime/gles/uniform_blocks.h
  * hfs_gles_pack_key), this light's from vec4 u_k[u_kb].
+ * HFS_COUNT: instead of f, the texture fetches this texel made (heights,
+ * normals, horizons, bounds, tables; not the records' texture), as (count
+ * mod 1024, floor(count / 1024)), for measurement.
  */
 // hfs-variant: HFS_TABLES 1
 // hfs-variant: HFS_FP32 1
 // hfs-variant: HFS_KEYS_TEX 1
 // hfs-variant: HFS_KEYS_TEX 1, HFS_TABLES 1
+// hfs-variant: HFS_COUNT 1
 
 #ifndef HFS_KEY_VEC4
 #define HFS_KEY_VEC4 1
@@ -99,11 +103,14 @@ layout(std140) uniform HfsKeys {
 
 layout(location = 0) out vec4 o_f;       /* (f / E_max hi, lo, 0, 1) */
 
+int g_fetches = 0;                       /* HFS_COUNT: this texel's texture fetches */
+
 #ifdef HFS_TABLES
 void tab_add(inout vec4 V[4], float a, float b, bool boundary, int rot, float set)
 {
     float n = float(HFS_TABLE_N);
     bool mirror = KREC(rot).w > 0.5;
+    g_fetches += 4;
     if (boundary)
         hfs_table_add(u_ktabb, vec2(hfs_table_coord(a, n), 0.5), 4.0 * set, mirror,
                       KREC(rot).xyz, KREC(rot + 1).xyz, V);
@@ -123,6 +130,7 @@ float near_slope(ivec2 p, vec2 cs, float d, vec2 zp)
     if (!hfs_scale_offset(p, u_size, d, cs, o))
         return -1e30;
     vec2 t = texture(u_height, (vec2(p) + 0.5 + o) / vec2(u_size)).xy;
+    ++g_fetches;
     return u_rise * hfs_hdiff(t, zp) / d;
 }
 
@@ -153,9 +161,8 @@ float near_horizon(ivec2 p, vec2 zp, vec2 win_t)
         best = max(best, near_slope(p, u_near_cs, d * hfs_refine_factor(q, u_refine, u_lk), zp));
     if (u_near_dir == 0 && u_near > 0) {
         float dist = 0.0;
-        int fetches = 0;
         best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, p, u_near_cs, 1.0, u_near_to,
-                              u_rise, 0.0, zp, best, win_t.y, dist, fetches);
+                              u_rise, 0.0, zp, best, win_t.y, dist, g_fetches);
     }
     return best;
 }
@@ -184,6 +191,7 @@ Cell grid_cell(ivec2 p, vec2 zp)
         ivec2 g = min(c.ga[k] * u_sub, u_size - 1);
         c.rel[k] = vec2(g - p);
         c.rz[k] = u_sub > 1 ? u_rise * hfs_hdiff(texelFetch(u_height, g, 0).xy, zp) : 0.0;
+        g_fetches += u_sub > 1 ? 1 : 0;
     }
     return c;
 }
@@ -205,6 +213,7 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, fl
 {
     if (u_sub == 1) {
         vec4 t = texelFetch(u_keyhz, ivec3(c.ga[0], int(layer)), 0);
+        ++g_fetches;
         return max(fl, t.x + t.y);
     }
     /* the floor's slope, tan(fl), as the stored tangents are clamped */
@@ -212,6 +221,7 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, fl
     float sl[4];
     for (int k = 0; k < 4; ++k) {
         vec4 t = texelFetch(u_keyhz, ivec3(c.ga[k], int(layer)), 0);
+        ++g_fetches;
         float ahead = t.z + dot(c.rel[k], cs);
         float rz = t.z >= u_far ? c.rz[k] : 0.0;
         sl[k] = t.z > 0.0 && ahead >= u_reach ? max(tfl, ((t.x + t.y) * t.z + rz) / ahead) : tfl;
@@ -221,9 +231,8 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, fl
         near = max(near, near_slope(p, cs, exp2(float(m) / u_lk), zp));
     if (u_near_dir == 0 && u_edge > u_near_to) {
         float dist = 0.0;
-        int fetches = 0;
         near = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, p, cs, u_near_to, u_edge,
-                              u_rise, 0.0, zp, near, stop, dist, fetches);
+                              u_rise, 0.0, zp, near, stop, dist, g_fetches);
     }
     return max(fl, atan(max(s, near)));
 }
@@ -333,6 +342,11 @@ void main()
     vec4 H[4];
     hfs_sh_cosine(n, H);
     vec2 zp = texelFetch(u_height, p, 0).xy;
+    g_fetches = 2;
     float f = clamp(key_factor(u_kb, n, H, grid_cell(p, zp), p, zp) / u_emax, 0.0, 1.0);
+#ifdef HFS_COUNT
+    o_f = vec4(float(g_fetches % 1024), float(g_fetches / 1024), 0.0, 1.0);
+#else
     o_f = vec4(hfs_split(f), 0.0, 1.0);
+#endif
 }

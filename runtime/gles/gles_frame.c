@@ -240,8 +240,8 @@ static int count_fetches(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
         if ((!pass->present || pass->present(fr)) && (rc = pass->count(g, fr, fetch, err)))
             return rc;
     }
-    if (g->timing.level >= 2)
-        hfs_gles_plan_drop_grids(&g->plan); /* their targets now hold counts */
+    if (g->timing.level >= 2) /* their targets now hold counts */
+        hfs_gles_plan_lost(&g->plan, 1, 0, 0, 1);
     return HFS_OK;
 }
 

@@ -19,25 +19,6 @@ double hfs_gles_key_emax(const hfs_gles_key *k)
     return fmax(hfs_cap_irradiance(1.0, k->alpha), (double)FLT_MIN);
 }
 
-/* Texture fetches per texel of key_visibility.frag for swath s: normal
- * and height; on a sub-sampled grid the four grid neighbours' heights, the
- * near scales and their refinement (at most; fewer near the edges), the
- * gap search to nr.to (a clear ray's: about two reads per octave,
- * ray_bound.h; a blocked one stops sooner, a partly lit one reads more),
- * and per direction its own gap search to nr.edge and four horizon
- * fetches; at subsample 1 one per direction. */
-static double factor_fetches(const hfs_gles_layout *L, const hfs_swath *s, int refine)
-{
-    if (L->sub == 1)
-        return 2.0 + s->n;
-    const hfs_key_near nr = hfs_gles_key_near_make(L, s);
-    if (nr.per_dir)
-        return 2.0 + 4.0 + 5.0 * s->n;
-    const double dir_gap = 2.0 * ceil(log2(nr.edge / nr.to));
-    return 2.0 + 4.0 + (nr.n > 0 ? nr.n + refine + 2.0 * ceil(log2(nr.to)) : 0) +
-           (4.0 + dir_gap) * s->n;
-}
-
 static int present(const hfs_gles_frame *fr)
 {
     return fr->n_keys > 0;
@@ -75,19 +56,23 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     return HFS_OK;
 }
 
-static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
+/* The factors of the lights `which` marks (all: NULL) into their layers;
+ * fetch_sum not NULL: the counting twin (HFS_COUNT), its fetches added
+ * there. */
+static int draw(hfs_gles *g, hfs_gles_frame *fr, const int *which, double *fetch_sum,
+                hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.key_vec4 = fr->key_rec_block > 0 ? fr->key_rec_block : 1,
                                 .tables = fr->tables, .fp32 = g->caps.fp32,
-                                .keys_tex = fr->keys_tex};
+                                .keys_tex = fr->keys_tex, .count = fetch_sum != NULL};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_KEY_VISIBILITY, &v, &prog, err);
     if (rc || (rc = bind_inputs(g, fr, prog, err)))
         return rc;
     for (int q = 0; q < fr->n_keys; ++q) {
-        if (!which[q])
+        if (which && !which[q])
             continue;
         hfs_gles_set_i1(gl, prog, "u_kb", fr->keys[q].rec_off);
         const hfs_key_near nr = hfs_gles_key_near_make(L, &fr->keys[q].k.swath);
@@ -101,14 +86,26 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
         if ((rc = hfs_gles_fbo_layers(gl, g->r.kf_fbo, g->r.kf, q, 1, "key factor", err)))
             return rc;
         hfs_gles_draw(gl, g->r.kf_fbo, L->w, L->h);
-        hfs_gles_stage_fetches(g, HFS_PASS_KEY_VISIBILITY, 0,
-                               (double)L->w * L->h *
-                                   factor_fetches(L, &fr->keys[q].k.swath, fr->q->refine));
+        if (fetch_sum && (rc = hfs_gles_sum_counts_rect(g, g->r.kf_fbo, L->w, L->h, fetch_sum,
+                                                        err)))
+            return rc;
         if ((rc = hfs_gl_check(gl, "backend gles: key factor pass", err)))
             return rc;
     }
     gl->UseProgram(0);
     return HFS_OK;
+}
+
+static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
+{
+    return draw(g, fr, which, NULL, err);
+}
+
+/* Its counting twin: the fetches of every light's factor (the layers then
+ * hold counts: the frame after drops them, gles_frame.c). */
+static int count(hfs_gles *g, hfs_gles_frame *fr, double *fetches, hfs_error *err)
+{
+    return draw(g, fr, NULL, &fetches[0], err);
 }
 
 const hfs_gles_pass hfs_pass_key_visibility = {
@@ -120,4 +117,5 @@ const hfs_gles_pass hfs_pass_key_visibility = {
     .stages = {"keyfactor"},
     .present = present,
     .run = run,
+    .count = count,
 };
