@@ -439,7 +439,8 @@ float hfs_refine_factor(int q, int n, float k)
  * receiver g (height h = R_layer(g)) in direction cs: at d 2^(u/k),
  * u = -1 + 2 (q + 1) / (n + 1), strictly between sc's neighbouring scales,
  * read from sc's level; returns max(best, their slopes), and sets *dist to
- * the distance of a sample that raised it.  Counts its fetches. */
+ * the distance of a sample that raised it past the relative tie (as
+ * cpu_horizon.c refine_about).  Counts its fetches. */
 float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs, vec4 sc,
                        vec2 h, int n, float k, float best, inout float dist, inout int fetches)
 {
@@ -451,8 +452,9 @@ float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs
         float sl = hfs_scale_slope(levels, g, size, o, sc, h) / f;
         ++fetches;
         if (sl > best) {
+            if (hfs_scale_takes_over(sl, best, 0.0)) /* cpu_horizon.c refine_about */
+                dist = sc.x * f;
             best = sl;
-            dist = sc.x * f;
         }
     }
     return best;

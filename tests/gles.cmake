@@ -87,13 +87,13 @@ endforeach()
 # legendre 2.79e-2 / 0.488, split 4.09e-3 / 0.192; DEM legendre 4.22e-3 /
 # 0.107, split 9.87e-4 / 5.17e-2; sub 4 fractal legendre 5.24e-2 / 0.552,
 # split 1.06e-2 / 0.227; DEM legendre 1.15e-2 / 0.142, split 2.59e-3 /
-# 9.21e-2.  The DEM's split max (5e-4 to 9e-4, fp32 too) is a few texels
-# where two samples tie for a receiver's occluder at different distances
-# (DESIGN.md "One reference at every subsample"); before the occluder's
-# distance moved only past the horizons' tie (env_horizons.frag
-# horizon_tan, cpu_horizon.c hfs_horizon_occluder) it was 2.0e-3-2.5e-3
-# (sub 2: fp16 1.25e-5 / 2.47e-3, fp32 2.61e-6 / 1.97e-3; sub 4: 1.53e-5 /
-# 2.28e-3, 4.52e-6 / 1.47e-3).
+# 9.21e-2.  Before an occluder's distance moved only past the horizons'
+# tie (env_horizons.frag horizon_tan, hfs_refine_about; cpu_horizon.c
+# hfs_horizon_occluder, refine_about), two samples tying for a receiver's
+# occluder at different distances put the DEM's split max at
+# 2.0e-3-2.5e-3 (sub 2: fp16 1.25e-5 / 2.47e-3, fp32 2.61e-6 / 1.97e-3;
+# sub 4: 1.53e-5 / 2.28e-3, 4.52e-6 / 1.47e-3; DESIGN.md "One reference
+# at every subsample").
 #                                       bound (mean max)   measured mean / max
 set(hfs_eq_sub2_fractal_fp16_legendre   4.2e-5 4.1e-4)    # 3.52e-5 / 3.37e-4
 set(hfs_eq_sub2_fractal_fp32_legendre   9.1e-8 6.1e-6)    # 7.59e-8 / 5.07e-6
@@ -101,16 +101,16 @@ set(hfs_eq_sub2_fractal_fp16_split      4.1e-5 2.6e-4)    # 3.42e-5 / 2.16e-4
 set(hfs_eq_sub2_fractal_fp32_split      1.7e-7 5.8e-6)    # 1.37e-7 / 4.86e-6
 set(hfs_eq_sub2_dem_fp16_legendre       2.0e-5 1.8e-4)    # 1.64e-5 / 1.49e-4
 set(hfs_eq_sub2_dem_fp32_legendre       1.3e-7 3.8e-6)    # 1.02e-7 / 3.15e-6
-set(hfs_eq_sub2_dem_fp16_split          1.4e-5 6.3e-4)    # 1.13e-5 / 5.22e-4
-set(hfs_eq_sub2_dem_fp32_split          1.5e-6 6.6e-4)    # 1.21e-6 / 5.46e-4
+set(hfs_eq_sub2_dem_fp16_split          1.3e-5 1.5e-4)    # 1.06e-5 / 1.20e-4
+set(hfs_eq_sub2_dem_fp32_split          2.9e-7 1.7e-4)    # 2.43e-7 / 1.39e-4
 set(hfs_eq_sub4_fractal_fp16_legendre   3.9e-5 4.1e-4)    # 3.17e-5 / 3.37e-4
 set(hfs_eq_sub4_fractal_fp32_legendre   8.2e-8 3.7e-6)    # 6.82e-8 / 3.02e-6
 set(hfs_eq_sub4_fractal_fp16_split      4.1e-5 2.6e-4)    # 3.34e-5 / 2.17e-4
 set(hfs_eq_sub4_fractal_fp32_split      1.6e-7 3.7e-6)    # 1.29e-7 / 3.02e-6
 set(hfs_eq_sub4_dem_fp16_legendre       1.8e-5 1.4e-4)    # 1.48e-5 / 1.16e-4
 set(hfs_eq_sub4_dem_fp32_legendre       1.3e-7 3.6e-6)    # 1.07e-7 / 2.97e-6
-set(hfs_eq_sub4_dem_fp16_split          1.6e-5 1.1e-3)    # 1.32e-5 / 8.83e-4
-set(hfs_eq_sub4_dem_fp32_split          3.5e-6 1.1e-3)    # 2.87e-6 / 8.65e-4
+set(hfs_eq_sub4_dem_fp16_split          1.3e-5 1.5e-4)    # 1.03e-5 / 1.18e-4
+set(hfs_eq_sub4_dem_fp32_split          1.4e-7 3.9e-6)    # 1.17e-7 / 3.24e-6
 foreach(sub 2 4)
   foreach(scene fractal dem)
     foreach(path legendre split)

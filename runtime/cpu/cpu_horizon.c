@@ -247,7 +247,11 @@ double hfs_horizon_refine_factor(int q, int refine, int k)
 /* The largest of `refine` slopes about scale s of receiver (i, j) in
  * direction dir (at d_s 2^(u/k), read from s's level like s itself,
  * off-grid ones skipped) and `best`; *dist (if not NULL) becomes the
- * distance of a refining sample that beats best. */
+ * distance of a refining sample that beats best by more than the
+ * horizons' relative tie (HFS_HORIZON_TIE |best|), so that float and
+ * double name the same sample where slopes tie.  (Not the absolute tie of
+ * the field's height range: a border far below would move it,
+ * test_metamorphic_pad.) */
 static double refine_about(const hfs_horizon_plan *hp, int dir, int i, int j, int s, int refine,
                            double best, double *dist)
 {
@@ -270,9 +274,9 @@ static double refine_about(const hfs_horizon_plan *hp, int dir, int i, int j, in
                                   hp->stride, fx, fy);
         const double d = (v - h0) * t->inv_run / f;
         if (d > best) {
-            best = d;
-            if (dist)
+            if (dist && d > best + HFS_HORIZON_TIE * fabs(best))
                 *dist = d0 * f;
+            best = d;
         }
     }
     return best;
