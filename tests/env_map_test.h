@@ -38,6 +38,16 @@ static inline int env_map_lighting(hfs_lighting *l, const float *map, int w, int
     return rc != HFS_OK;
 }
 
+/* The defaults, with the truth's 720 azimuths (a map's sharp openings
+ * need them). */
+static inline hfs_quality env_map_quality(void)
+{
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    q.truth_azimuths = 720;
+    return q;
+}
+
 /* One frame of backend b on a fresh renderer (GLES: gl_test_gles) into
  * out (allocated here). */
 static inline int env_map_render(hfs_backend b, const hfs_field *f, const hfs_lighting *l,

@@ -88,14 +88,6 @@ static hfs_metrics metrics(const hfs_image *a, const hfs_image *b)
     return m;
 }
 
-static hfs_quality quality(void)
-{
-    hfs_quality q;
-    hfs_quality_defaults(&q);
-    q.truth_azimuths = 720;
-    return q;
-}
-
 /* The lobe's weighted mean of the map at r, every pixel at its centre. */
 static void brute_lobe(const float *map, const double r[3], double out[3])
 {
@@ -188,7 +180,7 @@ static void check_table(const float *map)
 
 static void check_accuracy(const scene *sc, const float *map, hfs_image *truth)
 {
-    const hfs_quality q = quality();
+    const hfs_quality q = env_map_quality();
     hfs_image a = {0}, b = {0};
     int rc = env_map_truth_and_cpu(&sc->f, map, 0.3, make_lighting, &q, truth, &a, &b);
     const hfs_metrics ma = metrics(&a, truth), mb = metrics(&b, truth);
@@ -206,7 +198,7 @@ static void check_accuracy(const scene *sc, const float *map, hfs_image *truth)
 
 static void check_rotate(const scene *sc, const float *map)
 {
-    const hfs_quality q = quality();
+    const hfs_quality q = env_map_quality();
     int rc;
     const double max = env_map_turn_error(&sc->f, map, MW, MH, make_lighting, &q, &rc);
     /* Measured 0; allowed: float rounding of cos, sin (pi/2), of the two
@@ -227,7 +219,7 @@ static void check_gles(const scene *sc, const float *map, const hfs_image *truth
     shaded s, sh;
     make_lighting(&s, map, 0.3, 1);
     make_lighting(&sh, map, 0.3, 0);
-    hfs_quality q = quality();
+    hfs_quality q = env_map_quality();
     q.subsample = 1;
     hfs_image g = {0}, c = {0};
     int rc = render(HFS_BACKEND_GLES, &sc->f, &s.l, &q, &g) | render(HFS_BACKEND_CPU, &sc->f, &s.l, &q, &c);

@@ -80,14 +80,6 @@ static void errors(const hfs_image *a, const hfs_image *b, double *mean, double 
     *mean = s / n / norm, *max = m / norm;
 }
 
-static hfs_quality quality(void)
-{
-    hfs_quality q;
-    hfs_quality_defaults(&q);
-    q.truth_azimuths = 720;
-    return q;
-}
-
 static void check_constant(void)
 {
     float *m = malloc((size_t)MW * MH * 3 * sizeof *m);
@@ -119,7 +111,7 @@ static void check_planes(const float *map)
     hfs_field f;
     shaded s;
     make_lighting(&s, map, 0.3, 1);
-    const hfs_quality q = quality();
+    const hfs_quality q = env_map_quality();
     /* flat: measured 0 (bit for bit); tilted 35 degrees (normals between
      * nodes): 1.5e-5 mean, 1.7e-5 max; bounds 1e-6 and 2x. */
     const double tilt[2] = {0.0, tan(35.0 * PI / 180.0)};
@@ -146,7 +138,7 @@ static void check_planes(const float *map)
 
 static void check_accuracy(const scene *sc, const float *map, hfs_image *truth)
 {
-    const hfs_quality q = quality();
+    const hfs_quality q = env_map_quality();
     hfs_image a = {0}, b = {0};
     int rc = env_map_truth_and_cpu(&sc->f, map, 0.3, make_lighting, &q, truth, &a, &b);
     double ma, xa, mb, xb;
@@ -174,7 +166,7 @@ static void check_accuracy(const scene *sc, const float *map, hfs_image *truth)
 
 static void check_rotate(const scene *sc, const float *map)
 {
-    const hfs_quality q = quality();
+    const hfs_quality q = env_map_quality();
     int rc;
     const double max = env_map_turn_error(&sc->f, map, MW, MH, make_lighting, &q, &rc);
     /* Measured 0 (bit for bit); allowed: float rounding of cos, sin
@@ -212,7 +204,7 @@ static void check_gles(const scene *sc, const float *map, const hfs_image *truth
     shaded s, sh;
     make_lighting(&s, map, 0.3, 1);
     make_lighting(&sh, map, 0.3, 0);
-    hfs_quality q = quality();
+    hfs_quality q = env_map_quality();
     q.subsample = 1;
     hfs_image g = {0}, c = {0};
     int rc = render(HFS_BACKEND_GLES, &sc->f, &s.l, &q, &g) | render(HFS_BACKEND_CPU, &sc->f, &s.l, &q, &c);

@@ -15,6 +15,8 @@
 # of radiance 1 or data/courtyard.exr, and a 2-degree sun 15 degrees up.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# shellcheck source=tools/bench_lib.sh
+. tools/bench_lib.sh
 A=${1:?usage: bench_frame.sh BASE_BUILD NOW_BUILD [ROUNDS] [FRAMES]}
 B=${2:?usage: bench_frame.sh BASE_BUILD NOW_BUILD [ROUNDS] [FRAMES]}
 R=${3:-5}
@@ -24,14 +26,6 @@ trap 'rm -rf "$C"' EXIT
 SKY="--env-sh 3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0"
 MAP="--env-map data/courtyard.exr"
 SUN="--key 336,15,2,1500"
-# frame BUILD ARGS... -> "median_frame_ms texture_MiB" of F frames
-frame() {
-    local b=$1
-    shift
-    "$b/tools/hfshade" render "$@" --time "$F" --pfm "$C/out.pfm" |
-        awk '$1 == "frame" {f = $2} /^texture memory/ {m = $3} END {print f, m}'
-}
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 for n in 256 512; do
     "$B/tools/hfgen" fractal --size ${n}x${n} -o "$C/f$n.pfm"
 done
@@ -41,21 +35,12 @@ echo "|---|---|---|---|---|---|"
 for cfg in "256² SH sky + key|256|$SKY|0.70" "256² env map + key|256|$MAP|0.70" \
            "512² SH sky + key|512|$SKY|0.55" "512² env map + key|512|$MAP|0.55"; do
     IFS='|' read -r name n env goal <<<"$cfg"
-    : >"$C/a" && : >"$C/b" && : >"$C/r"
-    for ((i = 0; i < R; ++i)); do
-        # shellcheck disable=SC2086
-        read -r a ma <<<"$(frame "$A" --height "$C/f$n.pfm" $env $SUN --backend gles)"
-        # shellcheck disable=SC2086
-        read -r b mb <<<"$(frame "$B" --height "$C/f$n.pfm" $env $SUN --backend gles)"
-        echo "$a" >>"$C/a"
-        echo "$b" >>"$C/b"
-        awk -v a="$a" -v b="$b" 'BEGIN {print b / a}' >>"$C/r"
-    done
+    # shellcheck disable=SC2086 # the scene's flags are words
+    read -r a b r ma mb <<<"$(bench_ab "$A" "$B" "$R" "$F" "$C" "" "" --height "$C/f$n.pfm" \
+        $env $SUN --backend gles)"
     [ "$n" = 512 ] && echo "$name|$ma|$mb" >>"$C/mem"
-    r=$(median <"$C/r")
     met=$(awk -v r="$r" -v g="$goal" 'BEGIN {print (r <= g) ? "yes" : "no"}')
-    printf '| %s | %.1f | %.1f | %.3f | <= %s | %s |\n' "$name" "$(median <"$C/a")" \
-        "$(median <"$C/b")" "$r" "$goal" "$met"
+    printf '| %s | %.1f | %.1f | %.3f | <= %s | %s |\n' "$name" "$a" "$b" "$r" "$goal" "$met"
 done
 echo
 echo "| texture memory | base MiB | now MiB | goal | met |"

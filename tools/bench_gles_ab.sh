@@ -15,6 +15,8 @@
 # sky and the sun, the sun alone; its scene flags in AB_FLAGS_A/B).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# shellcheck source=tools/bench_lib.sh
+. tools/bench_lib.sh
 A=${1:?usage: bench_gles_ab.sh BUILD_A BUILD_B [ROUNDS] [FRAMES]}
 B=${2:?usage: bench_gles_ab.sh BUILD_A BUILD_B [ROUNDS] [FRAMES]}
 R=${3:-5}
@@ -24,13 +26,6 @@ trap 'rm -rf "$C"' EXIT
 SKY=${AB_SKY:-"--env-sh 3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0"}
 SUN=${AB_SUN:-"--key 336,15,2,1500"}
 LOCAL="--local 40,40,30,4,2000 --local 90,30,25,3,1500"
-# frame_ms BUILD ARGS... -> the median frame ms of F frames
-frame_ms() {
-    local b=$1
-    shift
-    "$b/tools/hfshade" render "$@" --time "$F" --pfm "$C/out.pfm" | awk '$1 == "frame" {print $2}'
-}
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 "$B/tools/hfgen" fractal --size 256x256 -o "$C/f256.pfm"
 "$B/tools/hfgen" fractal --size 512x512 -o "$C/f512.pfm"
 echo "| scene | A frame ms | B frame ms | B / A (median of $R rounds) |"
@@ -45,16 +40,8 @@ if [ -n "${AB_FIELD:-}" ]; then
 fi
 for cfg in "${cfgs[@]}"; do
     IFS='|' read -r name field args <<<"$cfg"
-    : >"$C/a" && : >"$C/b" && : >"$C/r"
-    for ((i = 0; i < R; ++i)); do
-        # shellcheck disable=SC2086
-        a=$(frame_ms "$A" --height "$field" $args --backend gles ${AB_FLAGS_A:-})
-        # shellcheck disable=SC2086
-        b=$(frame_ms "$B" --height "$field" $args --backend gles ${AB_FLAGS_B:-})
-        echo "$a" >>"$C/a"
-        echo "$b" >>"$C/b"
-        awk -v a="$a" -v b="$b" 'BEGIN {print b / a}' >>"$C/r"
-    done
-    printf '| %s | %.1f | %.1f | %.3f |\n' "$name" "$(median <"$C/a")" "$(median <"$C/b")" \
-        "$(median <"$C/r")"
+    # shellcheck disable=SC2086 # the scene's flags are words
+    read -r a b r _ <<<"$(bench_ab "$A" "$B" "$R" "$F" "$C" "${AB_FLAGS_A:-}" "${AB_FLAGS_B:-}" \
+        --height "$field" $args --backend gles)"
+    printf '| %s | %.1f | %.1f | %.3f |\n' "$name" "$a" "$b" "$r"
 done

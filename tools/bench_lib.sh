@@ -45,6 +45,7 @@ bench_scenes() {
 # flags as KEY=VALUE words).
 bench_scene_keys() {
     local extra flags i
+    # shellcheck disable=SC2034 # the caller reads name and hf
     IFS='|' read -r name hf extra <<<"$1"
     keys=()
     read -r -a flags <<<"$extra"
@@ -71,4 +72,41 @@ bench_frame_ms() {
     shift
     "$hfs" render "$@" --time 3 --quiet -o "$C/frame-time.png" 2>&1 |
         awk '$1 == "frame" { print $2 }'
+}
+
+# bench_median: the median of the numbers on standard input, one a line.
+bench_median() {
+    sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'
+}
+
+# bench_frame_stats BUILD FRAMES DIR ARGS...: "median_frame_ms texture_MiB"
+# of BUILD's `hfshade render ARGS --time FRAMES` (every pass run), the
+# image to DIR.
+bench_frame_stats() {
+    local b=$1 f=$2 dir=$3
+    shift 3
+    "$b/tools/hfshade" render "$@" --time "$f" --pfm "$dir/ab.pfm" |
+        awk '$1 == "frame" {f = $2} /^texture memory/ {m = $3} END {print f, m}'
+}
+
+# bench_ab A B ROUNDS FRAMES DIR "FLAGS_A" "FLAGS_B" ARGS...: the frames of
+# ARGS on builds A and B (each with its extra flags), alternating within
+# each of ROUNDS rounds so that drift on a shared machine hits both:
+# "a_ms b_ms ratio a_MiB b_MiB", medians of the builds' frame times and of
+# the per-round ratios B / A, and the last round's texture memory.
+bench_ab() {
+    local a=$1 b=$2 r=$3 f=$4 dir=$5 fa=$6 fb=$7 i ta tb ma mb
+    shift 7
+    : >"$dir/ab-a" && : >"$dir/ab-b" && : >"$dir/ab-r"
+    for ((i = 0; i < r; ++i)); do
+        # shellcheck disable=SC2086 # the flags are words
+        read -r ta ma <<<"$(bench_frame_stats "$a" "$f" "$dir" "$@" $fa)"
+        # shellcheck disable=SC2086
+        read -r tb mb <<<"$(bench_frame_stats "$b" "$f" "$dir" "$@" $fb)"
+        echo "$ta" >>"$dir/ab-a"
+        echo "$tb" >>"$dir/ab-b"
+        awk -v a="$ta" -v b="$tb" 'BEGIN {print b / a}' >>"$dir/ab-r"
+    done
+    echo "$(bench_median <"$dir/ab-a") $(bench_median <"$dir/ab-b") $(bench_median <"$dir/ab-r")" \
+        "$ma $mb"
 }
