@@ -240,9 +240,25 @@ static void test_ray_tree_vs_plain(void)
 
 /* ---- horizons ------------------------------------------------------------------ */
 
-static void test_horizon_fast(void)
+/* The largest slope over a march of step `step` texels (t = k step, k >= 1,
+ * while in the grid): the exact horizon's lower bound, approached as the
+ * step shrinks. */
+static double march_horizon(const hfs_field *f, int i, int j, double z0, double c, double s,
+                            double step)
 {
-    long n = 0, n_cut = 0;
+    double m = -INFINITY, z;
+    for (long k = 1; hfs_field_bilinear(f, i + k * step * c, j + k * step * s, &z); ++k)
+        m = fmax(m, (z - z0) / (k * step * f->dx));
+    return m;
+}
+
+/* The exact horizon: the accelerated walk equals the plain one bit for bit
+ * (any cutoff, any hint), and every march sample lies at or below it while
+ * a fine march comes close (it is the supremum, not a sample of it). */
+static void test_horizon_exact(void)
+{
+    long n = 0, n_cut = 0, n_above = 0;
+    double worst_gap = 0.0;
     for (int field = 0; field < 5; ++field) {
         const int w = 8 + (int)(urand() * 50), h = 8 + (int)(urand() * 50);
         float *z = malloc((size_t)w * h * sizeof *z);
@@ -263,44 +279,53 @@ static void test_horizon_fast(void)
             const double phi = r < 16 ? r * PI / 8 : 2 * PI * urand();
             const double c = cos(phi), s = sin(phi);
             const double z0 = hfs_field_z(&f, i, j) + 1e-4 * f.dx;
-            const double plain = hfs_truth_horizon_plain(&f, i, j, z0, c, s, 0.25);
-            long hint = 0;
-            const double fast = hfs_truth_horizon(&g, i, j, z0, c, s, 0.25, -INFINITY, &hint);
-            /* the argmax it reports must be a sample with the plain maximum */
-            long hint2 = hint;
-            const double again = hfs_truth_horizon(&g, i, j, z0, c, s, 0.25, fast - 1e-9, &hint2);
+            const double plain = hfs_truth_horizon_plain(&g, i, j, z0, c, s);
+            double hint = 0.0;
+            const double fast = hfs_truth_horizon(&g, i, j, z0, c, s, -INFINITY, &hint);
             const double cut = (urand() - 0.5) * 2.0;
-            long rnd_hint = (long)(urand() * 300) - 20; /* any hint, even out of range */
-            const double fast_cut = hfs_truth_horizon(&g, i, j, z0, c, s, 0.25, cut,
+            double rnd_hint = urand() * 300.0 - 20.0; /* any hint, even off the grid */
+            const double fast_cut = hfs_truth_horizon(&g, i, j, z0, c, s, cut,
                                                       r % 2 ? &rnd_hint : NULL);
-            if (plain > -INFINITY && (again != plain || hint2 != hint || hint < 1)) {
-                fprintf(stderr, "argmax hint %ld: re-run gives %.17g (hint %ld)\n", hint, again,
-                        hint2);
-                bad = 1;
-            }
             const double want_cut = plain > cut ? plain : -INFINITY;
             if (fast != plain || fast_cut != want_cut) {
                 fprintf(stderr, "field %d (%d,%d) phi %.17g: plain %.17g fast %.17g "
                         "cut %.17g fast_cut %.17g\n", field, i, j, phi, plain, fast, cut, fast_cut);
                 bad = 1;
             }
+            if (r % 10 == 0 && plain > -INFINITY) {
+                const double coarse = march_horizon(&f, i, j, z0, c, s, 0.25);
+                const double fine = march_horizon(&f, i, j, z0, c, s, 1.0 / 4096);
+                const double tol = 1e-12 * (1.0 + fabs(plain));
+                if (coarse > plain + tol || fine > plain + tol) {
+                    fprintf(stderr, "field %d (%d,%d) phi %.17g: a march sample %.17g / "
+                            "%.17g above the exact %.17g\n", field, i, j, phi, coarse, fine,
+                            plain);
+                    bad = 1;
+                }
+                worst_gap = fmax(worst_gap, plain - fine);
+                n_above += plain > coarse + 1e-9;
+            }
             n_cut += plain <= cut;
             ++n;
         }
         hfs_truth_grid_free(&g);
         free(z);
-        REQUIRE(!bad, "field %d: accelerated horizon differs from the plain march", field);
+        REQUIRE(!bad, "field %d: the exact horizon fails (above)", field);
     }
     REQUIRE(n_cut > n / 10 && n_cut < n - n / 10, "cutoff cases %ld of %ld", n_cut, n);
-    printf("horizon_fast: %ld horizons identical to the plain march (%ld under the cutoff)\n",
-           n, n_cut);
+    REQUIRE(worst_gap < 6e-3, "a 1/4096-texel march stays %.3g below the exact horizon",
+            worst_gap);
+    REQUIRE(n_above > 0, "the exact horizon never exceeds a 0.25-texel march");
+    printf("horizon_exact: %ld horizons, tree = plain (%ld under the cutoff); above a "
+           "0.25 march %ld times, within %.2e of a 1/4096 march\n", n, n_cut, n_above,
+           worst_gap);
 }
 
 static void test_horizon_analytic(void)
 {
-    /* (a) a tilted plane z = zs*(a x + b y): along azimuth phi every sample
-     * lies on the plane, so the march maximum is at the last in-grid sample
-     * t_K: slope = zs (a cos phi + b sin phi) - lift/t_K, exactly. */
+    /* (a) a tilted plane z = zs*(a x + b y): along azimuth phi the surface
+     * rises linearly, so the supremum is where the ray leaves the grid,
+     * t_e: slope = zs (a cos phi + b sin phi) / dx - lift / t_e, exactly. */
     {
         const int w = 41, h = 29;
         const double a = 0.75, b = -0.375, zs = 1.5, dx = 2.0;
@@ -317,12 +342,10 @@ static void test_horizon_analytic(void)
             const double phi = 2 * PI * (r + 0.5) / 200;
             const double c = cos(phi), s = sin(phi);
             const double z0 = hfs_field_z(&f, i, j) + 1e-4 * dx;
-            const double m = hfs_truth_horizon(&g, i, j, z0, c, s, 0.25, -INFINITY, NULL);
-            /* last in-grid sample */
-            double tk = 0.0, zdummy;
-            while (hfs_field_bilinear(&f, i + (tk + 0.25) * c, j + (tk + 0.25) * s, &zdummy))
-                tk += 0.25;
-            const double want = zs * (a * c + b * s) / dx - 1e-4 / tk;
+            const double m = hfs_truth_horizon(&g, i, j, z0, c, s, -INFINITY, NULL);
+            const double te = fmin(c > 0 ? (w - 1 - i) / c : -i / c,
+                                   s > 0 ? (h - 1 - j) / s : -j / s);
+            const double want = zs * (a * c + b * s) / dx - 1e-4 / te;
             const double e = fabs(atan(m) - atan(want));
             worst = e > worst ? e : worst;
             REQUIRE(e < 1e-9, "plane (%d,%d) phi %.4f: horizon %.12f want %.12f", i, j, phi,
@@ -332,9 +355,31 @@ static void test_horizon_analytic(void)
         free(z);
         printf("horizon_analytic: tilted plane, 200 azimuths, worst error %.2e rad\n", worst);
     }
-    /* (b) a wall: column x = X of height hw on flat ground.  Bilinear makes it
+    /* (b) a saddle-twisted cell: z = 1 where i + j is odd, else 0.  Along
+     * the diagonal the first cell is z = sqrt2 t - t^2, so from the lifted
+     * corner (lift L = 1e-4, dx = 1) the slope sqrt2 - t - L / t peaks
+     * inside the cell at t = sqrt L: sqrt2 - 2 sqrt L.  A 0.25-texel march
+     * saw sqrt2 - 0.25 - 4 L (50 degrees for 54). */
+    {
+        const int w = 9, h = 9;
+        float *z = malloc((size_t)w * h * sizeof *z);
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i)
+                z[j * w + i] = (float)((i + j) % 2);
+        const hfs_field f = {w, h, z, 1.0, 1.0};
+        hfs_truth_grid g;
+        REQUIRE(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
+        const double m = hfs_truth_horizon(&g, 0, 0, 1e-4, sqrt(0.5), sqrt(0.5), -INFINITY,
+                                           NULL);
+        const double want = sqrt(2.0) - 2.0 * sqrt(1e-4);
+        REQUIRE(fabs(m - want) < 1e-12, "twisted cell: %.15f want %.15f", m, want);
+        hfs_truth_grid_free(&g);
+        free(z);
+        printf("horizon_analytic: twisted cell's inner maximum %.6f exact\n", m);
+    }
+    /* (c) a wall: column x = X of height hw on flat ground.  Bilinear makes it
      * a tent from X-1 to X+1; seen from (i, j) with i < X-1 along +x the
-     * steepest sample is the crest: atan((zs*hw - lift) / ((X - i) dx)). */
+     * steepest point is the crest: atan((zs*hw - lift) / ((X - i) dx)). */
     {
         const int w = 40, h = 9, X = 30;
         const double hw = 7.0, zs = 2.0, dx = 0.5;
@@ -346,13 +391,12 @@ static void test_horizon_analytic(void)
         REQUIRE(hfs_truth_grid_init(&g, &f) == HFS_OK, "grid init");
         for (int i = 0; i < X - 1; ++i) {
             const double z0 = 1e-4 * dx;
-            const double m = hfs_truth_horizon(&g, i, 4, z0, 1.0, 0.0, 0.25, -INFINITY, NULL);
+            const double m = hfs_truth_horizon(&g, i, 4, z0, 1.0, 0.0, -INFINITY, NULL);
             const double want = atan((zs * hw - z0) / ((X - i) * dx));
             REQUIRE(fabs(atan(m) - want) < 1e-12, "wall from i=%d: %.15f want %.15f", i,
                     atan(m), want);
             /* looking away (-x): flat ground only, below the lifted receiver */
-            const double back = hfs_truth_horizon(&g, i, 4, z0, -1.0, 0.0, 0.25, -INFINITY,
-                                                  NULL);
+            const double back = hfs_truth_horizon(&g, i, 4, z0, -1.0, 0.0, -INFINITY, NULL);
             REQUIRE(i == 0 ? back == -INFINITY : back < 0.0, "away from the wall at i=%d: %g",
                     i, back);
         }
@@ -422,7 +466,7 @@ int main(void)
     test_cap_irradiance();
     test_ray_vs_march();
     test_ray_tree_vs_plain();
-    test_horizon_fast();
+    test_horizon_exact();
     test_horizon_analytic();
     test_first_cell();
     return finish_checks("test_truth_geom");

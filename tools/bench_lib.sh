@@ -10,12 +10,12 @@ bench_seconds() {
 # bench_truth HFS TRUTH.pfm SCENE-ARGS...: renders the ground truth (1024
 # samples per light) into TRUTH.pfm unless it is already there for the same
 # arguments and truth version (TRUTH.key beside it; version 2: the truth
-# integrates an --env-map itself, not its SH), its log (with the wall time)
-# beside it as TRUTH.log.
+# integrates an --env-map itself, not its SH; 3: exact horizons), its log
+# (with the wall time) beside it as TRUTH.log.
 bench_truth() {
     local hfs=$1 truth=$2
     shift 2
-    local key="truth-v2 $*"
+    local key="truth-v3 $*"
     if [ -s "$truth" ] && [ "$(cat "${truth%.pfm}.key" 2>/dev/null)" = "$key" ]; then
         return 0
     fi

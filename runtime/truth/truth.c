@@ -2,8 +2,8 @@
  * truth.c — the brute-force ground truth (SPEC.md, DESIGN.md "Ground truth").
  *
  * Per receiver (grid point, lifted by 1e-4*dx, SPEC normal):
- *   - environment: exact horizon (hfs_truth_horizon: <= 0.25-texel march of
- *     the bilinear surface) at each of A azimuth midpoints (a + 0.5) 2pi/A,
+ *   - environment: exact horizon (hfs_truth_horizon: the bilinear surface's
+ *     largest slope along the ray, cell by cell in closed form) at each of A azimuth midpoints (a + 0.5) 2pi/A,
  *     then Gauss-Legendre in elevation of L(s) (N.s) cos e over
  *     [max(horizon, tangent-plane elevation), pi/2]; midpoint rule in azimuth;
  *     an environment map (lighting->env_map) is integrated itself instead
@@ -39,7 +39,6 @@
 
 #define PI 3.14159265358979323846
 #define LIFT 1e-4          /* receiver lift, in units of dx (SPEC)          */
-#define MARCH_STEP 0.25    /* horizon march step, texels                    */
 #define TRIG_N 7           /* L along a vertical great circle: degree-3 trig */
 #define LOCAL_SLOT0 64     /* RNG stream ids of local lights start here     */
 #define GLOSS_SLOT 4096    /* RNG stream id of the glossy environment term  */
@@ -175,13 +174,13 @@ static void env_receiver(const truth_ctx *x, int i, int j, double z0,
 {
     const int n_ch = x->env_grey ? 1 : 3;
     double sum[3] = {0.0, 0.0, 0.0};
-    long hint = 0; /* argmax sample of the previous azimuth: horizons are
-                    * nearly continuous in azimuth, so it seeds the march */
+    double hint = 0.0; /* where the previous azimuth's maximum lay: horizons
+                        * are nearly continuous in azimuth, so it seeds the walk */
     for (int a = 0; a < x->n_az; ++a) {
         const env_azimuth *az = &x->az[a];
         const double na = n[0] * az->c + n[1] * az->s;
         const double lo =
-            hfs_truth_env_lo(&x->grid, i, j, z0, n, az->c, az->s, MARCH_STEP, &hint);
+            hfs_truth_env_lo(&x->grid, i, j, z0, n, az->c, az->s, &hint);
         if (!(lo < PI / 2))
             continue;
         /* GL on [lo, pi/2]: nodes mid +- half*x_g in symmetric pairs, so one

@@ -17,7 +17,6 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
-#define MARCH_STEP 0.25 /* horizon march step, texels, as truth.c */
 #define NQ 9            /* (C, S, D) x 3 channels */
 
 typedef struct bright_col {
@@ -312,17 +311,17 @@ fail:
 /* ---- one receiver ------------------------------------------------------------------ */
 
 double hfs_truth_env_lo(const hfs_truth_grid *g, int i, int j, double z0, const double n[3],
-                        double c, double s, double step, long *hint)
+                        double c, double s, double *hint)
 {
     const double na = n[0] * c + n[1] * s;
     const double e0 = atan2(-na, n[2]); /* N.s(phi, e) >= 0 for e >= e0 */
     /* Horizon slopes whose atan is <= e0 cannot change the result: let the
-     * march skip them (identical result, and flat ground costs nothing). */
+     * walk skip them (identical result, and flat ground costs nothing). */
     double cut = -na / n[2], dc = 1e-12 * (1.0 + fabs(cut));
     while (atan(cut - dc) > e0)
         dc *= 16.0;
     cut -= dc;
-    const double m = hfs_truth_horizon(g, i, j, z0, c, s, step, cut, hint);
+    const double m = hfs_truth_horizon(g, i, j, z0, c, s, cut, hint);
     const double horizon = m > -INFINITY ? atan(m) : -PI / 2;
     return horizon > e0 ? horizon : e0;
 }
@@ -342,9 +341,9 @@ static int row_of(const hfs_truth_envmap *m, double lo)
 static void wedges(const hfs_truth_envmap *m, const hfs_truth_grid *g, int i, int j, double z0,
                    const double n[3], double sum[3])
 {
-    long hint = 0;
+    double hint = 0.0;
     for (int a = 0; a < m->n_az; ++a) {
-        const double lo = hfs_truth_env_lo(g, i, j, z0, n, m->wc[a], m->ws[a], MARCH_STEP, &hint);
+        const double lo = hfs_truth_env_lo(g, i, j, z0, n, m->wc[a], m->ws[a], &hint);
         if (!(lo < 0.5 * PI))
             continue;
         const int r = row_of(m, lo);
@@ -364,10 +363,10 @@ static void wedges(const hfs_truth_envmap *m, const hfs_truth_grid *g, int i, in
 static void bright(const hfs_truth_envmap *m, const hfs_truth_grid *g, int i, int j, double z0,
                    const double n[3], double sum[3])
 {
-    long hint = 0;
+    double hint = 0.0;
     for (int b = 0; b < m->n_cols; ++b) {
         const bright_col *bc = &m->cols[b];
-        const double lo = hfs_truth_env_lo(g, i, j, z0, n, bc->cphi, bc->sphi, MARCH_STEP, &hint);
+        const double lo = hfs_truth_env_lo(g, i, j, z0, n, bc->cphi, bc->sphi, &hint);
         const double az = n[0] * bc->cc + n[1] * bc->ss, z = n[2] * bc->dd;
         for (int k = bc->first; k < bc->first + bc->count; ++k) {
             const int r = m->px[k].row;

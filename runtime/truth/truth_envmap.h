@@ -15,7 +15,7 @@
  *
  *   - bright pixels (radiance above HFS_ENVMAP_BRIGHT_K times the map's
  *     mean, the HFS_ENVMAP_BRIGHT_MAX brightest): each at its own column
- *     azimuth, with that azimuth's exact horizon (one march per column)
+ *     azimuth, with that azimuth's exact horizon (one walk per column)
  *     and its own fractional elevation coverage;
  *   - every other pixel: summed into A azimuth wedges (A = truth_azimuths)
  *     as per-row sums of L D, L C, L S (a column split exactly where it
@@ -62,10 +62,9 @@ void hfs_truth_envmap_radiance(const hfs_truth_envmap *m, const double s[3], dou
 
 /* The lowest elevation that counts along the horizontal direction (c, s)
  * (unit) for the receiver (i, j, z0) with normal n: the larger of the
- * exact horizon (hfs_truth_horizon, march step `step` texels; -pi/2 when
- * nothing occludes) and the tangent plane's elevation there.  hint as
- * hfs_truth_horizon's. */
+ * exact horizon (hfs_truth_horizon; -pi/2 when nothing occludes) and the
+ * tangent plane's elevation there.  hint as hfs_truth_horizon's. */
 double hfs_truth_env_lo(const hfs_truth_grid *g, int i, int j, double z0, const double n[3],
-                        double c, double s, double step, long *hint);
+                        double c, double s, double *hint);
 
 #endif /* HFS_TRUTH_ENVMAP_H */

@@ -11,6 +11,7 @@
 #include "truth_raycast.h"
 
 #include "field_geom.h"
+#include "truth_walk.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -106,199 +107,7 @@ err_nomem:
     return HFS_E_NOMEM;
 }
 
-/* ---- horizons --------------------------------------------------------------- */
-
-/* Sample k of the march; one definition shared by both marches so that they
- * see bit-identical positions. */
-static inline void march_pos(int i, int j, double c, double s, double t,
-                             double *gx, double *gy)
-{
-    *gx = (double)i + t * c;
-    *gy = (double)j + t * s;
-}
-
-/* hfs_field_bilinear's in-grid predicate. */
-static inline int in_grid(const hfs_field *f, double gx, double gy)
-{
-    return gx >= 0.0 && gy >= 0.0 && gx <= (double)(f->width - 1) &&
-           gy <= (double)(f->height - 1);
-}
-
-/* Parameter at which p0 + t*dir leaves [lo, hi] (dir != 0), else +inf. */
-static inline double exit_param(double p0, double dir, double lo, double hi)
-{
-    if (dir > 0.0)
-        return (hi - p0) / dir;
-    if (dir < 0.0)
-        return (lo - p0) / dir;
-    return INFINITY;
-}
-
-double hfs_truth_horizon_plain(const hfs_field *f, int i, int j, double z0,
-                               double c, double s, double step)
-{
-    double m = -INFINITY;
-    for (long k = 1;; ++k) {
-        const double t = (double)k * step;
-        double gx, gy, z;
-        march_pos(i, j, c, s, t, &gx, &gy);
-        if (!hfs_field_bilinear(f, gx, gy, &z))
-            break;
-        const double sl = (z - z0) / (t * f->dx);
-        if (sl > m)
-            m = sl;
-    }
-    return m;
-}
-
-/* Slope of the in-grid march sample at distance t: hfs_field_bilinear
- * inlined with the identical arithmetic, so both marches agree bit for bit. */
-static inline double sample_slope(const hfs_field *f, int i, int j, double z0,
-                                  double c, double s, double t)
-{
-    const int w = f->width;
-    double px, py;
-    march_pos(i, j, c, s, t, &px, &py);
-    int ci = (int)px, cj = (int)py;
-    ci = ci < w - 2 ? ci : w - 2;
-    cj = cj < f->height - 2 ? cj : f->height - 2;
-    const double fx = px - ci, fy = py - cj;
-    const float *r0 = f->z + (size_t)cj * (size_t)w + (size_t)ci, *r1 = r0 + w;
-    const double zs = f->zscale;
-    const double z00 = zs * (double)r0[0], z10 = zs * (double)r0[1];
-    const double z01 = zs * (double)r1[0], z11 = zs * (double)r1[1];
-    const double z = (z00 * (1.0 - fx) + z10 * fx) * (1.0 - fy) +
-                     (z01 * (1.0 - fx) + z11 * fx) * fy;
-    return (z - z0) / (t * f->dx);
-}
-
-/* Number of leading march samples inside the grid (positions are monotone
- * in k, so in-grid samples form a prefix). */
-static long march_count(const hfs_field *f, int i, int j, double c, double s,
-                        double step)
-{
-    const double te = fmin(exit_param(i, c, 0.0, f->width - 1),
-                           exit_param(j, s, 0.0, f->height - 1));
-    long k = (long)floor(te / step);
-    if (k < 0)
-        k = 0;
-    double gx, gy;
-    for (;;) { /* at most a step or two either way */
-        if (k >= 1) {
-            march_pos(i, j, c, s, (double)k * step, &gx, &gy);
-            if (!in_grid(f, gx, gy)) {
-                --k;
-                continue;
-            }
-        }
-        march_pos(i, j, c, s, (double)(k + 1) * step, &gx, &gy);
-        if (in_grid(f, gx, gy)) {
-            ++k;
-            continue;
-        }
-        return k;
-    }
-}
-
-double hfs_truth_horizon(const hfs_truth_grid *g, int i, int j, double z0,
-                         double c, double s, double step, double cutoff, long *hint)
-{
-    const hfs_field *f = g->f;
-    const long n = march_count(f, i, j, c, s, step);
-    const int ncx = g->w - 1, ncy = g->h - 1;
-    const int top = g->n_levels - 1;
-    const double dxw = f->dx, margin = g->margin;
-    const double dz_top = g->z_hi + margin - z0;
-    const double inv_c = c != 0.0 ? 1.0 / c : 0.0, inv_s = s != 0.0 ? 1.0 / s : 0.0;
-    const double inv_step = 1.0 / step;
-    /* m: the running maximum, never below cutoff (samples at or below it are
-     * irrelevant to the caller, and skipping them is what makes flat ground
-     * cheap).  Skip tests compare dz <= m * t * dx rather than dividing; the
-     * node margin (1e-9 of the height scale) dwarfs that rounding. */
-    double m = cutoff;
-    long best = 0;
-    /* The maximum does not depend on the order of the samples: evaluating
-     * the hinted one first only raises m early, so more gets skipped. */
-    if (hint && *hint >= 1 && *hint <= n) {
-        const double sl = sample_slope(f, i, j, z0, c, s, (double)*hint * step);
-        if (sl > m) {
-            m = sl;
-            best = *hint;
-        }
-    }
-    int level = 0;
-    long k = 1;
-    while (k <= n) {
-        const double t = (double)k * step;
-        if (dz_top >= 0.0 && dz_top <= m * (t * dxw))
-            break; /* nothing anywhere ahead can rise above m */
-        double gx, gy;
-        march_pos(i, j, c, s, t, &gx, &gy);
-        int cx = (int)gx, cy = (int)gy; /* >= 0: sample k is in the grid */
-        cx = cx < ncx ? cx : ncx - 1;
-        cy = cy < ncy ? cy : ncy - 1;
-        const int nx = cx >> level, ny = cy >> level;
-        const int x0 = nx << level, y0 = ny << level;
-        const int x1 = x0 + (1 << level) < ncx ? x0 + (1 << level) : ncx;
-        const int y1 = y0 + (1 << level) < ncy ? y0 + (1 << level) : ncy;
-        const double tx = c > 0.0 ? (x1 - i) * inv_c : c < 0.0 ? (x0 - i) * inv_c : INFINITY;
-        const double ty = s > 0.0 ? (y1 - j) * inv_s : s < 0.0 ? (y0 - j) * inv_s : INFINITY;
-        const double te = tx < ty ? tx : ty;
-        /* Last sample surely inside the node (closed box), at least k. */
-        long kend = (long)((te - 1e-9 * (1.0 + te)) * inv_step);
-        if (kend > n)
-            kend = n;
-        if (kend < k)
-            kend = k;
-        if (m > -INFINITY) {
-            const double dz = (double)g->zmax[level][(size_t)ny * g->lw[level] + nx] +
-                              margin - z0;
-            /* Can any sample k..kend of this node have a slope above m? */
-            const int skip = dz >= 0.0 ? dz <= m * (t * dxw)
-                                       : dz <= m * ((double)kend * step * dxw);
-            if (skip) {
-                k = kend + 1;
-                if (level < top)
-                    ++level;
-                continue;
-            }
-        }
-        if (level > 0) {
-            --level;
-            continue;
-        }
-        for (long kk = k; kk <= kend; ++kk) {
-            const double sl = sample_slope(f, i, j, z0, c, s, (double)kk * step);
-            if (sl > m) {
-                m = sl;
-                best = kk;
-            }
-        }
-        k = kend + 1;
-    }
-    if (hint)
-        *hint = best;
-    return m > cutoff ? m : -INFINITY;
-}
-
 /* ---- rays ---------------------------------------------------------------------- */
-
-/* Index of the cell the ray enters at coordinate p moving with sign(dir);
- * a ray along a grid line (dir == 0) may take either neighbour (the bilinear
- * surface agrees on the shared edge), clamped into [0, ncell-1]. */
-static inline int cell_of(double p, double dir, int ncell)
-{
-    if (p < -2.0)
-        p = -2.0;
-    if (p > ncell + 2.0)
-        p = ncell + 2.0;
-    if (dir > 0.0)
-        return (int)floor(p);
-    if (dir < 0.0)
-        return (int)ceil(p) - 1;
-    int c = (int)floor(p);
-    return c < 0 ? 0 : (c > ncell - 1 ? ncell - 1 : c);
-}
 
 /* The smallest s in [0, len] with c0 + b s + a s^2 <= 0, for a segment
  * cell_hit finds hitting (so one exists up to rounding, which the
@@ -373,7 +182,7 @@ static int ray_walk(const hfs_truth_grid *g, const double o[3], const double d[3
     const double ztop = (double)g->zmax[top][0] + g->margin;
     if (!(tmax > 0.0))
         return 0;
-    int ci = cell_of(ox, u, ncx), cj = cell_of(oy, v, ncy);
+    int ci = hfs_truth_cell_of(ox, u, ncx), cj = hfs_truth_cell_of(oy, v, ncy);
     int level = 0;
     double t = 0.0;
     for (;;) {
@@ -385,7 +194,8 @@ static int ray_walk(const hfs_truth_grid *g, const double o[3], const double d[3
         const int x0 = nx << level, y0 = ny << level;
         const int x1 = x0 + (1 << level) < ncx ? x0 + (1 << level) : ncx;
         const int y1 = y0 + (1 << level) < ncy ? y0 + (1 << level) : ncy;
-        const double tx = exit_param(ox, u, x0, x1), ty = exit_param(oy, v, y0, y1);
+        const double tx = hfs_truth_exit_param(ox, u, x0, x1);
+        const double ty = hfs_truth_exit_param(oy, v, y0, y1);
         double te = tx < ty ? tx : ty;
         if (te < t)
             te = t;
@@ -412,23 +222,7 @@ static int ray_walk(const hfs_truth_grid *g, const double o[3], const double d[3
         if (te >= tmax)
             return 0; /* the segment up to the light is clear (also te = inf) */
         t = te;
-        if (tx <= ty) {
-            const int nci = u > 0.0 ? x1 : x0 - 1;
-            if (v != 0.0) {
-                int c = cell_of(oy + te * v, v, ncy);
-                c = v > 0.0 ? (c > cj ? c : cj) : (c < cj ? c : cj);
-                cj = c < y0 ? y0 : (c > y1 - 1 ? y1 - 1 : c);
-            }
-            ci = nci;
-        } else {
-            const int ncj = v > 0.0 ? y1 : y0 - 1;
-            if (u != 0.0) {
-                int c = cell_of(ox + te * u, u, ncx);
-                c = u > 0.0 ? (c > ci ? c : ci) : (c < ci ? c : ci);
-                ci = c < x0 ? x0 : (c > x1 - 1 ? x1 - 1 : c);
-            }
-            cj = ncj;
-        }
+        hfs_truth_walk_step(ox, oy, u, v, te, tx, ty, x0, x1, y0, y1, ncx, ncy, &ci, &cj);
     }
 }
 

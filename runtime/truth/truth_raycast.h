@@ -40,29 +40,28 @@ void hfs_truth_grid_free(hfs_truth_grid *g);
 
 /* ---- environment horizons ------------------------------------------------- */
 
-/* hfs_truth_horizon_plain: tangent of the horizon seen from grid point
- * (i, j) at world height z0 (the lifted receiver) along the horizontal
- * direction (c, s) (unit, grid axes): the maximum over march samples
- * k = 1, 2, ... of
- *     (z(p_k) - z0) / (t_k * dx),   t_k = k * step (texels),
- *     p_k = (i + t_k c, j + t_k s),
- * z the bilinear height (hfs_field_bilinear), stopping at the first sample
- * outside the grid.  -INFINITY when no sample lies in the grid.  Visits every
- * sample: the definition, kept for tests. */
-double hfs_truth_horizon_plain(const hfs_field *f, int i, int j, double z0,
-                               double c, double s, double step);
+/* hfs_truth_horizon: tangent of the horizon seen from grid point (i, j) at
+ * world height z0 (the lifted receiver) along the horizontal direction
+ * (c, s) (unit, grid axes): the supremum over the ray's points t > 0
+ * (texels) of (z(p(t)) - z0) / (t dx), p(t) = (i + t c, j + t s), z the
+ * bilinear surface, up to where the ray leaves the grid.  Exact: per
+ * crossed cell the surface along the ray is a quadratic in t, and the
+ * maximum of that slope is taken in closed form (truth_horizon.c).
+ * For callers that do not care about slopes at or below `cutoff` (e.g. the
+ * tangent of the tangent-plane elevation, rounded down; -INFINITY for none)
+ * it skips what cannot exceed cutoff (the quadtree, early exit) and returns
+ * the supremum when that exceeds cutoff, else -INFINITY.  hint (may be
+ * NULL): in, a distance (texels) whose cell is examined first (e.g. where
+ * the neighbouring azimuth's maximum lay; any value is safe); out, where
+ * this maximum lies (0 if none exceeds cutoff).  The hint changes only the
+ * speed, never the result. */
+double hfs_truth_horizon(const hfs_truth_grid *g, int i, int j, double z0, double c,
+                         double s, double cutoff, double *hint);
 
-/* The same maximum, accelerated (quadtree skipping, early exit), for callers
- * that do not care about slopes at or below `cutoff` (e.g. the tangent of the
- * tangent-plane elevation, rounded down; -INFINITY for none): returns exactly
- * hfs_truth_horizon_plain's value when that exceeds cutoff, else -INFINITY.
- * hint (may be NULL): in, a sample index to evaluate first (e.g. the argmax of
- * the neighbouring azimuth; any value is safe, out-of-range ones are ignored);
- * out, the index of the maximizing sample (0 if none exceeds cutoff).  The
- * hint changes only the speed, never the result. */
-double hfs_truth_horizon(const hfs_truth_grid *g, int i, int j, double z0,
-                         double c, double s, double step, double cutoff,
-                         long *hint);
+/* The same supremum, every crossed cell solved (no quadtree, no cutoff;
+ * -INFINITY when the ray crosses no cell): for tests. */
+double hfs_truth_horizon_plain(const hfs_truth_grid *g, int i, int j, double z0, double c,
+                               double s);
 
 /* ---- exact rays ----------------------------------------------------------------- */
 
