@@ -30,6 +30,19 @@
  * taking the mean of the parts (hfs_split_band), as W takes the mean of
  * the occluded parts: turning bounces on leaves the direct light as it is
  * (issue 36).
+ * The near part (HFS_SLICE, u_near_d > 0; issue 36 "the gather sees what
+ * a point sees"): the bands cast by the own cell and the scales within
+ * u_near_d texels are what changes from texel to texel on rough relief
+ * (a pit's own walls), so on a sub-sampled bounce grid they are gathered
+ * at every texel (HFS_NEAR) and the grid keeps only the rest.  Grid
+ * receivers then write E - E_near and W - W_near (W_near: the near bands'
+ * cosine weights, dphi / pi times their sum), bounce_light.frag adds each
+ * texel's own near part and scales the grid's rest by the texel's own
+ * occluded part beyond its near part.
+ * HFS_NEAR 1: that near pass, at every texel (u_sub 1): the own cell and
+ * the scales within u_near_d, capped by the texel's direct horizons (the
+ * grid's occluders read bilinearly and moved to the texel's height, as
+ * env_slices.frag reads them), into (E_near, W_near).
  * HFS_GLOSSY (a glossy receiver, gloss.h): each band is also weighed by
  * the Phong lobe about the receiver's R times its cosine (lobe_band, as
  * slice_light.c hfs_lobe_slice_band), written as G = ks (S+2)/(2 pi)
@@ -43,6 +56,9 @@
 // hfs-variant: HFS_SLICE 1, HFS_GLOSSY 2, HFS_FP32 1
 // hfs-variant: HFS_SLICE 1, HFS_FARK 3
 // hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_FARK 2, HFS_GLOSSY 1
+// hfs-variant: HFS_SLICE 1, HFS_NEAR 1
+// hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_FARK 2, HFS_NEAR 1
+// hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_NEAR 1, HFS_FP32 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -78,7 +94,7 @@ void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
 bool hfs_scale_takes_over(float sl, float ref, float tie);
-#ifdef HFS_FARK
+#if defined(HFS_FARK) || defined(HFS_NEAR)
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
 float hfs_far_slope(float h, float d, float dz, float inv_step);
@@ -111,6 +127,11 @@ float g_fdz;                             /* and how far the far receivers stand 
 #endif
 uniform float u_vmax;                    /* largest normalized height, a hair up */
 uniform int u_refine;                    /* samples per scale besides the scale's own */
+uniform float u_near_d;                  /* the near part's reach, texels (0: none) */
+#ifdef HFS_NEAR
+vec2 g_vuv;                              /* the texel's place on the visibility grid */
+float g_vdz;                             /* and how far its receivers stand above it */
+#endif
 uniform float u_tie;                     /* hfs_horizon_tie_slope */
 #ifdef HFS_GLOSSY
 uniform vec4 u_gpar;                     /* (S, step, 1e-6^(1/S), 0): hfs_lobe_slice */
@@ -184,6 +205,9 @@ struct Walk {
 #endif
     vec3 acc;        /* sum of Lo_{b-1} W */
     vec3 last;       /* the last band's radiance */
+    bool near;       /* the bands cast now are the near part's */
+    vec3 acc_near;   /* its sum of Lo_{b-1} W */
+    float w_near;    /* and of W */
 #ifdef HFS_GLOSSY
     vec4 l;          /* (R.d, R_z, N.d, N_z) */
     vec2 sup;        /* the lobe's support along the slice (x > y: none) */
@@ -230,7 +254,12 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
     float x = atan(t);
     float s = slice_cosine(w.a, w.b, x);
     float wl;
-    w.acc += lo * band_weight(w, s, x, wl);
+    float wgt = band_weight(w, s, x, wl);
+    w.acc += lo * wgt;
+    if (w.near) {
+        w.acc_near += lo * wgt;
+        w.w_near += wgt;
+    }
 #ifdef HFS_GLOSSY
     w.gacc += lo * wl;
 #endif
@@ -275,6 +304,11 @@ void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
     bool in_grid = true;
     for (int i = HFS_NLEV - 1; i >= 0 && in_grid && w.t_top < w.t_cap; --i) {
         vec4 sc = u_scale[i];
+        w.near = sc.x <= u_near_d;
+#ifdef HFS_NEAR
+        if (!w.near)
+            break; /* the grid gathers the rest */
+#endif
         vec2 h = hx[int(sc.z)];
         float most = (u_vmax - hfs_h(h)) * sc.y; /* the largest slope at distance d */
         float f = 1.0, t_best = w.t_top;
@@ -309,6 +343,18 @@ void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
  * is higher. */
 float direct_horizon(ivec2 g, int je, float t1)
 {
+#ifdef HFS_NEAR
+    /* Any texel: the grid's horizons blended at its place (env_slices.frag
+     * reads them so), HFS_PAIRS the occluders moved to its height. */
+#ifdef HFS_PAIRS
+    vec4 o = texture(u_hor, vec3(g_vuv, float(je / 2)));
+    float fs = hfs_far_slope(o[2 * (je % 2)], o[2 * (je % 2) + 1], g_vdz, 1.0 / float(u_vsub));
+    return max(fs, t1);
+#else
+    float u = texture(u_hor, vec3(g_vuv, float(je / 4)))[je % 4];
+    return max(u > -1.0 ? 2.0 * u / max(1.0 - u * u, 1e-30) : -1e30, t1);
+#endif
+#else
     /* g is a visibility receiver: a multiple of u_vsub, or the last. */
     ivec2 v = ivec2(g.x == u_size.x - 1 ? u_vsize.x - 1 : g.x / u_vsub,
                     g.y == u_size.y - 1 ? u_vsize.y - 1 : g.y / u_vsub);
@@ -319,6 +365,7 @@ float direct_horizon(ivec2 g, int je, float t1)
 #else
     float u = texelFetch(u_hor, ivec3(v, je / 4), 0)[je % 4];
     return max(u > -1.0 ? 2.0 * u / max(1.0 - u * u, 1e-30) : -1e30, t1);
+#endif
 #endif
 }
 
@@ -387,12 +434,25 @@ void main()
     ivec2 g = hfs_receiver(u_size, u_sub);
     vec3 n = hfs_normal(texelFetch(u_normals, g, 0));
     vec2 hx[HFS_NLAYERS];
-    hfs_receiver_heights(u_levels, g, hx);
     vec4 fine = u_scale[HFS_NLEV - 1];
+#ifdef HFS_NEAR
+    /* Only the layers the near scales read (the finest, at the defaults). */
+    hx[int(fine.z)] = texelFetch(u_levels, ivec3(g, int(fine.z)), 0).xy;
+    for (int i = HFS_NLEV - 2; i >= 0 && u_scale[i].x <= u_near_d; --i)
+        hx[int(u_scale[i].z)] = texelFetch(u_levels, ivec3(g, int(u_scale[i].z)), 0).xy;
+#else
+    hfs_receiver_heights(u_levels, g, hx);
+#endif
     vec2 h0 = hx[int(fine.z)];
 #ifdef HFS_FARK
     g_fpix = hfs_grid_uv(g, u_fstep, u_size, u_fsize) * vec2(u_fsize);
     g_fdz = hfs_grid_rise(u_levels, g, u_fstep, u_size, fine);
+#endif
+#ifdef HFS_NEAR
+    g_vuv = hfs_grid_uv(g, u_vsub, u_size, u_vsize);
+#ifdef HFS_PAIRS
+    g_vdz = hfs_grid_rise(u_levels, g, u_vsub, u_size, fine);
+#endif
 #endif
     vec4 ns = vec4(-1e30); /* one-sided slopes to (+x, -x, +y, -y), -1e30 off the field */
     ivec2 nb[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
@@ -402,8 +462,9 @@ void main()
             ns[k] = hfs_hdiff(texelFetch(u_levels, ivec3(q, int(fine.z)), 0).xy, h0) * fine.y *
                     fine.x;
     }
-    vec3 acc = vec3(0.0);
+    vec3 acc = vec3(0.0), acc_near = vec3(0.0);
     float w_occ = 0.0; /* slice_occluded summed over the environment's directions */
+    float w_near = 0.0; /* the near bands' weights */
 #ifdef HFS_GLOSSY
     /* R at the receiver (gloss.h hfs_gloss_reflect); nv <= 0: no lobe. */
     vec3 view = u_gview.xyz;
@@ -426,6 +487,9 @@ void main()
         w.t_cap = 1e30;
         w.acc = vec3(0.0);
         w.last = vec3(0.0);
+        w.near = u_near_d > 0.0; /* the own cell: near, when there is a near part */
+        w.acc_near = vec3(0.0);
+        w.w_near = 0.0;
         float s0 = w.s_top;
 #ifdef HFS_GLOSSY
         w.l = vec4(dot(r.xy, cs), r.z, w.a, w.b);
@@ -455,7 +519,7 @@ void main()
             w.t_cap = max(w.t_cap, tc[h]);
         }
 #endif
-        if (cell && u_sub > 1) {
+        if (cell && u_sub > 1 && !(u_near_d > 0.0)) {
             /* A sub-sampled grid: the band takes the far edge's light.
              * The receiver's own light would stand for the texels between
              * receivers, whose own cells differ (issue 36: measured worse
@@ -479,7 +543,8 @@ void main()
             }
         }
         walk_scales(w, g, cs, hx);
-#ifdef HFS_SLICE
+        w.near = false;
+#if defined(HFS_SLICE) && !defined(HFS_NEAR)
         /* The terrain reaches the direct horizons, which the sparser walk
          * may not (a peak between its samples): the last band's radiance
          * fills the rest up to each (cpu_bounce.c slice_gather). */
@@ -493,12 +558,21 @@ void main()
         w_occ += occ;
 #endif
         acc += w.acc;
+        acc_near += w.acc_near;
+        w_near += w.w_near;
 #ifdef HFS_GLOSSY
         gacc += w.gacc;
 #endif
     }
-#ifdef HFS_SLICE
+#ifdef HFS_NEAR
+    /* The near part alone. */
+    acc = acc_near;
+    w_occ = w_near * u_bhead.x;
+#elif defined(HFS_SLICE)
     w_occ = (w_occ + skipped_occluded(g, n, ns, fine, h0)) * (2.0 / float(HFS_NDIR));
+    /* With a near part the grid keeps the rest (0 without one). */
+    acc = max(acc - acc_near, vec3(0.0));
+    w_occ = max(w_occ - w_near * u_bhead.x, 0.0);
 #endif
     vec3 e = acc * u_bhead.x;
     e = clamp(e, vec3(0.0), vec3(65504.0));

@@ -20,6 +20,10 @@
  * target) and as the frame's result (direct + every bounce, an fp16 hi +
  * lo pair like the shading pass's).  Radiances carry the frame's output
  * scale (pass_shade.c).
+ * HFS_NEAR (a sub-sampled bounce grid, bounce_gather.frag "The near
+ * part"): E_l = E_near,l(x) + E_l * (W_occ - W_near,l(x)) / W_l, the
+ * texel's own near part (u_en, layer l: (E_near, W_near)) plus the grid's
+ * rest scaled to the texel's own occluded part beyond it.
  * HFS_GLOSSY: a glossy receiver's lobe of each bounce, G_l (layer 2 l + 1;
  * E_l is then at 2 l), read and scaled like E_l, is added after the
  * albedo (not the albedo map's, as the direct lobe).
@@ -28,6 +32,8 @@
 // hfs-variant: HFS_SLICE 1
 // hfs-variant: HFS_FP32 1
 // hfs-variant: HFS_SLICE 1, HFS_GLOSSY 1
+// hfs-variant: HFS_SLICE 1, HFS_NEAR 1
+// hfs-variant: HFS_SLICE 1, HFS_NEAR 1, HFS_FP32 1
 
 #ifndef HFS_PI
 #define HFS_PI 3.14159265358979
@@ -46,6 +52,9 @@ uniform highp sampler2D u_lo;            /* and lo */
 uniform highp sampler2DArray u_e;        /* (E_b, W_b) on the grid, a layer a bounce, LINEAR */
 #ifdef HFS_SLICE
 uniform highp sampler2D u_t0;            /* the slices' occluded transfer, coefficients 0-3 */
+#endif
+#ifdef HFS_NEAR
+uniform highp sampler2DArray u_en;       /* (E_near, W_near) a bounce, full resolution */
 #endif
 #ifdef HFS_ALBEDO_MAP
 uniform highp sampler2D u_albedo;        /* albedo map (RGB in [0, 1]), full resolution */
@@ -82,7 +91,12 @@ void main()
         vec4 eb = texture(u_e, vec3(uv, float(u_first + l)));
         vec3 gb = vec3(0.0);
 #endif
-#ifdef HFS_SLICE
+#ifdef HFS_NEAR
+        vec4 en = texelFetch(u_en, ivec3(p, u_first + l), 0);
+        if (eb.a >= 1e-3)
+            eb.rgb *= max(w_occ - en.a, 0.0) / eb.a;
+        eb.rgb += en.rgb;
+#elif defined(HFS_SLICE)
         if (eb.a >= 1e-3) {
             float ratio = max(w_occ, 0.0) / eb.a;
             eb.rgb *= ratio;

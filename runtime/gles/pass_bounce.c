@@ -14,6 +14,11 @@
  * after the albedo).  With split horizons the bands are clipped to each
  * sub-horizon (the far grid's occluders, hfs_gles_bind_env_far), so that
  * the direct light stays the frame's without bounces (issue 36).
+ * On a sub-sampled bounce grid under an environment (not glossy) the
+ * gather's near part, the own cell and the scales within
+ * HFS_BOUNCE_NEAR_REACH texels, is gathered at every texel instead
+ * (bounce_gather.frag HFS_NEAR, before the grid's walk; issue 36): on
+ * rough relief it is what changes from texel to texel.
  *
  * A bounce depends on the radiance of every light, so the pass reruns
  * whenever the shading does, and when its own settings change (plan.h
@@ -29,6 +34,18 @@
 #include <math.h>
 
 #define PI 3.14159265358979323846
+/* The near part's reach, texels: the own cell and the scales within it
+ * (1, 1.41 and 2 texels at k 2).  Measured (BENCHMARKS.md "The gather sees
+ * what a point sees"): reach 2 takes the 4-texel grid's indirect part on
+ * the Hurst-0.25 field from about 17% to about 4% of its maximum, 4 to
+ * about 3.2% at twice the near pass's reads. */
+#define HFS_BOUNCE_NEAR_REACH 2.0
+
+/* Does the frame gather the near part at every texel? */
+static int near_part(const hfs_gles_frame *fr)
+{
+    return fr->capped && !fr->gloss.on && fr->bsub > 1;
+}
 
 static int present(const hfs_gles_frame *fr)
 {
@@ -89,7 +106,8 @@ static int light(hfs_gles *g, const hfs_gles_frame *fr, GLuint fbo, int direct, 
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.fp32 = g->caps.fp32, .albedo_map = fr->albedo != NULL,
-                                .slice = fr->capped, .glossy = fr->gloss.on};
+                                .slice = fr->capped, .glossy = fr->gloss.on,
+                                .near = near_part(fr)};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_LIGHT, &v, &prog, err);
     if (rc || (rc = hfs_gles_program_texture(gl, prog, "u_hi", GL_TEXTURE_2D, g->r.out[0], err)) ||
@@ -101,6 +119,9 @@ static int light(hfs_gles *g, const hfs_gles_frame *fr, GLuint fbo, int direct, 
         return rc;
     if (fr->capped && (rc = hfs_gles_program_texture(gl, prog, "u_t0", GL_TEXTURE_2D,
                                                      g->r.transfer[0], err)))
+        return rc;
+    if (v.near && (rc = hfs_gles_program_texture(gl, prog, "u_en", GL_TEXTURE_2D_ARRAY,
+                                                 g->bounce.near, err)))
         return rc;
     hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
     hfs_gles_set_i2(gl, prog, "u_vsize", fr->bw, fr->bh);
@@ -131,8 +152,9 @@ static void set_gloss(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_
 }
 
 /* bounce_gather.frag over the bounce grid into layer `layer` of E (and
- * the next, G, for a glossy surface). */
-static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *err)
+ * the next, G, for a glossy surface); near: its near pass at every texel
+ * into layer `layer` of the near targets. */
+static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, int near, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
@@ -142,7 +164,8 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
                                 .fp32 = g->caps.fp32, .slice = capped,
                                 .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0,
                                 .pairs = capped && fr->hor_pairs,
-                                .far_k = capped && fr->split.on ? fr->split.k : 0};
+                                .far_k = capped && fr->split.on ? fr->split.k : 0,
+                                .near = near};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_GATHER, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
@@ -154,14 +177,22 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, hfs_error *e
         return rc;
     hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
     hfs_gles_set_i1(gl, prog, "u_refine", fr->q->bounce_refine);
+    hfs_gles_set_f1(gl, prog, "u_near_d", near_part(fr) ? (float)HFS_BOUNCE_NEAR_REACH : 0.0f);
     hfs_gles_set_f1(gl, prog, "u_tie", (float)hfs_horizon_tie_slope(L->hscale, L->zscale, L->dx));
-    hfs_gles_set_i1(gl, prog, "u_sub", fr->bsub); /* the bounce grid's receivers */
+    hfs_gles_set_i1(gl, prog, "u_sub", near ? 1 : fr->bsub); /* the receivers */
     hfs_gles_set_i1(gl, prog, "u_vsub", L->sub);  /* the visibility grid's, for u_hor */
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_BOUNCE, g->ubo[HFS_UBO_BOUNCE]);
     const int glossy = fr->gloss.on;
     if (glossy)
         set_gloss(gl, prog, fr);
+    if (near) {
+        if ((rc = hfs_gles_fbo_layers(gl, g->bounce.near_fbo, g->bounce.near, layer, 1,
+                                      "bounce near part", err)))
+            return rc;
+        hfs_gles_draw(gl, g->bounce.near_fbo, L->w, L->h);
+        return HFS_OK;
+    }
     if ((rc = hfs_gles_fbo_layers(gl, g->bounce.e_fbo, g->bounce.e, (1 + glossy) * layer,
                                   1 + glossy, "bounce irradiance", err)))
         return rc;
@@ -174,15 +205,19 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     (void)which;
     const hfs_gl *gl = &g->gl;
     int rc;
+    const int near = near_part(fr);
     if ((rc = hfs_gles_bounce_targets_ensure(&g->bounce, gl, &g->caps, fr->L.w, fr->L.h, fr->bw,
-                                             fr->bh, fr->gloss.on, err)) ||
+                                             fr->bh, fr->gloss.on, near ? fr->bounces : 0,
+                                             err)) ||
         (rc = upload_block(g, fr, err)))
         return rc;
     for (int b = 1; b <= fr->bounces && !rc; ++b) {
         /* Lo_{b-1}: the direct light, or rho E_{b-1}. */
         if ((rc = light(g, fr, g->bounce.rad_fbo, b == 1, b - 2, b == 1 ? 0 : 1, err)))
             break;
-        rc = gather(g, fr, b - 1, err);
+        if (near && (rc = gather(g, fr, b - 1, 1, err)))
+            break;
+        rc = gather(g, fr, b - 1, 0, err);
     }
     if (!rc)
         rc = light(g, fr, g->bounce.fin_fbo, 1, 0, fr->bounces, err);

@@ -62,6 +62,8 @@ typedef struct hfs_gles_variant {
     int far_atlas;  /* HFS_FAR_ATLAS 1: env_horizons.frag's far pass          */
     int gloss_map;  /* HFS_GLOSS_MAP 1: shade.frag's glossy lobe adds the map's
                        beyond order 4 (u_egloss, env_gloss.h)                */
+    int near;       /* HFS_NEAR 1: the bounces' near part at every texel
+                       (bounce_gather.frag) and its use (bounce_light.frag)  */
 } hfs_gles_variant;
 
 #define HFS_GLES_MAX_PROGRAMS 64
@@ -101,7 +103,7 @@ void hfs_gles_set_f4(const hfs_gl *gl, const hfs_gles_program *p, const char *na
 
 /* The "#define NAME VALUE" strings of variant v (NULL-terminated; bufs
  * holds their text).  Exposed for tests. */
-#define HFS_GLES_MAX_DEFINES 27
+#define HFS_GLES_MAX_DEFINES 28
 void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
                               const char *defs[HFS_GLES_MAX_DEFINES + 1]);
 
