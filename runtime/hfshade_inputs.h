@@ -202,6 +202,11 @@ typedef struct hfs_quality {
                                 1|2|4|8, at least subsample's (the gathered
                                 light is scaled to each texel's own
                                 occluded part), 4                           */
+    int bounce_near;         /* on a sub-sampled bounce grid, the GLES path
+                                gathers each texel's own cell and the scales
+                                within this many texels at the texel itself
+                                and only the rest on the grid (0: the whole
+                                gather on the grid), 2                      */
     int nphi_local;          /* azimuth samples per local light's full swath, 16 */
     int local_full_swath;    /* 0: per-receiver partial swath where the light
                                 does not surround the receiver (default);

@@ -402,7 +402,9 @@ float sub_horizons(int je, vec2 cs, vec3 n, float tn, out float t[HFS_NSUB])
 #else
         t[h] = tn;
 #endif
+#ifndef HFS_NEAR /* the near pass weighs only its own bands */
         occ += slice_occluded(a, n.z, t[h]);
+#endif
     }
     return occ / float(HFS_NSUB);
 }

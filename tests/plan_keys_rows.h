@@ -92,6 +92,7 @@ static const pk_row pk_rows[] = {
     {"nphi-bounce", {{"bounces", "1"}}, {{"nphi-bounce", "6"}}, PK_BOTH},
     {"bounce-refine", {{"bounces", "1"}}, {{"bounce-refine", "3"}}, PK_BOTH},
     {"bounce-subsample", {{"bounces", "1"}}, {{"bounce-subsample", "2"}}, PK_GLES},
+    {"bounce-near", {{"bounces", "1"}}, {{"bounce-near", "1"}}, PK_GLES},
     {"nphi-local", {{0}}, {{"nphi-local", "24"}}, PK_BOTH},
     {"subsample", {{0}}, {{"subsample", "4"}}, PK_GLES},
     {"precision", {{0}}, {{"precision", "fp32"}}, PK_GLES},

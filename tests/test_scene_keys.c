@@ -235,6 +235,7 @@ static int set_lib(inputs *in, hfs_scene_key_id id, int i, double x)
     case HFS_SK_NPHI_BOUNCE: count = &in->q.nphi_bounce; break;
     case HFS_SK_BOUNCE_REFINE: count = &in->q.bounce_refine; break;
     case HFS_SK_BOUNCE_SUBSAMPLE: count = &in->q.bounce_subsample; break;
+    case HFS_SK_BOUNCE_NEAR: count = &in->q.bounce_near; break;
     case HFS_SK_SUBSAMPLE: count = &in->q.subsample; break;
     case HFS_SK_THREADS: count = &in->q.threads; break;
     case HFS_SK_TRUTH_AZIMUTHS: count = &in->q.truth_azimuths; break;

@@ -47,6 +47,7 @@ void hfs_quality_defaults(hfs_quality *q)
     q->nphi_bounce = 12; /* BENCHMARKS.md "Indirect light" */
     q->bounce_refine = 1;
     q->bounce_subsample = 4;
+    q->bounce_near = 2; /* BENCHMARKS.md "Bounces, before / after (issue 36)" */
     q->local_full_swath = 0;
     q->threads = 0;
     q->truth_azimuths = 720;

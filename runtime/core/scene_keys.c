@@ -126,6 +126,10 @@ static const hfs_scene_key keys[HFS_SK_COUNT] = {
     [HFS_SK_BOUNCE_SUBSAMPLE] = {"bounce-subsample", "1|2|4|8", HFS_FORM_INT, 1, 0, 1,
                                  {{NULL, HFS_UNIT_COUNT, {1, 8, 0}, NULL}}, "4",
                                  "grid step of the GLES path's bounce gather (at least subsample's)"},
+    [HFS_SK_BOUNCE_NEAR] = {"bounce-near", "N", HFS_FORM_INT, 1, 0, 0,
+                            {{NULL, HFS_UNIT_COUNT, {0, 16, 0}, NULL}}, "2",
+                            "texels of each texel's bounce gather taken at the texel on a "
+                            "sub-sampled bounce grid (GLES; 0: all on the grid)"},
     [HFS_SK_NPHI_LOCAL] = {"nphi-local", "N", HFS_FORM_INT, 1, 0, 0,
                            {{NULL, HFS_UNIT_COUNT, {3, 1024, 0}, NULL}}, "16",
                            "azimuth samples per local light"},

@@ -118,6 +118,7 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     s->refine = fr->bounces > 0 ? q->bounce_refine : 0;
     s->capped = fr->bounces > 0 && fr->capped;
     s->bsub = fr->bounces > 0 ? fr->bsub : 0;
+    s->bnear = fr->bounces > 0 ? q->bounce_near : 0;
     s->n_local = fr->n_local;
     s->nphi_local = q->nphi_local;
     s->local_full = q->local_full_swath;

@@ -15,8 +15,8 @@
  * sub-horizon (the far grid's occluders, hfs_gles_bind_env_far), so that
  * the direct light stays the frame's without bounces (issue 36).
  * On a sub-sampled bounce grid under an environment (not glossy) the
- * gather's near part, the own cell and the scales within
- * HFS_BOUNCE_NEAR_REACH texels, is gathered at every texel instead
+ * gather's near part, the own cell and the scales within bounce_near
+ * texels (quality; 0: none), is gathered at every texel instead
  * (bounce_gather.frag HFS_NEAR, before the grid's walk; issue 36): on
  * rough relief it is what changes from texel to texel.
  *
@@ -34,17 +34,10 @@
 #include <math.h>
 
 #define PI 3.14159265358979323846
-/* The near part's reach, texels: the own cell and the scales within it
- * (1, 1.41 and 2 texels at k 2).  Measured (BENCHMARKS.md "The gather sees
- * what a point sees"): reach 2 takes the 4-texel grid's indirect part on
- * the Hurst-0.25 field from about 17% to about 4% of its maximum, 4 to
- * about 3.2% at twice the near pass's reads. */
-#define HFS_BOUNCE_NEAR_REACH 2.0
-
 /* Does the frame gather the near part at every texel? */
 static int near_part(const hfs_gles_frame *fr)
 {
-    return fr->capped && !fr->gloss.on && fr->bsub > 1;
+    return fr->capped && !fr->gloss.on && fr->bsub > 1 && fr->q->bounce_near > 0;
 }
 
 static int present(const hfs_gles_frame *fr)
@@ -177,7 +170,7 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, int near, hf
         return rc;
     hfs_gles_set_f1(gl, prog, "u_vmax", (float)(L->vmax + 1e-5));
     hfs_gles_set_i1(gl, prog, "u_refine", fr->q->bounce_refine);
-    hfs_gles_set_f1(gl, prog, "u_near_d", near_part(fr) ? (float)HFS_BOUNCE_NEAR_REACH : 0.0f);
+    hfs_gles_set_f1(gl, prog, "u_near_d", near_part(fr) ? (float)fr->q->bounce_near : 0.0f);
     hfs_gles_set_f1(gl, prog, "u_tie", (float)hfs_horizon_tie_slope(L->hscale, L->zscale, L->dx));
     hfs_gles_set_i1(gl, prog, "u_sub", near ? 1 : fr->bsub); /* the receivers */
     hfs_gles_set_i1(gl, prog, "u_vsub", L->sub);  /* the visibility grid's, for u_hor */

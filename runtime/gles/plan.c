@@ -206,7 +206,7 @@ static void diff_inputs(hfs_gles_plan *gp, const hfs_gles_frame_sig *a,
         hfs_plan_change(p, gp->in_lit, "lit texture encoding changed");
     if (a->bounces != b->bounces || a->bounce_dirs != b->bounce_dirs ||
         a->bounce_stride != b->bounce_stride || a->refine != b->refine ||
-        a->capped != b->capped || a->bsub != b->bsub)
+        a->capped != b->capped || a->bsub != b->bsub || a->bnear != b->bnear)
         hfs_plan_change(p, gp->in_bounce, "bounce settings changed");
 }
 

@@ -90,7 +90,7 @@ typedef struct hfs_gles_frame_sig {
         int hz_layer;
         double dir[3], alpha, le[3];
     } key[HFS_GLES_PLAN_KEYS];
-    int bounces, bounce_dirs, bounce_stride, refine, capped, bsub; /* the bounce pass's settings */
+    int bounces, bounce_dirs, bounce_stride, refine, capped, bsub, bnear; /* the bounce pass's settings */
     int n_local, nphi_local, local_full;
     struct {
         double pos[3], radius;

@@ -199,7 +199,7 @@ int hfs_validate_quality(const hfs_quality *q, hfs_error *err)
         {HFS_SK_SPLIT, q->split}, {HFS_SK_FAR_FROM, q->far_from}, {HFS_SK_FAR_DIRS, q->far_dirs},
         {HFS_SK_FAR_STEP, q->far_step},
         {HFS_SK_NPHI_BOUNCE, q->nphi_bounce}, {HFS_SK_BOUNCE_REFINE, q->bounce_refine},
-        {HFS_SK_BOUNCE_SUBSAMPLE, q->bounce_subsample},
+        {HFS_SK_BOUNCE_SUBSAMPLE, q->bounce_subsample}, {HFS_SK_BOUNCE_NEAR, q->bounce_near},
         {HFS_SK_NPHI_LOCAL, q->nphi_local},
         {HFS_SK_SUBSAMPLE, q->subsample}, {HFS_SK_THREADS, q->threads},
         {HFS_SK_TRUTH_AZIMUTHS, q->truth_azimuths}, {HFS_SK_TRUTH_SAMPLES, q->truth_light_samples},

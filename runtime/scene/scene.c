@@ -194,6 +194,7 @@ static int *int_field(hfs_scene *s, hfs_scene_key_id id)
     case HFS_SK_NPHI_BOUNCE: return &q->nphi_bounce;
     case HFS_SK_BOUNCE_REFINE: return &q->bounce_refine;
     case HFS_SK_BOUNCE_SUBSAMPLE: return &q->bounce_subsample;
+    case HFS_SK_BOUNCE_NEAR: return &q->bounce_near;
     case HFS_SK_NPHI_LOCAL: return &q->nphi_local;
     case HFS_SK_SUBSAMPLE: return &q->subsample;
     case HFS_SK_THREADS: return &q->threads;
@@ -502,6 +503,7 @@ void hfs_scene_quality(const hfs_scene *s, hfs_quality *q)
     TAKE(HFS_SK_NPHI_BOUNCE, nphi_bounce);
     TAKE(HFS_SK_BOUNCE_REFINE, bounce_refine);
     TAKE(HFS_SK_BOUNCE_SUBSAMPLE, bounce_subsample);
+    TAKE(HFS_SK_BOUNCE_NEAR, bounce_near);
     TAKE(HFS_SK_NPHI_LOCAL, nphi_local);
     TAKE(HFS_SK_SUBSAMPLE, subsample);
     TAKE(HFS_SK_PRECISION, precision);
