@@ -134,6 +134,23 @@ float near_slope(ivec2 p, vec2 cs, float d, vec2 zp)
     return u_rise * hfs_hdiff(t, zp) / d;
 }
 
+vec4 g_ns; /* the texel's one-sided slopes to (+x, -x, +y, -y), -1e30 off the field */
+
+/* The texel's own cell along cs (field_geom.h hfs_field_first_cell_slope):
+ * the larger of its near end's slope (g_ns weighted by |cos|, |sin|) and
+ * its far edge's; -1e30 where the cell leaves the field.  Its near end is
+ * no scale's sample (issue 36: on texel-scale relief the sun was seen
+ * through it). */
+float own_cell_slope(ivec2 p, vec2 cs, vec2 zp)
+{
+    vec2 a = abs(cs);
+    float nx = cs.x > 0.0 ? g_ns.x : g_ns.y, ny = cs.y > 0.0 ? g_ns.z : g_ns.w;
+    if ((a.x > 0.0 && nx < -1e29) || (a.y > 0.0 && ny < -1e29))
+        return -1e30;
+    float near = (a.x > 0.0 ? a.x * nx : 0.0) + (a.y > 0.0 ? a.y * ny : 0.0);
+    return max(near, near_slope(p, cs, 1.0 / max(a.x, a.y), zp));
+}
+
 /* Texel p's near horizon on a sub-sampled grid (DESIGN.md "Key lights on
  * the 2x2 grid", "Sharp edges on the grid"): the max over the u_near
  * finest scales, u_refine samples about the finest scale holding it (as
@@ -211,10 +228,11 @@ Cell grid_cell(ivec2 p, vec2 zp)
 float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, float stop,
                   ivec2 p, vec2 zp)
 {
+    float own = own_cell_slope(p, cs, zp);
     if (u_sub == 1) {
         vec4 t = texelFetch(u_keyhz, ivec3(c.ga[0], int(layer)), 0);
         ++g_fetches;
-        return max(fl, t.x + t.y);
+        return max(max(fl, t.x + t.y), atan(own));
     }
     /* the floor's slope, tan(fl), as the stored tangents are clamped */
     float tfl = clamp(-(n.x * cs.x + n.y * cs.y) / n.z, -1e4, 1e4);
@@ -227,6 +245,7 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, fl
         sl[k] = t.z > 0.0 && ahead >= u_reach ? max(tfl, ((t.x + t.y) * t.z + rz) / ahead) : tfl;
     }
     float s = mix(mix(sl[0], sl[1], c.f.x), mix(sl[2], sl[3], c.f.x), c.f.y);
+    near = max(near, own);
     for (int m = 0; u_near_dir > 0 && m < u_near; ++m)
         near = max(near, near_slope(p, cs, exp2(float(m) / u_lk), zp));
     if (u_near_dir == 0 && u_edge > u_near_to) {
@@ -342,7 +361,14 @@ void main()
     vec4 H[4];
     hfs_sh_cosine(n, H);
     vec2 zp = texelFetch(u_height, p, 0).xy;
-    g_fetches = 2;
+    ivec2 nb[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+    for (int k = 0; k < 4; ++k) {
+        ivec2 q = p + nb[k];
+        g_ns[k] = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, u_size))
+                      ? u_rise * hfs_hdiff(texelFetch(u_height, q, 0).xy, zp)
+                      : -1e30;
+    }
+    g_fetches = 6;
     float f = clamp(key_factor(u_kb, n, H, grid_cell(p, zp), p, zp) / u_emax, 0.0, 1.0);
 #ifdef HFS_COUNT
     o_f = vec4(float(g_fetches % 1024), float(g_fetches / 1024), 0.0, 1.0);

@@ -397,6 +397,9 @@ endforeach()
 # same backends and subsamples, and subsample 4 (before the key light's
 # per-texel edge search 18-72 umbra texels of a case lit there).
 hfs_metamorphic_test(test_long_shadow)
+# The CPU reference's 2x2 path too (its key light's own cell, issue 36).
+add_test(NAME test_long_shadow_cpu_sub2 COMMAND test_long_shadow cpu 2)
+set_tests_properties(test_long_shadow_cpu_sub2 PROPERTIES LABELS unit TIMEOUT 120)
 add_test(NAME test_long_shadow_gles_sub4 COMMAND test_long_shadow gles 4)
 set_tests_properties(test_long_shadow_gles_sub4 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
                      TIMEOUT 120)

@@ -171,7 +171,8 @@ static inline int mm_main(int argc, char **argv, const char *test,
             return 1;
         }
     }
-    run(r, gles ? "gles" : "cpu", gles ? (argc > 2 ? atoi(argv[2]) : 2) : 0);
+    /* the subsample: argv[2], else 2 on GLES and the CPU's 0 (its default) */
+    run(r, gles ? "gles" : "cpu", argc > 2 ? atoi(argv[2]) : (gles ? 2 : 0));
     hfs_renderer_destroy(r);
     char name[128];
     snprintf(name, sizeof name, "%s %s", test, gles ? "gles" : "cpu");

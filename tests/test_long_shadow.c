@@ -16,7 +16,7 @@
  * the umbra.  The cases: axis-aligned and oblique suns (3-15 degrees),
  * posts 2-6 texels wide, the post's shadow crossing 100-300 texels.
  *
- *   test_long_shadow cpu | gles SUBSAMPLE [fp32]
+ *   test_long_shadow cpu [SUBSAMPLE] | gles SUBSAMPLE [fp32]
  */
 #include "metamorphic.h" /* mm_main: the backend from the command line */
 
@@ -94,6 +94,30 @@ static int classify(const post_case *pc, double i, double j)
     return umbra ? 1 : (lit ? 0 : -1);
 }
 
+/* Field f under one sun (degrees; radiance 1000) into img and its
+ * unshadowed image into un (both allocated here); 0, or the failure
+ * counted and reported. */
+static int render_sun(hfs_renderer *r, const char *name, const hfs_field *f, double phi,
+                      double elev, double alpha, const hfs_quality *q, hfs_image *img,
+                      hfs_image *un)
+{
+    hfs_lighting l;
+    hfs_lighting_defaults(&l);
+    l.n_key = 1;
+    l.key[0] = (hfs_key_light){.phi = phi * PI / 180.0, .elev = elev * PI / 180.0,
+                               .alpha = alpha * PI / 180.0, .radiance = {1000, 1000, 1000}};
+    hfs_error err = {""};
+    if (hfs_image_alloc(img, f->width, f->height, &err) ||
+        hfs_image_alloc(un, f->width, f->height, &err) ||
+        hfs_renderer_render(r, f, &l, q, img, NULL, NULL, &err) ||
+        hfs_render_unshadowed(f, &l, q, un, &err)) {
+        fprintf(stderr, "FAIL %s: %s\n", name, err.msg);
+        ++failures;
+        return 1;
+    }
+    return 0;
+}
+
 /* Umbra texels render below umbra_max of their unshadowed value: 5% at
  * subsample 1.  On a sub-sampled grid each texel searches its own ray
  * only to where the disk's penumbra is a grid step wide (DESIGN.md "Sharp
@@ -113,19 +137,8 @@ static void run_case(hfs_renderer *r, const char *name, const post_case *pc,
         for (int i = pc->x0; i < pc->x0 + pc->side; ++i)
             z[(size_t)j * w + i] = (float)pc->height;
     const hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
-    hfs_lighting l;
-    hfs_lighting_defaults(&l);
-    l.n_key = 1;
-    l.key[0] = (hfs_key_light){.phi = pc->phi * PI / 180.0, .elev = pc->elev * PI / 180.0,
-                               .alpha = pc->alpha * PI / 180.0, .radiance = {1000, 1000, 1000}};
     hfs_image img = {0}, un = {0};
-    hfs_error err = {""};
-    if (hfs_image_alloc(&img, w, h, &err) || hfs_image_alloc(&un, w, h, &err) ||
-        hfs_renderer_render(r, &f, &l, q, &img, NULL, NULL, &err) ||
-        hfs_render_unshadowed(&f, &l, q, &un, &err)) {
-        fprintf(stderr, "FAIL %s: %s\n", name, err.msg);
-        ++failures;
-    } else {
+    if (!render_sun(r, name, &f, pc->phi, pc->elev, pc->alpha, q, &img, &un)) {
         long n_umbra = 0, n_lit = 0, bad_umbra = 0, bad_lit = 0;
         for (int j = 0; j < h; ++j)
             for (int i = 0; i < w; ++i) {
@@ -153,6 +166,50 @@ static void run_case(hfs_renderer *r, const char *name, const post_case *pc,
     hfs_image_free(&img);
     hfs_image_free(&un);
     free(z);
+}
+
+/* A receiver's own cell shadows it (issue 36): on a checkerboard of
+ * heights 0 and 1 (dx 1) the bilinear surface along the diagonal from a 0
+ * texel rises as sqrt2 t - t^2, so its slope at the start, sqrt2 (54.7
+ * degrees), is the horizon there, and a sun 45 degrees up along the
+ * diagonal is hidden from every 0 texel (a ray below that slope meets the
+ * surface just past the receiver's lift) while a 1 texel, whose cells
+ * along the diagonal never rise above it, sees it.  No scale's sample lies
+ * at the cell's near end: before, every one of the 181 0 texels checked was
+ * lit at its full unshadowed value (CPU, GLES at subsample 1 and 2). */
+static void run_own_cell(hfs_renderer *r, const char *name, const hfs_quality *q)
+{
+    const int w = 24, h = 24;
+    float z[24 * 24];
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            z[j * w + i] = (float)((i + j) % 2);
+    const hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
+    hfs_image img = {0}, un = {0};
+    if (!render_sun(r, name, &f, 45.0, 45.0, 0.25, q, &img, &un)) {
+        long bad_umbra = 0, bad_lit = 0;
+        double worst = 0.0;
+        /* interior texels whose diagonal stays on the field for a while */
+        for (int j = 1; j < h - 4; ++j)
+            for (int i = 1; i < w - 4; ++i) {
+                const size_t t = 3 * ((size_t)j * w + i);
+                const double v = img.rgb[t] / un.rgb[t];
+                if ((i + j) % 2 == 0) {
+                    bad_umbra += v > 0.05;
+                    worst = fmax(worst, v);
+                } else {
+                    bad_lit += v < 0.95;
+                }
+            }
+        printf("%s: checkerboard, sun 45/45 along the diagonal: 0 texels at most %.3f of "
+               "their unshadowed value, %ld lit; 1 texels %ld shadowed\n", name, worst,
+               bad_umbra, bad_lit);
+        LS_CHECK(bad_umbra == 0, "%s: %ld texels lit through their own cell (up to %.3f)",
+                 name, bad_umbra, worst);
+        LS_CHECK(bad_lit == 0, "%s: %ld texels on the ridges shadowed", name, bad_lit);
+    }
+    hfs_image_free(&img);
+    hfs_image_free(&un);
 }
 
 /* Every case with the defaults at subsample sub (fp32 textures on GLES
@@ -183,6 +240,8 @@ static void run(hfs_renderer *r, const char *backend, int sub)
         snprintf(name, sizeof name, "%s sub %d case %zu", backend, q.subsample, c);
         run_case(r, name, &cases[c], &q);
     }
+    snprintf(name, sizeof name, "%s sub %d own cell", backend, q.subsample);
+    run_own_cell(r, name, &q);
 }
 
 int main(int argc, char **argv)

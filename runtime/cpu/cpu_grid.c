@@ -336,6 +336,8 @@ double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d
     }
     const double s = (sl[0] * (1.0 - t[0]) + sl[1] * t[0]) * (1.0 - t[1]) +
                      (sl[2] * (1.0 - t[0]) + sl[3] * t[0]) * t[1];
+    /* the texel's own cell (its near end is no scale's sample) */
+    near = fmax(near, hfs_field_first_cell_slope(c->f, i, j, cs, sn));
     for (int m = 0; job->near.per_dir && m < job->near.n; ++m)
         near = fmax(near, near_slope(c, i, j, cs, sn, exp2((double)m / c->k), zp));
     if (!job->near.per_dir && job->near.edge > job->near.to) {

@@ -125,15 +125,20 @@ static double tie_slope(const hfs_field *f)
 static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int d, int i,
                           int j, const double *levels, double floor)
 {
+    /* The receiver's own cell: its near end's slope is no scale's sample
+     * (issue 36: on texel-scale relief the sun was seen through it). */
+    double cs, sn;
+    hfs_horizon_plan_dir(plan, d, &cs, &sn);
+    const double own = atan(hfs_field_first_cell_slope(c->f, i, j, cs, sn));
     if (c->refine <= 0)
-        return hfs_horizon_bspline_max(levels + i, c->n_levels, (size_t)c->w, floor);
+        return fmax(own, hfs_horizon_bspline_max(levels + i, c->n_levels, (size_t)c->w, floor));
     const double o = hfs_horizon_refined(plan, d, i, j, levels + i, (size_t)c->w, floor,
                                          c->refine, c->tie, 0, 0);
     /* and every band between the scales (issue 36: no narrow occluder's
      * long shadow is lost) */
     double dist = 0.0;
     const double t = tan(o), g = hfs_horizon_gap(plan, d, i, j, 0.0, c->tie, t, &dist, NULL);
-    return g > t ? atan(g) : o;
+    return fmax(own, g > t ? atan(g) : o);
 }
 
 /* Split horizons (split_horizon.h): direction d's sub-horizons at a texel
