@@ -40,6 +40,19 @@ bench_scenes() {
             "dem|$c/dem$n.pfm|--dx 83 --zscale 2")
 }
 
+# bench_rough_scenes GEN CACHE N: bench_scenes and the rough ones after
+# them: the fractal at relief 1 at N x N ("rough") and hfgen's Hurst-0.25
+# and Hurst-0.8 fields at 64x64 (issue 36 item 4's).
+bench_rough_scenes() {
+    local gen=$1 c=$2 n=$3
+    bench_scenes "$gen" "$c" "$n"
+    "$gen" fractal --size "${n}x${n}" --relief 1 -o "$c/rough$n.pfm"
+    "$gen" fractal --size 64x64 --hurst 0.25 -o "$c/hurst025.pfm"
+    "$gen" fractal --size 64x64 --hurst 0.8 -o "$c/hurst08.pfm"
+    scenes+=("rough|$c/rough$n.pfm|--dx 1" "hurst 0.25 (64²)|$c/hurst025.pfm|--dx 1"
+             "hurst 0.8 (64²)|$c/hurst08.pfm|--dx 1")
+}
+
 # bench_scene_keys ENTRY: one entry of `scenes` as the bench programs take
 # it: sets `name`, `hf` (the height file) and the array `keys` (its scene
 # flags as KEY=VALUE words).

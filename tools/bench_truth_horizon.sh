@@ -16,12 +16,7 @@ N=${3:-128}
 GEN=$NEW/tools/hfgen
 C=$NEW/bench-cache
 mkdir -p "$C"
-bench_scenes "$GEN" "$C" "$N"
-"$GEN" fractal --size "${N}x${N}" --relief 1 -o "$C/rough$N.pfm"
-"$GEN" fractal --size 64x64 --hurst 0.25 -o "$C/hurst025.pfm"
-"$GEN" fractal --size 64x64 --hurst 0.8 -o "$C/hurst08.pfm"
-scenes+=("rough|$C/rough$N.pfm|--dx 1" "hurst 0.25 (64²)|$C/hurst025.pfm|--dx 1"
-         "hurst 0.8 (64²)|$C/hurst08.pfm|--dx 1")
+bench_rough_scenes "$GEN" "$C" "$N"
 SKY=(--env-map data/courtyard.exr --truth-env sh)
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
