@@ -86,6 +86,7 @@ uniform int u_refine;                    /* samples refining the near max */
  * pyramid's atlas (runtime/core/ray_bound.h) */
 uniform float u_near_to;
 uniform float u_edge;                    /* each direction's own ray from u_near_to to here */
+uniform int u_whole;                     /* 1: u_edge is the field's end and the grid unused */
 uniform highp sampler2D u_bounds;
 uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
 
@@ -238,6 +239,10 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, fl
     float tfl = clamp(-(n.x * cs.x + n.y * cs.y) / n.z, -1e4, 1e4);
     float sl[4];
     for (int k = 0; k < 4; ++k) {
+        if (u_whole != 0) { /* no grid: the texel searches its rays to the field's end */
+            sl[k] = tfl;
+            continue;
+        }
         vec4 t = texelFetch(u_keyhz, ivec3(c.ga[k], int(layer)), 0);
         ++g_fetches;
         float ahead = t.z + dot(c.rel[k], cs);

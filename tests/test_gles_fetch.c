@@ -299,6 +299,11 @@ static fc_counts fc_expect(int w, int h, const hfs_quality *q, const hfs_lightin
             for (int kq = 0; kq < l->n_key; ++kq) {
                 int full;
                 const int ns = fc_key_swath(&l->key[kq], q->nphi_key, q->nphi_env, phi, &full);
+                /* on a sub-sampled grid a swath with a centre is searched
+                 * whole by the factor pass's texels: no grid draw
+                 * (key_setup.h hfs_key_near_make) */
+                if (sub > 1 && n_lev >= 2 && !full)
+                    continue;
                 /* four directions a draw; on a sub-sampled grid the
                  * finest scales are the factor pass's */
                 e.key += (double)((ns + 3) / 4) * (1 + nl);

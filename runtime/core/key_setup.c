@@ -30,7 +30,7 @@ void hfs_env_rotated(const hfs_lighting *l, double out[3][HFS_SH_N])
 
 hfs_key_near hfs_key_near_make(int sub, int n_levels, int k, const hfs_swath *s)
 {
-    hfs_key_near nr = {0, 0, 0, 1.0, 1.0, 1.0, 0.0, {1.0, 0.0}};
+    hfs_key_near nr = {0, 0, 0, 0, 1.0, 1.0, 1.0, 0.0, {1.0, 0.0}};
     if (sub == 1 || n_levels < 2)
         return nr;
     if (s->full) {
@@ -54,7 +54,8 @@ hfs_key_near hfs_key_near_make(int sub, int n_levels, int k, const hfs_swath *s)
     nr.n_grid = n_grid;
     nr.reach = exp2((double)(n_grid - 1) / k);
     nr.to = exp2((double)n / k);
-    nr.edge = exp2((double)n_grid / k);
+    nr.edge = HUGE_VAL; /* each direction's ray to the field's end */
+    nr.whole = 1;
     nr.centre = centre;
     nr.cs[0] = cos(centre);
     nr.cs[1] = sin(centre);

@@ -152,7 +152,7 @@ static void grid_row(void *ctx, int b, int worker)
             env_receiver(c, x, y, n, omega, om, c->vgrid + at * HFS_SH_N);
         for (int q = 0; q < c->n_jobs; ++q) {
             const swath_job *job = &c->jobs[q];
-            if (!job->is_env)
+            if (!job->is_env && job->grid) /* none where the texels search it all */
                 key_receiver(c, job, x, y, n, omega, job->grid + at * 2 * (size_t)job->swath.n);
         }
     }
@@ -194,6 +194,8 @@ int hfs_cpu_grid_build(render_ctx *c, const hfs_quality *q, const hfs_cpu_pyrami
         if (job->is_env)
             continue;
         job->near = hfs_key_near_make(c->sub, c->n_levels, c->k, &job->swath);
+        if (job->near.whole)
+            continue; /* each texel searches its rays to the field's end */
         if (!(job->grid = malloc(cells * 2 * (size_t)job->swath.n * sizeof *job->grid)))
             rc = hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for the key grid");
     }
@@ -325,6 +327,10 @@ double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d
     tfl = tfl > 1e4 ? 1e4 : (tfl < -1e4 ? -1e4 : tfl);
     double sl[4];
     for (int k = 0; k < 4; ++k) {
+        if (job->near.whole) { /* no grid: each texel searches its rays */
+            sl[k] = tfl;
+            continue;
+        }
         const int gx = x[0][k % 2], gy = x[1][k / 2];
         const size_t at = (size_t)a[1][k / 2] * (size_t)c->gw + (size_t)a[0][k % 2];
         const double *g = job->grid + (at * (size_t)job->swath.n + (size_t)d) * 2;

@@ -162,6 +162,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
         if (which && !which[q])
             continue;
         const hfs_gles_frame_key *k = &fr->keys[q];
+        if (hfs_gles_key_near_make(L, &k->k.swath).whole)
+            continue; /* its texels search their rays to the field's end */
         const int n = k->k.swath.n;
         for (int d0 = 0; d0 < n; d0 += DIRS_PER_DRAW) {
             const int cnt = n - d0 < DIRS_PER_DRAW ? n - d0 : DIRS_PER_DRAW;

@@ -82,7 +82,9 @@ static int draw(hfs_gles *g, hfs_gles_frame *fr, const int *which, double *fetch
         hfs_gles_set_f1(gl, prog, "u_reach", (float)nr.reach);
         hfs_gles_set_f2(gl, prog, "u_near_cs", (float)nr.cs[0], (float)nr.cs[1]);
         hfs_gles_set_f1(gl, prog, "u_near_to", (float)nr.to);
-        hfs_gles_set_f1(gl, prog, "u_edge", (float)nr.edge);
+        /* whole: to the field's end, beyond any distance on it */
+        hfs_gles_set_f1(gl, prog, "u_edge", nr.whole ? (float)(L->w + L->h) : (float)nr.edge);
+        hfs_gles_set_i1(gl, prog, "u_whole", nr.whole);
         if ((rc = hfs_gles_fbo_layers(gl, g->r.kf_fbo, g->r.kf, q, 1, "key factor", err)))
             return rc;
         hfs_gles_draw(gl, g->r.kf_fbo, L->w, L->h);
