@@ -1,7 +1,7 @@
 # The CPU reference against the brute-force ground truth (test_cpu_truth.c):
 # the environment (plain and rotated), four key lights and a local light, each
 # on cones, fractal terrain, a window of the DEM and a cliff (40x40), SPEC
-# metrics with bounds at ~2x the measured error.  One test per lighting and
+# metrics with bounds at 1.2x the measured error.  One test per lighting and
 # scene, test_cpu_truth_LIGHTING_SCENE, so a failure names both.  Label
 # "unit": pure CPU, no device.
 if(TARGET hfshade_io)

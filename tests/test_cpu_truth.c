@@ -164,86 +164,82 @@ static int make_lighting(const char *name, const hfs_field *f, hfs_lighting *l)
 /* ---- bounds --------------------------------------------------------------------- */
 
 /* Bounds on SPEC's metrics of |cpu - truth| / the largest unshadowed value:
- * mean, rmse, p99, max.  Each is ~2x the measured value written under it
+ * mean, rmse, p99, max.  Each is 1.2x the measured value written under it
  * (mean, rmse, p99, max; RelWithDebInfo, and the same in every build: both
- * backends are deterministic for any thread count), rounded up, with a floor
- * of 1e-4 where the error is at rounding level (the sun casts no shadow on
- * the cliff from there).  0: not checked, because 2x the measurement is 1 or
- * more and no error can exceed 1 (both backends lie in [0, unshadowed]): a
- * sun's hard shadow edge, misplaced by a texel by the pyramid's prefiltering
- * at the default quality, makes errors of ~1 at a few texels.  The mean and
- * rmse carry the check there. */
+ * backends are deterministic for any thread count), rounded up to two
+ * digits, with a floor of 1e-4 where the error is at rounding level (the sun
+ * casts no shadow on the cliff from there).  0: not checked, because 1.2x
+ * the measurement is 1 or more and no error can exceed 1 (both backends lie
+ * in [0, unshadowed]): a sun's hard shadow edge a texel off makes errors of
+ * ~1 at a few texels.  The mean and rmse carry the check there.  Re-pinned
+ * in issue 36 (session 16) against the exact truth: until then the bounds
+ * were 2x measurements of much older builds, 2-30x what the reference now
+ * errs. */
 typedef struct bound {
     const char *lighting, *scene;
     double mean, rmse, p99, max;
 } bound;
 
 static const bound bounds[] = {
-    {"env", "cones", 8.6e-3, 1.1e-2, 2.9e-2, 3.7e-2},
-     /* measured 4.30e-3, 5.37e-3, 1.41e-2, 1.83e-2 */
-    {"env", "fractal", 2.5e-2, 3.7e-2, 1.4e-1, 2.6e-1},
-     /* measured 1.24e-2, 1.83e-2, 6.90e-2, 1.29e-1 */
-    {"env", "dem", 1.4e-2, 1.8e-2, 5.3e-2, 6.9e-2},
-     /* measured 6.67e-3, 8.68e-3, 2.65e-2, 3.43e-2 */
-    {"env", "cliff", 2.6e-2, 4.0e-2, 1.2e-1, 2.0e-1},
-     /* measured 1.30e-2, 1.96e-2, 5.85e-2, 9.77e-2 */
-    {"env_rotated", "cones", 8.5e-3, 1.1e-2, 2.8e-2, 3.3e-2},
-     /* measured 4.21e-3, 5.28e-3, 1.38e-2, 1.65e-2 */
-    {"env_rotated", "fractal", 2.4e-2, 3.4e-2, 1.2e-1, 2.5e-1},
-     /* measured 1.18e-2, 1.70e-2, 5.69e-2, 1.24e-1 */
-    {"env_rotated", "dem", 1.3e-2, 1.6e-2, 4.3e-2, 6.8e-2},
-     /* measured 6.30e-3, 7.92e-3, 2.13e-2, 3.40e-2 */
-    {"env_rotated", "cliff", 2.0e-2, 3.1e-2, 1.1e-1, 1.5e-1},
-     /* measured 1.00e-2, 1.53e-2, 5.06e-2, 7.26e-2 */
-    {"key_a", "cones", 2.1e-2, 9.4e-2, 4.7e-1, 0},
-     /* measured 1.04e-2, 4.66e-2, 2.34e-1, 6.40e-1 */
-    {"key_a", "fractal", 7.2e-2, 2.6e-1, 0, 0},
-     /* measured 3.56e-2, 1.30e-1, 6.52e-1, 9.37e-1 */
-    {"key_a", "dem", 1.6e-2, 1.1e-1, 5.8e-1, 0},
-     /* measured 7.74e-3, 5.13e-2, 2.88e-1, 8.06e-1 */
-    {"key_a", "cliff", 1.6e-2, 1.5e-1, 6.0e-1, 0},
-     /* measured 7.85e-3, 7.47e-2, 3.00e-1, 1.00 */
-    {"key_b", "cones", 8.6e-3, 5.6e-2, 3.1e-1, 0},
-     /* measured 4.29e-3, 2.79e-2, 1.52e-1, 6.00e-1 */
-    {"key_b", "fractal", 5.8e-2, 2.3e-1, 0, 0},
-     /* measured 2.89e-2, 1.11e-1, 6.25e-1, 9.93e-1 */
-    {"key_b", "dem", 2.1e-2, 1.2e-1, 5.5e-1, 0},
-     /* measured 1.05e-2, 5.76e-2, 2.71e-1, 8.73e-1 */
-    {"key_b", "cliff", 1.0e-4, 1.0e-4, 1.0e-4, 1.0e-4},
-     /* measured 7.77e-7, 9.81e-7, 2.58e-6, 4.28e-6 */
-    {"key_c", "cones", 2.2e-2, 1.2e-1, 4.9e-1, 0},
-     /* measured 1.07e-2, 5.69e-2, 2.44e-1, 9.07e-1 */
-    {"key_c", "fractal", 5.0e-2, 2.2e-1, 0, 0},
-     /* measured 2.49e-2, 1.08e-1, 5.85e-1, 9.52e-1 */
-    {"key_c", "dem", 6.2e-2, 2.7e-1, 0, 0},
-     /* measured 3.10e-2, 1.34e-1, 7.48e-1, 9.71e-1 */
-    {"key_c", "cliff", 1.0e-4, 1.0e-4, 1.0e-4, 1.0e-4},
-     /* measured 1.16e-8, 2.01e-8, 6.02e-8, 2.41e-7 */
-    {"key_d", "cones", 9.1e-3, 2.5e-2, 1.1e-1, 2.9e-1},
-     /* measured 4.52e-3, 1.23e-2, 5.26e-2, 1.44e-1 */
-    {"key_d", "fractal", 2.9e-2, 7.5e-2, 3.3e-1, 6.8e-1},
-     /* measured 1.44e-2, 3.72e-2, 1.64e-1, 3.38e-1 */
-    {"key_d", "dem", 3.1e-2, 7.0e-2, 2.9e-1, 6.6e-1},
-     /* measured 1.51e-2, 3.48e-2, 1.44e-1, 3.28e-1 */
-    {"key_d", "cliff", 9.8e-3, 4.5e-2, 2.0e-1, 3.8e-1},
-     /* measured 4.89e-3, 1.83e-2, 9.73e-2, 1.86e-1; 7.69e-3, 3.18e-2,
-      * 1.49e-1 at d8d97c1; 9.65e-3, 3.72e-2, 1.74e-1, 3.17e-1 with the gap
-      * search (issue 36), rmse bound 1.2x that.  The gap search's horizons
-      * are exact at every crossing: the small suns a-c fell 1.1-4x (key_a
-      * fractal 6.67e-3 -> 1.69e-3, key_c dem 5.66e-3 -> 1.40e-3), the broad
-      * disk d rose 7-25% on every scene (`build/tests/test_cpu_truth key_d
-      * SCENE` in both builds): its partial swath of 3 samples renders it
-      * darker than the truth on average, and higher horizons add to that
-      * (more samples across the disk, --nphi-key, shrink it).  The broad
-      * disk's bias is left for later. */
-    {"local", "cones", 1.2e-3, 7.6e-3, 3.8e-2, 1.4e-1},
-     /* measured 5.75e-4, 3.76e-3, 1.87e-2, 6.90e-2 */
-    {"local", "fractal", 5.3e-3, 2.9e-2, 1.3e-1, 4.7e-1},
-     /* measured 2.65e-3, 1.41e-2, 6.03e-2, 2.32e-1 */
-    {"local", "dem", 4.6e-4, 2.1e-3, 8.8e-3, 3.4e-2},
-     /* measured 2.28e-4, 1.01e-3, 4.38e-3, 1.66e-2 */
-    {"local", "cliff", 2.1e-4, 6.3e-3, 1.0e-4, 2.6e-1},
-     /* measured 1.03e-4, 3.13e-3, 6.13e-6, 1.28e-1 */
+    {"env", "cones", 1.8e-03, 2.7e-03, 9.0e-03, 1.8e-02},
+     /* measured 1.49e-03, 2.24e-03, 7.47e-03, 1.46e-02 */
+    {"env", "fractal", 6.4e-03, 1.2e-02, 4.7e-02, 8.9e-02},
+     /* measured 5.27e-03, 9.20e-03, 3.90e-02, 7.38e-02 */
+    {"env", "dem", 3.2e-03, 5.4e-03, 2.2e-02, 5.1e-02},
+     /* measured 2.61e-03, 4.48e-03, 1.80e-02, 4.17e-02 */
+    {"env", "cliff", 4.0e-03, 1.1e-02, 4.9e-02, 8.1e-02},
+     /* measured 3.33e-03, 8.47e-03, 4.04e-02, 6.70e-02 */
+    {"env_rotated", "cones", 1.8e-03, 2.7e-03, 8.5e-03, 1.3e-02},
+     /* measured 1.49e-03, 2.23e-03, 7.08e-03, 1.07e-02 */
+    {"env_rotated", "fractal", 6.3e-03, 1.1e-02, 4.3e-02, 9.0e-02},
+     /* measured 5.21e-03, 8.77e-03, 3.53e-02, 7.47e-02 */
+    {"env_rotated", "dem", 3.1e-03, 5.2e-03, 2.0e-02, 4.7e-02},
+     /* measured 2.53e-03, 4.28e-03, 1.62e-02, 3.84e-02 */
+    {"env_rotated", "cliff", 3.0e-03, 8.3e-03, 4.2e-02, 6.9e-02},
+     /* measured 2.42e-03, 6.88e-03, 3.44e-02, 5.70e-02 */
+    {"key_a", "cones", 1.1e-03, 5.6e-03, 2.9e-02, 8.7e-02},
+     /* measured 9.04e-04, 4.63e-03, 2.40e-02, 7.21e-02 */
+    {"key_a", "fractal", 1.4e-03, 1.1e-02, 4.3e-02, 1.9e-01},
+     /* measured 1.12e-03, 8.88e-03, 3.56e-02, 1.56e-01 */
+    {"key_a", "dem", 7.5e-04, 7.7e-03, 1.9e-02, 2.8e-01},
+     /* measured 6.20e-04, 6.37e-03, 1.56e-02, 2.32e-01 */
+    {"key_a", "cliff", 3.4e-03, 4.7e-02, 1.0e-04, 0},
+     /* measured 2.82e-03, 3.86e-02, 9.91e-07, 1.00 */
+    {"key_b", "cones", 8.8e-04, 4.5e-03, 2.4e-02, 6.4e-02},
+     /* measured 7.30e-04, 3.68e-03, 1.95e-02, 5.26e-02 */
+    {"key_b", "fractal", 2.9e-03, 1.2e-02, 6.3e-02, 1.7e-01},
+     /* measured 2.35e-03, 9.83e-03, 5.21e-02, 1.38e-01 */
+    {"key_b", "dem", 1.3e-03, 5.5e-03, 2.8e-02, 6.8e-02},
+     /* measured 1.06e-03, 4.58e-03, 2.29e-02, 5.65e-02 */
+    {"key_b", "cliff", 1.0e-04, 1.0e-04, 1.0e-04, 1.0e-04},
+     /* measured 7.77e-07, 9.81e-07, 2.58e-06, 4.28e-06 */
+    {"key_c", "cones", 4.8e-04, 5.0e-03, 1.2e-02, 1.5e-01},
+     /* measured 3.94e-04, 4.11e-03, 9.26e-03, 1.19e-01 */
+    {"key_c", "fractal", 2.0e-03, 1.8e-02, 5.7e-02, 4.5e-01},
+     /* measured 1.59e-03, 1.46e-02, 4.71e-02, 3.69e-01 */
+    {"key_c", "dem", 1.7e-03, 2.7e-02, 3.6e-02, 0},
+     /* measured 1.40e-03, 2.24e-02, 2.93e-02, 8.51e-01 */
+    {"key_c", "cliff", 1.0e-04, 1.0e-04, 1.0e-04, 1.0e-04},
+     /* measured 1.16e-08, 2.01e-08, 6.02e-08, 2.41e-07 */
+    {"key_d", "cones", 9.3e-03, 1.9e-02, 5.9e-02, 7.2e-02},
+     /* measured 7.72e-03, 1.53e-02, 4.84e-02, 5.95e-02 */
+    {"key_d", "fractal", 1.1e-02, 2.4e-02, 8.5e-02, 3.0e-01},
+     /* measured 8.57e-03, 1.97e-02, 7.07e-02, 2.48e-01 */
+    {"key_d", "dem", 1.0e-02, 2.0e-02, 6.7e-02, 2.0e-01},
+     /* measured 8.29e-03, 1.64e-02, 5.52e-02, 1.62e-01 */
+    {"key_d", "cliff", 1.2e-02, 4.5e-02, 2.1e-01, 3.9e-01},
+     /* measured 9.65e-03, 3.72e-02, 1.74e-01, 3.17e-01;
+      * the broad disk's partial swath of 3 samples renders it darker than
+      * the truth on average (more samples across the disk, --nphi-key,
+      * shrink it): left for later */
+    {"local", "cones", 6.8e-04, 4.4e-03, 2.2e-02, 7.4e-02},
+     /* measured 5.62e-04, 3.61e-03, 1.80e-02, 6.14e-02 */
+    {"local", "fractal", 3.2e-03, 1.7e-02, 7.3e-02, 2.8e-01},
+     /* measured 2.65e-03, 1.41e-02, 6.03e-02, 2.32e-01 */
+    {"local", "dem", 2.7e-04, 1.2e-03, 5.4e-03, 1.8e-02},
+     /* measured 2.21e-04, 9.84e-04, 4.47e-03, 1.48e-02 */
+    {"local", "cliff", 1.3e-04, 3.8e-03, 1.0e-04, 1.6e-01},
+     /* measured 1.03e-04, 3.13e-03, 6.13e-06, 1.28e-01 */
 };
 
 /* ---- rendering --------------------------------------------------------------------- */
