@@ -7,8 +7,8 @@
  * top square below its height, with a margin; it is lit where every ray
  * misses the post's footprint grown by the one-texel ramp of the bilinear
  * surface, or passes above its height.  Each umbra texel must render below
- * 5% of its unshadowed value (50% on a sub-sampled grid: run_case), each
- * lit one above 95%.
+ * 5% of its unshadowed value at every subsample (run_case), each lit one
+ * above 95%.
  *
  * Before the gap search (runtime/core/ray_bound.h) the scales sampled the
  * sun's direction at distances 2^(m/k) and stepped over the post beyond a
@@ -118,19 +118,19 @@ static int render_sun(hfs_renderer *r, const char *name, const hfs_field *f, dou
     return 0;
 }
 
-/* Umbra texels render below umbra_max of their unshadowed value: 5% at
- * subsample 1.  On a sub-sampled grid each texel searches its own ray
- * only to where the disk's penumbra is a grid step wide (DESIGN.md "Sharp
- * edges on the grid"); beyond, it blends its grid receivers' occluders,
- * and an umbra narrower than the step comes out partly lit (case 4 at
- * subsample 2: 4 texels at 19-21%).  There the bound is the issue's
- * "rendered lit": none of the umbra at half of its unshadowed value or
- * more (before the edge search, at subsample 2 one texel of case 2, at
- * subsample 4 18-72 of cases 3-6). */
+/* Umbra texels render below 5% of their unshadowed value, at every
+ * subsample: on a sub-sampled grid each texel searches its own rays to the
+ * field's end (DESIGN.md "Sharp edges on the grid").  Before (a37b16b) it
+ * searched only to where the disk's penumbra is a grid step wide and
+ * blended its grid receivers' occluders beyond, and an umbra narrower than
+ * the step came out partly lit (case 4 at subsample 2: 4 texels at
+ * 19-21%), so the bound there was the issue's "rendered lit", half of the
+ * unshadowed value (before the edge search, at subsample 2 one texel of
+ * case 2, at subsample 4 18-72 of cases 3-6, above even that). */
 static void run_case(hfs_renderer *r, const char *name, const post_case *pc,
                      const hfs_quality *q)
 {
-    const double umbra_max = q->subsample > 1 ? 0.5 : 0.05;
+    const double umbra_max = 0.05;
     const int w = pc->w, h = pc->h;
     float *z = calloc((size_t)w * h, sizeof *z);
     for (int j = pc->y0; j < pc->y0 + pc->side; ++j)
