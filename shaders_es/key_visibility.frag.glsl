@@ -237,19 +237,21 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, fl
     }
     /* the floor's slope, tan(fl), as the stored tangents are clamped */
     float tfl = clamp(-(n.x * cs.x + n.y * cs.y) / n.z, -1e4, 1e4);
-    float sl[4];
-    for (int k = 0; k < 4; ++k) {
-        if (u_whole != 0) { /* no grid: the texel searches its rays to the field's end */
-            sl[k] = tfl;
-            continue;
+    /* the grid's occluders blended, unless the texel searches its rays to
+     * the field's end (u_whole) */
+    float s = tfl;
+    if (u_whole == 0) {
+        float sl[4];
+        for (int k = 0; k < 4; ++k) {
+            vec4 t = texelFetch(u_keyhz, ivec3(c.ga[k], int(layer)), 0);
+            ++g_fetches;
+            float ahead = t.z + dot(c.rel[k], cs);
+            float rz = t.z >= u_far ? c.rz[k] : 0.0;
+            sl[k] = t.z > 0.0 && ahead >= u_reach ? max(tfl, ((t.x + t.y) * t.z + rz) / ahead)
+                                                  : tfl;
         }
-        vec4 t = texelFetch(u_keyhz, ivec3(c.ga[k], int(layer)), 0);
-        ++g_fetches;
-        float ahead = t.z + dot(c.rel[k], cs);
-        float rz = t.z >= u_far ? c.rz[k] : 0.0;
-        sl[k] = t.z > 0.0 && ahead >= u_reach ? max(tfl, ((t.x + t.y) * t.z + rz) / ahead) : tfl;
+        s = mix(mix(sl[0], sl[1], c.f.x), mix(sl[2], sl[3], c.f.x), c.f.y);
     }
-    float s = mix(mix(sl[0], sl[1], c.f.x), mix(sl[2], sl[3], c.f.x), c.f.y);
     near = max(near, own);
     for (int m = 0; u_near_dir > 0 && m < u_near; ++m)
         near = max(near, near_slope(p, cs, exp2(float(m) / u_lk), zp));

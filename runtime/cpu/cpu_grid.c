@@ -304,12 +304,13 @@ double hfs_cpu_grid_key_near(const render_ctx *c, const swath_job *job, int i, i
                                  nr->to, 0.0, best, &dist, NULL);
 }
 
-double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d, int i, int j,
-                                const double n[3], double fl, double near)
+/* The blend of the four grid receivers' occluders around texel (i, j) of
+ * height zp in direction d (cs, sn), moved to the texel, as a slope, at
+ * least the texel's floor slope tfl (key_visibility.frag key_horizon). */
+static double grid_blend(const render_ctx *c, const swath_job *job, int d, int i, int j,
+                         double cs, double sn, double zp, double tfl)
 {
-    const hfs_horizon_plan *plan = job->plan ? job->plan : c->jobs[0].plan;
-    double cs, sn, t[2];
-    hfs_horizon_plan_dir(plan, d, &cs, &sn);
+    double t[2];
     /* per axis: the receivers a[0], a[1] around the texel (key_visibility.frag
      * grid_cell), their grid points x and the texel's weight t */
     int a[2][2], x[2][2];
@@ -321,16 +322,8 @@ double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d
         x[k][0] = receiver(a[k][0], c->sub, len[k]);
         x[k][1] = receiver(a[k][1], c->sub, len[k]);
     }
-    const double zp = hfs_field_z(c->f, i, j) / c->f->dx;
-    /* the floor's slope, as the stored tangents are clamped */
-    double tfl = -(n[0] * cs + n[1] * sn) / n[2];
-    tfl = tfl > 1e4 ? 1e4 : (tfl < -1e4 ? -1e4 : tfl);
     double sl[4];
     for (int k = 0; k < 4; ++k) {
-        if (job->near.whole) { /* no grid: each texel searches its rays */
-            sl[k] = tfl;
-            continue;
-        }
         const int gx = x[0][k % 2], gy = x[1][k / 2];
         const size_t at = (size_t)a[1][k / 2] * (size_t)c->gw + (size_t)a[0][k % 2];
         const double *g = job->grid + (at * (size_t)job->swath.n + (size_t)d) * 2;
@@ -340,8 +333,22 @@ double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d
         sl[k] = g[1] > 0.0 && ahead >= job->near.reach ? fmax(tfl, (g[0] * g[1] + rz) / ahead)
                                                        : tfl;
     }
-    const double s = (sl[0] * (1.0 - t[0]) + sl[1] * t[0]) * (1.0 - t[1]) +
-                     (sl[2] * (1.0 - t[0]) + sl[3] * t[0]) * t[1];
+    return (sl[0] * (1.0 - t[0]) + sl[1] * t[0]) * (1.0 - t[1]) +
+           (sl[2] * (1.0 - t[0]) + sl[3] * t[0]) * t[1];
+}
+
+double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d, int i, int j,
+                                const double n[3], double fl, double near)
+{
+    const hfs_horizon_plan *plan = job->plan ? job->plan : c->jobs[0].plan;
+    double cs, sn;
+    hfs_horizon_plan_dir(plan, d, &cs, &sn);
+    const double zp = hfs_field_z(c->f, i, j) / c->f->dx;
+    /* the floor's slope, as the stored tangents are clamped */
+    double tfl = -(n[0] * cs + n[1] * sn) / n[2];
+    tfl = tfl > 1e4 ? 1e4 : (tfl < -1e4 ? -1e4 : tfl);
+    /* no grid where each texel searches its rays to the field's end */
+    const double s = job->near.whole ? tfl : grid_blend(c, job, d, i, j, cs, sn, zp, tfl);
     /* the texel's own cell (its near end is no scale's sample) */
     near = fmax(near, hfs_field_first_cell_slope(c->f, i, j, cs, sn));
     for (int m = 0; job->near.per_dir && m < job->near.n; ++m)

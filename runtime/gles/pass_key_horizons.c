@@ -162,7 +162,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
         if (which && !which[q])
             continue;
         const hfs_gles_frame_key *k = &fr->keys[q];
-        if (hfs_gles_key_near_make(L, &k->k.swath).whole)
+        const hfs_key_near nr = hfs_gles_key_near_make(L, &k->k.swath);
+        if (nr.whole)
             continue; /* its texels search their rays to the field's end */
         const int n = k->k.swath.n;
         for (int d0 = 0; d0 < n; d0 += DIRS_PER_DRAW) {
@@ -178,7 +179,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
                 return rc;
             /* the gap search starts where the grid's scales do: the near
              * ones are searched per texel (key_visibility.frag) */
-            const int near = hfs_gles_key_near_make(L, &k->k.swath).n_grid;
+            const int near = nr.n_grid;
             if ((rc = hfs_gles_bind_bounds(g, prog, L, (float)exp2((double)near / L->k), err)))
                 return rc;
             hfs_gles_set_i1(gl, prog, "u_dir0", d0);

@@ -99,19 +99,16 @@ static double horizon_walk(const hfs_truth_grid *g, int i, int j, double z0, dou
     while (ci >= 0 && ci < ncx && cj >= 0 && cj < ncy) {
         if (m > -INFINITY && dz_top >= 0.0 && t > 0.0 && dz_top <= m * (t * dx))
             break; /* nothing anywhere ahead can rise above m */
-        const int nx = ci >> level, ny = cj >> level;
-        const int x0 = nx << level, y0 = ny << level;
-        const int x1 = x0 + (1 << level) < ncx ? x0 + (1 << level) : ncx;
-        const int y1 = y0 + (1 << level) < ncy ? y0 + (1 << level) : ncy;
-        const double tx = hfs_truth_exit_param(i, c, x0, x1);
-        const double ty = hfs_truth_exit_param(j, s, y0, y1);
+        const hfs_truth_node nd = hfs_truth_node_at(ci, cj, level, ncx, ncy);
+        const double tx = hfs_truth_exit_param(i, c, nd.x0, nd.x1);
+        const double ty = hfs_truth_exit_param(j, s, nd.y0, nd.y1);
         te = fmax(t, fmin(tx, ty));
         if (!(te < INFINITY))
             break; /* (c, s) = (0, 0): no ray */
         int skip = 0;
         if (use_tree && m > -INFINITY) {
             /* Can any point of this node's stretch [t, te] rise above m? */
-            const double dz = (double)g->zmax[level][(size_t)ny * g->lw[level] + nx] +
+            const double dz = (double)g->zmax[level][(size_t)nd.ny * g->lw[level] + nd.nx] +
                               g->margin - z0;
             skip = dz >= 0.0 ? t > 0.0 && dz <= m * (t * dx) : dz <= m * (te * dx);
         }
@@ -126,7 +123,7 @@ static double horizon_walk(const hfs_truth_grid *g, int i, int j, double z0, dou
                 m = v, best_t = at;
         }
         t = te;
-        hfs_truth_walk_step(i, j, c, s, te, tx, ty, x0, x1, y0, y1, ncx, ncy, &ci, &cj);
+        hfs_truth_walk_step(i, j, c, s, te, tx, ty, &nd, ncx, ncy, &ci, &cj);
     }
     if (hint)
         *hint = best_t;

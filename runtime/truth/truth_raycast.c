@@ -190,12 +190,9 @@ static int ray_walk(const hfs_truth_grid *g, const double o[3], const double d[3
             return 0; /* left the grid: no terrain beyond */
         if (use_tree && w >= 0.0 && oz + t * w > ztop)
             return 0; /* above everything from here on */
-        const int nx = ci >> level, ny = cj >> level;
-        const int x0 = nx << level, y0 = ny << level;
-        const int x1 = x0 + (1 << level) < ncx ? x0 + (1 << level) : ncx;
-        const int y1 = y0 + (1 << level) < ncy ? y0 + (1 << level) : ncy;
-        const double tx = hfs_truth_exit_param(ox, u, x0, x1);
-        const double ty = hfs_truth_exit_param(oy, v, y0, y1);
+        const hfs_truth_node nd = hfs_truth_node_at(ci, cj, level, ncx, ncy);
+        const double tx = hfs_truth_exit_param(ox, u, nd.x0, nd.x1);
+        const double ty = hfs_truth_exit_param(oy, v, nd.y0, nd.y1);
         double te = tx < ty ? tx : ty;
         if (te < t)
             te = t;
@@ -203,7 +200,8 @@ static int ray_walk(const hfs_truth_grid *g, const double o[3], const double d[3
 
         if (use_tree) {
             const double zlo = w >= 0.0 ? oz + t * w : oz + tend * w;
-            const double zn = (double)g->zmax[level][(size_t)ny * g->lw[level] + nx] + g->margin;
+            const double zn =
+                (double)g->zmax[level][(size_t)nd.ny * g->lw[level] + nd.nx] + g->margin;
             if (!(zlo > zn)) {
                 if (level > 0) {
                     --level;
@@ -222,7 +220,7 @@ static int ray_walk(const hfs_truth_grid *g, const double o[3], const double d[3
         if (te >= tmax)
             return 0; /* the segment up to the light is clear (also te = inf) */
         t = te;
-        hfs_truth_walk_step(ox, oy, u, v, te, tx, ty, x0, x1, y0, y1, ncx, ncy, &ci, &cj);
+        hfs_truth_walk_step(ox, oy, u, v, te, tx, ty, &nd, ncx, ncy, &ci, &cj);
     }
 }
 

@@ -35,13 +35,30 @@ static inline int hfs_truth_cell_of(double p, double dir, int ncell)
     return c < 0 ? 0 : (c > ncell - 1 ? ncell - 1 : c);
 }
 
-/* The ray (ox, oy) + t (u, v) leaves the node [x0, x1] x [y0, y1] at te =
- * min(tx, ty) (its exits along x and y): moves (*ci, *cj) to the cell it
- * enters there (off the grid when it leaves the grid). */
+/* The max mip's node of `level` holding cell (ci, cj): its index (nx, ny)
+ * and the cells it spans, [x0, x1) x [y0, y1), clipped to the ncx x ncy
+ * cells. */
+typedef struct hfs_truth_node {
+    int nx, ny, x0, y0, x1, y1;
+} hfs_truth_node;
+
+static inline hfs_truth_node hfs_truth_node_at(int ci, int cj, int level, int ncx, int ncy)
+{
+    hfs_truth_node n = {ci >> level, cj >> level, 0, 0, 0, 0};
+    n.x0 = n.nx << level, n.y0 = n.ny << level;
+    n.x1 = n.x0 + (1 << level) < ncx ? n.x0 + (1 << level) : ncx;
+    n.y1 = n.y0 + (1 << level) < ncy ? n.y0 + (1 << level) : ncy;
+    return n;
+}
+
+/* The ray (ox, oy) + t (u, v) leaves node nd at te = min(tx, ty) (its
+ * exits along x and y): moves (*ci, *cj) to the cell it enters there (off
+ * the grid when it leaves the grid). */
 static inline void hfs_truth_walk_step(double ox, double oy, double u, double v, double te,
-                                       double tx, double ty, int x0, int x1, int y0, int y1,
+                                       double tx, double ty, const hfs_truth_node *nd,
                                        int ncx, int ncy, int *ci, int *cj)
 {
+    const int x0 = nd->x0, x1 = nd->x1, y0 = nd->y0, y1 = nd->y1;
     if (tx <= ty) {
         const int nci = u > 0.0 ? x1 : x0 - 1;
         if (v != 0.0) {
