@@ -46,7 +46,7 @@ void hfs_key_setup_make(const hfs_key_light *k, const hfs_quality *q, hfs_key_se
  *     receiver's occluder is a peak on its own ray that a ray a texel
  *     aside misses, and the blend over-shadowed (the Hurst-0.25 field's
  *     key light 1.48% of the unshadowed maximum at subsample 2, now
- *     0.48%; the 128² fractal 0.34% -> 0.23%, subsample 1's), while the
+ *     0.48%; the 128² fractal 0.34% -> 0.22%, subsample 1's), while the
  *     windowed search costs a clear ray two reads an octave;
  * n_grid, reach: the grid's split when whole = 0 (a full swath): the grid
  * leaves the n_grid finest scales out and searches from `edge` on; an
