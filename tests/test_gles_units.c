@@ -213,6 +213,15 @@ static void test_layout(void)
                 }
 }
 
+/* Field f's layout at the default quality. */
+static void default_layout(const hfs_field *f, hfs_gles_layout *L)
+{
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    hfs_error err;
+    hfs_gles_layout_init(L, f, &q, &err);
+}
+
 static void test_split(void)
 {
     const int w = 300, h = 211;
@@ -229,11 +238,8 @@ static void test_split(void)
         z[0] = (float)ranges[ri][0];
         z[1] = (float)ranges[ri][1];
         hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
-        hfs_quality q;
-        hfs_quality_defaults(&q);
         hfs_gles_layout L;
-        hfs_error err;
-        hfs_gles_layout_init(&L, &f, &q, &err);
+        default_layout(&f, &L);
         const double e = hfs_gles_split_heights(&L, &f, 0, pairs);
         double worst = 0.0, vmax = 0.0;
         for (size_t i = 0; i < (size_t)w * h; ++i) {
@@ -251,11 +257,8 @@ static void test_split(void)
     for (size_t i = 0; i < (size_t)w * h; ++i)
         z[i] = 812.25f;
     hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
-    hfs_quality q;
-    hfs_quality_defaults(&q);
     hfs_gles_layout L;
-    hfs_error err;
-    hfs_gles_layout_init(&L, &f, &q, &err);
+    default_layout(&f, &L);
     CHECK(hfs_gles_split_heights(&L, &f, 0, pairs) == 0.0 && pairs[0] == 0 && pairs[1] == 0,
           "flat field must be exactly 0");
     free(z);
@@ -370,6 +373,34 @@ static void test_blocks(void)
               hfs_gles_local_max_irradiance(&L, &touch) == PI, "local max irradiance");
 }
 
+/* A field large enough for the split's worker threads (layout.c
+ * SPLIT_THREADED) gives the bits and the error of one pass over it. */
+static void test_split_threaded(void)
+{
+    const int w = 701, h = 401;
+    const size_t n = (size_t)w * h;
+    float *z = malloc(n * sizeof *z);
+    uint16_t *a = malloc(n * 2 * sizeof *a), *b = malloc(n * 2 * sizeof *b);
+    if (!z || !a || !b) {
+        CHECK(0, "split threaded: out of memory");
+        free(z), free(a), free(b);
+        return;
+    }
+    unsigned s = 777u;
+    for (size_t i = 0; i < n; ++i) {
+        s = s * 1103515245u + 12345u;
+        z[i] = (float)(100.0 + 900.0 * ((s >> 8) / 16777216.0));
+    }
+    hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
+    hfs_gles_layout L;
+    default_layout(&f, &L);
+    const double e = hfs_gles_split_heights(&L, &f, 0, a);
+    const double want = hfs_half_split(z, n, L.base, L.hscale, b);
+    CHECK(memcmp(a, b, n * 2 * sizeof *a) == 0 && e == want,
+          "split threaded: differs from one pass (error %.3e, want %.3e)", e, want);
+    free(z), free(a), free(b);
+}
+
 /* Every stored bound is at or above its value, and the next value down
  * is below it (the least such), in fp16 and float, over many magnitudes
  * and both signs. */
@@ -401,6 +432,7 @@ int main(void)
     test_caps();
     test_layout();
     test_split();
+    test_split_threaded();
     test_offsets();
     test_blocks();
     if (failures) {

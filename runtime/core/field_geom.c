@@ -85,14 +85,29 @@ void hfs_dir(double phi, double e, double s[3])
 
 void hfs_field_range(const hfs_field *f, double *lo, double *hi)
 {
+    /* Four running extremes instead of one: a frame's scan at 1024² was a
+     * chain of a million dependent compares (issue 37, the host's part).
+     * The same extremes (the heights are finite, hfs_field_validate);
+     * zeros of both signs may come out as either. */
     const size_t n = (size_t)f->width * (size_t)f->height;
-    double a = f->z[0], b = f->z[0];
-    for (size_t i = 1; i < n; ++i) {
-        a = f->z[i] < a ? f->z[i] : a;
-        b = f->z[i] > b ? f->z[i] : b;
+    const float *z = f->z;
+    float a[4] = {z[0], z[0], z[0], z[0]}, b[4] = {z[0], z[0], z[0], z[0]};
+    size_t i = 0;
+    for (; i + 4 <= n; i += 4)
+        for (int k = 0; k < 4; ++k) {
+            a[k] = z[i + (size_t)k] < a[k] ? z[i + (size_t)k] : a[k];
+            b[k] = z[i + (size_t)k] > b[k] ? z[i + (size_t)k] : b[k];
+        }
+    for (; i < n; ++i) {
+        a[0] = z[i] < a[0] ? z[i] : a[0];
+        b[0] = z[i] > b[0] ? z[i] : b[0];
     }
-    *lo = a;
-    *hi = b;
+    for (int k = 1; k < 4; ++k) {
+        a[0] = a[k] < a[0] ? a[k] : a[0];
+        b[0] = b[k] > b[0] ? b[k] : b[0];
+    }
+    *lo = a[0];
+    *hi = b[0];
 }
 
 void hfs_rgb_bilinear(const float *rgb, int w, int h, double gx, double gy, double out[3])

@@ -274,9 +274,9 @@ static const char *type_name(GLenum type)
     }
 }
 
-int hfs_gl_read_rgba(const hfs_gl *gl, GLuint framebuffer, int x, int y, int w, int h,
-                     hfs_gl_read_path path, float *out, hfs_gl_read_path *used,
-                     hfs_error *err)
+int hfs_gl_read_rgba_raw(const hfs_gl *gl, GLuint framebuffer, int x, int y, int w, int h,
+                         hfs_gl_read_path path, void *out, hfs_gl_read_path *used,
+                         hfs_error *err)
 {
     if (!framebuffer || !out || w < 1 || h < 1 || x < 0 || y < 0 ||
         (size_t)w > SIZE_MAX / 4 / sizeof(float) / (size_t)h)
@@ -319,24 +319,10 @@ int hfs_gl_read_rgba(const hfs_gl *gl, GLuint framebuffer, int x, int y, int w, 
     if (rc)
         goto out_restore;
 
-    size_t n = (size_t)w * (size_t)h * 4;
-    if (type == GL_FLOAT) {
-        gl->ReadPixels(x, y, w, h, GL_RGBA, GL_FLOAT, out);
-    } else {
-        uint16_t *half = malloc(n * sizeof *half);
-        if (!half) {
-            rc = hfs_fail(err, HFS_E_NOMEM, "readback: out of memory for %dx%d", w, h);
-            goto out_restore;
-        }
-        gl->ReadPixels(x, y, w, h, GL_RGBA, type, half);
-        if (gl->GetError() == GL_NO_ERROR)
-            for (size_t i = 0; i < n; ++i)
-                out[i] = hfs_half_to_float(half[i]);
-        else
-            rc = hfs_fail(err, HFS_E_GL, "readback: glReadPixels(GL_RGBA, %s) rejected",
-                          type_name(type));
-        free(half);
-    }
+    gl->ReadPixels(x, y, w, h, GL_RGBA, type, out);
+    if (gl->GetError() != GL_NO_ERROR)
+        rc = hfs_fail(err, HFS_E_GL, "readback: glReadPixels(GL_RGBA, %s) rejected",
+                      type_name(type));
     if (!rc) {
         char what[96];
         snprintf(what, sizeof what, "readback: glReadPixels(GL_RGBA, %s)", type_name(type));
@@ -358,53 +344,23 @@ out_restore:
     return rc;
 }
 
-/* ---- fp16 ------------------------------------------------------------------ */
-
-float hfs_half_to_float(uint16_t h)
+void hfs_gl_widen_halves(float *buf, size_t n)
 {
-    /* The half's exponent and mantissa shifted into a float's place read as
-     * a float 2^-112 too small, for normal halves and subnormal ones alike
-     * (a subnormal half becomes a float subnormal, exact); one multiply by
-     * 2^112 rebiases both, without a branch, so the readback's loop over a
-     * frame vectorizes.  Inf/NaN (exponent 31) get a float exponent of all
-     * ones instead. */
-    uint32_t bits = (uint32_t)(h & 0x7fffu) << 13;
-    float f;
-    memcpy(&f, &bits, sizeof f);
-    f *= 0x1p112f;
-    memcpy(&bits, &f, sizeof bits);
-    if ((h & 0x7c00u) == 0x7c00u)
-        bits = 0x7f800000u | ((uint32_t)(h & 0x3ffu) << 13);
-    bits |= (uint32_t)(h & 0x8000u) << 16;
-    memcpy(&f, &bits, sizeof f);
-    return f;
+    /* from the end: float i lies at or after every half j <= i */
+    const uint16_t *half = (const uint16_t *)(void *)buf;
+    for (size_t i = n; i-- > 0;)
+        buf[i] = hfs_half_to_float(half[i]);
 }
 
-uint16_t hfs_float_to_half(float f)
+int hfs_gl_read_rgba(const hfs_gl *gl, GLuint framebuffer, int x, int y, int w, int h,
+                     hfs_gl_read_path path, float *out, hfs_gl_read_path *used,
+                     hfs_error *err)
 {
-    uint32_t x;
-    memcpy(&x, &f, sizeof x);
-    uint16_t sign = (uint16_t)((x >> 16) & 0x8000u);
-    uint32_t ax = x & 0x7fffffffu;
-
-    if (ax > 0x7f800000u) /* NaN: keep it quiet and keep the top payload bits */
-        return (uint16_t)(sign | 0x7e00u | ((ax >> 13) & 0x3ffu));
-    if (ax >= 0x477ff000u) /* >= 65520 (and inf) round to inf */
-        return (uint16_t)(sign | 0x7c00u);
-    if (ax < 0x38800000u) { /* below 2^-14: subnormal half or zero */
-        int e = (int)(ax >> 23);
-        int shift = 126 - e; /* units of 2^-24 = m >> shift */
-        if (shift > 24)
-            return sign;
-        uint32_t m = (ax & 0x7fffffu) | 0x800000u;
-        uint32_t q = m >> shift, r = m & ((1u << shift) - 1), half = 1u << (shift - 1);
-        if (r > half || (r == half && (q & 1u)))
-            ++q;
-        return (uint16_t)(sign | q);
-    }
-    uint32_t h = ((ax >> 23) - 127 + 15) << 10 | ((ax & 0x7fffffu) >> 13);
-    uint32_t r = ax & 0x1fffu;
-    if (r > 0x1000u || (r == 0x1000u && (h & 1u)))
-        ++h; /* a carry into the exponent is the right answer */
-    return (uint16_t)(sign | h);
+    hfs_gl_read_path took = HFS_GL_READ_FLOAT;
+    int rc = hfs_gl_read_rgba_raw(gl, framebuffer, x, y, w, h, path, out, &took, err);
+    if (!rc && took == HFS_GL_READ_HALF)
+        hfs_gl_widen_halves(out, (size_t)w * (size_t)h * 4);
+    if (!rc && used)
+        *used = took;
+    return rc;
 }

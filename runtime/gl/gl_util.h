@@ -10,9 +10,11 @@
 #ifndef HFS_GL_UTIL_H
 #define HFS_GL_UTIL_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "gl_api.h"
+#include "half.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -89,13 +91,18 @@ int hfs_gl_read_rgba(const hfs_gl *gl, GLuint framebuffer, int x, int y, int w, 
                      hfs_gl_read_path path, float *out, hfs_gl_read_path *used,
                      hfs_error *err);
 
-/* ---- fp16 ------------------------------------------------------------------ */
+/* The same read, left as the driver gave it: w*h*4 floats in out, or with
+ * *used HFS_GL_READ_HALF w*h*4 halves (uint16_t, the buffer's first half),
+ * for a caller that converts while it combines (pass_readback.c); out must
+ * hold w*h*4 floats either way.  used must not be NULL. */
+int hfs_gl_read_rgba_raw(const hfs_gl *gl, GLuint framebuffer, int x, int y, int w, int h,
+                         hfs_gl_read_path path, void *out, hfs_gl_read_path *used,
+                         hfs_error *err);
 
-/* IEEE 754 binary16 <-> binary32.  Exact for every half (including
- * subnormals, infinities, NaN payload top bits); float->half rounds to
- * nearest even and overflows to infinity. */
-float hfs_half_to_float(uint16_t h);
-uint16_t hfs_float_to_half(float f);
+/* Widens n halves held in buf's first half to n floats, in place. */
+void hfs_gl_widen_halves(float *buf, size_t n);
+
+/* fp16 <-> float: half.h (inline, for the loops over a frame). */
 
 #ifdef __cplusplus
 }

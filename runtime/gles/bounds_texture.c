@@ -8,7 +8,6 @@
 
 #include <math.h>
 #include <stdint.h>
-#include <stdlib.h>
 
 /* fp16 bit patterns step monotonically in magnitude: the next value up is
  * one pattern further from zero for positives, one nearer for negatives. */
@@ -28,30 +27,33 @@ float hfs_gles_float_up(double v)
     return (double)f >= v ? f : nextafterf(f, INFINITY);
 }
 
-int hfs_gles_bounds_upload(const hfs_gl *gl, const hfs_gl_caps *c, GLuint tex,
-                           const hfs_gles_layout *L, const hfs_field *f, hfs_error *err)
+size_t hfs_gles_bounds_work_bytes(const hfs_gles_layout *L)
 {
     const hfs_ray_bound_layout *rb = &L->rb;
     const size_t n = (size_t)rb->aw * (size_t)rb->ah;
-    double *atlas = malloc(n * sizeof *atlas);
-    double *scratch = malloc(2 * (size_t)rb->lw[1] * (size_t)rb->lh[1] * sizeof *scratch);
-    void *buf = malloc(n * (c->fp32 ? sizeof(float) : sizeof(uint16_t)));
-    if (!atlas || !scratch || !buf) {
-        free(atlas), free(scratch), free(buf);
-        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the height bounds");
-    }
+    /* the atlas and the build's scratch in double, then the texels */
+    return (n + 2 * (size_t)rb->lw[1] * (size_t)rb->lh[1]) * sizeof(double) + n * sizeof(float);
+}
+
+int hfs_gles_bounds_upload(const hfs_gl *gl, const hfs_gl_caps *c, GLuint tex,
+                           const hfs_gles_layout *L, const hfs_field *f, void *work,
+                           hfs_error *err)
+{
+    const hfs_ray_bound_layout *rb = &L->rb;
+    const size_t n = (size_t)rb->aw * (size_t)rb->ah;
+    double *atlas = work;
+    double *scratch = atlas + n;
+    void *buf = scratch + 2 * (size_t)rb->lw[1] * (size_t)rb->lh[1];
     hfs_ray_bound_build(rb, f->z, L->base, L->hscale, -2.0, atlas, scratch);
-    for (size_t i = 0; i < n; ++i) {
-        if (c->fp32)
+    if (c->fp32)
+        for (size_t i = 0; i < n; ++i)
             ((float *)buf)[i] = hfs_gles_float_up(atlas[i]);
-        else
-            ((uint16_t *)buf)[i] = hfs_gles_half_up(atlas[i]);
-    }
+    else
+        hfs_half_round_up(atlas, n, buf); /* hfs_gles_half_up's, vectorized */
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
     gl->BindTexture(GL_TEXTURE_2D, tex);
     gl->TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, rb->aw, rb->ah, GL_RED, c->type_upload, buf);
     gl->BindTexture(GL_TEXTURE_2D, 0);
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    free(atlas), free(scratch), free(buf);
     return hfs_gl_check(gl, "backend gles: height bounds upload", err);
 }

@@ -16,9 +16,13 @@
 #include "layout.h"
 
 /* Uploads f's bounds into tex (L->rb.aw x L->rb.ah, allocated by
- * resources.c).  Out of memory: an error, the texture untouched. */
+ * resources.c), built in `work`: hfs_gles_bounds_work_bytes(L) bytes the
+ * caller keeps between terrain changes (the renderer's scratch: a fresh
+ * allocation of that size each change cost page faults, issue 37). */
+size_t hfs_gles_bounds_work_bytes(const hfs_gles_layout *L);
 int hfs_gles_bounds_upload(const hfs_gl *gl, const hfs_gl_caps *c, GLuint tex,
-                           const hfs_gles_layout *L, const hfs_field *f, hfs_error *err);
+                           const hfs_gles_layout *L, const hfs_field *f, void *work,
+                           hfs_error *err);
 
 /* The bound nearest above v at the caps' precision (exposed for tests). */
 uint16_t hfs_gles_half_up(double v);

@@ -4,8 +4,9 @@
 #include "layout.h"
 
 #include "field_geom.h"
-#include "pyramid_layout.h"
 #include "gl_util.h"
+#include "parallel.h"
+#include "pyramid_layout.h"
 
 #include <math.h>
 #include <string.h>
@@ -49,11 +50,31 @@ int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quali
     return HFS_OK;
 }
 
+/* The fp16 split in chunks over worker threads (a frame's largest piece
+ * of host work at 1024²: issue 37).  Each chunk writes its own texels and
+ * its own largest error: the same bits for any thread count. */
+#define SPLIT_CHUNKS 64
+#define SPLIT_THREADED 262144 /* texels; below, threads cost more than they save */
+typedef struct split_job {
+    const float *z;
+    size_t n;
+    double base, scale;
+    uint16_t *rg;
+    double worst[SPLIT_CHUNKS];
+} split_job;
+
+static void split_chunk(void *ctx, int row, int worker)
+{
+    (void)worker;
+    split_job *j = ctx;
+    const size_t a = j->n * (size_t)row / SPLIT_CHUNKS, b = j->n * (size_t)(row + 1) / SPLIT_CHUNKS;
+    j->worst[row] = hfs_half_split(j->z + a, b - a, j->base, j->scale, j->rg + 2 * a);
+}
+
 double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int fp32,
                               void *dst)
 {
     const size_t n = (size_t)L->w * (size_t)L->h;
-    double worst = 0.0;
     if (fp32) {
         float *out = dst;
         for (size_t i = 0; i < n; ++i) {
@@ -62,17 +83,13 @@ double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int 
         }
         return 0.0;
     }
-    uint16_t *out = dst;
-    for (size_t i = 0; i < n; ++i) {
-        const double v = ((double)f->z[i] - L->base) / L->hscale;
-        const uint16_t hi = hfs_float_to_half((float)v);
-        const double hv = hfs_half_to_float(hi);
-        const uint16_t lo = hfs_float_to_half((float)(v - hv));
-        out[2 * i] = hi;
-        out[2 * i + 1] = lo;
-        const double e = fabs(hv + (double)hfs_half_to_float(lo) - v);
-        worst = e > worst ? e : worst;
-    }
+    if (n < SPLIT_THREADED)
+        return hfs_half_split(f->z, n, L->base, L->hscale, dst);
+    split_job j = {.z = f->z, .n = n, .base = L->base, .scale = L->hscale, .rg = dst};
+    hfs_parallel_rows(SPLIT_CHUNKS, 0, split_chunk, &j, NULL, NULL);
+    double worst = 0.0;
+    for (int c = 0; c < SPLIT_CHUNKS; ++c)
+        worst = j.worst[c] > worst ? j.worst[c] : worst;
     return worst;
 }
 

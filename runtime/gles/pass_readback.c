@@ -2,14 +2,39 @@
  * pass_readback.c — the lit targets (hi, lo: hfs_gles_lit_targets) read back, summed in
  * double, the output scale divided out (pass_shade.c), into the caller's
  * image; the image is also kept, handed out again while nothing changes.
+ * The halves the driver reads are widened in the same loop that sums them
+ * (half.h; no float copy of either target: at 1024² that was two 16 MiB
+ * buffers written and read again a frame).
  */
 #include "gles_backend.h"
 
 #include "gl_util.h"
+#include "half.h"
+#include "parallel.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* The sum in chunks over worker threads at large sizes (as layout.c's
+ * split): each chunk writes its own pixels, the same bits for any thread
+ * count. */
+#define SUM_CHUNKS 64
+#define SUM_THREADED 262144 /* pixels */
+typedef struct sum_job {
+    const uint16_t *hi, *lo;
+    size_t npx;
+    double inv;
+    float *rgb;
+} sum_job;
+
+static void sum_chunk(void *ctx, int row, int worker)
+{
+    (void)worker;
+    const sum_job *j = ctx;
+    const size_t a = j->npx * (size_t)row / SUM_CHUNKS, b = j->npx * (size_t)(row + 1) / SUM_CHUNKS;
+    hfs_half_sum_rgb(j->hi + 4 * a, j->lo + 4 * a, b - a, j->inv, j->rgb + 3 * a);
+}
 
 static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
 {
@@ -24,17 +49,34 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     /* The lit result (hfs_gles_lit_targets): hi, then lo alone. */
     const GLuint hi_fbo = fr->bounces > 0 ? g->bounce.fin_fbo : g->r.out_fbo;
     const GLuint lo_fbo = fr->bounces > 0 ? g->bounce.fin_lo_fbo : g->r.out_lo_fbo;
+    hfs_gl_read_path th, tl;
     int rc;
-    if ((rc = hfs_gl_read_rgba(gl, hi_fbo, 0, 0, L->w, L->h, HFS_GL_READ_AUTO, px, NULL, err)) ||
-        (rc = hfs_gl_read_rgba(gl, lo_fbo, 0, 0, L->w, L->h, HFS_GL_READ_AUTO, lo, NULL, err)))
+    if ((rc = hfs_gl_read_rgba_raw(gl, hi_fbo, 0, 0, L->w, L->h, HFS_GL_READ_AUTO, px, &th,
+                                   err)) ||
+        (rc = hfs_gl_read_rgba_raw(gl, lo_fbo, 0, 0, L->w, L->h, HFS_GL_READ_AUTO, lo, &tl,
+                                   err)))
         return rc;
     const double inv = 1.0 / fr->out_scale;
     float *rgb = fr->out->rgb;
-    for (size_t i = 0; i < npx; ++i)
-        for (int c = 0; c < 3; ++c) {
-            const double v = ((double)px[4 * i + (size_t)c] + lo[4 * i + (size_t)c]) * inv;
-            rgb[3 * i + (size_t)c] = isfinite(v) ? (float)v : 0.0f;
-        }
+    if (th == HFS_GL_READ_HALF && tl == HFS_GL_READ_HALF) {
+        sum_job j = {(const uint16_t *)(void *)px, (const uint16_t *)(void *)lo, npx, inv, rgb};
+        if (npx < SUM_THREADED)
+            hfs_half_sum_rgb(j.hi, j.lo, npx, inv, rgb);
+        else
+            hfs_parallel_rows(SUM_CHUNKS, 0, sum_chunk, &j, NULL, NULL);
+    } else {
+        /* a driver that reads floats (or one target each way): widen what
+         * came as halves, then the same sum */
+        if (th == HFS_GL_READ_HALF)
+            hfs_gl_widen_halves(px, npx * 4);
+        if (tl == HFS_GL_READ_HALF)
+            hfs_gl_widen_halves(lo, npx * 4);
+        for (size_t i = 0; i < npx; ++i)
+            for (int c = 0; c < 3; ++c) {
+                const double v = ((double)px[4 * i + (size_t)c] + lo[4 * i + (size_t)c]) * inv;
+                rgb[3 * i + (size_t)c] = isfinite(v) ? (float)v : 0.0f;
+            }
+    }
     if (g->last_img_cap < n_img) {
         float *k = realloc(g->last_img, n_img * sizeof *k);
         if (!k)

@@ -76,7 +76,12 @@ static int upload(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     gl->TexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, L->n_layers - 1, w, h, 1, GL_RG,
                       g->caps.type_upload, buf);
     gl->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
-    int rc = hfs_gles_bounds_upload(gl, &g->caps, g->r.bounds, L, fr->f, err);
+    /* the heights' buffer is free again: the bounds are built in the same
+     * scratch */
+    void *work = hfs_gles_scratch(g, hfs_gles_bounds_work_bytes(L));
+    if (!work)
+        return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the height bounds");
+    int rc = hfs_gles_bounds_upload(gl, &g->caps, g->r.bounds, L, fr->f, work, err);
     hfs_gles_stage_end(g, HFS_PASS_TERRAIN, 0);
     return rc ? rc : hfs_gl_check(gl, "backend gles: upload", err);
 }
