@@ -201,6 +201,38 @@ static void check_invalid(const scene *sc, const float *map)
  * (issue 15 asks 2e-3). */
 #define GLES_FP16_BOUND 9.4e-5
 
+/* A map-shaded frame keeps no transfer targets (the shading reads the
+ * map's occlusion instead): the SH-shaded frame after it on the same
+ * renderer makes them (4 RGBA targets, at fp16 32 bytes a texel, less the
+ * map's occlusion target it no longer needs), and equals a fresh
+ * renderer's frame bit for bit. */
+static void check_gles_transfer(const scene *sc, const shaded *map, const shaded *sh,
+                                const hfs_quality *q)
+{
+    char ran[256];
+    const int same = env_map_kept_is_fresh(&sc->f, &map->l, &sh->l, q, NULL, ran, sizeof ran);
+    CHECK(same && strstr(ran, "transfer"), "SH after map: ran '%s', %s", ran,
+          same ? "equal" : "not a fresh frame");
+    hfs_renderer *r = gl_test_gles();
+    hfs_error err = {""};
+    hfs_image x = {0};
+    hfs_timings t;
+    hfs_image_alloc(&x, sc->f.width, sc->f.height, &err);
+    hfs_renderer_set_timing(r, 1);
+    int rc = hfs_renderer_render(r, &sc->f, &map->l, q, &x, NULL, NULL, &err);
+    hfs_renderer_timings(r, &t);
+    const double bytes_map = (double)t.texture_bytes;
+    rc |= hfs_renderer_render(r, &sc->f, &sh->l, q, &x, NULL, NULL, &err);
+    hfs_renderer_timings(r, &t);
+    const double grew = (double)t.texture_bytes - bytes_map, texels = (double)N * N;
+    CHECK(!rc && grew >= 24.0 * texels, "SH after map: textures grew %.0f bytes, want >= %.0f "
+          "(the transfer made on demand)", grew, 24.0 * texels);
+    printf("gles: textures %.0f bytes map-shaded, +%.0f for the SH-shaded frame's transfer\n",
+           bytes_map, grew);
+    hfs_image_free(&x);
+    hfs_renderer_destroy(r);
+}
+
 static void check_gles(const scene *sc, const float *map, const hfs_image *truth)
 {
     shaded s, sh;
@@ -246,6 +278,7 @@ static void check_gles(const scene *sc, const float *map, const hfs_image *truth
           "turned sky: ran '%s', want the map's occlusion, shade and readback", ran);
     CHECK(same, "turned sky: the planned frame differs from a fresh one");
     printf("gles: a turned sky runs '%s', bit for bit a fresh frame\n", ran);
+    check_gles_transfer(sc, &s, &sh, &q);
 }
 
 int main(int argc, char **argv)

@@ -27,6 +27,12 @@
  *       light with 9 directions (two key passes), a pole-covering key light
  *       (full swath), three key lights at once, env only, key only, albedo,
  *       env rotation, both visibility paths.
+ *   memory        what a frame does not read is not allocated (issue 37):
+ *       at subsample 2 a key light whose texels search their rays to the
+ *       field's end adds only its factor layer (no grid horizons), and
+ *       the slice path holds no V_env grid (a Legendre frame after it on
+ *       the same renderer makes its 4 targets); each frame equals a fresh
+ *       renderer's bit for bit.
  *   errors        refusals: local lights on the wedge-table path, an unknown
  *       profile, fp32 under es30-half, a field beyond the es30 texture size;
  *       nphi-env beyond the es30 uniform-block size is carried by a texture
@@ -240,6 +246,50 @@ static int mode_flat(void)
 
 
 
+/* Texture bytes of renderer r after rendering l at q (timing level 1). */
+static double frame_bytes(hfs_renderer *r, const scene *s, const hfs_lighting *l,
+                          const hfs_quality *q, hfs_image *img)
+{
+    hfs_timings t;
+    hfs_renderer_set_timing(r, 1);
+    if (render(r, s, l, q, img))
+        return -1.0;
+    hfs_renderer_timings(r, &t);
+    return (double)t.texture_bytes;
+}
+
+static int mode_memory(void)
+{
+    scene s;
+    if (scene_make("fractal", 64, HFS_DATA_DIR, &s))
+        return 1;
+    const double texels = 64.0 * 64.0, cells = 33.0 * 33.0; /* the 2x2 grid's receivers */
+    hfs_lighting sky = scene_lighting(1, 0), both = scene_lighting(1, 1);
+    hfs_quality q = quality("fp16", "split", 2);
+    hfs_renderer *a = gles_or_skip(NULL), *b = gles_or_skip(NULL), *fresh = gles_or_skip(NULL);
+    hfs_image x = {0}, y = {0};
+    /* the sun adds its factor layer (RG16F) and nothing on the grid */
+    const double key = frame_bytes(b, &s, &both, &q, &x) - frame_bytes(a, &s, &sky, &q, &y);
+    CHECK(key == 4.0 * texels, "a key light on the 2x2 grid adds %.0f bytes, want %.0f", key,
+          4.0 * texels);
+    /* a Legendre frame after a slice frame makes the V_env grid */
+    hfs_quality ql = quality("fp16", "legendre", 2);
+    const double before = frame_bytes(a, &s, &sky, &q, &x);
+    const double venv = frame_bytes(a, &s, &sky, &ql, &x) - before;
+    CHECK(venv >= 4.0 * 8.0 * cells, "the Legendre frame added %.0f bytes, want >= %.0f (V_env)",
+          venv, 4.0 * 8.0 * cells);
+    render(fresh, &s, &sky, &ql, &y);
+    CHECK(x.rgb && y.rgb && bitequal(&x, &y), "Legendre after slice differs from a fresh frame");
+    printf("memory: key light +%.0f bytes, V_env +%.0f bytes\n", key, venv);
+    hfs_image_free(&x);
+    hfs_image_free(&y);
+    hfs_renderer_destroy(a);
+    hfs_renderer_destroy(b);
+    hfs_renderer_destroy(fresh);
+    scene_free(&s);
+    return failures ? 1 : 0;
+}
+
 /* Away from the defaults (fp32: the algorithm itself must match). */
 static int mode_variants(void)
 {
@@ -424,7 +474,7 @@ int main(int argc, char **argv)
 {
     setvbuf(stdout, NULL, _IONBF, 0);
     if (argc < 2) {
-        fprintf(stderr, "usage: test_gles_render equal|determinism|cache|flat|errors|variants "
+        fprintf(stderr, "usage: test_gles_render equal|determinism|cache|flat|memory|errors|variants "
                         "...\n");
         return 2;
     }
@@ -436,6 +486,8 @@ int main(int argc, char **argv)
         return mode_cache();
     if (!strcmp(argv[1], "flat"))
         return mode_flat();
+    if (!strcmp(argv[1], "memory"))
+        return mode_memory();
     if (!strcmp(argv[1], "errors"))
         return mode_errors();
     if (!strcmp(argv[1], "variants"))

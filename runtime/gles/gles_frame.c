@@ -44,7 +44,8 @@ static int fit_resources(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
                               r->kf_gen};
     const hfs_gles_layers n = {.hor = fr->hor_layers, .far = fr->split.on,
                                .far_w = fr->far_aw, .far_h = fr->far_ah, .key = fr->key_layers,
-                               .local = (fr->n_local + 1) / 2, .n_keys = fr->n_keys};
+                               .local = (fr->n_local + 1) / 2, .n_keys = fr->n_keys,
+                               .venv = fr->has_env && !fr->slice};
     int rc = hfs_gles_resources_ensure(&g->r, &g->gl, &g->caps, &fr->L, &n, err);
     if (rc)
         return rc;

@@ -65,6 +65,9 @@ static int run_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)
 {
     (void)which;
+    int rc0 = hfs_gles_transfer_ensure(&g->r, &g->gl, &g->caps, err);
+    if (rc0)
+        return rc0;
     if (fr->slice)
         return run_slices(g, fr, err);
     const hfs_gl *gl = &g->gl;

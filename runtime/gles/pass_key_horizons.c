@@ -48,9 +48,13 @@ static void assign_layers(hfs_gles *g, hfs_gles_frame *fr)
     for (int i = 0; i < fr->n_keys; ++i)
         if (g->key_stride < fr->keys[i].k.swath.n)
             g->key_stride = fr->keys[i].k.swath.n;
+    fr->key_layers = 0;
     for (int i = 0; i < fr->n_keys; ++i) {
         fr->keys[i].k.hz_layer = i * g->key_stride;
-        fr->key_layers = (i + 1) * g->key_stride;
+        /* a light whose texels search their rays to the field's end
+         * (hfs_key_near.whole) stores nothing on the grid */
+        if (!hfs_gles_key_near_make(&fr->L, &fr->keys[i].k.swath).whole)
+            fr->key_layers = (i + 1) * g->key_stride;
     }
 }
 

@@ -106,6 +106,7 @@ static void grid_free(hfs_gles_resources *r, const hfs_gl *gl)
     for (int i = 0; i < 4; ++i)
         hfs_gles_tex_delete(gl, &r->venv[i]);
     fbo_delete(gl, &r->venv_fbo);
+    r->venv_bytes = 0;
     hfs_gles_tex_delete(gl, &r->hor);
     r->hor_layers = 0;
     r->hor_bytes = 0;
@@ -217,12 +218,6 @@ static int terrain_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_c
     if ((rc = hfs_gles_fbo_new(gl, &r->out_fbo, 2, r->out, NULL, "output", err)) ||
         (rc = hfs_gles_fbo_new(gl, &r->out_lo_fbo, 1, &r->out[1], NULL, "output", err)))
         return rc;
-    for (int i = 0; i < 4; ++i)
-        r->transfer[i] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
-    r->bytes += (size_t)4 * w * h * c->bytes_rgba;
-    if ((rc = hfs_gles_fbo_new(gl, &r->transfer_fbo, 4, r->transfer, NULL, "env transfer",
-                               err)))
-        return rc;
     gl->GenFramebuffers(1, &r->hor_fbo);
     gl->GenFramebuffers(1, &r->far_fbo);
     gl->GenFramebuffers(1, &r->kf_fbo);
@@ -237,7 +232,7 @@ static int terrain_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_c
 static void layers_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                           const hfs_gles_layout *L, const hfs_gles_layers *n)
 {
-    const int key_layers = n->key < 1 ? 1 : n->key, local_layers = n->local, n_keys = n->n_keys;
+    const int key_layers = n->key, local_layers = n->local, n_keys = n->n_keys;
     if (r->hor_layers < n->hor) { /* the environment's visibility: lost with it */
         hfs_gles_tex_delete(gl, &r->hor);
         r->hor = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh, n->hor, 1);
@@ -254,7 +249,7 @@ static void layers_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_
         ++r->grid_gen;
         r->far_bytes = (size_t)n->far_w * n->far_h * n->far * c->bytes_rgba;
     }
-    if (r->keyhz_layers < key_layers) {
+    if (key_layers > 0 && r->keyhz_layers < key_layers) {
         hfs_gles_tex_delete(gl, &r->keyhz);
         r->keyhz = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh,
                                     key_layers, 1);
@@ -279,6 +274,17 @@ static void layers_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_
     }
 }
 
+int hfs_gles_transfer_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                             hfs_error *err)
+{
+    if (r->transfer_fbo)
+        return HFS_OK;
+    for (int i = 0; i < 4; ++i)
+        r->transfer[i] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, r->w, r->h, 1, 0);
+    r->transfer_bytes = (size_t)4 * r->w * r->h * c->bytes_rgba;
+    return hfs_gles_fbo_new(gl, &r->transfer_fbo, 4, r->transfer, NULL, "env transfer", err);
+}
+
 int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                               const hfs_gles_layout *L, const hfs_gles_layers *n,
                               hfs_error *err)
@@ -291,12 +297,16 @@ int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs
             (rc = terrain_alloc(r, gl, c, L, err)))
             return rc;
     }
-    if (r->vw != L->vw || r->vh != L->vh || !r->venv_fbo) {
+    if (r->vw != L->vw || r->vh != L->vh) {
         grid_free(r, gl);
         r->vw = L->vw, r->vh = L->vh;
         ++r->grid_gen, ++r->keyhz_gen, ++r->localv_gen;
+    }
+    if (n->venv && !r->venv_fbo) { /* the Legendre and table paths' V_env */
+        ++r->grid_gen;
         for (int i = 0; i < 4; ++i)
             r->venv[i] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->vw, L->vh, 1, 1);
+        r->venv_bytes = (size_t)4 * L->vw * L->vh * c->bytes_rgba;
         if ((rc = hfs_gles_fbo_new(gl, &r->venv_fbo, 4, r->venv, NULL, "visibility", err)))
             return rc;
     }
@@ -306,7 +316,7 @@ int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs
 
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r, const hfs_gl_caps *c)
 {
-    return r->bytes + (size_t)4 * r->vw * r->vh * c->bytes_rgba + r->hor_bytes + r->far_bytes +
-           r->keyhz_bytes +
-           r->localv_bytes + r->kf_bytes;
+    (void)c;
+    return r->bytes + r->transfer_bytes + r->venv_bytes + r->hor_bytes + r->far_bytes +
+           r->keyhz_bytes + r->localv_bytes + r->kf_bytes;
 }

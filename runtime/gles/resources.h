@@ -47,6 +47,7 @@ typedef struct hfs_gles_resources {
     GLuint out[2], out_fbo; /* RGB hi, lo: drawn together */
     GLuint out_lo_fbo;      /* lo alone as attachment 0, for the readback */
     size_t bytes, hor_bytes, far_bytes, keyhz_bytes, localv_bytes, kf_bytes;
+    size_t transfer_bytes, venv_bytes;       /* made on demand (0: none) */
     unsigned terrain_gen, grid_gen, keyhz_gen, localv_gen, kf_gen; /* bumped when reallocated */
 } hfs_gles_resources;
 
@@ -54,7 +55,8 @@ typedef struct hfs_gles_resources {
 typedef struct hfs_gles_layers {
     int hor;    /* environment horizon layers (slice path; 0: none) */
     int far, far_w, far_h; /* split horizons' far grid: layers (0: none), size */
-    int key;    /* key horizon layers */
+    int key;    /* key horizon layers (0: none; no key light uses the grid) */
+    int venv;   /* 1: the grid's V_env targets (Legendre and table paths) */
     int local;  /* local-light ratio layers */
     int n_keys; /* key factor layers */
 } hfs_gles_layers;
@@ -63,6 +65,11 @@ typedef struct hfs_gles_layers {
 int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                               const hfs_gles_layout *L, const hfs_gles_layers *n,
                               hfs_error *err);
+/* The transfer targets (T = H * V_env), made the first time a frame needs
+ * them (env-shade = map without a glossy lobe or capped bounces never
+ * does: 4 full-resolution RGBA targets, 8 MiB at 512², issue 37). */
+int hfs_gles_transfer_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                             hfs_error *err);
 /* Deletes everything; the generations move on. */
 void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl);
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r, const hfs_gl_caps *c);
