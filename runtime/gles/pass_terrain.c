@@ -194,8 +194,10 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     g->terrain_valid = 0;
     int rc;
     if ((rc = upload(g, fr, err)) || (rc = normals(g, &fr->L, err)) ||
+        (rc = hfs_gles_pyramid_build_ensure(&g->r, &g->gl, &g->caps, &fr->L, err)) ||
         (rc = decimate(g, &fr->L, err)) || (rc = reconstruct(g, &fr->L, err)))
         return rc;
+    hfs_gles_pyramid_build_free(&g->r, &g->gl);
     g->terrain_valid = terrain_remember(g, fr->f, fr->q);
     g->stats.terrain_recomputed = 1;
     return HFS_OK;

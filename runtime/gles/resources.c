@@ -127,11 +127,8 @@ void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
     grid_free(r, gl);
     hfs_gles_tex_delete(gl, &r->input);
     hfs_gles_tex_delete(gl, &r->bounds);
+    hfs_gles_pyramid_build_free(r, gl);
     for (int i = 0; i < HFS_GLES_MAX_LEVELS; ++i) {
-        hfs_gles_tex_delete(gl, &r->lev[i]);
-        fbo_delete(gl, &r->lev_fbo[i]);
-        hfs_gles_tex_delete(gl, &r->half[i]);
-        fbo_delete(gl, &r->half_fbo[i]);
         fbo_delete(gl, &r->arr_fbo[i]);
         fbo_delete(gl, &r->arr_mrt_fbo[i]);
     }
@@ -158,8 +155,40 @@ void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
     r->localv_gen = gen[3] + 1, r->kf_gen = gen[4] + 1;
 }
 
-/* The pyramid: input, decimated levels, x-pass intermediates, the layer
- * array and its single- and multi-target framebuffers. */
+int hfs_gles_pyramid_build_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                                  const hfs_gles_layout *L, hfs_error *err)
+{
+    int rc;
+    for (int l = L->lmin; l < L->n_levels - 1; ++l) {
+        if (r->lev[l])
+            continue;
+        r->lev[l] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, L->lw[l], L->lh[l], 1, 1);
+        r->build_bytes += (size_t)L->lw[l] * L->lh[l] * c->bytes_rg;
+        if ((rc = hfs_gles_fbo_new(gl, &r->lev_fbo[l], 1, &r->lev[l], NULL, "level", err)))
+            return rc;
+        /* The separable reconstruction's intermediate, its own size so
+         * that CLAMP_TO_EDGE clamps at the level's last row. */
+        r->half[l] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, L->w, L->lh[l], 1, 1);
+        r->build_bytes += (size_t)L->w * L->lh[l] * c->bytes_rg;
+        if ((rc = hfs_gles_fbo_new(gl, &r->half_fbo[l], 1, &r->half[l], NULL, "level", err)))
+            return rc;
+    }
+    return HFS_OK;
+}
+
+void hfs_gles_pyramid_build_free(hfs_gles_resources *r, const hfs_gl *gl)
+{
+    for (int i = 0; i < HFS_GLES_MAX_LEVELS; ++i) {
+        hfs_gles_tex_delete(gl, &r->lev[i]);
+        fbo_delete(gl, &r->lev_fbo[i]);
+        hfs_gles_tex_delete(gl, &r->half[i]);
+        fbo_delete(gl, &r->half_fbo[i]);
+    }
+    r->build_bytes = 0;
+}
+
+/* The pyramid: input, bounds, the layer array and its single- and
+ * multi-target framebuffers (the build's own targets: below). */
 static int pyramid_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                          const hfs_gles_layout *L, hfs_error *err)
 {
@@ -169,18 +198,6 @@ static int pyramid_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_c
     r->bytes += (size_t)w * h * c->bytes_rg;
     r->bounds = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_r, L->rb.aw, L->rb.ah, 1, 0);
     r->bytes += (size_t)L->rb.aw * L->rb.ah * c->bytes_r;
-    for (int l = L->lmin; l < L->n_levels - 1; ++l) {
-        r->lev[l] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, L->lw[l], L->lh[l], 1, 1);
-        r->bytes += (size_t)L->lw[l] * L->lh[l] * c->bytes_rg;
-        if ((rc = hfs_gles_fbo_new(gl, &r->lev_fbo[l], 1, &r->lev[l], NULL, "level", err)))
-            return rc;
-        /* The separable reconstruction's intermediate, its own size so
-         * that CLAMP_TO_EDGE clamps at the level's last row. */
-        r->half[l] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, w, L->lh[l], 1, 1);
-        r->bytes += (size_t)w * L->lh[l] * c->bytes_rg;
-        if ((rc = hfs_gles_fbo_new(gl, &r->half_fbo[l], 1, &r->half[l], NULL, "level", err)))
-            return rc;
-    }
     r->arr = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rg, w, h, L->n_layers, 1);
     r->bytes += (size_t)w * h * L->n_layers * c->bytes_rg;
     for (int i = 0; i < L->n_layers - 1; ++i)
@@ -317,6 +334,6 @@ int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r, const hfs_gl_caps *c)
 {
     (void)c;
-    return r->bytes + r->transfer_bytes + r->venv_bytes + r->hor_bytes + r->far_bytes +
+    return r->bytes + r->build_bytes + r->transfer_bytes + r->venv_bytes + r->hor_bytes + r->far_bytes +
            r->keyhz_bytes + r->localv_bytes + r->kf_bytes;
 }

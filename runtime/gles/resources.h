@@ -48,6 +48,7 @@ typedef struct hfs_gles_resources {
     GLuint out_lo_fbo;      /* lo alone as attachment 0, for the readback */
     size_t bytes, hor_bytes, far_bytes, keyhz_bytes, localv_bytes, kf_bytes;
     size_t transfer_bytes, venv_bytes;       /* made on demand (0: none) */
+    size_t build_bytes;                      /* lev, half: only while the pyramid is built */
     unsigned terrain_gen, grid_gen, keyhz_gen, localv_gen, kf_gen; /* bumped when reallocated */
 } hfs_gles_resources;
 
@@ -65,6 +66,14 @@ typedef struct hfs_gles_layers {
 int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                               const hfs_gles_layout *L, const hfs_gles_layers *n,
                               hfs_error *err);
+/* The pyramid build's own targets (decimated levels, the x pass's
+ * intermediates): made when the terrain pass starts, deleted when it ends
+ * (nothing else reads them; at 512² 1.96 MiB held between terrain changes
+ * otherwise, issue 37). */
+int hfs_gles_pyramid_build_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                                  const hfs_gles_layout *L, hfs_error *err);
+void hfs_gles_pyramid_build_free(hfs_gles_resources *r, const hfs_gl *gl);
+
 /* The transfer targets (T = H * V_env), made the first time a frame needs
  * them (env-shade = map without a glossy lobe or capped bounces never
  * does: 4 full-resolution RGBA targets, 8 MiB at 512², issue 37). */
