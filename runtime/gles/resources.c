@@ -158,22 +158,22 @@ void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
 int hfs_gles_pyramid_build_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                                   const hfs_gles_layout *L, hfs_error *err)
 {
-    int rc;
-    for (int l = L->lmin; l < L->n_levels - 1; ++l) {
+    int rc = HFS_OK;
+    for (int l = L->lmin; !rc && l < L->n_levels - 1; ++l) {
         if (r->lev[l])
             continue;
         r->lev[l] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, L->lw[l], L->lh[l], 1, 1);
         r->build_bytes += (size_t)L->lw[l] * L->lh[l] * c->bytes_rg;
-        if ((rc = hfs_gles_fbo_new(gl, &r->lev_fbo[l], 1, &r->lev[l], NULL, "level", err)))
-            return rc;
         /* The separable reconstruction's intermediate, its own size so
          * that CLAMP_TO_EDGE clamps at the level's last row. */
         r->half[l] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, L->w, L->lh[l], 1, 1);
         r->build_bytes += (size_t)L->w * L->lh[l] * c->bytes_rg;
-        if ((rc = hfs_gles_fbo_new(gl, &r->half_fbo[l], 1, &r->half[l], NULL, "level", err)))
-            return rc;
+        if (!(rc = hfs_gles_fbo_new(gl, &r->lev_fbo[l], 1, &r->lev[l], NULL, "level", err)))
+            rc = hfs_gles_fbo_new(gl, &r->half_fbo[l], 1, &r->half[l], NULL, "level", err);
     }
-    return HFS_OK;
+    if (rc) /* nothing half made: the next terrain pass makes them again */
+        hfs_gles_pyramid_build_free(r, gl);
+    return rc;
 }
 
 void hfs_gles_pyramid_build_free(hfs_gles_resources *r, const hfs_gl *gl)
@@ -299,7 +299,14 @@ int hfs_gles_transfer_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_
     for (int i = 0; i < 4; ++i)
         r->transfer[i] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, r->w, r->h, 1, 0);
     r->transfer_bytes = (size_t)4 * r->w * r->h * c->bytes_rgba;
-    return hfs_gles_fbo_new(gl, &r->transfer_fbo, 4, r->transfer, NULL, "env transfer", err);
+    int rc = hfs_gles_fbo_new(gl, &r->transfer_fbo, 4, r->transfer, NULL, "env transfer", err);
+    if (rc) { /* nothing half made: the next frame that needs them tries again */
+        for (int i = 0; i < 4; ++i)
+            hfs_gles_tex_delete(gl, &r->transfer[i]);
+        fbo_delete(gl, &r->transfer_fbo);
+        r->transfer_bytes = 0;
+    }
+    return rc;
 }
 
 int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
@@ -324,8 +331,13 @@ int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs
         for (int i = 0; i < 4; ++i)
             r->venv[i] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->vw, L->vh, 1, 1);
         r->venv_bytes = (size_t)4 * L->vw * L->vh * c->bytes_rgba;
-        if ((rc = hfs_gles_fbo_new(gl, &r->venv_fbo, 4, r->venv, NULL, "visibility", err)))
+        if ((rc = hfs_gles_fbo_new(gl, &r->venv_fbo, 4, r->venv, NULL, "visibility", err))) {
+            for (int i = 0; i < 4; ++i) /* nothing half made: tried again next frame */
+                hfs_gles_tex_delete(gl, &r->venv[i]);
+            fbo_delete(gl, &r->venv_fbo);
+            r->venv_bytes = 0;
             return rc;
+        }
     }
     layers_ensure(r, gl, c, L, n);
     return hfs_gl_check(gl, "backend gles: allocating textures", err);
