@@ -95,3 +95,27 @@ int hfs_parallel_rows(int n_rows, int threads, hfs_row_fn fn, void *ctx,
         progress(progress_user, 1.0);
     return started;
 }
+
+typedef struct range_job {
+    size_t n;
+    hfs_range_fn fn;
+    void *ctx;
+} range_job;
+
+static void range_chunk(void *ctx, int row, int worker)
+{
+    (void)worker;
+    const range_job *j = ctx;
+    const size_t c = (size_t)row;
+    j->fn(j->ctx, j->n * c / HFS_PARALLEL_CHUNKS, j->n * (c + 1) / HFS_PARALLEL_CHUNKS, row);
+}
+
+void hfs_parallel_ranges(size_t n, size_t min_parallel, hfs_range_fn fn, void *ctx)
+{
+    if (n < min_parallel) {
+        fn(ctx, 0, n, 0);
+        return;
+    }
+    range_job j = {n, fn, ctx};
+    hfs_parallel_rows(HFS_PARALLEL_CHUNKS, 0, range_chunk, &j, NULL, NULL);
+}

@@ -9,16 +9,11 @@
 #include <math.h>
 #include <stdint.h>
 
-/* fp16 bit patterns step monotonically in magnitude: the next value up is
- * one pattern further from zero for positives, one nearer for negatives. */
 uint16_t hfs_gles_half_up(double v)
 {
-    uint16_t h = hfs_float_to_half((float)v);
-    if ((double)hfs_half_to_float(h) >= v)
-        return h;
-    if (h == 0x8000u)
-        return 0x0001u; /* -0 up to the least positive */
-    return (h & 0x8000u) ? (uint16_t)(h - 1u) : (uint16_t)(h + 1u);
+    uint16_t h;
+    hfs_half_round_up(&v, 1, &h); /* the upload's own rounding (half_bulk.c) */
+    return h;
 }
 
 float hfs_gles_float_up(double v)
@@ -49,7 +44,7 @@ int hfs_gles_bounds_upload(const hfs_gl *gl, const hfs_gl_caps *c, GLuint tex,
         for (size_t i = 0; i < n; ++i)
             ((float *)buf)[i] = hfs_gles_float_up(atlas[i]);
     else
-        hfs_half_round_up(atlas, n, buf); /* hfs_gles_half_up's, vectorized */
+        hfs_half_round_up(atlas, n, buf);
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
     gl->BindTexture(GL_TEXTURE_2D, tex);
     gl->TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, rb->aw, rb->ah, GL_RED, c->type_upload, buf);

@@ -232,7 +232,7 @@ static void report_timings(hfs_gles *g, double t_start)
 {
     hfs_timings *t = &g->last;
     hfs_gles_timing_report(&g->timing, t);
-    t->texture_bytes = hfs_gles_resources_bytes(&g->r, &g->caps) + g->wedge.bytes +
+    t->texture_bytes = hfs_gles_resources_bytes(&g->r) + g->wedge.bytes +
                        g->env_swath_tex.bytes + g->key_swath_tex.bytes + g->keys_tex.bytes +
                        g->local_tex.bytes + g->albedo.bytes + g->bounce.bytes +
                        g->envmap.bytes;

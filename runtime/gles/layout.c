@@ -50,25 +50,21 @@ int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quali
     return HFS_OK;
 }
 
-/* The fp16 split in chunks over worker threads (a frame's largest piece
- * of host work at 1024²: issue 37).  Each chunk writes its own texels and
- * its own largest error: the same bits for any thread count. */
-#define SPLIT_CHUNKS 64
-#define SPLIT_THREADED 262144 /* texels; below, threads cost more than they save */
+/* The fp16 split, a frame's largest piece of host work at 1024² (issue
+ * 37): on worker threads from 256k texels, each chunk keeping its own
+ * largest error (hfs_parallel_ranges: the same bits for any thread count). */
+#define SPLIT_THREADED 262144
 typedef struct split_job {
     const float *z;
-    size_t n;
     double base, scale;
     uint16_t *rg;
-    double worst[SPLIT_CHUNKS];
+    double worst[HFS_PARALLEL_CHUNKS];
 } split_job;
 
-static void split_chunk(void *ctx, int row, int worker)
+static void split_range(void *ctx, size_t a, size_t b, int chunk)
 {
-    (void)worker;
     split_job *j = ctx;
-    const size_t a = j->n * (size_t)row / SPLIT_CHUNKS, b = j->n * (size_t)(row + 1) / SPLIT_CHUNKS;
-    j->worst[row] = hfs_half_split(j->z + a, b - a, j->base, j->scale, j->rg + 2 * a);
+    j->worst[chunk] = hfs_half_split(j->z + a, b - a, j->base, j->scale, j->rg + 2 * a);
 }
 
 double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int fp32,
@@ -83,12 +79,10 @@ double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int 
         }
         return 0.0;
     }
-    if (n < SPLIT_THREADED)
-        return hfs_half_split(f->z, n, L->base, L->hscale, dst);
-    split_job j = {.z = f->z, .n = n, .base = L->base, .scale = L->hscale, .rg = dst};
-    hfs_parallel_rows(SPLIT_CHUNKS, 0, split_chunk, &j, NULL, NULL);
+    split_job j = {.z = f->z, .base = L->base, .scale = L->hscale, .rg = dst};
+    hfs_parallel_ranges(n, SPLIT_THREADED, split_range, &j);
     double worst = 0.0;
-    for (int c = 0; c < SPLIT_CHUNKS; ++c)
+    for (int c = 0; c < HFS_PARALLEL_CHUNKS; ++c)
         worst = j.worst[c] > worst ? j.worst[c] : worst;
     return worst;
 }

@@ -16,23 +16,19 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The sum in chunks over worker threads at large sizes (as layout.c's
- * split): each chunk writes its own pixels, the same bits for any thread
- * count. */
-#define SUM_CHUNKS 64
-#define SUM_THREADED 262144 /* pixels */
+/* The sum on worker threads from 256k pixels (as layout.c's split:
+ * hfs_parallel_ranges, each chunk writing its own pixels). */
+#define SUM_THREADED 262144
 typedef struct sum_job {
     const uint16_t *hi, *lo;
-    size_t npx;
     double inv;
     float *rgb;
 } sum_job;
 
-static void sum_chunk(void *ctx, int row, int worker)
+static void sum_range(void *ctx, size_t a, size_t b, int chunk)
 {
-    (void)worker;
+    (void)chunk;
     const sum_job *j = ctx;
-    const size_t a = j->npx * (size_t)row / SUM_CHUNKS, b = j->npx * (size_t)(row + 1) / SUM_CHUNKS;
     hfs_half_sum_rgb(j->hi + 4 * a, j->lo + 4 * a, b - a, j->inv, j->rgb + 3 * a);
 }
 
@@ -59,11 +55,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     const double inv = 1.0 / fr->out_scale;
     float *rgb = fr->out->rgb;
     if (th == HFS_GL_READ_HALF && tl == HFS_GL_READ_HALF) {
-        sum_job j = {(const uint16_t *)(void *)px, (const uint16_t *)(void *)lo, npx, inv, rgb};
-        if (npx < SUM_THREADED)
-            hfs_half_sum_rgb(j.hi, j.lo, npx, inv, rgb);
-        else
-            hfs_parallel_rows(SUM_CHUNKS, 0, sum_chunk, &j, NULL, NULL);
+        sum_job j = {(const uint16_t *)(void *)px, (const uint16_t *)(void *)lo, inv, rgb};
+        hfs_parallel_ranges(npx, SUM_THREADED, sum_range, &j);
     } else {
         /* a driver that reads floats (or one target each way): widen what
          * came as halves, then the same sum */

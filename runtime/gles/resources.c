@@ -101,11 +101,17 @@ void hfs_gles_ubo_upload(const hfs_gl *gl, GLuint ubo, const void *data, size_t 
     gl->BindBuffer(GL_UNIFORM_BUFFER, 0);
 }
 
+/* Deletes n textures and the framebuffer drawing into them. */
+static void targets_delete(const hfs_gl *gl, GLuint *tex, int n, GLuint *fbo)
+{
+    for (int i = 0; i < n; ++i)
+        hfs_gles_tex_delete(gl, &tex[i]);
+    fbo_delete(gl, fbo);
+}
+
 static void grid_free(hfs_gles_resources *r, const hfs_gl *gl)
 {
-    for (int i = 0; i < 4; ++i)
-        hfs_gles_tex_delete(gl, &r->venv[i]);
-    fbo_delete(gl, &r->venv_fbo);
+    targets_delete(gl, r->venv, 4, &r->venv_fbo);
     r->venv_bytes = 0;
     hfs_gles_tex_delete(gl, &r->hor);
     r->hor_layers = 0;
@@ -143,9 +149,7 @@ void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
     fbo_delete(gl, &r->far_fbo);
     fbo_delete(gl, &r->keyhz_fbo);
     fbo_delete(gl, &r->localv_fbo);
-    for (int i = 0; i < 4; ++i)
-        hfs_gles_tex_delete(gl, &r->transfer[i]);
-    fbo_delete(gl, &r->transfer_fbo);
+    targets_delete(gl, r->transfer, 4, &r->transfer_fbo);
     hfs_gles_tex_delete(gl, &r->kf);
     fbo_delete(gl, &r->kf_fbo);
     const unsigned gen[5] = {r->terrain_gen, r->grid_gen, r->keyhz_gen, r->localv_gen,
@@ -179,16 +183,14 @@ int hfs_gles_pyramid_build_ensure(hfs_gles_resources *r, const hfs_gl *gl, const
 void hfs_gles_pyramid_build_free(hfs_gles_resources *r, const hfs_gl *gl)
 {
     for (int i = 0; i < HFS_GLES_MAX_LEVELS; ++i) {
-        hfs_gles_tex_delete(gl, &r->lev[i]);
-        fbo_delete(gl, &r->lev_fbo[i]);
-        hfs_gles_tex_delete(gl, &r->half[i]);
-        fbo_delete(gl, &r->half_fbo[i]);
+        targets_delete(gl, &r->lev[i], 1, &r->lev_fbo[i]);
+        targets_delete(gl, &r->half[i], 1, &r->half_fbo[i]);
     }
     r->build_bytes = 0;
 }
 
 /* The pyramid: input, bounds, the layer array and its single- and
- * multi-target framebuffers (the build's own targets: below). */
+ * multi-target framebuffers (the build's own targets: hfs_gles_pyramid_build_ensure). */
 static int pyramid_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                          const hfs_gles_layout *L, hfs_error *err)
 {
@@ -301,9 +303,7 @@ int hfs_gles_transfer_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_
     r->transfer_bytes = (size_t)4 * r->w * r->h * c->bytes_rgba;
     int rc = hfs_gles_fbo_new(gl, &r->transfer_fbo, 4, r->transfer, NULL, "env transfer", err);
     if (rc) { /* nothing half made: the next frame that needs them tries again */
-        for (int i = 0; i < 4; ++i)
-            hfs_gles_tex_delete(gl, &r->transfer[i]);
-        fbo_delete(gl, &r->transfer_fbo);
+        targets_delete(gl, r->transfer, 4, &r->transfer_fbo);
         r->transfer_bytes = 0;
     }
     return rc;
@@ -332,9 +332,7 @@ int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs
             r->venv[i] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->vw, L->vh, 1, 1);
         r->venv_bytes = (size_t)4 * L->vw * L->vh * c->bytes_rgba;
         if ((rc = hfs_gles_fbo_new(gl, &r->venv_fbo, 4, r->venv, NULL, "visibility", err))) {
-            for (int i = 0; i < 4; ++i) /* nothing half made: tried again next frame */
-                hfs_gles_tex_delete(gl, &r->venv[i]);
-            fbo_delete(gl, &r->venv_fbo);
+            targets_delete(gl, r->venv, 4, &r->venv_fbo); /* tried again next frame */
             r->venv_bytes = 0;
             return rc;
         }
@@ -343,9 +341,8 @@ int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs
     return hfs_gl_check(gl, "backend gles: allocating textures", err);
 }
 
-size_t hfs_gles_resources_bytes(const hfs_gles_resources *r, const hfs_gl_caps *c)
+size_t hfs_gles_resources_bytes(const hfs_gles_resources *r)
 {
-    (void)c;
-    return r->bytes + r->build_bytes + r->transfer_bytes + r->venv_bytes + r->hor_bytes + r->far_bytes +
-           r->keyhz_bytes + r->localv_bytes + r->kf_bytes;
+    return r->bytes + r->build_bytes + r->transfer_bytes + r->venv_bytes + r->hor_bytes +
+           r->far_bytes + r->keyhz_bytes + r->localv_bytes + r->kf_bytes;
 }

@@ -81,7 +81,7 @@ int hfs_gles_transfer_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_
                              hfs_error *err);
 /* Deletes everything; the generations move on. */
 void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl);
-size_t hfs_gles_resources_bytes(const hfs_gles_resources *r, const hfs_gl_caps *c);
+size_t hfs_gles_resources_bytes(const hfs_gles_resources *r);
 
 /* ---- helpers ---- */
 GLuint hfs_gles_tex_new(const hfs_gl *gl, GLenum target, GLenum fmt, int w, int h, int layers,
