@@ -137,6 +137,18 @@ uniform highp sampler2D u_bounds;
 uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
 uniform float u_zf;
 uniform float u_gap_from;
+/* After an edit of the heights (runtime/gles/edit_frame.c): u_edit 1 draws
+ * only the texels whose search can end differently and leaves the others
+ * as the last frame left them.  u_edit_box: the changed texels (x0, y0,
+ * x1, y1), inclusive; per layer, how far a read's footprint reaches
+ * (u_edit_reach) and the highest value a read reaching them can take,
+ * before or after (u_edit_top); and the largest of each. */
+uniform int u_edit;
+uniform vec4 u_edit_box;
+uniform float u_edit_reach[HFS_NLAYERS];
+uniform float u_edit_top[HFS_NLAYERS];
+uniform float u_edit_reach_max;
+uniform float u_edit_top_max;
 #endif
 #ifdef HFS_SWATH_TEX
 /* The same data from a texture (too large for a uniform block): vec4 i of
@@ -334,6 +346,66 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
 #endif
 
 #ifdef HFS_FAR_ATLAS
+bool edit_near(vec2 q, float r)
+{
+    return all(greaterThanEqual(q, u_edit_box.xy - r)) && all(lessThanEqual(q, u_edit_box.zw + r));
+}
+
+/* The largest slope from height hz at g along cs of anything within r of
+ * the edit's box as high as top: the slab test's entry (a rise) or exit
+ * (a fall); -1e30 where the ray misses it. */
+float edit_ray_bound(ivec2 g, vec2 cs, float r, float top, float hz)
+{
+    vec2 p = vec2(g);
+    float t0 = 0.0, t1 = 1e9;
+    for (int a = 0; a < 2; ++a) {
+        float lo = u_edit_box[a] - r, hi = u_edit_box[a + 2] + r;
+        if (abs(cs[a]) < 1e-12) {
+            if (p[a] < lo || p[a] > hi)
+                return -1e30;
+        } else {
+            float ta = (lo - p[a]) / cs[a], tb = (hi - p[a]) / cs[a];
+            t0 = max(t0, min(ta, tb));
+            t1 = min(t1, max(ta, tb));
+        }
+    }
+    if (t0 > t1)
+        return -1e30;
+    float dz = (top - hz) * u_zf;
+    return dz / max(dz >= 0.0 ? t0 : t1, 1e-6);
+}
+
+/* Whether the far search from g along cs (horizon_tan from scale `first`,
+ * its refinement, then the gap search) can end differently after the edit
+ * (DESIGN.md "Local edits"): each sample it reads is either clean or, old
+ * and new, below the best the search holds when it gets there - a no-op
+ * (it neither raises the best nor takes the lead: the lead is never more
+ * than the tie below the best) - so the bests of the clean scales met
+ * before a changed sample bound what it must stay below.  The refinement
+ * and the crossings come after every scale. */
+bool far_edit_changes(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], int first)
+{
+    float lb = -1e30; /* the clean scales' best so far */
+    for (int i = first; i >= 0; --i) {
+        vec4 sc = u_scale[i];
+        vec2 o;
+        if (!hfs_scale_offset(g, u_size, sc.x, cs, o))
+            break;
+        int l = int(sc.z);
+        if (edit_near(vec2(g) + o, u_edit_reach[l])) {
+            if ((u_edit_top[l] - hfs_h(hx[l])) * sc.y >= lb - 1e-4 * (1.0 + abs(lb)))
+                return true;
+        } else {
+            lb = max(lb, hfs_scale_slope(u_levels, g, u_size, o, sc, hx[l]));
+        }
+    }
+    float hmin = hfs_h(hx[0]);
+    for (int l = 1; l < HFS_NLAYERS; ++l)
+        hmin = min(hmin, hfs_h(hx[l]));
+    return edit_ray_bound(g, cs, u_edit_reach_max, u_edit_top_max, hmin) >=
+           lb - 1e-4 * (1.0 + abs(lb));
+}
+
 /* Split horizons' far pass: this texel's tile, its receiver, and the
  * occluders of its two sub-directions beyond the u_near near scales, each
  * search starting below any tangent plane (cpu_horizon.h
@@ -347,6 +419,15 @@ void main()
     int j0 = 2 * (tile.y * u_fcols + tile.x);
     vec2 hx[HFS_NLAYERS];
     hfs_receiver_heights(u_levels, g, hx);
+    if (u_edit != 0 && !edit_near(vec2(g), u_edit_reach_max)) {
+        bool changes = false;
+        for (int h = 0; h < 2; ++h)
+            if (j0 + h < HFS_NDIR)
+                changes = changes ||
+                          far_edit_changes(g, SW_DIR(j0 + h).xy, hx, HFS_NLEV - 1 - u_near);
+        if (!changes)
+            discard;
+    }
     int fetches = 1 + HFS_NLAYERS;
     vec4 res = vec4(-3e4, 0.0, -3e4, 0.0);
     for (int h = 0; h < 2; ++h) {

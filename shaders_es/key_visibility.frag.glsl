@@ -47,6 +47,7 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
                    vec3 s, inout vec4 V[4]);
 float hfs_cap_irradiance(float cos_beta, float alpha);
 vec2 hfs_split(float v);
+float hfs_h(vec2 t);
 float hfs_hdiff(vec2 a, vec2 b);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
@@ -89,6 +90,14 @@ uniform float u_edge;                    /* each direction's own ray from u_near
 uniform int u_whole;                     /* 1: u_edge is the field's end and the grid unused */
 uniform highp sampler2D u_bounds;
 uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
+/* After an edit of the heights (runtime/gles/edit_frame.c, edit_region.h):
+ * u_edit 1 draws only the texels the edit can reach and leaves the others
+ * as the last frame left them.  u_edit_box: the changed texels grown by 2,
+ * (x0, y0, x1, y1) inclusive; u_edit_top: their highest normalized height,
+ * before or after. */
+uniform int u_edit;
+uniform vec4 u_edit_box;
+uniform float u_edit_top;
 
 #ifdef HFS_KEYS_TEX
 /* The records from a texture (too large for a uniform block). */
@@ -367,13 +376,66 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
 }
 
 
+/* Whether the ray p + t cs, 0 <= t <= t_max, crosses the edit's box where
+ * an occluder as high as its top (dz above p, texel units) could rise
+ * above slope sl: the slab test's entry and exit, the bound dz / t at the
+ * nearer for a rise, at the farther for a fall. */
+bool edit_ray(vec2 p, vec2 cs, float t_max, float dz, float sl)
+{
+    float t0 = 0.0, t1 = t_max;
+    for (int a = 0; a < 2; ++a) {
+        float lo = a == 0 ? u_edit_box.x : u_edit_box.y, hi = a == 0 ? u_edit_box.z : u_edit_box.w;
+        if (abs(cs[a]) < 1e-12) {
+            if (p[a] < lo || p[a] > hi)
+                return false;
+        } else {
+            float ta = (lo - p[a]) / cs[a], tb = (hi - p[a]) / cs[a];
+            t0 = max(t0, min(ta, tb));
+            t1 = min(t1, max(ta, tb));
+        }
+    }
+    if (t0 > t1)
+        return false;
+    return dz / max(dz >= 0.0 ? t0 : t1, 1e-6) > sl;
+}
+
+/* Whether an edit of the heights can change texel p's factor (issue 38):
+ * p near the changed texels (its normal, its own cell and neighbours), or a
+ * sample of its searches - the near search along u_near_cs, each
+ * direction's ray to u_edge - that reads them and could rise above the
+ * light's lowest slope (where every search starts: a sample below it never
+ * moves the result) less edit_region.h's margin. */
+bool edit_reaches(ivec2 p, vec2 zp)
+{
+    vec2 q = vec2(p);
+    if (all(greaterThanEqual(q, u_edit_box.xy)) && all(lessThanEqual(q, u_edit_box.zw)))
+        return true;
+    int b = u_kb, sw = b + 7, nd = int(KREC(b).x);
+#ifdef HFS_TABLES
+    float sl = -1e30;
+#else
+    float sl = tan(max(KREC(sw).x, -1.5));
+#endif
+    sl -= 1e-3 * (1.0 + abs(sl));
+    float dz = (u_edit_top - hfs_h(zp)) * u_rise;
+    if (u_near_dir == 0 && u_near > 0 &&
+        edit_ray(q, u_near_cs, max(u_near_to, 2.0 * u_reach) + 2.0, dz, sl))
+        return true;
+    for (int j = 0; j < nd; ++j)
+        if (edit_ray(q, KREC(sw + 2 + j).xy, u_edge, dz, sl))
+            return true;
+    return false;
+}
+
 void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy);
+    vec2 zp = texelFetch(u_height, p, 0).xy;
+    if (u_edit != 0 && !edit_reaches(p, zp))
+        discard;
     vec3 n = hfs_normal(texelFetch(u_normals, p, 0));
     vec4 H[4];
     hfs_sh_cosine(n, H);
-    vec2 zp = texelFetch(u_height, p, 0).xy;
     ivec2 nb[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
     for (int k = 0; k < 4; ++k) {
         ivec2 q = p + nb[k];

@@ -11,6 +11,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "gl_require.h"
 #include "hfshade.h"
@@ -57,6 +58,19 @@ static inline const char *gl_test_ran(const hfs_renderer *r, char *buf, size_t n
             used += w > 0 ? (size_t)w : 0;
         }
     return buf;
+}
+
+/* Whether r's last frame recomputed only what an edit of the heights
+ * reaches (issue 38: its terrain step says "heights edited"). */
+static inline int gl_test_edited(const hfs_renderer *r)
+{
+    hfs_frame_report rep;
+    if (hfs_renderer_frame_report(r, &rep))
+        return 0;
+    for (int i = 0; i < rep.n_steps; ++i)
+        if (rep.step[i].ran && !strncmp(rep.step[i].reason, "heights edited", 14))
+            return 1;
+    return 0;
 }
 
 /* The product's renderer (GLES, default context and profile). */

@@ -49,3 +49,31 @@ if(HFS_SANITIZE)
   set_property(TEST test_plan_keys_gles APPEND PROPERTY ENVIRONMENT
                "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
 endif()
+# Local edits (issue 38): after random edits of the heights a kept
+# renderer, which recomputes only what an edit can reach
+# (runtime/gles/edit_frame.h), equals one that recomputes everything, bit
+# for bit, in six scenes; and takes the edit path whenever the range holds.
+# Also under the ES 3.0 minimums (HFS_GL_STRICT_LIMITS=1: smaller draws,
+# blocks from textures) on an ES 3.0 context.
+set(hfs_edit_count 40)
+if(HFS_SANITIZE)
+  set(hfs_edit_count 8)
+endif()
+hfs_add_test(test_gles_edits SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gles_edits.c
+             LIBS hfshade_lib hfs_terrain_gen m LABEL gl TIMEOUT 900
+             ARGS ${hfs_edit_count} 1 72 56)
+add_test(NAME test_gles_edits_strict COMMAND test_gles_edits ${hfs_edit_count} 2 61 47)
+set_tests_properties(test_gles_edits_strict PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 900
+                     ENVIRONMENT "HFS_GL_STRICT_LIMITS=1;MESA_GLES_VERSION_OVERRIDE=3.0")
+if(HFS_SANITIZE)
+  set_property(TEST test_gles_edits test_gles_edits_strict APPEND PROPERTY ENVIRONMENT
+               "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+endif()
+# What a local edit costs (a benchmark, not a test): build/tests/bench_edits
+# [--size N] [--rounds R] (BENCHMARKS.md "Local edits").
+add_executable(bench_edits ${CMAKE_CURRENT_LIST_DIR}/bench_edits.c)
+target_link_libraries(bench_edits PRIVATE hfshade_lib hfs_terrain_gen m)
+target_include_directories(bench_edits PRIVATE ${PROJECT_SOURCE_DIR}/tools)
+# The regions local edits recompute, against brute force (no driver).
+hfs_add_test(test_edit_region SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_edit_region.c
+             LIBS hfs_gles m LABEL unit)

@@ -100,6 +100,12 @@ int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_s
     hfs_gles_set_f1(gl, prog, "u_tie", (float)hfs_horizon_tie_slope(L->hscale, L->zscale, L->dx));
     hfs_gles_set_i1(gl, prog, "u_near", fr->far_near);
     hfs_gles_set_i1(gl, prog, "u_coarsest", 0);
+    /* after an edit, only the receivers whose search can end differently
+     * (the counting twin counts them all) */
+    if (fetch_sum)
+        hfs_gles_set_i1(gl, prog, "u_edit", 0);
+    else
+        hfs_gles_edit_far_uniforms(g, fr, prog);
     if (fr->far_swath_tex)
         rc = hfs_gles_program_texture(gl, prog, "u_swath_tex", GL_TEXTURE_2D,
                                       g->far_swath_tex.tex, err);

@@ -137,6 +137,7 @@ void hfs_gles_destroy(hfs_gles *g)
     hfs_slice_table_free(&g->env_slices);
     hfs_gl_context_destroy(g->ctx);
     free(g->terrain_z);
+    hfs_gles_edit_free(&g->edit);
     free(g->last_img);
     free(g->scratch);
     free(g);
@@ -258,6 +259,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
     memset(&g->last, 0, sizeof g->last);
     g->stats.terrain_recomputed = 0;
     g->stats.env_recomputed = 0;
+    g->stats.edit_share = -1.0;
 
     static const hfs_gles_frame empty;
     hfs_gles_frame fr = empty;

@@ -26,6 +26,7 @@
 #include "bounce_targets.h"
 #include "gl_caps.h"
 #include "gl_context.h"
+#include "edit_frame.h"
 #include "gloss.h"
 #include "key_setup.h"
 #include "lights.h"
@@ -112,6 +113,9 @@ struct hfs_gles_frame {
     /* Embedding (pass_lit_texture.c): the texture wanted instead of the
      * image (out is then NULL), or NULL. */
     const hfs_lit_texture_desc *lit;
+    /* 1: a frame after an edit of the heights: the passes recompute only
+     * the regions g->edit gives them (edit_frame.h). */
+    int edit;
 };
 
 /* The lit texture handed to the application (pass_lit_texture.c), in the
@@ -148,8 +152,11 @@ struct hfs_gles {
     size_t terrain_cap;
     int t_w, t_h, t_k, t_offset, t_fp32;
     double t_dx, t_zscale;
+    double t_base, t_hscale, t_vmax;      /* its normalization (layout.h) */
+    hfs_gles_edit edit;                   /* the last edit's regions (edit_frame.h) */
 
     hfs_gles_plan plan;
+    hfs_gles_plan plan_dry;               /* a copy to ask what a frame would run */
     hfs_field_extent extent;              /* of the kept terrain (lights.h) */
     int extent_valid;
     int key_stride;                       /* horizon layers per key slot */
@@ -202,8 +209,33 @@ void hfs_gles_stage_end(hfs_gles *g, hfs_gles_pass_id p, int stage);
 void hfs_gles_stage_fetches(hfs_gles *g, hfs_gles_pass_id p, int stage, double fetches);
 
 /* Why the terrain pass must run again, or NULL when what it computed still
- * holds (the heights are compared with the kept copy; pass_terrain.c). */
+ * holds (the heights are compared with the kept copy; pass_terrain.c).
+ * hfs_gles_heights_changed when only the heights did. */
 const char *hfs_gles_terrain_change(const hfs_gles *g, const hfs_field *f, const hfs_quality *q);
+extern const char hfs_gles_heights_changed[];
+
+/* Local edits (edit_frame.c, edit_frame.h; issue 38).
+ * begin: g->edit's regions for this frame's changed heights, and the
+ *   planner's reason; NULL when the edit cannot take the path (the
+ *   normalization moved, or out of memory).
+ * draw: the bound program over region (texels; NULL: all) of a w x h target
+ *   whose pixel a is the receiver at texel a step, scissored.
+ * far_before / far_after: the far atlas read before and after its pass, and
+ *   the receivers that changed marked (g->edit.far).
+ * far_uniforms: the far pass's test (u_edit...: env_horizons.frag
+ *   far_edit_changes) set on prog; u_edit 0 when the frame is not an edit.
+ * transfer: the slices' region (made once a frame, added to the shading's).
+ * key: key light q's factor test (u_edit...) set on prog and its draw's
+ *   region, added to the shading's; NULL: the whole light. */
+const char *hfs_gles_edit_begin(hfs_gles *g, hfs_gles_frame *fr);
+void hfs_gles_edit_draw(hfs_gles *g, GLuint fbo, int w, int h, int step, const hfs_tiles *region);
+int hfs_gles_edit_far_before(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err);
+int hfs_gles_edit_far_after(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err);
+void hfs_gles_edit_far_uniforms(hfs_gles *g, const hfs_gles_frame *fr,
+                                const hfs_gles_program *prog);
+const hfs_tiles *hfs_gles_edit_transfer(hfs_gles *g, const hfs_gles_frame *fr);
+const hfs_tiles *hfs_gles_edit_key(hfs_gles *g, const hfs_gles_frame *fr,
+                                   const hfs_gles_program *prog, int q, const hfs_key_near *nr);
 
 /* Split horizons' far grid (env_far_grid.c): its sizes and limits (the
  * env pass's layout), its directions' block (prepare), its draw (the env
@@ -235,11 +267,12 @@ int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gl
 int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, int env_map, GLuint fbo,
                              hfs_error *err);
 /* Draws the bound program over the grid into `outs` layers of array
- * texture tex from layer0 (through fbo); with fetch_sum, adds the counts
- * the HFS_COUNT twin wrote to target 0. */
+ * texture tex from layer0 (through fbo), over region only (texels; NULL:
+ * the grid); with fetch_sum, adds the counts the HFS_COUNT twin wrote to
+ * target 0. */
 int hfs_gles_draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, GLuint tex,
-                              int layer0, int outs, const char *what, double *fetch_sum,
-                              hfs_error *err);
+                              int layer0, int outs, const char *what, const hfs_tiles *region,
+                              double *fetch_sum, hfs_error *err);
 /* Adds the fetch counts a counting twin wrote to target 0 of fbo (vw x vh;
  * _rect: w x h). */
 int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, double *sum,

@@ -142,10 +142,22 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     }
 }
 
+/* Whether a frame whose heights changed by the edit g->edit holds may
+ * recompute only what the edit reaches: nothing else changed and every
+ * product the frame needs is current (the planner, on a copy, would run
+ * nothing), and the kept image and view hold. */
+static int edit_path(hfs_gles *g, const hfs_gles_frame_sig *sig, int kept)
+{
+    g->plan_dry = g->plan;
+    return kept && hfs_gles_plan_frame(&g->plan_dry, sig, NULL) == 0;
+}
+
 /* Plans the frame; 0 when no pass needs to run (the kept image holds). */
 static int plan(hfs_gles *g, hfs_gles_frame *fr)
 {
     const char *terrain_why = hfs_gles_terrain_change(g, fr->f, fr->q);
+    const char *edit_why =
+        terrain_why == hfs_gles_heights_changed ? hfs_gles_edit_begin(g, fr) : NULL;
     if (terrain_why) {
         g->terrain_valid = 0;
         g->extent_valid = 0;
@@ -169,6 +181,10 @@ static int plan(hfs_gles *g, hfs_gles_frame *fr)
      * kept texture holds. */
     const int kept = fr->lit || (g->last_img && g->last_img_cap >= n_img);
     const int view_kept = !fr->cam || hfs_gles_view_copy_kept(g, fr);
+    if (edit_why && edit_path(g, &sig, kept && view_kept)) {
+        fr->edit = 1;
+        terrain_why = edit_why;
+    }
     if (hfs_gles_plan_frame(&g->plan, &sig, terrain_why) == 0 && kept && view_kept &&
         !fr->objects)
         return 0;

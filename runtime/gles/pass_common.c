@@ -97,12 +97,12 @@ int hfs_gles_sum_counts(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, doubl
 }
 
 int hfs_gles_draw_grid_layers(hfs_gles *g, const hfs_gles_layout *L, GLuint fbo, GLuint tex,
-                              int layer0, int outs, const char *what, double *fetch_sum,
-                              hfs_error *err)
+                              int layer0, int outs, const char *what, const hfs_tiles *region,
+                              double *fetch_sum, hfs_error *err)
 {
     int rc = hfs_gles_fbo_layers(&g->gl, fbo, tex, layer0, outs, what, err);
     if (rc)
         return rc;
-    hfs_gles_draw(&g->gl, fbo, L->vw, L->vh);
+    hfs_gles_edit_draw(g, fbo, L->vw, L->vh, L->sub, region);
     return fetch_sum ? hfs_gles_sum_counts(g, L, fbo, fetch_sum, err) : HFS_OK;
 }

@@ -186,7 +186,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_er
     for (int d0 = 0; fr->slice && !rc && d0 < g->env_vis_n; d0 += per) {
         hfs_gles_set_i1(gl, prog, "u_dir0", d0);
         rc = hfs_gles_draw_grid_layers(g, L, g->r.hor_fbo, g->r.hor, d0 / per_layer,
-                                       fr->hor_outs, "environment horizons", fetch_sum, err);
+                                       fr->hor_outs, "environment horizons",
+                                       fr->edit && !count ? &g->edit.env : NULL, fetch_sum, err);
     }
     /* hfs_gles_fbo_layers resets the first 4 attachments only: leave none
      * past them behind for a later frame that fills fewer. */
@@ -206,8 +207,16 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     int rc = draw(g, fr, NULL, err);
     hfs_gles_stage_end(g, HFS_PASS_ENV_HORIZONS, 0);
     if (!rc && fr->split.on) {
+        /* After an edit the far grid is drawn whole (its searches reach the
+         * field's end) and compared with what it held: only the texels
+         * around the receivers that changed take the new pairs. */
         hfs_gles_stage_begin(g, HFS_PASS_ENV_HORIZONS, 1);
-        rc = hfs_gles_env_far_draw(g, fr, NULL, err);
+        if (fr->edit)
+            rc = hfs_gles_edit_far_before(g, fr, err);
+        if (!rc)
+            rc = hfs_gles_env_far_draw(g, fr, NULL, err);
+        if (!rc && fr->edit)
+            rc = hfs_gles_edit_far_after(g, fr, err);
         hfs_gles_stage_end(g, HFS_PASS_ENV_HORIZONS, 1);
     }
     if (!rc)

@@ -40,7 +40,7 @@ int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, int env_map, GLuin
         return rc;
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     hfs_gles_set_i1(gl, prog, "u_near", fr->env_near);
-    hfs_gles_draw(gl, fbo, L->w, L->h);
+    hfs_gles_edit_draw(g, fbo, L->w, L->h, 1, fr->edit ? hfs_gles_edit_transfer(g, fr) : NULL);
     gl->UseProgram(0);
     return hfs_gl_check(gl, env_map ? "backend gles: map occlusion pass"
                                     : "backend gles: slice transfer pass", err);
@@ -68,6 +68,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     int rc0 = hfs_gles_transfer_ensure(&g->r, &g->gl, &g->caps, err);
     if (rc0)
         return rc0;
+    if (fr->edit) /* the region, into the shading's (all off the slice path) */
+        hfs_gles_edit_transfer(g, fr);
     if (fr->slice)
         return run_slices(g, fr, err);
     const hfs_gl *gl = &g->gl;

@@ -204,7 +204,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
                                     (GLsizeiptr)k->swath_size);
             }
             if ((rc = hfs_gles_draw_grid_layers(g, L, g->r.keyhz_fbo, g->r.keyhz,
-                                                k->k.hz_layer + d0, outs, "key",
+                                                k->k.hz_layer + d0, outs, "key", NULL,
                                                 count ? fetch_sum : NULL, err)) ||
                 (rc = hfs_gl_check(gl, "backend gles: key pass", err)))
                 return rc;

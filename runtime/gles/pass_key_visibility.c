@@ -87,7 +87,11 @@ static int draw(hfs_gles *g, hfs_gles_frame *fr, const int *which, double *fetch
         hfs_gles_set_i1(gl, prog, "u_whole", nr.whole);
         if ((rc = hfs_gles_fbo_layers(gl, g->r.kf_fbo, g->r.kf, q, 1, "key factor", err)))
             return rc;
-        hfs_gles_draw(gl, g->r.kf_fbo, L->w, L->h);
+        /* after an edit: the texels it can reach (edit_frame.c) */
+        const hfs_tiles *region = fetch_sum ? NULL : hfs_gles_edit_key(g, fr, prog, q, &nr);
+        if (fetch_sum)
+            hfs_gles_set_i1(gl, prog, "u_edit", 0);
+        hfs_gles_edit_draw(g, g->r.kf_fbo, L->w, L->h, 1, region);
         if (fetch_sum && (rc = hfs_gles_sum_counts_rect(g, g->r.kf_fbo, L->w, L->h, fetch_sum,
                                                         err)))
             return rc;

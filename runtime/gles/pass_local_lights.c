@@ -187,7 +187,7 @@ static int draw_layers(hfs_gles *g, const hfs_gles_frame *fr, int k, int layers,
     if (partial)
         gl->ColorMask(mask & 1, mask & 1, (mask >> 1) & 1, (mask >> 1) & 1);
     rc = hfs_gles_draw_grid_layers(g, L, g->r.localv_fbo, g->r.localv, k, layers, "local-light",
-                                   count ? fetch_sum : NULL, err);
+                                   NULL, count ? fetch_sum : NULL, err);
     if (partial)
         gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     return rc ? rc : hfs_gl_check(gl, "backend gles: local-light pass", err);

@@ -215,7 +215,13 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_SHADE, &v, &prog, err);
     if (rc || (rc = bind_inputs(g, fr, prog, err)))
         return rc;
-    hfs_gles_draw(gl, g->r.out_fbo, L->w, L->h);
+    /* After an edit: the texels any of its inputs changed at; local lights'
+     * ratios are drawn whole (pass_local_lights.c), and so is the shading. */
+    if (fr->edit && local)
+        hfs_tiles_set_all(&g->edit.shade);
+    hfs_gles_edit_draw(g, g->r.out_fbo, L->w, L->h, 1, fr->edit ? &g->edit.shade : NULL);
+    if (fr->edit)
+        g->stats.edit_share = hfs_tiles_share(&g->edit.shade);
     gl->UseProgram(0);
     /* The environment: T (not on the map's occlusion unless glossy), the
      * open-sky table and the map's occlusion (pass_env_map_slices.c). */

@@ -17,6 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+const char hfs_gles_heights_changed[] = "heights changed";
+
 const char *hfs_gles_terrain_change(const hfs_gles *g, const hfs_field *f, const hfs_quality *q)
 {
     const size_t n = (size_t)f->width * (size_t)f->height;
@@ -31,13 +33,15 @@ const char *hfs_gles_terrain_change(const hfs_gles *g, const hfs_field *f, const
     if (g->t_dx != f->dx || g->t_zscale != f->zscale)
         return "dx or zscale changed";
     if (memcmp(g->terrain_z, f->z, n * sizeof *f->z))
-        return "heights changed";
+        return hfs_gles_heights_changed;
     return NULL;
 }
 
 /* Keeps what the pass computed from (0: out of memory, not kept). */
-static int terrain_remember(hfs_gles *g, const hfs_field *f, const hfs_quality *q)
+static int terrain_remember(hfs_gles *g, const hfs_gles_frame *fr)
 {
+    const hfs_field *f = fr->f;
+    const hfs_quality *q = fr->q;
     const size_t n = (size_t)f->width * (size_t)f->height;
     if (n > g->terrain_cap) {
         float *z = realloc(g->terrain_z, n * sizeof *z);
@@ -49,6 +53,7 @@ static int terrain_remember(hfs_gles *g, const hfs_field *f, const hfs_quality *
     memcpy(g->terrain_z, f->z, n * sizeof *f->z);
     g->t_w = f->width, g->t_h = f->height, g->t_k = q->k, g->t_offset = q->offset;
     g->t_fp32 = g->caps.fp32, g->t_dx = f->dx, g->t_zscale = f->zscale;
+    g->t_base = fr->L.base, g->t_hscale = fr->L.hscale, g->t_vmax = fr->L.vmax;
     return 1;
 }
 
@@ -86,7 +91,8 @@ static int upload(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     return rc ? rc : hfs_gl_check(gl, "backend gles: upload", err);
 }
 
-static int normals(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
+static int normals(hfs_gles *g, const hfs_gles_layout *L, const hfs_tiles *region,
+                   hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const hfs_gles_variant v = {.fp32 = g->caps.fp32};
@@ -100,7 +106,7 @@ static int normals(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
     hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
     const double zf = L->hscale * L->zscale / L->dx;
     hfs_gles_set_f1(gl, prog, "u_zfactor", (float)(zf < 1e30 ? zf : 1e30));
-    hfs_gles_draw(gl, g->r.normals_fbo, L->w, L->h);
+    hfs_gles_edit_draw(g, g->r.normals_fbo, L->w, L->h, 1, region);
     hfs_gles_stage_end(g, HFS_PASS_TERRAIN, 1);
     hfs_gles_stage_fetches(g, HFS_PASS_TERRAIN, 1, 4.0 * L->w * L->h);
     return HFS_OK;
@@ -193,12 +199,12 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     (void)which;
     g->terrain_valid = 0;
     int rc;
-    if ((rc = upload(g, fr, err)) || (rc = normals(g, &fr->L, err)) ||
+    if ((rc = upload(g, fr, err)) || (rc = normals(g, &fr->L, fr->edit ? &g->edit.normals : NULL, err)) ||
         (rc = hfs_gles_pyramid_build_ensure(&g->r, &g->gl, &g->caps, &fr->L, err)) ||
         (rc = decimate(g, &fr->L, err)) || (rc = reconstruct(g, &fr->L, err)))
         return rc;
     hfs_gles_pyramid_build_free(&g->r, &g->gl);
-    g->terrain_valid = terrain_remember(g, fr->f, fr->q);
+    g->terrain_valid = terrain_remember(g, fr);
     g->stats.terrain_recomputed = 1;
     return HFS_OK;
 }
