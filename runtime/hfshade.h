@@ -159,7 +159,14 @@ HFS_API const char *hfs_renderer_backend_name(const hfs_renderer *r);
 /* Renders one frame: out must be allocated to the field's size.  Every input
  * is validated first (one-line error, nothing written on failure): the
  * heights too, which is a pass over the whole field, unless the caller
- * names their changes with hfs_renderer_set_field_serial. */
+ * names their changes with hfs_renderer_set_field_serial.
+ * Local edits (GLES): when only some heights changed since the last frame
+ * (in place or at a new pointer, nothing else changed, the field's lowest
+ * and highest heights kept, the change within half the field), the frame
+ * recomputes only what the change can reach (its neighbourhood, and the
+ * texels whose horizons or shadows it can move) and is equal, bit for bit,
+ * to a frame recomputed from scratch; the frame report's terrain step says
+ * "heights edited".  Nothing to call for it. */
 HFS_API int hfs_renderer_render(hfs_renderer *r, const hfs_field *field,
                                 const hfs_lighting *lighting,
                                 const hfs_quality *quality, hfs_image *out,

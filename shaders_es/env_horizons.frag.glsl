@@ -417,9 +417,21 @@ void main()
     ivec2 tile = q / u_fgrid;
     ivec2 g = min((q - tile * u_fgrid) * u_sub, u_size - 1);
     int j0 = 2 * (tile.y * u_fcols + tile.x);
+    /* After an edit: a receiver none of whose rays meets the box grown by
+     * the largest reach reads nothing that changed (before any fetch) */
+    bool edit_far = u_edit != 0 && !edit_near(vec2(g), u_edit_reach_max);
+    if (edit_far) {
+        bool meets = false;
+        for (int h = 0; h < 2; ++h)
+            if (j0 + h < HFS_NDIR)
+                meets = meets ||
+                        edit_ray_bound(g, SW_DIR(j0 + h).xy, u_edit_reach_max, 1.0, 0.0) > -1e30;
+        if (!meets)
+            discard;
+    }
     vec2 hx[HFS_NLAYERS];
     hfs_receiver_heights(u_levels, g, hx);
-    if (u_edit != 0 && !edit_near(vec2(g), u_edit_reach_max)) {
+    if (edit_far) {
         bool changes = false;
         for (int h = 0; h < 2; ++h)
             if (j0 + h < HFS_NDIR)

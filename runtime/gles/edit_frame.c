@@ -15,10 +15,12 @@
 void hfs_gles_edit_free(hfs_gles_edit *e)
 {
     hfs_tiles_free(&e->normals);
+    hfs_tiles_free(&e->levels);
     hfs_tiles_free(&e->env);
     hfs_tiles_free(&e->far);
     hfs_tiles_free(&e->transfer);
     hfs_tiles_free(&e->key);
+    hfs_tiles_free(&e->local);
     hfs_tiles_free(&e->shade);
     free(e->far_old);
     free(e->far_now);
@@ -50,9 +52,11 @@ const char *hfs_gles_edit_begin(hfs_gles *g, hfs_gles_frame *fr)
         e->rects = r;
         e->rects_cap = n;
     }
-    if (hfs_tiles_init(&e->normals, w, h) || hfs_tiles_init(&e->env, w, h) ||
+    if (hfs_tiles_init(&e->normals, w, h) || hfs_tiles_init(&e->levels, w, h) ||
+        hfs_tiles_init(&e->env, w, h) ||
         hfs_tiles_init(&e->far, w, h) || hfs_tiles_init(&e->transfer, w, h) ||
-        hfs_tiles_init(&e->key, w, h) || hfs_tiles_init(&e->shade, w, h))
+        hfs_tiles_init(&e->key, w, h) || hfs_tiles_init(&e->local, w, h) ||
+        hfs_tiles_init(&e->shade, w, h))
         return NULL;
     /* A sample that reads a changed texel also reads its unchanged
      * neighbours, which may stand higher: the top over 3 around (a sample
@@ -254,4 +258,67 @@ void hfs_gles_edit_far_uniforms(hfs_gles *g, const hfs_gles_frame *fr,
     }
     hfs_gles_set_f1(gl, prog, "u_edit_reach_max", (float)reach);
     hfs_gles_set_f1(gl, prog, "u_edit_top_max", (float)top);
+}
+
+const hfs_tiles *hfs_gles_edit_levels(hfs_gles *g, const hfs_gles_frame *fr)
+{
+    hfs_gles_edit *e = &g->edit;
+    double reach = 0.0;
+    for (int l = 0; l + 1 < fr->L.n_layers; ++l)
+        reach = fmax(reach, e->layer_reach[l]);
+    hfs_tiles_clear(&e->levels);
+    hfs_tiles_add_box(&e->levels, hfs_edit_box_grow(e->box, (int)ceil(reach), fr->L.w, fr->L.h));
+    return &e->levels;
+}
+
+/* Distance (texels) from point (x, y) to box b (0 inside). */
+static double box_dist(double x, double y, hfs_edit_box b)
+{
+    const double dx = x < b.x0 ? b.x0 - x : (x > b.x1 ? x - b.x1 : 0.0);
+    const double dy = y < b.y0 ? b.y0 - y : (y > b.y1 ? y - b.y1 : 0.0);
+    return sqrt(dx * dx + dy * dy);
+}
+
+const hfs_tiles *hfs_gles_edit_local(hfs_gles *g, const hfs_gles_frame *fr)
+{
+    hfs_gles_edit *e = &g->edit;
+    const hfs_gles_layout *L = &fr->L;
+    double reach = 0.0;
+    for (int l = 0; l < L->n_layers; ++l)
+        reach = fmax(reach, e->layer_reach[l]);
+    /* a receiver reads its scales within its distance to the light's centre
+     * (local_visibility.frag: no sample beyond min(d, rho + r) <= d),
+     * each sample within its level's reach of what it reads */
+    const hfs_edit_box b = hfs_edit_box_grow(e->box, (int)ceil(reach) + 2, 1 << 30, 1 << 30);
+    /* the receivers' heights lie in the field's range (receivers lifted by
+     * 1e-4 dx) */
+    const double zmin = L->zscale * (L->base - L->hscale), zmax = L->zscale * (L->base + L->hscale);
+    hfs_tiles_clear(&e->local);
+    for (int ty = 0; ty < e->local.th; ++ty)
+        for (int tx = 0; tx < e->local.tw; ++tx) {
+            const int x0 = tx * HFS_EDIT_TILE, y0 = ty * HFS_EDIT_TILE;
+            const int x1 = x0 + HFS_EDIT_TILE - 1, y1 = y0 + HFS_EDIT_TILE - 1;
+            /* the tile's nearest point to the box, in texels */
+            const double dx = b.x1 < x0 ? x0 - b.x1 : (b.x0 > x1 ? b.x0 - x1 : 0.0);
+            const double dy = b.y1 < y0 ? y0 - b.y1 : (b.y0 > y1 ? b.y0 - y1 : 0.0);
+            const double near = sqrt(dx * dx + dy * dy) * L->dx;
+            int mark = 0;
+            for (int i = 0; i < fr->n_local && !mark; ++i) {
+                const hfs_local_light *p = &fr->local[i];
+                const hfs_edit_box at = {(int)floor(p->pos[0] / L->dx), (int)floor(p->pos[1] / L->dx),
+                                         (int)ceil(p->pos[0] / L->dx), (int)ceil(p->pos[1] / L->dx)};
+                /* the tile's farthest texel from the light, horizontally */
+                double far = 0.0;
+                for (int c = 0; c < 4; ++c)
+                    far = fmax(far, box_dist(c & 1 ? x1 : x0, c & 2 ? y1 : y0, at) + 1.0);
+                far *= L->dx;
+                const double up = fmax(fabs(p->pos[2] - zmin), fabs(p->pos[2] - zmax)) + 1e-3 * L->dx;
+                mark = near <= sqrt(far * far + up * up) + p->radius + L->dx;
+            }
+            if (mark)
+                e->local.on[(size_t)ty * e->local.tw + tx] = 1;
+        }
+    /* the shading reads the ratios bilinearly from the receivers around */
+    hfs_tiles_add_grown(&e->shade, &e->local, L->sub + 1);
+    return &e->local;
 }

@@ -28,10 +28,12 @@ typedef struct hfs_gles_edit {
                                 value a sample reading it can take */
     /* Regions, texels (a grid receiver counts at its texel): */
     hfs_tiles normals;       /* normals, and every per-texel read of the heights */
+    hfs_tiles levels;        /* the reconstructed levels: the coarsest one's reach */
     hfs_tiles env;           /* the environment's grid horizons (near part) */
     hfs_tiles far;           /* far-grid receivers that changed, grown by their blend */
     hfs_tiles transfer;      /* the transfer / the map's occlusion */
     hfs_tiles key;           /* one key light's factor (its sweep; the draw's) */
+    hfs_tiles local;         /* the local lights' ratios (grid receivers) */
     hfs_tiles shade;         /* the shading: every region above, and the keys' */
     int transfer_made;       /* transfer filled this frame */
     /* Per reconstructed layer (layout.h), for the far grid's test

@@ -234,6 +234,12 @@ int hfs_gles_edit_far_after(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *er
 void hfs_gles_edit_far_uniforms(hfs_gles *g, const hfs_gles_frame *fr,
                                 const hfs_gles_program *prog);
 const hfs_tiles *hfs_gles_edit_transfer(hfs_gles *g, const hfs_gles_frame *fr);
+/* levels: the reconstructed levels' region (the box grown by the coarsest
+ * level's reach).  local: the local lights' ratios' region (made once a
+ * frame: a receiver reads heights no farther than its distance to a
+ * light's centre), added to the shading's grown by the grid's step. */
+const hfs_tiles *hfs_gles_edit_local(hfs_gles *g, const hfs_gles_frame *fr);
+const hfs_tiles *hfs_gles_edit_levels(hfs_gles *g, const hfs_gles_frame *fr);
 const hfs_tiles *hfs_gles_edit_key(hfs_gles *g, const hfs_gles_frame *fr,
                                    const hfs_gles_program *prog, int q, const hfs_key_near *nr);
 

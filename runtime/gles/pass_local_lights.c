@@ -157,7 +157,8 @@ static int layer_want(int k, int n_local, const int *which)
 
 /* One draw: `layers` layers from k, computing the lights of `mask`. */
 static int draw_layers(hfs_gles *g, const hfs_gles_frame *fr, int k, int layers, int mask,
-                       int partial, int count, double *fetch_sum, hfs_error *err)
+                       int partial, int count, const hfs_tiles *region, double *fetch_sum,
+                       hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
@@ -187,7 +188,7 @@ static int draw_layers(hfs_gles *g, const hfs_gles_frame *fr, int k, int layers,
     if (partial)
         gl->ColorMask(mask & 1, mask & 1, (mask >> 1) & 1, (mask >> 1) & 1);
     rc = hfs_gles_draw_grid_layers(g, L, g->r.localv_fbo, g->r.localv, k, layers, "local-light",
-                                   NULL, count ? fetch_sum : NULL, err);
+                                   region, count ? fetch_sum : NULL, err);
     if (partial)
         gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     return rc ? rc : hfs_gl_check(gl, "backend gles: local-light pass", err);
@@ -203,6 +204,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
 {
     const int n_local = fr->n_local, n_layers = (n_local + 1) / 2;
     int rc = HFS_OK;
+    /* after an edit: the receivers it can reach (edit_frame.c) */
+    const hfs_tiles *region = fr->edit && !count ? hfs_gles_edit_local(g, fr) : NULL;
     for (int k = 0; k < n_layers && !rc;) {
         const int want = layer_want(k, n_local, which);
         const int both = 2 * k + 1 < n_local ? 3 : 1;
@@ -221,7 +224,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
             }
         }
         const int partial = layers == 1 && want != both && !count;
-        rc = draw_layers(g, fr, k, layers, mask, partial, count, fetch_sum, err);
+        rc = draw_layers(g, fr, k, layers, mask, partial, count, region, fetch_sum, err);
         k += layers;
     }
     g->gl.UseProgram(0);

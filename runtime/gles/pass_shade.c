@@ -215,10 +215,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_SHADE, &v, &prog, err);
     if (rc || (rc = bind_inputs(g, fr, prog, err)))
         return rc;
-    /* After an edit: the texels any of its inputs changed at; local lights'
-     * ratios are drawn whole (pass_local_lights.c), and so is the shading. */
-    if (fr->edit && local)
-        hfs_tiles_set_all(&g->edit.shade);
+    /* After an edit: the texels any of its inputs changed at (the local
+     * lights' ratios added theirs when they ran: pass_local_lights.c). */
     hfs_gles_edit_draw(g, g->r.out_fbo, L->w, L->h, 1, fr->edit ? &g->edit.shade : NULL);
     if (fr->edit)
         g->stats.edit_share = hfs_tiles_share(&g->edit.shade);

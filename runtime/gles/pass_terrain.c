@@ -135,8 +135,11 @@ static int decimate(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
     return HFS_OK;
 }
 
-/* The y passes: HFS_GLES_RECON_MRT levels per draw into the layer array. */
-static int reconstruct_y(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
+/* The y passes: HFS_GLES_RECON_MRT levels per draw into the layer array,
+ * over region (NULL: all; after an edit, what the coarsest level's reach
+ * from the changed box covers, edit_frame.c). */
+static int reconstruct_y(hfs_gles *g, const hfs_gles_layout *L, const hfs_tiles *region,
+                         hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const int w = L->w, h = L->h;
@@ -159,12 +162,13 @@ static int reconstruct_y(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
             snprintf(name, sizeof name, "u_vsize[%d]", k);
             hfs_gles_set_i2(gl, prog, name, w, L->lh[l]);
         }
-        hfs_gles_draw(gl, g->r.arr_mrt_fbo[i / HFS_GLES_RECON_MRT], w, h);
+        hfs_gles_edit_draw(g, g->r.arr_mrt_fbo[i / HFS_GLES_RECON_MRT], w, h, 1, region);
     }
     return HFS_OK;
 }
 
-static int reconstruct(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
+static int reconstruct(hfs_gles *g, const hfs_gles_layout *L, const hfs_tiles *region,
+                       hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const int w = L->w, h = L->h;
@@ -186,7 +190,7 @@ static int reconstruct(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
         fetches += 2.0 * w * L->lh[l] + 2.0 * w * h;
     }
     /* ... then the y passes. */
-    if ((rc = reconstruct_y(g, L, err)))
+    if ((rc = reconstruct_y(g, L, region, err)))
         return rc;
     hfs_gles_stage_end(g, HFS_PASS_TERRAIN, 3);
     hfs_gles_stage_fetches(g, HFS_PASS_TERRAIN, 3, fetches);
@@ -201,7 +205,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     int rc;
     if ((rc = upload(g, fr, err)) || (rc = normals(g, &fr->L, fr->edit ? &g->edit.normals : NULL, err)) ||
         (rc = hfs_gles_pyramid_build_ensure(&g->r, &g->gl, &g->caps, &fr->L, err)) ||
-        (rc = decimate(g, &fr->L, err)) || (rc = reconstruct(g, &fr->L, err)))
+        (rc = decimate(g, &fr->L, err)) ||
+        (rc = reconstruct(g, &fr->L, fr->edit ? hfs_gles_edit_levels(g, fr) : NULL, err)))
         return rc;
     hfs_gles_pyramid_build_free(&g->r, &g->gl);
     g->terrain_valid = terrain_remember(g, fr);
