@@ -209,11 +209,12 @@ int main(int argc, char **argv)
     }
     const double mc = hfs_median(cold, rounds), me = hfs_median(edit, rounds),
                  mw = hfs_median(whole, rounds);
-    printf("| %d^2 | %.1f ms | %.1f ms (%.3fx) | %.1f ms (%.3fx) | %d/%d, %d/%d | %s |\n", n, mc, me,
-           me / mc, mw, mw / mc, on_path, rounds, whole_on_path, rounds,
+    printf("| %d^2 | %.1f ms | %.1f ms (%.3fx) | %.1f ms (%.3fx) | %d/%d, %d/%d | %s |\n", n,
+           mc, me, me / mc, mw, mw / mc, on_path, rounds, whole_on_path, rounds,
            B.mismatches ? "NO" : "yes");
     for (int p = 0; passes && p < t.n_passes; ++p)
-        printf("  %-12s %8.2f ms\n", t.pass[p].name, hfs_median(pass_ms[p], rounds < 64 ? rounds : 64));
+        printf("  %-12s %8.2f ms\n", t.pass[p].name,
+               hfs_median(pass_ms[p], rounds < 64 ? rounds : 64));
     printf("(size | cold frame | 32^2 bump edited | every height moved | on the edit path: "
            "bumps, whole | edited == cold, bit for bit)\n");
     hfs_renderer_destroy(B.kept);

@@ -195,7 +195,7 @@ static void world_scene(world *w, const scene *s)
         hfs_local_light *p = &w->l.local[w->l.n_local++];
         p->pos[0] = w->w * 0.3;
         p->pos[1] = w->h * 0.6;
-        p->pos[2] = w->hi + 3.0;
+        p->pos[2] = w->lo + 0.92 * (w->hi - w->lo); /* low: long shadows */
         p->radius = 1.0;
         for (int c = 0; c < 3; ++c)
             p->radiance[c] = 30.0f;

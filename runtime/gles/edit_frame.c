@@ -98,7 +98,8 @@ void hfs_gles_edit_draw(hfs_gles *g, GLuint fbo, int w, int h, int step, const h
         /* the receivers a whose texel a step falls in the rectangle (one
          * more each side: a receiver clamped to the field's last texel) */
         const int x0 = r[i].x / step, y0 = r[i].y / step;
-        int x1 = (r[i].x + r[i].w + step - 1) / step + 1, y1 = (r[i].y + r[i].h + step - 1) / step + 1;
+        int x1 = (r[i].x + r[i].w + step - 1) / step + 1;
+        int y1 = (r[i].y + r[i].h + step - 1) / step + 1;
         x1 = x1 < w ? x1 : w;
         y1 = y1 < h ? y1 : h;
         gl->Scissor(x0, y0, x1 - x0, y1 - y0);
@@ -271,14 +272,6 @@ const hfs_tiles *hfs_gles_edit_levels(hfs_gles *g, const hfs_gles_frame *fr)
     return &e->levels;
 }
 
-/* Distance (texels) from point (x, y) to box b (0 inside). */
-static double box_dist(double x, double y, hfs_edit_box b)
-{
-    const double dx = x < b.x0 ? b.x0 - x : (x > b.x1 ? x - b.x1 : 0.0);
-    const double dy = y < b.y0 ? b.y0 - y : (y > b.y1 ? y - b.y1 : 0.0);
-    return sqrt(dx * dx + dy * dy);
-}
-
 const hfs_tiles *hfs_gles_edit_local(hfs_gles *g, const hfs_gles_frame *fr)
 {
     hfs_gles_edit *e = &g->edit;
@@ -292,7 +285,8 @@ const hfs_tiles *hfs_gles_edit_local(hfs_gles *g, const hfs_gles_frame *fr)
     const hfs_edit_box b = hfs_edit_box_grow(e->box, (int)ceil(reach) + 2, 1 << 30, 1 << 30);
     /* the receivers' heights lie in the field's range (receivers lifted by
      * 1e-4 dx) */
-    const double zmin = L->zscale * (L->base - L->hscale), zmax = L->zscale * (L->base + L->hscale);
+    const double zmin = L->zscale * (L->base - L->hscale);
+    const double zmax = L->zscale * (L->base + L->hscale);
     hfs_tiles_clear(&e->local);
     for (int ty = 0; ty < e->local.th; ++ty)
         for (int tx = 0; tx < e->local.tw; ++tx) {
@@ -305,14 +299,15 @@ const hfs_tiles *hfs_gles_edit_local(hfs_gles *g, const hfs_gles_frame *fr)
             int mark = 0;
             for (int i = 0; i < fr->n_local && !mark; ++i) {
                 const hfs_local_light *p = &fr->local[i];
-                const hfs_edit_box at = {(int)floor(p->pos[0] / L->dx), (int)floor(p->pos[1] / L->dx),
-                                         (int)ceil(p->pos[0] / L->dx), (int)ceil(p->pos[1] / L->dx)};
-                /* the tile's farthest texel from the light, horizontally */
+                /* the tile's farthest corner from the light's centre,
+                 * horizontally, and the most it can stand above or below */
                 double far = 0.0;
                 for (int c = 0; c < 4; ++c)
-                    far = fmax(far, box_dist(c & 1 ? x1 : x0, c & 2 ? y1 : y0, at) + 1.0);
+                    far = fmax(far, hypot((c & 1 ? x1 : x0) - p->pos[0] / L->dx,
+                                          (c & 2 ? y1 : y0) - p->pos[1] / L->dx));
                 far *= L->dx;
-                const double up = fmax(fabs(p->pos[2] - zmin), fabs(p->pos[2] - zmax)) + 1e-3 * L->dx;
+                const double up =
+                    fmax(fabs(p->pos[2] - zmin), fabs(p->pos[2] - zmax)) + 1e-3 * L->dx;
                 mark = near <= sqrt(far * far + up * up) + p->radius + L->dx;
             }
             if (mark)
