@@ -52,7 +52,7 @@ endif()
 # Local edits (issue 38): after random edits of the heights a kept
 # renderer, which recomputes only what an edit can reach
 # (runtime/gles/edit_frame.h), equals one that recomputes everything, bit
-# for bit, in eleven scenes; and takes the edit path whenever the range holds.
+# for bit, in twelve scenes; and takes the edit path whenever the range holds.
 # Also under the ES 3.0 minimums (HFS_GL_STRICT_LIMITS=1: smaller draws,
 # blocks from textures) on an ES 3.0 context.
 set(hfs_edit_count 40)
