@@ -272,6 +272,41 @@ const hfs_tiles *hfs_gles_edit_levels(hfs_gles *g, const hfs_gles_frame *fr)
     return &e->levels;
 }
 
+/* Whether grid receiver (gx, gy) (texels) can read box b (texels, grown by
+ * its samples' reach) for local light p (local_visibility.frag): no sample
+ * beyond its distance to the light's centre (the cut, min(d, rho + r) <=
+ * d; `up` the most the receiver can stand below or above the centre), and
+ * on a partial swath none outside the wedge of half-width asin(r / rho)
+ * about the light's azimuth.  full: the frame takes the full swath
+ * (tables, local_full_swath); a receiver the sphere surrounds does too. */
+static int receiver_reads(const hfs_gles_layout *L, const hfs_local_light *p, double gx,
+                          double gy, hfs_edit_box b, int full, double up)
+{
+    const double lx = p->pos[0] / L->dx, ly = p->pos[1] / L->dx;
+    const double rho = hypot(lx - gx, ly - gy) * L->dx;
+    const double nx = gx < b.x0 ? b.x0 - gx : (gx > b.x1 ? gx - b.x1 : 0.0);
+    const double ny = gy < b.y0 ? b.y0 - gy : (gy > b.y1 ? gy - b.y1 : 0.0);
+    if (hypot(nx, ny) * L->dx > sqrt(rho * rho + up * up) + p->radius + L->dx)
+        return 0;
+    if (nx == 0.0 && ny == 0.0)
+        return 1;
+    if (full || p->radius >= rho - 2.0 * L->dx)
+        return 1;
+    /* the box's angles from the receiver about the light's azimuth: an
+     * interval wider than pi wraps through the back (the box is behind) */
+    const double phi = atan2(ly - gy, lx - gx);
+    const double half = asin(p->radius / (rho - L->dx)) + 0.02;
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (int c = 0; c < 4; ++c) {
+        const double a =
+            remainder(atan2((c & 2 ? b.y1 : b.y0) - gy, (c & 1 ? b.x1 : b.x0) - gx) - phi,
+                      2.0 * 3.14159265358979323846);
+        lo = fmin(lo, a);
+        hi = fmax(hi, a);
+    }
+    return hi - lo <= 3.14159265358979323846 && hi >= -half && lo <= half;
+}
+
 const hfs_tiles *hfs_gles_edit_local(hfs_gles *g, const hfs_gles_frame *fr)
 {
     hfs_gles_edit *e = &g->edit;
@@ -279,40 +314,27 @@ const hfs_tiles *hfs_gles_edit_local(hfs_gles *g, const hfs_gles_frame *fr)
     double reach = 0.0;
     for (int l = 0; l < L->n_layers; ++l)
         reach = fmax(reach, e->layer_reach[l]);
-    /* a receiver reads its scales within its distance to the light's centre
-     * (local_visibility.frag: no sample beyond min(d, rho + r) <= d),
-     * each sample within its level's reach of what it reads */
+    /* each sample within its level's reach of what it reads */
     const hfs_edit_box b = hfs_edit_box_grow(e->box, (int)ceil(reach) + 2, 1 << 30, 1 << 30);
-    /* the receivers' heights lie in the field's range (receivers lifted by
-     * 1e-4 dx) */
+    /* the receivers' heights lie in the field's range (lifted by 1e-4 dx) */
     const double zmin = L->zscale * (L->base - L->hscale);
     const double zmax = L->zscale * (L->base + L->hscale);
+    const int full = fr->tables || fr->q->local_full_swath;
     hfs_tiles_clear(&e->local);
-    for (int ty = 0; ty < e->local.th; ++ty)
-        for (int tx = 0; tx < e->local.tw; ++tx) {
-            const int x0 = tx * HFS_EDIT_TILE, y0 = ty * HFS_EDIT_TILE;
-            const int x1 = x0 + HFS_EDIT_TILE - 1, y1 = y0 + HFS_EDIT_TILE - 1;
-            /* the tile's nearest point to the box, in texels */
-            const double dx = b.x1 < x0 ? x0 - b.x1 : (b.x0 > x1 ? b.x0 - x1 : 0.0);
-            const double dy = b.y1 < y0 ? y0 - b.y1 : (b.y0 > y1 ? b.y0 - y1 : 0.0);
-            const double near = sqrt(dx * dx + dy * dy) * L->dx;
-            int mark = 0;
-            for (int i = 0; i < fr->n_local && !mark; ++i) {
+    for (int a = 0; a < L->vh; ++a) {
+        const int gy = a * L->sub < L->h - 1 ? a * L->sub : L->h - 1;
+        for (int c = 0; c < L->vw; ++c) {
+            const int gx = c * L->sub < L->w - 1 ? c * L->sub : L->w - 1;
+            unsigned char *on =
+                &e->local.on[(size_t)(gy / HFS_EDIT_TILE) * e->local.tw + gx / HFS_EDIT_TILE];
+            for (int i = 0; i < fr->n_local && !*on; ++i) {
                 const hfs_local_light *p = &fr->local[i];
-                /* the tile's farthest corner from the light's centre,
-                 * horizontally, and the most it can stand above or below */
-                double far = 0.0;
-                for (int c = 0; c < 4; ++c)
-                    far = fmax(far, hypot((c & 1 ? x1 : x0) - p->pos[0] / L->dx,
-                                          (c & 2 ? y1 : y0) - p->pos[1] / L->dx));
-                far *= L->dx;
                 const double up =
                     fmax(fabs(p->pos[2] - zmin), fabs(p->pos[2] - zmax)) + 1e-3 * L->dx;
-                mark = near <= sqrt(far * far + up * up) + p->radius + L->dx;
+                *on = (unsigned char)receiver_reads(L, p, gx, gy, b, full, up);
             }
-            if (mark)
-                e->local.on[(size_t)ty * e->local.tw + tx] = 1;
         }
+    }
     /* the shading reads the ratios bilinearly from the receivers around */
     hfs_tiles_add_grown(&e->shade, &e->local, L->sub + 1);
     return &e->local;
