@@ -14,8 +14,10 @@
  * share of edits that took the edit path (the frame report's "heights
  * edited") and whether every frame matched.
  *
- *   bench_edits [--size N] [--rounds R] [--seed S] [--passes 1]
- *               (defaults 512, 5, 1, 0)
+ *   bench_edits [--size N] [--rounds R] [--seed S] [--passes 1] [--local 1]
+ *               (defaults 512, 5, 1, 0, 0)
+ * --local 1 adds a local light (radius 2, 20 above the field's highest
+ * point, over (0.3, 0.6) of the field): its ratios are redrawn per edit too.
  * --passes 1 also prints the edited frames' median time per pass (glFinish +
  * clock: hfs_renderer_set_timing_finish), and the frames take a little
  * longer for it.
@@ -142,7 +144,7 @@ static void check(bench *B)
 
 int main(int argc, char **argv)
 {
-    int n = 512, rounds = 5, passes = 0;
+    int n = 512, rounds = 5, passes = 0, local = 0;
     unsigned seed = 1;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!strcmp(argv[i], "--size"))
@@ -153,6 +155,8 @@ int main(int argc, char **argv)
             seed = (unsigned)atoi(argv[i + 1]);
         else if (!strcmp(argv[i], "--passes"))
             passes = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "--local"))
+            local = atoi(argv[i + 1]);
     }
     if (n < 64 || n > 8192 || rounds < 1 || rounds > 1000 || argc % 2 == 0) {
         fprintf(stderr, "usage: bench_edits [--size N 64..8192] [--rounds R] [--seed S]\n");
@@ -178,6 +182,15 @@ int main(int argc, char **argv)
     k->alpha = 1.0 * PI / 180.0;
     for (int c = 0; c < 3; ++c)
         k->radiance[c] = 1500.0f;
+    if (local) {
+        hfs_local_light *p = &B.l.local[B.l.n_local++];
+        p->pos[0] = 0.3 * (n - 1);
+        p->pos[1] = 0.6 * (n - 1);
+        p->pos[2] = B.hi + 20.0;
+        p->radius = 2.0;
+        for (int c = 0; c < 3; ++c)
+            p->radiance[c] = 300.0f;
+    }
     hfs_quality_defaults(&B.q);
     B.kept = gl_test_gles();
     B.fresh = gl_test_gles();
