@@ -88,6 +88,7 @@ vec3 hfs_normal(vec4 t);
 ivec2 hfs_receiver(ivec2 size, int sub);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
+bool hfs_ray_box(vec2 p, vec2 cs, vec4 box, float t_max, out vec2 t);
 float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
 bool hfs_scale_takes_over(float sl, float ref, float tie);
 float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs, vec4 sc,
@@ -348,7 +349,8 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
 #ifdef HFS_FAR_ATLAS
 bool edit_near(vec2 q, float r)
 {
-    return all(greaterThanEqual(q, u_edit_box.xy - r)) && all(lessThanEqual(q, u_edit_box.zw + r));
+    return all(greaterThanEqual(q, u_edit_box.xy - r)) &&
+           all(lessThanEqual(q, u_edit_box.zw + r));
 }
 
 /* The largest slope from height hz at g along cs of anything within r of
@@ -356,23 +358,11 @@ bool edit_near(vec2 q, float r)
  * (a fall); -1e30 where the ray misses it. */
 float edit_ray_bound(ivec2 g, vec2 cs, float r, float top, float hz)
 {
-    vec2 p = vec2(g);
-    float t0 = 0.0, t1 = 1e9;
-    for (int a = 0; a < 2; ++a) {
-        float lo = u_edit_box[a] - r, hi = u_edit_box[a + 2] + r;
-        if (abs(cs[a]) < 1e-12) {
-            if (p[a] < lo || p[a] > hi)
-                return -1e30;
-        } else {
-            float ta = (lo - p[a]) / cs[a], tb = (hi - p[a]) / cs[a];
-            t0 = max(t0, min(ta, tb));
-            t1 = min(t1, max(ta, tb));
-        }
-    }
-    if (t0 > t1)
+    vec2 t;
+    if (!hfs_ray_box(vec2(g), cs, u_edit_box + vec4(-r, -r, r, r), 1e9, t))
         return -1e30;
     float dz = (top - hz) * u_zf;
-    return dz / max(dz >= 0.0 ? t0 : t1, 1e-6);
+    return dz / max(dz >= 0.0 ? t.x : t.y, 1e-6);
 }
 
 /* Whether the far search from g along cs (horizon_tan from scale `first`,

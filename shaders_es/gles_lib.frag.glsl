@@ -392,6 +392,26 @@ float hfs_floor(vec3 n, vec2 cs)
     return atan(-(n.x * cs.x + n.y * cs.y), n.z);
 }
 
+/* Where the ray p + t cs, 0 <= t <= t_max, crosses the box (x0, y0, x1,
+ * y1) (the slab test): t.x its entry, t.y its exit; false when it misses.
+ * For the edits' tests (runtime/gles/edit_frame.c). */
+bool hfs_ray_box(vec2 p, vec2 cs, vec4 box, float t_max, out vec2 t)
+{
+    t = vec2(0.0, t_max);
+    for (int a = 0; a < 2; ++a) {
+        float lo = box[a], hi = box[a + 2];
+        if (abs(cs[a]) < 1e-12) {
+            if (p[a] < lo || p[a] > hi)
+                return false;
+        } else {
+            float ta = (lo - p[a]) / cs[a], tb = (hi - p[a]) / cs[a];
+            t.x = max(t.x, min(ta, tb));
+            t.y = min(t.y, max(ta, tb));
+        }
+    }
+    return t.x <= t.y;
+}
+
 /* Texel offset o = snap(d * cs) of a scale sample from receiver g; false
  * when it falls off the size grid (a fractional offset also needs p + 1). */
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o)

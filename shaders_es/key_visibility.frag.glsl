@@ -49,6 +49,7 @@ float hfs_cap_irradiance(float cos_beta, float alpha);
 vec2 hfs_split(float v);
 float hfs_h(vec2 t);
 float hfs_hdiff(vec2 a, vec2 b);
+bool hfs_ray_box(vec2 p, vec2 cs, vec4 box, float t_max, out vec2 t);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
@@ -382,21 +383,8 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
  * nearer for a rise, at the farther for a fall. */
 bool edit_ray(vec2 p, vec2 cs, float t_max, float dz, float sl)
 {
-    float t0 = 0.0, t1 = t_max;
-    for (int a = 0; a < 2; ++a) {
-        float lo = a == 0 ? u_edit_box.x : u_edit_box.y, hi = a == 0 ? u_edit_box.z : u_edit_box.w;
-        if (abs(cs[a]) < 1e-12) {
-            if (p[a] < lo || p[a] > hi)
-                return false;
-        } else {
-            float ta = (lo - p[a]) / cs[a], tb = (hi - p[a]) / cs[a];
-            t0 = max(t0, min(ta, tb));
-            t1 = min(t1, max(ta, tb));
-        }
-    }
-    if (t0 > t1)
-        return false;
-    return dz / max(dz >= 0.0 ? t0 : t1, 1e-6) > sl;
+    vec2 t;
+    return hfs_ray_box(p, cs, u_edit_box, t_max, t) && dz / max(dz >= 0.0 ? t.x : t.y, 1e-6) > sl;
 }
 
 /* Whether an edit of the heights can change texel p's factor (issue 38):

@@ -95,9 +95,6 @@ typedef struct hfs_gles_stats {
                                   classification differs from the CPU's       */
     int terrain_recomputed;    /* pyramid/normals ran this frame              */
     int env_recomputed;        /* env pass ran this frame                     */
-    double edit_share;         /* after an edit of the heights, the share of
-                                  texels the shading recomputed; -1: a frame
-                                  that was not one (runtime/gles/edit_frame.h) */
     char profile[16];
     int fp32;
 } hfs_gles_stats;

@@ -28,7 +28,7 @@ void hfs_gles_edit_free(hfs_gles_edit *e)
     memset(e, 0, sizeof *e);
 }
 
-const char *hfs_gles_edit_begin(hfs_gles *g, hfs_gles_frame *fr)
+const char *hfs_gles_edit_begin(hfs_gles *g, const hfs_gles_frame *fr)
 {
     hfs_gles_edit *e = &g->edit;
     const hfs_gles_layout *L = &fr->L;
@@ -43,12 +43,22 @@ const char *hfs_gles_edit_begin(hfs_gles *g, hfs_gles_frame *fr)
     if ((double)(e->box.x1 - e->box.x0 + 1) * (e->box.y1 - e->box.y0 + 1) >
         HFS_EDIT_MAX_SHARE * w * h)
         return NULL;
+    snprintf(e->why, sizeof e->why, "heights edited: %dx%d texels at (%d, %d)",
+             e->box.x1 - e->box.x0 + 1, e->box.y1 - e->box.y0 + 1, e->box.x0, e->box.y0);
+    return e->why;
+}
+
+int hfs_gles_edit_regions(hfs_gles *g, const hfs_gles_frame *fr)
+{
+    hfs_gles_edit *e = &g->edit;
+    const hfs_gles_layout *L = &fr->L;
+    const int w = L->w, h = L->h;
     const size_t n = (size_t)((w + HFS_EDIT_TILE - 1) / HFS_EDIT_TILE) *
                      ((h + HFS_EDIT_TILE - 1) / HFS_EDIT_TILE);
     if (n > e->rects_cap) {
         hfs_edit_rect *r = realloc(e->rects, n * sizeof *r);
         if (!r)
-            return NULL;
+            return -1;
         e->rects = r;
         e->rects_cap = n;
     }
@@ -57,7 +67,7 @@ const char *hfs_gles_edit_begin(hfs_gles *g, hfs_gles_frame *fr)
         hfs_tiles_init(&e->far, w, h) || hfs_tiles_init(&e->transfer, w, h) ||
         hfs_tiles_init(&e->key, w, h) || hfs_tiles_init(&e->local, w, h) ||
         hfs_tiles_init(&e->shade, w, h))
-        return NULL;
+        return -1;
     /* A sample that reads a changed texel also reads its unchanged
      * neighbours, which may stand higher: the top over 3 around (a sample
      * within 2 of the box, key_visibility.frag, reads texels within 1 of
@@ -79,9 +89,7 @@ const char *hfs_gles_edit_begin(hfs_gles *g, hfs_gles_frame *fr)
     else
         hfs_tiles_set_all(&e->env);
     hfs_tiles_add_grown(&e->shade, &e->normals, 0);
-    snprintf(e->why, sizeof e->why, "heights edited: %dx%d texels at (%d, %d)",
-             e->box.x1 - e->box.x0 + 1, e->box.y1 - e->box.y0 + 1, e->box.x0, e->box.y0);
-    return e->why;
+    return 0;
 }
 
 void hfs_gles_edit_draw(hfs_gles *g, GLuint fbo, int w, int h, int step, const hfs_tiles *region)

@@ -134,21 +134,6 @@ int hfs_tiles_any(const hfs_tiles *t)
     return 0;
 }
 
-double hfs_tiles_share(const hfs_tiles *t)
-{
-    if (t->all)
-        return 1.0;
-    double n = 0.0;
-    for (int ty = 0; ty < t->th; ++ty)
-        for (int tx = 0; tx < t->tw; ++tx)
-            if (t->on[(size_t)ty * t->tw + tx]) {
-                const int x1 = (tx + 1) * HFS_EDIT_TILE, y1 = (ty + 1) * HFS_EDIT_TILE;
-                n += (double)((x1 < t->w ? x1 : t->w) - tx * HFS_EDIT_TILE) *
-                     ((y1 < t->h ? y1 : t->h) - ty * HFS_EDIT_TILE);
-            }
-    return n / ((double)t->w * t->h);
-}
-
 int hfs_tiles_rects(const hfs_tiles *t, hfs_edit_rect *out)
 {
     if (t->all) {

@@ -74,8 +74,6 @@ void hfs_tiles_add_box(hfs_tiles *t, hfs_edit_box b);
 void hfs_tiles_add_grown(hfs_tiles *dst, const hfs_tiles *src, int r);
 /* Whether any tile is marked (all counts). */
 int hfs_tiles_any(const hfs_tiles *t);
-/* The marked texels' share of the field, in [0, 1]. */
-double hfs_tiles_share(const hfs_tiles *t);
 /* The marked tiles as rectangles in texels (runs along a row, merged with
  * the same run in the rows below), clipped to the field; at most
  * tw * th of them.  Returns how many it wrote to out. */

@@ -259,7 +259,6 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
     memset(&g->last, 0, sizeof g->last);
     g->stats.terrain_recomputed = 0;
     g->stats.env_recomputed = 0;
-    g->stats.edit_share = -1.0;
 
     static const hfs_gles_frame empty;
     hfs_gles_frame fr = empty;

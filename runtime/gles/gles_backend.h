@@ -215,9 +215,11 @@ const char *hfs_gles_terrain_change(const hfs_gles *g, const hfs_field *f, const
 extern const char hfs_gles_heights_changed[];
 
 /* Local edits (edit_frame.c, edit_frame.h; issue 38).
- * begin: g->edit's regions for this frame's changed heights, and the
+ * begin: the box of this frame's changed heights (g->edit.box) and the
  *   planner's reason; NULL when the edit cannot take the path (the
- *   normalization moved, or out of memory).
+ *   normalization moved, the change covers most of the field).
+ * regions: g->edit's regions for that box, once the frame takes the path
+ *   (0; -1 out of memory: the frame is cold).
  * draw: the bound program over region (texels; NULL: all) of a w x h target
  *   whose pixel a is the receiver at texel a step, scissored.
  * far_before / far_after: the far atlas read before and after its pass, and
@@ -227,7 +229,8 @@ extern const char hfs_gles_heights_changed[];
  * transfer: the slices' region (made once a frame, added to the shading's).
  * key: key light q's factor test (u_edit...) set on prog and its draw's
  *   region, added to the shading's; NULL: the whole light. */
-const char *hfs_gles_edit_begin(hfs_gles *g, hfs_gles_frame *fr);
+const char *hfs_gles_edit_begin(hfs_gles *g, const hfs_gles_frame *fr);
+int hfs_gles_edit_regions(hfs_gles *g, const hfs_gles_frame *fr);
 void hfs_gles_edit_draw(hfs_gles *g, GLuint fbo, int w, int h, int step, const hfs_tiles *region);
 int hfs_gles_edit_far_before(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err);
 int hfs_gles_edit_far_after(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err);

@@ -181,7 +181,7 @@ static int plan(hfs_gles *g, hfs_gles_frame *fr)
      * kept texture holds. */
     const int kept = fr->lit || (g->last_img && g->last_img_cap >= n_img);
     const int view_kept = !fr->cam || hfs_gles_view_copy_kept(g, fr);
-    if (edit_why && edit_path(g, &sig, kept && view_kept)) {
+    if (edit_why && edit_path(g, &sig, kept && view_kept) && !hfs_gles_edit_regions(g, fr)) {
         fr->edit = 1;
         terrain_why = edit_why;
     }

@@ -218,8 +218,6 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     /* After an edit: the texels any of its inputs changed at (the local
      * lights' ratios added theirs when they ran: pass_local_lights.c). */
     hfs_gles_edit_draw(g, g->r.out_fbo, L->w, L->h, 1, fr->edit ? &g->edit.shade : NULL);
-    if (fr->edit)
-        g->stats.edit_share = hfs_tiles_share(&g->edit.shade);
     gl->UseProgram(0);
     /* The environment: T (not on the map's occlusion unless glossy), the
      * open-sky table and the map's occlusion (pass_env_map_slices.c). */
