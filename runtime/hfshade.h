@@ -342,6 +342,47 @@ HFS_API int hfs_renderer_render_texture(hfs_renderer *r, const hfs_field *field,
                                         const hfs_lit_texture_desc *how, hfs_lit_texture *out,
                                         hfs_error *err);
 
+/* ---- horizons: the rasters terrain analysts use (issue 39) ---------------- */
+
+/* What hfs_renderer_horizons searches: n_azimuths directions (radians,
+ * SPEC's azimuth phi, from +x towards +y; for a north-up DEM +x is east
+ * and +y south, so phi runs clockwise from east), each up to `radius`
+ * world units of horizontal distance (0: to the field's edge). */
+#define HFS_MAX_HORIZON_AZIMUTHS 1024
+typedef struct hfs_horizon_desc {
+    int n_azimuths;          /* 1..HFS_MAX_HORIZON_AZIMUTHS                  */
+    const double *azimuth;   /* n_azimuths finite angles, radians            */
+    double radius;           /* world units, >= 0 (0: the whole field)       */
+} hfs_horizon_desc;
+
+/* The value of a direction whose ray meets no terrain within the radius
+ * (a texel on the field's border looking outwards): -pi/2. */
+#define HFS_HORIZON_NONE (-1.5707963267948966f)
+
+/* Horizon elevation angles of every grid point: out[(a H + j) W + i] (n_azimuths
+ * x H x W floats, the caller's) is, in radians, the elevation above the
+ * horizontal plane of the highest terrain seen from grid point (i, j)'s
+ * own surface point (x = i dx, y = j dx, z = zscale h, no lift) along
+ * azimuth a, over horizontal distances t in (0, radius]:
+ *     atan(max_t (zscale h(p(t)) - zscale h(i, j)) / t),
+ * signed (negative where all the terrain in reach lies below the texel:
+ * a peak's), HFS_HORIZON_NONE where the ray meets none.  SPEC's GIS
+ * definitions (sky-view factor, openness) are built on these.
+ *   - truth: the exact supremum over SPEC's bilinear surface (each crossed
+ *     cell in closed form; double precision);
+ *   - CPU reference and GLES: the gap search of the key lights
+ *     (runtime/core/ray_bound.h): the exact maximum over the ray's
+ *     crossings of grid lines, where the bilinear surface is linear; GLES
+ *     on the fp16 (hi, lo) heights, its angles returned as fp16 hi + lo.
+ *     A cell's interior can rise above its crossings by a twist term: the
+ *     error this leaves is measured in BENCHMARKS.md "GIS rasters".
+ * quality: NULL or filled by hfs_quality_defaults; only precision (GLES)
+ * and threads (CPU, truth) are read.  Errors (one line): a bad desc, a
+ * field over the backend's texture limit (GLES: the limit named). */
+HFS_API int hfs_renderer_horizons(hfs_renderer *r, const hfs_field *field,
+                                  const hfs_quality *quality, const hfs_horizon_desc *desc,
+                                  float *out, hfs_error *err);
+
 /* ---- points above the field ------------------------------------------------- */
 
 /* Key-light visibility of n points (issue 19: markers, pins, an

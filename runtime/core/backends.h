@@ -30,6 +30,15 @@ int hfs_truth_query_points(const hfs_field *f, const hfs_lighting *l, const hfs_
 int hfs_cpu_shadow_height_map(const hfs_field *f, const hfs_key_light *k, const hfs_quality *q,
                               int layer, float *out, hfs_error *err);
 
+/* The GIS horizons of every grid point (hfs_renderer_horizons; desc
+ * checked there): the CPU reference's gap search (cpu_horizons.c), the
+ * truth's exact supremum (truth_horizons.c), the GLES pass
+ * (runtime/gles/horizons.c). */
+int hfs_cpu_horizons(const hfs_field *f, const hfs_quality *q, const hfs_horizon_desc *d,
+                     float *out, hfs_error *err);
+int hfs_truth_horizons(const hfs_field *f, const hfs_quality *q, const hfs_horizon_desc *d,
+                       float *out, hfs_error *err);
+
 /* Ground truth (truth_*.c): brute force per SPEC. */
 int hfs_truth_render(const hfs_field *f, const hfs_lighting *l,
                      const hfs_quality *q, hfs_image *out,
@@ -77,6 +86,8 @@ int hfs_gles_render_view(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
 int hfs_gles_query_points(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                           const hfs_quality *q, const double *xyz, int n, float *vis,
                           hfs_error *err);
+int hfs_gles_horizons(hfs_gles *g, const hfs_field *f, const hfs_quality *q,
+                      const hfs_horizon_desc *d, float *out, hfs_error *err);
 /* One layer of key light k's shadow height map into out (W*H, world z). */
 int hfs_gles_shadow_height_map(hfs_gles *g, const hfs_field *f, const hfs_key_light *k,
                                const hfs_quality *q, int layer, float *out, hfs_error *err);

@@ -83,6 +83,13 @@ void hfs_dir(double phi, double e, double s[3])
     s[2] = sin(e);
 }
 
+void hfs_horizon_dir(double phi, double *c, double *s)
+{
+    *c = cos(phi), *s = sin(phi);
+    *c = fabs(*c) < 1e-12 ? 0.0 : *c;
+    *s = fabs(*s) < 1e-12 ? 0.0 : *s;
+}
+
 void hfs_field_range(const hfs_field *f, double *lo, double *hi)
 {
     /* Four running extremes instead of one: a frame's scan at 1024² was a

@@ -55,4 +55,10 @@ void hfs_field_range(const hfs_field *f, double *lo, double *hi);
 /* Direction s(phi, e) = (cos phi cos e, sin phi cos e, sin e). */
 void hfs_dir(double phi, double e, double s[3]);
 
+/* The horizontal direction (cos phi, sin phi) of a GIS horizon
+ * (hfs_renderer_horizons), a component under 1e-12 made 0: sin(pi) is
+ * 1.2e-16, and a ray from the field's last row at that tilt leaves the grid
+ * at once, where the user asked for the row itself. */
+void hfs_horizon_dir(double phi, double *c, double *s);
+
 #endif /* HFS_FIELD_GEOM_H */

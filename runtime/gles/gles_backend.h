@@ -261,13 +261,23 @@ int hfs_gles_bind_env_far(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_
  * (pass_env_horizons.c uploads it). */
 int hfs_gles_bind_env_swath(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_program *prog,
                             hfs_error *err);
+/* A call outside the frame (point queries, horizons): the context made
+ * current, the profile a frame at q's precision would use, the layout (its
+ * normalization), and the field checked against the texture limit (one
+ * line naming `what`). */
+int hfs_gles_begin_outside(hfs_gles *g, const hfs_field *f, const hfs_quality *q,
+                           hfs_gles_layout *L, const char *what, hfs_error *err);
 /* Binds the textures every grid pass reads (levels, normals) and the
  * per-scale constants, and sets the grid uniforms. */
 int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
                               const hfs_gles_layout *L, hfs_error *err);
-/* Binds the gap search's heights and bounds (u_height, u_bounds, u_rb_at;
- * bounds_texture.h) and sets its slope factor u_zf and start u_gap_from
- * (texels). */
+/* Binds the gap search's heights and bounds textures (u_height, u_bounds;
+ * bounds_texture.h) and sets its atlas offsets u_rb_at and slope factor
+ * u_zf: for a program outside the frame (horizons.c) as for the frame's. */
+int hfs_gles_bind_ray(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_gles_layout *L,
+                      GLuint heights, GLuint bounds, hfs_error *err);
+/* The same with the frame's heights and bounds (g->r), and the search's
+ * start u_gap_from (texels). */
 int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
                          float gap_from, hfs_error *err);
 /* env_slices.frag over the field into fbo: the transfer's occluded part

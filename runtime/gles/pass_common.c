@@ -43,6 +43,18 @@ void hfs_gles_stage_fetches(hfs_gles *g, hfs_gles_pass_id p, int stage, double f
     g->timing.fetch[g->stage_slot[p] + stage] += fetches;
 }
 
+int hfs_gles_begin_outside(hfs_gles *g, const hfs_field *f, const hfs_quality *q,
+                           hfs_gles_layout *L, const char *what, hfs_error *err)
+{
+    int rc = hfs_gl_context_make_current(g->ctx, err);
+    if (rc || (rc = hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL,
+                                       q->precision == HFS_PRECISION_FP32, g->strict_limits,
+                                       &g->caps, err)) ||
+        (rc = hfs_gles_layout_init(L, f, q, err)))
+        return rc;
+    return hfs_gl_caps_check_texture(&g->caps, L->w, L->h, 1, what, err);
+}
+
 int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
                               const hfs_gles_layout *L, hfs_error *err)
 {
@@ -57,13 +69,12 @@ int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
     return HFS_OK;
 }
 
-int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
-                         float gap_from, hfs_error *err)
+int hfs_gles_bind_ray(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_gles_layout *L,
+                      GLuint heights, GLuint bounds, hfs_error *err)
 {
-    const hfs_gl *gl = &g->gl;
     int rc;
-    if ((rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, g->r.input, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_bounds", GL_TEXTURE_2D, g->r.bounds, err)))
+    if ((rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, heights, err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_bounds", GL_TEXTURE_2D, bounds, err)))
         return rc;
     GLint at[2 * HFS_RAY_BOUND_MAX_LEVELS] = {0};
     for (int l = 1; l < L->rb.n_levels; ++l)
@@ -73,8 +84,16 @@ int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gl
         gl->Uniform2iv(loc, HFS_RAY_BOUND_MAX_LEVELS, at);
     const double zf = L->hscale * L->zscale / L->dx;
     hfs_gles_set_f1(gl, prog, "u_zf", (float)(zf < 1e30 ? zf : 1e30));
-    hfs_gles_set_f1(gl, prog, "u_gap_from", gap_from);
     return HFS_OK;
+}
+
+int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
+                         float gap_from, hfs_error *err)
+{
+    const int rc = hfs_gles_bind_ray(&g->gl, prog, L, g->r.input, g->r.bounds, err);
+    if (!rc)
+        hfs_gles_set_f1(&g->gl, prog, "u_gap_from", gap_from);
+    return rc;
 }
 
 int hfs_gles_sum_counts_rect(hfs_gles *g, GLuint fbo, int w, int h, double *sum, hfs_error *err)

@@ -95,17 +95,12 @@ static int build(hfs_gles *g, const hfs_gles_layout *L, const hfs_field *f, shm_
     return rc;
 }
 
-/* Current context, the profile a frame at q's precision would use
- * (gles_frame.c), the layout, and the two targets. */
+/* The call begun (hfs_gles_begin_outside) and the two targets. */
 static int begin(hfs_gles *g, const hfs_field *f, const hfs_quality *q, hfs_gles_layout *L,
                  shm_targets *t, hfs_error *err)
 {
-    int rc = hfs_gl_context_make_current(g->ctx, err);
-    if (rc || (rc = hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL,
-                                       q->precision == HFS_PRECISION_FP32, g->strict_limits,
-                                       &g->caps, err)) ||
-        (rc = hfs_gles_layout_init(L, f, q, err)) ||
-        (rc = hfs_gl_caps_check_texture(&g->caps, L->w, L->h, 1, "shadow height map", err)))
+    int rc = hfs_gles_begin_outside(g, f, q, L, "shadow height map", err);
+    if (rc)
         return rc;
     for (int k = 0; k < 2 && !rc; ++k) { /* RGBA: read back as every target is */
         t->tex[k] = hfs_gles_tex_new(&g->gl, GL_TEXTURE_2D, g->caps.fmt_rgba, L->w, L->h, 1, 0);

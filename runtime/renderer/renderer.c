@@ -55,6 +55,9 @@ typedef struct backend_ops {
     int (*render_texture)(void *state, const hfs_field *f, const hfs_lighting *l,
                           const hfs_quality *q, const hfs_lit_texture_desc *how,
                           hfs_lit_texture *out, hfs_error *err);
+    /* The GIS horizons of every grid point. */
+    int (*horizons)(void *state, const hfs_field *f, const hfs_quality *q,
+                    const hfs_horizon_desc *d, float *out, hfs_error *err);
 } backend_ops;
 
 static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
@@ -159,15 +162,35 @@ static int gles_shadow_map(void *state, const hfs_field *f, const hfs_key_light 
     return rc;
 }
 
+static int cpu_horizons(void *state, const hfs_field *f, const hfs_quality *q,
+                        const hfs_horizon_desc *d, float *out, hfs_error *err)
+{
+    (void)state;
+    return hfs_cpu_horizons(f, q, d, out, err);
+}
+static int truth_horizons(void *state, const hfs_field *f, const hfs_quality *q,
+                          const hfs_horizon_desc *d, float *out, hfs_error *err)
+{
+    (void)state;
+    return hfs_truth_horizons(f, q, d, out, err);
+}
+static int gles_horizons(void *state, const hfs_field *f, const hfs_quality *q,
+                         const hfs_horizon_desc *d, float *out, hfs_error *err)
+{
+    const int rc = hfs_gles_horizons(state, f, q, d, out, err);
+    hfs_gles_release(state);
+    return rc;
+}
+
 static const backend_ops backends[] = {
     [HFS_BACKEND_GLES] = {"gles", gles_create, gles_destroy, gles_render, gles_set_timing,
                           gles_set_amortize, gles_set_timing_finish, gles_timings,
                           gles_invalidate, gles_frame_report, gles_render_view, 0, gles_query,
-                          gles_shadow_map, gles_render_texture},
+                          gles_shadow_map, gles_render_texture, gles_horizons},
     [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL,
-                         NULL, 0, cpu_query, cpu_shadow_map, NULL},
+                         NULL, 0, cpu_query, cpu_shadow_map, NULL, cpu_horizons},
     [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL,
-                           NULL, NULL, 1, truth_query, NULL, NULL},
+                           NULL, NULL, 1, truth_query, NULL, NULL, truth_horizons},
 };
 #define N_BACKENDS ((int)(sizeof backends / sizeof backends[0]))
 
@@ -563,4 +586,18 @@ int hfs_renderer_shadow_height_map(hfs_renderer *r, const hfs_field *f, const hf
         return hfs_fail(err, HFS_E_UNSUPPORTED, "shadow height map: the %s backend has none "
                         "(it answers points by exact rays)", r->ops->name);
     return r->ops->shadow_map(r->state, f, &l->key[key], q, layer, out, err);
+}
+
+int hfs_renderer_horizons(hfs_renderer *r, const hfs_field *f, const hfs_quality *q,
+                          const hfs_horizon_desc *d, float *out, hfs_error *err)
+{
+    hfs_lighting none;
+    hfs_lighting_defaults(&none);
+    hfs_quality own;
+    if (!q)
+        hfs_quality_defaults(&own);
+    int rc = validate_frame(r, f, &none, q ? q : &own, err);
+    if (!rc)
+        rc = hfs_validate_horizon_desc(d, out, err);
+    return rc ? rc : r->ops->horizons(r->state, f, q ? q : &own, d, out, err);
 }

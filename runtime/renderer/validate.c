@@ -254,3 +254,20 @@ int hfs_validate_inputs(const hfs_field *f, const hfs_lighting *l, const hfs_qua
     return hfs_validate_frame_inputs(f, l, q, 1, 1, err);
 }
 
+
+int hfs_validate_horizon_desc(const hfs_horizon_desc *d, const float *out, hfs_error *err)
+{
+    if (!d || !d->azimuth || !out)
+        return hfs_fail(err, HFS_E_INVALID, "horizons: no %s",
+                        !d ? "request" : !d->azimuth ? "azimuths" : "output array");
+    if (d->n_azimuths < 1 || d->n_azimuths > HFS_MAX_HORIZON_AZIMUTHS)
+        return hfs_fail(err, HFS_E_INVALID, "horizons: %d azimuths (1..%d allowed)",
+                        d->n_azimuths, HFS_MAX_HORIZON_AZIMUTHS);
+    for (int a = 0; a < d->n_azimuths; ++a)
+        if (!isfinite(d->azimuth[a]))
+            return hfs_fail(err, HFS_E_INVALID, "horizons: azimuth %d is not finite", a + 1);
+    if (!(isfinite(d->radius) && d->radius >= 0.0))
+        return hfs_fail(err, HFS_E_INVALID, "horizons: radius %g (a finite distance >= 0, "
+                        "0 for the whole field)", d->radius);
+    return HFS_OK;
+}

@@ -13,4 +13,8 @@
 int hfs_validate_frame_inputs(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
                               int heights, int scan_map, hfs_error *err);
 
+/* hfs_renderer_horizons' request: 1..HFS_MAX_HORIZON_AZIMUTHS finite
+ * azimuths, a finite radius >= 0, an output array. */
+int hfs_validate_horizon_desc(const hfs_horizon_desc *d, const float *out, hfs_error *err);
+
 #endif /* HFS_VALIDATE_H */

@@ -45,6 +45,13 @@ static double cell_max_slope(const hfs_field *f, int ci, int cj, int i, int j, d
         }
     }
     double best = -INFINITY;
+    /* A receiver on the surface itself (the GIS horizons; never a lifted
+     * one): its own cell's slope b + a u reaches its supremum b as u -> 0,
+     * where no t > 0 attains it. */
+    if (ta == 0.0 && hfs_field_z(f, i, j) == z0) {
+        best = b / f->dx;
+        *at = 0.0;
+    }
     for (int k = 0; k < 4; ++k) {
         const double t = ta + u[k];
         if (!(u[k] >= 0.0 && u[k] <= len && t > 0.0))
@@ -78,8 +85,11 @@ static int cell_at(const hfs_field *f, int i, int j, double c, double s, double 
     return *tb > *ta;
 }
 
+/* The supremum over t in (0, t_max] (texels; INFINITY: to the grid's
+ * edge).  Cells are cut at t_max, and a node's bound is taken over the
+ * part of its stretch before it: nothing past t_max counts. */
 static double horizon_walk(const hfs_truth_grid *g, int i, int j, double z0, double c, double s,
-                           double cutoff, double *hint, int use_tree)
+                           double cutoff, double *hint, int use_tree, double t_max)
 {
     const hfs_field *f = g->f;
     const int ncx = g->w - 1, ncy = g->h - 1, top = g->n_levels - 1;
@@ -89,14 +99,15 @@ static double horizon_walk(const hfs_truth_grid *g, int i, int j, double z0, dou
     double t, te;
     /* The maximum does not depend on the order of the cells: the hinted
      * one first only raises m early, so that more gets skipped. */
-    if (hint && *hint > 0.0 && cell_at(f, i, j, c, s, *hint, &ci, &cj, &t, &te)) {
-        const double v = cell_max_slope(f, ci, cj, i, j, z0, c, s, t, te, &at);
+    if (hint && *hint > 0.0 && *hint <= t_max &&
+        cell_at(f, i, j, c, s, *hint, &ci, &cj, &t, &te)) {
+        const double v = cell_max_slope(f, ci, cj, i, j, z0, c, s, t, fmin(te, t_max), &at);
         if (v > m)
             m = v, best_t = at;
     }
     ci = hfs_truth_cell_of(i, c, ncx), cj = hfs_truth_cell_of(j, s, ncy);
     t = 0.0;
-    while (ci >= 0 && ci < ncx && cj >= 0 && cj < ncy) {
+    while (ci >= 0 && ci < ncx && cj >= 0 && cj < ncy && t < t_max) {
         if (m > -INFINITY && dz_top >= 0.0 && t > 0.0 && dz_top <= m * (t * dx))
             break; /* nothing anywhere ahead can rise above m */
         const hfs_truth_node nd = hfs_truth_node_at(ci, cj, level, ncx, ncy);
@@ -105,20 +116,21 @@ static double horizon_walk(const hfs_truth_grid *g, int i, int j, double z0, dou
         te = fmax(t, fmin(tx, ty));
         if (!(te < INFINITY))
             break; /* (c, s) = (0, 0): no ray */
+        const double tc = fmin(te, t_max); /* the stretch that counts */
         int skip = 0;
         if (use_tree && m > -INFINITY) {
             /* Can any point of this node's stretch [t, te] rise above m? */
             const double dz = (double)g->zmax[level][(size_t)nd.ny * g->lw[level] + nd.nx] +
                               g->margin - z0;
-            skip = dz >= 0.0 ? t > 0.0 && dz <= m * (t * dx) : dz <= m * (te * dx);
+            skip = dz >= 0.0 ? t > 0.0 && dz <= m * (t * dx) : dz <= m * (tc * dx);
         }
         if (skip) {
             level += level < top;
         } else if (use_tree && level > 0) {
             --level;
             continue;
-        } else if (te > t) {
-            const double v = cell_max_slope(f, ci, cj, i, j, z0, c, s, t, te, &at);
+        } else if (tc > t) {
+            const double v = cell_max_slope(f, ci, cj, i, j, z0, c, s, t, tc, &at);
             if (v > m)
                 m = v, best_t = at;
         }
@@ -133,11 +145,17 @@ static double horizon_walk(const hfs_truth_grid *g, int i, int j, double z0, dou
 double hfs_truth_horizon(const hfs_truth_grid *g, int i, int j, double z0, double c, double s,
                          double cutoff, double *hint)
 {
-    return horizon_walk(g, i, j, z0, c, s, cutoff, hint, 1);
+    return horizon_walk(g, i, j, z0, c, s, cutoff, hint, 1, INFINITY);
+}
+
+double hfs_truth_horizon_within(const hfs_truth_grid *g, int i, int j, double z0, double c,
+                                double s, double t_max, double *hint)
+{
+    return horizon_walk(g, i, j, z0, c, s, -INFINITY, hint, 1, t_max);
 }
 
 double hfs_truth_horizon_plain(const hfs_truth_grid *g, int i, int j, double z0, double c,
                                double s)
 {
-    return horizon_walk(g, i, j, z0, c, s, -INFINITY, NULL, 0);
+    return horizon_walk(g, i, j, z0, c, s, -INFINITY, NULL, 0, INFINITY);
 }

@@ -58,6 +58,12 @@ void hfs_truth_grid_free(hfs_truth_grid *g);
 double hfs_truth_horizon(const hfs_truth_grid *g, int i, int j, double z0, double c,
                          double s, double cutoff, double *hint);
 
+/* The same supremum over distances t in (0, t_max] texels only (INFINITY:
+ * to the edge), no cutoff (-INFINITY when the ray crosses no cell within
+ * t_max): the GIS horizons' search radius (hfs_renderer_horizons). */
+double hfs_truth_horizon_within(const hfs_truth_grid *g, int i, int j, double z0, double c,
+                                double s, double t_max, double *hint);
+
 /* The same supremum, every crossed cell solved (no quadtree, no cutoff;
  * -INFINITY when the ray crosses no cell): for tests. */
 double hfs_truth_horizon_plain(const hfs_truth_grid *g, int i, int j, double z0, double c,

@@ -1,0 +1,88 @@
+/*
+ * horizons.frag - the GIS horizons (hfshade.h hfs_renderer_horizons,
+ * runtime/gles/horizons.c): for two azimuths a draw, each grid point's gap
+ * search (gles_ray.frag hfs_gap_search, the key lights' whole search) over
+ * every crossing within u_reach texels, the near end of its own cell and
+ * where it leaves the grid, from the point's own height; the
+ * elevation angle atan(max slope) per azimuth as an fp16 (hi, lo) pair
+ * (angle, 0 at fp32), -2 (below every angle, exact in fp16) where the
+ * ray crosses nothing.
+ */
+// hfs-variant: HFS_FP32 1
+
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+
+vec2 hfs_split(float v);
+float hfs_hdiff(vec2 a, vec2 b);
+#define HFS_RAY_LEVELS 16
+float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
+                     float tie, vec2 h0, float best, float stop, inout float dist,
+                     inout int fetches);
+
+uniform highp sampler2D u_height;        /* normalized heights (hi, lo) */
+uniform highp sampler2D u_bounds;        /* the max pyramid's atlas */
+uniform ivec2 u_rb_at[HFS_RAY_LEVELS];   /* level l's corner in the atlas */
+uniform ivec2 u_size;                    /* W, H */
+uniform float u_zf;                      /* normalized height to slope: hscale zscale / dx */
+uniform float u_reach;                   /* texels searched */
+uniform vec4 u_cs;                       /* (cos, sin) of the two azimuths */
+
+layout(location = 0) out vec4 o_h;
+
+/* The receiver's own cell as t -> 0: the surface there rises t (A + B t)
+ * (B the cell's twist), so its slope is highest at t -> 0 or at the far
+ * edge, which is the search's first crossing; this is the near end A
+ * (runtime/core/field_geom.h hfs_field_first_cell_slope). -1e30 where the
+ * cell lies off the grid. */
+float near_slope(ivec2 p, vec2 cs, vec2 h0)
+{
+    ivec2 q = p + ivec2(sign(cs));
+    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_size)))
+        return -1e30;
+    float ax = hfs_hdiff(texelFetch(u_height, ivec2(q.x, p.y), 0).xy, h0) * abs(cs.x);
+    float ay = hfs_hdiff(texelFetch(u_height, ivec2(p.x, q.y), 0).xy, h0) * abs(cs.y);
+    return (ax + ay) * u_zf;
+}
+
+/* Where the ray leaves the grid through a side parallel to its major axis
+ * (between two crossings), the surface's slope there
+ * (runtime/cpu/cpu_horizons.c exit_slope); -1e30 when it leaves at a
+ * crossing or past u_reach. */
+float exit_slope(ivec2 p, vec2 cs, vec2 h0)
+{
+    bool xm = abs(cs.x) >= abs(cs.y);
+    float ma = xm ? cs.x : cs.y, mi = xm ? cs.y : cs.x;
+    int pp = xm ? p.x : p.y, q = xm ? p.y : p.x;
+    int np = xm ? u_size.x : u_size.y, nq = xm ? u_size.y : u_size.x;
+    int e = mi > 0.0 ? nq - 1 : 0;
+    float t = mi != 0.0 ? float(e - q) / mi : -1.0;
+    float pm = float(pp) + t * ma;
+    if (!(t > 0.0 && t <= u_reach && pm >= 0.0 && pm <= float(np - 1)) || pm == floor(pm))
+        return -1e30;
+    int a = min(int(floor(pm)), np - 2);
+    float fr = pm - float(a);
+    vec2 za = texelFetch(u_height, xm ? ivec2(a, e) : ivec2(e, a), 0).xy;
+    vec2 zb = texelFetch(u_height, xm ? ivec2(a + 1, e) : ivec2(e, a + 1), 0).xy;
+    return (hfs_hdiff(za, h0) + fr * hfs_hdiff(zb, za)) * u_zf / t;
+}
+
+float horizon(ivec2 p, vec2 cs, vec2 h0)
+{
+    float dist = 0.0;
+    int fetches = 0;
+    float best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, p, cs, 0.0, u_reach, u_zf,
+                                0.0, h0, max(near_slope(p, cs, h0), exit_slope(p, cs, h0)),
+                                1e30, dist, fetches);
+    return best > -1e29 ? atan(best) : -2.0;
+}
+
+void main()
+{
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec2 h0 = texelFetch(u_height, p, 0).xy;
+    float a = horizon(p, u_cs.xy, h0), b = horizon(p, u_cs.zw, h0);
+    o_h = vec4(hfs_split(a), hfs_split(b));
+}
