@@ -261,6 +261,9 @@ int hfs_gles_bind_env_far(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_
  * (pass_env_horizons.c uploads it). */
 int hfs_gles_bind_env_swath(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_program *prog,
                             hfs_error *err);
+/* The context made current and the profile a frame at q's precision would
+ * use (g->caps: its limits). */
+int hfs_gles_select_caps(hfs_gles *g, const hfs_quality *q, hfs_error *err);
 /* A call outside the frame (point queries, horizons): the context made
  * current, the profile a frame at q's precision would use, the layout (its
  * normalization), and the field checked against the texture limit (one

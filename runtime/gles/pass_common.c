@@ -43,14 +43,19 @@ void hfs_gles_stage_fetches(hfs_gles *g, hfs_gles_pass_id p, int stage, double f
     g->timing.fetch[g->stage_slot[p] + stage] += fetches;
 }
 
+int hfs_gles_select_caps(hfs_gles *g, const hfs_quality *q, hfs_error *err)
+{
+    const int rc = hfs_gl_context_make_current(g->ctx, err);
+    return rc ? rc : hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL,
+                                        q->precision == HFS_PRECISION_FP32, g->strict_limits,
+                                        &g->caps, err);
+}
+
 int hfs_gles_begin_outside(hfs_gles *g, const hfs_field *f, const hfs_quality *q,
                            hfs_gles_layout *L, const char *what, hfs_error *err)
 {
-    int rc = hfs_gl_context_make_current(g->ctx, err);
-    if (rc || (rc = hfs_gl_caps_select(&g->driver, g->profile[0] ? g->profile : NULL,
-                                       q->precision == HFS_PRECISION_FP32, g->strict_limits,
-                                       &g->caps, err)) ||
-        (rc = hfs_gles_layout_init(L, f, q, err)))
+    int rc = hfs_gles_select_caps(g, q, err);
+    if (rc || (rc = hfs_gles_layout_init(L, f, q, err)))
         return rc;
     return hfs_gl_caps_check_texture(&g->caps, L->w, L->h, 1, what, err);
 }
