@@ -131,6 +131,9 @@ cases=$((cases + 1))
 if "$HFSHADE" info >/dev/null 2>&1; then # a GLES refusal needs a context to refuse
     HFS_GL_STRICT_LIMITS=1 expect_fail check-refused "GL_MAX_TEXTURE_SIZE" render --check \
         --backend gles --height "$tmp/wide.pfm" --env-sh $sky
+    # issue 39: the refusal says the way out
+    HFS_GL_STRICT_LIMITS=1 expect_fail over-limit-way-out "the cpu backend renders any size" \
+        render --backend gles --height "$tmp/wide.pfm" --env-sh $sky -o "$tmp/out.png"
 fi
 cases=$((cases + 1))
 before=$(ls "$tmp" | sort)

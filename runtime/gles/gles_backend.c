@@ -246,6 +246,19 @@ static void report_timings(hfs_gles *g, double t_start)
 
 /* One frame, with a view from cam when cam is not NULL, into the lit
  * texture instead of out when lit is not NULL. */
+/* A frame the device cannot hold: for a field past the ES 3.0 minimum
+ * (2048 texels, what every device renders), the message says the way
+ * out. */
+static int way_out(const hfs_field *f, hfs_error *err)
+{
+    if (err && (f->width > 2048 || f->height > 2048)) {
+        const size_t n = strlen(err->msg);
+        snprintf(err->msg + n, sizeof err->msg - n, " (a %dx%d field: the cpu backend renders "
+                 "any size; the GIS rasters come in tiles)", f->width, f->height);
+    }
+    return HFS_E_UNSUPPORTED;
+}
+
 static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                         const hfs_quality *q, hfs_image *out, const hfs_camera *cam,
                         const hfs_object_set *obj, int w, int h, float *view,
@@ -284,7 +297,7 @@ static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
         hfs_gles_plan_drop_all(&g->plan);
         for (int i = 0; i < 16 && g->gl.GetError() != GL_NO_ERROR; ++i)
             ;
-        return rc;
+        return rc == HFS_E_UNSUPPORTED ? way_out(f, err) : rc;
     }
     hfs_gles_timing_collect(&g->timing, &g->gl);
     snprintf(g->stats.profile, sizeof g->stats.profile, "%s", g->caps.profile);

@@ -40,6 +40,15 @@ static void fbo_delete(const hfs_gl *gl, GLuint *f)
     *f = 0;
 }
 
+/* What an incomplete attachment usually means: a texture the driver did
+ * not allocate (llvmpipe: past its memory for one texture). */
+static const char *attachment_note(GLenum status)
+{
+    return status == GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT
+               ? ": an attachment the driver could not allocate, too large for its memory"
+               : "";
+}
+
 int hfs_gles_fbo_new(const hfs_gl *gl, GLuint *fbo, int n, const GLuint *tex, const int *layer,
                      const char *what, hfs_error *err)
 {
@@ -60,7 +69,7 @@ int hfs_gles_fbo_new(const hfs_gl *gl, GLuint *fbo, int n, const GLuint *tex, co
     gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
     if (status != GL_FRAMEBUFFER_COMPLETE)
         return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: %s framebuffer incomplete "
-                        "(0x%x)", what, (unsigned)status);
+                        "(0x%x%s)", what, (unsigned)status, attachment_note(status));
     return hfs_gl_check(gl, what, err);
 }
 
@@ -82,8 +91,8 @@ int hfs_gles_fbo_layers(const hfs_gl *gl, GLuint fbo, GLuint tex, int layer0, in
     gl->DrawBuffers(outs, bufs);
     GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: %s framebuffer incomplete (0x%x)",
-                        what, (unsigned)status);
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "backend gles: %s framebuffer incomplete (0x%x%s)",
+                        what, (unsigned)status, attachment_note(status));
     return HFS_OK;
 }
 
