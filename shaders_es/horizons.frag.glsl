@@ -2,8 +2,9 @@
  * horizons.frag - the GIS horizons (hfshade.h hfs_renderer_horizons,
  * runtime/gles/horizons.c): for two azimuths a draw, each grid point's gap
  * search (gles_ray.frag hfs_gap_search, the key lights' whole search) over
- * every crossing within u_reach texels, the near end of its own cell and
- * where it leaves the grid, from the point's own height; the
+ * every crossing within u_reach texels, the near end of its own cell,
+ * where it leaves the grid and where it reaches the radius, from the
+ * point's own height; the
  * elevation angle atan(max slope) per azimuth as an fp16 (hi, lo) pair
  * (angle, 0 at fp32), -2 (below every angle, exact in fp16) where the
  * ray crosses nothing.
@@ -69,12 +70,31 @@ float exit_slope(ivec2 p, vec2 cs, vec2 h0)
     return (hfs_hdiff(za, h0) + fr * hfs_hdiff(zb, za)) * u_zf / t;
 }
 
+/* The surface where the ray reaches the radius, bilinear between its four
+ * grid points (runtime/cpu/cpu_horizons.c end_slope); -1e30 past the grid
+ * or with no radius. */
+float end_slope(ivec2 p, vec2 cs, vec2 h0)
+{
+    vec2 e = vec2(p) + u_reach * cs, last = vec2(u_size - 1);
+    if (u_reach >= 1e8 || any(lessThan(e, vec2(0.0))) || any(greaterThan(e, last)))
+        return -1e30;
+    ivec2 c = min(ivec2(floor(e)), u_size - 2);
+    vec2 f = e - vec2(c);
+    float d00 = hfs_hdiff(texelFetch(u_height, c, 0).xy, h0);
+    float d10 = hfs_hdiff(texelFetch(u_height, c + ivec2(1, 0), 0).xy, h0);
+    float d01 = hfs_hdiff(texelFetch(u_height, c + ivec2(0, 1), 0).xy, h0);
+    float d11 = hfs_hdiff(texelFetch(u_height, c + ivec2(1, 1), 0).xy, h0);
+    float d = mix(mix(d00, d10, f.x), mix(d01, d11, f.x), f.y);
+    return d * u_zf / u_reach;
+}
+
 float horizon(ivec2 p, vec2 cs, vec2 h0)
 {
     float dist = 0.0;
     int fetches = 0;
     float best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, p, cs, 0.0, u_reach, u_zf,
-                                0.0, h0, max(near_slope(p, cs, h0), exit_slope(p, cs, h0)),
+                                0.0, h0, max(near_slope(p, cs, h0),
+                                             max(exit_slope(p, cs, h0), end_slope(p, cs, h0))),
                                 1e30, dist, fetches);
     return best > -1e29 ? atan(best) : -2.0;
 }

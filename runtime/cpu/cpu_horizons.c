@@ -4,8 +4,9 @@
  * (runtime/core/ray_bound.h, the search the key lights' and the far
  * grid's horizons make, and the GLES pass of the same name) over every
  * crossing within the radius, the near end of the point's own cell
- * (hfs_field_first_cell_slope) and the point where the ray leaves the
- * grid, from the point's own height, in double precision.  Rows in parallel, each writing its own texels.
+ * (hfs_field_first_cell_slope), the point where the ray leaves the grid
+ * and the one where it reaches the radius, from the point's own height, in
+ * double precision.  Rows in parallel, each writing its own texels.
  */
 #include "backends.h"
 #include "field_geom.h"
@@ -47,6 +48,17 @@ static double exit_slope(const hfs_field *f, int i, int j, double c, double s, d
     return (za + fr * (zb - za) - hfs_field_z(f, i, j)) / (t * f->dx);
 }
 
+/* The surface where the ray reaches the radius (t_last texels, finite),
+ * the last cell's far end within it: -DBL_MAX past the grid or with no
+ * radius (horizons.frag end_slope, the same). */
+static double end_slope(const hfs_field *f, int i, int j, double c, double s, double t_last)
+{
+    double z;
+    if (!(t_last < HUGE_VAL) || !hfs_field_bilinear(f, i + t_last * c, j + t_last * s, &z))
+        return -DBL_MAX;
+    return (z - hfs_field_z(f, i, j)) / (t_last * f->dx);
+}
+
 static void horizon_row(void *ctx, int j, int worker)
 {
     (void)worker;
@@ -60,10 +72,12 @@ static void horizon_row(void *ctx, int j, int worker)
         float *row = h->out + plane * (size_t)a + (size_t)j * w;
         for (int i = 0; i < f->width; ++i) {
             /* the own cell's near end (its far end is crossing 1: the
-             * surface may fall away from its steepest start) and the
-             * exit through a side */
-            double dist = 0.0, near = fmax(hfs_field_first_cell_slope(f, i, j, c, s),
-                                           exit_slope(f, i, j, c, s, h->t_last));
+             * surface may fall away from its steepest start), the exit
+             * through a side and the end at the radius */
+            double dist = 0.0;
+            const double near = fmax(hfs_field_first_cell_slope(f, i, j, c, s),
+                                     fmax(exit_slope(f, i, j, c, s, h->t_last),
+                                          end_slope(f, i, j, c, s, h->t_last)));
             const double m = hfs_ray_bound_search(h->L, h->atlas, h->z, w, i, j, c, s, 0.0,
                                                   h->t_last, zs, 0.0, near, &dist, NULL);
             row[i] = m > -DBL_MAX ? (float)atan(m) : HFS_HORIZON_NONE;
