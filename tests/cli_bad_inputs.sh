@@ -204,6 +204,12 @@ $U hfshade envmap-none "envmap" envmap
 $U hfshade envmap-unknown "frob" envmap frob
 $U hfshade envmap-no-map "no MAP" envmap decompose
 $U hfshade envmap-no-value "--max-lights: missing value" envmap decompose "$tmp/x.pfm" --max-lights
+# The GIS commands (issue 39; parsed before GDAL is needed, so in every build).
+$U hfshade svf-no-dem "no DEM" svf -o "$tmp/x.tif"
+$U hfshade svf-bad-directions "--directions: '0'" svf "$tmp/x.tif" -o "$tmp/y.tif" --directions 0
+$U hfshade horizon-no-azimuths "no azimuths" horizon "$tmp/x.tif" -o "$tmp/h"
+$U hfshade horizon-bad-convention "'north'" horizon "$tmp/x.tif" -o "$tmp/h" --step 45 --convention north
+$U hfshade openness-svf-flag "--lambertian: unknown option" openness "$tmp/x.tif" -o "$tmp/y.tif" --lambertian
 $U hfgen no-kind "no kind"
 $U hfgen unknown-kind "'volcano'" volcano --size 8x8 -o "$tmp/out.pfm"
 $U hfgen unknown-kind-bare "'volcano'" volcano
@@ -267,6 +273,9 @@ for t in hfshade hfgen hfstress hfbench bench_env gles_bench hfshade-kiosk hfs-c
     expect_help "$t" --help
 done
 expect_help hfshade envmap --help
+for c in svf horizon openness; do
+    expect_help hfshade "$c" --help
+done
 
 echo "$((cases - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

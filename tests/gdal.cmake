@@ -9,3 +9,13 @@ if(TARGET hfshade_gdal)
   hfs_add_test(test_gdal_jacksboro SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gdal_jacksboro.c
                LIBS hfshade_gdal hfshade_lib ARGS ${PROJECT_SOURCE_DIR}/data LABEL io TIMEOUT 300)
 endif()
+# Issue 39's GIS commands end to end (hfshade svf | horizon | openness) on
+# a geographic DEM with holes: the input's grid, CRS and nodata kept, GLES
+# against the truth, conventions, bad inputs (test_gis_cli.c).
+hfs_add_test(test_gis_cli SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_cli.c
+             LIBS hfshade_gdal hfs_gl ARGS $<TARGET_FILE:hfshade> LABEL gl TIMEOUT 120)
+add_dependencies(test_gis_cli hfshade)
+if(HFS_SANITIZE)
+  set_property(TEST test_gis_cli APPEND PROPERTY ENVIRONMENT
+               "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/lsan.supp:print_suppressions=0")
+endif()

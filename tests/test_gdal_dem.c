@@ -19,6 +19,7 @@
  *   refused    a rotated geotransform: one line; a text file: the usual
  *              "unrecognised format" error (GDAL cannot open it either)
  */
+#include "gdal_fixture.h"
 #include "geotiff_write.h"
 #include "height_gdal.h"
 #include "test_util.h"
@@ -41,34 +42,11 @@ static const char *path_of(const char *name)
     return p;
 }
 
-static void wkt_of(int epsg, char **wkt)
-{
-    OGRSpatialReferenceH s = OSRNewSpatialReference(NULL);
-    OSRImportFromEPSG(s, epsg);
-    OSRExportToWkt(s, wkt);
-    OSRDestroySpatialReference(s);
-}
-
-/* A w x h Float32 GeoTIFF (through MEM + CreateCopy to `driver`). */
+/* A w x h raster (gdal_fixture.h) in the test's folder. */
 static void write_raster(const char *driver, const char *name, int w, int h, const float *z,
                          const double gt[6], int epsg, int has_nd, double nd, GDALDataType t)
 {
-    GDALDatasetH mem = GDALCreate(GDALGetDriverByName("MEM"), "", w, h, 1, t, NULL);
-    GDALRasterBandH b = GDALGetRasterBand(mem, 1);
-    CHECK(GDALRasterIO(b, GF_Write, 0, 0, w, h, (void *)z, w, h, GDT_Float32, 0, 0) == CE_None);
-    if (has_nd)
-        GDALSetRasterNoDataValue(b, nd);
-    GDALSetGeoTransform(mem, (double *)gt);
-    char *wkt = NULL;
-    wkt_of(epsg, &wkt);
-    GDALSetProjection(mem, wkt);
-    CPLFree(wkt);
-    GDALDatasetH out = GDALCreateCopy(GDALGetDriverByName(driver), path_of(name), mem, 0, NULL,
-                                      NULL, NULL);
-    CHECK(out != NULL);
-    if (out)
-        GDALClose(out);
-    GDALClose(mem);
+    CHECK(gdal_fixture_write(driver, path_of(name), w, h, z, gt, epsg, has_nd, nd, t) == 0);
 }
 
 static float *ramp(int w, int h)

@@ -8,6 +8,8 @@
  *   hfshade info [--context NAME]     (makes a GL context and describes it)
  *   hfshade envmap decompose MAP [...] (lights + residual as scene lines;
  *                                     cli_envmap.h)
+ *   hfshade svf | horizon | openness DEM -o OUT [...]  (GIS rasters on the
+ *                                     DEM's own grid, through GDAL; cli_gis.h)
  *
  * Every scene key is also a flag (--KEY VALUE); flags override the file.
  * Errors: one line on stderr naming the input and the problem, exit 1 (2 for
@@ -28,6 +30,7 @@
 #include "height_gdal.h"
 #endif
 #include "cli_envmap.h"
+#include "cli_gis.h"
 
 #include <float.h>
 #include <math.h>
@@ -69,6 +72,9 @@ static void usage(FILE *f)
             "       hfshade info [--context surfaceless|osmesa|auto]\n"
             "       hfshade envmap decompose MAP [--max-lights N] [--min-share F]\n"
             "                      [--contrast C] [--picture OUT.png]\n"
+            "       hfshade svf DEM -o OUT.tif [...]       (GIS rasters on the DEM's own grid:\n"
+            "       hfshade openness DEM -o OUT.tif [...]   sky-view factor, openness, horizon\n"
+            "       hfshade horizon DEM -o PREFIX [...]     angles; COMMAND --help, docs/GIS.md)\n"
             "options: --exposure F (PNG only, default 1), --colormap none|terrain (PNG only),\n"
             "         --time N (render N full frames after a warm-up; print per-pass medians),\n"
             "         --check (load, validate and render one frame off screen; write nothing),\n"
@@ -520,7 +526,7 @@ int main(int argc, char **argv)
 {
     if (argc < 2)
         return hfs_usage_error("hfshade", "no command given (render, compare, query, envmap, "
-                                          "info, keys)");
+                                          "svf, horizon, openness, info, keys)");
 #ifdef HFS_HAVE_GDAL
     hfs_gdal_register(); /* GeoTIFF, SRTM .hgt, VRT ... as height fields */
 #endif
@@ -542,6 +548,8 @@ int main(int argc, char **argv)
     }
     if (!strcmp(c.command, "envmap"))
         return hfs_cli_envmap(argc - 1, argv + 1);
+    if (hfs_cli_is_gis(c.command))
+        return hfs_cli_gis(argc - 1, argv + 1);
     if (!strcmp(c.command, "info")) {
         /* Proves --context end to end until the GLES backend uses it. */
         const char *name = NULL;

@@ -1,9 +1,9 @@
 # The hfshade command-line tool.
 add_executable(hfshade ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_view.c
                ${CMAKE_CURRENT_SOURCE_DIR}/cli_query.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_envmap.c
-               ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.c)
+               ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_gis.c)
 target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfs_gl
-                      hfs_envmap hfs_cli_usage)
+                      hfs_envmap hfs_cli_usage hfs_gis_core)
 
 # Deterministic procedural height fields for tests and benchmarks: the
 # generators (one definition for hfgen, tests and benchmarks) and the tool.
@@ -21,5 +21,5 @@ target_link_libraries(hfs_sky_gen PUBLIC m)
 add_executable(bench_env ${CMAKE_CURRENT_SOURCE_DIR}/bench_env.c)
 target_link_libraries(bench_env PRIVATE hfs_envmap hfs_sky_gen hfshade_io hfs_cli_usage m)
 if(TARGET hfshade_gdal)
-  target_link_libraries(hfshade PRIVATE hfshade_gdal)
+  target_link_libraries(hfshade PRIVATE hfshade_gdal hfs_gis_gdal)
 endif()

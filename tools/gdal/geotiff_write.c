@@ -11,6 +11,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 /* The image as a MEM dataset with hm's georeferencing; NULL on failure. */
 static GDALDatasetH mem_dataset(const hfs_image *img, const hfs_heightmap *hm)
@@ -39,6 +40,31 @@ static GDALDatasetH mem_dataset(const hfs_image *img, const hfs_heightmap *hm)
     return ds;
 }
 
+int hfs_gdal_write_copy(hfs_outputs *o, const char *path, GDALDatasetH src, const char *driver,
+                        char **opts, hfs_error *err)
+{
+    char name[64]; /* a memory file of this call's own */
+    snprintf(name, sizeof name, "/vsimem/hfshade-%p.tif", (void *)src);
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    GDALDriverH drv = GDALGetDriverByName(driver);
+    GDALDatasetH out = src && drv ? GDALCreateCopy(drv, name, src, FALSE, opts, NULL, NULL) : NULL;
+    int ok = out != NULL;
+    if (out) { /* GDALClose writes the rest (void before GDAL 3.8): errors are logged */
+        CPLErrorReset();
+        GDALClose(out);
+        ok &= CPLGetLastErrorType() != CE_Failure && CPLGetLastErrorType() != CE_Fatal;
+    }
+    vsi_l_offset len = 0;
+    GByte *bytes = VSIGetMemFileBuffer(name, &len, TRUE); /* ours now */
+    CPLPopErrorHandler();
+    int rc = ok && bytes && len > 0
+                 ? hfs_bytes_write_to(o, path, bytes, (size_t)len, err)
+                 : hfs_fail(err, HFS_E_IO, "%s: GDAL could not encode the %s (%s)", path,
+                            !strcmp(driver, "GTiff") ? "GeoTIFF" : driver, CPLGetLastErrorMsg());
+    VSIFree(bytes);
+    return rc;
+}
+
 int hfs_gdal_write_geotiff(hfs_outputs *o, const char *path, const hfs_image *img,
                            const hfs_heightmap *hm, hfs_error *err)
 {
@@ -48,31 +74,14 @@ int hfs_gdal_write_geotiff(hfs_outputs *o, const char *path, const hfs_image *im
         if (!isfinite(img->rgb[k]))
             return hfs_fail(err, HFS_E_INVALID, "%s: refusing to write a non-finite value",
                             path);
-    char name[64]; /* a memory file of this call's own */
-    snprintf(name, sizeof name, "/vsimem/hfshade-%p.tif", (const void *)img);
     CPLPushErrorHandler(CPLQuietErrorHandler);
     GDALDatasetH mem = mem_dataset(img, hm);
-    GDALDriverH gtiff = GDALGetDriverByName("GTiff");
     char **opts = CSLSetNameValue(NULL, "COMPRESS", "DEFLATE");
-    GDALDatasetH tif = mem && gtiff ? GDALCreateCopy(gtiff, name, mem, FALSE, opts, NULL, NULL)
-                                    : NULL;
+    const int rc = hfs_gdal_write_copy(o, path, mem, "GTiff", opts, err);
     CSLDestroy(opts);
-    int ok = tif != NULL;
-    if (tif) { /* GDALClose writes the rest (void before GDAL 3.8): errors are logged */
-        CPLErrorReset();
-        GDALClose(tif);
-        ok &= CPLGetLastErrorType() != CE_Failure && CPLGetLastErrorType() != CE_Fatal;
-    }
     if (mem)
         GDALClose(mem);
-    vsi_l_offset len = 0;
-    GByte *bytes = VSIGetMemFileBuffer(name, &len, TRUE); /* ours now */
     CPLPopErrorHandler();
-    int rc = ok && bytes && len > 0
-                 ? hfs_bytes_write_to(o, path, bytes, (size_t)len, err)
-                 : hfs_fail(err, HFS_E_IO, "%s: GDAL could not encode the GeoTIFF (%s)", path,
-                            CPLGetLastErrorMsg());
-    VSIFree(bytes);
     return rc;
 }
 

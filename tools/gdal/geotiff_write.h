@@ -13,8 +13,21 @@
 
 #include "hfs_io.h"
 
+#include <gdal.h>
+
 int hfs_gdal_write_geotiff(hfs_outputs *o, const char *path, const hfs_image *img,
                            const hfs_heightmap *hm, hfs_error *err);
+
+/* The dataset src (a MEM dataset, usually) encoded by GDAL's driver
+ * `driver` ("GTiff", "COG", ...) with its creation options opts (a CSL
+ * NAME=VALUE list, NULL: none) into a memory file of this call's own
+ * (/vsimem/), and those bytes written as the output path of o
+ * (hfs_bytes_write_to; o NULL: written at once, atomically).  GDAL's
+ * messages are kept quiet; on failure err names path and GDAL's last
+ * message, and nothing is written.  src NULL is a failure (so a caller
+ * can pass what its MEM dataset's creation returned). */
+int hfs_gdal_write_copy(hfs_outputs *o, const char *path, GDALDatasetH src, const char *driver,
+                        char **opts, hfs_error *err);
 
 /* A world file beside a PNG or PFM of the grid (the ESRI six lines GDAL
  * and GIS tools read, named PATH + "w": out.png -> out.pngw): the pixel

@@ -14,11 +14,9 @@
 
 #define PI 3.14159265358979323846
 
-/* The cell's east-west and north-south sizes in metres (0 when unknown). */
-static void cell_metres(GDALDatasetH ds, const double gt[6], int h, double *cx, double *cy)
+void hfs_gdal_cell_metres(const char *wkt, const double gt[6], int h, double *cx, double *cy)
 {
     *cx = fabs(gt[1]), *cy = fabs(gt[5]);
-    const char *wkt = GDALGetProjectionRef(ds);
     if (!wkt || !*wkt)
         return; /* no CRS: the geotransform's own units */
     OGRSpatialReferenceH srs = OSRNewSpatialReference(wkt);
@@ -41,9 +39,7 @@ static void cell_metres(GDALDatasetH ds, const double gt[6], int h, double *cx, 
     OSRDestroySpatialReference(srs);
 }
 
-/* Resamples z (w x h, cells cx x cy) to square cells of min(cx, cy),
- * bilinearly; *z, *w, *h replaced.  0, or HFS_E_NOMEM. */
-static int make_square(float **z, int *w, int *h, double cx, double cy, double *cell)
+int hfs_gdal_make_square(float **z, int *w, int *h, double cx, double cy, double *cell)
 {
     const double d = cx < cy ? cx : cy;
     const int nw = (int)lround((*w - 1) * cx / d) + 1, nh = (int)lround((*h - 1) * cy / d) + 1;
@@ -65,18 +61,20 @@ static int make_square(float **z, int *w, int *h, double cx, double cy, double *
     return HFS_OK;
 }
 
-/* Band 1 into *z (north row first), with its nodata (or opts') as holes. */
-static int read_band(GDALDatasetH ds, const char *path, const hfs_height_load_opts *opts,
-                     const double gt[6], float **z, hfs_error *err)
+int hfs_gdal_read_heights(GDALDatasetH ds, const char *path, const hfs_height_load_opts *opts,
+                          float **z, hfs_error *err)
 {
     const int w = GDALGetRasterXSize(ds), h = GDALGetRasterYSize(ds);
     GDALRasterBandH band = GDALGetRasterBand(ds, 1);
     *z = malloc((size_t)w * (size_t)h * sizeof **z);
     if (!*z)
         return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory for %dx%d heights", path, w, h);
-    if (GDALRasterIO(band, GF_Read, 0, 0, w, h, *z, w, h, GDT_Float32, 0, 0) != CE_None)
+    if (GDALRasterIO(band, GF_Read, 0, 0, w, h, *z, w, h, GDT_Float32, 0, 0) != CE_None) {
+        free(*z);
+        *z = NULL;
         return hfs_fail(err, HFS_E_FORMAT, "%s: GDAL could not read its band 1 (%s)", path,
                         CPLGetLastErrorMsg());
+    }
     int has_nd = 0;
     const double nd = GDALGetRasterNoDataValue(band, &has_nd);
     const int use_opts = opts && opts->has_nodata;
@@ -85,19 +83,22 @@ static int read_band(GDALDatasetH ds, const char *path, const hfs_height_load_op
     for (size_t p = 0; p < n; ++p)
         if ((use_opts || has_nd) && (*z)[p] == hole)
             (*z)[p] = NAN; /* a hole for hfs_height_fill_holes */
-    if (gt[5] > 0.0) /* south-up: row 0 becomes the north edge */
-        for (int j = 0; j < h / 2; ++j)
-            for (int i = 0; i < w; ++i) {
-                float *a = *z + (size_t)j * w + i, *b = *z + (size_t)(h - 1 - j) * w + i;
-                const float t = *a;
-                *a = *b, *b = t;
-            }
     return HFS_OK;
 }
 
-/* The opened dataset's checks: size, bands, a north-up geotransform. */
-static int check_dataset(GDALDatasetH ds, const char *path, const hfs_height_load_opts *opts,
-                         double gt[6], hfs_error *err)
+/* A south-up grid's rows flipped: row 0 becomes the north edge. */
+static void flip_rows(float *z, int w, int h)
+{
+    for (int j = 0; j < h / 2; ++j)
+        for (int i = 0; i < w; ++i) {
+            float *a = z + (size_t)j * w + i, *b = z + (size_t)(h - 1 - j) * w + i;
+            const float t = *a;
+            *a = *b, *b = t;
+        }
+}
+
+int hfs_gdal_check_dataset(GDALDatasetH ds, const char *path, const hfs_height_load_opts *opts,
+                           double gt[6], hfs_error *err)
 {
     const int w = GDALGetRasterXSize(ds), h = GDALGetRasterYSize(ds);
     const int maxw = opts && opts->max_width ? opts->max_width : HFS_HEIGHT_MAX_DIM;
@@ -129,7 +130,7 @@ static void georef(GDALDatasetH ds, const double gt[6], int w0, int h0, hfs_heig
         g[3] += g[5] * h0;
         g[5] = -g[5];
     }
-    /* (a loaded grid is at least 2 x 2, check_dataset; guarded all the same) */
+    /* (a loaded grid is at least 2 x 2, hfs_gdal_check_dataset; guarded all the same) */
     const double sx = out->width > 1 ? (w0 - 1.0) / (out->width - 1.0) : 1.0;
     const double sy = out->height > 1 ? (h0 - 1.0) / (out->height - 1.0) : 1.0;
     g[0] += 0.5 * g[1] * (1.0 - sx), g[1] *= sx;
@@ -159,9 +160,9 @@ int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
     double gt[6];
     float *z = NULL;
     int w = GDALGetRasterXSize(ds), h = GDALGetRasterYSize(ds);
-    int rc = check_dataset(ds, path, opts, gt, err);
-    if (!rc)
-        rc = read_band(ds, path, opts, gt, &z, err);
+    int rc = hfs_gdal_check_dataset(ds, path, opts, gt, err);
+    if (!rc && !(rc = hfs_gdal_read_heights(ds, path, opts, &z, err)) && gt[5] > 0.0)
+        flip_rows(z, w, h);
     /* Holes filled on the file's own grid, before any resampling spreads them. */
     long holes = 0;
     hfs_error ferr;
@@ -170,11 +171,11 @@ int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
         rc = hfs_fail(err, frc, "%s: %s", path, ferr.msg);
     double cx = 0.0, cy = 0.0, cell = 0.0;
     if (!rc && gt[1] != 0.0) {
-        cell_metres(ds, gt, h, &cx, &cy);
+        hfs_gdal_cell_metres(GDALGetProjectionRef(ds), gt, h, &cx, &cy);
         cell = cx;
         if (fabs(cx - cy) > 1e-6 * fmax(cx, cy)) {
             const int w0 = w, h0 = h;
-            if ((rc = make_square(&z, &w, &h, cx, cy, &cell)))
+            if ((rc = hfs_gdal_make_square(&z, &w, &h, cx, cy, &cell)))
                 rc = hfs_fail(err, rc, "%s: out of memory resampling to square cells", path);
             else
                 snprintf(out->note, sizeof out->note, "%s: resampled %dx%d cells of %.4g x "

@@ -1,0 +1,410 @@
+/*
+ * test_gis_cli.c — `hfshade svf | horizon | openness` end to end (issue
+ * 39; tools/cli_gis.c, tools/gis/), on DEMs written here with GDAL and
+ * outputs read back with GDAL's C API (gdal-bin is not installed):
+ *   geo      a 64x48 GeoTIFF in EPSG:4326, 3 arc-second cells at 36 N
+ *            (about 75 x 92 m: not square, so computed on 64x59 square
+ *            cells and sampled back), hills and a valley, 5 nodata texels
+ *            (-32768): every product comes back 64x48 with the input's
+ *            geotransform, CRS, nodata (the input's -32768, outside every
+ *            product's range), nodata exactly at the holes, the rest
+ *            finite and in the product's range, the metadata naming it;
+ *   gles ~ truth  the sky-view factor of the GLES renderer (the product,
+ *            fp16) against the ground truth's within the bound below;
+ *   flat     a flat DEM (UTM, square cells, holes, no declared nodata but
+ *            NaN holes): sky-view factor exactly 1, openness 90 / 90, the
+ *            nodata value -9999;
+ *   conventions  horizon --azimuths 90 --convention compass is the same
+ *            raster as --azimuths 0 (ccw-east): both look east; names
+ *            PREFIX_000.tif, PREFIX_090.tif, PREFIX_022_5.tif;
+ *   orientation  the same ground written south-up or west-running: the
+ *            same horizons, on the file's own grid (rows or columns
+ *            reversed), looking the same way on the ground;
+ *   --cog    a Cloud Optimized GeoTIFF (GDAL says LAYOUT=COG);
+ *   --help   exit 0, "Usage:" on stdout; bad inputs: non-zero, one line on
+ *            stderr, no output file.
+ * The GLES runs need a GL context: without one (and HFS_REQUIRE_GL unset)
+ * the rest still runs and the test exits 77 at the end.
+ *
+ * gles vs truth, sky-view factor, 16 directions, whole DEM, over the 3067
+ * texels with data (RelWithDebInfo, llvmpipe, Mesa 22.3.6): mean 8.41e-6,
+ * max 1.76e-4 (the CPU reference: 7.83e-6, 1.75e-4, so nearly all of it is
+ * the gap search's, hfshade.h hfs_renderer_horizons, not fp16's); the
+ * bounds are 1.2x those.
+ */
+#define _XOPEN_SOURCE 700 /* realpath */
+
+#include "gdal_fixture.h"
+#include "gl_require.h"
+#include "test_util.h"
+
+#include <gdal.h>
+#include <ogr_srs_api.h>
+
+#include <math.h>
+#include <stdarg.h>
+#include <sys/wait.h>
+
+#define W 64
+#define H 48
+#define ND (-32768.0)
+#define SVF_MEAN_BOUND 1.01e-5
+#define SVF_MAX_BOUND 2.12e-4
+
+static const char *hfshade;
+static int gl_missing;
+
+/* ---- files in ------------------------------------------------------------ */
+
+static void write_dem(const char *name, const float *z, const double gt[6], int epsg,
+                      int has_nd)
+{
+    CHECK(gdal_fixture_write("GTiff", tpath(name), W, H, z, gt, epsg, has_nd, ND, GDT_Float32) ==
+          0);
+}
+
+/* Hills and a north-south valley, metres; holes at five texels. */
+static void terrain(float *z, float hole)
+{
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i < W; ++i) {
+            const double a = hypot(i - 18.0, j - 14.0), b = hypot(i - 46.0, j - 32.0);
+            z[j * W + i] = (float)(300.0 + 180.0 * exp(-a * a / 60.0) + 140.0 * exp(-b * b / 90.0) +
+                                   25.0 * fabs(i - 32.0) / 8.0 + 10.0 * sin(0.4 * j));
+        }
+    static const int holes[][2] = {{5, 5}, {30, 20}, {31, 20}, {63, 47}, {0, 40}};
+    for (int k = 0; k < 5; ++k)
+        z[holes[k][1] * W + holes[k][0]] = hole;
+}
+
+/* ---- running the tool ---------------------------------------------------- */
+
+/* Runs `hfshade ARGS`, stdout and stderr to files; its exit status. */
+static int run(const char *fmt, ...)
+{
+    char args[2048], cmd[4096];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(args, sizeof args, fmt, ap);
+    va_end(ap);
+    snprintf(cmd, sizeof cmd, "cd %s && %s %s >out.txt 2>err.txt", tmpdir, hfshade, args);
+    const int st = system(cmd);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : 128;
+}
+
+/* The lines of a file (0 when it cannot be read). */
+static int lines_of(const char *name)
+{
+    size_t n = 0;
+    unsigned char *b = read_all(tpath(name), &n);
+    int lines = 0;
+    for (size_t k = 0; b && k < n; ++k)
+        lines += b[k] == '\n';
+    free(b);
+    return lines;
+}
+
+/* A GLES run that failed: a skip when no GL context can be made here. */
+static int gles_failed(const char *what)
+{
+    hfs_error why = {""};
+    if (hfs_gl_missing_device(&why)) {
+        printf("SKIP (gles parts): %s: %s\n", what, why.msg);
+        gl_missing = 1;
+        return 1;
+    }
+    return 0;
+}
+
+/* ---- files out ----------------------------------------------------------- */
+
+typedef struct raster {
+    int w, h, bands, has_nd;
+    double nd, gt[6];
+    float *v;
+    char wkt[4096], layout[32];
+    GDALDatasetH ds;
+} raster;
+
+static int read_raster(const char *name, raster *r)
+{
+    memset(r, 0, sizeof *r);
+    if (!(r->ds = GDALOpen(tpath(name), GA_ReadOnly)))
+        return -1;
+    r->w = GDALGetRasterXSize(r->ds), r->h = GDALGetRasterYSize(r->ds);
+    r->bands = GDALGetRasterCount(r->ds);
+    GDALGetGeoTransform(r->ds, r->gt);
+    snprintf(r->wkt, sizeof r->wkt, "%s", GDALGetProjectionRef(r->ds));
+    const char *layout = GDALGetMetadataItem(r->ds, "LAYOUT", "IMAGE_STRUCTURE");
+    snprintf(r->layout, sizeof r->layout, "%s", layout ? layout : "");
+    r->v = malloc(sizeof(float) * (size_t)r->w * r->h * r->bands);
+    for (int b = 0; b < r->bands; ++b) {
+        GDALRasterBandH band = GDALGetRasterBand(r->ds, b + 1);
+        int has = 0;
+        const double nd = GDALGetRasterNoDataValue(band, &has);
+        r->has_nd = b ? r->has_nd && has && nd == r->nd : has;
+        r->nd = nd;
+        if (GDALRasterIO(band, GF_Read, 0, 0, r->w, r->h, r->v + (size_t)b * r->w * r->h, r->w,
+                         r->h, GDT_Float32, 0, 0) != CE_None)
+            return -1;
+    }
+    return 0;
+}
+
+static void free_raster(raster *r)
+{
+    if (r->ds)
+        GDALClose(r->ds);
+    free(r->v);
+}
+
+static const char *meta(const raster *r, const char *key)
+{
+    const char *v = GDALGetMetadataItem(r->ds, key, NULL);
+    return v ? v : "";
+}
+
+/* name: the input's grid, CRS and nodata nd at exactly the holes of z
+ * (NaN or -32768), every other value finite and in [lo, hi]. */
+static void check_grid(const char *name, const raster *in, const float *z, double nd,
+                       double lo, double hi)
+{
+    raster r;
+    REQUIRE(read_raster(name, &r) == 0, "%s does not open", name);
+    OGRSpatialReferenceH a = OSRNewSpatialReference(in->wkt), b = OSRNewSpatialReference(r.wkt);
+    CHECK(r.w == W && r.h == H && !memcmp(r.gt, in->gt, sizeof r.gt));
+    CHECK(a && b && OSRIsSame(a, b));
+    OSRDestroySpatialReference(a), OSRDestroySpatialReference(b);
+    CHECK(r.has_nd && (r.nd == nd || (isnan(nd) && isnan(r.nd))));
+    long wrong = 0;
+    for (int band = 0; band < r.bands; ++band)
+        for (int p = 0; p < W * H; ++p) {
+            const float v = r.v[band * W * H + p];
+            const int hole = isnan(z[p]) || z[p] == (float)ND;
+            wrong += hole ? v != (float)nd : !(isfinite(v) && v >= lo && v <= hi);
+        }
+    if (wrong)
+        fprintf(stderr, "%s: %ld texels not nodata at a hole or out of [%g, %g]\n", name, wrong,
+                lo, hi);
+    CHECK(wrong == 0);
+    free_raster(&r);
+}
+
+/* ---- the checks ---------------------------------------------------------- */
+
+/* Sky-view factor, openness and horizons of the geographic DEM on the
+ * CPU reference: grid, CRS, nodata, ranges, metadata. */
+static void test_products(const raster *in, const float *z)
+{
+    REQUIRE(run("svf geo.tif -o svf_cpu.tif --backend cpu") == 0, "svf --backend cpu failed");
+    check_grid("svf_cpu.tif", in, z, ND, 0.0, 1.0);
+    raster r;
+    REQUIRE(read_raster("svf_cpu.tif", &r) == 0, "svf_cpu.tif");
+    CHECK(!strcmp(meta(&r, "HFS_PRODUCT"), "svf") && !strcmp(meta(&r, "HFS_SVF"), "zaksek"));
+    CHECK(!strcmp(meta(&r, "HFS_DIRECTIONS"), "16") && !strcmp(meta(&r, "HFS_RADIUS_M"), "0"));
+    CHECK(!strcmp(meta(&r, "HFS_AZIMUTH_CONVENTION"), "ccw-east"));
+    CHECK(!strcmp(meta(&r, "HFS_BACKEND"), "cpu"));
+    free_raster(&r);
+
+    REQUIRE(run("openness geo.tif -o open.tif --backend cpu --directions 8") == 0,
+            "openness failed");
+    check_grid("open.tif", in, z, ND, 0.0, 180.0);
+    REQUIRE(read_raster("open.tif", &r) == 0 && r.bands == 2, "open.tif: not 2 bands");
+    CHECK(!strcmp(meta(&r, "HFS_PRODUCT"), "openness"));
+    CHECK(atof(meta(&r, "HFS_RADIUS_M")) > 900.0); /* 10 cells of about 92 m */
+    free_raster(&r);
+
+    REQUIRE(run("horizon geo.tif -o hor --step 22.5 --backend cpu --radius 2000") == 0,
+            "horizon --step 22.5 failed");
+    static const char *const names[] = {"hor_000_0.tif", "hor_022_5.tif", "hor_180_0.tif",
+                                        "hor_337_5.tif"};
+    for (int k = 0; k < 4; ++k)
+        check_grid(names[k], in, z, ND, 0.0, 90.0);
+    CHECK(access(tpath("hor_360_0.tif"), F_OK) != 0 && lines_of("err.txt") == 1);
+}
+
+/* gles against truth on the geographic DEM; the measured error printed. */
+static void test_gles_truth(const raster *in, const float *z)
+{
+    REQUIRE(run("svf geo.tif -o svf_truth.tif --backend truth") == 0, "svf truth failed");
+    if (run("svf geo.tif -o svf_gles.tif") != 0) {
+        REQUIRE(gles_failed("svf --backend gles"), "svf --backend gles failed");
+        return;
+    }
+    check_grid("svf_gles.tif", in, z, ND, 0.0, 1.0);
+    raster g, t;
+    REQUIRE(read_raster("svf_gles.tif", &g) == 0 && read_raster("svf_truth.tif", &t) == 0,
+            "svf rasters");
+    double sum = 0.0, max = 0.0;
+    int n = 0;
+    for (int p = 0; p < W * H; ++p)
+        if (t.v[p] != (float)ND) {
+            const double e = fabs((double)g.v[p] - t.v[p]);
+            sum += e, max = fmax(max, e), ++n;
+        }
+    printf("svf gles vs truth: mean %.3g, max %.3g over %d texels (bounds %.3g, %.3g)\n",
+           sum / n, max, n, SVF_MEAN_BOUND, SVF_MAX_BOUND);
+    CHECK(sum / n <= SVF_MEAN_BOUND && max <= SVF_MAX_BOUND);
+    CHECK(!strcmp(meta(&g, "HFS_BACKEND"), "gles"));
+    free_raster(&g), free_raster(&t);
+}
+
+/* A flat DEM: sky-view factor exactly 1, openness 90 / 90; NaN holes and
+ * no declared nodata: -9999. */
+static void test_flat(void)
+{
+    float z[W * H];
+    for (int p = 0; p < W * H; ++p)
+        z[p] = p == 7 * W + 9 || p == 40 * W + 50 ? NAN : 250.0f;
+    const double gt[6] = {500000.0, 30.0, 0.0, 4000000.0, 0.0, -30.0};
+    write_dem("flat.tif", z, gt, 32617, 0);
+    raster f;
+    REQUIRE(read_raster("flat.tif", &f) == 0, "flat.tif");
+    if (run("svf flat.tif -o flat_svf.tif") != 0)
+        REQUIRE(gles_failed("svf flat --backend gles"), "svf flat failed");
+    else
+        check_grid("flat_svf.tif", &f, z, -9999.0, 1.0, 1.0);
+    REQUIRE(run("openness flat.tif -o flat_open.tif --backend cpu") == 0, "openness flat");
+    check_grid("flat_open.tif", &f, z, -9999.0, 90.0, 90.0);
+    free_raster(&f);
+}
+
+/* compass 90 and ccw-east 0 are both east: the same raster, named each
+ * in its own convention; --cog writes a COG. */
+static void test_conventions(void)
+{
+    REQUIRE(run("horizon geo.tif -o east --azimuths 0 --backend truth") == 0, "east");
+    REQUIRE(run("horizon geo.tif -o east --azimuths 90 --convention compass --backend truth "
+                "--cog") == 0, "compass east");
+    raster a, b;
+    REQUIRE(read_raster("east_000.tif", &a) == 0 && read_raster("east_090.tif", &b) == 0,
+            "east_000.tif, east_090.tif");
+    CHECK(!memcmp(a.v, b.v, sizeof(float) * W * H));
+    CHECK(!strcmp(meta(&b, "HFS_AZIMUTH_CONVENTION"), "compass"));
+    CHECK(!strcmp(meta(&b, "HFS_AZIMUTH"), "90") && !strcmp(b.layout, "COG"));
+    CHECK(strcmp(a.layout, "COG"));
+    free_raster(&a), free_raster(&b);
+}
+
+/* The same ground in UTM, north-up and south-up (rows from the south
+ * edge, a positive row step): the south-up file's horizon raster at
+ * ccw-east 30 (north-east) is the north-up one's with its rows reversed,
+ * on its own geotransform; a west-running copy (columns east to west)
+ * likewise with its columns reversed. */
+static void test_orientation(const float *z)
+{
+    float s[W * H], e[W * H];
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i < W; ++i) {
+            s[(H - 1 - j) * W + i] = z[j * W + i];
+            e[j * W + (W - 1 - i)] = z[j * W + i];
+        }
+    const double north[6] = {500000.0, 30.0, 0.0, 4000000.0 + 30.0 * H, 0.0, -30.0};
+    const double south[6] = {500000.0, 30.0, 0.0, 4000000.0, 0.0, 30.0};
+    const double west[6] = {500000.0 + 30.0 * W, -30.0, 0.0, 4000000.0 + 30.0 * H, 0.0, -30.0};
+    write_dem("utm_n.tif", z, north, 32617, 1);
+    write_dem("utm_s.tif", s, south, 32617, 1);
+    write_dem("utm_w.tif", e, west, 32617, 1);
+    REQUIRE(run("horizon utm_n.tif -o hn --azimuths 30 --backend cpu") == 0 &&
+                run("horizon utm_s.tif -o hs --azimuths 30 --backend cpu") == 0 &&
+                run("horizon utm_w.tif -o hw --azimuths 30 --backend cpu") == 0,
+            "horizon of utm_[nsw].tif failed");
+    raster n, so, w;
+    REQUIRE(read_raster("hn_030.tif", &n) == 0 && read_raster("hs_030.tif", &so) == 0 &&
+                read_raster("hw_030.tif", &w) == 0, "hn_030.tif, hs_030.tif, hw_030.tif");
+    CHECK(!memcmp(so.gt, south, sizeof south) && !memcmp(w.gt, west, sizeof west));
+    double ds = 0.0, dw = 0.0, top = 0.0;
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i < W; ++i) {
+            const float a = n.v[j * W + i];
+            ds = fmax(ds, fabs(a - so.v[(H - 1 - j) * W + i]));
+            dw = fmax(dw, fabs(a - w.v[j * W + (W - 1 - i)]));
+            top = fmax(top, a == (float)ND ? 0.0 : a);
+        }
+    printf("orientation: south-up off by %.3g deg, west-running by %.3g (horizons to %.3g)\n", ds,
+           dw, top);
+    CHECK(ds < 1e-4 && dw < 1e-4 && top > 5.0);
+    free_raster(&n), free_raster(&so), free_raster(&w);
+}
+
+/* A bad command or input: non-zero, one line on stderr, out not there. */
+static void bad(const char *out, const char *args)
+{
+    const int rc = run("%s", args);
+    const int lines = lines_of("err.txt");
+    if (rc == 0 || lines != 1 || access(tpath(out), F_OK) == 0)
+        fprintf(stderr, "hfshade %s: exit %d, %d stderr lines, %s %s\n", args, rc, lines, out,
+                access(tpath(out), F_OK) == 0 ? "written" : "not written");
+    CHECK(rc != 0 && lines == 1 && access(tpath(out), F_OK) != 0);
+}
+
+static void test_bad_inputs(void)
+{
+    CHECK(run("svf --help") == 0 && lines_of("err.txt") == 0);
+    size_t n = 0;
+    unsigned char *text = read_all(tpath("out.txt"), &n);
+    CHECK(text && n > 6 && !memcmp(text, "Usage: hfshade svf DEM", 22));
+    free(text);
+    write_bytes(tpath("notes.txt"), "not a raster\n", 13);
+    bad("x.tif", "svf missing.tif -o x.tif");
+    bad("x.tif", "svf notes.txt -o x.tif");
+    bad("x.tif", "svf geo.tif -o x.tif --directions 0");
+    bad("x.tif", "svf geo.tif -o x.tif --radius -5");
+    bad("x.tif", "svf geo.tif -o x.tif --backend vulkan");
+    bad("x.tif", "svf geo.tif -o x.tif --bogus");
+    bad("x.tif", "openness geo.tif -o x.tif --lambertian");
+    bad("x.tif", "svf geo.tif");
+    size_t n0 = 0, n1 = 0;
+    unsigned char *before = read_all(tpath("geo.tif"), &n0);
+    bad("geo_svf.tif", "svf geo.tif -o geo.tif"); /* the input named as the output */
+    unsigned char *after = read_all(tpath("geo.tif"), &n1);
+    CHECK(before && after && n0 == n1 && !memcmp(before, after, n0));
+    free(before), free(after);
+    bad("x_000.tif", "horizon geo.tif -o x");
+    bad("x_000.tif", "horizon geo.tif -o x --azimuths 0,360");
+    bad("x_000.tif", "horizon geo.tif -o x --azimuths 0,abc");
+    bad("x_000.tif", "horizon geo.tif -o x --step 0");
+    bad("x_000.tif", "horizon geo.tif -o x --step 90 --azimuths 10");
+    bad("x_000.tif", "horizon geo.tif -o nodir/x --azimuths 0 --backend cpu");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fprintf(stderr, "usage: test_gis_cli HFSHADE\n");
+        return 2;
+    }
+    static char exe[4096]; /* absolute: the runs start in the temporary folder */
+    if (!realpath(argv[1], exe)) {
+        perror(argv[1]);
+        return 1;
+    }
+    hfshade = exe;
+    GDALAllRegister();
+    if (make_tmpdir("gis_cli"))
+        return 1;
+    float z[W * H];
+    terrain(z, (float)ND);
+    const double arc = 3.0 / 3600.0;
+    const double gt[6] = {-84.0, arc, 0.0, 36.0 + H * arc, 0.0, -arc};
+    write_dem("geo.tif", z, gt, 4326, 1);
+    raster in;
+    if (read_raster("geo.tif", &in) == 0) {
+        test_products(&in, z);
+        test_gles_truth(&in, z);
+        test_flat();
+        test_conventions();
+        test_orientation(z);
+        test_bad_inputs();
+    } else {
+        CHECK(!"geo.tif written and read");
+    }
+    free_raster(&in);
+    if (!getenv("HFS_TEST_KEEP"))
+        rm_tmpdir();
+    else
+        printf("kept %s\n", tmpdir);
+    if (!failures && gl_missing)
+        return 77;
+    return finish_checks("test_gis_cli");
+}

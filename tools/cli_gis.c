@@ -1,0 +1,306 @@
+/*
+ * cli_gis.c — the GIS commands' command line (cli_gis.h).  One table of
+ * options serves the parser (which command takes which option, and
+ * whether it takes a value) and the usage, printed GDAL-style (a "Usage:"
+ * synopsis, then one option a line).  Values are checked here, before any
+ * file is opened; an option given twice is an error, as in `render`.
+ */
+#include "cli_gis.h"
+
+#include "cli_usage.h"
+#include "gis_command.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { SVF = 1 << GIS_SVF, HOR = 1 << GIS_HORIZON, OPEN = 1 << GIS_OPENNESS, ALL = 7 };
+
+typedef struct gis_opt {
+    const char *name, *arg; /* arg NULL: a switch                            */
+    unsigned cmds;          /* the commands that take it                     */
+    const char *help;
+} gis_opt;
+
+static const gis_opt opts[] = {
+    {"-o", "OUT.tif", SVF | OPEN, "the GeoTIFF written (Float32, the DEM's grid)"},
+    {"-o", "PREFIX", HOR, "the GeoTIFFs written: PREFIX_AAA.tif an azimuth (r.horizon's names)"},
+    {"--directions", "N", SVF, "azimuths, equally spaced from east (1..1024; default 16)"},
+    {"--directions", "N", OPEN, "azimuths, equally spaced from east (1..1024; default 8)"},
+    {"--lambertian", NULL, SVF, "the Lambertian-weighted variant, mean cos^2 (SAGA's)"},
+    {"--azimuths", "A,B,...", HOR, "these azimuths, degrees (or --step)"},
+    {"--step", "DEG", HOR, "every DEG degrees around the circle, in (0, 360]"},
+    {"--start", "DEG", HOR, "with --step: the first azimuth (default 0)"},
+    {"--convention", "ccw-east|compass", HOR,
+     "ccw-east: degrees counter-clockwise from east (GRASS r.horizon's; default); "
+     "compass: clockwise from north"},
+    {"--radius", "R", SVF | HOR, "search radius, metres (default 0: the whole DEM)"},
+    {"--radius", "R", OPEN, "search radius, metres (default 10 cells of the DEM)"},
+    {"--backend", "gles|cpu|truth", ALL, "GLES renderer (default), CPU reference, ground truth"},
+    {"--zscale", "F", ALL, "heights times F are metres (default 1)"},
+    {"--nodata", "V", ALL, "V marks holes (instead of the band's nodata value)"},
+    {"--cog", NULL, ALL, "a Cloud Optimized GeoTIFF (GDAL's COG driver)"},
+    {"--quiet", NULL, ALL, "no summary line on stderr"},
+    {"--help", NULL, ALL, "this text"},
+};
+#define N_OPTS (sizeof opts / sizeof opts[0])
+
+static const char *const what[] = {
+    "Sky-view factor (Zaksek et al. 2011): 1 - mean sin(max(gamma, 0)) over the\n"
+    "directions (gamma: the horizon's elevation angle), 1 on a plane; one band.",
+    "Horizon elevation angle (GRASS r.horizon -d): degrees above the horizontal,\n"
+    "0 where nothing rises above it; one GeoTIFF per azimuth.",
+    "Topographic openness (Yokoyama et al. 2002): the mean of 90 - gamma over the\n"
+    "directions, degrees, gamma signed (from the texel); band 1 positive, band 2\n"
+    "negative openness (the positive openness of the negated DEM)."};
+
+static const gis_opt *find(const char *name, gis_product p)
+{
+    for (size_t k = 0; k < N_OPTS; ++k)
+        if (!strcmp(opts[k].name, name) && (opts[k].cmds & (1u << p)))
+            return &opts[k];
+    return NULL;
+}
+
+/* "  NAME ARG   help", the help wrapped at 79 columns under itself (a NAME
+ * ARG too long for its column gets a line of its own). */
+static void print_option(const gis_opt *o)
+{
+    enum { COL = 29, WIDTH = 79 };
+    char head[64];
+    snprintf(head, sizeof head, "%s%s%s", o->name, o->arg ? " " : "", o->arg ? o->arg : "");
+    int col = printf("  %-*s", COL - 3, head);
+    if (col > COL - 1) {
+        printf("\n");
+        col = printf("%*s", COL - 1, "");
+    }
+    for (const char *w = o->help; *w;) {
+        const char *end = strchr(w, ' ');
+        const int len = end ? (int)(end - w) : (int)strlen(w);
+        if (col + 1 + len > WIDTH)
+            col = printf("\n%*s", COL - 1, "") - 1;
+        col += printf(" %.*s", len, w);
+        w += len + (end ? 1 : 0);
+    }
+    printf("\n");
+}
+
+static void usage(const char *cmd, gis_product p)
+{
+    char line[512];
+    int n = snprintf(line, sizeof line, "Usage: hfshade %s DEM -o %s", cmd,
+                     p == GIS_HORIZON ? "PREFIX" : "OUT.tif");
+    const int indent = (int)strlen("Usage: hfshade ") + (int)strlen(cmd) + 1;
+    for (size_t k = 0; k < N_OPTS; ++k) {
+        if (!(opts[k].cmds & (1u << p)) || !strcmp(opts[k].name, "-o") ||
+            !strcmp(opts[k].name, "--help"))
+            continue;
+        char item[96];
+        const int m = snprintf(item, sizeof item, " [%s%s%s]", opts[k].name,
+                               opts[k].arg ? " " : "", opts[k].arg ? opts[k].arg : "");
+        if (n + m > 78) {
+            printf("%s\n", line);
+            n = snprintf(line, sizeof line, "%*s", indent - 1, "");
+        }
+        n += snprintf(line + n, sizeof line - (size_t)n, "%s", item);
+    }
+    printf("%s\n\n%s\nFloat32, on DEM's own grid: its size, geotransform, CRS and nodata\n"
+           "(docs/GIS.md).\n\nOptions:\n", line, what[p]);
+    for (size_t k = 0; k < N_OPTS; ++k)
+        if (opts[k].cmds & (1u << p))
+            print_option(&opts[k]);
+}
+
+/* --azimuths A,B,...: each in [-1e6, 1e6] degrees, at most 1024. */
+static int parse_azimuths(gis_args *a, const char *v)
+{
+    a->n_azimuths = 0;
+    for (const char *s = v; a->n_azimuths <= HFS_MAX_HORIZON_AZIMUTHS;) {
+        const char *comma = strchr(s, ',');
+        char item[64];
+        const size_t len = comma ? (size_t)(comma - s) : strlen(s);
+        double x;
+        if (len >= sizeof item)
+            return -1;
+        memcpy(item, s, len);
+        item[len] = '\0';
+        if (hfs_cli_real(item, -1e6, 1e6, &x))
+            return -1;
+        if (a->n_azimuths == HFS_MAX_HORIZON_AZIMUTHS)
+            return -1;
+        a->azimuth[a->n_azimuths++] = x;
+        const int d = gis_decimals_of(item);
+        a->decimals = d > a->decimals ? d : a->decimals;
+        if (!comma)
+            return 0;
+        s = comma + 1;
+    }
+    return -1;
+}
+
+/* One option's value into a; 0, or the usage error's exit status. */
+static int set_value(gis_args *a, const char *prog, const char *name, const char *v,
+                     double *step, double *start, const char **step_s, const char **start_s)
+{
+    long n;
+    if (!strcmp(name, "-o")) {
+        a->out = v;
+    } else if (!strcmp(name, "--directions")) {
+        if (hfs_cli_long(v, 1, HFS_MAX_HORIZON_AZIMUTHS, &n))
+            return hfs_usage_error(prog, "--directions: '%s' is not a whole number in [1, %d]",
+                                   v, HFS_MAX_HORIZON_AZIMUTHS);
+        a->directions = (int)n;
+    } else if (!strcmp(name, "--azimuths")) {
+        if (parse_azimuths(a, v))
+            return hfs_usage_error(prog, "--azimuths: '%s' is not a list of 1 to %d angles in "
+                                   "degrees (A,B,...)", v, HFS_MAX_HORIZON_AZIMUTHS);
+    } else if (!strcmp(name, "--step") || !strcmp(name, "--start")) {
+        const int is_step = !strcmp(name, "--step");
+        double x;
+        if (hfs_cli_real(v, is_step ? 1e-6 : -1e6, is_step ? 360.0 : 1e6, &x))
+            return hfs_usage_error(prog, "%s: '%s' is not %s", name, v,
+                                   is_step ? "an angle in (0, 360] degrees"
+                                           : "an angle in degrees");
+        *(is_step ? step : start) = x;
+        *(is_step ? step_s : start_s) = v;
+    } else if (!strcmp(name, "--convention")) {
+        if (strcmp(v, "ccw-east") && strcmp(v, "compass"))
+            return hfs_usage_error(prog, "--convention: '%s' is not ccw-east or compass", v);
+        a->convention = !strcmp(v, "compass") ? GIS_COMPASS : GIS_CCW_EAST;
+    } else if (!strcmp(name, "--radius")) {
+        if (hfs_cli_real(v, 0.0, 1e9, &a->radius))
+            return hfs_usage_error(prog, "--radius: '%s' is not a distance in [0, 1e9] metres",
+                                   v);
+        a->radius_given = 1;
+    } else if (!strcmp(name, "--backend")) {
+        static const char *const names[] = {"gles", "cpu", "truth"};
+        static const hfs_backend b[] = {HFS_BACKEND_GLES, HFS_BACKEND_CPU, HFS_BACKEND_TRUTH};
+        int k = 0;
+        while (k < 3 && strcmp(v, names[k]))
+            ++k;
+        if (k == 3)
+            return hfs_usage_error(prog, "--backend: '%s' is not gles, cpu or truth", v);
+        a->backend = b[k];
+    } else if (!strcmp(name, "--zscale")) {
+        if (hfs_cli_real(v, 1e-9, 1e6, &a->zscale))
+            return hfs_usage_error(prog, "--zscale: '%s' is not a number in [1e-9, 1e6]", v);
+    } else { /* --nodata */
+        double x;
+        if (hfs_cli_real(v, -FLT_MAX, FLT_MAX, &x))
+            return hfs_usage_error(prog, "--nodata: '%s' is not a finite number", v);
+        a->load.has_nodata = 1, a->load.nodata = (float)x;
+    }
+    return 0;
+}
+
+/* --step's azimuths: START, START + STEP, ... once around the circle. */
+static int step_azimuths(gis_args *a, const char *prog, double step, double start,
+                         const char *step_s, const char *start_s)
+{
+    const double count = ceil(360.0 / step - 1e-9);
+    if (count > HFS_MAX_HORIZON_AZIMUTHS)
+        return hfs_usage_error(prog, "--step: %s degrees makes %.0f azimuths (at most %d)",
+                               step_s, count, HFS_MAX_HORIZON_AZIMUTHS);
+    a->n_azimuths = (int)count;
+    for (int k = 0; k < a->n_azimuths; ++k)
+        a->azimuth[k] = start + k * step;
+    const int ds = gis_decimals_of(step_s), d0 = start_s ? gis_decimals_of(start_s) : 0;
+    a->decimals = ds > d0 ? ds : d0;
+    a->decimals = a->decimals > 6 ? 6 : a->decimals;
+    return 0;
+}
+
+/* What the options left to check together. */
+static int check_args(gis_args *a, const char *prog, double step, double start,
+                      const char *step_s, const char *start_s)
+{
+    if (!a->dem)
+        return hfs_usage_error(prog, "no DEM given");
+    if (!a->out)
+        return hfs_usage_error(prog, "no output given (-o %s)",
+                               a->product == GIS_HORIZON ? "PREFIX" : "OUT.tif");
+    if (a->product != GIS_HORIZON)
+        return 0;
+    if (a->n_azimuths && step_s)
+        return hfs_usage_error(prog, "--azimuths and --step: give one of them");
+    if (start_s && !step_s)
+        return hfs_usage_error(prog, "--start: only with --step");
+    if (!a->n_azimuths && !step_s)
+        return hfs_usage_error(prog, "no azimuths (--azimuths A,B,... or --step DEG)");
+    if (step_s)
+        return step_azimuths(a, prog, step, start, step_s, start_s);
+    a->decimals = a->decimals > 6 ? 6 : a->decimals;
+    return 0;
+}
+
+/* argv into a; 0, -1 (--help printed) or a usage error's exit status. */
+static int parse(int argc, char **argv, gis_args *a)
+{
+    char prog[32]; /* "hfshade svf": the usage errors point at its --help */
+    snprintf(prog, sizeof prog, "hfshade %s", argv[0]);
+    double step = 0.0, start = 0.0;
+    const char *step_s = NULL, *start_s = NULL;
+    for (int i = 1; i < argc; ++i) {
+        const char *s = argv[i];
+        if (hfs_is_help(s)) {
+            usage(argv[0], a->product);
+            return -1;
+        }
+        if (s[0] != '-' || !s[1]) {
+            if (a->dem)
+                return hfs_usage_error(prog, "%s: unexpected argument", s);
+            a->dem = s;
+            continue;
+        }
+        const gis_opt *o = find(s, a->product);
+        if (!o)
+            return hfs_usage_error(prog, "%s: unknown option", s);
+        for (int j = 1; j < i; ++j)
+            if (!strcmp(argv[j], s))
+                return hfs_usage_error(prog, "%s: given twice (once is allowed)", s);
+        if (!o->arg) {
+            a->svf = !strcmp(s, "--lambertian") ? GIS_SVF_LAMBERTIAN : a->svf;
+            a->cog |= !strcmp(s, "--cog");
+            a->quiet |= !strcmp(s, "--quiet");
+            continue;
+        }
+        if (i + 1 >= argc)
+            return hfs_usage_error(prog, "%s: missing value", s);
+        const int rc = set_value(a, prog, s, argv[++i], &step, &start, &step_s, &start_s);
+        if (rc)
+            return rc;
+    }
+    return check_args(a, prog, step, start, step_s, start_s);
+}
+
+int hfs_cli_is_gis(const char *name)
+{
+    return !strcmp(name, "svf") || !strcmp(name, "horizon") || !strcmp(name, "openness");
+}
+
+int hfs_cli_gis(int argc, char **argv)
+{
+    gis_args a = {.product = !strcmp(argv[0], "svf")       ? GIS_SVF
+                             : !strcmp(argv[0], "horizon") ? GIS_HORIZON
+                                                           : GIS_OPENNESS,
+                  .backend = HFS_BACKEND_GLES,
+                  .zscale = 1.0};
+    a.directions = a.product == GIS_SVF ? 16 : 8;
+    double azimuth[HFS_MAX_HORIZON_AZIMUTHS];
+    a.azimuth = azimuth;
+    int rc = parse(argc, argv, &a); /* --help, and a bad command line, with or without GDAL */
+    if (rc)
+        return rc < 0 ? 0 : rc;
+#ifdef HFS_HAVE_GDAL
+    hfs_error err = {{0}};
+    if ((rc = gis_command_run(&a, &err)))
+        fprintf(stderr, "hfshade: %s\n", err.msg);
+    return rc ? 1 : 0;
+#else
+    fprintf(stderr, "hfshade: %s: this hfshade was built without GDAL (the GIS commands read "
+            "and write rasters through it)\n", argv[0]);
+    return 1;
+#endif
+}

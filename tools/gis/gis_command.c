@@ -1,0 +1,234 @@
+/*
+ * gis_command.c — see gis_command.h.  The order keeps a failure cheap and
+ * clean: the outputs are checked before the DEM is read, the DEM before a
+ * renderer (a GL context) is made, and every file is a temporary until
+ * the last one is written.
+ */
+#include "gis_command.h"
+
+#include "gis_outputs.h"
+#include "gis_products.h"
+#include "gis_raster.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define META_LEN 128
+
+typedef struct run {
+    const gis_args *a;
+    gis_outputs *outs;
+    char prefix[4096];       /* horizon: -o without a trailing .tif         */
+    char **names;            /* horizon: the n_azimuths file names          */
+    gis_dem dem;
+    gis_compute c;
+    char meta[GIS_RASTER_MAX_META - 2][META_LEN]; /* the items every file has */
+    int n_meta;
+} run;
+
+static const char *const product_name[] = {"svf", "horizon", "openness"};
+static const char *const backend_name[] = {"gles", "gles", "cpu", "truth"};
+
+static void meta(run *r, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+static void meta(run *r, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(r->meta[r->n_meta++], META_LEN, fmt, ap);
+    va_end(ap);
+}
+
+/* The horizon command's file names: PREFIX (a trailing .tif dropped) and
+ * each azimuth, as r.horizon names its maps; two azimuths of one name are
+ * an error (0 and 360 are one direction). */
+static int horizon_names(run *r, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    char *prefix = r->prefix;
+    if (snprintf(prefix, sizeof r->prefix, "%s", a->out) >= (int)sizeof r->prefix)
+        return hfs_fail(err, HFS_E_INVALID, "%s: output prefix too long", a->out);
+    const size_t len = strlen(prefix);
+    if (len > 4 && !strcmp(prefix + len - 4, ".tif"))
+        prefix[len - 4] = '\0';
+    if (!(r->names = calloc((size_t)a->n_azimuths, sizeof *r->names)))
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", a->out);
+    for (int k = 0; k < a->n_azimuths; ++k) {
+        char name[sizeof r->prefix + 32];
+        if (gis_horizon_name(name, sizeof name, prefix, a->azimuth[k], a->decimals) ||
+            !(r->names[k] = malloc(strlen(name) + 1)))
+            return hfs_fail(err, HFS_E_INVALID, "%s: output prefix too long", a->out);
+        memcpy(r->names[k], name, strlen(name) + 1);
+        for (int l = 0; l < k; ++l)
+            if (!strcmp(r->names[l], name))
+                return hfs_fail(err, HFS_E_INVALID, "--azimuths: %g and %g are the same "
+                                "direction (both %s)", a->azimuth[l], a->azimuth[k], name);
+    }
+    return HFS_OK;
+}
+
+/* Every output checked against the DEM and each other, nothing written. */
+static int plan_outputs(run *r, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    const int n = a->product == GIS_HORIZON ? a->n_azimuths : 1;
+    int rc = a->product == GIS_HORIZON ? horizon_names(r, err) : HFS_OK;
+    if (!rc)
+        rc = gis_outputs_create(&r->outs, a->dem, n, err);
+    for (int k = 0; k < n && !rc; ++k)
+        rc = gis_outputs_add(r->outs, a->product == GIS_HORIZON ? r->names[k] : a->out, err);
+    return rc;
+}
+
+/* The DEM's product: radius, nodata, and the metadata every file carries. */
+static void describe(run *r)
+{
+    const gis_args *a = r->a;
+    const gis_dem *d = &r->dem;
+    static const double hi[] = {1.0, 90.0, 180.0}; /* each product's largest value */
+    r->c.dem = d;
+    r->c.zscale = a->zscale;
+    r->c.radius = a->product == GIS_OPENNESS && !a->radius_given
+                      ? GIS_OPENNESS_DEFAULT_CELLS * fmax(d->cx, d->cy)
+                      : a->radius;
+    r->c.nodata = gis_nodata_for(d->has_nodata, d->nodata, 0.0, hi[a->product]);
+    meta(r, "HFS_PRODUCT=%s", product_name[a->product]);
+    meta(r, "HFS_RADIUS_M=%.9g", r->c.radius);
+    meta(r, "HFS_BACKEND=%s", backend_name[a->backend]);
+    meta(r, "HFS_ZSCALE=%.9g", a->zscale);
+    meta(r, "HFS_CELL_M=%.9g", d->d);
+    meta(r, "HFS_SOFTWARE=hfshade %s", hfs_version());
+    if (a->product == GIS_HORIZON) {
+        meta(r, "HFS_AZIMUTH_CONVENTION=%s", gis_convention_name(a->convention));
+        meta(r, "HFS_HORIZON=degrees above the horizontal, 0 where nothing rises above it");
+        return;
+    }
+    meta(r, "HFS_DIRECTIONS=%d", a->directions);
+    meta(r, "HFS_AZIMUTH_CONVENTION=ccw-east");
+    meta(r, "HFS_AZIMUTH_FIRST=0");
+    meta(r, "HFS_AZIMUTH_STEP=%.9g", 360.0 / a->directions);
+    if (a->product == GIS_SVF)
+        meta(r, "HFS_SVF=%s", a->svf == GIS_SVF_LAMBERTIAN ? "lambertian" : "zaksek");
+}
+
+/* A raster of the input's grid with the run's metadata and `extra`. */
+static gis_raster raster_of(const run *r, const char *extra)
+{
+    gis_raster g = {.width = r->dem.width, .height = r->dem.height, .n_bands = 1,
+                    .geotransform = r->dem.gt, .wkt = r->dem.wkt, .nodata = r->c.nodata,
+                    .cog = r->a->cog};
+    int k = 0;
+    for (; k < r->n_meta; ++k)
+        g.meta[k] = r->meta[k];
+    g.meta[k] = extra;
+    return g;
+}
+
+static int write_horizon(void *user, int k, const float *deg, hfs_error *err)
+{
+    const run *r = user;
+    char value[64], item[META_LEN], what[160];
+    snprintf(value, sizeof value, "%.*f", r->a->decimals, gis_wrap_degrees(r->a->azimuth[k]));
+    snprintf(item, sizeof item, "HFS_AZIMUTH=%s", value);
+    gis_raster g = raster_of(r, item);
+    snprintf(what, sizeof what, "horizon elevation angle at azimuth %s degrees (%s)", value,
+             r->a->convention == GIS_COMPASS ? "clockwise from north"
+                                             : "counter-clockwise from east");
+    g.band[0] = (gis_band){deg, what, "degrees"};
+    return gis_raster_write(gis_outputs_set(r->outs, r->names[k]), r->names[k], &g, err);
+}
+
+static int compute_and_write(run *r, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    const size_t n = (size_t)r->dem.width * (size_t)r->dem.height;
+    if (a->product == GIS_HORIZON) {
+        double *phi = malloc((size_t)a->n_azimuths * sizeof *phi);
+        if (!phi)
+            return hfs_fail(err, HFS_E_NOMEM, "horizon: out of memory");
+        for (int k = 0; k < a->n_azimuths; ++k)
+            phi[k] = gis_phi_of(a->azimuth[k], a->convention);
+        const int rc = gis_product_horizons(&r->c, phi, a->n_azimuths, write_horizon, r, err);
+        free(phi);
+        return rc;
+    }
+    float *v = malloc(2 * n * sizeof *v);
+    if (!v)
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", a->out);
+    gis_raster g = raster_of(r, NULL);
+    int rc;
+    if (a->product == GIS_SVF) {
+        rc = gis_product_svf(&r->c, a->directions, a->svf, v, err);
+        g.band[0] = (gis_band){v, a->svf == GIS_SVF_LAMBERTIAN
+                                      ? "sky-view factor, Lambertian (Haentzschel et al. 2005)"
+                                      : "sky-view factor (Zaksek et al. 2011)", ""};
+    } else {
+        rc = gis_product_openness(&r->c, a->directions, v, v + n, err);
+        g.n_bands = 2;
+        g.band[0] = (gis_band){v, "positive openness (Yokoyama et al. 2002)", "degrees"};
+        g.band[1] = (gis_band){v + n, "negative openness (Yokoyama et al. 2002)", "degrees"};
+    }
+    if (!rc)
+        rc = gis_raster_write(gis_outputs_set(r->outs, a->out), a->out, &g, err);
+    free(v);
+    return rc;
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The one line a successful run prints on stderr. */
+static void summary(const run *r, double seconds)
+{
+    const gis_dem *d = &r->dem;
+    const gis_args *a = r->a;
+    char grid[96] = "";
+    if (d->sw != d->width || d->sh != d->height)
+        snprintf(grid, sizeof grid, " (computed on %dx%d square cells of %.4g m)", d->sw, d->sh,
+                 d->d);
+    fprintf(stderr, "%s%s: %s of %dx%d%s, %d %s, %ld nodata texel%s, backend %s, %.3f s\n",
+            a->product == GIS_HORIZON ? r->prefix : a->out,
+            a->product == GIS_HORIZON ? "_*.tif" : "", product_name[a->product],
+            d->width, d->height, grid, a->product == GIS_HORIZON ? a->n_azimuths : a->directions,
+            a->product == GIS_HORIZON ? "azimuths" : "directions", d->holes,
+            d->holes == 1 ? "" : "s", hfs_renderer_backend_name(r->c.r), seconds);
+}
+
+int gis_command_run(const gis_args *a, hfs_error *err)
+{
+    run r = {.a = a};
+    const double t0 = now_seconds();
+    int rc = plan_outputs(&r, err);
+    if (!rc)
+        rc = gis_dem_read(a->dem, &a->load, &r.dem, err);
+    if (!rc) {
+        describe(&r);
+        const hfs_renderer_desc desc = {.backend = a->backend};
+        rc = hfs_renderer_create(&desc, &r.c.r, err);
+    }
+    if (!rc)
+        rc = compute_and_write(&r, err);
+    if (!rc)
+        rc = gis_outputs_commit(r.outs, err);
+    if (!rc && !a->quiet)
+        summary(&r, now_seconds() - t0);
+    hfs_renderer_destroy(r.c.r);
+    gis_dem_free(&r.dem);
+    gis_outputs_destroy(r.outs);
+    for (int k = 0; r.names && k < a->n_azimuths; ++k)
+        free(r.names[k]);
+    free(r.names);
+    return rc;
+}

@@ -1,0 +1,125 @@
+/*
+ * gis_dem.c — see gis_dem.h.
+ */
+#include "gis_dem.h"
+
+#include "height_gdal.h"
+
+#include <cpl_error.h>
+#include <gdal.h>
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+/* The file's georeferencing and declared nodata into dem; a DEM with no
+ * geotransform is refused (nothing says how large its cells are). */
+static int georef(GDALDatasetH ds, const char *path, const hfs_height_load_opts *opts,
+                  gis_dem *dem, hfs_error *err)
+{
+    if (dem->gt[1] == 0.0 || dem->gt[5] == 0.0)
+        return hfs_fail(err, HFS_E_INVALID, "%s: no geotransform (the cells' size in metres "
+                        "is unknown; the GIS commands need a georeferenced DEM)", path);
+    const char *wkt = GDALGetProjectionRef(ds);
+    const size_t len = wkt ? strlen(wkt) : 0;
+    if (!(dem->wkt = malloc(len + 1)))
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", path);
+    memcpy(dem->wkt, wkt ? wkt : "", len + 1);
+    int has = 0;
+    const double nd = GDALGetRasterNoDataValue(GDALGetRasterBand(ds, 1), &has);
+    dem->has_nodata = (opts && opts->has_nodata) || has;
+    dem->nodata = opts && opts->has_nodata ? opts->nodata : nd;
+    dem->ex = dem->gt[1] > 0.0 ? 1 : -1;
+    dem->ey = dem->gt[5] < 0.0 ? 1 : -1;
+    hfs_gdal_cell_metres(dem->wkt, dem->gt, dem->height, &dem->cx, &dem->cy);
+    if (!(dem->cx > 0.0 && dem->cy > 0.0 && isfinite(dem->cx) && isfinite(dem->cy)))
+        return hfs_fail(err, HFS_E_INVALID, "%s: cells of %g x %g m: not a usable size", path,
+                        dem->cx, dem->cy);
+    return HFS_OK;
+}
+
+/* z (the file's heights, holes NaN) -> the hole mask, then filled, then
+ * made the square grid (z is taken over). */
+static int to_field(float *z, const char *path, gis_dem *dem, hfs_error *err)
+{
+    const size_t n = (size_t)dem->width * (size_t)dem->height;
+    if (!(dem->hole = malloc(n))) {
+        free(z);
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", path);
+    }
+    for (size_t p = 0; p < n; ++p)
+        dem->hole[p] = !isfinite(z[p]);
+    hfs_error ferr;
+    int rc = hfs_height_fill_holes(z, dem->width, dem->height, 0, 0.0f, &dem->holes, &ferr);
+    if (rc) {
+        free(z);
+        return hfs_fail(err, rc, "%s: %s", path, ferr.msg);
+    }
+    dem->sw = dem->width, dem->sh = dem->height, dem->d = dem->cx;
+    if (fabs(dem->cx - dem->cy) <= 1e-6 * fmax(dem->cx, dem->cy)) {
+        dem->cy = dem->cx; /* square (as the render loader judges): sampled back 1:1 */
+    } else if ((rc = hfs_gdal_make_square(&z, &dem->sw, &dem->sh, dem->cx, dem->cy, &dem->d))) {
+        free(z);
+        return hfs_fail(err, rc, "%s: out of memory resampling to square cells", path);
+    }
+    dem->sz = z;
+    return HFS_OK;
+}
+
+/* GDAL would block on a FIFO and says little of a missing file: both
+ * answered here.  GDAL's virtual paths (/vsizip/...) are its own to judge. */
+static int check_path(const char *path, hfs_error *err)
+{
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return strncmp(path, "/vsi", 4) ? hfs_fail(err, HFS_E_IO, "%s: %s", path,
+                                                   strerror(errno))
+                                         : HFS_OK;
+    if (S_ISREG(st.st_mode) || S_ISDIR(st.st_mode)) /* a folder: GDAL's grid formats */
+        return HFS_OK;
+    return hfs_fail(err, HFS_E_IO, "%s: not a regular file (a FIFO or a device)", path);
+}
+
+int gis_dem_read(const char *path, const hfs_height_load_opts *opts, gis_dem *dem,
+                 hfs_error *err)
+{
+    memset(dem, 0, sizeof *dem);
+    int rc = check_path(path, err);
+    if (rc)
+        return rc;
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    GDALDatasetH ds = GDALOpenEx(path, GDAL_OF_RASTER | GDAL_OF_READONLY, NULL, NULL, NULL);
+    const char *why = CPLGetLastErrorMsg();
+    rc = ds ? HFS_OK
+            : hfs_fail(err, HFS_E_FORMAT, "%s: GDAL cannot open it as a raster%s%s%s", path,
+                       *why ? " (" : "", why, *why ? ")" : "");
+    float *z = NULL;
+    if (!rc) {
+        dem->width = GDALGetRasterXSize(ds), dem->height = GDALGetRasterYSize(ds);
+        rc = hfs_gdal_check_dataset(ds, path, opts, dem->gt, err);
+    }
+    if (!rc)
+        rc = georef(ds, path, opts, dem, err);
+    if (!rc)
+        rc = hfs_gdal_read_heights(ds, path, opts, &z, err);
+    if (!rc)
+        rc = to_field(z, path, dem, err);
+    if (ds)
+        GDALClose(ds);
+    CPLPopErrorHandler();
+    if (rc)
+        gis_dem_free(dem);
+    return rc;
+}
+
+void gis_dem_free(gis_dem *dem)
+{
+    if (!dem)
+        return;
+    free(dem->hole);
+    free(dem->wkt);
+    free(dem->sz);
+    memset(dem, 0, sizeof *dem);
+}

@@ -1,0 +1,31 @@
+/*
+ * gis_horizons.c — see gis_horizons.h.
+ */
+#include "gis_horizons.h"
+
+#include <stdlib.h>
+
+int gis_horizons_each(hfs_renderer *r, const hfs_field *field, const hfs_quality *q,
+                      const double *phi, int n, double radius, gis_horizon_fn fn, void *user,
+                      hfs_error *err)
+{
+    const size_t texels = (size_t)field->width * (size_t)field->height;
+    size_t batch = GIS_HORIZON_BATCH_FLOATS / texels;
+    batch = batch < 1 ? 1 : batch > (size_t)HFS_MAX_HORIZON_AZIMUTHS ? HFS_MAX_HORIZON_AZIMUTHS
+                                                                      : batch;
+    batch = batch > (size_t)n ? (size_t)n : batch;
+    float *out = malloc(batch * texels * sizeof *out);
+    if (!out)
+        return hfs_fail(err, HFS_E_NOMEM, "horizons: out of memory for %zu x %dx%d angles",
+                        batch, field->width, field->height);
+    int rc = HFS_OK;
+    for (int k0 = 0; k0 < n && !rc; k0 += (int)batch) {
+        const int m = n - k0 < (int)batch ? n - k0 : (int)batch;
+        const hfs_horizon_desc desc = {.n_azimuths = m, .azimuth = phi + k0, .radius = radius};
+        rc = hfs_renderer_horizons(r, field, q, &desc, out, err);
+        for (int a = 0; a < m && !rc; ++a)
+            rc = fn(user, k0 + a, out + (size_t)a * texels, err);
+    }
+    free(out);
+    return rc;
+}

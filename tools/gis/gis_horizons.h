@@ -1,0 +1,29 @@
+/*
+ * gis_horizons.h — horizon elevation angles of a whole field for many
+ * azimuths, through hfs_renderer_horizons, a few azimuths at a time so
+ * that a large DEM with many directions needs no n x W x H block at once
+ * (each call's block is at most GIS_HORIZON_BATCH_FLOATS floats, and at
+ * least one azimuth).  Each azimuth's angles go to a callback as they come,
+ * in the order given: the products sum them (sky-view factor, openness)
+ * or write them (one raster per azimuth).  No GDAL.
+ */
+#ifndef HFS_GIS_HORIZONS_H
+#define HFS_GIS_HORIZONS_H
+
+#include "hfshade.h"
+
+#define GIS_HORIZON_BATCH_FLOATS (1 << 26) /* 256 MiB of angles per call */
+
+/* Azimuth k's angles: gamma (field W x H, radians, signed,
+ * HFS_HORIZON_NONE where the ray met no terrain).  0, or an error code
+ * with err filled (the run stops). */
+typedef int (*gis_horizon_fn)(void *user, int k, const float *gamma, hfs_error *err);
+
+/* Calls fn for each of the n azimuths phi[k] (the grid's phi, radians)
+ * searched up to radius world units (0: the whole field) over field, on
+ * renderer r with quality q (NULL: defaults).  0, or the first error. */
+int gis_horizons_each(hfs_renderer *r, const hfs_field *field, const hfs_quality *q,
+                      const double *phi, int n, double radius, gis_horizon_fn fn, void *user,
+                      hfs_error *err);
+
+#endif /* HFS_GIS_HORIZONS_H */

@@ -1,0 +1,117 @@
+/*
+ * gis_math.c — see gis_math.h.  Sums are kept in double: a 1024-direction
+ * mean of float terms would otherwise lose the last digits of a sky-view
+ * factor near 1.
+ */
+#include "gis_math.h"
+
+#include "hfshade.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define RAD (PI / 180.0)
+
+const char *gis_convention_name(gis_convention c)
+{
+    return c == GIS_CCW_EAST ? "ccw-east" : c == GIS_COMPASS ? "compass" : NULL;
+}
+
+double gis_phi_of(double deg, gis_convention c)
+{
+    return (c == GIS_COMPASS ? deg - 90.0 : -deg) * RAD;
+}
+
+double gis_grid_phi(double map_phi, int ex, int ey)
+{
+    if (ex > 0 && ey > 0)
+        return map_phi; /* north-up: the map's axes are the grid's */
+    return atan2(ey * sin(map_phi), ex * cos(map_phi));
+}
+
+int gis_horizon_none(float gamma)
+{
+    return gamma <= HFS_HORIZON_NONE + 1e-5f;
+}
+
+void gis_svf_add(double *acc, const float *gamma, size_t n, gis_svf_kind kind)
+{
+    for (size_t p = 0; p < n; ++p) {
+        const double g = gamma[p] > 0.0f ? (double)gamma[p] : 0.0;
+        const double c = cos(g);
+        acc[p] += kind == GIS_SVF_LAMBERTIAN ? c * c : sin(g);
+    }
+}
+
+void gis_svf_finish(float *out, const double *acc, size_t n, int n_dirs, gis_svf_kind kind)
+{
+    for (size_t p = 0; p < n; ++p) {
+        const double mean = acc[p] / n_dirs;
+        out[p] = (float)(kind == GIS_SVF_LAMBERTIAN ? mean : 1.0 - mean);
+    }
+}
+
+void gis_openness_add(double *sum, int *count, const float *gamma, size_t n)
+{
+    for (size_t p = 0; p < n; ++p)
+        if (!gis_horizon_none(gamma[p])) {
+            sum[p] += 90.0 - gamma[p] / RAD;
+            ++count[p];
+        }
+}
+
+void gis_openness_finish(float *out, const double *sum, const int *count, size_t n)
+{
+    for (size_t p = 0; p < n; ++p)
+        out[p] = count[p] > 0 ? (float)(sum[p] / count[p]) : NAN;
+}
+
+void gis_horizon_degrees(float *out, const float *gamma, size_t n)
+{
+    for (size_t p = 0; p < n; ++p)
+        out[p] = gamma[p] > 0.0f ? (float)(gamma[p] / RAD) : 0.0f;
+}
+
+float gis_nodata_for(int has_nodata, double nodata, double lo, double hi)
+{
+    if (!has_nodata || !(isnan(nodata) || fabs(nodata) <= FLT_MAX))
+        return GIS_NODATA; /* none, or beyond a Float32 */
+    const float v = (float)nodata;
+    return isnan(v) || v < lo || v > hi ? v : GIS_NODATA;
+}
+
+double gis_wrap_degrees(double deg)
+{
+    double a = fmod(deg, 360.0);
+    if (a < 0.0)
+        a += 360.0;
+    return a >= 360.0 ? 0.0 : a; /* fmod(-1e-17, 360) + 360 rounds to 360 */
+}
+
+int gis_horizon_name(char *buf, size_t n, const char *prefix, double deg, int decimals)
+{
+    const int width = 3 + (decimals > 0 ? decimals + 1 : 0);
+    const size_t lead = strlen(prefix) + 1; /* the suffix starts after "PREFIX_" */
+    const int m = snprintf(buf, n, "%s_%0*.*f.tif", prefix, width, decimals,
+                           gis_wrap_degrees(deg));
+    if (m < 0 || (size_t)m >= n)
+        return -1;
+    char *dot = strchr(buf + lead, '.');
+    if (decimals > 0 && dot)
+        *dot = '_'; /* the number's dot; the extension's stays */
+    return 0;
+}
+
+int gis_decimals_of(const char *number)
+{
+    const char *dot = strchr(number, '.');
+    if (!dot)
+        return 0;
+    int d = 0;
+    for (const char *c = dot + 1; *c >= '0' && *c <= '9'; ++c)
+        ++d;
+    return d;
+}
