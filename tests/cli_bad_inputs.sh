@@ -210,6 +210,13 @@ $U hfshade svf-bad-directions "--directions: '0'" svf "$tmp/x.tif" -o "$tmp/y.ti
 $U hfshade horizon-no-azimuths "no azimuths" horizon "$tmp/x.tif" -o "$tmp/h"
 $U hfshade horizon-bad-convention "'north'" horizon "$tmp/x.tif" -o "$tmp/h" --step 45 --convention north
 $U hfshade openness-svf-flag "--lambertian: unknown option" openness "$tmp/x.tif" -o "$tmp/y.tif" --lambertian
+$U hfshade sun-no-datetime "no --datetime given" sun "$tmp/x.tif" -o "$tmp/y.tif"
+$U hfshade sun-bad-datetime "month 13" sun "$tmp/x.tif" -o "$tmp/y.tif" --datetime 2026-13-01T10:00Z
+$U hfshade sun-no-timezone "has no time zone" sun "$tmp/x.tif" -o "$tmp/y.tif" --datetime 2026-06-21T10:00
+$U hfshade sun-bad-linke "--linke: '0.5'" sun "$tmp/x.tif" -o "$tmp/y.tif" --datetime 2026-06-21T10:00Z --linke 0.5
+$U hfshade insolation-backwards "--to: 2026-06-20T00:00Z is not after" insolation "$tmp/x.tif" -o "$tmp/y.tif" --from 2026-06-21T00:00Z --to 2026-06-20T00:00Z
+$U hfshade insolation-bad-step "--step: '0'" insolation "$tmp/x.tif" -o "$tmp/y.tif" --from 2026-06-21T00:00Z --to 2026-06-22T00:00Z --step 0
+$U hfshade insolation-many-steps "at most 100000" insolation "$tmp/x.tif" -o "$tmp/y.tif" --from 2026-01-01T00:00Z --to 2027-01-01T00:00Z --step 1
 $U hfgen no-kind "no kind"
 $U hfgen unknown-kind "'volcano'" volcano --size 8x8 -o "$tmp/out.pfm"
 $U hfgen unknown-kind-bare "'volcano'" volcano
@@ -273,7 +280,7 @@ for t in hfshade hfgen hfstress hfbench bench_env gles_bench hfshade-kiosk hfs-c
     expect_help "$t" --help
 done
 expect_help hfshade envmap --help
-for c in svf horizon openness; do
+for c in svf horizon openness sun insolation; do
     expect_help hfshade "$c" --help
 done
 

@@ -19,3 +19,16 @@ if(HFS_SANITIZE)
   set_property(TEST test_gis_cli APPEND PROPERTY ENVIRONMENT
                "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/lsan.supp:print_suppressions=0")
 endif()
+# Issue 39's sun commands end to end (hfshade sun | insolation): a flat DEM
+# against the library's sun (beam sin(e), V = 1), a wall's shadow on the
+# truth and GLES, GLES against the truth on hills, a day's irradiation
+# against the hand sum, a night, bad inputs (test_gis_sun.c).
+if(TARGET hfshade_gdal)
+  hfs_add_test(test_gis_sun SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_sun.c
+               LIBS hfshade_gdal hfs_gl hfs_solar ARGS $<TARGET_FILE:hfshade> LABEL gl TIMEOUT 120)
+  add_dependencies(test_gis_sun hfshade)
+  if(HFS_SANITIZE)
+    set_property(TEST test_gis_sun APPEND PROPERTY ENVIRONMENT
+                 "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/lsan.supp:print_suppressions=0")
+  endif()
+endif()

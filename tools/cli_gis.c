@@ -7,6 +7,7 @@
  */
 #include "cli_gis.h"
 
+#include "clear_sky.h"
 #include "cli_usage.h"
 #include "gis_command.h"
 
@@ -16,7 +17,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { SVF = 1 << GIS_SVF, HOR = 1 << GIS_HORIZON, OPEN = 1 << GIS_OPENNESS, ALL = 7 };
+enum {
+    SVF = 1 << GIS_SVF,
+    HOR = 1 << GIS_HORIZON,
+    OPEN = 1 << GIS_OPENNESS,
+    SUN = 1 << GIS_SUN,
+    INS = 1 << GIS_INSOLATION,
+    ALL = SVF | HOR | OPEN | SUN | INS
+};
 
 typedef struct gis_opt {
     const char *name, *arg; /* arg NULL: a switch                            */
@@ -25,7 +33,17 @@ typedef struct gis_opt {
 } gis_opt;
 
 static const gis_opt opts[] = {
-    {"-o", "OUT.tif", SVF | OPEN, "the GeoTIFF written (Float32, the DEM's grid)"},
+    {"-o", "OUT.tif", SVF | OPEN | SUN | INS, "the GeoTIFF written (Float32, the DEM's grid)"},
+    {"--datetime", "DATETIME", SUN,
+     "the local date-time, ISO 8601: 2026-06-21T09:30[:SS], with its offset (Z, +02:00) or "
+     "--timezone's"},
+    {"--from", "DATETIME", INS, "the period's start, local ISO 8601 date-time (as --datetime)"},
+    {"--to", "DATETIME", INS, "the period's end, after --from"},
+    {"--step", "MINUTES", INS, "the step, minutes > 0 (default 15); each step's sun at its "
+     "middle"},
+    {"--timezone", "TZ", SUN | INS,
+     "the date-times' offset east of UTC: Z, +02:00, +0530, -5 (unless they carry one)"},
+    {"--linke", "TLK", SUN | INS, "Linke turbidity, 1..10 (default 3.0, r.sun's)"},
     {"-o", "PREFIX", HOR, "the GeoTIFFs written: PREFIX_AAA.tif an azimuth (r.horizon's names)"},
     {"--directions", "N", SVF, "azimuths, equally spaced from east (1..1024; default 16)"},
     {"--directions", "N", OPEN, "azimuths, equally spaced from east (1..1024; default 8)"},
@@ -54,7 +72,20 @@ static const char *const what[] = {
     "0 where nothing rises above it; one GeoTIFF per azimuth.",
     "Topographic openness (Yokoyama et al. 2002): the mean of 90 - gamma over the\n"
     "directions, degrees, gamma signed (from the texel); band 1 positive, band 2\n"
-    "negative openness (the positive openness of the negated DEM)."};
+    "negative openness (the positive openness of the negated DEM).",
+    "The sun at one instant (NOAA solar calculator; ESRA clear sky, as GRASS r.sun)\n"
+    "on the terrain: band 1 the direct-beam irradiance on the tilted, shadowed\n"
+    "surface (W/m^2), band 2 the visible fraction of the sun's disk (0..1).",
+    "Clear-sky irradiation over a period (GRASS r.sun's mode 2), Wh/m^2: band 1\n"
+    "beam (the sun's renders, one a step), band 2 sky-diffuse (isotropic sky over\n"
+    "the terrain's horizons), band 3 global (beam + diffuse)."};
+
+/* The options a command cannot go without: no brackets in its synopsis. */
+static int required(const gis_opt *o, gis_product p)
+{
+    return (p == GIS_SUN && !strcmp(o->name, "--datetime")) ||
+           (p == GIS_INSOLATION && (!strcmp(o->name, "--from") || !strcmp(o->name, "--to")));
+}
 
 static const gis_opt *find(const char *name, gis_product p)
 {
@@ -98,8 +129,10 @@ static void usage(const char *cmd, gis_product p)
             !strcmp(opts[k].name, "--help"))
             continue;
         char item[96];
-        const int m = snprintf(item, sizeof item, " [%s%s%s]", opts[k].name,
-                               opts[k].arg ? " " : "", opts[k].arg ? opts[k].arg : "");
+        const int req = required(&opts[k], p);
+        const int m = snprintf(item, sizeof item, " %s%s%s%s%s", req ? "" : "[", opts[k].name,
+                               opts[k].arg ? " " : "", opts[k].arg ? opts[k].arg : "",
+                               req ? "" : "]");
         if (n + m > 78) {
             printf("%s\n", line);
             n = snprintf(line, sizeof line, "%*s", indent - 1, "");
@@ -140,11 +173,49 @@ static int parse_azimuths(gis_args *a, const char *v)
     return -1;
 }
 
+/* What the options leave to check together. */
+typedef struct pending {
+    double step, start;               /* horizon                            */
+    const char *step_s, *start_s;     /* as given; NULL: not given          */
+    const char *datetime, *from, *to; /* sun, insolation: parsed at the end */
+    const char *tz;
+} pending;
+
+/* The sun's options' values; 0, or the usage error's exit status. */
+static int set_sun_value(gis_args *a, const char *prog, const char *name, const char *v,
+                         pending *st)
+{
+    if (!strcmp(name, "--datetime")) {
+        st->datetime = v;
+    } else if (!strcmp(name, "--from")) {
+        st->from = v;
+    } else if (!strcmp(name, "--to")) {
+        st->to = v;
+    } else if (!strcmp(name, "--timezone")) {
+        st->tz = v;
+    } else if (!strcmp(name, "--linke")) {
+        if (hfs_cli_real(v, HFS_LINKE_MIN, HFS_LINKE_MAX, &a->linke))
+            return hfs_usage_error(prog, "--linke: '%s' is not a Linke turbidity in [%g, %g]", v,
+                                   HFS_LINKE_MIN, HFS_LINKE_MAX);
+    } else { /* insolation's --step */
+        double x = 0.0;
+        if (hfs_cli_real(v, 0.0, 1e9, &x) || !(x > 0.0))
+            return hfs_usage_error(prog, "--step: '%s' is not a number of minutes above 0", v);
+        a->step_min = x;
+    }
+    return 0;
+}
+
 /* One option's value into a; 0, or the usage error's exit status. */
 static int set_value(gis_args *a, const char *prog, const char *name, const char *v,
-                     double *step, double *start, const char **step_s, const char **start_s)
+                     pending *st)
 {
     long n;
+    if (a->product == GIS_SUN || a->product == GIS_INSOLATION) {
+        if (strcmp(name, "-o") && strcmp(name, "--backend") && strcmp(name, "--zscale") &&
+            strcmp(name, "--nodata"))
+            return set_sun_value(a, prog, name, v, st);
+    }
     if (!strcmp(name, "-o")) {
         a->out = v;
     } else if (!strcmp(name, "--directions")) {
@@ -163,8 +234,8 @@ static int set_value(gis_args *a, const char *prog, const char *name, const char
             return hfs_usage_error(prog, "%s: '%s' is not %s", name, v,
                                    is_step ? "an angle in (0, 360] degrees"
                                            : "an angle in degrees");
-        *(is_step ? step : start) = x;
-        *(is_step ? step_s : start_s) = v;
+        *(is_step ? &st->step : &st->start) = x;
+        *(is_step ? &st->step_s : &st->start_s) = v;
     } else if (!strcmp(name, "--convention")) {
         if (strcmp(v, "ccw-east") && strcmp(v, "compass"))
             return hfs_usage_error(prog, "--convention: '%s' is not ccw-east or compass", v);
@@ -212,25 +283,63 @@ static int step_azimuths(gis_args *a, const char *prog, double step, double star
     return 0;
 }
 
+/* A local date-time of flag into the UTC instant *t and its Julian day. */
+static int instant(const char *prog, const char *flag, const char *v, const char *tz,
+                   hfs_solar_time *t, double *jd)
+{
+    char msg[200];
+    if (!v)
+        return hfs_usage_error(prog, "no %s given (a date-time: %s 2026-06-21T09:30 --timezone "
+                               "+02:00)", flag, flag);
+    if (hfs_solar_parse_local(v, tz, t, msg, sizeof msg))
+        return hfs_usage_error(prog, "%s: %s", flag, msg);
+    *jd = hfs_solar_julian_day(t);
+    return 0;
+}
+
+/* sun: the instant; insolation: the period and its steps. */
+static int check_sun(gis_args *a, const char *prog, const pending *st)
+{
+    if (a->product == GIS_SUN)
+        return instant(prog, "--datetime", st->datetime, st->tz, &a->at, &a->jd);
+    int rc = instant(prog, "--from", st->from, st->tz, &a->from, &a->jd_from);
+    if (!rc)
+        rc = instant(prog, "--to", st->to, st->tz, &a->to, &a->jd_to);
+    if (rc)
+        return rc;
+    /* The period in minutes to a microsecond: the Julian days' rounding
+     * (1e-6 min) must not make a step of nothing at the end. */
+    const double minutes = round((a->jd_to - a->jd_from) * 1440.0 * 1e6) / 1e6;
+    if (!(minutes > 0.0))
+        return hfs_usage_error(prog, "--to: %s is not after --from %s", st->to, st->from);
+    const double steps = ceil(minutes / a->step_min - 1e-9);
+    if (steps > GIS_MAX_STEPS)
+        return hfs_usage_error(prog, "--step: %g minutes over %g minutes makes %.0f steps (at "
+                               "most %ld)", a->step_min, minutes, steps, GIS_MAX_STEPS);
+    a->n_steps = (long)steps;
+    return 0;
+}
+
 /* What the options left to check together. */
-static int check_args(gis_args *a, const char *prog, double step, double start,
-                      const char *step_s, const char *start_s)
+static int check_args(gis_args *a, const char *prog, const pending *st)
 {
     if (!a->dem)
         return hfs_usage_error(prog, "no DEM given");
     if (!a->out)
         return hfs_usage_error(prog, "no output given (-o %s)",
                                a->product == GIS_HORIZON ? "PREFIX" : "OUT.tif");
+    if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
+        return check_sun(a, prog, st);
     if (a->product != GIS_HORIZON)
         return 0;
-    if (a->n_azimuths && step_s)
+    if (a->n_azimuths && st->step_s)
         return hfs_usage_error(prog, "--azimuths and --step: give one of them");
-    if (start_s && !step_s)
+    if (st->start_s && !st->step_s)
         return hfs_usage_error(prog, "--start: only with --step");
-    if (!a->n_azimuths && !step_s)
+    if (!a->n_azimuths && !st->step_s)
         return hfs_usage_error(prog, "no azimuths (--azimuths A,B,... or --step DEG)");
-    if (step_s)
-        return step_azimuths(a, prog, step, start, step_s, start_s);
+    if (st->step_s)
+        return step_azimuths(a, prog, st->step, st->start, st->step_s, st->start_s);
     a->decimals = a->decimals > 6 ? 6 : a->decimals;
     return 0;
 }
@@ -240,8 +349,7 @@ static int parse(int argc, char **argv, gis_args *a)
 {
     char prog[32]; /* "hfshade svf": the usage errors point at its --help */
     snprintf(prog, sizeof prog, "hfshade %s", argv[0]);
-    double step = 0.0, start = 0.0;
-    const char *step_s = NULL, *start_s = NULL;
+    pending st = {0};
     for (int i = 1; i < argc; ++i) {
         const char *s = argv[i];
         if (hfs_is_help(s)) {
@@ -268,25 +376,28 @@ static int parse(int argc, char **argv, gis_args *a)
         }
         if (i + 1 >= argc)
             return hfs_usage_error(prog, "%s: missing value", s);
-        const int rc = set_value(a, prog, s, argv[++i], &step, &start, &step_s, &start_s);
+        const int rc = set_value(a, prog, s, argv[++i], &st);
         if (rc)
             return rc;
     }
-    return check_args(a, prog, step, start, step_s, start_s);
+    return check_args(a, prog, &st);
 }
 
 int hfs_cli_is_gis(const char *name)
 {
-    return !strcmp(name, "svf") || !strcmp(name, "horizon") || !strcmp(name, "openness");
+    return !strcmp(name, "svf") || !strcmp(name, "horizon") || !strcmp(name, "openness") ||
+           !strcmp(name, "sun") || !strcmp(name, "insolation");
 }
 
 int hfs_cli_gis(int argc, char **argv)
 {
-    gis_args a = {.product = !strcmp(argv[0], "svf")       ? GIS_SVF
-                             : !strcmp(argv[0], "horizon") ? GIS_HORIZON
-                                                           : GIS_OPENNESS,
-                  .backend = HFS_BACKEND_GLES,
-                  .zscale = 1.0};
+    static const char *const names[GIS_N_PRODUCTS] = {"svf", "horizon", "openness", "sun",
+                                                      "insolation"};
+    gis_product p = GIS_SVF;
+    while (p + 1 < GIS_N_PRODUCTS && strcmp(argv[0], names[p]))
+        p = (gis_product)(p + 1);
+    gis_args a = {.product = p, .backend = HFS_BACKEND_GLES, .zscale = 1.0,
+                  .linke = HFS_LINKE_DEFAULT, .step_min = 15.0};
     a.directions = a.product == GIS_SVF ? 16 : 8;
     double azimuth[HFS_MAX_HORIZON_AZIMUTHS];
     a.azimuth = azimuth;

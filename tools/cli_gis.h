@@ -1,7 +1,8 @@
 /*
- * cli_gis.h — `hfshade svf | horizon | openness DEM -o OUT [options]`: the
- * GIS rasters terrain analysts use (issue 39; SPEC.md "Terrain rasters";
- * docs/GIS.md), on the DEM's own grid, through GDAL (tools/gis/).  This
+ * cli_gis.h — `hfshade svf | horizon | openness | sun | insolation DEM -o
+ * OUT [options]`: the GIS rasters terrain analysts use (issue 39; SPEC.md
+ * "Terrain rasters"; docs/GIS.md), on the DEM's own grid, through GDAL
+ * (tools/gis/).  This
  * file parses the command line and prints the usage; a build without GDAL
  * says so in one line and exits 1.
  */
@@ -11,7 +12,7 @@
 /* 1 if name is one of the GIS commands. */
 int hfs_cli_is_gis(const char *name);
 
-/* argv[0] = the command ("svf", "horizon", "openness").  Returns the
+/* argv[0] = the command ("svf", "horizon", "openness", "sun", "insolation").  Returns the
  * process exit status: 0, 1 (an error: one line on stderr naming the input
  * and the problem, nothing written) or 2 (a bad command line: one line). */
 int hfs_cli_gis(int argc, char **argv);

@@ -1,15 +1,19 @@
 # The GIS commands' code (issue 39, tools/gis/; `hfshade svf | horizon |
-# openness`, tools/cli_gis.c): hfs_gis_core holds the arithmetic, the
-# renderer plumbing and the output group, with no GDAL (the unit test
-# tests/test_gis_math.c links it); hfs_gis_gdal the DEM on its own grid,
-# the GeoTIFF writer and the command, where GDAL is found (gdal.cmake).
+# openness | sun | insolation`, tools/cli_gis.c): hfs_gis_core holds the
+# arithmetic, the renderer plumbing (horizons; the sun's renders,
+# gis_sun.c, on hfs_solar) and the output group, with no GDAL (the unit
+# test tests/test_gis_math.c links it); hfs_gis_gdal the DEM on its own
+# grid, the GeoTIFF writer and the commands, where GDAL is found
+# (gdal.cmake).
 add_library(hfs_gis_core STATIC ${CMAKE_CURRENT_LIST_DIR}/gis/gis_math.c
             ${CMAKE_CURRENT_LIST_DIR}/gis/gis_resample.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_horizons.c
-            ${CMAKE_CURRENT_LIST_DIR}/gis/gis_products.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_outputs.c)
+            ${CMAKE_CURRENT_LIST_DIR}/gis/gis_products.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_outputs.c
+            ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sun.c)
 target_include_directories(hfs_gis_core PUBLIC ${CMAKE_CURRENT_LIST_DIR}/gis)
-target_link_libraries(hfs_gis_core PUBLIC hfshade_lib hfshade_io m)
+target_link_libraries(hfs_gis_core PUBLIC hfshade_lib hfshade_io hfs_solar m)
 if(TARGET hfshade_gdal)
   add_library(hfs_gis_gdal STATIC ${CMAKE_CURRENT_LIST_DIR}/gis/gis_dem.c
-              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_raster.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_command.c)
+              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_raster.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_command.c
+              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sun_command.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_run.c)
   target_link_libraries(hfs_gis_gdal PUBLIC hfs_gis_core hfshade_gdal)
 endif()

@@ -8,8 +8,9 @@
  *   hfshade info [--context NAME]     (makes a GL context and describes it)
  *   hfshade envmap decompose MAP [...] (lights + residual as scene lines;
  *                                     cli_envmap.h)
- *   hfshade svf | horizon | openness DEM -o OUT [...]  (GIS rasters on the
- *                                     DEM's own grid, through GDAL; cli_gis.h)
+ *   hfshade svf | horizon | openness | sun | insolation DEM -o OUT [...]
+ *                                     (GIS rasters on the DEM's own grid,
+ *                                     through GDAL; cli_gis.h)
  *
  * Every scene key is also a flag (--KEY VALUE); flags override the file.
  * Errors: one line on stderr naming the input and the problem, exit 1 (2 for
@@ -72,9 +73,11 @@ static void usage(FILE *f)
             "       hfshade info [--context surfaceless|osmesa|auto]\n"
             "       hfshade envmap decompose MAP [--max-lights N] [--min-share F]\n"
             "                      [--contrast C] [--picture OUT.png]\n"
-            "       hfshade svf DEM -o OUT.tif [...]       (GIS rasters on the DEM's own grid:\n"
-            "       hfshade openness DEM -o OUT.tif [...]   sky-view factor, openness, horizon\n"
-            "       hfshade horizon DEM -o PREFIX [...]     angles; COMMAND --help, docs/GIS.md)\n"
+            "       hfshade svf DEM -o OUT.tif [...]        (GIS rasters on the DEM's own grid:\n"
+            "       hfshade openness DEM -o OUT.tif [...]    sky-view factor, openness, horizon\n"
+            "       hfshade horizon DEM -o PREFIX [...]      angles, the sun's beam at an\n"
+            "       hfshade sun DEM -o OUT.tif [...]         instant, clear-sky irradiation;\n"
+            "       hfshade insolation DEM -o OUT.tif [...]  COMMAND --help, docs/GIS.md)\n"
             "options: --exposure F (PNG only, default 1), --colormap none|terrain (PNG only),\n"
             "         --time N (render N full frames after a warm-up; print per-pass medians),\n"
             "         --check (load, validate and render one frame off screen; write nothing),\n"
@@ -526,7 +529,8 @@ int main(int argc, char **argv)
 {
     if (argc < 2)
         return hfs_usage_error("hfshade", "no command given (render, compare, query, envmap, "
-                                          "svf, horizon, openness, info, keys)");
+                                          "svf, horizon, openness, sun, insolation, info, "
+                                          "keys)");
 #ifdef HFS_HAVE_GDAL
     hfs_gdal_register(); /* GeoTIFF, SRTM .hgt, VRT ... as height fields */
 #endif

@@ -2,55 +2,26 @@
  * gis_command.c — see gis_command.h.  The order keeps a failure cheap and
  * clean: the outputs are checked before the DEM is read, the DEM before a
  * renderer (a GL context) is made, and every file is a temporary until
- * the last one is written.
+ * the last one is written.  svf, horizon and openness are written here;
+ * sun and insolation in gis_sun_command.c (gis_run.h).
  */
 #include "gis_command.h"
 
-#include "gis_outputs.h"
-#include "gis_products.h"
-#include "gis_raster.h"
+#include "gis_run.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
-#define META_LEN 128
-
-typedef struct run {
-    const gis_args *a;
-    gis_outputs *outs;
-    char prefix[4096];       /* horizon: -o without a trailing .tif         */
-    char **names;            /* horizon: the n_azimuths file names          */
-    gis_dem dem;
-    gis_compute c;
-    char meta[GIS_RASTER_MAX_META - 2][META_LEN]; /* the items every file has */
-    int n_meta;
-} run;
-
-static const char *const product_name[] = {"svf", "horizon", "openness"};
+static const char *const product_name[] = {"svf", "horizon", "openness", "sun", "insolation"};
 static const char *const backend_name[] = {"gles", "gles", "cpu", "truth"};
-
-static void meta(run *r, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static void meta(run *r, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(r->meta[r->n_meta++], META_LEN, fmt, ap);
-    va_end(ap);
-}
 
 /* The horizon command's file names: PREFIX (a trailing .tif dropped) and
  * each azimuth, as r.horizon names its maps; two azimuths of one name are
  * an error (0 and 360 are one direction). */
-static int horizon_names(run *r, hfs_error *err)
+static int horizon_names(gis_run *r, hfs_error *err)
 {
     const gis_args *a = r->a;
     char *prefix = r->prefix;
@@ -76,7 +47,7 @@ static int horizon_names(run *r, hfs_error *err)
 }
 
 /* Every output checked against the DEM and each other, nothing written. */
-static int plan_outputs(run *r, hfs_error *err)
+static int plan_outputs(gis_run *r, hfs_error *err)
 {
     const gis_args *a = r->a;
     const int n = a->product == GIS_HORIZON ? a->n_azimuths : 1;
@@ -89,56 +60,47 @@ static int plan_outputs(run *r, hfs_error *err)
 }
 
 /* The DEM's product: radius, nodata, and the metadata every file carries. */
-static void describe(run *r)
+static int describe(gis_run *r, hfs_error *err)
 {
     const gis_args *a = r->a;
     const gis_dem *d = &r->dem;
     static const double hi[] = {1.0, 90.0, 180.0}; /* each product's largest value */
     r->c.dem = d;
     r->c.zscale = a->zscale;
+    gis_run_meta(r, "HFS_PRODUCT=%s", product_name[a->product]);
+    gis_run_meta(r, "HFS_BACKEND=%s", backend_name[a->backend]);
+    gis_run_meta(r, "HFS_ZSCALE=%.9g", a->zscale);
+    gis_run_meta(r, "HFS_CELL_M=%.9g", d->d);
+    gis_run_meta(r, "HFS_SOFTWARE=hfshade %s", hfs_version());
+    if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
+        return gis_sun_describe(r, err);
     r->c.radius = a->product == GIS_OPENNESS && !a->radius_given
                       ? GIS_OPENNESS_DEFAULT_CELLS * fmax(d->cx, d->cy)
                       : a->radius;
     r->c.nodata = gis_nodata_for(d->has_nodata, d->nodata, 0.0, hi[a->product]);
-    meta(r, "HFS_PRODUCT=%s", product_name[a->product]);
-    meta(r, "HFS_RADIUS_M=%.9g", r->c.radius);
-    meta(r, "HFS_BACKEND=%s", backend_name[a->backend]);
-    meta(r, "HFS_ZSCALE=%.9g", a->zscale);
-    meta(r, "HFS_CELL_M=%.9g", d->d);
-    meta(r, "HFS_SOFTWARE=hfshade %s", hfs_version());
+    gis_run_meta(r, "HFS_RADIUS_M=%.9g", r->c.radius);
     if (a->product == GIS_HORIZON) {
-        meta(r, "HFS_AZIMUTH_CONVENTION=%s", gis_convention_name(a->convention));
-        meta(r, "HFS_HORIZON=degrees above the horizontal, 0 where nothing rises above it");
-        return;
+        gis_run_meta(r, "HFS_AZIMUTH_CONVENTION=%s", gis_convention_name(a->convention));
+        gis_run_meta(r, "HFS_HORIZON=degrees above the horizontal, 0 where nothing rises "
+                     "above it");
+        return HFS_OK;
     }
-    meta(r, "HFS_DIRECTIONS=%d", a->directions);
-    meta(r, "HFS_AZIMUTH_CONVENTION=ccw-east");
-    meta(r, "HFS_AZIMUTH_FIRST=0");
-    meta(r, "HFS_AZIMUTH_STEP=%.9g", 360.0 / a->directions);
+    gis_run_meta(r, "HFS_DIRECTIONS=%d", a->directions);
+    gis_run_meta(r, "HFS_AZIMUTH_CONVENTION=ccw-east");
+    gis_run_meta(r, "HFS_AZIMUTH_FIRST=0");
+    gis_run_meta(r, "HFS_AZIMUTH_STEP=%.9g", 360.0 / a->directions);
     if (a->product == GIS_SVF)
-        meta(r, "HFS_SVF=%s", a->svf == GIS_SVF_LAMBERTIAN ? "lambertian" : "zaksek");
-}
-
-/* A raster of the input's grid with the run's metadata and `extra`. */
-static gis_raster raster_of(const run *r, const char *extra)
-{
-    gis_raster g = {.width = r->dem.width, .height = r->dem.height, .n_bands = 1,
-                    .geotransform = r->dem.gt, .wkt = r->dem.wkt, .nodata = r->c.nodata,
-                    .cog = r->a->cog};
-    int k = 0;
-    for (; k < r->n_meta; ++k)
-        g.meta[k] = r->meta[k];
-    g.meta[k] = extra;
-    return g;
+        gis_run_meta(r, "HFS_SVF=%s", a->svf == GIS_SVF_LAMBERTIAN ? "lambertian" : "zaksek");
+    return HFS_OK;
 }
 
 static int write_horizon(void *user, int k, const float *deg, hfs_error *err)
 {
-    const run *r = user;
-    char value[64], item[META_LEN], what[160];
+    const gis_run *r = user;
+    char value[64], item[GIS_RUN_META_LEN], what[160];
     snprintf(value, sizeof value, "%.*f", r->a->decimals, gis_wrap_degrees(r->a->azimuth[k]));
     snprintf(item, sizeof item, "HFS_AZIMUTH=%s", value);
-    gis_raster g = raster_of(r, item);
+    gis_raster g = gis_run_raster(r, item);
     snprintf(what, sizeof what, "horizon elevation angle at azimuth %s degrees (%s)", value,
              r->a->convention == GIS_COMPASS ? "clockwise from north"
                                              : "counter-clockwise from east");
@@ -146,10 +108,12 @@ static int write_horizon(void *user, int k, const float *deg, hfs_error *err)
     return gis_raster_write(gis_outputs_set(r->outs, r->names[k]), r->names[k], &g, err);
 }
 
-static int compute_and_write(run *r, hfs_error *err)
+static int compute_and_write(gis_run *r, hfs_error *err)
 {
     const gis_args *a = r->a;
     const size_t n = (size_t)r->dem.width * (size_t)r->dem.height;
+    if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
+        return gis_sun_write(r, err);
     if (a->product == GIS_HORIZON) {
         double *phi = malloc((size_t)a->n_azimuths * sizeof *phi);
         if (!phi)
@@ -163,7 +127,7 @@ static int compute_and_write(run *r, hfs_error *err)
     float *v = malloc(2 * n * sizeof *v);
     if (!v)
         return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", a->out);
-    gis_raster g = raster_of(r, NULL);
+    gis_raster g = gis_run_raster(r, NULL);
     int rc;
     if (a->product == GIS_SVF) {
         rc = gis_product_svf(&r->c, a->directions, a->svf, v, err);
@@ -190,31 +154,37 @@ static double now_seconds(void)
 }
 
 /* The one line a successful run prints on stderr. */
-static void summary(const run *r, double seconds)
+static void summary(const gis_run *r, double seconds)
 {
     const gis_dem *d = &r->dem;
     const gis_args *a = r->a;
-    char grid[96] = "";
+    char grid[96] = "", what[320];
     if (d->sw != d->width || d->sh != d->height)
         snprintf(grid, sizeof grid, " (computed on %dx%d square cells of %.4g m)", d->sw, d->sh,
                  d->d);
-    fprintf(stderr, "%s%s: %s of %dx%d%s, %d %s, %ld nodata texel%s, backend %s, %.3f s\n",
+    if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
+        gis_sun_summary(r, what, sizeof what);
+    else
+        snprintf(what, sizeof what, "%d %s", a->product == GIS_HORIZON ? a->n_azimuths
+                                                                        : a->directions,
+                 a->product == GIS_HORIZON ? "azimuths" : "directions");
+    fprintf(stderr, "%s%s: %s of %dx%d%s, %s, %ld nodata texel%s, backend %s, %.3f s\n",
             a->product == GIS_HORIZON ? r->prefix : a->out,
-            a->product == GIS_HORIZON ? "_*.tif" : "", product_name[a->product],
-            d->width, d->height, grid, a->product == GIS_HORIZON ? a->n_azimuths : a->directions,
-            a->product == GIS_HORIZON ? "azimuths" : "directions", d->holes,
-            d->holes == 1 ? "" : "s", hfs_renderer_backend_name(r->c.r), seconds);
+            a->product == GIS_HORIZON ? "_*.tif" : "", product_name[a->product], d->width,
+            d->height, grid, what, d->holes, d->holes == 1 ? "" : "s",
+            r->c.r ? hfs_renderer_backend_name(r->c.r) : backend_name[a->backend], seconds);
 }
 
 int gis_command_run(const gis_args *a, hfs_error *err)
 {
-    run r = {.a = a};
+    gis_run r = {.a = a};
     const double t0 = now_seconds();
     int rc = plan_outputs(&r, err);
     if (!rc)
         rc = gis_dem_read(a->dem, &a->load, &r.dem, err);
-    if (!rc) {
-        describe(&r);
+    if (!rc)
+        rc = describe(&r, err);
+    if (!rc && !r.no_render) {
         const hfs_renderer_desc desc = {.backend = a->backend};
         rc = hfs_renderer_create(&desc, &r.c.r, err);
     }

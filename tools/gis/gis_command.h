@@ -1,11 +1,12 @@
 /*
- * gis_command.h — `hfshade svf | horizon | openness` (issue 39), once the
- * command line is parsed (tools/cli_gis.c parses it; docs/GIS.md is the
- * user's page).  One run: the output files checked against the DEM and
- * each other (gis_outputs.h), the DEM read on its own grid (gis_dem.h),
- * horizons on its square-celled field (gis_horizons.h), the product
- * (gis_products.h) brought back to the input's grid (gis_resample.h) and
- * written as GeoTIFF (gis_raster.h), all files committed together.
+ * gis_command.h — `hfshade svf | horizon | openness | sun | insolation`
+ * (issue 39), once the command line is parsed (tools/cli_gis.c parses it;
+ * docs/GIS.md is the user's page).  One run: the output files checked
+ * against the DEM and each other (gis_outputs.h), the DEM read on its own
+ * grid (gis_dem.h), horizons or renders on its square-celled field
+ * (gis_horizons.h, gis_sun.h), the product (gis_products.h,
+ * gis_sun_command.c) brought back to the input's grid (gis_resample.h)
+ * and written as GeoTIFF (gis_raster.h), all files committed together.
  * Needs GDAL; the parsing does not.
  */
 #ifndef HFS_GIS_COMMAND_H
@@ -13,8 +14,19 @@
 
 #include "gis_math.h"
 #include "hfs_io.h"
+#include "solar_position.h"
 
-typedef enum gis_product { GIS_SVF = 0, GIS_HORIZON, GIS_OPENNESS } gis_product;
+typedef enum gis_product {
+    GIS_SVF = 0,
+    GIS_HORIZON,
+    GIS_OPENNESS,
+    GIS_SUN,        /* one instant's beam on the terrain (gis_sun.h)        */
+    GIS_INSOLATION, /* irradiation over a period, r.sun's mode 2            */
+    GIS_N_PRODUCTS
+} gis_product;
+
+/* insolation: at most this many steps (--from, --to, --step). */
+#define GIS_MAX_STEPS 100000L
 
 typedef struct gis_args {
     gis_product product;
@@ -33,6 +45,13 @@ typedef struct gis_args {
     double *azimuth;            /* n_azimuths, the caller's                   */
     int n_azimuths, decimals;
     gis_convention convention;
+    /* sun, insolation: UTC instants (the command line's local date-times
+     * with their time zone), Julian days of them (hfs_solar_julian_day). */
+    hfs_solar_time at, from, to; /* sun: at; insolation: [from, to)       */
+    double jd, jd_from, jd_to;
+    double step_min;             /* insolation: minutes, > 0              */
+    long n_steps;                /* insolation: ceil((to - from) / step)  */
+    double linke;                /* Linke turbidity (clear_sky.h)         */
 } gis_args;
 
 /* Runs the command.  0, or an error (one line in err: the input or output

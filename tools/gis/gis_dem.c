@@ -7,6 +7,7 @@
 
 #include <cpl_error.h>
 #include <gdal.h>
+#include <ogr_srs_api.h>
 
 #include <errno.h>
 #include <math.h>
@@ -57,6 +58,7 @@ static int to_field(float *z, const char *path, gis_dem *dem, hfs_error *err)
         free(z);
         return hfs_fail(err, rc, "%s: %s", path, ferr.msg);
     }
+    dem->centre_z = z[(size_t)(dem->height / 2) * (size_t)dem->width + (size_t)(dem->width / 2)];
     dem->sw = dem->width, dem->sh = dem->height, dem->d = dem->cx;
     if (fabs(dem->cx - dem->cy) <= 1e-6 * fmax(dem->cx, dem->cy)) {
         dem->cy = dem->cx; /* square (as the render loader judges): sampled back 1:1 */
@@ -122,4 +124,40 @@ void gis_dem_free(gis_dem *dem)
     free(dem->wkt);
     free(dem->sz);
     memset(dem, 0, sizeof *dem);
+}
+
+int gis_dem_lonlat(const gis_dem *dem, const char *path, double *lon, double *lat,
+                   hfs_error *err)
+{
+    if (!dem->wkt || !*dem->wkt)
+        return hfs_fail(err, HFS_E_INVALID, "%s: no CRS (the sun's position needs the DEM's "
+                        "longitude and latitude; assign one, e.g. gdal_edit.py -a_srs)", path);
+    const double *gt = dem->gt, i = 0.5 * dem->width, j = 0.5 * dem->height;
+    double x = gt[0] + gt[1] * i + gt[2] * j, y = gt[3] + gt[4] * i + gt[5] * j;
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    OGRSpatialReferenceH src = OSRNewSpatialReference(dem->wkt);
+    OGRSpatialReferenceH dst = OSRNewSpatialReference(NULL);
+    OGRCoordinateTransformationH ct = NULL;
+    if (src && dst && OSRSetWellKnownGeogCS(dst, "WGS84") == OGRERR_NONE) {
+        OSRSetAxisMappingStrategy(src, OAMS_TRADITIONAL_GIS_ORDER);
+        OSRSetAxisMappingStrategy(dst, OAMS_TRADITIONAL_GIS_ORDER);
+        ct = OCTNewCoordinateTransformation(src, dst);
+    }
+    const int ok = ct && OCTTransform(ct, 1, &x, &y, NULL) && isfinite(x) && isfinite(y) &&
+                   fabs(y) <= 90.0;
+    const char *why = CPLGetLastErrorMsg();
+    int rc = ok ? HFS_OK
+                : hfs_fail(err, HFS_E_INVALID, "%s: its centre cannot be transformed to WGS84 "
+                           "longitude and latitude%s%s%s", path, *why ? " (" : "", why,
+                           *why ? ")" : "");
+    if (ct)
+        OCTDestroyCoordinateTransformation(ct);
+    OSRDestroySpatialReference(src);
+    OSRDestroySpatialReference(dst);
+    CPLPopErrorHandler();
+    if (!rc) {
+        *lon = remainder(x, 360.0); /* (-180, 180] up to the sign of 180 */
+        *lat = y;
+    }
+    return rc;
 }

@@ -38,6 +38,8 @@ typedef struct gis_dem {
     int sw, sh;
     float *sz;                  /* sw*sh finite heights                      */
     double d;                   /* its cell, metres                          */
+    double centre_z;            /* the input's height at texel (w/2, h/2),
+                                   filled where it is a hole (its units)     */
 } gis_dem;
 
 /* Reads path (opts: --nodata; NULL none).  0, or an error naming path;
@@ -46,5 +48,12 @@ int gis_dem_read(const char *path, const hfs_height_load_opts *opts, gis_dem *de
                  hfs_error *err);
 
 void gis_dem_free(gis_dem *dem);
+
+/* The WGS84 longitude and latitude (degrees, east and north positive) of
+ * the centre of dem's extent (the geotransform at (w/2, h/2)), through
+ * GDAL/OSR (OAMS_TRADITIONAL_GIS_ORDER: longitude first).  0, or an error
+ * naming path: a DEM without a CRS, a CRS GDAL cannot transform. */
+int gis_dem_lonlat(const gis_dem *dem, const char *path, double *lon, double *lat,
+                   hfs_error *err);
 
 #endif /* HFS_GIS_DEM_H */

@@ -20,8 +20,8 @@
 
 #include "hfs_io.h"
 
-#define GIS_RASTER_MAX_BANDS 2
-#define GIS_RASTER_MAX_META 16
+#define GIS_RASTER_MAX_BANDS 3
+#define GIS_RASTER_MAX_META 24
 
 typedef struct gis_band {
     const float *v;           /* width*height values, row 0 first           */

@@ -1,0 +1,61 @@
+/*
+ * gis_run.h — one run of a GIS command, as the products' writers share it
+ * (internal to the commands): gis_command.c makes the run (outputs, DEM,
+ * renderer), writes svf, horizon and openness, commits and prints the
+ * summary; gis_sun_command.c describes and writes sun and insolation;
+ * gis_run.c holds what both take from the run (metadata, a raster of the
+ * input's grid), so neither file calls the other back.  Needs GDAL (the
+ * writers' rasters).
+ */
+#ifndef HFS_GIS_RUN_H
+#define HFS_GIS_RUN_H
+
+#include "gis_command.h"
+#include "gis_dem.h"
+#include "gis_outputs.h"
+#include "gis_products.h"
+#include "gis_raster.h"
+#include "gis_sun.h"
+
+#define GIS_RUN_META_LEN 128
+
+typedef struct gis_run {
+    const gis_args *a;
+    gis_outputs *outs;
+    char prefix[4096];       /* horizon: -o without a trailing .tif         */
+    char **names;            /* horizon: the n_azimuths file names          */
+    gis_dem dem;
+    gis_compute c;
+    char meta[GIS_RASTER_MAX_META - 2][GIS_RUN_META_LEN]; /* every file's items */
+    int n_meta;
+    int no_render;           /* nothing to render: no renderer is made      */
+    /* sun, insolation (gis_sun_command.c) */
+    hfs_solar_site site;
+    gis_sun_at sun;          /* sun: the instant's                          */
+    gis_period period;       /* insolation                                  */
+    gis_period_stats stats;
+} gis_run;
+
+/* Adds one "NAME=VALUE" item to every file of the run. */
+void gis_run_meta(gis_run *r, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* A one-band raster of the input's grid with the run's metadata and
+ * `extra` (NULL: none). */
+gis_raster gis_run_raster(const gis_run *r, const char *extra);
+
+/* sun, insolation: the site (the DEM's centre: WGS84 longitude and
+ * latitude, its height), the sun or the period, nodata and the metadata.
+ * 0, or an error (a DEM without a CRS, a site out of range). */
+int gis_sun_describe(gis_run *r, hfs_error *err);
+
+/* sun, insolation: renders and writes the raster. */
+int gis_sun_write(gis_run *r, hfs_error *err);
+
+/* sun, insolation: the summary line's middle ("sun at azimuth ..."). */
+void gis_sun_summary(const gis_run *r, char *buf, size_t n);
+
+#endif /* HFS_GIS_RUN_H */

@@ -1,0 +1,224 @@
+/*
+ * gis_sun.c — see gis_sun.h.  Sums are kept in double on the square grid
+ * (a year of 15-minute steps adds 17 000 terms a texel) and brought back
+ * to the input's grid once.
+ */
+#include "gis_sun.h"
+
+#include "clear_sky.h"
+#include "gis_resample.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#define PI 3.14159265358979323846
+#define RAD (PI / 180.0)
+
+int gis_sun_compute(double jd, const hfs_solar_site *site, double linke, gis_sun_at *out)
+{
+    if (hfs_solar_position_jd(jd, site, &out->pos))
+        return -1;
+    out->jd = jd;
+    out->alpha_deg = GIS_SUN_RADIUS_ARCSEC / 3600.0 / out->pos.distance_au;
+    return hfs_clear_sky_g0(out->pos.elevation_true_deg, site->elevation_m, linke,
+                            HFS_SOLAR_CONSTANT_WM2 * out->pos.distance_factor,
+                            &out->beam_normal, &out->diffuse_horizontal);
+}
+
+int gis_sun_up(const gis_sun_at *s)
+{
+    return s->pos.elevation_deg > 0.0;
+}
+
+void gis_sun_key(const gis_sun_at *s, int ex, int ey, hfs_key_light *k)
+{
+    const double alpha = s->alpha_deg * RAD, s2 = sin(alpha) * sin(alpha);
+    *k = (hfs_key_light){
+        .phi = gis_grid_phi(gis_phi_of(s->pos.azimuth_deg, GIS_COMPASS), ex, ey),
+        .elev = s->pos.elevation_deg * RAD,
+        .alpha = alpha,
+        .radiance = {(float)(1.0 / s2), (float)(1.0 / s2), (float)(1.0 / s2)}};
+}
+
+/* f = Lo / (Le sin^2 alpha) of key light k's render (channel 0). */
+static double factor_of(const hfs_key_light *k, float lo)
+{
+    const double s = sin(k->alpha);
+    return (double)lo / ((double)k->radiance[0] * s * s);
+}
+
+/* The renders' settings: the defaults but the visibility at every texel
+ * (subsample 1): a raster is made once, at the DEM's own resolution. */
+static void quality(hfs_quality *q)
+{
+    hfs_quality_defaults(q);
+    q->subsample = 1;
+}
+
+static hfs_field field_of(const gis_compute *c)
+{
+    const gis_dem *d = c->dem;
+    return (hfs_field){.width = d->sw, .height = d->sh, .z = d->sz, .dx = d->d,
+                       .zscale = c->zscale};
+}
+
+/* sq (the square grid) onto the input's grid. */
+static void back(const gis_compute *c, const float *sq, float *out)
+{
+    const gis_dem *d = c->dem;
+    gis_sample_back(sq, d->sw, d->sh, d->cx / d->d, d->cy / d->d, d->width, d->height, d->hole,
+                    c->nodata, out);
+}
+
+/* f on the square grid (sq) and, with vis not NULL, V. */
+static int sun_factor(const gis_compute *c, const gis_sun_at *s, float *f, float *vis,
+                      hfs_error *err)
+{
+    const hfs_field field = field_of(c);
+    hfs_lighting l;
+    hfs_lighting_defaults(&l);
+    l.n_key = 1;
+    gis_sun_key(s, c->dem->ex, c->dem->ey, &l.key[0]);
+    hfs_quality q;
+    quality(&q);
+    hfs_image lit = {0}, open = {0};
+    int rc = hfs_image_alloc(&lit, field.width, field.height, err);
+    if (!rc && vis)
+        rc = hfs_image_alloc(&open, field.width, field.height, err);
+    if (!rc)
+        rc = hfs_renderer_render(c->r, &field, &l, &q, &lit, NULL, NULL, err);
+    if (!rc && vis)
+        rc = hfs_render_unshadowed(&field, &l, &q, &open, err);
+    const size_t n = (size_t)field.width * (size_t)field.height;
+    for (size_t p = 0; p < n && !rc; ++p) {
+        const double fp = fmax(factor_of(&l.key[0], lit.rgb[3 * p]), 0.0);
+        f[p] = (float)fp;
+        if (vis) {
+            const double fu = factor_of(&l.key[0], open.rgb[3 * p]);
+            vis[p] = fu > GIS_SUN_SELF_SHADOW ? (float)fmin(fp / fu, 1.0) : 0.0f;
+        }
+    }
+    hfs_image_free(&lit);
+    hfs_image_free(&open);
+    return rc;
+}
+
+int gis_product_sun(const gis_compute *c, const gis_sun_at *s, float *beam, float *vis,
+                    hfs_error *err)
+{
+    const gis_dem *d = c->dem;
+    const size_t n = (size_t)d->sw * (size_t)d->sh;
+    float *f = calloc(n, sizeof *f), *v = calloc(n, sizeof *v);
+    int rc = f && v ? HFS_OK : hfs_fail(err, HFS_E_NOMEM, "sun: out of memory");
+    if (!rc && gis_sun_up(s))
+        rc = sun_factor(c, s, f, v, err);
+    if (!rc) {
+        for (size_t p = 0; p < n; ++p)
+            f[p] = (float)(s->beam_normal * f[p]);
+        back(c, f, beam);
+        back(c, v, vis);
+    }
+    free(f);
+    free(v);
+    return rc;
+}
+
+void gis_period_step(const gis_period *p, long k, double *jd_mid, double *hours)
+{
+    const double step = p->step_min / 1440.0, t0 = p->jd_from + (double)k * step;
+    const double len = fmin(step, p->jd_to - t0);
+    *jd_mid = t0 + 0.5 * len;
+    *hours = 24.0 * len;
+}
+
+int gis_period_scan(const gis_period *p, gis_period_stats *st)
+{
+    *st = (gis_period_stats){0};
+    for (long k = 0; k < p->n_steps; ++k) {
+        double jd, hours;
+        gis_sun_at s;
+        gis_period_step(p, k, &jd, &hours);
+        if (gis_sun_compute(jd, &p->site, p->linke, &s))
+            return -1;
+        st->steps_sun += s.pos.elevation_true_deg > 0.0;
+        st->beam_normal_wh += s.beam_normal * hours;
+        st->diffuse_wh += s.diffuse_horizontal * hours;
+    }
+    return 0;
+}
+
+/* pi Lo of the isotropic sky of radiance 1/pi, on the square grid. */
+static int sky_share(const gis_compute *c, float *sky, hfs_error *err)
+{
+    const hfs_field field = field_of(c);
+    hfs_lighting l;
+    hfs_lighting_defaults(&l);
+    l.has_env = 1;
+    for (int ch = 0; ch < 3; ++ch)
+        l.env_sh[ch][0] = 2.0 * sqrt(PI) / PI;
+    hfs_quality q;
+    quality(&q);
+    hfs_image lit = {0};
+    int rc = hfs_image_alloc(&lit, field.width, field.height, err);
+    if (!rc)
+        rc = hfs_renderer_render(c->r, &field, &l, &q, &lit, NULL, NULL, err);
+    const size_t n = (size_t)field.width * (size_t)field.height;
+    for (size_t p = 0; p < n && !rc; ++p)
+        sky[p] = (float)fmax(PI * lit.rgb[3 * p], 0.0);
+    hfs_image_free(&lit);
+    return rc;
+}
+
+/* The beam irradiation (Wh/m^2) of every step with h0 > 0 summed into acc
+ * (the square grid), f of each into f. */
+static int beam_sum(const gis_compute *c, const gis_period *p, double *acc, float *f,
+                    hfs_error *err)
+{
+    const size_t n = (size_t)c->dem->sw * (size_t)c->dem->sh;
+    for (long k = 0; k < p->n_steps; ++k) {
+        double jd, hours;
+        gis_sun_at s;
+        gis_period_step(p, k, &jd, &hours);
+        if (gis_sun_compute(jd, &p->site, p->linke, &s))
+            return hfs_fail(err, HFS_E_INVALID, "insolation: no sun for step %ld", k + 1);
+        if (!(s.beam_normal > 0.0))
+            continue;
+        const int rc = sun_factor(c, &s, f, NULL, err);
+        if (rc)
+            return rc;
+        for (size_t q = 0; q < n; ++q)
+            acc[q] += s.beam_normal * f[q] * hours;
+    }
+    return HFS_OK;
+}
+
+int gis_product_insolation(const gis_compute *c, const gis_period *p, float *beam,
+                           float *diffuse, float *global, gis_period_stats *st, hfs_error *err)
+{
+    const gis_dem *d = c->dem;
+    const size_t n = (size_t)d->sw * (size_t)d->sh;
+    double *acc = calloc(n, sizeof *acc);
+    float *f = calloc(n, sizeof *f), *sky = calloc(n, sizeof *sky);
+    int rc = acc && f && sky ? HFS_OK : hfs_fail(err, HFS_E_NOMEM, "insolation: out of memory");
+    if (!rc && gis_period_scan(p, st))
+        rc = hfs_fail(err, HFS_E_INVALID, "insolation: the site or period is out of range");
+    if (!rc && st->steps_sun > 0)
+        rc = sky_share(c, sky, err);
+    if (!rc)
+        rc = beam_sum(c, p, acc, f, err);
+    if (!rc) {
+        for (size_t q = 0; q < n; ++q) {
+            f[q] = (float)acc[q];
+            sky[q] = (float)(st->diffuse_wh * sky[q]);
+        }
+        back(c, f, beam);
+        back(c, sky, diffuse);
+        for (size_t q = 0; q < n; ++q)
+            f[q] = (float)(acc[q] + sky[q]);
+        back(c, f, global);
+    }
+    free(acc);
+    free(f);
+    free(sky);
+    return rc;
+}

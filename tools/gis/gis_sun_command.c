@@ -1,0 +1,143 @@
+/*
+ * gis_sun_command.c — `hfshade sun` and `hfshade insolation` in a GIS
+ * command's run (gis_run.h; gis_command.c makes the run, commits the files
+ * and prints the summary): the site from the DEM's georeference, the sun
+ * or the period, the rasters and their metadata (docs/GIS.md).
+ */
+#include "gis_run.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* t as ISO 8601 UTC: 2026-06-21T07:30:00Z (seconds with decimals only when
+ * it has them). */
+static void utc_string(const hfs_solar_time *t, char *buf, size_t n)
+{
+    const int whole = t->second == floor(t->second);
+    snprintf(buf, n, "%04d-%02d-%02dT%02d:%02d:%0*.*fZ", t->year, t->month, t->day, t->hour,
+             t->minute, whole ? 2 : 6, whole ? 0 : 3, t->second);
+}
+
+/* The site: the DEM's centre, its height in metres in the range the sun's
+ * and the clear sky's formulas take. */
+static int site_of(gis_run *r, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    double lon = 0.0, lat = 0.0;
+    const int rc = gis_dem_lonlat(&r->dem, a->dem, &lon, &lat, err);
+    if (rc)
+        return rc;
+    const double z = r->dem.centre_z * a->zscale;
+    if (!(z >= -1000.0 && z <= 9000.0))
+        return hfs_fail(err, HFS_E_INVALID, "%s: the height at its centre, %.6g m, is outside "
+                        "-1000..9000 m (the site of the sun and the clear sky; heights not "
+                        "in metres? --zscale)", a->dem, z);
+    r->site = (hfs_solar_site){.lat_deg = lat, .lon_deg = lon, .elevation_m = z};
+    gis_run_meta(r, "HFS_SITE_LON=%.6f", lon);
+    gis_run_meta(r, "HFS_SITE_LAT=%.6f", lat);
+    gis_run_meta(r, "HFS_SITE_ELEVATION_M=%.6g", z);
+    gis_run_meta(r, "HFS_LINKE=%.6g", a->linke);
+    gis_run_meta(r, "HFS_SOLAR_POSITION=NOAA solar calculator (Meeus 1998), apparent "
+                 "elevation with refraction");
+    gis_run_meta(r, "HFS_CLEAR_SKY=ESRA (Rigollier et al. 2000), as GRASS r.sun");
+    return HFS_OK;
+}
+
+static int describe_sun(gis_run *r, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    if (gis_sun_compute(a->jd, &r->site, a->linke, &r->sun))
+        return hfs_fail(err, HFS_E_INVALID, "%s: no sun for this site and instant", a->dem);
+    r->no_render = !gis_sun_up(&r->sun);
+    char utc[40];
+    utc_string(&a->at, utc, sizeof utc);
+    gis_run_meta(r, "HFS_UTC=%s", utc);
+    gis_run_meta(r, "HFS_AZIMUTH_CONVENTION=compass");
+    gis_run_meta(r, "HFS_SUN_AZIMUTH=%.4f", r->sun.pos.azimuth_deg);
+    gis_run_meta(r, "HFS_SUN_ELEVATION=%.4f", r->sun.pos.elevation_deg);
+    gis_run_meta(r, "HFS_SUN_RADIUS=%.5f", r->sun.alpha_deg);
+    gis_run_meta(r, "HFS_BEAM_NORMAL_WM2=%.3f", r->sun.beam_normal);
+    gis_run_meta(r, "HFS_DIFFUSE_HORIZONTAL_WM2=%.3f", r->sun.diffuse_horizontal);
+    return HFS_OK;
+}
+
+static int describe_period(gis_run *r, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    r->period = (gis_period){.jd_from = a->jd_from, .jd_to = a->jd_to, .step_min = a->step_min,
+                             .n_steps = a->n_steps, .site = r->site, .linke = a->linke};
+    if (gis_period_scan(&r->period, &r->stats))
+        return hfs_fail(err, HFS_E_INVALID, "%s: no sun for this site and period", a->dem);
+    r->no_render = r->stats.steps_sun == 0;
+    char from[40], to[40];
+    utc_string(&a->from, from, sizeof from);
+    utc_string(&a->to, to, sizeof to);
+    gis_run_meta(r, "HFS_FROM=%s", from);
+    gis_run_meta(r, "HFS_TO=%s", to);
+    gis_run_meta(r, "HFS_STEP_MIN=%.9g", a->step_min);
+    gis_run_meta(r, "HFS_STEPS=%ld", a->n_steps);
+    gis_run_meta(r, "HFS_STEPS_SUN=%ld", r->stats.steps_sun);
+    gis_run_meta(r, "HFS_BEAM_NORMAL_WH=%.3f", r->stats.beam_normal_wh);
+    gis_run_meta(r, "HFS_DIFFUSE_HORIZONTAL_WH=%.3f", r->stats.diffuse_wh);
+    gis_run_meta(r, "HFS_DIFFUSE_MODEL=isotropic sky over the terrain's horizons; no "
+                 "ground-reflected part");
+    return HFS_OK;
+}
+
+int gis_sun_describe(gis_run *r, hfs_error *err)
+{
+    /* Every value >= 0 and finite: the input's nodata when negative. */
+    r->c.nodata = gis_nodata_for(r->dem.has_nodata, r->dem.nodata, 0.0, FLT_MAX);
+    const int rc = site_of(r, err);
+    if (rc)
+        return rc;
+    return r->a->product == GIS_SUN ? describe_sun(r, err) : describe_period(r, err);
+}
+
+int gis_sun_write(gis_run *r, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    const int sun = a->product == GIS_SUN;
+    const size_t n = (size_t)r->dem.width * (size_t)r->dem.height;
+    float *v = malloc((sun ? 2 : 3) * n * sizeof *v);
+    if (!v)
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", a->out);
+    gis_raster g = gis_run_raster(r, NULL);
+    int rc;
+    if (sun) {
+        rc = gis_product_sun(&r->c, &r->sun, v, v + n, err);
+        g.n_bands = 2;
+        g.band[0] = (gis_band){v, "direct-beam irradiance on the tilted, shadowed surface "
+                               "(clear sky)", "W/m^2"};
+        g.band[1] = (gis_band){v + n, "visible fraction of the sun's disk", ""};
+    } else {
+        rc = gis_product_insolation(&r->c, &r->period, v, v + n, v + 2 * n, &r->stats, err);
+        g.n_bands = 3;
+        g.band[0] = (gis_band){v, "beam irradiation (clear sky)", "Wh/m^2"};
+        g.band[1] = (gis_band){v + n, "sky-diffuse irradiation (clear sky, isotropic)",
+                               "Wh/m^2"};
+        g.band[2] = (gis_band){v + 2 * n, "global irradiation (beam + sky-diffuse)", "Wh/m^2"};
+    }
+    if (!rc)
+        rc = gis_raster_write(gis_outputs_set(r->outs, a->out), a->out, &g, err);
+    free(v);
+    return rc;
+}
+
+void gis_sun_summary(const gis_run *r, char *buf, size_t n)
+{
+    const gis_sun_at *s = &r->sun;
+    if (r->a->product == GIS_INSOLATION)
+        snprintf(buf, n, "%ld step%s of %g min, %ld with the sun up (clear sky: beam normal "
+                 "%.0f, diffuse horizontal %.0f Wh/m^2)", r->a->n_steps,
+                 r->a->n_steps == 1 ? "" : "s", r->a->step_min, r->stats.steps_sun,
+                 r->stats.beam_normal_wh, r->stats.diffuse_wh);
+    else if (gis_sun_up(s))
+        snprintf(buf, n, "sun at azimuth %.2f, elevation %.2f deg (beam normal %.1f W/m^2)",
+                 s->pos.azimuth_deg, s->pos.elevation_deg, s->beam_normal);
+    else
+        snprintf(buf, n, "sun below the horizon (elevation %.2f deg): zeros",
+                 s->pos.elevation_deg);
+}
