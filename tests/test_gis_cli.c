@@ -35,24 +35,18 @@
 #define _XOPEN_SOURCE 700 /* realpath */
 
 #include "gdal_fixture.h"
-#include "gl_require.h"
-#include "test_util.h"
+#include "gis_cli_util.h"
 
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
 #include <math.h>
-#include <stdarg.h>
-#include <sys/wait.h>
 
 #define W 64
 #define H 48
 #define ND (-32768.0)
 #define SVF_MEAN_BOUND 1.01e-5
 #define SVF_MAX_BOUND 2.12e-4
-
-static const char *hfshade;
-static int gl_missing;
 
 /* ---- files in ------------------------------------------------------------ */
 
@@ -79,90 +73,7 @@ static void terrain(float *z, float hole)
 
 /* ---- running the tool ---------------------------------------------------- */
 
-/* Runs `hfshade ARGS`, stdout and stderr to files; its exit status. */
-static int run(const char *fmt, ...)
-{
-    char args[2048], cmd[4096];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(args, sizeof args, fmt, ap);
-    va_end(ap);
-    snprintf(cmd, sizeof cmd, "cd %s && %s %s >out.txt 2>err.txt", tmpdir, hfshade, args);
-    const int st = system(cmd);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : 128;
-}
-
-/* The lines of a file (0 when it cannot be read). */
-static int lines_of(const char *name)
-{
-    size_t n = 0;
-    unsigned char *b = read_all(tpath(name), &n);
-    int lines = 0;
-    for (size_t k = 0; b && k < n; ++k)
-        lines += b[k] == '\n';
-    free(b);
-    return lines;
-}
-
-/* A GLES run that failed: a skip when no GL context can be made here. */
-static int gles_failed(const char *what)
-{
-    hfs_error why = {""};
-    if (hfs_gl_missing_device(&why)) {
-        printf("SKIP (gles parts): %s: %s\n", what, why.msg);
-        gl_missing = 1;
-        return 1;
-    }
-    return 0;
-}
-
 /* ---- files out ----------------------------------------------------------- */
-
-typedef struct raster {
-    int w, h, bands, has_nd;
-    double nd, gt[6];
-    float *v;
-    char wkt[4096], layout[32];
-    GDALDatasetH ds;
-} raster;
-
-static int read_raster(const char *name, raster *r)
-{
-    memset(r, 0, sizeof *r);
-    if (!(r->ds = GDALOpen(tpath(name), GA_ReadOnly)))
-        return -1;
-    r->w = GDALGetRasterXSize(r->ds), r->h = GDALGetRasterYSize(r->ds);
-    r->bands = GDALGetRasterCount(r->ds);
-    GDALGetGeoTransform(r->ds, r->gt);
-    snprintf(r->wkt, sizeof r->wkt, "%s", GDALGetProjectionRef(r->ds));
-    const char *layout = GDALGetMetadataItem(r->ds, "LAYOUT", "IMAGE_STRUCTURE");
-    snprintf(r->layout, sizeof r->layout, "%s", layout ? layout : "");
-    r->v = malloc(sizeof(float) * (size_t)r->w * r->h * r->bands);
-    for (int b = 0; b < r->bands; ++b) {
-        GDALRasterBandH band = GDALGetRasterBand(r->ds, b + 1);
-        int has = 0;
-        const double nd = GDALGetRasterNoDataValue(band, &has);
-        r->has_nd = b ? r->has_nd && has && nd == r->nd : has;
-        r->nd = nd;
-        if (GDALRasterIO(band, GF_Read, 0, 0, r->w, r->h, r->v + (size_t)b * r->w * r->h, r->w,
-                         r->h, GDT_Float32, 0, 0) != CE_None)
-            return -1;
-    }
-    return 0;
-}
-
-static void free_raster(raster *r)
-{
-    if (r->ds)
-        GDALClose(r->ds);
-    free(r->v);
-}
-
-static const char *meta(const raster *r, const char *key)
-{
-    const char *v = GDALGetMetadataItem(r->ds, key, NULL);
-    return v ? v : "";
-}
 
 /* name: the input's grid, CRS and nodata nd at exactly the holes of z
  * (NaN or -32768), every other value finite and in [lo, hi]. */
@@ -370,19 +281,9 @@ static void test_bad_inputs(void)
 
 int main(int argc, char **argv)
 {
-    if (argc < 2) {
-        fprintf(stderr, "usage: test_gis_cli HFSHADE\n");
-        return 2;
-    }
-    static char exe[4096]; /* absolute: the runs start in the temporary folder */
-    if (!realpath(argv[1], exe)) {
-        perror(argv[1]);
-        return 1;
-    }
-    hfshade = exe;
-    GDALAllRegister();
-    if (make_tmpdir("gis_cli"))
-        return 1;
+    const int begun = gis_cli_begin(argc, argv, "gis_cli");
+    if (begun)
+        return begun;
     float z[W * H];
     terrain(z, (float)ND);
     const double arc = 3.0 / 3600.0;

@@ -43,16 +43,13 @@
 
 #include "clear_sky.h"
 #include "gdal_fixture.h"
-#include "gl_require.h"
+#include "gis_cli_util.h"
 #include "solar_position.h"
-#include "test_util.h"
 
 #include <gdal.h>
 #include <ogr_srs_api.h>
 
 #include <math.h>
-#include <stdarg.h>
-#include <sys/wait.h>
 
 #define W 64
 #define H 48
@@ -69,9 +66,6 @@
 #define GT_BEAM_MAX 2.9
 #define GT_VIS_MEAN 1.5e-3
 #define GT_VIS_MAX 0.44
-
-static const char *hfshade;
-static int gl_missing;
 
 /* ---- files in ------------------------------------------------------------ */
 
@@ -98,29 +92,6 @@ static void write_dem_no_crs(const char *name, const float *z)
 
 /* ---- running the tool ---------------------------------------------------- */
 
-static int run(const char *fmt, ...)
-{
-    char args[2048], cmd[4096];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(args, sizeof args, fmt, ap);
-    va_end(ap);
-    snprintf(cmd, sizeof cmd, "cd %s && %s %s >out.txt 2>err.txt", tmpdir, hfshade, args);
-    const int st = system(cmd);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : 128;
-}
-
-static int lines_of(const char *name)
-{
-    size_t n = 0;
-    unsigned char *b = read_all(tpath(name), &n);
-    int lines = 0;
-    for (size_t k = 0; b && k < n; ++k)
-        lines += b[k] == '\n';
-    free(b);
-    return lines;
-}
-
 /* 1 when file name holds needle. */
 static int holds(const char *name, const char *needle)
 {
@@ -133,61 +104,18 @@ static int holds(const char *name, const char *needle)
     return found;
 }
 
-/* A GLES run that failed: a skip when no GL context can be made here. */
-static int gles_failed(const char *what)
-{
-    hfs_error why = {""};
-    if (hfs_gl_missing_device(&why)) {
-        printf("SKIP (gles parts): %s: %s\n", what, why.msg);
-        gl_missing = 1;
-        return 1;
-    }
-    return 0;
-}
-
 /* ---- files out ----------------------------------------------------------- */
 
-typedef struct raster {
-    int w, h, bands;
-    double nd;
-    float *v;
-    GDALDatasetH ds;
-} raster;
-
-static int read_raster(const char *name, raster *r)
+/* An output of the test DEM's size (W x H), read back; -1 otherwise. */
+static int read_sized(const char *name, raster *r)
 {
-    memset(r, 0, sizeof *r);
-    if (!(r->ds = GDALOpen(tpath(name), GA_ReadOnly)))
-        return -1;
-    r->w = GDALGetRasterXSize(r->ds), r->h = GDALGetRasterYSize(r->ds);
-    r->bands = GDALGetRasterCount(r->ds);
-    r->nd = GDALGetRasterNoDataValue(GDALGetRasterBand(r->ds, 1), NULL);
-    r->v = malloc(sizeof(float) * (size_t)r->w * r->h * r->bands);
-    for (int b = 0; b < r->bands; ++b)
-        if (GDALRasterIO(GDALGetRasterBand(r->ds, b + 1), GF_Read, 0, 0, r->w, r->h,
-                         r->v + (size_t)b * r->w * r->h, r->w, r->h, GDT_Float32, 0,
-                         0) != CE_None)
-            return -1;
-    return r->w == W && r->h == H ? 0 : -1;
-}
-
-static void free_raster(raster *r)
-{
-    if (r->ds)
-        GDALClose(r->ds);
-    free(r->v);
+    return read_raster(name, r) == 0 && r->w == W && r->h == H ? 0 : -1;
 }
 
 static double meta_num(const raster *r, const char *key)
 {
     const char *v = GDALGetMetadataItem(r->ds, key, NULL);
     return v ? atof(v) : NAN;
-}
-
-static const char *meta(const raster *r, const char *key)
-{
-    const char *v = GDALGetMetadataItem(r->ds, key, NULL);
-    return v ? v : "";
 }
 
 /* ---- the expected sun ---------------------------------------------------- */
@@ -250,7 +178,7 @@ static double lat0;         /* the UTM DEMs' centre */
 static void check_flat(const char *name, const sun *s, double tol)
 {
     raster r;
-    REQUIRE(read_raster(name, &r) == 0 && r.bands == 2, "%s: not 64x48, 2 bands", name);
+    REQUIRE(read_sized(name, &r) == 0 && r.bands == 2, "%s: not 64x48, 2 bands", name);
     const double want = s->beam * sin(s->el * RAD);
     double worst = 0.0, worst_v = 0.0;
     long holes = 0;
@@ -343,7 +271,7 @@ static int classify(int i, int j, const sun *s)
 static void check_wall(const char *name, const sun *s)
 {
     raster r;
-    REQUIRE(read_raster(name, &r) == 0 && r.bands == 2, "%s", name);
+    REQUIRE(read_sized(name, &r) == 0 && r.bands == 2, "%s: not 64x48, 2 bands", name);
     const double lit = s->beam * sin(s->el * RAD);
     long shadow = 0, open = 0, wrong = 0;
     for (int j = 0; j < H; ++j)
@@ -421,7 +349,7 @@ static void test_gles_truth(void)
         return;
     }
     raster g, t;
-    REQUIRE(read_raster("hills_gles.tif", &g) == 0 && read_raster("hills_truth.tif", &t) == 0,
+    REQUIRE(read_sized("hills_gles.tif", &g) == 0 && read_sized("hills_truth.tif", &t) == 0,
             "hills rasters");
     CHECK(g.nd == -32768.0 && t.nd == -32768.0);
     double bm, bx, vm, vx;
@@ -458,7 +386,7 @@ static void check_insolation(const char *name, double tol)
     expected_insolation(jd_of("2026-06-21T00:00+02:00"), jd_of("2026-06-21T23:30+02:00"), 60.0,
                         &beam, &diffuse, &n, &up);
     raster r;
-    REQUIRE(read_raster(name, &r) == 0 && r.bands == 3, "%s: not 3 bands", name);
+    REQUIRE(read_sized(name, &r) == 0 && r.bands == 3, "%s: not 3 bands", name);
     double worst[3] = {0.0, 0.0, 0.0};
     const double want[3] = {beam, diffuse, beam + diffuse};
     for (int b = 0; b < 3; ++b)
@@ -496,7 +424,7 @@ static void test_night(void)
             "sun at night failed");
     CHECK(lines_of("err.txt") == 1 && holds("err.txt", "below the horizon"));
     raster r;
-    REQUIRE(read_raster("night.tif", &r) == 0, "night.tif");
+    REQUIRE(read_sized("night.tif", &r) == 0, "night.tif");
     long nonzero = 0;
     for (int p = 0; p < 2 * W * H; ++p)
         nonzero += r.v[p] != 0.0f;
@@ -555,19 +483,9 @@ static void test_bad_inputs(void)
 
 int main(int argc, char **argv)
 {
-    if (argc < 2) {
-        fprintf(stderr, "usage: test_gis_sun HFSHADE\n");
-        return 2;
-    }
-    static char exe[4096]; /* absolute: the runs start in the temporary folder */
-    if (!realpath(argv[1], exe)) {
-        perror(argv[1]);
-        return 1;
-    }
-    hfshade = exe;
-    GDALAllRegister();
-    if (make_tmpdir("gis_sun"))
-        return 1;
+    const int begun = gis_cli_begin(argc, argv, "gis_sun");
+    if (begun)
+        return begun;
     lat0 = utm_centre_lat();
     test_flat();
     test_wall();
