@@ -103,6 +103,33 @@ static void check_grid(const char *name, const raster *in, const float *z, doubl
 
 /* ---- the checks ---------------------------------------------------------- */
 
+/* `render --geotiff` of the geographic DEM: computed on its square cells,
+ * written on the DEM's own grid (64x48, its geotransform, CRS and nodata at
+ * the holes: gis_lit.h), 3 bands of radiance; texel (0, 0) is node 0 of
+ * both grids, so it equals the PFM's (the square grid's) first texel. */
+static void test_render_grid(const raster *in, const float *z)
+{
+    REQUIRE(run("render --height geo.tif --backend cpu --env-sh "
+                "3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 --pfm lit.pfm --geotiff lit.tif") == 0,
+            "render --geotiff failed");
+    check_grid("lit.tif", in, z, ND, 0.0, 10.0);
+    raster r;
+    REQUIRE(read_raster("lit.tif", &r) == 0 && r.bands == 3, "lit.tif: not 3 bands");
+    CHECK(!strcmp(meta(&r, "HFS_PRODUCT"), "render"));
+    size_t n = 0;
+    unsigned char *pfm = read_all(tpath("lit.pfm"), &n);
+    REQUIRE(pfm && n > 12, "lit.pfm");
+    /* the library's PFM: row j = 0 first (SPEC), the data its last bytes */
+    int pw = 0, ph = 0;
+    REQUIRE(sscanf((const char *)pfm, "PF %d %d", &pw, &ph) == 2 && ph == 59,
+            "lit.pfm: not the 64x59 square grid (%dx%d)", pw, ph);
+    float first;
+    memcpy(&first, pfm + n - (size_t)pw * ph * 12, sizeof first);
+    CHECK(fabsf(first - r.v[0]) <= 1e-6f * fabsf(first));
+    free(pfm);
+    free_raster(&r);
+}
+
 /* Sky-view factor, openness and horizons of the geographic DEM on the
  * CPU reference: grid, CRS, nodata, ranges, metadata. */
 static void test_products(const raster *in, const float *z)
@@ -292,6 +319,7 @@ int main(int argc, char **argv)
     raster in;
     if (read_raster("geo.tif", &in) == 0) {
         test_products(&in, z);
+        test_render_grid(&in, z);
         test_gles_truth(&in, z);
         test_flat();
         test_conventions();

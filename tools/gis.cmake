@@ -14,6 +14,7 @@ target_link_libraries(hfs_gis_core PUBLIC hfshade_lib hfshade_io hfs_solar m)
 if(TARGET hfshade_gdal)
   add_library(hfs_gis_gdal STATIC ${CMAKE_CURRENT_LIST_DIR}/gis/gis_dem.c
               ${CMAKE_CURRENT_LIST_DIR}/gis/gis_raster.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_command.c
-              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sun_command.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_run.c)
+              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sun_command.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_run.c
+              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_lit.c)
   target_link_libraries(hfs_gis_gdal PUBLIC hfs_gis_core hfshade_gdal)
 endif()

@@ -28,6 +28,7 @@
 #include "cli_view.h"
 #ifdef HFS_HAVE_GDAL
 #include "geotiff_write.h"
+#include "gis_lit.h"
 #include "height_gdal.h"
 #endif
 #include "cli_envmap.h"
@@ -461,7 +462,10 @@ static int cmd_render(const cli *c, hfs_error *err)
     if (c->out_pfm && (rc = hfs_pfm_write_to(outs, c->out_pfm, shown, 0, err)))
         goto out;
 #ifdef HFS_HAVE_GDAL
-    if (c->out_tif && (rc = hfs_gdal_write_geotiff(outs, c->out_tif, shown, &in.hm, err)))
+    const hfs_height_load_opts lo = {.has_nodata = c->scene.has_nodata,
+                                     .nodata = (float)c->scene.nodata};
+    if (c->out_tif &&
+        (rc = gis_lit_write(outs, c->out_tif, c->scene.height, &lo, shown, &in.hm, err)))
         goto out;
     /* The grid's PNG and PFM keep a GDAL-read DEM's place: world files. */
     if (!c->v.view && c->out_pfm && (rc = hfs_gdal_write_world_file(outs, c->out_pfm, &in.hm, err)))
