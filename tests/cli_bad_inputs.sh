@@ -210,6 +210,7 @@ $U hfshade svf-bad-directions "--directions: '0'" svf "$tmp/x.tif" -o "$tmp/y.ti
 $U hfshade horizon-no-azimuths "no azimuths" horizon "$tmp/x.tif" -o "$tmp/h"
 $U hfshade horizon-bad-convention "'north'" horizon "$tmp/x.tif" -o "$tmp/h" --step 45 --convention north
 $U hfshade openness-svf-flag "--lambertian: unknown option" openness "$tmp/x.tif" -o "$tmp/y.tif" --lambertian
+$U hfshade svf-bad-tile "--tile: '-64'" svf "$tmp/x.tif" -o "$tmp/y.tif" --radius 300 --tile -64
 $U hfshade sun-no-datetime "no --datetime given" sun "$tmp/x.tif" -o "$tmp/y.tif"
 $U hfshade sun-bad-datetime "month 13" sun "$tmp/x.tif" -o "$tmp/y.tif" --datetime 2026-13-01T10:00Z
 $U hfshade sun-no-timezone "has no time zone" sun "$tmp/x.tif" -o "$tmp/y.tif" --datetime 2026-06-21T10:00

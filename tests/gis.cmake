@@ -2,6 +2,7 @@
 # products from horizon angles, r.horizon's names, the nodata rule, the
 # sample back to the input's grid, and a V valley through the products on
 # the truth and CPU backends (test_gis_math.c; no GDAL, no GL).  The
-# commands end to end: test_gis_cli in gdal.cmake.
+# commands end to end: test_gis_cli (and test_gis_stream, a DEM over the
+# tile size window by window) in gdal.cmake.
 hfs_add_test(test_gis_math SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_math.c
              LIBS hfs_gis_core m LABEL unit TIMEOUT 60)

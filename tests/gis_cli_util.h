@@ -43,6 +43,20 @@ static int gis_cli_begin(int argc, char **argv, const char *name)
     return make_tmpdir(name) ? 1 : 0;
 }
 
+/* The test's end: the temporary folder removed (kept, and named, with
+ * HFS_TEST_KEEP set), 77 when only the GLES parts could not run, else the
+ * checks' verdict. */
+static int gis_cli_end(const char *name)
+{
+    if (!getenv("HFS_TEST_KEEP"))
+        rm_tmpdir();
+    else
+        printf("kept %s\n", tmpdir);
+    if (!failures && gl_missing)
+        return 77;
+    return finish_checks(name);
+}
+
 /* Runs `hfshade ARGS` in tmpdir, stdout and stderr to out.txt and err.txt;
  * its exit status (128: it did not exit). */
 static int run(const char *fmt, ...)

@@ -329,11 +329,5 @@ int main(int argc, char **argv)
         CHECK(!"geo.tif written and read");
     }
     free_raster(&in);
-    if (!getenv("HFS_TEST_KEEP"))
-        rm_tmpdir();
-    else
-        printf("kept %s\n", tmpdir);
-    if (!failures && gl_missing)
-        return 77;
-    return finish_checks("test_gis_cli");
+    return gis_cli_end("test_gis_cli");
 }

@@ -493,11 +493,5 @@ int main(int argc, char **argv)
     test_insolation();
     test_night();
     test_bad_inputs();
-    if (!getenv("HFS_TEST_KEEP"))
-        rm_tmpdir();
-    else
-        printf("kept %s\n", tmpdir);
-    if (!failures && gl_missing)
-        return 77;
-    return finish_checks("test_gis_sun");
+    return gis_cli_end("test_gis_sun");
 }

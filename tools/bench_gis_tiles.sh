@@ -8,16 +8,22 @@
 # limit in one piece, and the seam measure: the largest difference between
 # the two at the texels within 2 of a tile seam against the largest
 # anywhere else (seams every 2048 - 2 halo texels, halo = ceil(radius /
-# cell) + 2).  Wall time and peak memory (RSS) of each run.  Needs
+# cell) + 2).  Wall time and peak memory (RSS) of each run.  Both runs
+# compute the DEM whole (--tile 0).  With TILE, a third run streams it
+# (`hfshade svf --tile TILE`: read, computed and written window by window,
+# tools/gis/gis_stream.h) and its difference from the one piece is
+# printed: its peak RSS against theirs is what streaming buys.  Needs
 # python3-gdal and python3-numpy (installed with apt when missing: bench
 # tools, not the product's).
-# usage: tools/bench_gis_tiles.sh [BUILD] [WxH] [RADIUS_M] [DIRS]
+# usage: tools/bench_gis_tiles.sh [BUILD] [WxH] [RADIUS_M] [DIRS] [TILE]
+#   e.g. tools/bench_gis_tiles.sh build 4096x3072 300 4 1024
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B=${1:-build}
 SIZE=${2:-8192x6144}
 RADIUS=${3:-500}
 DIRS=${4:-8}
+TILE=${5:-}
 H="$(pwd)/$B/tools/hfshade"
 PY=/usr/bin/python3
 $PY -c "from osgeo import gdal; import numpy" 2>/dev/null ||
@@ -45,16 +51,20 @@ ds.SetProjection(srs.ExportToWkt())
 ds.GetRasterBand(1).WriteArray(z)
 ds = None
 EOF
-run() { # NAME ENV...: the svf, its wall time and peak RSS
-    local name=$1
-    shift
+run() { # NAME TILE ENV...: the svf, its wall time and peak RSS
+    local name=$1 tile=$2
+    shift 2
     env "$@" /usr/bin/time -f "$name: %e s, peak RSS %M KiB" "$H" svf "$C/dem.tif" \
-        --radius "$RADIUS" --directions "$DIRS" -o "$C/$name.tif" 2>&1 | sed "s|$C/||"
+        --radius "$RADIUS" --directions "$DIRS" --tile "$tile" -o "$C/$name.tif" 2>&1 |
+        sed "s|$C/||"
 }
-run tiled HFS_GL_STRICT_LIMITS=1
-run single HFS_GL_STRICT_LIMITS=0
-$PY - "$C/tiled.tif" "$C/single.tif" "$RADIUS" <<'EOF'
-import math, sys
+run tiled 0 HFS_GL_STRICT_LIMITS=1
+run single 0 HFS_GL_STRICT_LIMITS=0
+# seams A B SPACING WHAT: the largest difference of A from B at the texels
+# within 2 of a seam (every SPACING texels) against anywhere else
+seams() {
+    $PY - "$@" <<'EOF'
+import sys
 import numpy as np
 from osgeo import gdal
 gdal.UseExceptions()
@@ -63,14 +73,20 @@ def rd(p):
     a = ds.GetRasterBand(1).ReadAsArray().astype(np.float64)
     ds = None
     return a
-a, b = rd(sys.argv[1]), rd(sys.argv[2])
-halo = math.ceil(float(sys.argv[3]) / 10.0) + 2
-inner = 2048 - 2 * halo
+a, b, spacing, what = rd(sys.argv[1]), rd(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
 d = np.abs(a - b)
 near = np.zeros(d.shape, bool)
-for s in range(inner, max(d.shape), inner):
+for s in range(spacing, max(d.shape), spacing):
     near[:, max(s - 2, 0):s + 3] = True
     near[max(s - 2, 0):s + 3, :] = True
-print("tiles of %d inner texels (halo %d): seam max %.3g, elsewhere max %.3g, mean %.3g"
-      % (inner, halo, d[near].max(), d[~near].max(), d.mean()))
+print("%s: seam max %.3g, elsewhere max %.3g, mean %.3g"
+      % (what, d[near].max() if near.any() else 0.0, d[~near].max(), d.mean()))
 EOF
+}
+HALO=$(awk -v r="$RADIUS" 'BEGIN {h = r / 10.0; printf "%d", (h == int(h) ? h : int(h) + 1) + 2}')
+INNER=$((2048 - 2 * HALO))
+seams "$C/tiled.tif" "$C/single.tif" "$INNER" "tiles of $INNER inner texels (halo $HALO)"
+if [ -n "$TILE" ]; then
+    run streamed "$TILE" HFS_GL_STRICT_LIMITS=0
+    seams "$C/streamed.tif" "$C/single.tif" "$TILE" "streamed in windows of $TILE against one piece"
+fi

@@ -56,6 +56,9 @@ static const gis_opt opts[] = {
      "compass: clockwise from north"},
     {"--radius", "R", SVF | HOR, "search radius, metres (default 0: the whole DEM)"},
     {"--radius", "R", OPEN, "search radius, metres (default 10 cells of the DEM)"},
+    {"--tile", "N", SVF | HOR | OPEN,
+     "with a radius, a DEM wider or taller than N texels is read, computed and written "
+     "window by window, memory bounded (square cells only); 0: always whole (default 4096)"},
     {"--backend", "gles|cpu|truth", ALL, "GLES renderer (default), CPU reference, ground truth"},
     {"--zscale", "F", ALL, "heights times F are metres (default 1)"},
     {"--nodata", "V", ALL, "V marks holes (instead of the band's nodata value)"},
@@ -245,6 +248,11 @@ static int set_value(gis_args *a, const char *prog, const char *name, const char
             return hfs_usage_error(prog, "--radius: '%s' is not a distance in [0, 1e9] metres",
                                    v);
         a->radius_given = 1;
+    } else if (!strcmp(name, "--tile")) {
+        if (hfs_cli_long(v, 0, GIS_TILE_MAX, &n) || (n > 0 && n < GIS_TILE_MIN))
+            return hfs_usage_error(prog, "--tile: '%s' is not 0 or a whole number of texels "
+                                   "in [%d, %d]", v, GIS_TILE_MIN, GIS_TILE_MAX);
+        a->tile = (int)n;
     } else if (!strcmp(name, "--backend")) {
         static const char *const names[] = {"gles", "cpu", "truth"};
         static const hfs_backend b[] = {HFS_BACKEND_GLES, HFS_BACKEND_CPU, HFS_BACKEND_TRUTH};
@@ -397,7 +405,7 @@ int hfs_cli_gis(int argc, char **argv)
     while (p + 1 < GIS_N_PRODUCTS && strcmp(argv[0], names[p]))
         p = (gis_product)(p + 1);
     gis_args a = {.product = p, .backend = HFS_BACKEND_GLES, .zscale = 1.0,
-                  .linke = HFS_LINKE_DEFAULT, .step_min = 15.0};
+                  .linke = HFS_LINKE_DEFAULT, .step_min = 15.0, .tile = GIS_TILE_DEFAULT};
     a.directions = a.product == GIS_SVF ? 16 : 8;
     double azimuth[HFS_MAX_HORIZON_AZIMUTHS];
     a.azimuth = azimuth;

@@ -3,8 +3,8 @@
 # arithmetic, the renderer plumbing (horizons; the sun's renders,
 # gis_sun.c, on hfs_solar) and the output group, with no GDAL (the unit
 # test tests/test_gis_math.c links it); hfs_gis_gdal the DEM on its own
-# grid, the GeoTIFF writer and the commands, where GDAL is found
-# (gdal.cmake).
+# grid, the GeoTIFF writers (whole, and window by window) and the commands
+# (whole, and streamed: gis_stream.c), where GDAL is found (gdal.cmake).
 add_library(hfs_gis_core STATIC ${CMAKE_CURRENT_LIST_DIR}/gis/gis_math.c
             ${CMAKE_CURRENT_LIST_DIR}/gis/gis_resample.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_horizons.c
             ${CMAKE_CURRENT_LIST_DIR}/gis/gis_products.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_outputs.c
@@ -15,6 +15,7 @@ if(TARGET hfshade_gdal)
   add_library(hfs_gis_gdal STATIC ${CMAKE_CURRENT_LIST_DIR}/gis/gis_dem.c
               ${CMAKE_CURRENT_LIST_DIR}/gis/gis_raster.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_command.c
               ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sun_command.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_run.c
-              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_lit.c)
+              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_lit.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_stream.c
+              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_raster_stream.c)
   target_link_libraries(hfs_gis_gdal PUBLIC hfs_gis_core hfshade_gdal)
 endif()

@@ -2,8 +2,9 @@
  * gis_command.c — see gis_command.h.  The order keeps a failure cheap and
  * clean: the outputs are checked before the DEM is read, the DEM before a
  * renderer (a GL context) is made, and every file is a temporary until
- * the last one is written.  svf, horizon and openness are written here;
- * sun and insolation in gis_sun_command.c (gis_run.h).
+ * the last one is written.  svf, horizon and openness are written here
+ * when the DEM is computed whole, window by window in gis_stream.c; sun
+ * and insolation in gis_sun_command.c (gis_run.h).
  */
 #include "gis_command.h"
 
@@ -59,6 +60,14 @@ static int plan_outputs(gis_run *r, hfs_error *err)
     return rc;
 }
 
+/* svf, horizon, openness: the search radius, metres (0: the whole DEM). */
+static double radius_of(const gis_args *a, const gis_dem *d)
+{
+    return a->product == GIS_OPENNESS && !a->radius_given
+               ? GIS_OPENNESS_DEFAULT_CELLS * fmax(d->cx, d->cy)
+               : a->radius;
+}
+
 /* The DEM's product: radius, nodata, and the metadata every file carries. */
 static int describe(gis_run *r, hfs_error *err)
 {
@@ -74,9 +83,7 @@ static int describe(gis_run *r, hfs_error *err)
     gis_run_meta(r, "HFS_SOFTWARE=hfshade %s", hfs_version());
     if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
         return gis_sun_describe(r, err);
-    r->c.radius = a->product == GIS_OPENNESS && !a->radius_given
-                      ? GIS_OPENNESS_DEFAULT_CELLS * fmax(d->cx, d->cy)
-                      : a->radius;
+    r->c.radius = radius_of(a, d);
     r->c.nodata = gis_nodata_for(d->has_nodata, d->nodata, 0.0, hi[a->product]);
     gis_run_meta(r, "HFS_RADIUS_M=%.9g", r->c.radius);
     if (a->product == GIS_HORIZON) {
@@ -97,14 +104,8 @@ static int describe(gis_run *r, hfs_error *err)
 static int write_horizon(void *user, int k, const float *deg, hfs_error *err)
 {
     const gis_run *r = user;
-    char value[64], item[GIS_RUN_META_LEN], what[160];
-    snprintf(value, sizeof value, "%.*f", r->a->decimals, gis_wrap_degrees(r->a->azimuth[k]));
-    snprintf(item, sizeof item, "HFS_AZIMUTH=%s", value);
-    gis_raster g = gis_run_raster(r, item);
-    snprintf(what, sizeof what, "horizon elevation angle at azimuth %s degrees (%s)", value,
-             r->a->convention == GIS_COMPASS ? "clockwise from north"
-                                             : "counter-clockwise from east");
-    g.band[0] = (gis_band){deg, what, "degrees"};
+    gis_horizon_text t;
+    const gis_raster g = gis_run_horizon_raster(r, k, deg, &t);
     return gis_raster_write(gis_outputs_set(r->outs, r->names[k]), r->names[k], &g, err);
 }
 
@@ -114,6 +115,8 @@ static int compute_and_write(gis_run *r, hfs_error *err)
     const size_t n = (size_t)r->dem.width * (size_t)r->dem.height;
     if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
         return gis_sun_write(r, err);
+    if (r->mode == GIS_STREAMED)
+        return gis_stream_write(r, err);
     if (a->product == GIS_HORIZON) {
         double *phi = malloc((size_t)a->n_azimuths * sizeof *phi);
         if (!phi)
@@ -127,19 +130,9 @@ static int compute_and_write(gis_run *r, hfs_error *err)
     float *v = malloc(2 * n * sizeof *v);
     if (!v)
         return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", a->out);
-    gis_raster g = gis_run_raster(r, NULL);
-    int rc;
-    if (a->product == GIS_SVF) {
-        rc = gis_product_svf(&r->c, a->directions, a->svf, v, err);
-        g.band[0] = (gis_band){v, a->svf == GIS_SVF_LAMBERTIAN
-                                      ? "sky-view factor, Lambertian (Haentzschel et al. 2005)"
-                                      : "sky-view factor (Zaksek et al. 2011)", ""};
-    } else {
-        rc = gis_product_openness(&r->c, a->directions, v, v + n, err);
-        g.n_bands = 2;
-        g.band[0] = (gis_band){v, "positive openness (Yokoyama et al. 2002)", "degrees"};
-        g.band[1] = (gis_band){v + n, "negative openness (Yokoyama et al. 2002)", "degrees"};
-    }
+    int rc = a->product == GIS_SVF ? gis_product_svf(&r->c, a->directions, a->svf, v, err)
+                                   : gis_product_openness(&r->c, a->directions, v, v + n, err);
+    const gis_raster g = gis_run_product_raster(r, v, n);
     if (!rc)
         rc = gis_raster_write(gis_outputs_set(r->outs, a->out), a->out, &g, err);
     free(v);
@@ -153,12 +146,26 @@ static double now_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* The summary's words on windows: how many, or why the DEM over the tile
+ * size was computed whole ("" when it fits a tile). */
+static void windows_words(const gis_run *r, char *buf, size_t n)
+{
+    if (r->mode == GIS_STREAMED)
+        snprintf(buf, n, ", %d windows of at most %d texels a side (halo %d)", r->windows,
+                 r->a->tile, r->halo);
+    else if (r->mode != GIS_WHOLE)
+        snprintf(buf, n, ", whole (over --tile %d, but %s)", r->a->tile,
+                 gis_stream_why(r->mode));
+    else
+        buf[0] = '\0';
+}
+
 /* The one line a successful run prints on stderr. */
 static void summary(const gis_run *r, double seconds)
 {
     const gis_dem *d = &r->dem;
     const gis_args *a = r->a;
-    char grid[96] = "", what[320];
+    char grid[96] = "", what[320], windows[160];
     if (d->sw != d->width || d->sh != d->height)
         snprintf(grid, sizeof grid, " (computed on %dx%d square cells of %.4g m)", d->sw, d->sh,
                  d->d);
@@ -168,11 +175,24 @@ static void summary(const gis_run *r, double seconds)
         snprintf(what, sizeof what, "%d %s", a->product == GIS_HORIZON ? a->n_azimuths
                                                                         : a->directions,
                  a->product == GIS_HORIZON ? "azimuths" : "directions");
-    fprintf(stderr, "%s%s: %s of %dx%d%s, %s, %ld nodata texel%s, backend %s, %.3f s\n",
+    windows_words(r, windows, sizeof windows);
+    fprintf(stderr, "%s%s: %s of %dx%d%s%s, %s, %ld nodata texel%s, backend %s, %.3f s\n",
             a->product == GIS_HORIZON ? r->prefix : a->out,
             a->product == GIS_HORIZON ? "_*.tif" : "", product_name[a->product], d->width,
-            d->height, grid, what, d->holes, d->holes == 1 ? "" : "s",
+            d->height, grid, windows, what, d->holes, d->holes == 1 ? "" : "s",
             r->c.r ? hfs_renderer_backend_name(r->c.r) : backend_name[a->backend], seconds);
+}
+
+/* The DEM opened; read whole unless the product streams (gis_stream.h). */
+static int read_dem(gis_run *r, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    int rc = gis_dem_open(a->dem, &a->load, &r->dem, err);
+    if (rc)
+        return rc;
+    if (a->product == GIS_SVF || a->product == GIS_HORIZON || a->product == GIS_OPENNESS)
+        r->mode = gis_stream_choose(&r->dem, a->tile, radius_of(a, &r->dem), &r->halo);
+    return r->mode == GIS_STREAMED ? HFS_OK : gis_dem_load(&r->dem, a->dem, err);
 }
 
 int gis_command_run(const gis_args *a, hfs_error *err)
@@ -181,7 +201,7 @@ int gis_command_run(const gis_args *a, hfs_error *err)
     const double t0 = now_seconds();
     int rc = plan_outputs(&r, err);
     if (!rc)
-        rc = gis_dem_read(a->dem, &a->load, &r.dem, err);
+        rc = read_dem(&r, err);
     if (!rc)
         rc = describe(&r, err);
     if (!rc && !r.no_render) {

@@ -28,6 +28,12 @@ typedef enum gis_product {
 /* insolation: at most this many steps (--from, --to, --step). */
 #define GIS_MAX_STEPS 100000L
 
+/* svf, horizon, openness: --tile, the windows' side in texels when a DEM
+ * streams (gis_stream.h): 0 (never), or GIS_TILE_MIN .. GIS_TILE_MAX. */
+#define GIS_TILE_DEFAULT 4096
+#define GIS_TILE_MIN 16
+#define GIS_TILE_MAX 1048576
+
 typedef struct gis_args {
     gis_product product;
     const char *dem;            /* the input                                  */
@@ -36,6 +42,7 @@ typedef struct gis_args {
     gis_svf_kind svf;           /* svf: --lambertian                          */
     double radius;              /* metres, 0: the whole DEM                   */
     int radius_given;           /* openness: else 10 cells (gis_products.h)   */
+    int tile;                   /* --tile: texels a side, 0 never streams     */
     hfs_backend backend;
     double zscale;
     hfs_height_load_opts load;  /* --nodata                                   */

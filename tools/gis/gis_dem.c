@@ -38,6 +38,13 @@ static int georef(GDALDatasetH ds, const char *path, const hfs_height_load_opts 
     if (!(dem->cx > 0.0 && dem->cy > 0.0 && isfinite(dem->cx) && isfinite(dem->cy)))
         return hfs_fail(err, HFS_E_INVALID, "%s: cells of %g x %g m: not a usable size", path,
                         dem->cx, dem->cy);
+    /* Square as the render loader judges: then computed on the input's own
+     * grid and sampled back 1:1; else make_square's cell, the smaller side. */
+    dem->square = fabs(dem->cx - dem->cy) <= 1e-6 * fmax(dem->cx, dem->cy);
+    if (dem->square)
+        dem->cy = dem->cx;
+    dem->d = fmin(dem->cx, dem->cy);
+    dem->sw = dem->width, dem->sh = dem->height;
     return HFS_OK;
 }
 
@@ -59,10 +66,8 @@ static int to_field(float *z, const char *path, gis_dem *dem, hfs_error *err)
         return hfs_fail(err, rc, "%s: %s", path, ferr.msg);
     }
     dem->centre_z = z[(size_t)(dem->height / 2) * (size_t)dem->width + (size_t)(dem->width / 2)];
-    dem->sw = dem->width, dem->sh = dem->height, dem->d = dem->cx;
-    if (fabs(dem->cx - dem->cy) <= 1e-6 * fmax(dem->cx, dem->cy)) {
-        dem->cy = dem->cx; /* square (as the render loader judges): sampled back 1:1 */
-    } else if ((rc = hfs_gdal_make_square(&z, &dem->sw, &dem->sh, dem->cx, dem->cy, &dem->d))) {
+    if (!dem->square &&
+        (rc = hfs_gdal_make_square(&z, &dem->sw, &dem->sh, dem->cx, dem->cy, &dem->d))) {
         free(z);
         return hfs_fail(err, rc, "%s: out of memory resampling to square cells", path);
     }
@@ -84,7 +89,7 @@ static int check_path(const char *path, hfs_error *err)
     return hfs_fail(err, HFS_E_IO, "%s: not a regular file (a FIFO or a device)", path);
 }
 
-int gis_dem_read(const char *path, const hfs_height_load_opts *opts, gis_dem *dem,
+int gis_dem_open(const char *path, const hfs_height_load_opts *opts, gis_dem *dem,
                  hfs_error *err)
 {
     memset(dem, 0, sizeof *dem);
@@ -97,29 +102,81 @@ int gis_dem_read(const char *path, const hfs_height_load_opts *opts, gis_dem *de
     rc = ds ? HFS_OK
             : hfs_fail(err, HFS_E_FORMAT, "%s: GDAL cannot open it as a raster%s%s%s", path,
                        *why ? " (" : "", why, *why ? ")" : "");
-    float *z = NULL;
+    dem->ds = ds;
     if (!rc) {
         dem->width = GDALGetRasterXSize(ds), dem->height = GDALGetRasterYSize(ds);
         rc = hfs_gdal_check_dataset(ds, path, opts, dem->gt, err);
     }
     if (!rc)
         rc = georef(ds, path, opts, dem, err);
-    if (!rc)
-        rc = hfs_gdal_read_heights(ds, path, opts, &z, err);
-    if (!rc)
-        rc = to_field(z, path, dem, err);
-    if (ds)
-        GDALClose(ds);
     CPLPopErrorHandler();
     if (rc)
         gis_dem_free(dem);
     return rc;
 }
 
+int gis_dem_load(gis_dem *dem, const char *path, hfs_error *err)
+{
+    /* the nodata value georef settled (--nodata's, or the band's) */
+    const hfs_height_load_opts nd = {.has_nodata = dem->has_nodata, .nodata = (float)dem->nodata};
+    float *z = NULL;
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    int rc = hfs_gdal_read_heights(dem->ds, path, &nd, &z, err);
+    if (!rc)
+        rc = to_field(z, path, dem, err);
+    GDALClose(dem->ds);
+    dem->ds = NULL;
+    CPLPopErrorHandler();
+    return rc;
+}
+
+int gis_dem_read(const char *path, const hfs_height_load_opts *opts, gis_dem *dem,
+                 hfs_error *err)
+{
+    int rc = gis_dem_open(path, opts, dem, err);
+    if (!rc && (rc = gis_dem_load(dem, path, err)))
+        gis_dem_free(dem);
+    return rc;
+}
+
+int gis_dem_read_window(const gis_dem *dem, const char *path, int x0, int y0, int w, int h,
+                        float *z, unsigned char *hole, long *holes, hfs_error *err)
+{
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    const CPLErr e = GDALRasterIO(GDALGetRasterBand(dem->ds, 1), GF_Read, x0, y0, w, h, z, w, h,
+                                  GDT_Float32, 0, 0);
+    CPLPopErrorHandler();
+    if (e != CE_None)
+        return hfs_fail(err, HFS_E_FORMAT, "%s: GDAL could not read its band 1 at %d,%d "
+                        "(%dx%d) (%s)", path, x0, y0, w, h, CPLGetLastErrorMsg());
+    const size_t n = (size_t)w * (size_t)h;
+    const float nd = (float)dem->nodata;
+    *holes = 0;
+    for (size_t p = 0; p < n; ++p) {
+        if (dem->has_nodata && z[p] == nd)
+            z[p] = NAN; /* as hfs_gdal_read_heights marks the whole band's */
+        hole[p] = !isfinite(z[p]);
+        *holes += hole[p];
+    }
+    if ((size_t)*holes == n)
+        return HFS_OK;
+    hfs_error ferr;
+    const int rc = hfs_height_fill_holes(z, w, h, 0, 0.0f, NULL, &ferr);
+    return rc ? hfs_fail(err, rc, "%s: %s", path, ferr.msg) : HFS_OK;
+}
+
+void gis_dem_drop_cache(const gis_dem *dem)
+{
+    if (dem->ds)
+        GDALFlushCache(dem->ds);
+}
+
 void gis_dem_free(gis_dem *dem)
 {
     if (!dem)
         return;
+    if (dem->ds)
+        GDALClose(dem->ds);
     free(dem->hole);
     free(dem->wkt);
     free(dem->sz);

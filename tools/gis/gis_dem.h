@@ -18,6 +18,12 @@
  * A grid whose columns run west or rows run north (positive row step)
  * stays as it is: ex, ey say so and the commands turn their azimuths
  * (gis_grid_phi).
+ *
+ * In two steps when the command streams (gis_stream.h): gis_dem_open reads
+ * what the file says of itself (grid, georeferencing, nodata, cells) and
+ * keeps it open; then either gis_dem_load reads the whole band, or
+ * gis_dem_read_window reads one window at a time (GDAL's windowed
+ * RasterIO), its holes filled in the window alone.
  */
 #ifndef HFS_GIS_DEM_H
 #define HFS_GIS_DEM_H
@@ -32,21 +38,53 @@ typedef struct gis_dem {
     char *wkt;                  /* its CRS ("" none), malloc'ed              */
     int has_nodata;             /* a declared nodata value (band's or opts') */
     double nodata;
-    double cx, cy;              /* metres per cell east-west, north-south    */
+    double cx, cy;              /* metres per cell east-west, north-south;
+                                   cy = cx when the cells are square         */
+    int square;                 /* cx, cy within 1e-6 (the render loader's
+                                   rule): computed on the input's own grid   */
     int ex, ey;                 /* +x east 1 / west -1; +y south 1 / north -1 */
     /* The square grid the renderer takes (the input's, when square). */
     int sw, sh;
-    float *sz;                  /* sw*sh finite heights                      */
-    double d;                   /* its cell, metres                          */
+    float *sz;                  /* sw*sh finite heights (gis_dem_load)       */
+    double d;                   /* its cell, metres (known at gis_dem_open)  */
     double centre_z;            /* the input's height at texel (w/2, h/2),
                                    filled where it is a hole (its units)     */
+    void *ds;                   /* the GDAL dataset while open (gis_dem_open
+                                   to gis_dem_load or gis_dem_free)          */
 } gis_dem;
 
-/* Reads path (opts: --nodata; NULL none).  0, or an error naming path;
- * *dem is zeroed on failure. */
+/* Reads path (opts: --nodata; NULL none): gis_dem_open, then gis_dem_load.
+ * 0, or an error naming path; *dem is zeroed on failure. */
 int gis_dem_read(const char *path, const hfs_height_load_opts *opts, gis_dem *dem,
                  hfs_error *err);
 
+/* Opens path and reads all but its heights: the grid, geotransform, CRS,
+ * nodata, the cells' metres, `square` and the cell computed on (d; sw, sh
+ * are the input's size until gis_dem_load resamples).  The dataset stays
+ * open in dem->ds.  0, or an error naming path; *dem zeroed on failure. */
+int gis_dem_open(const char *path, const hfs_height_load_opts *opts, gis_dem *dem,
+                 hfs_error *err);
+
+/* The whole band of an opened dem: hole, holes, sz (resampled to square
+ * cells when they are not), centre_z; the dataset closed.  0, or an error
+ * naming path (dem then to be freed by the caller). */
+int gis_dem_load(gis_dem *dem, const char *path, hfs_error *err);
+
+/* The window of w x h texels at (x0, y0) of an opened dem's band 1, read
+ * with GDAL's windowed RasterIO (the band is never read whole): z[w*h] its
+ * heights, hole[w*h] its holes (the nodata value gis_dem_open settled,
+ * NaN, Inf), *holes their count, the holes filled by push-pull within the
+ * window (hfs_height_fill_holes; a hole fills as in the whole DEM when
+ * the window's ends are those of the DEM or multiples of the fill's
+ * blocks: gis_stream.h).  A window without a valid texel is left as read
+ * (*holes == w*h): the caller writes nodata.  0, or an error naming path. */
+int gis_dem_read_window(const gis_dem *dem, const char *path, int x0, int y0, int w, int h,
+                        float *z, unsigned char *hole, long *holes, hfs_error *err);
+
+/* Frees what GDAL holds of an opened dem's blocks (read so far). */
+void gis_dem_drop_cache(const gis_dem *dem);
+
+/* Frees everything, closing the dataset if it is open.  NULL-safe. */
 void gis_dem_free(gis_dem *dem);
 
 /* The WGS84 longitude and latitude (degrees, east and north positive) of

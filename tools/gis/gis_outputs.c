@@ -1,17 +1,20 @@
 /*
  * gis_outputs.c — see gis_outputs.h.  The sets do the writing, the checks
- * against the input and within a set; this adds the checks across sets
- * and the undo across sets.
+ * against the input and within a set; this adds the checks across sets,
+ * the undo across sets, and the temporaries of files written by name.
  */
 #define _XOPEN_SOURCE 700 /* realpath: XSI in glibc's headers */
 
 #include "gis_outputs.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #define SET_SIZE 8 /* hfs_outputs' own limit (runtime/io/io_output.c) */
@@ -22,6 +25,7 @@ struct gis_outputs {
     const char **path;
     char **target;           /* path resolved; NULL when it cannot be */
     unsigned char *existed;  /* the file was there before the run     */
+    char **tmp;              /* written by name: its temporary, or NULL */
     hfs_outputs **set;       /* max / SET_SIZE rounded up             */
 };
 
@@ -57,10 +61,11 @@ int gis_outputs_create(gis_outputs **out, const char *input, int n, hfs_error *e
         g->path = calloc((size_t)n, sizeof *g->path);
         g->target = calloc((size_t)n, sizeof *g->target);
         g->existed = calloc((size_t)n, 1);
+        g->tmp = calloc((size_t)n, sizeof *g->tmp);
         g->set = calloc((size_t)sets, sizeof *g->set);
     }
     *out = g;
-    if (!g || !g->path || !g->target || !g->existed || !g->set)
+    if (!g || !g->path || !g->target || !g->existed || !g->tmp || !g->set)
         return hfs_fail(err, HFS_E_NOMEM, "outputs: out of memory for %d files", n);
     return HFS_OK;
 }
@@ -97,20 +102,110 @@ hfs_outputs *gis_outputs_set(gis_outputs *g, const char *path)
     return NULL;
 }
 
+static uint64_t splitmix64(uint64_t x)
+{
+    x += 0x9E3779B97F4A7C15ull;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+}
+
+/* "target.tmp-XXXXXX", created with O_EXCL (a collision is a retry), as
+ * io_output.c's create_temporary names the sets' (mode 0666 less the
+ * umask, as any new output). */
+static char *create_temporary(const char *target, int *e)
+{
+    static const char alphabet[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+    const size_t n = strlen(target);
+    char *tmp = malloc(n + sizeof ".tmp-XXXXXX");
+    struct timespec ts;
+    clock_gettime(CLOCK_REALTIME, &ts);
+    *e = ENOMEM;
+    for (unsigned attempt = 0; tmp && attempt < 100; ++attempt) {
+        uint64_t r = splitmix64((uint64_t)ts.tv_nsec ^ ((uint64_t)ts.tv_sec << 30) ^
+                                ((uint64_t)getpid() << 40) ^ (uint64_t)(uintptr_t)tmp ^
+                                ((uint64_t)attempt << 20));
+        memcpy(tmp, target, n);
+        memcpy(tmp + n, ".tmp-", 5);
+        for (int k = 0; k < 6; ++k, r /= 62)
+            tmp[n + 5 + k] = alphabet[r % 62];
+        tmp[n + 11] = '\0';
+        const int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            close(fd);
+            return tmp;
+        }
+        if ((*e = errno) != EEXIST)
+            break;
+    }
+    free(tmp);
+    return NULL;
+}
+
+int gis_outputs_temporary(gis_outputs *g, const char *path, const char **tmp, hfs_error *err)
+{
+    int k = 0;
+    while (k < g->n && strcmp(g->path[k], path))
+        ++k;
+    if (k == g->n || g->tmp[k])
+        return hfs_fail(err, HFS_E_INVALID, "%s: not an output of this run (or twice)", path);
+    struct stat st;
+    if (lstat(path, &st) == 0 && stat(path, &st) != 0)
+        return hfs_fail(err, HFS_E_IO, "%s: the symbolic link does not lead to a file", path);
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return hfs_fail(err, HFS_E_IO, "%s: not a regular file (an output written window by "
+                        "window is a temporary renamed over it; --tile 0 writes in place)",
+                        path);
+    int e = 0;
+    if (!(g->tmp[k] = create_temporary(g->target[k] ? g->target[k] : path, &e)))
+        return hfs_fail(err, HFS_E_IO, "%s: cannot create a temporary file next to it: %s",
+                        path, strerror(e));
+    *tmp = g->tmp[k];
+    return HFS_OK;
+}
+
+/* The temporary of output k synced (a crash after the rename must not
+ * expose an empty file) and renamed over its target. */
+static int rename_temporary(gis_outputs *g, int k, hfs_error *err)
+{
+    const char *target = g->target[k] ? g->target[k] : g->path[k];
+    const int fd = open(g->tmp[k], O_RDONLY | O_CLOEXEC);
+    const char *step = fd < 0 ? "cannot open its temporary" : NULL;
+    if (!step && fsync(fd) != 0)
+        step = "cannot sync";
+    if (!step && rename(g->tmp[k], target) != 0)
+        step = "cannot replace the file";
+    const int e = errno;
+    if (fd >= 0)
+        close(fd);
+    if (step)
+        return hfs_fail(err, HFS_E_IO, "%s: %s: %s", g->path[k], step, strerror(e));
+    free(g->tmp[k]);
+    g->tmp[k] = NULL;
+    return HFS_OK;
+}
+
 int gis_outputs_commit(gis_outputs *g, hfs_error *err)
 {
     const int sets = (g->n + SET_SIZE - 1) / SET_SIZE;
-    for (int s = 0; s < sets; ++s) {
-        const int rc = hfs_outputs_commit(g->set[s], err);
-        if (!rc)
-            continue;
-        /* The earlier sets' new files go again (the failed set undid its own). */
-        for (int k = 0; k < s * SET_SIZE; ++k)
-            if (!g->existed[k])
-                unlink(g->target[k] ? g->target[k] : g->path[k]);
-        return rc;
-    }
-    return HFS_OK;
+    unsigned char *placed = calloc(g->n ? (size_t)g->n : 1, 1); /* renamed into place */
+    if (!placed)
+        return hfs_fail(err, HFS_E_NOMEM, "outputs: out of memory");
+    int rc = HFS_OK;
+    for (int s = 0; s < sets && !rc; ++s)
+        if (!(rc = hfs_outputs_commit(g->set[s], err)))
+            for (int k = s * SET_SIZE; k < g->n && k < (s + 1) * SET_SIZE; ++k)
+                placed[k] = !g->tmp[k];
+    for (int k = 0; k < g->n && !rc; ++k)
+        if (g->tmp[k] && !(rc = rename_temporary(g, k, err)))
+            placed[k] = 1;
+    /* On failure the new files in place go again (a failed set undid its
+     * own; a file that was there before stays replaced, as in one set). */
+    for (int k = 0; rc && k < g->n; ++k)
+        if (placed[k] && !g->existed[k])
+            unlink(g->target[k] ? g->target[k] : g->path[k]);
+    free(placed);
+    return rc;
 }
 
 void gis_outputs_destroy(gis_outputs *g)
@@ -122,6 +217,12 @@ void gis_outputs_destroy(gis_outputs *g)
         hfs_outputs_destroy(g->set[s]);
     for (int k = 0; g->target && k < g->n; ++k)
         free(g->target[k]);
+    for (int k = 0; g->tmp && k < g->n; ++k)
+        if (g->tmp[k]) { /* not renamed: the run failed */
+            unlink(g->tmp[k]);
+            free(g->tmp[k]);
+        }
+    free(g->tmp);
     free(g->target);
     free(g->path);
     free(g->existed);

@@ -11,7 +11,9 @@
  *     renames them set by set, and when a set fails, the files the group
  *     created in the sets before it are removed again (a file that was
  *     there before stays replaced, as in one set);
- *   - gis_outputs_destroy removes every temporary not committed.
+ *   - gis_outputs_destroy removes every temporary not committed;
+ *   - a file written by name (gis_outputs_temporary) keeps the same
+ *     promises: a temporary of the group's, renamed at the commit.
  */
 #ifndef HFS_GIS_OUTPUTS_H
 #define HFS_GIS_OUTPUTS_H
@@ -29,6 +31,19 @@ int gis_outputs_add(gis_outputs *g, const char *path, hfs_error *err);
 /* The set that path was added to, for the writers (hfs_bytes_write_to);
  * NULL when it was not added. */
 hfs_outputs *gis_outputs_set(gis_outputs *g, const char *path);
+
+/* A temporary for an output that a writer makes itself by name (GDAL's
+ * GTiff driver, window by window: gis_raster_stream.h), since an output
+ * set takes only complete bytes: "TARGET.tmp-XXXXXX" next to TARGET (path
+ * with its links and folder resolved), named as the library's output sets
+ * name theirs (runtime/io/io_output.c) and created empty with O_EXCL, so
+ * the name is this run's own.  *tmp is its name (the group's, valid until
+ * gis_outputs_destroy).  gis_outputs_commit syncs it and renames it over
+ * TARGET after the sets' files (undone with them on failure);
+ * gis_outputs_destroy removes it when it was not renamed.  An existing
+ * path that is not a regular file (a device, a FIFO) is refused: renaming
+ * over it would replace it (the sets write those in place). */
+int gis_outputs_temporary(gis_outputs *g, const char *path, const char **tmp, hfs_error *err);
 
 int gis_outputs_commit(gis_outputs *g, hfs_error *err);
 

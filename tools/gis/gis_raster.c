@@ -12,14 +12,19 @@
 #include <math.h>
 #include <string.h>
 
-/* The first value that is neither finite nor the nodata value, or -1. */
-static long bad_value(const gis_raster *r, int *band)
+const char *const gis_raster_gtiff_options[] = {"TILED=YES", "BLOCKXSIZE=256",
+                                                 "BLOCKYSIZE=256", "COMPRESS=DEFLATE",
+                                                 "PREDICTOR=3", NULL};
+const char *const gis_raster_cog_options[] = {"COMPRESS=DEFLATE", "PREDICTOR=YES",
+                                               "OVERVIEWS=AUTO", NULL};
+
+long gis_raster_bad_value(const float *const *v, int n_bands, size_t n, double nodata,
+                          int *band)
 {
-    const size_t n = (size_t)r->width * (size_t)r->height;
-    for (int b = 0; b < r->n_bands; ++b)
+    for (int b = 0; b < n_bands; ++b)
         for (size_t p = 0; p < n; ++p) {
-            const float v = r->band[b].v[p];
-            if (!isfinite(v) && !(isnan(v) && isnan(r->nodata)) && v != (float)r->nodata) {
+            const float x = v[b][p];
+            if (!isfinite(x) && !(isnan(x) && isnan(nodata)) && x != (float)nodata) {
                 *band = b + 1;
                 return (long)p;
             }
@@ -27,25 +32,13 @@ static long bad_value(const gis_raster *r, int *band)
     return -1;
 }
 
-/* The product as a MEM dataset with its georeferencing and metadata. */
-static GDALDatasetH mem_dataset(const gis_raster *r)
+void gis_raster_describe(GDALDatasetH ds, const gis_raster *r)
 {
-    GDALDriverH mem = GDALGetDriverByName("MEM");
-    GDALDatasetH ds = mem ? GDALCreate(mem, "", r->width, r->height, r->n_bands, GDT_Float32,
-                                       NULL)
-                          : NULL;
-    if (!ds)
-        return NULL;
     for (int b = 0; b < r->n_bands; ++b) {
         GDALRasterBandH band = GDALGetRasterBand(ds, b + 1);
         GDALSetDescription(band, r->band[b].description);
         GDALSetRasterUnitType(band, r->band[b].unit);
         GDALSetRasterNoDataValue(band, r->nodata);
-        if (GDALRasterIO(band, GF_Write, 0, 0, r->width, r->height, (void *)r->band[b].v,
-                         r->width, r->height, GDT_Float32, 0, 0) != CE_None) {
-            GDALClose(ds);
-            return NULL;
-        }
     }
     GDALSetGeoTransform(ds, (double *)r->geotransform);
     if (r->wkt && *r->wkt)
@@ -57,21 +50,41 @@ static GDALDatasetH mem_dataset(const gis_raster *r)
             GDALSetMetadataItem(ds, key, value, NULL);
         CPLFree(key);
     }
+}
+
+/* The product as a MEM dataset with its georeferencing and metadata. */
+static GDALDatasetH mem_dataset(const gis_raster *r)
+{
+    GDALDriverH mem = GDALGetDriverByName("MEM");
+    GDALDatasetH ds = mem ? GDALCreate(mem, "", r->width, r->height, r->n_bands, GDT_Float32,
+                                       NULL)
+                          : NULL;
+    if (!ds)
+        return NULL;
+    gis_raster_describe(ds, r);
+    for (int b = 0; b < r->n_bands; ++b)
+        if (GDALRasterIO(GDALGetRasterBand(ds, b + 1), GF_Write, 0, 0, r->width, r->height,
+                         (void *)r->band[b].v, r->width, r->height, GDT_Float32, 0,
+                         0) != CE_None) {
+            GDALClose(ds);
+            return NULL;
+        }
     return ds;
 }
 
 int gis_raster_write(hfs_outputs *o, const char *path, const gis_raster *r, hfs_error *err)
 {
     int band = 0;
-    const long p = bad_value(r, &band);
+    const float *v[GIS_RASTER_MAX_BANDS];
+    for (int b = 0; b < r->n_bands; ++b)
+        v[b] = r->band[b].v;
+    const long p = gis_raster_bad_value(v, r->n_bands, (size_t)r->width * (size_t)r->height,
+                                        r->nodata, &band);
     if (p >= 0)
         return hfs_fail(err, HFS_E_INVALID, "%s: refusing to write a non-finite value (band "
                         "%d, texel %ld, %ld)", path, band, p % r->width, p / r->width);
-    static const char *const gtiff[] = {"TILED=YES", "BLOCKXSIZE=256", "BLOCKYSIZE=256",
-                                        "COMPRESS=DEFLATE", "PREDICTOR=3", NULL};
-    static const char *const cog[] = {"COMPRESS=DEFLATE", "PREDICTOR=YES", "OVERVIEWS=AUTO",
-                                      NULL};
-    char **opts = CSLDuplicate((char **)(r->cog ? cog : gtiff));
+    char **opts = CSLDuplicate((char **)(r->cog ? gis_raster_cog_options
+                                                : gis_raster_gtiff_options));
     CPLPushErrorHandler(CPLQuietErrorHandler);
     GDALDatasetH mem = mem_dataset(r);
     const int rc = hfs_gdal_write_copy(o, path, mem, r->cog ? "COG" : "GTiff", opts, err);

@@ -20,11 +20,14 @@
 
 #include "hfs_io.h"
 
+#include <gdal.h>
+
 #define GIS_RASTER_MAX_BANDS 3
 #define GIS_RASTER_MAX_META 24
 
 typedef struct gis_band {
-    const float *v;           /* width*height values, row 0 first           */
+    const float *v;           /* width*height values, row 0 first (NULL for
+                                 a file written window by window)           */
     const char *description;  /* GDAL's band description                    */
     const char *unit;         /* "degrees", "" for none                     */
 } gis_band;
@@ -40,5 +43,20 @@ typedef struct gis_raster {
 } gis_raster;
 
 int gis_raster_write(hfs_outputs *o, const char *path, const gis_raster *r, hfs_error *err);
+
+/* What a file written window by window (gis_raster_stream.h) shares with
+ * gis_raster_write's: */
+/* the creation options, GTiff's and the COG driver's (NULL-terminated); */
+extern const char *const gis_raster_gtiff_options[];
+extern const char *const gis_raster_cog_options[];
+
+/* r's georeferencing, bands' descriptions, units and nodata value, and
+ * metadata items set on ds (r's band values are not read); */
+void gis_raster_describe(GDALDatasetH ds, const gis_raster *r);
+
+/* and the first of the n values of planes v[0 .. n_bands - 1] that is
+ * neither finite nor the nodata value (its band, from 1, in *band), or -1. */
+long gis_raster_bad_value(const float *const *v, int n_bands, size_t n, double nodata,
+                          int *band);
 
 #endif /* HFS_GIS_RASTER_H */

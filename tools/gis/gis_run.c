@@ -28,3 +28,33 @@ gis_raster gis_run_raster(const gis_run *r, const char *extra)
     g.meta[k] = extra;
     return g;
 }
+
+gis_raster gis_run_product_raster(const gis_run *r, const float *v, size_t n)
+{
+    gis_raster g = gis_run_raster(r, NULL);
+    if (r->a->product == GIS_SVF) {
+        g.band[0] = (gis_band){v, r->a->svf == GIS_SVF_LAMBERTIAN
+                                      ? "sky-view factor, Lambertian (Haentzschel et al. 2005)"
+                                      : "sky-view factor (Zaksek et al. 2011)", ""};
+    } else {
+        g.n_bands = 2;
+        g.band[0] = (gis_band){v, "positive openness (Yokoyama et al. 2002)", "degrees"};
+        g.band[1] = (gis_band){v ? v + n : NULL, "negative openness (Yokoyama et al. 2002)",
+                               "degrees"};
+    }
+    return g;
+}
+
+gis_raster gis_run_horizon_raster(const gis_run *r, int k, const float *deg,
+                                  gis_horizon_text *t)
+{
+    snprintf(t->value, sizeof t->value, "%.*f", r->a->decimals,
+             gis_wrap_degrees(r->a->azimuth[k]));
+    snprintf(t->item, sizeof t->item, "HFS_AZIMUTH=%s", t->value);
+    gis_raster g = gis_run_raster(r, t->item);
+    snprintf(t->what, sizeof t->what, "horizon elevation angle at azimuth %s degrees (%s)",
+             t->value, r->a->convention == GIS_COMPASS ? "clockwise from north"
+                                                       : "counter-clockwise from east");
+    g.band[0] = (gis_band){deg, t->what, "degrees"};
+    return g;
+}

@@ -3,8 +3,9 @@
  * (internal to the commands): gis_command.c makes the run (outputs, DEM,
  * renderer), writes svf, horizon and openness, commits and prints the
  * summary; gis_sun_command.c describes and writes sun and insolation;
- * gis_run.c holds what both take from the run (metadata, a raster of the
- * input's grid), so neither file calls the other back.  Needs GDAL (the
+ * gis_stream.c writes svf, horizon and openness window by window;
+ * gis_run.c holds what they take from the run (metadata, the rasters of
+ * the input's grid), so none of them calls another back.  Needs GDAL (the
  * writers' rasters).
  */
 #ifndef HFS_GIS_RUN_H
@@ -15,6 +16,7 @@
 #include "gis_outputs.h"
 #include "gis_products.h"
 #include "gis_raster.h"
+#include "gis_stream.h"
 #include "gis_sun.h"
 
 #define GIS_RUN_META_LEN 128
@@ -29,6 +31,10 @@ typedef struct gis_run {
     char meta[GIS_RASTER_MAX_META - 2][GIS_RUN_META_LEN]; /* every file's items */
     int n_meta;
     int no_render;           /* nothing to render: no renderer is made      */
+    /* svf, horizon, openness: whole or window by window (gis_stream.h) */
+    gis_stream_mode mode;
+    int halo;                /* streamed: texels around each window         */
+    int windows;             /* streamed: windows computed                  */
     /* sun, insolation (gis_sun_command.c) */
     hfs_solar_site site;
     gis_sun_at sun;          /* sun: the instant's                          */
@@ -46,6 +52,21 @@ void gis_run_meta(gis_run *r, const char *fmt, ...)
 /* A one-band raster of the input's grid with the run's metadata and
  * `extra` (NULL: none). */
 gis_raster gis_run_raster(const gis_run *r, const char *extra);
+
+/* svf's or openness's raster (bands' descriptions and units) with the
+ * values v: svf one band, openness two (v and v + n); v NULL for a file
+ * written window by window. */
+gis_raster gis_run_product_raster(const gis_run *r, const float *v, size_t n);
+
+/* The strings of a horizon file's raster (the caller's: alive while the
+ * raster is used). */
+typedef struct gis_horizon_text {
+    char value[64], item[GIS_RUN_META_LEN], what[160];
+} gis_horizon_text;
+
+/* horizon: azimuth k's raster, deg its values (NULL: window by window). */
+gis_raster gis_run_horizon_raster(const gis_run *r, int k, const float *deg,
+                                  gis_horizon_text *t);
 
 /* sun, insolation: the site (the DEM's centre: WGS84 longitude and
  * latitude, its height), the sun or the period, nodata and the metadata.
