@@ -166,7 +166,13 @@ HFS_API const char *hfs_renderer_backend_name(const hfs_renderer *r);
  * recomputes only what the change can reach (its neighbourhood, and the
  * texels whose horizons or shadows it can move) and is equal, bit for bit,
  * to a frame recomputed from scratch; the frame report's terrain step says
- * "heights edited".  Nothing to call for it. */
+ * "heights edited".  Nothing to call for it.
+ * A field larger than one GLES frame holds (the profile's texture limit, at
+ * most 4096 texels a side) is rendered in tiles whose halo is sized from
+ * its relief and lights (DESIGN.md "GIS horizons", "The lit frame in
+ * tiles"); a scene no halo serves (a local light, a key light at or below
+ * its own radius, relief too steep for the tiles) is refused in one line
+ * naming the way out (the cpu backend renders any size). */
 HFS_API int hfs_renderer_render(hfs_renderer *r, const hfs_field *field,
                                 const hfs_lighting *lighting,
                                 const hfs_quality *quality, hfs_image *out,

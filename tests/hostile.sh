@@ -382,12 +382,14 @@ if ! "$HFSHADE" info >/dev/null 2>&1; then
 fi
 # The kiosk runs under strict limits (the ES 3.0 minimums: 2048-texel
 # textures), so that "a scene that loads but the renderer refuses" exists on
-# any driver: a 2100-texel-wide field.  (Long swaths no longer qualify: they
-# move to textures when a uniform block is too small, issue 13.)
+# any driver: a 2100-texel-wide field with a local light (long swaths no
+# longer qualify: they move to textures when a uniform block is too small,
+# issue 13; nor does a wide field alone: it renders in tiles, issue 39,
+# unless a light sees terrain at any distance).
 KI() { local name=$1 expect=$2 needle=$3; shift 3; run kiosk "$name" "$expect" "$needle" "" -- env HFS_GL_STRICT_LIMITS=1 "$KIOSK" "$@"; }
 "$HFGEN" cones --size 2100x3 -o "$in/wide.pfm" >/dev/null
 printf 'height = %s/h.pfm\nenv-sh = %s\nbackend = gles\nkey = 30,20,2,10\n' "$in" "$sky" >"$in/good.ini"
-printf 'height = %s/wide.pfm\nenv-sh = %s\nbackend = gles\nkey = 30,20,2,10\n' "$in" "$sky" >"$in/refused.ini"
+printf 'height = %s/wide.pfm\nenv-sh = %s\nbackend = gles\nkey = 30,20,2,10\nlocal = 10,1,5,0.5,100\n' "$in" "$sky" >"$in/refused.ini"
 printf 'height = %s/h.pfm\nbackend = gles\ndx = -1\n' "$in" >"$in/bad.ini"
 : >"$in/empty.txt"
 keep "$in/good.ini"; keep "$in/refused.ini"; keep "$in/bad.ini"; keep "$in/wide.pfm"

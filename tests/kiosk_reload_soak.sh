@@ -3,8 +3,9 @@
 # alternating good scenes and scenes the renderer refuses, with fds and
 # memory flat".  The kiosk runs headless; each SIGHUP swaps the scene file
 # between a good scene and one that loads but that the GLES renderer refuses
-# (a 2100-texel-wide field: the kiosk runs under strict limits, ES 3.0's
-# 2048-texel textures, so the refusal exists on any driver).  After every
+# (a 2100-texel-wide field with a local light: the kiosk runs under strict
+# limits, ES 3.0's 2048-texel textures, and a local light keeps the field
+# from tiles, so the refusal exists on any driver).  After every
 # reload it must still run; the open descriptors after reload 100 must equal
 # those after reload 10, and the resident memory may grow by at most 1 MiB
 # between them.  Prints the numbers.
@@ -18,7 +19,7 @@ trap '[ -n "$pid" ] && kill -KILL $pid 2>/dev/null; rm -rf "$w"' EXIT
 sky="3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0"
 printf 'height = h.pfm\nenv-sh = %s\nbackend = gles\nkey = 30,20,2,10\n' "$sky" >"$w/good.ini"
 "$HFGEN" cones --size 2100x3 -o "$w/wide.pfm" >/dev/null || { echo "FAIL: hfgen"; exit 1; }
-printf 'height = wide.pfm\nenv-sh = %s\nbackend = gles\nkey = 30,20,2,10\n' "$sky" >"$w/refused.ini"
+printf 'height = wide.pfm\nenv-sh = %s\nbackend = gles\nkey = 30,20,2,10\nlocal = 10,1,5,0.5,100\n' "$sky" >"$w/refused.ini"
 cp "$w/good.ini" "$w/scene.ini"
 HFS_GL_STRICT_LIMITS=1 "$KIOSK" "$w/scene.ini" --display headless 2>"$w/log" &
 pid=$!

@@ -246,6 +246,15 @@ static void report_timings(hfs_gles *g, double t_start)
 
 /* One frame, with a view from cam when cam is not NULL, into the lit
  * texture instead of out when lit is not NULL. */
+int hfs_gles_max_side(hfs_gles *g, const hfs_quality *q)
+{
+    hfs_error ignored;
+    if (hfs_gles_select_caps(g, q, &ignored))
+        return 0;
+    const int m = g->caps.max_texture_size;
+    return m < HFS_GLES_MAX_FRAME_SIDE ? m : HFS_GLES_MAX_FRAME_SIDE;
+}
+
 /* A frame the device cannot hold: for a field past the ES 3.0 minimum
  * (2048 texels, what every device renders), the message says the way
  * out. */

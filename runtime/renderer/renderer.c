@@ -6,7 +6,8 @@
  * (hfs_renderer_set_field_serial); an environment map's pixels only for
  * the backend that reads them (the truth).
  */
-#include "backends.h"
+#include "backend_ops.h"
+#include "tiled_render.h"
 #include "truth_view.h"
 #include "validate.h"
 #include "view_params.h"
@@ -17,182 +18,6 @@
 #include <string.h>
 #include <time.h>
 
-/* ---- backends as a table (like board/display_backend.h) ---------------------------
- * Every backend is one row: its name, how it is made and destroyed, how it
- * renders, and the GLES-only controls (NULL where a backend has none: the
- * CPU reference and the ground truth render every frame from scratch and
- * are timed here by wall clock). */
-typedef struct backend_ops {
-    const char *name;
-    int (*create)(const hfs_renderer_desc *d, void **state, hfs_error *err); /* NULL: none */
-    void (*destroy)(void *state);
-    int (*render)(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
-                  hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err);
-    void (*set_timing)(void *state, int level);
-    void (*set_amortize)(void *state, int passes_per_frame);
-    void (*set_timing_finish)(void *state, int finish);
-    void (*timings)(const void *state, hfs_timings *out);
-    void (*invalidate)(void *state);
-    void (*frame_report)(const void *state, hfs_frame_report *out);
-    /* The lit frame and its 3-D view in one go (NULL: the lit image's
-     * ray-cast view, hfs_truth_view). */
-    int (*render_view)(void *state, const hfs_field *f, const hfs_lighting *l,
-                       const hfs_quality *q, const hfs_camera *cam,
-                       const hfs_object_set *obj, int w, int h, hfs_image *lit, float *view,
-                       hfs_error *err);
-    /* Reads hfs_lighting.env_map (the truth): its pixels are checked for
-     * it alone, the others' frames skip the scan. */
-    int reads_env_map;
-    /* Key-light visibility of points. */
-    int (*query_points)(void *state, const hfs_field *f, const hfs_lighting *l,
-                        const hfs_quality *q, const double *xyz, int n, float *vis,
-                        hfs_error *err);
-    /* One layer of a key light's shadow height map (NULL: none). */
-    int (*shadow_map)(void *state, const hfs_field *f, const hfs_key_light *k,
-                      const hfs_quality *q, int layer, float *out, hfs_error *err);
-    /* The lit result as a texture of the application's context (NULL:
-     * none, the CPU backends have no GL). */
-    int (*render_texture)(void *state, const hfs_field *f, const hfs_lighting *l,
-                          const hfs_quality *q, const hfs_lit_texture_desc *how,
-                          hfs_lit_texture *out, hfs_error *err);
-    /* The GIS horizons of every grid point. */
-    int (*horizons)(void *state, const hfs_field *f, const hfs_quality *q,
-                    const hfs_horizon_desc *d, float *out, hfs_error *err);
-} backend_ops;
-
-static int cpu_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
-                      hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
-{
-    (void)state;
-    return hfs_cpu_render(f, l, q, out, progress, user, err);
-}
-
-static int truth_render(void *state, const hfs_field *f, const hfs_lighting *l,
-                        const hfs_quality *q, hfs_image *out, hfs_progress_fn progress, void *user,
-                        hfs_error *err)
-{
-    (void)state;
-    return hfs_truth_render(f, l, q, out, progress, user, err);
-}
-
-/* The GLES calls that bind the renderer's context give the application's
- * back before returning (hfs_gles_release: a shared renderer's). */
-static int gles_create(const hfs_renderer_desc *d, void **state, hfs_error *err)
-{
-    const char *env = getenv("HFS_GL_STRICT_LIMITS");
-    const int strict = (d && d->gl_strict_limits) || (env && !strcmp(env, "1"));
-    const char *profile = d ? d->gl_profile : NULL;
-    hfs_gles *g = NULL;
-    const int rc = d && (d->egl_display || d->egl_share_context)
-                       ? hfs_gles_create_shared(d->egl_display, d->egl_share_context, profile,
-                                                strict, &g, err)
-                       : hfs_gles_create(d ? d->context : NULL, profile, strict, &g, err);
-    *state = g;
-    return rc;
-}
-static void gles_destroy(void *state) { hfs_gles_destroy(state); }
-static int gles_render(void *state, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
-                       hfs_image *out, hfs_progress_fn progress, void *user, hfs_error *err)
-{
-    const int rc = hfs_gles_render(state, f, l, q, out, err);
-    hfs_gles_release(state);
-    if (!rc && progress)
-        progress(user, 1.0); /* one GPU frame: no finer progress to report */
-    return rc;
-}
-static void gles_set_timing(void *state, int level) { hfs_gles_set_timing(state, level); }
-static void gles_set_amortize(void *state, int n) { hfs_gles_set_amortize(state, n); }
-static void gles_set_timing_finish(void *state, int f) { hfs_gles_set_timing_finish(state, f); }
-static void gles_timings(const void *state, hfs_timings *out) { hfs_gles_get_timings(state, out); }
-static void gles_invalidate(void *state) { hfs_gles_invalidate(state); }
-static void gles_frame_report(const void *state, hfs_frame_report *out)
-{
-    hfs_gles_frame_report(state, out);
-}
-static int gles_render_view(void *state, const hfs_field *f, const hfs_lighting *l,
-                            const hfs_quality *q, const hfs_camera *cam,
-                            const hfs_object_set *obj, int w, int h, hfs_image *lit,
-                            float *view, hfs_error *err)
-{
-    const int rc = hfs_gles_render_view(state, f, l, q, cam, obj, w, h, lit, view, err);
-    hfs_gles_release(state);
-    return rc;
-}
-static int gles_render_texture(void *state, const hfs_field *f, const hfs_lighting *l,
-                               const hfs_quality *q, const hfs_lit_texture_desc *how,
-                               hfs_lit_texture *out, hfs_error *err)
-{
-    const int rc = hfs_gles_render_texture(state, f, l, q, how, out, err);
-    hfs_gles_release(state);
-    return rc;
-}
-
-static int cpu_query(void *state, const hfs_field *f, const hfs_lighting *l,
-                     const hfs_quality *q, const double *xyz, int n, float *vis, hfs_error *err)
-{
-    (void)state;
-    return hfs_cpu_query_points(f, l, q, xyz, n, vis, err);
-}
-static int truth_query(void *state, const hfs_field *f, const hfs_lighting *l,
-                       const hfs_quality *q, const double *xyz, int n, float *vis,
-                       hfs_error *err)
-{
-    (void)state;
-    return hfs_truth_query_points(f, l, q, xyz, n, vis, err);
-}
-static int gles_query(void *state, const hfs_field *f, const hfs_lighting *l,
-                      const hfs_quality *q, const double *xyz, int n, float *vis, hfs_error *err)
-{
-    const int rc = hfs_gles_query_points(state, f, l, q, xyz, n, vis, err);
-    hfs_gles_release(state);
-    return rc;
-}
-
-static int cpu_shadow_map(void *state, const hfs_field *f, const hfs_key_light *k,
-                          const hfs_quality *q, int layer, float *out, hfs_error *err)
-{
-    (void)state;
-    return hfs_cpu_shadow_height_map(f, k, q, layer, out, err);
-}
-static int gles_shadow_map(void *state, const hfs_field *f, const hfs_key_light *k,
-                           const hfs_quality *q, int layer, float *out, hfs_error *err)
-{
-    const int rc = hfs_gles_shadow_height_map(state, f, k, q, layer, out, err);
-    hfs_gles_release(state);
-    return rc;
-}
-
-static int cpu_horizons(void *state, const hfs_field *f, const hfs_quality *q,
-                        const hfs_horizon_desc *d, float *out, hfs_error *err)
-{
-    (void)state;
-    return hfs_cpu_horizons(f, q, d, out, err);
-}
-static int truth_horizons(void *state, const hfs_field *f, const hfs_quality *q,
-                          const hfs_horizon_desc *d, float *out, hfs_error *err)
-{
-    (void)state;
-    return hfs_truth_horizons(f, q, d, out, err);
-}
-static int gles_horizons(void *state, const hfs_field *f, const hfs_quality *q,
-                         const hfs_horizon_desc *d, float *out, hfs_error *err)
-{
-    const int rc = hfs_gles_horizons(state, f, q, d, out, err);
-    hfs_gles_release(state);
-    return rc;
-}
-
-static const backend_ops backends[] = {
-    [HFS_BACKEND_GLES] = {"gles", gles_create, gles_destroy, gles_render, gles_set_timing,
-                          gles_set_amortize, gles_set_timing_finish, gles_timings,
-                          gles_invalidate, gles_frame_report, gles_render_view, 0, gles_query,
-                          gles_shadow_map, gles_render_texture, gles_horizons},
-    [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL,
-                         NULL, 0, cpu_query, cpu_shadow_map, NULL, cpu_horizons},
-    [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL,
-                           NULL, NULL, 1, truth_query, NULL, NULL, truth_horizons},
-};
-#define N_BACKENDS ((int)(sizeof backends / sizeof backends[0]))
 
 /* The heights last found finite, under the caller's serial (see
  * hfs_renderer_set_field_serial): the same pointer, size and serial are the
@@ -225,12 +50,12 @@ int hfs_renderer_create(const hfs_renderer_desc *desc, hfs_renderer **out, hfs_e
     hfs_backend b = desc ? desc->backend : HFS_BACKEND_DEFAULT;
     if (b == HFS_BACKEND_DEFAULT)
         b = HFS_BACKEND_GLES; /* the product */
-    if ((int)b < 0 || (int)b >= N_BACKENDS || !backends[b].render)
+    if (!hfs_backend_ops(b))
         return hfs_fail(err, HFS_E_INVALID, "backend %d: unknown", (int)b);
     hfs_renderer *r = calloc(1, sizeof *r);
     if (!r)
         return hfs_fail(err, HFS_E_NOMEM, "renderer: out of memory");
-    r->ops = &backends[b];
+    r->ops = hfs_backend_ops(b);
     if (r->ops->create) {
         const int rc = r->ops->create(desc, &r->state, err);
         if (rc) {
@@ -366,6 +191,20 @@ static void wall_timings(hfs_renderer *r, const char *pass, double t0)
     snprintf(t->device, sizeof t->device, "%s", r->ops->name);
 }
 
+/* One tile's frame (tiled_render.h): the backend's own, its inputs valid
+ * as the whole field's were. */
+typedef struct tile_frame_ctx {
+    hfs_renderer *r;
+    const hfs_quality *q;
+} tile_frame_ctx;
+
+static int tile_frame(void *ctx, const hfs_field *f, const hfs_lighting *l, hfs_image *out,
+                      hfs_error *err)
+{
+    const tile_frame_ctx *c = ctx;
+    return c->r->ops->render(c->r->state, f, l, c->q, out, NULL, NULL, err);
+}
+
 int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
                         const hfs_quality *q, hfs_image *out, hfs_progress_fn progress,
                         void *user, hfs_error *err)
@@ -376,7 +215,16 @@ int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
     if (!out || !out->rgb || out->width != f->width || out->height != f->height)
         return hfs_fail(err, HFS_E_INVALID, "render: output image is not %dx%d", f->width, f->height);
     const double t0 = wall_ms();
-    if ((rc = r->ops->render(r->state, f, l, q, out, progress, user, err)))
+    const int side = r->ops->max_side ? r->ops->max_side(r->state, q) : 0;
+    if (side > 0 && (f->width > side || f->height > side)) {
+        tile_frame_ctx ctx = {r, q};
+        rc = hfs_tiled_render(f, l, side, tile_frame, &ctx, out, err);
+        if (!rc && progress)
+            progress(user, 1.0);
+    } else {
+        rc = r->ops->render(r->state, f, l, q, out, progress, user, err);
+    }
+    if (rc)
         return rc;
     if (r->timing && !r->ops->timings)
         wall_timings(r, "render", t0);

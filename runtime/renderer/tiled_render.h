@@ -1,0 +1,44 @@
+/*
+ * tiled_render.h — a lit frame of a field larger than the backend can hold
+ * at once, rendered in tiles (issue 39 item 1; DESIGN.md "GIS horizons",
+ * "Tiles").  Each tile's inner part is rendered with a halo of heights
+ * around it and kept; the halo is sized from the field's relief and the
+ * lights, so that what lies beyond it cannot rise above an elevation the
+ * scene cares about:
+ *   - a key light of elevation e and radius a: nothing below e - a can
+ *     shadow it (exactly);
+ *   - the environment (and the light bounced from it): terrain below
+ *     HFS_TILE_SKY_EPS (1.27 deg: sin^2 of it is 2^-11, fp16's step) above
+ *     a receiver's horizontal takes less than that share of a horizontal
+ *     receiver's sky;
+ *   - the halo is then zscale (zmax - zmin) / (dx tan eps) texels (+ 2),
+ *     the farthest terrain can stand and still rise eps above the lowest
+ *     receiver.
+ * Local lights need the terrain between receiver and light, anywhere: a
+ * frame with one is not tiled (one line, the way out).  Origins are
+ * aligned to HFS_TILE_ALIGN texels so that every tile's sub-sampled grids
+ * fall on the whole field's.
+ */
+#ifndef HFS_TILED_RENDER_H
+#define HFS_TILED_RENDER_H
+
+#include "hfshade.h"
+
+#define HFS_TILE_SKY_EPS 0.02216 /* radians: asin(sqrt(2^-11)) */
+#define HFS_TILE_ALIGN 16
+
+/* Renders field f into out (W x H) tile by tile through render (the
+ * backend's frame of a sub-field, its own lighting), tiles of at most
+ * max_side texels a side.  0, or an error (one line): the halo needed
+ * leaves no room in such tiles, a local light, or the frame's own. */
+typedef int (*hfs_tile_frame_fn)(void *ctx, const hfs_field *f, const hfs_lighting *l,
+                                 hfs_image *out, hfs_error *err);
+int hfs_tiled_render(const hfs_field *f, const hfs_lighting *l, int max_side,
+                     hfs_tile_frame_fn render, void *ctx, hfs_image *out, hfs_error *err);
+
+/* The halo (texels) f's relief needs under lighting l, as above; -1 when
+ * no halo short of the whole field is enough (a key light at or below
+ * its own radius, a local light). */
+int hfs_tile_halo(const hfs_field *f, const hfs_lighting *l);
+
+#endif /* HFS_TILED_RENDER_H */
