@@ -215,7 +215,13 @@ int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
     if (!out || !out->rgb || out->width != f->width || out->height != f->height)
         return hfs_fail(err, HFS_E_INVALID, "render: output image is not %dx%d", f->width, f->height);
     const double t0 = wall_ms();
-    const int side = r->ops->max_side ? r->ops->max_side(r->state, q) : 0;
+    /* Every ES 3.0 device holds a 2048-texel frame: only a larger field asks
+     * the backend (a context bound, its caps selected), off the kiosk's
+     * per-frame path. */
+    const int side = r->ops->max_side && (f->width > HFS_TILE_MIN_SIDE ||
+                                          f->height > HFS_TILE_MIN_SIDE)
+                         ? r->ops->max_side(r->state, q)
+                         : 0;
     if (side > 0 && (f->width > side || f->height > side)) {
         tile_frame_ctx ctx = {r, q};
         rc = hfs_tiled_render(f, l, side, tile_frame, &ctx, out, err);

@@ -26,6 +26,9 @@
 
 #define HFS_TILE_SKY_EPS 0.02216 /* radians: asin(sqrt(2^-11)) */
 #define HFS_TILE_ALIGN 16
+/* The side every backend renders in one frame (ES 3.0's minimum texture
+ * size): below it no backend is asked for its limit. */
+#define HFS_TILE_MIN_SIDE 2048
 
 /* Renders field f into out (W x H) tile by tile through render (the
  * backend's frame of a sub-field, its own lighting), tiles of at most
