@@ -144,9 +144,9 @@ static const backend_ops backends[] = {
                           gles_invalidate, gles_frame_report, gles_render_view, 0, gles_query,
                           gles_shadow_map, gles_render_texture, gles_horizons, gles_max_side},
     [HFS_BACKEND_CPU] = {"cpu", NULL, NULL, cpu_render, NULL, NULL, NULL, NULL, NULL, NULL,
-                         NULL, 0, cpu_query, cpu_shadow_map, NULL, cpu_horizons},
+                         NULL, 0, cpu_query, cpu_shadow_map, NULL, cpu_horizons, NULL},
     [HFS_BACKEND_TRUTH] = {"truth", NULL, NULL, truth_render, NULL, NULL, NULL, NULL, NULL,
-                           NULL, NULL, 1, truth_query, NULL, NULL, truth_horizons},
+                           NULL, NULL, 1, truth_query, NULL, NULL, truth_horizons, NULL},
 };
 #define N_BACKENDS ((int)(sizeof backends / sizeof backends[0]))
 
