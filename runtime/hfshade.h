@@ -359,6 +359,15 @@ typedef struct hfs_horizon_desc {
     int n_azimuths;          /* 1..HFS_MAX_HORIZON_AZIMUTHS                  */
     const double *azimuth;   /* n_azimuths finite angles, radians            */
     double radius;           /* world units, >= 0 (0: the whole field)       */
+    /* window = 1: only angles in [lo, hi] (radians, -pi/2 <= lo <= hi <=
+     * pi/2) are wanted, and each result comes back as clamp(gamma, lo,
+     * hi), lo where the ray meets no terrain.  The searches start from lo
+     * (a run of the ray whose bound stays below it is skipped at once) and
+     * GLES stops at hi: a sun's disk needs only [elevation - alpha,
+     * elevation + alpha], and a high sun's search ends within a few cells.
+     * window = 0 (zero-initialized): every angle, as below. */
+    int window;
+    double lo, hi;
 } hfs_horizon_desc;
 
 /* The value of a direction whose ray meets no terrain within the radius

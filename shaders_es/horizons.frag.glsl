@@ -7,7 +7,9 @@
  * point's own height; the
  * elevation angle atan(max slope) per azimuth as an fp16 (hi, lo) pair
  * (angle, 0 at fp32), -2 (below every angle, exact in fp16) where the
- * ray crosses nothing.
+ * ray crosses nothing.  A window (u_window, hfs_horizon_desc's) starts the
+ * search from its low slope and stops it at its high one; -2 then also
+ * stands for nothing above the low end and 2 for the high end reached.
  */
 // hfs-variant: HFS_FP32 1
 
@@ -30,6 +32,8 @@ uniform ivec2 u_size;                    /* W, H */
 uniform float u_zf;                      /* normalized height to slope: hscale zscale / dx */
 uniform float u_reach;                   /* texels searched */
 uniform vec4 u_cs;                       /* (cos, sin) of the two azimuths */
+uniform int u_pair;                      /* 0: the first azimuth alone (an odd count's last) */
+uniform vec2 u_window;                   /* slopes: start from x, stop at y (-1e30, 1e30: all) */
 
 layout(location = 0) out vec4 o_h;
 
@@ -93,16 +97,18 @@ float horizon(ivec2 p, vec2 cs, vec2 h0)
     float dist = 0.0;
     int fetches = 0;
     float best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, p, cs, 0.0, u_reach, u_zf,
-                                0.0, h0, max(near_slope(p, cs, h0),
+                                0.0, h0, max(max(near_slope(p, cs, h0), u_window.x),
                                              max(exit_slope(p, cs, h0), end_slope(p, cs, h0))),
-                                1e30, dist, fetches);
-    return best > -1e29 ? atan(best) : -2.0;
+                                u_window.y, dist, fetches);
+    /* at the window's ends the sentinels, not atan(tan(lo)) a rounding off
+     * lo: the host clamps them to lo and hi exactly (-2 also: no terrain) */
+    return best >= u_window.y ? 2.0 : best > max(u_window.x, -1e29) ? atan(best) : -2.0;
 }
 
 void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec2 h0 = texelFetch(u_height, p, 0).xy;
-    float a = horizon(p, u_cs.xy, h0), b = horizon(p, u_cs.zw, h0);
+    float a = horizon(p, u_cs.xy, h0), b = u_pair != 0 ? horizon(p, u_cs.zw, h0) : a;
     o_h = vec4(hfs_split(a), hfs_split(b));
 }

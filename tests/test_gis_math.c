@@ -116,6 +116,37 @@ static void test_products(void)
     CHECK(fabs(deg[0] - 30.0) < 1e-5, "horizon raster: degrees");
 }
 
+/* The sun's disk under a horizon (gis_disk_visible) and how far terrain
+ * can shadow it (gis_shadow_reach). */
+static void test_disk(void)
+{
+    const double phi = 0.7, e = 0.4, a = 0.005;
+    const double s[3] = {cos(phi) * cos(e), sin(phi) * cos(e), sin(e)};
+    /* facing the sun, the weight is flat: the disk's area above a chord */
+    CHECK(gis_disk_visible(s, phi, e, a, (float)(e - a - 1e-4)) == 1.0, "below the disk");
+    CHECK(gis_disk_visible(s, phi, e, a, (float)(e + a + 1e-4)) == 0.0, "above the disk");
+    CHECK(gis_disk_visible(s, phi, e, a, HFS_HORIZON_NONE) == 1.0, "no terrain");
+    const double half = gis_disk_visible(s, phi, e, a, (float)e);
+    CHECK(fabs(half - 0.5) < 1e-3, "a chord through the centre: %.6f", half);
+    const double d = 0.5, seg = 1.0 - (acos(d) - d * sqrt(1.0 - d * d)) / PI;
+    const double v = gis_disk_visible(s, phi, e, a, (float)(e - d * a));
+    CHECK(fabs(v - seg) < 0.01, "a chord half a radius below: %.4f, area %.4f", v, seg);
+    /* the tangent plane through the centre, the disk's upper half above
+     * it: a horizon through the centre hides none of what lights it */
+    const double up[3] = {-sin(e) * cos(phi), -sin(e) * sin(phi), cos(e)};
+    const double t = gis_disk_visible(up, phi, e, a, (float)e);
+    CHECK(fabs(t - 1.0) < 1e-12, "the lit half above the horizon: %.6f", t);
+    /* half a radius up: the weight b over b > 1/2 of the upper half,
+     * int b 2 sqrt(1 - b^2) db from 1/2 over from 0 = (3/4)^(3/2) */
+    const double low = gis_disk_visible(up, phi, e, a, (float)(e + 0.5 * a));
+    CHECK(fabs(low - pow(0.75, 1.5)) < 0.01, "a horizon across the lit half: %.4f", low);
+    CHECK(gis_disk_cut(e, a, (float)e) && !gis_disk_cut(e, a, (float)(e - a)) &&
+              !gis_disk_cut(e, a, HFS_HORIZON_NONE), "cut");
+    CHECK(fabs(gis_shadow_reach(100.0, atan(0.5)) - 200.0) < 1e-9, "reach");
+    CHECK(gis_shadow_reach(100.0, 0.0) == HUGE_VAL && gis_shadow_reach(100.0, -0.1) == HUGE_VAL,
+          "no reach below the horizontal");
+}
+
 static void test_names(void)
 {
     char b[64];
@@ -200,6 +231,7 @@ int main(void)
 {
     test_conventions();
     test_products();
+    test_disk();
     test_names();
     test_sample_back();
     test_valley(HFS_BACKEND_TRUTH);

@@ -88,7 +88,7 @@ static float *horizons(hfs_renderer *r, const hfs_field *f, const double *az, in
     hfs_quality q;
     hfs_quality_defaults(&q);
     q.precision = precision;
-    const hfs_horizon_desc d = {n, az, radius};
+    const hfs_horizon_desc d = {.n_azimuths = n, .azimuth = az, .radius = radius};
     float *out = malloc((size_t)n * (size_t)f->width * (size_t)f->height * sizeof *out);
     hfs_error err = {""};
     const int rc = out ? hfs_renderer_horizons(r, f, &q, &d, out, &err) : HFS_E_NOMEM;
@@ -251,12 +251,71 @@ static void tile_checks(hfs_renderer *single, int w, int h)
     printf("tiles %dx%d: seam max %.3g, elsewhere max %.3g rad\n", w, h, seam, rest);
     CHECK(seam <= rest && rest <= BOUND_TILES, "tiles: seam %g, elsewhere %g", seam, rest);
     hfs_error err = {""};
-    const hfs_horizon_desc whole = {N_AZ, azimuths, 0.0};
+    const hfs_horizon_desc whole = {.n_azimuths = N_AZ, .azimuth = azimuths};
     CHECK(hfs_renderer_horizons(strict, &f, NULL, &whole, a, &err) == HFS_E_UNSUPPORTED &&
               strstr(err.msg, "give a radius"),
           "tiles without a radius: %s", err.msg);
     free(a), free(b), free(z);
     hfs_renderer_destroy(strict);
+}
+
+static int by_value(const void *a, const void *b)
+{
+    const float x = *(const float *)a, y = *(const float *)b;
+    return (x > y) - (x < y);
+}
+
+/* window [lo, hi] against the whole search `all` (scratch: win). */
+static void window_check(hfs_renderer *r, const hfs_field *f, hfs_horizon_desc *d, double lo,
+                         double hi, const float *all, float *win)
+{
+    const size_t n = (size_t)N_AZ * f->width * f->height;
+    d->lo = lo, d->hi = hi;
+    hfs_error err = {""};
+    CHECK(hfs_renderer_horizons(r, f, NULL, d, win, &err) == HFS_OK, "window: %s", err.msg);
+    long off = 0, inside = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const float want = all[k] == HFS_HORIZON_NONE ? (float)lo
+                                                      : fminf(fmaxf(all[k], (float)lo), (float)hi);
+        off += win[k] != want;
+        inside += all[k] > (float)lo && all[k] < (float)hi;
+    }
+    printf("%s window [%.2f, %.2f]: %ld of %zu differ from the clamped search (%ld inside)\n",
+           hfs_renderer_backend_name(r), lo, hi, off, n, inside);
+    CHECK(off == 0 && inside > (long)n / 4, "%s window: %ld differ, %ld inside",
+          hfs_renderer_backend_name(r), off, inside);
+}
+
+/* A window [lo, hi] returns clamp(gamma, lo, hi) of the whole search, lo
+ * for a ray that meets no terrain, on every backend, bit for bit: the
+ * search only skips (from lo) or stops (at hi) where the clamp would hide
+ * the difference.  A window that is not one is refused. */
+static void window_checks(hfs_renderer *r, int w, int h)
+{
+    float *z = malloc((size_t)w * h * sizeof *z);
+    hfs_terrain_fractal(z, w, h, 11u, 0.5);
+    const hfs_field f = {w, h, z, 1.0, 0.6};
+    const size_t n = (size_t)N_AZ * w * h;
+    float *all = horizons(r, &f, azimuths, N_AZ, 0.0, HFS_PRECISION_FP16);
+    float *win = malloc(n * sizeof *win);
+    /* the windows: the 30th to 70th percentiles of this field's horizons,
+     * and one from a negative elevation (the searches start at a negative
+     * slope; a ray with no terrain, or none above lo, comes back as lo
+     * exactly, not as the float atan(tan(lo))) to the median */
+    memcpy(win, all, n * sizeof *win);
+    qsort(win, n, sizeof *win, by_value);
+    const double los[2] = {win[n * 3 / 10], -0.1}, his[2] = {win[n * 7 / 10], win[n / 2]};
+    hfs_horizon_desc d = {.n_azimuths = N_AZ, .azimuth = azimuths, .window = 1};
+    hfs_error err = {""};
+    for (int k = 0; k < 2; ++k)
+        window_check(r, &f, &d, los[k], his[k], all, win);
+    d.lo = 0.4, d.hi = 0.3;
+    CHECK(hfs_renderer_horizons(r, &f, NULL, &d, win, &err) == HFS_E_INVALID &&
+              strstr(err.msg, "window [0.4, 0.3]"),
+          "a window with lo > hi: %s", err.msg);
+    free(win);
+    free(all);
+    free(z);
 }
 
 int main(int argc, char **argv)
@@ -270,11 +329,12 @@ int main(int argc, char **argv)
         plane_checks(r[b], w, h);
         radius_checks(r[b], w, h);
         invariance_checks(r[b], w, h);
+        window_checks(r[b], w, h);
     }
     /* a bad request: one line, nothing computed */
     hfs_error err = {""};
     float one;
-    const hfs_horizon_desc bad = {0, azimuths, 0.0};
+    const hfs_horizon_desc bad = {.n_azimuths = 0, .azimuth = azimuths};
     float zz[4] = {0};
     const hfs_field tiny = {2, 2, zz, 1.0, 1.0};
     CHECK(hfs_renderer_horizons(r[1], &tiny, NULL, &bad, &one, &err) == HFS_E_INVALID &&

@@ -23,6 +23,7 @@ typedef struct horizon_rows {
     const hfs_ray_bound_layout *L;
     const double *atlas, *z;
     double t_last; /* texels */
+    double floor;  /* the slope the search starts from: tan(lo) in a window */
     float *out;
 } horizon_rows;
 
@@ -75,7 +76,7 @@ static void horizon_row(void *ctx, int j, int worker)
              * surface may fall away from its steepest start), the exit
              * through a side and the end at the radius */
             double dist = 0.0;
-            const double near = fmax(hfs_field_first_cell_slope(f, i, j, c, s),
+            const double near = fmax(fmax(hfs_field_first_cell_slope(f, i, j, c, s), h->floor),
                                      fmax(exit_slope(f, i, j, c, s, h->t_last),
                                           end_slope(f, i, j, c, s, h->t_last)));
             const double m = hfs_ray_bound_search(h->L, h->atlas, h->z, w, i, j, c, s, 0.0,
@@ -102,7 +103,7 @@ int hfs_cpu_horizons(const hfs_field *f, const hfs_quality *q, const hfs_horizon
             z[k] = f->z[k];
         hfs_ray_bound_build(&L, f->z, 0.0, 1.0, -HUGE_VAL, atlas, scratch);
         horizon_rows h = {f, d, &L, atlas, z, d->radius > 0.0 ? d->radius / f->dx : HUGE_VAL,
-                          out};
+                          d->window ? tan(d->lo) : -DBL_MAX, out};
         hfs_parallel_rows(f->height, q ? q->threads : 0, horizon_row, &h, NULL, NULL);
     }
     free(atlas);

@@ -96,6 +96,11 @@ static int draw_pair(hfs_gles *g, const hfs_gles_layout *L, const horizon_target
     hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
     hfs_gles_set_f1(gl, prog, "u_reach", (float)(reach < 1e9 ? reach : 1e9));
     hfs_gles_set_f4(gl, prog, "u_cs", cs);
+    hfs_gles_set_i1(gl, prog, "u_pair", two);
+    /* the window's slopes: where the search starts and where it stops */
+    const double win_lo = d->window ? fmax(tan(d->lo), -1e30) : -1e30;
+    const double win_hi = d->window && d->hi < 1.5707 ? tan(d->hi) : 1e30;
+    hfs_gles_set_f2(gl, prog, "u_window", (float)win_lo, (float)win_hi);
     hfs_gles_draw(gl, t->fbo, L->w, L->h);
     gl->UseProgram(0);
     float *px = hfs_gles_scratch(g, (size_t)win->iw * (size_t)win->ih * 4 * sizeof *px);
@@ -111,9 +116,9 @@ static int draw_pair(hfs_gles *g, const hfs_gles_layout *L, const horizon_target
             float *dst = out + plane * (size_t)(a + k) +
                          (size_t)(win->y0 + win->iy + j) * (size_t)win->fw + win->x0 + win->ix;
             const float *src = px + (size_t)j * (size_t)win->iw * 4 + 2 * k;
-            for (int i = 0; i < win->iw; ++i) { /* hi + lo; -2: no terrain */
+            for (int i = 0; i < win->iw; ++i) { /* hi + lo; -2: no terrain, 2: the window's top */
                 const float hl = src[4 * i] + src[4 * i + 1];
-                dst[i] = hl > -1.75f ? hl : HFS_HORIZON_NONE;
+                dst[i] = hl > 1.75f ? (float)d->hi : hl > -1.75f ? hl : HFS_HORIZON_NONE;
             }
         }
     return HFS_OK;

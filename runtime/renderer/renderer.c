@@ -442,6 +442,16 @@ int hfs_renderer_shadow_height_map(hfs_renderer *r, const hfs_field *f, const hf
     return r->ops->shadow_map(r->state, f, &l->key[key], q, layer, out, err);
 }
 
+/* out[k] = clamp(out[k], lo, hi) (a ray that met no terrain,
+ * HFS_HORIZON_NONE = -pi/2, becomes lo): the same numbers from every
+ * backend, whichever part of the search it skipped. */
+static void clamp_to_window(const hfs_horizon_desc *d, float *out, size_t n)
+{
+    const float lo = (float)d->lo, hi = (float)d->hi;
+    for (size_t k = 0; k < n; ++k)
+        out[k] = fminf(fmaxf(out[k], lo), hi);
+}
+
 int hfs_renderer_horizons(hfs_renderer *r, const hfs_field *f, const hfs_quality *q,
                           const hfs_horizon_desc *d, float *out, hfs_error *err)
 {
@@ -453,5 +463,9 @@ int hfs_renderer_horizons(hfs_renderer *r, const hfs_field *f, const hfs_quality
     int rc = validate_frame(r, f, &none, q ? q : &own, err);
     if (!rc)
         rc = hfs_validate_horizon_desc(d, out, err);
-    return rc ? rc : r->ops->horizons(r->state, f, q ? q : &own, d, out, err);
+    if (!rc)
+        rc = r->ops->horizons(r->state, f, q ? q : &own, d, out, err);
+    if (!rc && d->window) /* the backends only skip what the window leaves out */
+        clamp_to_window(d, out, (size_t)d->n_azimuths * (size_t)f->width * (size_t)f->height);
+    return rc;
 }

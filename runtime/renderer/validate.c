@@ -269,5 +269,11 @@ int hfs_validate_horizon_desc(const hfs_horizon_desc *d, const float *out, hfs_e
     if (!(isfinite(d->radius) && d->radius >= 0.0))
         return hfs_fail(err, HFS_E_INVALID, "horizons: radius %g (a finite distance >= 0, "
                         "0 for the whole field)", d->radius);
+    if (d->window != 0 && d->window != 1)
+        return hfs_fail(err, HFS_E_INVALID, "horizons: window %d (0 or 1)", d->window);
+    const double half_pi = 1.5707963267948966;
+    if (d->window && !(d->lo >= -half_pi && d->lo <= d->hi && d->hi <= half_pi))
+        return hfs_fail(err, HFS_E_INVALID, "horizons: window [%g, %g] (radians, -pi/2 <= lo "
+                        "<= hi <= pi/2)", d->lo, d->hi);
     return HFS_OK;
 }

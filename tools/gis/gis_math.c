@@ -115,3 +115,43 @@ int gis_decimals_of(const char *number)
         ++d;
     return d;
 }
+
+int gis_disk_cut(double elev, double alpha, float gamma)
+{
+    return !gis_horizon_none(gamma) && gamma > (float)(elev - alpha) &&
+           gamma < (float)(elev + alpha);
+}
+
+double gis_disk_visible(const double n[3], double phi, double elev, double alpha, float gamma)
+{
+    if (!gis_disk_cut(elev, alpha, gamma))
+        return gis_horizon_none(gamma) || gamma <= (float)(elev - alpha) ? 1.0 : 0.0;
+    /* n . w over the disk, linear in its offsets (u along the azimuth, v
+     * up): n.s + alpha (a n.t_u + b n.t_v), (a, b) in the unit disk. */
+    const double cp = cos(phi), sp = sin(phi), ce = cos(elev), se = sin(elev);
+    const double ns = n[0] * cp * ce + n[1] * sp * ce + n[2] * se;
+    const double nu = -n[0] * sp + n[1] * cp;
+    const double nv = -n[0] * se * cp - n[1] * se * sp + n[2] * ce;
+    double lit = 0.0, all = 0.0;
+    for (int y = 0; y < GIS_DISK_GRID; ++y) {
+        const double b = (2.0 * y + 1.0) / GIS_DISK_GRID - 1.0;
+        const int above = elev + alpha * b > (double)gamma;
+        for (int x = 0; x < GIS_DISK_GRID; ++x) {
+            const double a = (2.0 * x + 1.0) / GIS_DISK_GRID - 1.0;
+            const double w = ns + alpha * (a * nu + b * nv);
+            if (a * a + b * b > 1.0 || !(w > 0.0))
+                continue;
+            all += w;
+            lit += above ? w : 0.0;
+        }
+    }
+    return all > 0.0 ? lit / all : 0.0;
+}
+
+double gis_shadow_reach(double relief, double low)
+{
+    if (!(low > 0.0))
+        return HUGE_VAL;
+    const double r = relief / tan(low);
+    return isfinite(r) && r >= 0.0 ? r : HUGE_VAL;
+}

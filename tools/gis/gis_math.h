@@ -75,6 +75,32 @@ void gis_horizon_degrees(float *out, const float *gamma, size_t n);
 #define GIS_NODATA (-9999.0f)
 float gis_nodata_for(int has_nodata, double nodata, double lo, double hi);
 
+/* The visible fraction V of the sun's disk (angular radius alpha, centre
+ * at SPEC azimuth phi and elevation elev, radians) on a surface of unit
+ * normal n under a horizon at elevation gamma at the centre's azimuth: of
+ * the disk's irradiance on that surface (its part above the tangent
+ * plane, cosine-weighted), the share from its part above the horizon, as
+ * the truth's shadowed over unshadowed render defines it.  1 for a ray
+ * that meets no terrain (gis_horizon_none) or gamma <= elev - alpha, 0 for
+ * gamma >= elev + alpha; between them the disk is taken as flat and the
+ * horizon as straight across it (it spans 0.53 degrees of azimuth) and
+ * both integrals are summed over a GIS_DISK_GRID^2 midpoint grid of the
+ * disk; 0 when no part of it lies above the tangent plane. */
+#define GIS_DISK_GRID 32
+/* 1 when the horizon gamma crosses the disk: strictly between its lowest
+ * and highest elevations as floats (a horizon window's ends, clamped to
+ * them as floats, count as outside). */
+int gis_disk_cut(double elev, double alpha, float gamma);
+double gis_disk_visible(const double n[3], double phi, double elev, double alpha, float gamma);
+
+/* How far (world units of horizontal distance) terrain of relief `relief`
+ * (world units: zscale times the field's highest minus lowest height) can
+ * cast a shadow onto a disk whose lowest point stands at elevation low
+ * (radians): relief / tan(low), the distance at which a ray that rises at
+ * `low` clears the highest terrain from the lowest; HUGE_VAL (no bound:
+ * the whole field) when low <= 0 or that distance is not finite. */
+double gis_shadow_reach(double relief, double low);
+
 /* deg brought into [0, 360). */
 double gis_wrap_degrees(double deg);
 

@@ -6,10 +6,12 @@
 #include "gis_sun.h"
 
 #include "clear_sky.h"
+#include "field_geom.h"
 #include "gis_resample.h"
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define PI 3.14159265358979323846
 #define RAD (PI / 180.0)
@@ -70,17 +72,25 @@ static void back(const gis_compute *c, const float *sq, float *out)
                     c->nodata, out);
 }
 
-/* f on the square grid (sq) and, with vis not NULL, V. */
-static int sun_factor(const gis_compute *c, const gis_sun_at *s, float *f, float *vis,
-                      hfs_error *err)
+/* The sun s alone, as a key light, and the renders' settings. */
+static void sun_scene(const gis_compute *c, const gis_sun_at *s, hfs_lighting *l, hfs_quality *q)
+{
+    hfs_lighting_defaults(l);
+    l->n_key = 1;
+    gis_sun_key(s, c->dem->ex, c->dem->ey, &l->key[0]);
+    quality(q);
+}
+
+/* f on the square grid (sq) and, with vis not NULL, V, from a render
+ * with the sun as a key light: the truth's exact disk behind the exact
+ * surface, the oracle of the horizon path below. */
+static int sun_factor_render(const gis_compute *c, const gis_sun_at *s, float *f, float *vis,
+                             hfs_error *err)
 {
     const hfs_field field = field_of(c);
     hfs_lighting l;
-    hfs_lighting_defaults(&l);
-    l.n_key = 1;
-    gis_sun_key(s, c->dem->ex, c->dem->ey, &l.key[0]);
     hfs_quality q;
-    quality(&q);
+    sun_scene(c, s, &l, &q);
     hfs_image lit = {0}, open = {0};
     int rc = hfs_image_alloc(&lit, field.width, field.height, err);
     if (!rc && vis)
@@ -103,6 +113,74 @@ static int sun_factor(const gis_compute *c, const gis_sun_at *s, float *f, float
     return rc;
 }
 
+/* zscale times the highest minus the lowest height of the square grid. */
+static double relief_of(const gis_compute *c)
+{
+    const gis_dem *d = c->dem;
+    const size_t n = (size_t)d->sw * (size_t)d->sh;
+    float lo = d->sz[0], hi = d->sz[0];
+    for (size_t p = 1; p < n; ++p) {
+        lo = fminf(lo, d->sz[p]);
+        hi = fmaxf(hi, d->sz[p]);
+    }
+    return c->zscale * ((double)hi - (double)lo);
+}
+
+/* The same f and V through one horizon: the unshadowed f (the exact cap,
+ * hfs_render_unshadowed) times the disk's fraction above the horizon at
+ * the sun's azimuth (gis_disk_visible), the horizon searched only as far
+ * as terrain can shadow the disk's lowest point (gis_shadow_reach) and
+ * only for angles across the disk (the desc's window): a high sun's
+ * search ends within a few reads, where a frame's key-light passes search
+ * the whole field at every step. */
+static int sun_factor_horizon(const gis_compute *c, const gis_sun_at *s, double relief,
+                              float *f, float *vis, hfs_error *err)
+{
+    const hfs_field field = field_of(c);
+    hfs_lighting l;
+    hfs_quality q;
+    sun_scene(c, s, &l, &q);
+    const double low = l.key[0].elev - l.key[0].alpha, high = l.key[0].elev + l.key[0].alpha;
+    const double reach = gis_shadow_reach(relief, low);
+    const hfs_horizon_desc desc = {.n_azimuths = 1, .azimuth = &l.key[0].phi,
+                                   .radius = isfinite(reach) ? fmax(reach, 2.0 * field.dx) : 0.0,
+                                   .window = 1, .lo = fmax(low, -PI / 2), .hi = fmin(high, PI / 2)};
+    const size_t n = (size_t)field.width * (size_t)field.height;
+    hfs_image open = {0};
+    float *gamma = malloc(n * sizeof *gamma);
+    int rc = gamma ? hfs_image_alloc(&open, field.width, field.height, err)
+                   : hfs_fail(err, HFS_E_NOMEM, "sun: out of memory");
+    if (!rc)
+        rc = hfs_render_unshadowed(&field, &l, &q, &open, err);
+    if (!rc)
+        rc = hfs_renderer_horizons(c->r, &field, &q, &desc, gamma, err);
+    for (size_t p = 0; p < n && !rc; ++p) {
+        const double fu = factor_of(&l.key[0], open.rgb[3 * p]);
+        double nrm[3] = {0.0, 0.0, 1.0};
+        if (gis_disk_cut(l.key[0].elev, l.key[0].alpha, gamma[p])) /* only a cut disk asks */
+            hfs_field_normal(&field, (int)(p % (size_t)field.width),
+                             (int)(p / (size_t)field.width), nrm);
+        const double v = gis_disk_visible(nrm, l.key[0].phi, l.key[0].elev, l.key[0].alpha,
+                                          gamma[p]);
+        f[p] = (float)(fmax(fu, 0.0) * v);
+        if (vis)
+            vis[p] = fu > GIS_SUN_SELF_SHADOW ? (float)v : 0.0f;
+    }
+    free(gamma);
+    hfs_image_free(&open);
+    return rc;
+}
+
+/* f and V by the backend's path: the truth renders its exact disk, the
+ * others search the horizon. */
+static int sun_factor(const gis_compute *c, const gis_sun_at *s, double relief, float *f,
+                      float *vis, hfs_error *err)
+{
+    if (!strcmp(hfs_renderer_backend_name(c->r), "truth"))
+        return sun_factor_render(c, s, f, vis, err);
+    return sun_factor_horizon(c, s, relief, f, vis, err);
+}
+
 int gis_product_sun(const gis_compute *c, const gis_sun_at *s, float *beam, float *vis,
                     hfs_error *err)
 {
@@ -111,7 +189,7 @@ int gis_product_sun(const gis_compute *c, const gis_sun_at *s, float *beam, floa
     float *f = calloc(n, sizeof *f), *v = calloc(n, sizeof *v);
     int rc = f && v ? HFS_OK : hfs_fail(err, HFS_E_NOMEM, "sun: out of memory");
     if (!rc && gis_sun_up(s))
-        rc = sun_factor(c, s, f, v, err);
+        rc = sun_factor(c, s, relief_of(c), f, v, err);
     if (!rc) {
         for (size_t p = 0; p < n; ++p)
             f[p] = (float)(s->beam_normal * f[p]);
@@ -175,6 +253,7 @@ static int beam_sum(const gis_compute *c, const gis_period *p, double *acc, floa
                     hfs_error *err)
 {
     const size_t n = (size_t)c->dem->sw * (size_t)c->dem->sh;
+    const double relief = relief_of(c);
     for (long k = 0; k < p->n_steps; ++k) {
         double jd, hours;
         gis_sun_at s;
@@ -183,7 +262,7 @@ static int beam_sum(const gis_compute *c, const gis_period *p, double *acc, floa
             return hfs_fail(err, HFS_E_INVALID, "insolation: no sun for step %ld", k + 1);
         if (!(s.beam_normal > 0.0))
             continue;
-        const int rc = sun_factor(c, &s, f, NULL, err);
+        const int rc = sun_factor(c, &s, relief, f, NULL, err);
         if (rc)
             return rc;
         for (size_t q = 0; q < n; ++q)
