@@ -1,6 +1,6 @@
 /*
  * frame_image.c — render to display picture (frame_image.h): row flip and
- * the PNG writer's tone map, shared through hfs_srgb8_encode so the bytes
+ * the PNG writer's tone map, shared through hfs_srgb8_encode_rgb so the bytes
  * cannot drift apart.
  *
  * Cost: one pow() per channel (about 3 ms for 256 x 256 on this machine);
@@ -21,7 +21,7 @@ int hfs_frame_to_rgba8(const hfs_image *img, const hfs_png_opts *opts, uint8_t *
     hfs_tonemap tm = opts ? opts->tonemap : HFS_TONEMAP_CLAMP;
     if (!(exposure > 0.0) || !isfinite(exposure))
         return hfs_fail(err, HFS_E_INVALID, "frame: exposure %g must be positive", exposure);
-    if (tm != HFS_TONEMAP_CLAMP && tm != HFS_TONEMAP_REINHARD)
+    if (tm != HFS_TONEMAP_CLAMP && tm != HFS_TONEMAP_REINHARD && tm != HFS_TONEMAP_HUE)
         return hfs_fail(err, HFS_E_INVALID, "frame: unknown tone map %d", (int)tm);
     const size_t w = (size_t)img->width, h = (size_t)img->height;
     for (size_t k = 0; k < w * h * 3; ++k)
@@ -33,12 +33,18 @@ int hfs_frame_to_rgba8(const hfs_image *img, const hfs_png_opts *opts, uint8_t *
         const float *src = img->rgb + j * w * 3;
         uint8_t *dst = rgba + j * w * 4; /* row j = 0 at the top (SPEC) */
         for (size_t i = 0; i < w; ++i) {
-            for (int c = 0; c < 3; ++c)
-                dst[4 * i + c] = hfs_srgb8_encode(src[3 * i + c], exposure, tm);
+            hfs_srgb8_encode_rgb(src + 3 * i, exposure, tm, dst + 4 * i);
             dst[4 * i + 3] = 255;
         }
     }
     return HFS_OK;
+}
+
+double hfs_exposure_smooth(double ev, double target, double dt, double tau)
+{
+    if (!(dt > 0.0) || !(tau > 0.0))
+        return ev;
+    return ev + (target - ev) * -expm1(-dt / tau);
 }
 
 int hfs_shrink_factor(int w, int h, int max_side)

@@ -61,7 +61,8 @@ typedef struct kiosk_opts {
     const char *out_pattern;       /* --out (headless)                       */
     const char *stats_path;        /* --stats                                */
     int width, height;             /* --size (x11 window, headless canvas)   */
-    double exposure;               /* --exposure, default 1                  */
+    double exposure;               /* --exposure EV as a multiplier 2^EV;
+                                      0 = auto, the default                  */
     int overlay;                   /* --overlay: start with the overlay on   */
     int view;                      /* --view: start in the 3-D view          */
     int exit_after_replay;         /* --exit-after-replay                    */
@@ -109,7 +110,20 @@ typedef struct kiosk_frame {
                                       side (shrink > 1), reused              */
     int shrink;                    /* picture = img / shrink per side        */
     uint8_t *rgba;                 /* sRGB picture, reused                   */
-    double exposure;
+    double exposure;               /* the multiplier the picture is shown at */
+    /* Automatic exposure (auto = 1: no --exposure EV): each frame metered
+     * on its lit grid (hfs_exposure_auto: terrain only, also in the 3-D
+     * view), the shown exposure smoothed towards it over time
+     * (hfs_exposure_smooth, HFS_KIOSK_EXPOSURE_TAU).  The texture path has
+     * no image on the CPU: it meters by a read-back at most every
+     * KIOSK_METER_NS and smooths towards the last target in between. */
+    int auto_exposure;
+    double ev, target_ev;          /* stops; ev NAN until the first meter    */
+    int64_t ev_ns, metered_ns;     /* when ev was last stepped, metered      */
+    int settling;                  /* ev not yet at the target: the loop
+                                      shows another frame soon               */
+    hfs_image lit;                 /* the lit grid metered in the 3-D view and
+                                      on the texture path, reused            */
     int presented;                 /* frames presented so far                */
     int amortize;                  /* applied to every renderer made         */
     int deferred;                  /* passes the last frame left for later:
@@ -127,7 +141,8 @@ typedef struct kiosk_frame {
     int64_t present_ns;            /* CLOCK_MONOTONIC after present returned */
 } kiosk_frame;
 
-/* Makes the renderer the scene asks for (backend, context): a GLES one in
+/* Makes the renderer the scene asks for (backend, context), exposure the
+ * picture's multiplier (0: automatic): a GLES one in
  * the share group of display d's GL context when d has one (NULL: none,
  * every frame read back). */
 int kiosk_frame_init(kiosk_frame *f, const hfs_scene *scene, double exposure, hfs_display *d,

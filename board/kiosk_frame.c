@@ -15,6 +15,7 @@
  */
 #include "kiosk.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -46,7 +47,9 @@ int kiosk_frame_init(kiosk_frame *f, const hfs_scene *s, double exposure, hfs_di
                      hfs_error *err)
 {
     memset(f, 0, sizeof *f);
-    f->exposure = exposure > 0.0 ? exposure : 1.0;
+    f->auto_exposure = !(exposure > 0.0);
+    f->exposure = f->auto_exposure ? 1.0 : exposure;
+    f->ev = f->target_ev = NAN;
     f->backend = s->backend;
     snprintf(f->context, sizeof f->context, "%s", s->context);
     hfs_display_gl_handles(d, &f->egl_display, &f->egl_context);
@@ -104,6 +107,7 @@ void kiosk_frame_free(kiosk_frame *f)
     hfs_renderer_destroy(f->renderer);
     hfs_image_free(&f->img);
     hfs_image_free(&f->small);
+    hfs_image_free(&f->lit);
     free(f->rgba);
     f->renderer = NULL;
     f->rgba = NULL;
@@ -163,6 +167,40 @@ hfs_view kiosk_view_camera(const hfs_input_state *st, const hfs_field *field, in
     return v;
 }
 
+/* The lit grid the 3-D view and the texture path meter, at the field's
+ * size. */
+static int fit_lit(kiosk_frame *f, const hfs_field *field, hfs_error *err)
+{
+    if (f->lit.rgb && f->lit.width == field->width && f->lit.height == field->height)
+        return HFS_OK;
+    hfs_image_free(&f->lit);
+    return hfs_image_alloc(&f->lit, field->width, field->height, err);
+}
+
+/* A new target for the automatic exposure: the terrain's median at middle
+ * grey (hfs_exposure_auto); the first one is taken at once. */
+static void meter(kiosk_frame *f, const hfs_image *terrain)
+{
+    f->target_ev = log2(hfs_exposure_auto(terrain));
+    f->metered_ns = hfs_input_now_ns();
+}
+
+/* The exposure this frame is shown at: fixed (--exposure EV), or the
+ * smoothed one stepped towards the last target; settling while it is more
+ * than 1/64 stop (invisible in 8 bits) away from it. */
+static void step_exposure(kiosk_frame *f)
+{
+    if (!f->auto_exposure || isnan(f->target_ev))
+        return;
+    const int64_t now = hfs_input_now_ns();
+    f->ev = isnan(f->ev) ? f->target_ev
+                         : hfs_exposure_smooth(f->ev, f->target_ev, (double)(now - f->ev_ns) / 1e9,
+                                               HFS_KIOSK_EXPOSURE_TAU);
+    f->ev_ns = now;
+    f->settling = fabs(f->target_ev - f->ev) > 1.0 / 64.0;
+    f->exposure = exp2(f->ev);
+}
+
 /* The frame's image into f->img: the grid dump, or the 3-D view. */
 static int render(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_state *st,
                   hfs_error *err)
@@ -177,13 +215,26 @@ static int render(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_st
      * quality were validated by kiosk_world_relight; the renderer checks
      * them again, which costs nothing next to a frame). */
     hfs_renderer_set_field_serial(f->renderer, in->serial);
-    if (!view)
-        return hfs_renderer_render(f->renderer, &in->field, &in->lighting, &in->quality, &f->img,
-                                   NULL, NULL, err);
-    /* A camera move costs the view pass alone (the lighting is kept). */
+    if (!view) {
+        rc = hfs_renderer_render(f->renderer, &in->field, &in->lighting, &in->quality, &f->img,
+                                 NULL, NULL, err);
+        if (!rc && f->auto_exposure)
+            meter(f, &f->img); /* the grid is all terrain */
+        return rc;
+    }
+    /* A camera move costs the view pass alone (the lighting is kept; the
+     * lit grid metered is the renderer's kept read-back). */
     const hfs_view v = kiosk_view_camera(st, &in->field, w, h);
-    return hfs_renderer_render_view(f->renderer, &in->field, &in->lighting, &in->quality, &v, NULL,
-                                    &f->img, err);
+    hfs_image *lit = NULL;
+    if (f->auto_exposure && (rc = fit_lit(f, &in->field, err)))
+        return rc;
+    if (f->auto_exposure)
+        lit = &f->lit;
+    rc = hfs_renderer_render_view(f->renderer, &in->field, &in->lighting, &in->quality, &v, lit,
+                                  &f->img, err);
+    if (!rc && lit)
+        meter(f, lit);
+    return rc;
 }
 
 /* A grid frame on a GL display goes to the screen as the renderer's
@@ -199,11 +250,28 @@ static int texture_path(const kiosk_frame *f, const hfs_scene_inputs *in,
            hfs_shrink_factor(in->field.width, in->field.height, HFS_DISPLAY_MAX_SIDE) == 1;
 }
 
+/* The texture path meters by a read-back of the lit grid (the planner
+ * then runs only the read-back: the frame is shared with the texture), at
+ * most this often: a knob turned continuously costs a read-back 4 times a
+ * second, not every frame. */
+#define KIOSK_METER_NS 250000000LL
+
 static int render_texture(kiosk_frame *f, const hfs_scene_inputs *in, hfs_lit_texture *t,
                           hfs_error *err)
 {
-    const hfs_lit_texture_desc how = {HFS_LIT_SRGB8, f->exposure, 0};
     hfs_renderer_set_field_serial(f->renderer, in->serial);
+    if (f->auto_exposure && (isnan(f->target_ev) ||
+                             hfs_input_now_ns() - f->metered_ns >= KIOSK_METER_NS)) {
+        int rc = fit_lit(f, &in->field, err);
+        if (!rc)
+            rc = hfs_renderer_render(f->renderer, &in->field, &in->lighting, &in->quality,
+                                     &f->lit, NULL, NULL, err);
+        if (rc)
+            return rc;
+        meter(f, &f->lit);
+    }
+    step_exposure(f);
+    const hfs_lit_texture_desc how = {HFS_LIT_SRGB8, f->exposure, HFS_TONEMAP_HUE};
     return hfs_renderer_render_texture(f->renderer, &in->field, &in->lighting, &in->quality,
                                        &how, t, err);
 }
@@ -212,7 +280,8 @@ static int render_texture(kiosk_frame *f, const hfs_scene_inputs *in, hfs_lit_te
 static int picture(kiosk_frame *f, const char *preset, const hfs_input_state *st,
                    const hfs_image **pic, hfs_error *err)
 {
-    hfs_png_opts po = {.exposure = f->exposure};
+    step_exposure(f);
+    hfs_png_opts po = {.exposure = f->exposure, .tonemap = HFS_TONEMAP_HUE};
     *pic = &f->img;
     if (f->shrink > 1) {
         hfs_image_shrink(&f->img, f->shrink, &f->small);

@@ -34,6 +34,8 @@
 #include "input_replay.h"
 
 #define READ_CHUNK 64
+/* Frames while the automatic exposure settles: at most 60 a second. */
+#define KIOSK_SETTLE_NS 16666667LL
 
 /* The events of one wake-up, kept for the stats lines written after the
  * frame that shows them. */
@@ -172,8 +174,9 @@ static int show_batch(kiosk *k, loop *l, int heights, int sky)
         if (show(k, 0))
             return -1;
         capture_stats(k, heights, sky);
-    } else if (!b->any_change && k->frame.deferred > 0) {
-        /* Amortizing: passes still wait for this scene; no event to log. */
+    } else if (!b->any_change && (k->frame.deferred > 0 || k->frame.settling)) {
+        /* Amortizing: passes still wait for this scene; or the automatic
+         * exposure still settles (kiosk_frame.c); no event to log. */
         if (show(k, 0))
             return -1;
     } else if (b->any_change) {
@@ -439,6 +442,8 @@ int kiosk_run(kiosk *k)
         }
         if (k->frame.deferred > 0) /* amortized passes wait: next frame now */
             deadline = hfs_input_now_ns();
+        else if (k->frame.settling && k->frame.present_ns + KIOSK_SETTLE_NS < deadline)
+            deadline = k->frame.present_ns + KIOSK_SETTLE_NS; /* the exposure settles */
         struct timespec ts;
         if (ppoll(fds, (nfds_t)n, timeout_until(deadline, &ts), NULL) < 0 && errno != EINTR) {
             kiosk_log(KIOSK_ERR, "poll: %s", strerror(errno));

@@ -51,7 +51,9 @@ static void usage(FILE *f)
             "  --display NAME        %s (default kms)\n"
             "  --size WxH            x11 window / headless canvas size (default: the field's)\n"
             "  --out PATTERN.png     headless: write each frame, e.g. frame-%%04d.png\n"
-            "  --exposure F          linear exposure of the picture (default 1)\n"
+            "  --exposure auto|EV    exposure of the picture: auto (default; the lit terrain's\n"
+            "                        median at middle grey, smoothed over 0.5 s) or stops\n"
+            "                        (0 = radiance x 1), as hfshade render --exposure\n"
             "  --overlay             start with the frame-time overlay shown\n"
             "  --view                start in the 3-D view (a view.toggle button switches;\n"
             "                        camera.* knobs turn it; its size is --size or 800x480)\n"
@@ -78,7 +80,7 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
 {
     memset(o, 0, sizeof *o);
     o->display = "kms";
-    o->exposure = 1.0;
+    o->exposure = 0.0; /* auto */
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         if (a[0] != '-') {
@@ -137,9 +139,11 @@ static int parse_args(kiosk_opts *o, int argc, char **argv)
                 return hfs_usage_error(PROG, "--size: '%s' is not WxH (1..16384)", v);
         } else {
             char *end;
-            o->exposure = strtod(v, &end);
-            if (end == v || *end || !(o->exposure > 0.0) || !isfinite(o->exposure))
-                return hfs_usage_error(PROG, "--exposure: '%s' is not a positive number", v);
+            const double ev = strcmp(v, "auto") ? strtod(v, &end) : 0.0;
+            if (strcmp(v, "auto") && (end == v || *end || !(fabs(ev) <= 40.0)))
+                return hfs_usage_error(PROG, "--exposure: '%s' is not auto or stops (EV) in "
+                                       "[-40, 40]", v);
+            o->exposure = strcmp(v, "auto") ? exp2(ev) : 0.0;
         }
     }
     if (!o->scene_path)

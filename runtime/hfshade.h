@@ -290,8 +290,8 @@ HFS_API int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *field,
  *                     application that lights, tone maps or blends in its
  *                     own shaders.
  *   HFS_LIT_SRGB8     GL_RGBA8 (NOT GL_SRGB8_ALPHA8): the kiosk's picture,
- *                     bytes as hfs_srgb8_encode (hfs_io.h) writes them per
- *                     channel -- tonemap(exposure Lo), sRGB OETF, times 255
+ *                     bytes as hfs_srgb8_encode_rgb (hfs_io.h) writes them
+ *                     -- tonemap(exposure Lo), sRGB OETF, times 255
  *                     -- A = 255.  Sampled, it gives the already-encoded
  *                     value: write it to a non-sRGB framebuffer as it is. */
 typedef enum hfs_lit_encoding {
@@ -301,7 +301,8 @@ typedef enum hfs_lit_encoding {
 
 /* How to encode (NULL: radiance).  exposure, tonemap: HFS_LIT_SRGB8 only,
  * as hfs_png_opts (exposure 0 = 1, else > 0 and finite; tonemap 0 clamp,
- * 1 Reinhard, hfs_io.h hfs_tonemap's values). */
+ * 1 Reinhard, 2 the hue-keeping max-RGB curve: hfs_io.h hfs_tonemap's
+ * values). */
 typedef struct hfs_lit_texture_desc {
     hfs_lit_encoding encoding;
     double exposure;

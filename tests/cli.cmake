@@ -36,3 +36,10 @@ add_test(NAME hfgen_albedo
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/hfgen_albedo.sh
                  $<TARGET_FILE:hfgen> $<TARGET_FILE:hfshade>)
 set_tests_properties(hfgen_albedo PROPERTIES LABELS io TIMEOUT 60)
+
+# Issue 41: hue clipping.  A 3-D view whose sky is ten stops over the terrain
+# keeps each sky pixel's hue in hfshade render's PNG, the terrain's median
+# at middle grey (tests/test_sky_hue.c states the bounds).
+hfs_add_test(test_sky_hue LABEL io TIMEOUT 120 SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_sky_hue.c
+             LIBS hfshade_io m ARGS $<TARGET_FILE:hfshade> $<TARGET_FILE:hfgen>)
+add_dependencies(test_sky_hue hfshade hfgen)

@@ -277,7 +277,7 @@ run flags repeatable_keys ok "" "out/a.pfm" -- "$HFSHADE" $R --pfm "$out/a.pfm" 
     --key 30,20,2,10 --key 200,40,3,5 --local 5,5,8,1,50 --local 15,12,6,1,20
 F missing_value "--dx" $R -o "$out/a.png" --dx
 F unknown "--bogus" $R -o "$out/a.png" --bogus 1
-F exposure_neg "--exposure" $R -o "$out/a.png" --exposure -1
+F exposure_neg "--exposure" $R -o "$out/a.png" --exposure -41
 F exposure_nan "--exposure" $R -o "$out/a.png" --exposure nan
 F exposure_junk "--exposure" $R -o "$out/a.png" --exposure 1x
 F time_0 "--time" $R -o "$out/a.png" --time 0

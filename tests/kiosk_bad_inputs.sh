@@ -65,7 +65,7 @@ expect_fail unknown-option 2 "--bogus" "$tmp/ok.ini" --bogus
 expect_fail no-scene 2 "no scene file" --display headless
 expect_fail missing-value 2 "--input" "$tmp/ok.ini" --input
 expect_fail bad-size 2 "--size" "$tmp/ok.ini" --size 0x3
-expect_fail bad-exposure 2 "--exposure" "$tmp/ok.ini" --exposure -1
+expect_fail bad-exposure 2 "--exposure" "$tmp/ok.ini" --exposure -41
 expect_fail out-not-headless 2 "--out" "$tmp/ok.ini" --display x11 --out "$tmp/f-%d.png"
 expect_fail exit-without-replay 2 "--exit-after-replay" "$tmp/ok.ini" --exit-after-replay
 

@@ -228,7 +228,7 @@ static uint8_t *direct(const char *scene_path, double key_phi, double key_elev,
                                     &err)))
         goto out;
     px = malloc((size_t)img.width * (size_t)img.height * 4);
-    if (px && hfs_frame_to_rgba8(&img, &(hfs_png_opts){.exposure = 1.0}, px, &err)) {
+    if (px && hfs_frame_to_rgba8(&img, &KH_PICTURE, px, &err)) {
         free(px);
         px = NULL;
     }

@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <sys/types.h>
 
+#include "hfs_io.h"
 #include "hfshade.h"
 
 /* Creates a private directory (under /tmp) and returns its path, or NULL. */
@@ -38,12 +39,18 @@ int kh_wait(pid_t pid, double timeout_s);
 int kh_wait_lines(pid_t pid, const char *path, const char *prefix, int n, double timeout_s);
 void kh_sleep(double s);
 
+/* The kiosk's picture at a fixed exposure: the kiosks these tests run are
+ * given --exposure 0 (x 1; the automatic exposure smooths over wall-clock
+ * time, so its frames are not reproducible byte for byte) and show the
+ * hue-keeping curve (hfs_io.h HFS_TONEMAP_HUE). */
+#define KH_PICTURE ((hfs_png_opts){.exposure = 1.0, .tonemap = HFS_TONEMAP_HUE})
+
 /* Reads an RGBA8 PNG; malloc'ed pixels or NULL. */
 uint8_t *kh_png_rgba(const char *path, int *w, int *h);
 
 /* Renders scene_path (with key light 0 replaced by phi/elev when
  * key_phi is not NAN) with a fresh GLES renderer, made into the kiosk's
- * picture (frame_image.h, exposure 1).  Returns the malloc'ed RGBA8
+ * picture (frame_image.h, KH_PICTURE).  Returns the malloc'ed RGBA8
  * picture or NULL with the reason printed.  *no_gl is set when no GL
  * context could be made. */
 uint8_t *kh_direct_frame(const char *scene_path, double key_phi, double key_elev, int *w,

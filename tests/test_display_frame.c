@@ -167,6 +167,45 @@ static void check_fit(void)
     CHECK(f.w == 10 && f.h == 1, "thin picture keeps a row: %dx%d", f.w, f.h);
 }
 
+/* The kiosk's exposure over time (hfs_exposure_smooth): a step of the
+ * scene's brightness by 6 stops, up and down, at 60, 24 and 7 frames a
+ * second with jittered frame times: every step moves towards the target,
+ * never past it, and is where continuous smoothing would be at that time,
+ * 1 - exp(-t / tau) of the step, whatever the frame times (63% after one
+ * time constant, 0.5 s); within 1/64 stop after 3.5 s; and a knob turned through
+ * alternating bright and dark frames (+-3 stops each frame) moves the
+ * exposure by less than half a stop a frame (no pumping). */
+static void check_exposure_smoothing(void)
+{
+    static const double rates[3] = {60.0, 24.0, 7.0};
+    for (int r = 0; r < 3; ++r)
+        for (int dir = -1; dir <= 1; dir += 2) {
+            const double target = 6.0 * dir, tau = HFS_KIOSK_EXPOSURE_TAU;
+            double ev = 0.0, t = 0.0;
+            unsigned seed = 12345u + (unsigned)r;
+            while (t < 3.5) {
+                seed = seed * 1103515245u + 12345u;
+                const double dt = (0.5 + (seed >> 16) % 1000 / 1000.0) / rates[r];
+                const double next = hfs_exposure_smooth(ev, target, dt, tau);
+                CHECK(dir * (next - ev) > 0.0 && dir * (target - next) >= 0.0,
+                      "%g fps: step %g -> %g towards %g", rates[r], ev, next, target);
+                ev = next;
+                t += dt;
+                CHECK(fabs(ev / target - (1.0 - exp(-t / tau))) < 1e-9,
+                      "%g fps: %.4f of the step at %.3f s", rates[r], ev / target, t);
+            }
+            CHECK(fabs(target - ev) < 1.0 / 64.0, "%g fps: %g stops off after 3.5 s", rates[r],
+                  target - ev);
+        }
+    double ev = 0.0;
+    for (int k = 0; k < 120; ++k) {
+        const double next = hfs_exposure_smooth(ev, k % 2 ? 3.0 : -3.0, 1.0 / 60.0, 0.5);
+        CHECK(fabs(next - ev) < 0.5, "pumping: frame %d moved %g stops", k, next - ev);
+        ev = next;
+    }
+    CHECK(hfs_exposure_smooth(1.0, 5.0, 0.0, 0.5) == 1.0, "dt 0 moved the exposure");
+}
+
 int main(void)
 {
     hfs_png_opts clamp = {.exposure = 0.0, .tonemap = HFS_TONEMAP_CLAMP};
@@ -176,7 +215,10 @@ int main(void)
     check_frame_vs_png(&clamp, "display_frame_clamp.png");
     check_frame_vs_png(&reinhard, "display_frame_reinhard.png");
     check_frame_vs_png(&bright, "display_frame_bright.png");
+    hfs_png_opts hue = {.exposure = 9.0, .tonemap = HFS_TONEMAP_HUE};
+    check_frame_vs_png(&hue, "display_frame_hue.png");
     check_frame_errors();
+    check_exposure_smoothing();
     check_overlay_digit(1);
     check_overlay_digit(2);
     check_overlay_clipping();

@@ -70,9 +70,10 @@ static void compare(app *a, const hfs_lit_texture *t, const hfs_image *img,
                 worst = fmax(worst, fabs(tv - v) / bound);
                 continue;
             }
-            const double want = hfs_srgb8_encode((float)v, how->exposure ? how->exposure : 1.0,
-                                                 (hfs_tonemap)how->tonemap);
-            const double d = fabs(floor(tv * 255.0 + 0.5) - want);
+            unsigned char want[3];
+            hfs_srgb8_encode_rgb(img->rgb + 3 * i, how->exposure ? how->exposure : 1.0,
+                                 (hfs_tonemap)how->tonemap, want);
+            const double d = fabs(floor(tv * 255.0 + 0.5) - want[c]);
             off_by_one += d == 1.0;
             worse += d > 1.0;
         }
@@ -217,12 +218,19 @@ int main(void)
     compare(&a, &t, &img, &(hfs_lit_texture_desc){0}, "radiance");
 
     double vmax = hfs_image_max(&img);
-    for (int tm = 0; tm < 2; ++tm) {
-        const hfs_lit_texture_desc srgb = {HFS_LIT_SRGB8, 1.0 / vmax, tm};
+    /* The GLSL curves against the C ones (hfs_io.h "Display mapping"); the
+     * hue-keeping one also exposed so the brightest texels pass its white
+     * point (32 x the largest: beyond 16) and the shoulder and the clip to
+     * white are both compared. */
+    static const char *const names[] = {"srgb8, clamp", "srgb8, reinhard", "srgb8, hue",
+                                        "srgb8, hue, 32x"};
+    for (int k = 0; k < 4; ++k) {
+        const int tm = k < 3 ? k : HFS_TONEMAP_HUE;
+        const hfs_lit_texture_desc srgb = {HFS_LIT_SRGB8, (k < 3 ? 1.0 : 32.0) / vmax, tm};
         hfs_lit_texture ts;
         CHECK(!hfs_renderer_render_texture(r, &s.f, &l, &q, &srgb, &ts, &err), "%s", err.msg);
         CHECK(ts.internal_format == GL_RGBA8, "srgb8: format 0x%x", ts.internal_format);
-        compare(&a, &ts, &img, &srgb, tm ? "srgb8, reinhard" : "srgb8, clamp");
+        compare(&a, &ts, &img, &srgb, names[k]);
     }
     const hfs_lit_texture_desc bad = {HFS_LIT_SRGB8, -1.0, 0};
     CHECK(hfs_renderer_render_texture(r, &s.f, &l, &q, &bad, &t, &err) == HFS_E_INVALID,

@@ -163,6 +163,20 @@ static void test_png(void)
         CHECK(pb.px[3 * k] == srgb8(x > 0 ? x / (1 + x) : 0));
     }
 
+    /* The hue-keeping curve (hfs_io.h HFS_TONEMAP_HUE): each pixel is the
+     * encoded bytes of its own channels scaled by one factor. */
+    o.exposure = 2.0;
+    o.tonemap = HFS_TONEMAP_HUE;
+    CHECK(hfs_png_write(tpath("h.png"), &img, &o, &err) == 0);
+    CHECK(read_png(tpath("h.png"), &pb) == 0);
+    for (int k = 0; k < 6; ++k) {
+        unsigned char want[3];
+        hfs_srgb8_encode_rgb(img.rgb + 3 * k, 2.0, HFS_TONEMAP_HUE, want);
+        CHECK(pb.px[3 * k] == want[0] && pb.px[3 * k + 1] == want[1] &&
+              pb.px[3 * k + 2] == want[2]);
+    }
+    CHECK(pb.px[3 * 5] < 255 && pb.px[3 * 5] > 250); /* 14: on the shoulder, not clipped */
+
     /* Bad options. */
     o.exposure = -1.0;
     CHECK(hfs_png_write(tpath("c.png"), &img, &o, &err) == HFS_E_INVALID);
@@ -170,6 +184,54 @@ static void test_png(void)
     o.tonemap = (hfs_tonemap)7;
     CHECK(hfs_png_write(tpath("c.png"), &img, &o, &err) == HFS_E_INVALID);
     CHECK(access(tpath("c.png"), F_OK) != 0);
+    hfs_image_free(&img);
+}
+
+/* The curve itself: ratios kept (hue and saturation), never above 1,
+ * monotone in brightness, middle grey where the header says, white only at
+ * the white point; and the automatic exposure's median. */
+static void test_tonemap_hue(void)
+{
+    static const double colours[][3] = {{0.25, 0.5, 1.0}, {1.0, 0.2, 0.05}, {0.3, 0.3, 0.3},
+                                        {0.0, 1.0, 0.001}};
+    for (size_t c = 0; c < sizeof colours / sizeof colours[0]; ++c) {
+        double prev = -1.0;
+        for (double k = 1.0 / 64; k < 4096.0; k *= 1.5) {
+            const double in[3] = {k * colours[c][0], k * colours[c][1], k * colours[c][2]};
+            double out[3];
+            hfs_tonemap_rgb(in, HFS_TONEMAP_HUE, out);
+            const double n = fmax(out[0], fmax(out[1], out[2]));
+            const double top = fmax(colours[c][0], fmax(colours[c][1], colours[c][2]));
+            /* Rising strictly up to the white point, 1 (to rounding) from it on. */
+            CHECK(n <= 1.0 + 1e-15 &&
+                  (k * top < 16.0 ? n > prev : fabs(n - 1.0) <= 1e-15));
+            prev = n;
+            for (int ch = 0; ch < 3; ++ch) /* the same ratio as the input's */
+                CHECK(fabs(out[ch] - n * colours[c][ch] / top) <= 1e-12);
+        }
+    }
+    const double grey[3] = {0.18, 0.18, 0.18}, neg[3] = {-1.0, 2.0, -3.0};
+    double out[3];
+    hfs_tonemap_rgb(grey, HFS_TONEMAP_HUE, out);
+    CHECK(fabs(out[0] - 0.18 * (1 + 0.18 / 256) / 1.18) < 1e-12);
+    CHECK(hfs_srgb8_encode(0.18f, 1.0, HFS_TONEMAP_HUE) == 109);
+    CHECK(hfs_srgb8_encode(8.0f, 1.0, HFS_TONEMAP_HUE) < 255);
+    CHECK(hfs_srgb8_encode(16.0f, 1.0, HFS_TONEMAP_HUE) == 255);
+    hfs_tonemap_rgb(neg, HFS_TONEMAP_HUE, out);
+    CHECK(out[0] == 0.0 && out[2] == 0.0 && out[1] > 0.0);
+
+    /* Median luminance to 0.18: 99 pixels at luminance 2, one glint at
+     * 1e6 and black ones (metering nothing) do not move it. */
+    hfs_image img;
+    hfs_error err;
+    CHECK(hfs_image_alloc(&img, 20, 10, &err) == 0);
+    for (int k = 0; k < 200; ++k)
+        for (int ch = 0; ch < 3; ++ch)
+            img.rgb[3 * k + ch] = k < 99 ? 2.0f : k == 99 ? 1e6f : 0.0f;
+    CHECK(fabs(hfs_exposure_auto(&img) - 0.09) < 1e-6);
+    for (int k = 0; k < 600; ++k)
+        img.rgb[k] = 0.0f;
+    CHECK(hfs_exposure_auto(&img) == 1.0); /* all black: no change */
     hfs_image_free(&img);
 }
 
@@ -304,6 +366,7 @@ int main(void)
         return 1;
     test_pfm();
     test_png();
+    test_tonemap_hue();
     test_pfm_read();
     test_atomic();
     rm_tmpdir();

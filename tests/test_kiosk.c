@@ -120,7 +120,7 @@ static void view(const char *kiosk, const char *hfgen)
                                "600 czoom turn -2   # 1.1^-2\n");
     char *const argv[] = {(char *)kiosk, (char *)kh_path("scene.ini"), "--input",
                           (char *)kh_path("c.ini"), "--replay", (char *)kh_path("r.txt"),
-                          "--display", "headless", "--size", "96x64", "--out",
+                          "--display", "headless", "--exposure", "0", "--size", "96x64", "--out",
                           (char *)kh_path("f-%02d.png"), "--stats", (char *)kh_path("stats.txt"),
                           "--exit-after-replay", NULL};
     pid_t pid = kh_spawn(argv, kh_path("err.txt"));
@@ -189,7 +189,7 @@ static void replay(const char *kiosk, const char *hfgen, int amortize)
     kh_write(kh_path("r.txt"), script);
     char *const argv[] = {(char *)kiosk, (char *)kh_path("scene.ini"), "--input",
                           (char *)kh_path("c.ini"), "--replay", (char *)kh_path("r.txt"),
-                          "--display", "headless", "--out", (char *)kh_path("f-%02d.png"),
+                          "--display", "headless", "--exposure", "0", "--out", (char *)kh_path("f-%02d.png"),
                           "--stats", (char *)kh_path("stats.txt"), "--exit-after-replay",
                           amortize ? "--amortize" : NULL, "1", NULL};
     pid_t pid = kh_spawn(argv, kh_path("err.txt"));
@@ -350,7 +350,7 @@ static void signals(const char *kiosk, const char *hfgen)
     }
     kh_write(kh_path("c.ini"), config);
     char *const argv[] = {(char *)kiosk, (char *)kh_path("scene.ini"), "--input",
-                          (char *)kh_path("c.ini"), "--display", "headless", "--out",
+                          (char *)kh_path("c.ini"), "--display", "headless", "--exposure", "0", "--out",
                           (char *)kh_path("f-%02d.png"), "--stats", (char *)kh_path("stats.txt"),
                           NULL};
     pid_t pid = kh_spawn(argv, kh_path("err.txt"));
@@ -426,7 +426,7 @@ static void idle(const char *kiosk, const char *hfgen)
     make_scene(hfgen, "30,20,3,100");
     kh_write(kh_path("c.ini"), config);
     char *const argv[] = {(char *)kiosk, (char *)kh_path("scene.ini"), "--input",
-                          (char *)kh_path("c.ini"), "--display", "headless", "--stats",
+                          (char *)kh_path("c.ini"), "--display", "headless", "--exposure", "0", "--stats",
                           (char *)kh_path("stats.txt"), NULL};
     pid_t pid = kh_spawn(argv, kh_path("err.txt"));
     if (pid < 0) {
@@ -465,7 +465,7 @@ static void idle(const char *kiosk, const char *hfgen)
 static void example(const char *kiosk, const char *scene, const char *cfg, const char *script_path)
 {
     char *const argv[] = {(char *)kiosk, (char *)scene, "--input", (char *)cfg, "--no-devices",
-                          "--replay", (char *)script_path, "--display", "headless", "--overlay",
+                          "--replay", (char *)script_path, "--display", "headless", "--exposure", "0", "--overlay",
                           "--out", (char *)kh_path("f-%02d.png"), "--stats",
                           (char *)kh_path("stats.txt"), "--exit-after-replay", NULL};
     pid_t pid = kh_spawn(argv, kh_path("err.txt"));
@@ -498,7 +498,7 @@ static void large(const char *kiosk, const char *hfgen)
                                   "env-sh = 1.0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0\n"
                                   "key = 30,20,2,5\n");
     kh_write(kh_path("empty.txt"), "");
-    char *const argv[] = {(char *)kiosk, (char *)kh_path("wide.ini"), "--display", "headless",
+    char *const argv[] = {(char *)kiosk, (char *)kh_path("wide.ini"), "--display", "headless", "--exposure", "0",
                           "--replay", (char *)kh_path("empty.txt"), "--exit-after-replay",
                           "--out", (char *)kh_path("w-%02d.png"), NULL};
     pid = kh_spawn(argv, kh_path("err.txt"));
@@ -527,7 +527,7 @@ static void large(const char *kiosk, const char *hfgen)
     CHECK(ok, "direct render: %s", err.msg);
     if (ok && shown && w == 1050 && h == 20) {
         hfs_image_shrink(&img, 2, &small);
-        CHECK(!hfs_frame_to_rgba8(&small, &(hfs_png_opts){.exposure = 1.0}, want, &err) &&
+        CHECK(!hfs_frame_to_rgba8(&small, &KH_PICTURE, want, &err) &&
                   !memcmp(want, shown, (size_t)1050 * 20 * 4),
               "the kiosk's shrunk picture differs from the library's render shrunk");
     }

@@ -25,6 +25,7 @@
 #include "cli_compare.h"
 #include "cli_query.h"
 #include "cli_usage.h"
+#include "cli_picture.h"
 #include "cli_view.h"
 #ifdef HFS_HAVE_GDAL
 #include "geotiff_write.h"
@@ -52,7 +53,8 @@ typedef struct cli {
     const char *points;   /* query: --points FILE */
     const char *positional[2];
     int n_positional;
-    double exposure;
+    int exposure_set; /* --exposure EV given: 2^EV, else metered (auto) */
+    double exposure_ev;
     int time_frames; /* --time N: timed frames after one warm-up, 0 = off */
     int colormap; /* 0 none, 1 terrain */
     int quiet;
@@ -79,7 +81,9 @@ static void usage(FILE *f)
             "       hfshade horizon DEM -o PREFIX [...]      angles, the sun's beam at an\n"
             "       hfshade sun DEM -o OUT.tif [...]         instant, clear-sky irradiation;\n"
             "       hfshade insolation DEM -o OUT.tif [...]  COMMAND --help, docs/GIS.md)\n"
-            "options: --exposure F (PNG only, default 1), --colormap none|terrain (PNG only),\n"
+            "options: --exposure auto|EV (PNG only; default auto: the lit terrain's median\n"
+            "         luminance at middle grey; EV: stops, 0 = radiance x 1, -1 = x 0.5),\n"
+            "         --colormap none|terrain (PNG only),\n"
             "         --time N (render N full frames after a warm-up; print per-pass medians),\n"
             "         --check (load, validate and render one frame off screen; write nothing),\n"
             "         --view ortho|perspective (the outputs are the 3-D view, not the grid),\n"
@@ -259,9 +263,11 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
                 return hfs_fail(err, HFS_E_INVALID, "--colormap: '%s' is not none or terrain", v);
         } else if (!strcmp(name, "exposure")) {
             char *end;
-            c->exposure = strtod(v, &end);
-            if (end == v || *end || !(c->exposure > 0.0) || !isfinite(c->exposure))
-                return hfs_fail(err, HFS_E_INVALID, "--exposure: '%s' is not a positive number", v);
+            c->exposure_set = strcmp(v, "auto") != 0;
+            c->exposure_ev = c->exposure_set ? strtod(v, &end) : 0.0;
+            if (c->exposure_set && (end == v || *end || !(fabs(c->exposure_ev) <= 40.0)))
+                return hfs_fail(err, HFS_E_INVALID, "--exposure: '%s' is not auto or stops "
+                                "(EV) in [-40, 40]", v);
         } else {
             if (!hfs_scene_is_key(name))
                 return hfs_fail(err, HFS_E_INVALID, "%s: unknown flag (see 'hfshade keys')", a);
@@ -295,34 +301,6 @@ static int load_inputs(const cli *c, scene_inputs *in, hfs_error *err)
                 in->hm.holes == 1 ? "" : "s");
     return HFS_OK;
 }
-
-/* Display option: multiplies the (linear) output by a colour of the
- * normalized height — lowland green, hills tan, summits grey-white — like a
- * hypsometric map.  Only the PNG sees it; the PFM keeps SPEC's Lo. */
-static void apply_terrain_colormap(hfs_image *img, const hfs_heightmap *hm)
-{
-    static const double stops[][4] = {/* t, r, g, b */
-                                      {0.00, 0.28, 0.50, 0.24}, {0.30, 0.55, 0.62, 0.32},
-                                      {0.60, 0.62, 0.52, 0.38}, {0.85, 0.78, 0.76, 0.72},
-                                      {1.00, 0.97, 0.97, 0.97}};
-    const size_t n = (size_t)hm->width * (size_t)hm->height;
-    float lo = hm->z[0], hi = hm->z[0];
-    for (size_t k = 1; k < n; ++k) {
-        lo = hm->z[k] < lo ? hm->z[k] : lo;
-        hi = hm->z[k] > hi ? hm->z[k] : hi;
-    }
-    const double span = hi > lo ? (double)hi - (double)lo : 1.0;
-    for (size_t k = 0; k < n; ++k) {
-        const double t = ((double)hm->z[k] - lo) / span;
-        int s = 0;
-        while (s < 3 && t > stops[s + 1][0])
-            ++s;
-        const double u = (t - stops[s][0]) / (stops[s + 1][0] - stops[s][0]);
-        for (int ch = 0; ch < 3; ++ch)
-            img->rgb[3 * k + ch] *= (float)(stops[s][1 + ch] + u * (stops[s + 1][1 + ch] - stops[s][1 + ch]));
-    }
-}
-
 
 /* --time N: one warm-up frame, then N full frames (caches invalidated so every
  * pass runs), per-pass medians on stdout.  The image of the last frame is
@@ -474,19 +452,23 @@ static int cmd_render(const cli *c, hfs_error *err)
         goto out;
 #endif
     if (c->out_png) {
-        hfs_png_opts po = {0};
-        po.exposure = c->exposure; /* 0 = default 1 */
         if (c->colormap)
-            apply_terrain_colormap(&img, &in.hm); /* after the PFM: display only */
+            cli_terrain_colormap(&img, &in.hm); /* after the PFM: display only */
+        /* Metered on the lit grid, also for a 3-D view (which render_once
+         * filled too): terrain only, never the sky or the objects, and the
+         * same exposure for the grid and any view of the scene. */
+        const hfs_png_opts po = {.exposure = c->exposure_set ? exp2(c->exposure_ev)
+                                                             : hfs_exposure_auto(&img),
+                                 .tonemap = HFS_TONEMAP_HUE};
         if ((rc = hfs_png_write_to(outs, c->out_png, shown, &po, err)))
             goto out;
     }
     if ((rc = hfs_outputs_commit(outs, err)))
         goto out;
-    if (!c->quiet && !c->time_frames)
+    if (!c->quiet && !c->time_frames) /* the size of the picture written: the view's */
         fprintf(stderr, "%s: %dx%d, backend %s, %.3f s\n",
-                c->out_png ? c->out_png : c->out_pfm ? c->out_pfm : c->out_tif, in.field.width,
-                in.field.height, hfs_renderer_backend_name(r), t1 - t0);
+                c->out_png ? c->out_png : c->out_pfm ? c->out_pfm : c->out_tif, shown->width,
+                shown->height, hfs_renderer_backend_name(r), t1 - t0);
 out:
     hfs_outputs_destroy(outs);
     hfs_image_free(&img);

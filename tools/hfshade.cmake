@@ -1,5 +1,6 @@
 # The hfshade command-line tool.
 add_executable(hfshade ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_view.c
+               ${CMAKE_CURRENT_SOURCE_DIR}/cli_picture.c
                ${CMAKE_CURRENT_SOURCE_DIR}/cli_query.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_envmap.c
                ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_gis.c)
 target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfs_gl

@@ -34,7 +34,7 @@ PANEL="--height $T/panel.pfm --local 110,90,40,6,60 --env-sh 0.6,0,0.3,0,0,0,0,0
 # minute or two on two cores); then the same for the demo's courtyard map
 # (no sun disk: no light is extracted; the map's own shading does it).
 "$B/tools/hfgen" sky --sun 336,15 --size 1024x512 -o "$T/sky.pfm"
-SKY="--height data/jacksboro.png --dx 83 --zscale 2 --albedo 0.35 --env-map $T/sky.pfm --exposure 0.3"
+SKY="--height data/jacksboro.png --dx 83 --zscale 2 --albedo 0.35 --env-map $T/sky.pfm --exposure -1.74"  # x 0.3
 # shellcheck disable=SC2086
 "$B/tools/hfshade" render $SKY --env-shade sh -o docs/img/sky-sh-only.png --quiet
 # shellcheck disable=SC2086
@@ -55,7 +55,7 @@ OBJ="--height data/jacksboro.png --dx 83 --zscale 2 --albedo 0.35 --key 336,10,2
 OBJ="$OBJ --env-sh 1.1,0,0.6,0,0,0,0,0,0,0,0,0,0,0,0,0 --objects data/demo-objects.txt"
 # shellcheck disable=SC2086
 "$B/tools/hfshade" render $OBJ --view perspective --camera 290,35,8000,40,16300,10400,1100 \
-    --view-size 640x384 --exposure 0.5 -o docs/img/dem-objects.png --quiet
+    --view-size 640x384 --exposure -1 -o docs/img/dem-objects.png --quiet
 echo "wrote docs/img/dem-objects.png"
 echo "wrote docs/img/dem-3d-bounces{0,1}.png docs/img/panel-{diffuse,glossy,glossy-3d}.png"
 echo "wrote docs/img/sky-{sh-only,env-lights,truth}.png docs/img/courtyard-{sh-only,map,truth}.png"

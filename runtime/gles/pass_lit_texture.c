@@ -90,7 +90,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     const double inv = fmin(fmax(1.0 / g->lit_scale, (double)FLT_MIN), (double)FLT_MAX / 65536.0);
     hfs_gles_set_f1(gl, prog, "u_inv_scale", (float)inv);
     hfs_gles_set_i1(gl, prog, "u_encoding", how->encoding == HFS_LIT_SRGB8);
-    hfs_gles_set_i1(gl, prog, "u_tonemap", how->tonemap == 1);
+    hfs_gles_set_i1(gl, prog, "u_tonemap", how->tonemap); /* 0..2, checked by the renderer */
     hfs_gles_set_f1(gl, prog, "u_exposure", (float)how->exposure);
     hfs_gles_draw(gl, g->lit.fbo, L->w, L->h);
     return hfs_gl_check(gl, "lit texture", err);

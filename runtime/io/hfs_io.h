@@ -288,21 +288,66 @@ HFS_API int hfs_pfm_write_grey(const char *path, int width, int height,
  */
 HFS_API int hfs_pfm_read_image(const char *path, hfs_image *out, hfs_error *err);
 
+/*
+ * Display mapping: how linear radiance becomes an 8-bit picture (the PNG
+ * writer, the kiosk's frames and its GPU-encoded texture: the same bytes).
+ * Per pixel: x = exposure * rgb -> tonemap(x) -> sRGB OETF per channel
+ * (12.92 y below 0.0031308, else 1.055 y^(1/2.4) - 0.055) -> round(255 y).
+ * The OETF always comes after the curve.  Only the 8-bit outputs see any
+ * of this: PFM and GeoTIFF dumps, and HFS_LIT_RADIANCE textures, stay the
+ * untouched linear radiance.
+ *
+ * The curves:
+ *   HFS_TONEMAP_CLAMP     per channel min(max(x, 0), 1).  Zero, so the
+ *                         default of a zeroed hfs_png_opts (API as before).
+ *                         A bright channel clips alone: a sky blue
+ *                         (0.25, 0.5, 1) at 3x shows as cyan (0.75, 1, 1),
+ *                         at 8x as white.
+ *   HFS_TONEMAP_REINHARD  per channel x / (1 + x) (0 below 0): no clipping,
+ *                         but each channel compressed apart, so bright
+ *                         colours still drift towards grey and shift hue.
+ *   HFS_TONEMAP_HUE       "max-RGB extended Reinhard": one factor for the
+ *                         pixel, s = r(n) / n with n = max(R, G, B) of x
+ *                         (negatives 0 first) and r the extended Reinhard
+ *                         curve (Reinhard et al. 2002, eq. 4) with white
+ *                         point W = 16: r(n) = n (1 + n / W^2) / (1 + n),
+ *                         1 from n = W on.  All three channels are scaled
+ *                         by s, so their ratios -- the hue and the
+ *                         saturation -- are exactly those of the radiance
+ *                         at every brightness and no channel reaches
+ *                         beyond 1: a sky ten stops over the terrain keeps
+ *                         its blue, a grey or white highlight rolls off to
+ *                         white.  Middle grey 0.18 shows at 0.153 (sRGB
+ *                         byte 110).  Chosen over a luminance-based
+ *                         Reinhard that desaturates towards white above 1:
+ *                         that keeps the hue only while some chroma is
+ *                         left, and at ten stops over it leaves a sky blue
+ *                         as (254, 254, 255), no hue to keep.  The cost: a
+ *                         very bright saturated colour stays saturated (no
+ *                         path to white for it).  The default of hfshade
+ *                         render's PNG (grid and 3-D view) and of the kiosk.
+ */
 typedef enum hfs_tonemap {
-    HFS_TONEMAP_CLAMP = 0, /* default: min(max(x, 0), 1)                   */
-    HFS_TONEMAP_REINHARD   /* x / (1 + x) for x >= 0, else 0               */
+    HFS_TONEMAP_CLAMP = 0,
+    HFS_TONEMAP_REINHARD,
+    HFS_TONEMAP_HUE
 } hfs_tonemap;
+
+/* The curve alone, on linear values (in: exposure already applied; out:
+ * linear display values in [0, 1], before the OETF).  The neutral C form of
+ * the mapping; lit_texture.frag.glsl holds the same in GLSL. */
+HFS_API void hfs_tonemap_rgb(const double in[3], hfs_tonemap tm, double out[3]);
 
 /* Zero means default; NULL opts is all defaults. */
 typedef struct hfs_png_opts {
     double exposure;       /* linear multiplier applied first; 0 = 1, > 0   */
-    hfs_tonemap tonemap;
+    hfs_tonemap tonemap;   /* 0 = HFS_TONEMAP_CLAMP                        */
 } hfs_png_opts;
 
 /*
- * 8-bit sRGB RGB PNG for display: per channel x -> tonemap(exposure * x) ->
- * sRGB OETF (12.92 x below 0.0031308, else 1.055 x^(1/2.4) - 0.055) ->
- * round(255 * y).  Carries an sRGB chunk.  Top row = row j = 0.
+ * 8-bit sRGB RGB PNG for display: each pixel through the display mapping
+ * above (hfs_srgb8_encode_rgb).  Carries an sRGB chunk.  Top row = row
+ * j = 0.
  */
 HFS_API int hfs_png_write(const char *path, const hfs_image *img,
                           const hfs_png_opts *opts, hfs_error *err);
@@ -317,13 +362,38 @@ HFS_API int hfs_bytes_write_to(hfs_outputs *o, const char *path, const void *dat
                                hfs_error *err);
 
 /*
- * The per-channel mapping of hfs_png_write, for code that displays frames
+ * The display mapping of one pixel, for code that displays frames
  * (board/frame_image.h) and must produce the same bytes as the PNG:
- * tonemap(exposure * v) -> sRGB OETF -> round(255 * y).  exposure must be
- * > 0 and finite (not checked here: 0 is NOT "default" in this function);
- * v must be finite.
+ * tonemap(exposure * rgb) -> sRGB OETF -> round(255 * y), into out[3].
+ * exposure must be > 0 and finite (not checked here: 0 is NOT "default"
+ * in these functions); rgb must be finite.
  */
+HFS_API void hfs_srgb8_encode_rgb(const float rgb[3], double exposure, hfs_tonemap tonemap,
+                                  unsigned char out[3]);
+/* The same for a grey pixel (R = G = B = v): its one byte.  For the
+ * per-channel curves (clamp, Reinhard) also each channel's byte of a
+ * colour pixel, which is how it was used before HFS_TONEMAP_HUE. */
 HFS_API unsigned char hfs_srgb8_encode(float v, double exposure, hfs_tonemap tonemap);
+
+/*
+ * Automatic exposure: the linear multiplier that puts the median Rec. 709
+ * luminance (0.2126 R + 0.7152 G + 0.0722 B) of img's lit pixels at middle
+ * grey, HFS_EXPOSURE_GREY / median.  A percentile, not the mean: a few
+ * saturated texels (a glint, a sun disk) cannot move it.  Lit: luminance
+ * > 0; pixels in full umbra under no sky meter nothing (else a field half
+ * in shadow would have a median of 0).  Metered on a regular subsample of
+ * at most HFS_EXPOSURE_SAMPLES pixels.  Give it terrain only: the tools
+ * meter the lit grid (also for a 3-D view, whose sky and objects are not
+ * terrain), so the grid and the view of one scene get the same exposure.
+ * Returns 1 for an empty or all-black image; always within
+ * [HFS_EXPOSURE_MIN, HFS_EXPOSURE_MAX].  Exposure in stops (EV) is
+ * log2 of the multiplier.
+ */
+#define HFS_EXPOSURE_GREY 0.18
+#define HFS_EXPOSURE_SAMPLES 65536
+#define HFS_EXPOSURE_MIN 0x1p-40
+#define HFS_EXPOSURE_MAX 0x1p40
+HFS_API double hfs_exposure_auto(const hfs_image *img);
 
 /*
  * 8-bit RGBA PNG of pixels that are already display-encoded (sRGB, e.g. a

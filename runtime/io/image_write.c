@@ -4,8 +4,8 @@
  *
  * PFM: little-endian (scale -1.0), first row written = row j = 0 (SPEC),
  * "Pf" grey (Rec. 709 luminance in double: exact when R = G = B) or "PF" RGB.
- * PNG 8-bit: x -> tonemap(exposure * x) -> sRGB OETF -> round(255 y), with an
- * sRGB chunk so viewers do not re-apply a gamma.  PNG 16-bit grey: the inverse
+ * PNG 8-bit: the display mapping of tonemap.c (exposure, curve, sRGB OETF,
+ * round), with an sRGB chunk so viewers do not re-apply a gamma.  PNG 16-bit grey: the inverse
  * of the PNG height loader.  PNG 8-bit RGBA: already display-encoded pixels
  * (the boards' screen captures), written as they are.
  *
@@ -162,29 +162,11 @@ static void pngw_on_warning(png_structp png, png_const_charp msg)
     (void)msg; /* the library never prints */
 }
 
-static double srgb_oetf(double x)
-{
-    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
-}
-
-/* The display mapping of every 8-bit output (this writer, and the boards'
- * displays through board/frame_image.c), kept in one place so that a frame
- * on screen and its PNG are the same bytes. */
-unsigned char hfs_srgb8_encode(float v, double exposure, hfs_tonemap tonemap)
-{
-    double x = exposure * v;
-    if (tonemap == HFS_TONEMAP_REINHARD)
-        x = x > 0.0 ? x / (1.0 + x) : 0.0;
-    else
-        x = x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x;
-    return (unsigned char)lrint(255.0 * srgb_oetf(x));
-}
-
 static void fill_srgb8(const png_job *job, int j, unsigned char *row)
 {
     const float *src = job->src + (size_t)j * (size_t)job->w * 3;
-    for (size_t k = 0; k < (size_t)job->w * 3; ++k)
-        row[k] = hfs_srgb8_encode(src[k], job->exposure, job->tonemap);
+    for (size_t i = 0; i < (size_t)job->w; ++i)
+        hfs_srgb8_encode_rgb(src + 3 * i, job->exposure, job->tonemap, row + 3 * i);
 }
 
 static void fill_rgba8(const png_job *job, int j, unsigned char *row)
@@ -271,7 +253,8 @@ int hfs_png_write_to(hfs_outputs *o, const char *path, const hfs_image *img,
     if (!(job.exposure > 0.0) || !isfinite(job.exposure))
         return hfs_fail(err, HFS_E_INVALID, "%s: exposure %g must be positive", path,
                         job.exposure);
-    if (job.tonemap != HFS_TONEMAP_CLAMP && job.tonemap != HFS_TONEMAP_REINHARD)
+    if (job.tonemap != HFS_TONEMAP_CLAMP && job.tonemap != HFS_TONEMAP_REINHARD &&
+        job.tonemap != HFS_TONEMAP_HUE)
         return hfs_fail(err, HFS_E_INVALID, "%s: unknown tone map %d", path, (int)job.tonemap);
     job.path = path;
     job.w = img->width;

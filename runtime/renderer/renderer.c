@@ -249,9 +249,9 @@ static int lit_desc(const hfs_lit_texture_desc *how, hfs_lit_texture_desc *d, hf
     if (!(d->exposure > 0.0) || !isfinite(d->exposure))
         return hfs_fail(err, HFS_E_INVALID, "render texture: exposure %g must be positive "
                         "and finite", d->exposure);
-    if (d->tonemap != 0 && d->tonemap != 1)
+    if (d->tonemap < 0 || d->tonemap > 2)
         return hfs_fail(err, HFS_E_INVALID, "render texture: tonemap %d is unknown (0 clamp, "
-                        "1 reinhard)", d->tonemap);
+                        "1 reinhard, 2 hue)", d->tonemap);
     return HFS_OK;
 }
 
