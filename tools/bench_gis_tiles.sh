@@ -15,8 +15,15 @@
 # printed: its peak RSS against theirs is what streaming buys.  Needs
 # python3-gdal and python3-numpy (installed with apt when missing: bench
 # tools, not the product's).
+# With TILE as `only:N` (a DEM too large for one piece: 16384x16384 needs
+# about 16 GB whole) only the streamed run is made, in windows of N, and
+# checked against a crop of the DEM computed whole: the crop of 2048 texels
+# plus the halo around the DEM's centre, its inner 2048^2 against the same
+# texels of the streamed raster (the seam measure, a window seam crossing
+# the crop).
 # usage: tools/bench_gis_tiles.sh [BUILD] [WxH] [RADIUS_M] [DIRS] [TILE]
 #   e.g. tools/bench_gis_tiles.sh build 4096x3072 300 4 1024
+#        tools/bench_gis_tiles.sh build 16384x16384 500 8 only:2048
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B=${1:-build}
@@ -32,25 +39,7 @@ $PY -c "from osgeo import gdal; import numpy" 2>/dev/null ||
 C=$(mktemp -d)
 trap 'rm -rf "$C"' EXIT
 "$B/tools/hfgen" fractal --size "$SIZE" -o "$C/f.pfm"
-$PY - "$C/f.pfm" "$C/dem.tif" <<'EOF'
-import sys
-import numpy as np
-from osgeo import gdal, osr
-gdal.UseExceptions()
-with open(sys.argv[1], "rb") as f:
-    assert f.readline().strip() == b"Pf"
-    w, h = (int(v) for v in f.readline().split())
-    scale = float(f.readline())
-    z = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4").reshape(h, w)
-ds = gdal.GetDriverByName("GTiff").Create(sys.argv[2], w, h, 1, gdal.GDT_Float32,
-                                          ["TILED=YES", "COMPRESS=DEFLATE"])
-ds.SetGeoTransform((700000.0, 10.0, 0.0, 4100000.0, 0.0, -10.0))
-srs = osr.SpatialReference()
-srs.ImportFromEPSG(32616)
-ds.SetProjection(srs.ExportToWkt())
-ds.GetRasterBand(1).WriteArray(z)
-ds = None
-EOF
+$PY tools/bench_dem.py "$C/f.pfm" "$C/dem.tif" 10
 run() { # NAME TILE ENV...: the svf, its wall time and peak RSS
     local name=$1 tile=$2
     shift 2
@@ -58,6 +47,40 @@ run() { # NAME TILE ENV...: the svf, its wall time and peak RSS
         --radius "$RADIUS" --directions "$DIRS" --tile "$tile" -o "$C/$name.tif" 2>&1 |
         sed "s|$C/||"
 }
+if [[ "$TILE" =~ ^only:([0-9]+)$ ]]; then
+    run streamed "${BASH_REMATCH[1]}" HFS_GL_STRICT_LIMITS=0
+    read -r W Hh < <(echo "$SIZE" | tr x ' ')
+    HALO=$(awk -v r="$RADIUS" 'BEGIN {h = r / 10.0; printf "%d", (h == int(h) ? h : int(h) + 1) + 2}')
+    X0=$((W / 2 - 1024 - HALO)) Y0=$((Hh / 2 - 1024 - HALO)) S=$((2048 + 2 * HALO))
+    gdal_translate -q -srcwin "$X0" "$Y0" "$S" "$S" "$C/dem.tif" "$C/crop.tif"
+    "$H" svf "$C/crop.tif" --radius "$RADIUS" --directions "$DIRS" --tile 0 --quiet \
+        -o "$C/crop_svf.tif"
+    $PY - "$C/streamed.tif" "$C/crop_svf.tif" "$X0" "$Y0" "$HALO" "${BASH_REMATCH[1]}" <<'EOF'
+import sys
+import numpy as np
+from osgeo import gdal
+gdal.UseExceptions()
+x0, y0, halo, tile = (int(v) for v in sys.argv[3:7])
+ds = gdal.Open(sys.argv[1])
+a = ds.GetRasterBand(1).ReadAsArray(x0 + halo, y0 + halo, 2048, 2048).astype(np.float64)
+ds = None
+ds = gdal.Open(sys.argv[2])
+b = ds.GetRasterBand(1).ReadAsArray(halo, halo, 2048, 2048).astype(np.float64)
+ds = None
+d = np.abs(a - b)
+near = np.zeros(d.shape, bool)  # the streamed windows' seams inside the crop
+for axis, o in ((1, x0 + halo), (0, y0 + halo)):
+    for s in range((o // tile + 1) * tile, o + 2048, tile):
+        k = s - o
+        if axis == 1:
+            near[:, max(k - 2, 0):k + 3] = True
+        else:
+            near[max(k - 2, 0):k + 3, :] = True
+print("streamed against the centre crop computed whole: mean %.3g, seam max %.3g, "
+      "elsewhere max %.3g" % (d.mean(), d[near].max() if near.any() else 0.0, d[~near].max()))
+EOF
+    exit 0
+fi
 run tiled 0 HFS_GL_STRICT_LIMITS=1
 run single 0 HFS_GL_STRICT_LIMITS=0
 # seams A B SPACING WHAT: the largest difference of A from B at the texels
