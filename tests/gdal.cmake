@@ -35,4 +35,15 @@ if(TARGET hfshade_gdal)
   # on hills, a day's irradiation against the hand sum, a night, bad
   # inputs (test_gis_sun.c).
   hfs_gis_cli_test(test_gis_sun hfs_solar)
+  # Issue 40 item 1: tiles plan | run | merge, jobs by line, a killed job
+  # rerun, merge refused while jobs are missing, the mosaic the streamed
+  # run's bits; GNU parallel and --resume-failed byte for byte
+  # (test_gis_tiles.c).
+  hfs_gis_cli_test(test_gis_tiles)
+  # Item 2: a single-node Slurm on localhost runs a plan as a job array
+  # (tools/slurm/hfshade_tiles.sbatch), the mosaic the local run's byte for
+  # byte; skips where Slurm cannot start (tests/slurm_tiles.sh).
+  add_test(NAME slurm_tiles COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/slurm_tiles.sh
+           $<TARGET_FILE:hfshade> ${CMAKE_SOURCE_DIR})
+  set_tests_properties(slurm_tiles PROPERTIES LABELS io TIMEOUT 420 SKIP_RETURN_CODE 77)
 endif()

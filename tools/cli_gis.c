@@ -59,6 +59,9 @@ static const gis_opt opts[] = {
     {"--tile", "N", SVF | HOR | OPEN,
      "with a radius, a DEM wider or taller than N texels is read, computed and written "
      "window by window, memory bounded (square cells only); 0: always whole (default 4096)"},
+    {"--job", "K", SVF | HOR | OPEN,
+     "with --tile: only window K (from 1, row by row) of a DEM that streams, written as a "
+     "GeoTIFF of its own extent (what `hfshade tiles run` does for one job)"},
     {"--backend", "gles|cpu|truth", ALL, "GLES renderer (default), CPU reference, ground truth"},
     {"--zscale", "F", ALL, "heights times F are metres (default 1)"},
     {"--nodata", "V", ALL, "V marks holes (instead of the band's nodata value)"},
@@ -253,6 +256,10 @@ static int set_value(gis_args *a, const char *prog, const char *name, const char
             return hfs_usage_error(prog, "--tile: '%s' is not 0 or a whole number of texels "
                                    "in [%d, %d]", v, GIS_TILE_MIN, GIS_TILE_MAX);
         a->tile = (int)n;
+    } else if (!strcmp(name, "--job")) {
+        if (hfs_cli_long(v, 1, 1L << 30, &n))
+            return hfs_usage_error(prog, "--job: '%s' is not a window number (1, 2, ...)", v);
+        a->job = (int)n;
     } else if (!strcmp(name, "--backend")) {
         static const char *const names[] = {"gles", "cpu", "truth"};
         static const hfs_backend b[] = {HFS_BACKEND_GLES, HFS_BACKEND_CPU, HFS_BACKEND_TRUTH};
@@ -397,19 +404,25 @@ int hfs_cli_is_gis(const char *name)
            !strcmp(name, "sun") || !strcmp(name, "insolation");
 }
 
-int hfs_cli_gis(int argc, char **argv)
+int hfs_cli_gis_args(int argc, char **argv, gis_args *a, double *azimuth)
 {
     static const char *const names[GIS_N_PRODUCTS] = {"svf", "horizon", "openness", "sun",
                                                       "insolation"};
     gis_product p = GIS_SVF;
     while (p + 1 < GIS_N_PRODUCTS && strcmp(argv[0], names[p]))
         p = (gis_product)(p + 1);
-    gis_args a = {.product = p, .backend = HFS_BACKEND_GLES, .zscale = 1.0,
-                  .linke = HFS_LINKE_DEFAULT, .step_min = 15.0, .tile = GIS_TILE_DEFAULT};
-    a.directions = a.product == GIS_SVF ? 16 : 8;
+    *a = (gis_args){.product = p, .backend = HFS_BACKEND_GLES, .zscale = 1.0,
+                    .linke = HFS_LINKE_DEFAULT, .step_min = 15.0, .tile = GIS_TILE_DEFAULT,
+                    .azimuth = azimuth};
+    a->directions = a->product == GIS_SVF ? 16 : 8;
+    return parse(argc, argv, a);
+}
+
+int hfs_cli_gis(int argc, char **argv)
+{
+    gis_args a;
     double azimuth[HFS_MAX_HORIZON_AZIMUTHS];
-    a.azimuth = azimuth;
-    int rc = parse(argc, argv, &a); /* --help, and a bad command line, with or without GDAL */
+    int rc = hfs_cli_gis_args(argc, argv, &a, azimuth); /* --help, a bad command line */
     if (rc)
         return rc < 0 ? 0 : rc;
 #ifdef HFS_HAVE_GDAL

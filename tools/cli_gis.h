@@ -17,4 +17,11 @@ int hfs_cli_is_gis(const char *name);
  * and the problem, nothing written) or 2 (a bad command line: one line). */
 int hfs_cli_gis(int argc, char **argv);
 
+/* The parsing alone, into a (azimuth: HFS_MAX_HORIZON_AZIMUTHS doubles,
+ * a->azimuth's storage): 0, -1 (--help printed) or a usage error's exit
+ * status (its line printed).  `hfshade tiles plan` parses the product's
+ * options with it. */
+struct gis_args;
+int hfs_cli_gis_args(int argc, char **argv, struct gis_args *a, double *azimuth);
+
 #endif /* HFS_CLI_GIS_H */

@@ -34,6 +34,7 @@
 #endif
 #include "cli_envmap.h"
 #include "cli_gis.h"
+#include "cli_tiles.h"
 
 #include <float.h>
 #include <math.h>
@@ -540,6 +541,8 @@ int main(int argc, char **argv)
         return hfs_cli_envmap(argc - 1, argv + 1);
     if (hfs_cli_is_gis(c.command))
         return hfs_cli_gis(argc - 1, argv + 1);
+    if (!strcmp(c.command, "tiles"))
+        return hfs_cli_tiles(argc - 1, argv + 1);
     if (!strcmp(c.command, "info")) {
         /* Proves --context end to end until the GLES backend uses it. */
         const char *name = NULL;

@@ -12,12 +12,15 @@ set -eu
 # libgpiod-dev and libevdev-dev are the input sources (board/DEVICES.md);
 # umockdev emulates an evdev node for their test.  linux-libc-dev: the
 # kernel headers (linux/videodev2.h) the V4L2 capture source is written
-# against (docs/CAPTURE.md; build-essential pulls it in already).
+# against (docs/CAPTURE.md; build-essential pulls it in already).  GNU
+# parallel runs the jobs of `hfshade tiles` (docs/GIS.md "Many machines";
+# tests/test_gis_tiles.c); slurm-wlm and munge a single-node Slurm for
+# tests/slurm_tiles.sh (started by the test, in a folder of its own).
 PKGS="build-essential cmake pkg-config libpng-dev libinih-dev libstb-dev
       libopenexr-dev libegl-dev libgles-dev libosmesa6-dev libegl-mesa0
       libgl1-mesa-dri glslang-tools clang libclang-rt-14-dev llvm gnuplot-nox
       libx11-dev libgbm-dev libdrm-dev xvfb xauth libgpiod-dev libevdev-dev umockdev
-      linux-libc-dev libgdal-dev dpkg-dev file"
+      linux-libc-dev libgdal-dev dpkg-dev file parallel slurm-wlm munge"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"

@@ -60,8 +60,7 @@ static int plan_outputs(gis_run *r, hfs_error *err)
     return rc;
 }
 
-/* svf, horizon, openness: the search radius, metres (0: the whole DEM). */
-static double radius_of(const gis_args *a, const gis_dem *d)
+double gis_command_radius(const gis_args *a, const gis_dem *d)
 {
     return a->product == GIS_OPENNESS && !a->radius_given
                ? GIS_OPENNESS_DEFAULT_CELLS * fmax(d->cx, d->cy)
@@ -83,7 +82,7 @@ static int describe(gis_run *r, hfs_error *err)
     gis_run_meta(r, "HFS_SOFTWARE=hfshade %s", hfs_version());
     if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
         return gis_sun_describe(r, err);
-    r->c.radius = radius_of(a, d);
+    r->c.radius = gis_command_radius(a, d);
     r->c.nodata = gis_nodata_for(d->has_nodata, d->nodata, 0.0, hi[a->product]);
     gis_run_meta(r, "HFS_RADIUS_M=%.9g", r->c.radius);
     if (a->product == GIS_HORIZON) {
@@ -150,7 +149,9 @@ static double now_seconds(void)
  * size was computed whole ("" when it fits a tile). */
 static void windows_words(const gis_run *r, char *buf, size_t n)
 {
-    if (r->mode == GIS_STREAMED)
+    if (r->mode == GIS_STREAMED && r->a->job)
+        snprintf(buf, n, ", window %d of --tile %d (halo %d)", r->a->job, r->a->tile, r->halo);
+    else if (r->mode == GIS_STREAMED)
         snprintf(buf, n, ", %d windows of at most %d texels a side (halo %d)", r->windows,
                  r->a->tile, r->halo);
     else if (r->mode != GIS_WHOLE)
@@ -191,7 +192,11 @@ static int read_dem(gis_run *r, hfs_error *err)
     if (rc)
         return rc;
     if (a->product == GIS_SVF || a->product == GIS_HORIZON || a->product == GIS_OPENNESS)
-        r->mode = gis_stream_choose(&r->dem, a->tile, radius_of(a, &r->dem), &r->halo);
+        r->mode = gis_stream_choose(&r->dem, a->tile, gis_command_radius(a, &r->dem), &r->halo);
+    if (a->job && r->mode != GIS_STREAMED)
+        return hfs_fail(err, HFS_E_INVALID, "%s: --job %d: the DEM is not computed window by "
+                        "window (%s)", a->dem, a->job, r->mode == GIS_WHOLE
+                        ? "it fits one --tile" : gis_stream_why(r->mode));
     return r->mode == GIS_STREAMED ? HFS_OK : gis_dem_load(&r->dem, a->dem, err);
 }
 

@@ -43,6 +43,9 @@ typedef struct gis_args {
     double radius;              /* metres, 0: the whole DEM                   */
     int radius_given;           /* openness: else 10 cells (gis_products.h)   */
     int tile;                   /* --tile: texels a side, 0 never streams     */
+    int job;                    /* --job K: only window K (from 1, row by row)
+                                 * of the streamed windows, as a raster of its
+                                 * own extent (hfshade tiles run); 0: all     */
     hfs_backend backend;
     double zscale;
     hfs_height_load_opts load;  /* --nodata                                   */
@@ -60,6 +63,12 @@ typedef struct gis_args {
     long n_steps;                /* insolation: ceil((to - from) / step)  */
     double linke;                /* Linke turbidity (clear_sky.h)         */
 } gis_args;
+
+struct gis_dem;
+
+/* svf, horizon, openness: the search radius of a on dem, metres (0: the
+ * whole DEM): --radius, or openness's default of 10 cells. */
+double gis_command_radius(const gis_args *a, const struct gis_dem *d);
 
 /* Runs the command.  0, or an error (one line in err: the input or output
  * named, and the problem); nothing is written on failure. */

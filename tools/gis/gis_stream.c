@@ -82,6 +82,8 @@ typedef struct stream {
     gis_raster_stream **out;
     double *phi;               /* horizon: the map azimuths                   */
     window win;                /* the window being computed                   */
+    int ox, oy;                /* --job: its inner part's origin in the DEM   */
+    double gt[6];              /* --job: the geotransform of that part        */
     float *inner;              /* n_bands x iw x ih: its output               */
 } stream;
 
@@ -97,7 +99,8 @@ static int write_inner(stream *s, int k, const float *v, hfs_error *err)
                    v + (size_t)b * n + (size_t)(w->iy - w->y0 + j) * (size_t)w->w +
                        (size_t)(w->ix - w->x0),
                    (size_t)w->iw * sizeof *v);
-    return gis_raster_stream_write(s->out[k], w->ix, w->iy, w->iw, w->ih, s->inner, err);
+    return gis_raster_stream_write(s->out[k], w->ix - s->ox, w->iy - s->oy, w->iw, w->ih,
+                                   s->inner, err);
 }
 
 static int write_horizon(void *user, int k, const float *deg, hfs_error *err)
@@ -178,8 +181,10 @@ static int open_files(stream *s, hfs_error *err)
     for (int k = 0; k < s->n_out && !rc; ++k) {
         const char *path = horizon ? r->names[k] : a->out, *tmp = NULL;
         gis_horizon_text t;
-        const gis_raster g = horizon ? gis_run_horizon_raster(r, k, NULL, &t)
-                                     : gis_run_product_raster(r, NULL, 0);
+        gis_raster g = horizon ? gis_run_horizon_raster(r, k, NULL, &t)
+                               : gis_run_product_raster(r, NULL, 0);
+        if (a->job) /* the window's inner part alone, georeferenced where it lies */
+            g.width = s->win.iw, g.height = s->win.ih, g.geotransform = s->gt;
         if (horizon)
             s->phi[k] = gis_phi_of(a->azimuth[k], a->convention);
         rc = gis_outputs_temporary(r->outs, path, &tmp, err);
@@ -202,7 +207,7 @@ static int row_done(stream *s, int end, hfs_error *err)
     return rc;
 }
 
-/* Every window, row by row. */
+/* Every window, row by row; with --job only that one. */
 static int windows(stream *s, hfs_error *err)
 {
     gis_run *r = s->r;
@@ -212,6 +217,10 @@ static int windows(stream *s, hfs_error *err)
                       (size_t)min_i(tile, r->dem.height) * sizeof *s->inner);
     if (!s->inner)
         return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", r->a->dem);
+    if (r->a->job) { /* s->win: job_window's */
+        r->windows = 1;
+        return one_window(s, err);
+    }
     int rc = HFS_OK;
     for (int ty = 0; ty < ny && !rc; ++ty) {
         for (int tx = 0; tx < nx && !rc; ++tx, ++r->windows) {
@@ -224,14 +233,35 @@ static int windows(stream *s, hfs_error *err)
     return rc;
 }
 
+/* --job K: window K's place (s->win), its origin and geotransform; an
+ * error when the DEM has fewer windows. */
+static int job_window(stream *s, hfs_error *err)
+{
+    gis_run *r = s->r;
+    const int tile = r->a->tile, nx = (r->dem.width + tile - 1) / tile;
+    const int ny = (r->dem.height + tile - 1) / tile, k = r->a->job - 1;
+    if (k >= nx * ny)
+        return hfs_fail(err, HFS_E_INVALID, "%s: --job %d: the DEM has %d windows of --tile %d",
+                        r->a->dem, r->a->job, nx * ny, tile);
+    s->win = window_of(&r->dem, tile, r->halo, k % nx, k / nx);
+    s->ox = s->win.ix, s->oy = s->win.iy;
+    const double *g = r->dem.gt;
+    memcpy(s->gt, g, sizeof s->gt);
+    s->gt[0] = g[0] + s->ox * g[1] + s->oy * g[2];
+    s->gt[3] = g[3] + s->ox * g[4] + s->oy * g[5];
+    return HFS_OK;
+}
+
 int gis_stream_write(gis_run *r, hfs_error *err)
 {
     stream s = {.r = r};
     r->windows = 0, r->dem.holes = 0;
-    int rc = open_files(&s, err);
+    int rc = r->a->job ? job_window(&s, err) : HFS_OK;
+    if (!rc)
+        rc = open_files(&s, err);
     if (!rc)
         rc = windows(&s, err);
-    const long n = (long)r->dem.width * r->dem.height;
+    const long n = r->a->job ? (long)s.win.iw * s.win.ih : (long)r->dem.width * r->dem.height;
     if (!rc && r->dem.holes == n)
         rc = hfs_fail(err, HFS_E_FORMAT, "%s: no valid heights (all %ld texels are nodata)",
                       r->a->dem, n);

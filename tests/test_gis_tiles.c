@@ -1,0 +1,211 @@
+/*
+ * test_gis_tiles.c — `hfshade tiles plan | run | merge` (issue 40 item 1,
+ * tools/gis/gis_tiles.h) on a 150x110 UTM DEM with holes (the terrain of
+ * test_gis_stream.c), svf and horizon on the CPU reference, tiles of 64
+ * texels (3 x 2 jobs):
+ *   plan     the manifest and one line a job (K IX IY IW IH HALO tiles/K);
+ *            a second plan into the same directory, a DEM that does not
+ *            stream (no radius) and a product that does not tile are
+ *            refused in one line;
+ *   run      each job by its whole line of jobs (as GNU parallel passes
+ *            it); a finished job is not redone; a job killed while
+ *            writing (its temporary left behind) runs again and finishes;
+ *            a job number out of range is refused;
+ *   merge    refused while jobs are missing (naming them); then the
+ *            mosaic holds the streamed command's values bit for bit
+ *            (`hfshade svf --tile 64`), its grid, CRS and nodata; horizon
+ *            merges one file an azimuth;
+ *   parallel the same plan run by GNU parallel on 2 cores, and once more
+ *            stopped after 2 jobs and resumed with --resume-failed: each
+ *            mosaic byte for byte the sequential run's.
+ */
+#define _XOPEN_SOURCE 700 /* realpath */
+
+#include "gdal_fixture.h"
+#include "gis_cli_util.h"
+
+#include <math.h>
+#include <sys/stat.h>
+
+#define W 150
+#define H 110
+#define ND (-9999.0)
+#define SVF_ARGS "--backend cpu --radius 600 --directions 8"
+
+/* CHECK with a message: EXPECT(cond) or EXPECT(cond, "fmt", ...). */
+#define EXPECT(cond, ...) expect_at(__FILE__, __LINE__, (cond), #cond, "" __VA_ARGS__)
+static void expect_at(const char *file, int line, int ok, const char *what, const char *fmt, ...)
+{
+    if (ok)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "%s:%d: CHECK failed: %s: ", file, line, what);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    ++failures;
+}
+
+static void terrain(float *z)
+{
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i < W; ++i) {
+            const double a = hypot(i - 40.0, j - 30.0), b = hypot(i - 110.0, j - 80.0);
+            const int hole = (i == 64 && j == 64) || (i == 5 && j == 5) ||
+                             (i >= 70 && i < 73 && j >= 62 && j < 65);
+            z[j * W + i] = hole ? (float)ND
+                                : (float)(300.0 + 180.0 * exp(-a * a / 200.0) +
+                                          140.0 * exp(-b * b / 300.0) + 2.0 * fabs(i - 75.0) +
+                                          10.0 * sin(0.3 * j));
+        }
+}
+
+/* 1 when err.txt (the last run's stderr) holds s. */
+static int said(const char *s)
+{
+    size_t n = 0;
+    char *b = (char *)read_all(tpath("err.txt"), &n);
+    const int yes = b && strstr(b, s) != NULL;
+    if (!yes)
+        printf("err.txt: %s\n", b ? b : "(none)");
+    free(b);
+    return yes;
+}
+
+/* Runs jobs first..last of plan dir one by one, each by its line. */
+static int run_jobs(const char *dir, int first, int last)
+{
+    char jobs[64];
+    snprintf(jobs, sizeof jobs, "%s/jobs", dir);
+    size_t n = 0;
+    char *b = (char *)read_all(tpath(jobs), &n), *save = NULL;
+    int rc = b ? 0 : -1, k = 0;
+    for (char *line = b ? strtok_r(b, "\n", &save) : NULL; line && !rc;
+         line = strtok_r(NULL, "\n", &save))
+        if (++k >= first && k <= last)
+            rc = run("tiles run %s/manifest '%s'", dir, line);
+    free(b);
+    return rc;
+}
+
+/* The bytes of two files equal. */
+static int same_bytes(const char *a, const char *b)
+{
+    size_t na = 0, nb = 0;
+    unsigned char *x = read_all(tpath(a), &na), *y = read_all(tpath(b), &nb);
+    const int same = x && y && na == nb && !memcmp(x, y, na);
+    free(x);
+    free(y);
+    return same;
+}
+
+static void test_plan(void)
+{
+    EXPECT(run("tiles plan dem.tif --product svf --tile 64 -o A " SVF_ARGS) == 0);
+    EXPECT(lines_of("A/jobs") == 6, "6 jobs: %d", lines_of("A/jobs"));
+    size_t n = 0;
+    char *jobs = (char *)read_all(tpath("A/jobs"), &n);
+    EXPECT(jobs && !strncmp(jobs, "1 0 0 64 64 22 tiles/1\n", 23), "job 1: %.30s",
+          jobs ? jobs : "");
+    EXPECT(jobs && strstr(jobs, "\n6 128 64 22 46 22 tiles/6\n"), "job 6");
+    free(jobs);
+    EXPECT(run("tiles plan dem.tif --product svf --tile 64 -o A " SVF_ARGS) == 1 &&
+          said("a plan is there already"));
+    EXPECT(run("tiles plan dem.tif --product svf --tile 64 -o X --backend cpu") == 1 &&
+          said("no tiles to plan: no --radius"));
+    EXPECT(run("tiles plan dem.tif --product sun --tile 64 -o X") == 2 &&
+          said("is not svf, horizon or openness"));
+    EXPECT(access(tpath("X"), F_OK) != 0, "a refused plan left its directory");
+}
+
+static void test_run_merge(void)
+{
+    EXPECT(run_jobs("A", 1, 3) == 0);
+    EXPECT(run("tiles merge A -o early.tif") == 1 && said("3 of 6 jobs have no tiles/N.tif: 4, "
+                                                           "5, 6"));
+    EXPECT(access(tpath("early.tif"), F_OK) != 0, "a refused merge wrote its output");
+    /* job 4 killed while writing: its temporary, no file */
+    FILE *f = fopen(tpath("A/tiles/4.tif.tmp-abcdef"), "w");
+    EXPECT(f && fputs("half a GeoTIFF", f) >= 0 && fclose(f) == 0);
+    EXPECT(run_jobs("A", 4, 6) == 0);
+    struct stat before, after;
+    EXPECT(stat(tpath("A/tiles/2.tif"), &before) == 0);
+    EXPECT(run("tiles run A/manifest 2") == 0 && said("job 2 done already"));
+    EXPECT(stat(tpath("A/tiles/2.tif"), &after) == 0 &&
+          before.st_mtim.tv_nsec == after.st_mtim.tv_nsec &&
+          before.st_mtim.tv_sec == after.st_mtim.tv_sec, "a finished job was redone");
+    EXPECT(run("tiles run A/manifest 7") == 1 && said("job '7' is not one of 1..6"));
+    EXPECT(run("tiles merge A -o a.tif") == 0);
+    EXPECT(run("svf dem.tif " SVF_ARGS " --tile 64 -o streamed.tif") == 0);
+    raster m, s;
+    EXPECT(read_raster("a.tif", &m) == 0 && read_raster("streamed.tif", &s) == 0);
+    EXPECT(m.w == W && m.h == H && m.has_nd && m.nd == ND && !memcmp(m.gt, s.gt, sizeof m.gt) &&
+          !strcmp(m.wkt, s.wkt), "the mosaic's grid");
+    long off = 0;
+    for (size_t p = 0; m.v && s.v && p < (size_t)W * H; ++p)
+        off += memcmp(&m.v[p], &s.v[p], sizeof(float)) != 0;
+    EXPECT(off == 0, "%ld texels of the mosaic differ from the streamed run", off);
+    EXPECT(!strcmp(meta(&m, "HFS_PRODUCT"), "svf"), "metadata: %s", meta(&m, "HFS_PRODUCT"));
+    free_raster(&m), free_raster(&s);
+}
+
+static void test_horizon(void)
+{
+    EXPECT(run("tiles plan dem.tif --product horizon --tile 64 -o B --backend cpu --radius 600 "
+              "--azimuths 0,135") == 0);
+    EXPECT(run_jobs("B", 1, 6) == 0);
+    EXPECT(run("tiles merge B -o hm") == 0);
+    EXPECT(run("horizon dem.tif --backend cpu --radius 600 --azimuths 0,135 --tile 64 -o hs") == 0);
+    for (int k = 0; k < 2; ++k) {
+        raster m, s;
+        const char *a = k ? "hm_135.tif" : "hm_000.tif", *b = k ? "hs_135.tif" : "hs_000.tif";
+        EXPECT(read_raster(a, &m) == 0 && read_raster(b, &s) == 0, "%s", a);
+        EXPECT(m.v && s.v && !memcmp(m.v, s.v, sizeof(float) * W * H), "%s differs from %s", a, b);
+        free_raster(&m), free_raster(&s);
+    }
+}
+
+/* GNU parallel runs the jobs: the mosaic is the sequential run's, bytes
+ * and all; stopped after 2 jobs and resumed, the same. */
+static void test_parallel(void)
+{
+    if (system("command -v parallel >/dev/null 2>&1")) {
+        EXPECT(0, "GNU parallel is not installed (tools/install-deps.sh installs it)");
+        return;
+    }
+    EXPECT(run("tiles plan dem.tif --product svf --tile 64 -o C " SVF_ARGS) == 0);
+    char cmd[8192];
+    snprintf(cmd, sizeof cmd, "cd %s && parallel -j2 --joblog C/log %s tiles run C/manifest {} "
+             ":::: C/jobs >out.txt 2>err.txt", tmpdir, hfshade);
+    EXPECT(system(cmd) == 0, "parallel");
+    EXPECT(run("tiles merge C -o c.tif") == 0 && same_bytes("a.tif", "c.tif"),
+          "GNU parallel's mosaic is not the sequential run's, byte for byte");
+    EXPECT(run("tiles plan dem.tif --product svf --tile 64 -o D " SVF_ARGS) == 0);
+    snprintf(cmd, sizeof cmd, "cd %s && head -2 D/jobs | parallel -j2 --joblog D/log %s tiles "
+             "run D/manifest {} >out.txt 2>err.txt && parallel -j2 --resume-failed --joblog "
+             "D/log %s tiles run D/manifest {} :::: D/jobs >>out.txt 2>>err.txt", tmpdir,
+             hfshade, hfshade);
+    EXPECT(system(cmd) == 0, "parallel --resume-failed");
+    EXPECT(lines_of("D/log") == 7, "the joblog: a header and 6 jobs (%d lines)", lines_of("D/log"));
+    EXPECT(run("tiles merge D -o d.tif") == 0 && same_bytes("a.tif", "d.tif"),
+          "the resumed mosaic is not the sequential run's, byte for byte");
+}
+
+int main(int argc, char **argv)
+{
+    int rc = gis_cli_begin(argc, argv, "gis_tiles");
+    if (rc)
+        return rc;
+    float z[W * H];
+    terrain(z);
+    const double gt[6] = {500000.0, 30.0, 0.0, 4100000.0, 0.0, -30.0};
+    EXPECT(gdal_fixture_write("GTiff", tpath("dem.tif"), W, H, z, gt, 32633, 1, ND,
+                             GDT_Float32) == 0);
+    test_plan();
+    test_run_merge();
+    test_horizon();
+    test_parallel();
+    (void)gles_failed; /* the CPU reference only: no GL context needed */
+    return gis_cli_end("gis_tiles");
+}
