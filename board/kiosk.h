@@ -170,8 +170,12 @@ void kiosk_frame_free(kiosk_frame *f);
 int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_state *st,
                      const char *preset, hfs_display *d, hfs_error *err);
 /* The 3-D view st's camera shows of field (perspective, 40 degrees high,
- * framing the field times st->cam_zoom), w x h pixels. */
-hfs_view kiosk_view_camera(const hfs_input_state *st, const hfs_field *field, int w, int h);
+ * framing the field times st->cam_zoom), w x h pixels; behind and over it
+ * what hfshade render's view shows by default (tools/cli_view.h): a
+ * terrain against its sky through the automatic haze, a panel (panel
+ * non-zero: preset = panel) in the studio without haze. */
+hfs_view kiosk_view_camera(const hfs_input_state *st, const hfs_field *field, int w, int h,
+                           int panel);
 
 /* ---- stats (kiosk_stats.c) -------------------------------------------------- */
 

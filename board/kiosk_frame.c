@@ -141,18 +141,17 @@ static int ensure_buffers(kiosk_frame *f, int w, int h, hfs_error *err)
  * frame or a few passes. */
 static void draw_overlay(kiosk_frame *f, const char *preset)
 {
-    static const uint8_t fg[4] = {255, 255, 255, 255};
-    static const uint8_t bg[4] = {0, 0, 0, 160};
     char text[96];
     snprintf(text, sizeof text, "%.1f ms %d/%d passes %s", f->render_ms, f->passes_ran,
              f->passes_total, preset && preset[0] ? preset : "kiosk");
     const hfs_image *pic = f->shrink > 1 ? &f->small : &f->img;
     const int w = pic->width, h = pic->height;
     const int scale = w >= 480 ? 2 : 1;
-    hfs_overlay_text(f->rgba, w, h, 2, 2, scale, text, fg, bg);
+    hfs_overlay_label(f->rgba, w, h, 2, 2, scale, text); /* readable on white and black */
 }
 
-hfs_view kiosk_view_camera(const hfs_input_state *st, const hfs_field *field, int w, int h)
+hfs_view kiosk_view_camera(const hfs_input_state *st, const hfs_field *field, int w, int h,
+                           int panel)
 {
     const double deg = 3.14159265358979323846 / 180.0;
     hfs_view v;
@@ -164,6 +163,8 @@ hfs_view kiosk_view_camera(const hfs_input_state *st, const hfs_field *field, in
     v.width = w, v.height = h;
     hfs_view_frame(&v, field);
     v.distance *= st->cam_zoom;
+    v.background = panel ? HFS_BACKGROUND_STUDIO : HFS_BACKGROUND_SKY;
+    v.haze = panel ? 0.0 : HFS_HAZE_AUTO;
     return v;
 }
 
@@ -203,7 +204,7 @@ static void step_exposure(kiosk_frame *f)
 
 /* The frame's image into f->img: the grid dump, or the 3-D view. */
 static int render(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_state *st,
-                  hfs_error *err)
+                  const char *preset, hfs_error *err)
 {
     const int view = st->view;
     const int w = view ? f->view_w : in->field.width, h = view ? f->view_h : in->field.height;
@@ -224,7 +225,8 @@ static int render(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_st
     }
     /* A camera move costs the view pass alone (the lighting is kept; the
      * lit grid metered is the renderer's kept read-back). */
-    const hfs_view v = kiosk_view_camera(st, &in->field, w, h);
+    const hfs_view v = kiosk_view_camera(st, &in->field, w, h,
+                                         preset && !strcmp(preset, "panel"));
     hfs_image *lit = NULL;
     if (f->auto_exposure && (rc = fit_lit(f, &in->field, err)))
         return rc;
@@ -299,7 +301,7 @@ int kiosk_frame_show(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input
     const int64_t t0 = hfs_input_now_ns();
     const int textured = texture_path(f, in, st);
     hfs_lit_texture t = {0};
-    int rc = textured ? render_texture(f, in, &t, err) : render(f, in, st, err);
+    int rc = textured ? render_texture(f, in, &t, err) : render(f, in, st, preset, err);
     if (rc)
         return rc;
     f->render_ms = (double)(hfs_input_now_ns() - t0) / 1e6;

@@ -170,3 +170,16 @@ void hfs_overlay_text(uint8_t *rgba, int w, int h, int x, int y, int scale, cons
                     fill(rgba, w, h, cx + b * scale, y + scale + r * scale, scale, scale, fg, 0);
     }
 }
+
+void hfs_overlay_label(uint8_t *rgba, int w, int h, int x, int y, int scale, const char *text)
+{
+    static const uint8_t white[4] = {255, 255, 255, 255}, black[4] = {0, 0, 0, 255};
+    static const uint8_t box[4] = {0, 0, 0, HFS_OVERLAY_BOX_ALPHA};
+    /* The box, the glyphs in black moved by one pixel each way (the
+     * outline: inside the box's one-font-pixel margin), the glyphs. */
+    hfs_overlay_text(rgba, w, h, x, y, scale, text, black, box);
+    for (int k = 0; k < 9; ++k)
+        if (k != 4)
+            hfs_overlay_text(rgba, w, h, x + k % 3 - 1, y + k / 3 - 1, scale, text, black, NULL);
+    hfs_overlay_text(rgba, w, h, x, y, scale, text, white, NULL);
+}

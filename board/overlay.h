@@ -36,6 +36,15 @@ void hfs_overlay_text_size(const char *text, int scale, int *w, int *h);
 void hfs_overlay_text(uint8_t *rgba, int w, int h, int x, int y, int scale, const char *text,
                       const uint8_t fg[4], const uint8_t *bg);
 
+/* The kiosk's label, readable over any picture (issue 41): the box in
+ * black at alpha HFS_OVERLAY_BOX_ALPHA (a white picture under it becomes
+ * sRGB byte 95: 6.4:1 against white text, WCAG AA), each glyph ringed by a
+ * one-pixel opaque black outline (21:1 right at its edges, so a glyph
+ * reads even where the box is blended over a bright patch), then the
+ * glyphs in white.  Same box and clipping as hfs_overlay_text. */
+#define HFS_OVERLAY_BOX_ALPHA 160
+void hfs_overlay_label(uint8_t *rgba, int w, int h, int x, int y, int scale, const char *text);
+
 #ifdef __cplusplus
 }
 #endif

@@ -4,8 +4,9 @@
 #   -DMODE=embed_product -DINPUT=<sh_product.glsl.inc> -DOUTPUT=<file.c>
 #       the generated GLSL SH product as the C string hfs_gles_sh_product_src;
 #   -DMODE=validate_pass -DVALIDATOR=<glslangValidator> -DLIB=<gles_lib>
-#       -DLIB2=<gles_ray> -DPRODUCT=<inc or empty> -DINPUT=<pass> -DSTAMP=<file>
-#       the pass exactly as the runtime composes it (lib + lib2 + [product] + pass,
+#       -DLIB2=<gles_ray> -DLIB3=<gles_view> -DPRODUCT=<inc or empty> -DINPUT=<pass>
+#       -DSTAMP=<file>
+#       the pass exactly as the runtime composes it (lib + lib2 + lib3 + [product] + pass,
 #       "#line" markers), once per "// hfs-variant:" line and once plain,
 #       compiled AND linked as GLSL ES 3.00 (runtime/gl/ checks each file alone);
 #       with -DVERT=<x.vert.glsl> (an HFS_PROGRAM_VS row) linked with that
@@ -28,6 +29,7 @@ const char hfs_gles_sh_product_src[] = {
     file(READ "${INPUT}" text)
     file(READ "${LIB}" lib)
     file(READ "${LIB2}" lib2)
+    file(READ "${LIB3}" lib3)
     set(prod "")
     if(PRODUCT)
       file(READ "${PRODUCT}" prod)
@@ -40,7 +42,7 @@ const char hfs_gles_sh_product_src[] = {
     foreach(variant IN LISTS variants)
       list(GET prefixes ${index} prefix)
       set(tmp "${stamp_dir}/${name}.composed.${index}.frag")
-      file(WRITE "${tmp}" "${prefix}#line 1 1\n${lib}\n#line 1 3\n${lib2}\n#line 1 2\n${prod}\n#line 1 0\n${text}")
+      file(WRITE "${tmp}" "${prefix}#line 1 1\n${lib}\n#line 1 3\n${lib2}\n#line 1 4\n${lib3}\n#line 1 2\n${prod}\n#line 1 0\n${text}")
       set(stages "${tmp}")
       if(VERT)
         file(READ "${VERT}" vtext)
@@ -54,7 +56,7 @@ const char hfs_gles_sh_product_src[] = {
       if(NOT result EQUAL 0)
         message(FATAL_ERROR "${INPUT}: composed with gles_lib (and the SH product) it is not "
                             "valid GLSL ES 3.00 (variant: ${variant}; source 1 = gles_lib, "
-                            "3 = gles_ray, 2 = product, 0 = the pass)\n${out}")
+                            "3 = gles_ray, 4 = gles_view, 2 = product, 0 = the pass)\n${out}")
       endif()
       math(EXPR index "${index} + 1")
     endforeach()

@@ -225,10 +225,15 @@ typedef struct hfs_object {
 /* ---- the 3-D view (issue 16) -------------------------------------------------- */
 
 /* A picture of the lit field seen from a camera, instead of its grid dump
- * (docs/DESIGN.md "The 3-D view's truth", "GLES path"): the field drawn
- * with its exit radiance (diffuse: the same from every direction), the
- * environment's SH sky where a pixel sees no terrain (black without an
- * environment).  World coordinates are SPEC's, x = i dx, y = j dx,
+ * (docs/DESIGN.md "The 3-D view's truth", "GLES path", "Sky and haze in
+ * the view"): the field drawn with its exit radiance (diffuse: the same
+ * from every direction), its background where a pixel sees no terrain
+ * (hfs_background), and optionally an aerial perspective (haze) over the
+ * terrain and the objects.  The view image is linear radiance like the
+ * grid's: its background pixels hold the radiance of whatever background
+ * is drawn (the environment map's own values, the studio grey, the
+ * colour), in the same units as the terrain, so one exposure serves both.
+ * World coordinates are SPEC's, x = i dx, y = j dx,
  * z = zscale H times the view's exaggeration.  The camera orbits
  * `target`: it stands `distance` away in the direction (azimuth,
  * elevation) seen from the target (SPEC's azimuth, from +x toward +y) and
@@ -241,6 +246,26 @@ typedef enum hfs_view_mode {
                                 the target), nothing behind the eye's plane  */
 } hfs_view_mode;
 
+/* What a pixel that sees no terrain shows. */
+typedef enum hfs_background {
+    HFS_BACKGROUND_SKY = 0,  /* the environment as it lights the field: an
+                                env_map itself (bilinear between its pixel
+                                centres, turned by env_rotate), else the SH
+                                sky; black without an environment          */
+    HFS_BACKGROUND_STUDIO,   /* a neutral grey gradient, 0.12 x level
+                                straight down, 0.26 at the horizon, 0.40 at
+                                the zenith, level being the unshadowed
+                                radiance of a white level surface at the
+                                field's centre under the scene's lights (1
+                                without any): darker than the lit subject */
+    HFS_BACKGROUND_COLOR     /* background_rgb                             */
+} hfs_background;
+
+/* hfs_view.haze: ln 2 across the field's diagonal (half the light of its
+ * far corner survives at the lowest height) with an environment to
+ * scatter, off without one. */
+#define HFS_HAZE_AUTO (-1.0)
+
 typedef struct hfs_view {
     hfs_view_mode mode;
     double azimuth, elevation; /* radians; elevation in [-pi/2, pi/2]        */
@@ -251,12 +276,24 @@ typedef struct hfs_view {
     int width, height;         /* the view image, pixels, 1..8192            */
     const hfs_object *objects; /* drawn lit in the view (NULL: none)        */
     int n_objects;             /* 0..HFS_MAX_OBJECTS                         */
+    hfs_background background; /* HFS_BACKGROUND_SKY (default)                */
+    double background_rgb[3];  /* HFS_BACKGROUND_COLOR: linear radiance, the
+                                  field's units, each finite in [0, 1e30]   */
+    /* Aerial perspective: 0 off (default: the view bit for bit as without
+     * it); > 0 (up to 50) the optical depth along the field's diagonal at
+     * its lowest height; HFS_HAZE_AUTO.  A single-scattering haze in an
+     * exponential atmosphere (scale height a quarter of the diagonal, in
+     * the view's world), L = L_surface T + L_in (1 - T) with L_in the
+     * environment's cosine-weighted mean over the upper hemisphere; the
+     * terrain and the objects only, never the background (which is the
+     * sky through the whole atmosphere already). */
+    double haze;
 } hfs_view;
 
 /* A view of field f: straight down (azimuth 90, elevation 90 degrees),
  * ortho, fov 30 degrees, exaggeration 1, 512 x 512 pixels, the target at
  * the field's centre at mid height and the distance that frames the field
- * (hfs_view_frame). */
+ * (hfs_view_frame); the sky behind, no haze. */
 HFS_API void hfs_view_defaults(hfs_view *v, const hfs_field *f);
 /* Sets v->distance so that the whole field (its box, with the view's
  * exaggeration) is in view around v->target. */

@@ -13,7 +13,8 @@
  * resampled as well: exact at the texels, bilinear between them.
  * Output: RGB times the view's power-of-two scale (u_zmap.w converts the
  * lit textures' scale into it), which keeps sky and terrain in fp16's
- * range; the read-back divides it out.
+ * range; the read-back divides it out.  Seen through the view's haze
+ * (gles_view.frag hfs_haze, view_look.h) when it has one.
  */
 precision highp float;
 precision highp int;
@@ -31,9 +32,16 @@ layout(std140) uniform HfsView {
     vec4 u_right;
     vec4 u_up;
     vec4 u_env[12];
+    vec4 u_bg;                          /* (mode, map scale, env_rotate, 0): view_sky.c */
+    vec4 u_bg_rgb;                      /* studio level or colour, times the scale */
+    vec4 u_haze;                        /* (sigma, z0, scale height, 0); 0: no haze */
+    vec4 u_haze_in;                     /* in-scattered radiance, times the scale */
 };
 
 in highp vec2 v_grid;
+in highp vec3 v_rel;
+
+vec3 hfs_haze(vec3 rgb, vec4 haze, vec3 lin, vec3 rel, vec3 eye, vec3 fwd, bool ortho);
 
 layout(location = 0) out vec4 o_color;
 
@@ -51,5 +59,7 @@ void main()
     vec3 a = lit_at(c) * (1.0 - f.x) + lit_at(c + ivec2(1, 0)) * f.x;
     vec3 b = lit_at(c + ivec2(0, 1)) * (1.0 - f.x) + lit_at(c + ivec2(1, 1)) * f.x;
     vec3 rgb = (a * (1.0 - f.y) + b * f.y) * u_zmap.w;
+    if (u_haze.x > 0.0) /* off: the view without haze, bit for bit */
+        rgb = hfs_haze(rgb, u_haze, u_haze_in.rgb, v_rel, u_eye.xyz, u_fwd.xyz, u_eye.w > 0.5);
     o_color = vec4(rgb, 1.0);
 }

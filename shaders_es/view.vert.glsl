@@ -32,9 +32,14 @@ layout(std140) uniform HfsView {
     vec4 u_right;                       /* right * tan(fov/2) * aspect */
     vec4 u_up;                          /* up * tan(fov/2) */
     vec4 u_env[12];                     /* the sky's SH times the view scale, 4 vec4 per channel */
+    vec4 u_bg;                          /* (mode, map scale, env_rotate, 0): view_sky.c */
+    vec4 u_bg_rgb;                      /* studio level or colour, times the scale */
+    vec4 u_haze;                        /* (sigma, z0, scale height, 0); 0: no haze */
+    vec4 u_haze_in;                     /* in-scattered radiance, times the scale */
 };
 
 out highp vec2 v_grid;                  /* grid position (i, j) */
+out highp vec3 v_rel;                   /* world position relative to the eye (the haze) */
 
 void main()
 {
@@ -51,5 +56,6 @@ void main()
     float z = bottom ? u_fwd.w : u_zmap.y + u_zmap.x * (h.x + h.y);
     vec3 w = vec3(float(p.x) * u_zmap.z, float(p.y) * u_zmap.z, z);
     v_grid = vec2(p);
-    gl_Position = u_mvp * vec4(w - u_eye.xyz, 1.0);
+    v_rel = w - u_eye.xyz;
+    gl_Position = u_mvp * vec4(v_rel, 1.0);
 }

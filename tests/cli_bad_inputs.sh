@@ -109,6 +109,16 @@ expect_fail view-size "--view-size: '0x10'" $V --view ortho --view-size 0x10
 expect_fail view-size-form "--view-size: '64'" $V --view ortho --view-size 64
 expect_fail exaggeration "--exaggeration: '0'" $V --view ortho --exaggeration 0
 expect_fail camera-no-view "--camera: needs --view" $V --camera 0,45,5,30
+# The view's background and haze (issue 41).
+expect_fail background "--background: 'sea'" $V --view ortho --background sea
+expect_fail background-hex "--background: '#12345g'" $V --view ortho --background '#12345g'
+expect_fail background-rgb "--background: '1,-2,3'" $V --view ortho --background 1,-2,3
+expect_fail background-short "--background: '1,2'" $V --view ortho --background 1,2
+expect_fail haze "--haze: '51'" $V --view ortho --haze 51
+expect_fail haze-word "--haze: 'thick'" $V --view ortho --haze thick
+expect_fail haze-nan "--haze: 'nan'" $V --view ortho --haze nan
+expect_fail background-no-view "--background: needs --view" $V --background studio
+expect_fail haze-no-view "--haze: needs --view" $V --haze auto
 # Point queries (issue 19): the points file and the points themselves.
 Q="query --backend cpu --height $tmp/flat.pfm --key 30,20,1,10"
 printf '1 2 3\n4 5\n' >"$tmp/pts2.txt"

@@ -316,6 +316,17 @@ set_tests_properties(test_gles_view_compare_fp16_es30 PROPERTIES SKIP_RETURN_COD
                      TIMEOUT 300 ENVIRONMENT MESA_GLES_VERSION_OVERRIDE=3.0)
 set(hfs_gles_tests ${hfs_gles_tests} test_gles_view_compare_fp16_es30)
 
+# The view's background and haze (issue 41): the sky is the map, the
+# haze leaves it alone and lowers the terrain's contrast with distance,
+# the C and GLSL twins agree (test_view_look.c states the bounds).
+add_executable(test_view_look ${CMAKE_CURRENT_LIST_DIR}/test_view_look.c)
+target_link_libraries(test_view_look PRIVATE hfs_test_gles_scenes)
+add_test(NAME test_view_look_cpu COMMAND test_view_look cpu)
+set_tests_properties(test_view_look_cpu PROPERTIES LABELS unit TIMEOUT 120)
+add_test(NAME test_view_look_gles COMMAND test_view_look gles)
+set_tests_properties(test_view_look_gles PROPERTIES SKIP_RETURN_CODE 77 LABELS gl TIMEOUT 120)
+set(hfs_gles_tests ${hfs_gles_tests} test_view_look_gles)
+
 # Glossy surfaces (issue 16): specular 0 = the diffuse output bit for bit,
 # the closed form on a flat plane (cpu, truth), energy, GLES = CPU at
 # subsample 1, a new view reshades only (test_gloss.c).

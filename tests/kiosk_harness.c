@@ -219,6 +219,7 @@ static uint8_t *direct(const char *scene_path, double key_phi, double key_elev,
         v.width = view->width, v.height = view->height;
         hfs_view_frame(&v, &in.field);
         v.distance *= zoom;
+        v.background = view->background, v.haze = view->haze; /* the kiosk's look */
     }
     if (hfs_image_alloc(&img, view ? v.width : in.field.width,
                         view ? v.height : in.field.height, &err) ||
@@ -253,8 +254,11 @@ uint8_t *kh_direct_view(const char *scene_path, double az, double el, double zoo
                         int vh, int *no_gl)
 {
     const double deg = 3.14159265358979323846 / 180.0;
+    /* A terrain scene: the kiosk's view shows it against its sky through
+     * the automatic haze (kiosk_view_camera). */
     const hfs_view v = {.azimuth = az * deg, .elevation = el * deg, .fov = 40.0 * deg,
-                        .width = vw, .height = vh};
+                        .width = vw, .height = vh, .background = HFS_BACKGROUND_SKY,
+                        .haze = HFS_HAZE_AUTO};
     int w, h;
     return direct(scene_path, NAN, NAN, &v, zoom, &w, &h, no_gl);
 }

@@ -58,7 +58,7 @@ uint8_t *kh_direct_frame(const char *scene_path, double key_phi, double key_elev
 /* As kh_direct_frame, the scene's 3-D view as the kiosk's camera makes it
  * (board/KIOSK.md "3-D view": perspective, 40 degrees high, from azimuth
  * and elevation az, el in degrees, at zoom times the distance that frames
- * the field), vw x vh pixels. */
+ * the field, against the sky through the automatic haze), vw x vh pixels. */
 uint8_t *kh_direct_view(const char *scene_path, double az, double el, double zoom, int vw,
                         int vh, int *no_gl);
 

@@ -174,7 +174,8 @@ static void check_perspective(hfs_renderer *r, const hfs_field *f, const hfs_lig
     int rc = hfs_renderer_render_view(r, f, l, q, &v, &lit, &view, &err);
     CHECK(!rc, "%s: %s", what, err.msg);
     const hfs_camera cam = {v.azimuth, v.elevation, v.distance, v.fov,
-                            {v.target[0], v.target[1], v.target[2]}, v.exaggeration, 0};
+                            {v.target[0], v.target[1], v.target[2]}, v.exaggeration, 0,
+                            {.background = HFS_BACKGROUND_SKY}};
     float *truth = malloc(sizeof(float) * VW * VH * 3), *nosky = malloc(sizeof(float) * VW * VH * 3);
     hfs_lighting dark = *l;
     dark.has_env = 0;

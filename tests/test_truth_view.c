@@ -28,7 +28,8 @@ static double dot3(const double a[3], const double b[3])
 
 static void test_frame(void)
 {
-    hfs_camera c = {PI / 2, PI / 2, 10.0, 0.8, {5, 5, 0}, 1.0, 0};
+    hfs_camera c = {PI / 2, PI / 2, 10.0, 0.8, {5, 5, 0}, 1.0, 0,
+                    {.background = HFS_BACKGROUND_SKY}};
     hfs_camera_frame fr;
     hfs_camera_frame_make(&c, &fr);
     REQUIRE(fabs(fr.right[0] - 1.0) < 1e-12 && fabs(fr.up[1] + 1.0) < 1e-12 &&
@@ -68,7 +69,8 @@ static void test_nadir(void)
     const hfs_field f = {w, h, z, 0.5, 1.0};
     hfs_lighting l;
     hfs_lighting_defaults(&l);
-    const hfs_camera c = {PI / 2, PI / 2, 30.0, 0.6, {9.75, 7.25, 0.0}, 1.0, 0};
+    const hfs_camera c = {PI / 2, PI / 2, 30.0, 0.6, {9.75, 7.25, 0.0}, 1.0, 0,
+                    {.background = HFS_BACKGROUND_SKY}};
     hfs_error err = {""};
     REQUIRE(hfs_truth_view(&f, lit, &l, &c, NULL, vw, vh, view, 1, &err) == HFS_OK, "%s", err.msg);
     hfs_camera_frame fr;
@@ -108,7 +110,8 @@ static void test_background(void)
         l.env_sh[c][0] = sqrt(4.0 * PI);
     /* Off the field, above it, looking up and away (the lowest ray rises
      * 0.05 rad): only sky. */
-    const hfs_camera c = {0.0, -0.3, 100.0, 0.5, {3.5, 3.5, 50.0}, 1.0, 0};
+    const hfs_camera c = {0.0, -0.3, 100.0, 0.5, {3.5, 3.5, 50.0}, 1.0, 0,
+                    {.background = HFS_BACKGROUND_SKY}};
     hfs_error err = {""};
     REQUIRE(hfs_truth_view(&f, lit, &l, &c, NULL, vw, vh, view, 1, &err) == HFS_OK, "%s", err.msg);
     double worst = 0.0;
@@ -141,7 +144,8 @@ static void test_sky_rotation(void)
     l.env_rotate = angle;
     for (int c = 0; c < 3; ++c)
         hfs_sh_rotate_z(l.env_sh[c], angle, pre.env_sh[c]);
-    const hfs_camera cam = {0.0, -0.3, 100.0, 0.5, {3.5, 3.5, 50.0}, 1.0, 0};
+    const hfs_camera cam = {0.0, -0.3, 100.0, 0.5, {3.5, 3.5, 50.0}, 1.0, 0,
+                    {.background = HFS_BACKGROUND_SKY}};
     hfs_error err = {""};
     REQUIRE(hfs_truth_view(&f, lit, &l, &cam, NULL, vw, vh, a, 1, &err) == HFS_OK, "%s", err.msg);
     REQUIRE(hfs_truth_view(&f, lit, &pre, &cam, NULL, vw, vh, b, 1, &err) == HFS_OK, "%s",
@@ -180,7 +184,8 @@ static void test_exaggeration(void)
     float *a = malloc(sizeof(float) * vw * vh * 3), *b = malloc(sizeof(float) * vw * vh * 3);
     hfs_lighting l;
     hfs_lighting_defaults(&l);
-    hfs_camera c = {0.7, 0.5, 40.0, 0.7, {12, 10, 3}, 2.0, 0};
+    hfs_camera c = {0.7, 0.5, 40.0, 0.7, {12, 10, 3}, 2.0, 0,
+                    {.background = HFS_BACKGROUND_SKY}};
     const hfs_field f1 = {w, h, z, 1.0, 1.0}, f2 = {w, h, z, 1.0, 2.0};
     hfs_error err = {""};
     REQUIRE(hfs_truth_view(&f1, lit, &l, &c, NULL, vw, vh, a, 1, &err) == HFS_OK, "%s", err.msg);

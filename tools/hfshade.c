@@ -60,7 +60,7 @@ typedef struct cli {
     int colormap; /* 0 none, 1 terrain */
     int quiet;
     int check;    /* --check: everything a render does but write the outputs */
-    cli_view v;   /* --view, --camera, --exaggeration, --view-size */
+    cli_view v;   /* --view, --camera, --exaggeration, --view-size, --background, --haze */
     hfs_scene scene;
 } cli;
 
@@ -90,6 +90,9 @@ static void usage(FILE *f)
             "         --view ortho|perspective (the outputs are the 3-D view, not the grid),\n"
             "         --camera AZ,EL,DIST,FOV[,TX,TY,TZ] (degrees; DIST empty: frame the field),\n"
             "         --exaggeration E, --view-size WxH (default 512x512),\n"
+            "         --background sky|studio|#rrggbb|R,G,B (default sky; studio with\n"
+            "         preset = panel; R,G,B linear radiance), --haze off|auto|DEPTH (optical\n"
+            "         depth across the field's diagonal; default auto, off with preset = panel),\n"
             "         --quiet, --help\n"
             "scene keys (also accepted in SCENE.ini as KEY = VALUE): run 'hfshade keys'\n");
 }
@@ -183,7 +186,7 @@ static int takes_value(const char *name)
 {
     static const char *const own[] = {"o",    "pfm",      "geotiff",  "points",       "time",
                                       "colormap", "exposure", "view", "camera", "exaggeration",
-                                      "view-size"};
+                                      "view-size", "background", "haze"};
     for (size_t k = 0; k < sizeof own / sizeof own[0]; ++k)
         if (!strcmp(name, own[k]))
             return 1;
@@ -411,7 +414,7 @@ static int cmd_render(const cli *c, hfs_error *err)
     if (c->v.view) {
         cli_view v = c->v; /* --camera's azimuth as the scene reads azimuths */
         v.cam[0] = hfs_scene_spec_azimuth(&c->scene, v.cam[0]);
-        view = cli_view_make(&v, &in.field);
+        view = cli_view_make(&v, &in.field, !strcmp(c->scene.preset, "panel"));
         view.objects = c->scene.objects; /* drawn lit in the view */
         view.n_objects = c->scene.n_objects;
         if ((rc = hfs_image_alloc(&vimg, view.width, view.height, err)))

@@ -6,11 +6,47 @@
 # glossy in perspective (each texel lit for its own view vector towards
 # the eye); the demo DEM under a synthetic sky with a sun, its SH alone,
 # decomposed into lights, and the truth of the map (issue 17).
+# Issue 41: the demo DEM and the panel, top-down and in 3-D, as the
+# current code draws them (docs/img/{dem,panel}-{top,3d}.png: the
+# automatic exposure, the hue-keeping curve, the environment map behind
+# the DEM through the automatic haze, the panel (preset = panel) in the
+# studio), and the same four commands run once by the code before issue
+# 41 (commit cd90b19), kept as docs/img/*-before.png:
+#   git worktree add /tmp/h41-before cd90b19
+#   cmake -S /tmp/h41-before -B /tmp/h41-before/build-before
+#   cmake --build /tmp/h41-before/build-before --target hfshade hfgen -j2
+#   tools/make_pictures.sh build --before /tmp/h41-before/build-before   # -before only
+#   git worktree remove --force /tmp/h41-before
 # Deterministic: the same build gives the same files.
-# usage: tools/make_pictures.sh [BUILD_DIR]   (default build)
+# usage: tools/make_pictures.sh [BUILD_DIR] [--before OLD_BUILD_DIR]   (default build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B=${1:-build}
+# The issue-41 pair: SUFFIX "" with this build, "-before" with cd90b19's.
+# The same commands for both (only flags cd90b19 knows): what changed is
+# the defaults.
+pictures41() { # BUILD SUFFIX
+    local b=$1 s=$2 t
+    t=$(mktemp -d)
+    "$b/tools/hfgen" panel --size 256x256 -o "$t/panel.pfm" >/dev/null
+    local panel="--height $t/panel.pfm --local 110,90,40,6,60 --albedo 0.85 --preset panel"
+    panel="$panel --env-sh 0.6,0,0.3,0,0,0,0,0,0,0,0,0,0,0,0,0"
+    "$b/tools/hfshade" render data/demo.ini -o "docs/img/dem-top$s.png" --quiet
+    "$b/tools/hfshade" render data/demo.ini --view perspective --camera 300,12,34000,40 \
+        --view-size 640x384 -o "docs/img/dem-3d$s.png" --quiet
+    # shellcheck disable=SC2086
+    "$b/tools/hfshade" render $panel -o "docs/img/panel-top$s.png" --quiet
+    # shellcheck disable=SC2086
+    "$b/tools/hfshade" render $panel --view perspective --camera 235,32,330,40 \
+        --view-size 640x384 -o "docs/img/panel-3d$s.png" --quiet
+    rm -rf "$t"
+    echo "wrote docs/img/dem-{top,3d}$s.png docs/img/panel-{top,3d}$s.png"
+}
+if [ "${2:-}" = "--before" ]; then
+    pictures41 "${3:?--before needs the old build directory}" -before
+    exit 0
+fi
+pictures41 "$B" ""
 CAM="--view perspective --camera 250,38,17000,40 --view-size 640x384"
 for b in 0 1; do
     # shellcheck disable=SC2086

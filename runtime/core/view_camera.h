@@ -25,6 +25,8 @@
 #ifndef HFS_VIEW_CAMERA_H
 #define HFS_VIEW_CAMERA_H
 
+#include "view_look.h"
+
 typedef struct hfs_camera {
     double azimuth, elevation; /* radians: where the camera stands, seen from the target */
     double distance;           /* world units, > 0 */
@@ -32,6 +34,9 @@ typedef struct hfs_camera {
     double target[3];          /* world point looked at */
     double exaggeration;       /* vertical scale of the terrain in the view, > 0 */
     int ortho;                 /* 1: parallel projection (see above)              */
+    hfs_view_look look;        /* background and haze (zero: the sky, no haze);
+                                  travels with the camera so that every backend's
+                                  view, and the GLES planner, sees it          */
 } hfs_camera;
 
 /* The camera's eye and its orthonormal basis: forward (eye -> target),

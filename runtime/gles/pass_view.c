@@ -1,10 +1,13 @@
 /*
  * pass_view.c — the 3-D view (issue 16, deliverable 4): the lit field seen
  * from an hfs_camera (view_camera.h, the basis the truth's ray-cast view
- * uses), drawn as a triangle mesh over an SH sky, read back as RGB.
+ * uses), drawn as a triangle mesh over its background, read back as RGB.
  *
- *   sky    view_sky.frag over the whole view: the environment's SH in each
- *          pixel centre's ray direction (zero without an environment);
+ *   sky    view_sky.frag over the whole view: the camera's background in
+ *          each pixel centre's ray direction (view_sky.c, core view_look.h:
+ *          the environment map, its SH, zero without an environment, a
+ *          studio grey, a colour); the mesh and the objects are seen
+ *          through the look's haze (gles_view.frag);
  *   mesh   view.vert + view.frag: W x H grid points, two triangles a cell
  *          (strips, one instance per row of cells: no vertex or index
  *          buffer), heights from the terrain pass's input texture, the lit
@@ -38,6 +41,7 @@
 #include "gles_backend.h"
 
 #include "gl_util.h"
+#include "view_sky.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -50,6 +54,7 @@ struct hfs_gles_view_state {
     float *kept;             /* the last view image, RGB */
     size_t kept_cap;
     int kept_w, kept_h;
+    hfs_gles_view_sky sky;   /* the environment map behind the terrain */
 };
 
 static void free_targets(const hfs_gl *gl, hfs_gles_view_state *v)
@@ -69,6 +74,7 @@ void hfs_gles_view_free(hfs_gles *g)
     if (!g->view)
         return;
     free_targets(&g->gl, g->view);
+    hfs_gles_view_sky_free(&g->view->sky, &g->gl);
     free(g->view->kept);
     free(g->view);
     g->view = NULL;
@@ -206,8 +212,10 @@ static void projection(const hfs_camera_frame *cf, double aspect, double n, doub
             m[4 * c + r] = (float)row[r][c];
 }
 
-/* HfsView; returns the view's scale (radiance -> stored value). */
-static double fill_block(const hfs_gles *g, const hfs_gles_frame *fr, hfs_gles_view_block *b)
+/* HfsView; returns the view's scale (radiance -> stored value).  map: the
+ * background is the environment map (g->view->sky). */
+static double fill_block(const hfs_gles *g, const hfs_gles_frame *fr, int map,
+                         hfs_gles_view_block *b)
 {
     memset(b, 0, sizeof *b);
     const hfs_gles_layout *L = &fr->L;
@@ -233,6 +241,7 @@ static double fill_block(const hfs_gles *g, const hfs_gles_frame *fr, hfs_gles_v
             s += fabs(fr->l_env[c][k]);
         sky = fmax(sky, s);
     }
+    sky = fmax(sky, hfs_gles_view_look_bound(fr->cam, &g->view->sky, map));
     const double lit = g->lit_scale > 0.0 ? g->lit_scale : 1.0;
     const double scale = fmin(lit, hfs_gles_output_scale(sky));
     const double zs = L->zscale * fr->cam->exaggeration;
@@ -245,6 +254,7 @@ static double fill_block(const hfs_gles *g, const hfs_gles_frame *fr, hfs_gles_v
     for (int c = 0; c < 3 && fr->has_env; ++c)
         for (int k = 0; k < HFS_SH_N; ++k)
             b->env[c][k] = (float)(fr->l_env[c][k] * scale);
+    hfs_gles_view_look_fill(b, fr->cam, fr->l, &g->view->sky, map, scale);
     return scale;
 }
 
@@ -331,6 +341,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double scale, hfs_error *
     const hfs_gles_program *prog;
     const GLuint target = v->samples > 1 ? v->ms_fbo : v->fbo;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_VIEW_SKY, &var, &prog, err);
+    if (!rc)
+        rc = hfs_gles_program_texture(gl, prog, "u_sky", GL_TEXTURE_2D, v->sky.tex, err);
     if (rc)
         return rc;
     gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_VIEW, g->ubo[HFS_UBO_VIEW]);
@@ -417,8 +429,14 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     int rc = ensure_targets(g, fr->view_w, fr->view_h, err);
     if (rc)
         return rc;
+    /* The map's texture only while a view draws it. */
+    const int map = hfs_gles_view_sky_wanted(fr->cam, fr->l);
+    if (map && (rc = hfs_gles_view_sky_follow(&g->view->sky, &g->gl, &g->caps, fr->l, err)))
+        return rc;
+    if (!map)
+        hfs_gles_view_sky_free(&g->view->sky, &g->gl);
     hfs_gles_view_block b;
-    const double scale = fill_block(g, fr, &b);
+    const double scale = fill_block(g, fr, map, &b);
     hfs_gles_ubo_upload(&g->gl, g->ubo[HFS_UBO_VIEW], &b, sizeof b);
     if ((rc = draw(g, fr, scale, err)))
         return rc;

@@ -127,7 +127,8 @@ static int camera_equal(const hfs_camera *a, const hfs_camera *b)
     return a->azimuth == b->azimuth && a->elevation == b->elevation &&
            a->distance == b->distance && a->fov == b->fov && a->target[0] == b->target[0] &&
            a->target[1] == b->target[1] && a->target[2] == b->target[2] &&
-           a->exaggeration == b->exaggeration && a->ortho == b->ortho;
+           a->exaggeration == b->exaggeration && a->ortho == b->ortho &&
+           hfs_view_look_equal(&a->look, &b->look);
 }
 
 /* Marks the inputs that differ between the last frame and now. */

@@ -154,24 +154,26 @@ static int bind_interface(const hfs_gl *gl, GLuint id, const program_row *row, h
     return HFS_OK;
 }
 
-/* "gles_lib + gles_ray + [product] + pass", linked with the row's vertex
- * shader (source strings 1, 3, 2, 0 in driver messages). */
+/* "gles_lib + gles_ray + gles_view + [product] + pass", linked with the
+ * row's vertex shader (source strings 1, 3, 4, 2, 0 in driver messages). */
 static int build(const hfs_gl *gl, const program_row *row, const hfs_gles_variant *v,
                  GLuint *out, hfs_error *err)
 {
     const char *lib = hfs_shader_source("gles_lib.frag");
     const char *ray = hfs_shader_source("gles_ray.frag");
+    const char *look = hfs_shader_source("gles_view.frag");
     const char *pass = hfs_shader_source(row->shader);
     const char *vert = hfs_shader_source(row->vert);
-    if (!lib || !ray || !pass || !vert)
+    if (!lib || !ray || !look || !pass || !vert)
         return hfs_fail(err, HFS_E_INVALID, "backend gles: shader %s not embedded", row->shader);
     const char *prod = row->product ? hfs_gles_sh_product_src : "";
-    const size_t size = strlen(lib) + strlen(ray) + strlen(prod) + strlen(pass) + 80;
+    const size_t size = strlen(lib) + strlen(ray) + strlen(look) + strlen(prod) + strlen(pass) +
+                        100;
     char *src = malloc(size);
     if (!src)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
-    snprintf(src, size, "#line 1 1\n%s\n#line 1 3\n%s\n#line 1 2\n%s\n#line 1 0\n%s", lib, ray,
-             prod, pass);
+    snprintf(src, size, "#line 1 1\n%s\n#line 1 3\n%s\n#line 1 4\n%s\n#line 1 2\n%s\n#line 1 0\n%s",
+             lib, ray, look, prod, pass);
     /* The generated product carries UTF-8 in a comment; GLSL ES 3.00 knows
      * ASCII only. */
     for (char *c = src; *c; ++c)

@@ -250,8 +250,9 @@ typedef struct hfs_gles_bounce_head {
 } hfs_gles_bounce_head;
 _Static_assert(sizeof(hfs_gles_bounce_head) == 16, "HfsBounce.u_bhead is one vec4");
 
-/* HfsView (view.vert.glsl, view.frag.glsl, view_sky.frag.glsl; filled by
- * runtime/gles/pass_view.c), std140, by name. */
+/* HfsView (view.vert.glsl, view.frag.glsl, view_sky.frag.glsl,
+ * view_objects.*.glsl; filled by runtime/gles/pass_view.c and view_sky.c),
+ * std140, by name. */
 typedef struct hfs_gles_view_block {
     float mvp[16];      /* u_mvp: eye-relative world -> clip, column-major     */
     float eye[4];       /* u_eye: eye (world), 1 for ortho                     */
@@ -262,6 +263,12 @@ typedef struct hfs_gles_view_block {
     float right[4];     /* u_right: right * tan(fov/2) * w/h                   */
     float up[4];        /* u_up: up * tan(fov/2)                               */
     float env[3][16];   /* u_env[12]: sky SH times the view scale, per channel */
+    /* The background and the haze (runtime/core/view_look.h; view_sky.c). */
+    float bg[4];        /* u_bg: (mode: 0 SH sky, 1 map, 2 studio, 3 colour;
+                           map texel -> view scale; env_rotate; 0)             */
+    float bg_rgb[4];    /* u_bg_rgb: studio level or colour times the scale    */
+    float haze[4];      /* u_haze: (sigma, z0, scale height, 0); sigma 0: off  */
+    float haze_in[4];   /* u_haze_in: in-scattered radiance times the scale    */
 } hfs_gles_view_block;
 _Static_assert(offsetof(hfs_gles_view_block, eye) == 4 * 16, "HfsView.u_eye");
 _Static_assert(offsetof(hfs_gles_view_block, zmap) == 5 * 16, "HfsView.u_zmap");
@@ -270,6 +277,10 @@ _Static_assert(offsetof(hfs_gles_view_block, fwd) == 7 * 16, "HfsView.u_fwd");
 _Static_assert(offsetof(hfs_gles_view_block, right) == 8 * 16, "HfsView.u_right");
 _Static_assert(offsetof(hfs_gles_view_block, up) == 9 * 16, "HfsView.u_up");
 _Static_assert(offsetof(hfs_gles_view_block, env) == 10 * 16, "HfsView.u_env");
-_Static_assert(sizeof(hfs_gles_view_block) == 22 * 16, "HfsView size");
+_Static_assert(offsetof(hfs_gles_view_block, bg) == 22 * 16, "HfsView.u_bg");
+_Static_assert(offsetof(hfs_gles_view_block, bg_rgb) == 23 * 16, "HfsView.u_bg_rgb");
+_Static_assert(offsetof(hfs_gles_view_block, haze) == 24 * 16, "HfsView.u_haze");
+_Static_assert(offsetof(hfs_gles_view_block, haze_in) == 25 * 16, "HfsView.u_haze_in");
+_Static_assert(sizeof(hfs_gles_view_block) == 26 * 16, "HfsView size");
 
 #endif /* HFS_GLES_UNIFORM_BLOCKS_H */

@@ -382,6 +382,7 @@ int hfs_renderer_render_view(hfs_renderer *r, const hfs_field *f, const hfs_ligh
         return rc;
     hfs_camera cam;
     hfs_view_camera(v, &cam);
+    hfs_view_look_make(v, f, l, &cam.look);
     hfs_lighting seen = *l;
     if (l->specular > 0.0)
         glossy_viewer(&cam, &seen);

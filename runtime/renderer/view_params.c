@@ -45,7 +45,7 @@ int hfs_view_check(const hfs_view *v, hfs_error *err)
         rc = range(v->exaggeration, 0.0, 1e6, 1, "exaggeration", err);
     for (int k = 0; k < 3 && !rc; ++k)
         rc = range(v->target[k], -1e12, 1e12, 0, "target", err);
-    return rc;
+    return rc ? rc : hfs_view_look_check(v, err);
 }
 
 /* The field's height range (finite heights). */

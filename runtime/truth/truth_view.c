@@ -15,13 +15,27 @@ typedef struct view_ctx {
     const hfs_truth_grid *g;
     const float *lit;
     const hfs_camera_frame *fr;
-    int has_env;
     double base;              /* the block's bottom: the lowest height (world z) */
     double env[3][HFS_SH_N];
     int w, h;
     float *view;
     const hfs_object_set *obj; /* in the view's world (z exaggerated), or NULL */
+    const hfs_lighting *l;     /* the sky background's map */
+    const hfs_view_look *look; /* background and haze (view_look.h) */
 } view_ctx;
+
+/* rgb as seen through the haze at distance dist along the ray from org
+ * (unit direction d); nothing to do with the haze off, so such a view is
+ * the one without it bit for bit. */
+static void seen(const view_ctx *v, const double org[3], const double d[3], double dist,
+                 const double lo[3], float *rgb)
+{
+    double x[3] = {lo[0], lo[1], lo[2]};
+    if (v->look->sigma > 0.0)
+        hfs_haze_apply(v->look, dist, org[2], org[2] + dist * d[2], x);
+    for (int c = 0; c < 3; ++c)
+        rgb[c] = (float)x[c];
+}
 
 /* The nearest object the ray org + t d (t in (0, tmax)) meets: its index,
  * or -1; *t, the face and its (u, v) (objects.h conventions). */
@@ -113,22 +127,20 @@ static void shade_pixel(const view_ctx *v, int px, int py, float *rgb)
             double lo[3];
             hfs_rgb_bilinear(v->lit, f->width, f->height, o[0] + t * dg[0], o[1] + t * dg[1],
                              lo);
-            for (int c = 0; c < 3; ++c)
-                rgb[c] = (float)lo[c];
+            seen(v, org, d, ts + t, lo, rgb);
             return;
         }
     }
     if (ob >= 0) { /* an object in front of the terrain, or over the sky */
         double lo[3];
         hfs_objects_face_rgb(v->obj, ob, face, uv[0], uv[1], lo);
-        for (int c = 0; c < 3; ++c)
-            rgb[c] = (float)lo[c];
+        seen(v, org, d, tobj, lo, rgb);
         return;
     }
-    double y[HFS_SH_N];
-    hfs_sh_eval(d[0], d[1], d[2], y);
+    double bg[3];
+    hfs_view_background(v->look, v->l, v->env, d, bg);
     for (int c = 0; c < 3; ++c)
-        rgb[c] = v->has_env ? (float)hfs_sh_dot(y, v->env[c]) : 0.0f;
+        rgb[c] = (float)bg[c];
 }
 
 static void view_row(void *ctx, int py, int worker)
@@ -152,8 +164,9 @@ int hfs_truth_view(const hfs_field *f, const float *lit, const hfs_lighting *l,
     hfs_camera_frame_make(cam, &fr);
     double lo, hi;
     hfs_field_range(&fe, &lo, &hi);
-    view_ctx v = {.f = &fe, .g = &g, .lit = lit, .fr = &fr, .has_env = l->has_env, .w = w,
-                  .h = h, .view = view, .base = lo * fe.zscale, .obj = obj};
+    view_ctx v = {.f = &fe, .g = &g, .lit = lit, .fr = &fr, .w = w,
+                  .h = h, .view = view, .base = lo * fe.zscale, .obj = obj, .l = l,
+                  .look = &cam->look};
     for (int c = 0; c < 3 && l->has_env; ++c)
         hfs_sh_rotate_z(l->env_sh[c], l->env_rotate, v.env[c]);
     hfs_parallel_rows(h, threads, view_row, &v, NULL, NULL);

@@ -4,8 +4,10 @@
  * surface with the view's vertical exaggeration (exact first hit,
  * truth_raycast.h), shaded with the lit field's exit radiance read
  * bilinearly at the hit's grid position (diffuse: the radiance does not
- * depend on the view); a ray that misses the field shows the environment
- * in its direction (the SH sky, rotated as lit; black without one).
+ * depend on the view); a ray that misses the field shows the camera's
+ * background in its direction (cam->look, view_look.h: the environment
+ * map itself or the SH sky, rotated as lit, black without one; a studio
+ * grey; a colour), and what it meets is seen through the look's haze.
  * Objects (obj, in the view's world: z times the exaggeration; NULL for
  * none) are boxes in front of whatever lies behind them, shaded with their
  * lit face grids (objects.h).  One sample per pixel, at its centre.
