@@ -46,4 +46,8 @@ if(TARGET hfshade_gdal)
   add_test(NAME slurm_tiles COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/slurm_tiles.sh
            $<TARGET_FILE:hfshade> ${CMAKE_SOURCE_DIR})
   set_tests_properties(slurm_tiles PROPERTIES LABELS io TIMEOUT 420 SKIP_RETURN_CODE 77)
+  if(HFS_SANITIZE) # the array's jobs inherit it (sbatch exports the environment)
+    set_property(TEST slurm_tiles APPEND PROPERTY ENVIRONMENT
+                 "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/lsan.supp:print_suppressions=0")
+  endif()
 endif()
