@@ -82,6 +82,8 @@ static void usage(FILE *f)
             "       hfshade horizon DEM -o PREFIX [...]      angles, the sun's beam at an\n"
             "       hfshade sun DEM -o OUT.tif [...]         instant, clear-sky irradiation;\n"
             "       hfshade insolation DEM -o OUT.tif [...]  COMMAND --help, docs/GIS.md)\n"
+            "       hfshade tiles plan|run|merge ...         (a DEM's windows as jobs for GNU\n"
+            "                                                parallel or Slurm: tiles --help)\n"
             "options: --exposure auto|EV (PNG only; default auto: the lit terrain's median\n"
             "         luminance at middle grey; EV: stops, 0 = radiance x 1, -1 = x 0.5),\n"
             "         --colormap none|terrain (PNG only),\n"
