@@ -33,8 +33,7 @@
  *   wall: 470 texels in the shadow, 1871 lit, none wrong (truth and GLES);
  *   gles - truth on the hills, sun at 5.0 degrees, 3069 texels: beam mean
  *     0.0046, max 0.991 W/m^2 (of 299 normal); V mean 0.00042, max 0.223
- *     (the shadows' edges).  The CPU reference gives the same numbers
- *     (GLES equals it there): the difference is the horizon search's
+ *     (the shadows' edges).  The difference is the horizon search's
  *     crossings (DESIGN.md "GIS horizons") and the disk taken as flat
  *     under a straight horizon (gis_disk_visible), not fp16.  The bounds
  *     GT_* are 1.2x those.  (The key-light frame the sun was rendered

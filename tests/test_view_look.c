@@ -257,19 +257,30 @@ static void check_sky(const hfs_image *im, const unsigned char *mask, const hfs_
           worst, bound, top);
 }
 
+/* The truth's ray-cast view of lit through cam (VW x VH RGB, the
+ * caller's to free); NULL after a failed check. */
+static float *truth_view_of(const hfs_field *f, const hfs_image *lit, const hfs_lighting *l,
+                            const hfs_camera *cam)
+{
+    float *t = malloc(sizeof(float) * VW * VH * 3);
+    hfs_error err = {""};
+    if (!t || hfs_truth_view(f, lit->rgb, l, cam, NULL, VW, VH, t, 0, &err)) {
+        CHECK(0, "truth view: %s", err.msg);
+        free(t);
+        return NULL;
+    }
+    return t;
+}
+
 /* gles: the hazed view against the truth's of its own lit image, the
  * same look, away from the stripes' edges and the background. */
 static void check_twin(const hfs_image *view, const hfs_image *lit, const hfs_view *v,
                        const hfs_field *f, const hfs_lighting *l, const unsigned char *mask)
 {
     const hfs_camera cam = camera_of(v, f, l);
-    float *t = malloc(sizeof(float) * VW * VH * 3);
-    hfs_error err = {""};
-    if (!t || hfs_truth_view(f, lit->rgb, l, &cam, NULL, VW, VH, t, 0, &err)) {
-        CHECK(0, "truth view: %s", err.msg);
-        free(t);
+    float *t = truth_view_of(f, lit, l, &cam);
+    if (!t)
         return;
-    }
     double sum = 0.0;
     int n = 0;
     for (int y = 1; y < VH - 1; ++y)
@@ -297,13 +308,9 @@ static void check_off(const hfs_image *view, const hfs_image *lit, const hfs_vie
 {
     hfs_camera cam = camera_of(v, f, l);
     cam.look = (hfs_view_look){.background = HFS_BACKGROUND_SKY};
-    float *t = malloc(sizeof(float) * VW * VH * 3);
-    hfs_error err = {""};
-    if (!t || hfs_truth_view(f, lit->rgb, l, &cam, NULL, VW, VH, t, 0, &err)) {
-        CHECK(0, "truth view: %s", err.msg);
-        free(t);
+    float *t = truth_view_of(f, lit, l, &cam);
+    if (!t)
         return;
-    }
     int diff = 0;
     for (int i = 0; i < VW * VH; ++i)
         diff += !mask[i] && memcmp(t + 3 * i, view->rgb + 3 * i, 3 * sizeof *t) != 0;
