@@ -52,6 +52,14 @@ static const hfs_action_info actions[] = {
      0.05, 0.0, 1.0, 0, HFS_SK_SPECULAR, 0},
     {HFS_ACTION_SURFACE_GLOSS, "surface.gloss", 1, 0, HFS_TARGET_NONE, 1, 1,
      1.25, 1.0, 10000.0, 0, HFS_SK_GLOSS, 0},
+    /* the map's centre: step in display pixels (texels of the level
+     * shown); the kiosk keeps it on the DEM, whatever min and max say */
+    {HFS_ACTION_MAP_PAN_X, "map.pan_x", 1, 0, HFS_TARGET_NONE, 1, 0,
+     64.0, -1e9, 1e9, 0, HFS_SK_COUNT, 0},
+    {HFS_ACTION_MAP_PAN_Y, "map.pan_y", 1, 0, HFS_TARGET_NONE, 1, 0,
+     64.0, -1e9, 1e9, 0, HFS_SK_COUNT, 0},
+    {HFS_ACTION_MAP_ZOOM, "map.zoom", 1, 1, HFS_TARGET_NONE, 0, 0,
+     1.0, 0.0, 0.0, 0, HFS_SK_COUNT, 0},
 };
 #define N_ACTIONS ((int)(sizeof actions / sizeof actions[0]))
 

@@ -77,7 +77,7 @@ static int fail_at(parse_ctx *c, int line, const char *fmt, ...)
 {
     if (c->failed)
         return 0;
-    char msg[400];
+    char msg[512];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
@@ -241,7 +241,7 @@ static int set_value(parse_ctx *c, hfs_control_config *k, key_id id, const char 
     case K_ACTION: {
         k->action = hfs_action_from_name(v);
         if (k->action == HFS_ACTION_NONE) {
-            char known[300];
+            char known[400]; /* every action's name, ", "-separated */
             hfs_action_names(known, sizeof known);
             return fail_at(c, c->line, "unknown action '%s' (known: %s)", v, known);
         }

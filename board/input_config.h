@@ -67,6 +67,9 @@ typedef enum hfs_action {
     HFS_ACTION_SURFACE_ALBEDO,  /* the Lambertian albedo                   */
     HFS_ACTION_SURFACE_SPECULAR, /* the Phong lobe's specular albedo       */
     HFS_ACTION_SURFACE_GLOSS,   /* the Phong exponent (multiplies)         */
+    HFS_ACTION_MAP_PAN_X,       /* the map (a DEM larger than the display):  */
+    HFS_ACTION_MAP_PAN_Y,       /*   its view's centre, display pixels      */
+    HFS_ACTION_MAP_ZOOM,        /* knob: +-1 level per detent; button: in   */
     HFS_ACTION_COUNT
 } hfs_action;
 

@@ -120,8 +120,9 @@ static double limit(const hfs_control_config *k, double v)
     return v < k->min ? k->min : v > k->max ? k->max : v;
 }
 
-static int turn_value(const hfs_control_config *k, int index, hfs_input_state *st,
-                      const hfs_input_event *ev, hfs_scene *s)
+/* The turn's acceleration gain, its time and direction kept for the next. */
+static double turn_gain(const hfs_control_config *k, int index, hfs_input_state *st,
+                        const hfs_input_event *ev)
 {
     const int dir = ev->delta > 0 ? 1 : -1;
     double gain = 1.0;
@@ -129,7 +130,46 @@ static int turn_value(const hfs_control_config *k, int index, hfs_input_state *s
         gain = hfs_input_gain(k, ev->t_ns - st->last_turn[index].t_ns, ev->delta);
     st->last_turn[index].t_ns = ev->t_ns;
     st->last_turn[index].dir = dir;
+    return gain;
+}
 
+/* map.pan_x / map.pan_y: step display pixels a detent, a pixel being
+ * 2^map_level texels of the field; the centre stays on the field. */
+static int pan_map(const hfs_control_config *k, int index, hfs_input_state *st,
+                   const hfs_input_event *ev)
+{
+    const double gain = turn_gain(k, index, st, ev);
+    if (st->map_levels <= 0)
+        return 0;
+    const int x = k->action == HFS_ACTION_MAP_PAN_X;
+    double *v = x ? &st->map_x : &st->map_y;
+    const double end = x ? st->map_w : st->map_h;
+    double n = *v + ev->delta * k->step * gain * ldexp(1.0, st->map_level);
+    n = n < 0.0 ? 0.0 : n > end ? end : n;
+    if (!isfinite(n) || n == *v)
+        return 0;
+    *v = n;
+    return 1;
+}
+
+/* map.zoom: a clockwise detent one level in (finer), counter-clockwise one
+ * out, clamped; a press one level in, from the finest back to the whole
+ * field. */
+static int zoom_map(hfs_input_state *st, int delta, int button)
+{
+    const int before = st->map_level, top = st->map_levels - 1;
+    if (top < 0)
+        return 0;
+    const long long l = button ? (st->map_level == 0 ? top : st->map_level - 1)
+                               : (long long)st->map_level - delta; /* an evdev delta: any int */
+    st->map_level = l < 0 ? 0 : l > top ? top : (int)l;
+    return st->map_level != before;
+}
+
+static int turn_value(const hfs_control_config *k, int index, hfs_input_state *st,
+                      const hfs_input_event *ev, hfs_scene *s)
+{
+    const double gain = turn_gain(k, index, st, ev);
     double *v = target_value(k, st, s);
     if (!v)
         return 0;
@@ -198,6 +238,11 @@ int hfs_input_apply(const hfs_input_config *cfg, hfs_input_state *st,
     case HFS_ACTION_VIEW:
         st->view = !st->view;
         return 1;
+    case HFS_ACTION_MAP_ZOOM:
+        return zoom_map(st, delta, !turn);
+    case HFS_ACTION_MAP_PAN_X:
+    case HFS_ACTION_MAP_PAN_Y:
+        return pan_map(k, index, st, ev);
     case HFS_ACTION_NONE:
     case HFS_ACTION_COUNT:
         return hfs_fail(err, HFS_E_INVALID, "input: control '%s' has no action", k->name);

@@ -45,6 +45,14 @@ typedef struct hfs_input_state {
     int view;           /* the 3-D view shown (view.toggle)                 */
     double cam_azimuth, cam_elevation; /* degrees (camera.azimuth, .elevation) */
     double cam_zoom;    /* distance over the framing one (camera.zoom)     */
+    /* The map (board/kiosk_map.h: a field larger than the display), set
+     * by the kiosk: map_levels 0 = no map, the map.* actions do nothing.
+     * map_x, map_y: the view's centre in texels of the field (level 0),
+     * kept within [0, map_w] x [0, map_h]; map_level: the level shown,
+     * 0 (a texel a pixel) .. map_levels - 1 (the whole field). */
+    int map_levels, map_w, map_h;
+    int map_level;
+    double map_x, map_y;
     /* Per control (same index as cfg->control): the last turn, for
      * acceleration.  Bookkeeping only: it does not count as a change. */
     struct {

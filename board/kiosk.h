@@ -26,6 +26,7 @@
 #include "display.h"
 #include "input_map.h"
 #include "input_set.h"
+#include "kiosk_map.h"
 #include "scene_load.h"
 
 /* ---- logging (kiosk_log.c) ------------------------------------------------ */
@@ -139,6 +140,14 @@ typedef struct kiosk_frame {
     void *egl_display, *egl_context;
     int shared;
     int64_t present_ns;            /* CLOCK_MONOTONIC after present returned */
+    /* The map (kiosk_map.h): a field larger than the display, shown at
+     * the display's size (--size, or a KMS mode's), panned and zoomed
+     * (map.* actions).  NULL: the field shown whole (shrunk to fit). */
+    kiosk_map *map;
+    int map_w, map_h;              /* the display size maps are made for (0:
+                                      none): --size, or the KMS mode's       */
+    int prefetching;               /* the map's last view still wants tiles:
+                                      the loop fetches one when idle         */
 } kiosk_frame;
 
 /* Makes the renderer the scene asks for (backend, context), exposure the
@@ -163,6 +172,16 @@ void kiosk_frame_adopt(kiosk_frame *f, hfs_renderer *r, const hfs_scene *scene);
 int kiosk_frame_admit(hfs_renderer *r, int amortize, const hfs_scene *scene,
                       const hfs_scene_inputs *in, hfs_error *err);
 void kiosk_frame_free(kiosk_frame *f);
+
+/* The map of in's field for a display of dw x dh pixels (kiosk_map.h),
+ * when the field is larger (0 x 0 or a field that fits: none), and st's
+ * map state for it: a new field (keep 0) is shown whole, centred; keep 1
+ * keeps st's place and level where they still lie on the field. */
+int kiosk_frame_map(kiosk_frame *f, const hfs_scene_inputs *in, hfs_input_state *st, int dw,
+                    int dh, int keep, hfs_error *err);
+/* Renders one tile the map's view wants ahead (kiosk_map_prefetch);
+ * clears f->prefetching when none is left. */
+int kiosk_frame_prefetch(kiosk_frame *f, const hfs_scene_inputs *in, hfs_error *err);
 
 /* Renders in (its grid dump, or with st->view the 3-D view from st's
  * camera: view_camera), makes the picture, draws the overlay when st asks,
@@ -189,6 +208,9 @@ void kiosk_stats_frame(kiosk_stats *s, const kiosk_frame *f, int events);
 void kiosk_stats_event(kiosk_stats *s, const hfs_input_event *ev, int changed,
                        const kiosk_frame *f, int shown);
 void kiosk_stats_reload(kiosk_stats *s, int ok);
+/* "prefetch T_NS LEVEL TILE_MS CACHED BYTES" after the map rendered a tile
+ * ahead of its view. */
+void kiosk_stats_prefetch(kiosk_stats *s, const kiosk_frame *f);
 /* "capture SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED SUPERSEDED" after the
  * frame that showed a capture frame's heights. */
 void kiosk_stats_capture(kiosk_stats *s, const hfs_capture_live *live, const kiosk_frame *f);

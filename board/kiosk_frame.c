@@ -109,8 +109,44 @@ void kiosk_frame_free(kiosk_frame *f)
     hfs_image_free(&f->small);
     hfs_image_free(&f->lit);
     free(f->rgba);
+    kiosk_map_free(f->map);
     f->renderer = NULL;
     f->rgba = NULL;
+    f->map = NULL;
+}
+
+int kiosk_frame_map(kiosk_frame *f, const hfs_scene_inputs *in, hfs_input_state *st, int dw,
+                    int dh, int keep, hfs_error *err)
+{
+    const int w = in->field.width, h = in->field.height;
+    kiosk_map_free(f->map);
+    f->map = NULL;
+    f->prefetching = 0;
+    const int levels = dw > 0 && dh > 0 ? kiosk_map_levels_for(w, h, dw, dh) : 1;
+    keep = keep && st->map_levels == levels && st->map_w == w && st->map_h == h;
+    st->map_levels = 0;
+    if (levels == 1)
+        return HFS_OK;
+    const int rc = kiosk_map_create(in, dw, dh, &f->map, err);
+    if (rc)
+        return rc;
+    st->map_levels = levels, st->map_w = w, st->map_h = h;
+    if (!keep) { /* the whole field, centred */
+        st->map_x = 0.5 * w, st->map_y = 0.5 * h;
+        st->map_level = levels - 1;
+    }
+    return HFS_OK;
+}
+
+int kiosk_frame_prefetch(kiosk_frame *f, const hfs_scene_inputs *in, hfs_error *err)
+{
+    if (!f->map || !f->prefetching)
+        return HFS_OK;
+    hfs_renderer_set_amortize(f->renderer, 0); /* a tile is kept: lit whole */
+    const int rc = kiosk_map_prefetch(f->map, f->renderer, in, err);
+    hfs_renderer_set_amortize(f->renderer, f->amortize);
+    f->prefetching = rc == 1;
+    return rc < 0 ? rc : HFS_OK;
 }
 
 /* The render (w x h) and the picture: a field larger than any display's
@@ -142,8 +178,13 @@ static int ensure_buffers(kiosk_frame *f, int w, int h, hfs_error *err)
 static void draw_overlay(kiosk_frame *f, const char *preset)
 {
     char text[96];
-    snprintf(text, sizeof text, "%.1f ms %d/%d passes %s", f->render_ms, f->passes_ran,
-             f->passes_total, preset && preset[0] ? preset : "kiosk");
+    int n = snprintf(text, sizeof text, "%.1f ms %d/%d passes %s", f->render_ms, f->passes_ran,
+                     f->passes_total, preset && preset[0] ? preset : "kiosk");
+    if (f->map && n > 0 && (size_t)n < sizeof text) { /* the map's level, tiles lit now */
+        kiosk_map_stats ms;
+        kiosk_map_stats_get(f->map, &ms);
+        snprintf(text + n, sizeof text - (size_t)n, " L%d %d tiles", ms.level, ms.rendered);
+    }
     const hfs_image *pic = f->shrink > 1 ? &f->small : &f->img;
     const int w = pic->width, h = pic->height;
     const int scale = w >= 480 ? 2 : 1;
@@ -207,7 +248,9 @@ static int render(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_st
                   const char *preset, hfs_error *err)
 {
     const int view = st->view;
-    const int w = view ? f->view_w : in->field.width, h = view ? f->view_h : in->field.height;
+    int w = view ? f->view_w : in->field.width, h = view ? f->view_h : in->field.height;
+    if (f->map && !view)
+        kiosk_map_view_size(f->map, st->map_level, &w, &h);
     int rc = ensure_buffers(f, w, h, err);
     if (rc)
         return rc;
@@ -216,6 +259,16 @@ static int render(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_st
      * quality were validated by kiosk_world_relight; the renderer checks
      * them again, which costs nothing next to a frame). */
     hfs_renderer_set_field_serial(f->renderer, in->serial);
+    if (!view && f->map) { /* the map's view: its tiles, lit ahead or now */
+        hfs_renderer_set_amortize(f->renderer, 0); /* a tile is kept: lit whole */
+        rc = kiosk_map_frame(f->map, f->renderer, in, st->map_x, st->map_y, st->map_level,
+                             &f->img, err);
+        hfs_renderer_set_amortize(f->renderer, f->amortize);
+        f->prefetching = !rc;
+        if (!rc && f->auto_exposure)
+            meter(f, &f->img);
+        return rc;
+    }
     if (!view) {
         rc = hfs_renderer_render(f->renderer, &in->field, &in->lighting, &in->quality, &f->img,
                                  NULL, NULL, err);
@@ -248,7 +301,7 @@ static int render(kiosk_frame *f, const hfs_scene_inputs *in, const hfs_input_st
 static int texture_path(const kiosk_frame *f, const hfs_scene_inputs *in,
                         const hfs_input_state *st)
 {
-    return f->shared && !st->view && !st->overlay &&
+    return f->shared && !st->view && !st->overlay && !f->map &&
            hfs_shrink_factor(in->field.width, in->field.height, HFS_DISPLAY_MAX_SIDE) == 1;
 }
 

@@ -163,6 +163,29 @@ static void capture_stats(kiosk *k, int heights, int sky)
         kiosk_stats_sky(k->stats, k->capture_env, &k->frame);
 }
 
+/* One tile the map's view wants ahead (none: nothing to do).  A tile that
+ * fails is logged and the fetching stops; the next frame renders what it
+ * lacks itself, and fails there if it must. */
+static void prefetch(kiosk *k)
+{
+    if (!k->frame.prefetching)
+        return;
+    hfs_error err = {{0}};
+    kiosk_map_stats before;
+    kiosk_map_stats_get(k->frame.map, &before);
+    if (kiosk_frame_prefetch(&k->frame, &k->world->in, &err)) {
+        kiosk_log(KIOSK_WARNING, "map: a tile ahead of the view: %s", err.msg);
+        k->frame.prefetching = 0;
+        return;
+    }
+    kiosk_map_stats after;
+    kiosk_map_stats_get(k->frame.map, &after);
+    if (after.prefetched > before.prefetched) {
+        kiosk_stats_prefetch(k->stats, &k->frame);
+        kiosk_stats_flush(k->stats);
+    }
+}
+
 /* Relight, render, present, then the stats of the batch.  -1: fatal.
  * heights: the capture brought new heights (no relight needed); sky: the
  * sky camera relit the world already. */
@@ -321,6 +344,12 @@ static int reload(kiosk *k, int admitted)
     nw->st.view = old->view;
     nw->st.cam_azimuth = old->cam_azimuth, nw->st.cam_elevation = old->cam_elevation;
     nw->st.cam_zoom = old->cam_zoom;
+    nw->st.map_levels = old->map_levels, nw->st.map_w = old->map_w, nw->st.map_h = old->map_h;
+    nw->st.map_level = old->map_level, nw->st.map_x = old->map_x, nw->st.map_y = old->map_y;
+    if (kiosk_frame_map(&k->frame, &nw->in, &nw->st, k->frame.map_w, k->frame.map_h, 1, &err)) {
+        kiosk_log(KIOSK_ERR, "reload: %s", err.msg); /* shown whole instead, as before maps */
+        nw->st.map_levels = 0;
+    }
     kiosk_world_free(k->world);
     k->world = nw;
     kiosk_capture_apply(k->capture, k->world); /* the camera's heights, not the file's */
@@ -440,8 +469,8 @@ int kiosk_run(kiosk *k)
             const int64_t d = hfs_input_source_deadline(k->replay);
             deadline = d < deadline ? d : deadline;
         }
-        if (k->frame.deferred > 0) /* amortized passes wait: next frame now */
-            deadline = hfs_input_now_ns();
+        if (k->frame.deferred > 0 || k->frame.prefetching) /* amortized passes or the map's */
+            deadline = hfs_input_now_ns();                  /* tiles wait: at once          */
         else if (k->frame.settling && k->frame.present_ns + KIOSK_SETTLE_NS < deadline)
             deadline = k->frame.present_ns + KIOSK_SETTLE_NS; /* the exposure settles */
         struct timespec ts;
@@ -475,10 +504,13 @@ int kiosk_run(kiosk *k)
         drain(k, &l->b);
         const int heights = kiosk_capture_drain(k->capture, k->world);
         const int sky = kiosk_capture_sky_drain(k->capture_env, k->world);
+        const int presented = k->frame.presented;
         if (show_batch(k, l, heights, sky)) {
             rc = 1;
             break;
         }
+        if (k->frame.presented == presented)
+            prefetch(k); /* idle: a tile of the map ahead of its view */
     }
     const int pid = (int)k->check.pid;
     if (kiosk_check_stop(&k->check)) /* a reload still being checked is dropped */

@@ -292,6 +292,16 @@ static int start(kiosk *k)
     k->world->st.view = o->view;
     k->frame.view_w = o->width > 0 ? o->width : 800;
     k->frame.view_h = o->height > 0 ? o->height : 480;
+    /* A field larger than the display becomes a map (kiosk_map.h): the
+     * display's size is --size, or the screen's on KMS. */
+    k->frame.map_w = o->width, k->frame.map_h = o->height;
+    if (!(o->width > 0) && !strcmp(hfs_display_name(k->display), "kms"))
+        hfs_display_size(k->display, &k->frame.map_w, &k->frame.map_h);
+    if (kiosk_frame_map(&k->frame, &w->in, &k->world->st, k->frame.map_w, k->frame.map_h, 0,
+                        &err)) {
+        kiosk_log(KIOSK_ERR, "%s", err.msg);
+        return 1;
+    }
     if (kiosk_frame_show(&k->frame, &w->in, &w->st, w->scene.preset, k->display, &err)) {
         kiosk_log(KIOSK_ERR, "frame: %s", err.msg);
         return 1;

@@ -98,3 +98,19 @@ if(TARGET hfshade-kiosk)
                    $<TARGET_FILE:png_same_picture>)
   set_tests_properties(orientation PROPERTIES LABELS io TIMEOUT 120)
 endif()
+
+# The kiosk's map (issue 40 item 4; board/kiosk_map.h): levels, tiles lit
+# through halos against one render of the whole field, tiles fetched ahead
+# of a pan and a zoom, the budget, a relit map (CPU reference: "io").
+if(TARGET hfs_kiosk_map)
+  hfs_add_test(test_kiosk_map SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_kiosk_map.c
+               LIBS hfs_kiosk_map hfs_terrain_gen m LABEL io TIMEOUT 600)
+  target_include_directories(test_kiosk_map PRIVATE ${PROJECT_SOURCE_DIR}/runtime/renderer)
+endif()
+# The map through the program: levels, pan and zoom from replayed knobs,
+# tiles fetched while idle, the budget, no map for a field that fits.
+if(TARGET hfshade-kiosk)
+  add_test(NAME kiosk_map COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/kiosk_map.sh
+                                  $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen>)
+  set_tests_properties(kiosk_map PROPERTIES LABELS io TIMEOUT 300)
+endif()

@@ -104,7 +104,7 @@ static const bad_case bad[] = {
      "key.azimuth, key.elevation, key.radius, key.radiance, local.x, local.y, local.z, "
      "local.radius, local.radiance, env.rotate, light.select, preset.next, overlay.toggle, "
      "camera.azimuth, camera.elevation, camera.zoom, view.toggle, surface.albedo, "
-     "surface.specular, surface.gloss)"},
+     "surface.specular, surface.gloss, map.pan_x, map.pan_y, map.zoom)"},
     {"bad_number.ini", HFS_E_FORMAT, ":4: step: '2x' is not a number"},
     {"bad_nan.ini", HFS_E_FORMAT, ":4: step: 'nan' is not a number"},
     {"bad_no_action.ini", HFS_E_FORMAT, ":2: [knob az]: no action"},

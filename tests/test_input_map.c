@@ -2,7 +2,7 @@
  * test_input_map.c — input events applied to a scene (board/input_map.h):
  * every action, acceleration with exactly computed values, limits and wrap,
  * light selection (keys first, then locals), preset cycling, the overlay,
- * and events no control can take.  Controls: tests/data/input/map.ini.
+ * the map's pan and zoom, and events no control can take.  Controls: tests/data/input/map.ini.
  * Argument: that directory.
  */
 #include "input_map.h"
@@ -241,6 +241,40 @@ static void surface(void)
           "gloss 32 x 1.25^2: %g", scene.gloss);
 }
 
+/* The map's centre moves step display pixels a detent, 2^level texels
+ * each, accelerated like any knob, kept on the field; zoom clamps (a knob)
+ * or wraps to the whole field (a button); without a map nothing moves. */
+static void map_actions(void)
+{
+    reset_scene();
+    CHECK(turn("panx", 1, 0) == 0 && turn("zoom", 1, 0) == 0 && press("zoomin") == 0,
+          "no map: the map's actions change nothing");
+    st.map_levels = 4, st.map_w = 1000, st.map_h = 600;
+    st.map_level = 3, st.map_x = 300, st.map_y = 300;
+    CHECK(turn("panx", 1, 1000) == 1 && st.map_x == 300 + 64 * 8, "pan: 64 px x 2^3: %g",
+          st.map_x);
+    CHECK(turn("panx", 1, 2000) == 1 && st.map_x == 1000, "pan: kept on the field: %g",
+          st.map_x);
+    CHECK(turn("panx", 1, 3000) == 0, "pan past the edge: no change");
+    st.map_level = 1;
+    CHECK(turn("panx", -1, 4000) == 1 && st.map_x == 1000 - 64 * 2, "pan back at level 1: %g",
+          st.map_x);
+    CHECK(turn("panx", -1, 4050) == 1 && NEAR(st.map_x, 872 - 64 * 2 * 2.0),
+          "pan: accelerated 2x at 50 ms: %g", st.map_x);
+    st.map_level = 3;
+    CHECK(turn("pany", -2, 0) == 1 && st.map_y == 300 - 2 * 10 * 8, "pan y: step 10: %g",
+          st.map_y);
+    CHECK(turn("zoom", 1, 0) == 1 && st.map_level == 2, "zoom in a level");
+    CHECK(turn("pany", 1, 1000) == 1 && st.map_y == 140 + 10 * 4, "pan y at level 2: %g",
+          st.map_y);
+    CHECK(turn("zoom", 5, 1000) == 1 && st.map_level == 0, "zoom in: clamped at 0");
+    CHECK(turn("zoom", 1, 2000) == 0, "zoom in at 0: no change");
+    CHECK(turn("zoom", -1000000, 3000) == 1 && st.map_level == 3, "zoom out: clamped at 3");
+    CHECK(press("zoomin") == 1 && st.map_level == 2, "button: a level in");
+    st.map_level = 0;
+    CHECK(press("zoomin") == 1 && st.map_level == 3, "button at 0: the whole field");
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -260,6 +294,7 @@ int main(int argc, char **argv)
     selection();
     presets_and_overlay();
     surface();
+    map_actions();
     bad_events();
     if (failures)
         fprintf(stderr, "test_input_map: %d failure(s)\n", failures);

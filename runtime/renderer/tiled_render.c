@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-int hfs_tile_halo(const hfs_field *f, const hfs_lighting *l)
+double hfs_tile_eps(const hfs_lighting *l)
 {
     double eps = l->has_env ? HFS_TILE_SKY_EPS : 1.5707963267948966;
     for (int k = 0; k < l->n_key; ++k)
@@ -17,7 +17,13 @@ int hfs_tile_halo(const hfs_field *f, const hfs_lighting *l)
             eps = fmin(eps, l->key[k].elev - l->key[k].alpha);
     for (int k = 0; k < l->n_local; ++k)
         if (!l->local[k].disabled)
-            return -1;
+            return 0.0;
+    return eps > 0.0 ? eps : 0.0;
+}
+
+int hfs_tile_halo(const hfs_field *f, const hfs_lighting *l)
+{
+    const double eps = hfs_tile_eps(l);
     if (!(eps > 0.0))
         return -1;
     double lo, hi;

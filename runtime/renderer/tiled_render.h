@@ -39,6 +39,12 @@ typedef int (*hfs_tile_frame_fn)(void *ctx, const hfs_field *f, const hfs_lighti
 int hfs_tiled_render(const hfs_field *f, const hfs_lighting *l, int max_side,
                      hfs_tile_frame_fn render, void *ctx, hfs_image *out, hfs_error *err);
 
+/* The lowest elevation (radians) terrain must rise to for lighting l to
+ * see it, as above (the environment's eps, each key light's e - a); 0
+ * when terrain at any elevation matters (a local light, a key light at or
+ * below its own radius). */
+double hfs_tile_eps(const hfs_lighting *l);
+
 /* The halo (texels) f's relief needs under lighting l, as above; -1 when
  * no halo short of the whole field is enough (a key light at or below
  * its own radius, a local light). */
