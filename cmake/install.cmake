@@ -1,9 +1,12 @@
-# install.cmake — what `cmake --install` puts where (docs/INSTALL.md), in four
+# install.cmake — what `cmake --install` puts where (docs/INSTALL.md), in five
 # components, one Debian package each (cmake/package.cmake):
-#   runtime  libhfshade.so.MAJOR.MINOR.PATCH and its SONAME link   libhfshade0
-#   dev      include/hfshade/{hfshade.h,hfshade_inputs.h,hfshade_version.h},
-#            the .so link, lib/pkgconfig/hfshade.pc, lib/cmake/hfshade/
-#                                                                  libhfshade-dev
+#   runtime  libhfshade.so.MAJOR.MINOR.PATCH and its SONAME link,
+#            libhfshade_gis.so.* likewise (the GIS products)       libhfshade0
+#   dev      include/hfshade/{hfshade.h,hfshade_inputs.h,hfshade_envmap.h,
+#            hfshade_version.h,hfshade_gis.h}, the .so links,
+#            lib/pkgconfig/hfshade.pc, lib/cmake/hfshade/          libhfshade-dev
+#   python   lib/python3/dist-packages/hfshade/ (Debian's path for
+#            modules of every Python 3), docs/PYTHON.md's example   python3-hfshade
 #   tools    bin/{hfshade,hfgen,hfbench}                           hfshade-tools
 #   kiosk    bin/{hfshade-kiosk,hfs-capture-info,hfs-capture-synth},
 #            SYSCONFDIR/hfshade/{kiosk.ini,demo.ini}, the systemd unit,
@@ -22,6 +25,23 @@ install(TARGETS hfshade_shared EXPORT hfshadeTargets
                 NAMELINK_COMPONENT dev)
 install(FILES ${HFS_PUBLIC_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hfshade
         COMPONENT dev)
+# libhfshade_gis (tools/gis_shared.cmake) beside it; its header with the others.
+install(TARGETS hfshade_gis_shared
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime
+                NAMELINK_COMPONENT dev)
+install(FILES ${HFS_GIS_PUBLIC_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hfshade
+        COMPONENT dev)
+
+# ---- python: the hfshade module (tools/python/hfshade, docs/PYTHON.md) -----
+# Debian's place for pure modules of every Python 3 (not the prefix's
+# python3.X/site-packages): PREFIX/lib/python3/dist-packages, so that the
+# package under /usr is on Debian's python3's path.  The module finds the
+# libraries by their SONAMEs.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/tools/python/hfshade
+        DESTINATION lib/python3/dist-packages COMPONENT python
+        FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/tools/examples/python/svf_geotiff.py
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/python3-hfshade/examples COMPONENT python)
 install(EXPORT hfshadeTargets NAMESPACE hfshade:: DESTINATION ${HFS_INSTALL_CMAKEDIR}
         COMPONENT dev)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/hfshadeConfig.cmake.in

@@ -1,10 +1,13 @@
-# package.cmake — `cpack -G DEB` in the build directory makes four Debian
+# package.cmake — `cpack -G DEB` in the build directory makes five Debian
 # packages, one per install component (cmake/install.cmake):
-#   libhfshade0     the shared library              Depends: from dpkg-shlibdeps
+#   libhfshade0     the shared libraries (libhfshade, libhfshade_gis)
+#                                                   Depends: from dpkg-shlibdeps
 #   libhfshade-dev  headers, .pc, CMake package     Depends: libhfshade0 (= version)
 #   hfshade-tools   hfshade, hfgen, hfbench         Depends: from dpkg-shlibdeps
 #   hfshade-kiosk   the kiosk, its unit, /etc/hfshade/ (conffiles), demo data
 #                                                   Depends: dpkg-shlibdeps, adduser
+#   python3-hfshade the Python module               Depends: libhfshade0 (= version),
+#                                                   python3-numpy, python3-cffi
 # The tools and the kiosk link the core statically (runtime/shared.cmake), so
 # they do not depend on libhfshade0.  Packages install under /usr, the
 # configuration in /etc and the unit in /lib/systemd/system whatever prefix
@@ -22,7 +25,7 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_INSTALL_PREFIX /usr)   # the prefix install rules see under cpack
 set(CPACK_SET_DESTDIR ON)        # ... and DESTDIR the staging directory
 set(CPACK_STRIP_FILES ON)
-set(CPACK_COMPONENTS_ALL runtime dev tools kiosk)
+set(CPACK_COMPONENTS_ALL runtime dev tools kiosk python)
 
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
@@ -55,6 +58,20 @@ set(CPACK_COMPONENT_DEV_DESCRIPTION
  Headers, pkg-config file (hfshade.pc) and CMake package
  (find_package(hfshade), target hfshade::hfshade) of libhfshade.")
 
+set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-hfshade)
+set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
+set(CPACK_DEBIAN_PYTHON_PACKAGE_ARCHITECTURE all)
+set(CPACK_DEBIAN_PYTHON_PACKAGE_SHLIBDEPS OFF)
+set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS
+    "libhfshade${PROJECT_VERSION_MAJOR} (= ${PROJECT_VERSION}), python3:any, python3-numpy, python3-cffi")
+set(CPACK_DEBIAN_PYTHON_PACKAGE_SUGGESTS "python3-gdal")
+set(CPACK_COMPONENT_PYTHON_DESCRIPTION
+"soft shadows on dynamic height fields - Python 3 module
+ The hfshade module renders height fields (numpy arrays in and out) and
+ computes the GIS rasters of DEMs (sky-view factor, horizon angle,
+ openness) and environment-map decompositions through libhfshade, with
+ the same numbers as the hfshade command.")
+
 set(CPACK_DEBIAN_TOOLS_PACKAGE_NAME hfshade-tools)
 set(CPACK_DEBIAN_TOOLS_PACKAGE_SUGGESTS "gnuplot-nox")
 set(CPACK_COMPONENT_TOOLS_DESCRIPTION
@@ -82,7 +99,7 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_
 file(STRINGS ${PROJECT_SOURCE_DIR}/CHANGELOG.md hfs_sections REGEX "^### ")
 string(TIMESTAMP hfs_date "%a, %d %b %Y %H:%M:%S +0000" UTC)
 set(hfs_changelog "")
-foreach(component runtime dev tools kiosk)
+foreach(component runtime dev tools kiosk python)
   string(TOUPPER ${component} upper)
   set(package ${CPACK_DEBIAN_${upper}_PACKAGE_NAME})
   set(text "${package} (${PROJECT_VERSION}) unstable; urgency=medium\n\n")

@@ -1,7 +1,8 @@
 # shared.cmake — hfshade_shared: the installed shared library libhfshade.so.MAJOR
 # (SONAME from project(hfshade VERSION ...)).  It is made of the objects of
 # the core static modules (hfshade_lib and what it links: hfs_gles, hfs_gl,
-# hfs_cpu, hfs_truth, hfs_core, hfs_sh), so nothing is
+# hfs_cpu, hfs_truth, hfs_core, hfs_sh; and hfs_envmap, whose environment-map
+# functions hfshade_envmap.h exports), so nothing is
 # compiled twice.  Everything is compiled with hidden visibility
 # (CMAKE_C_VISIBILITY_PRESET in the top-level CMakeLists.txt) and
 # position-independent: the library exports exactly the functions hfshade.h
@@ -14,7 +15,7 @@
 # interfaces (scene loader, SH, contexts) that the shared library hides.
 # Included from runtime/CMakeLists.txt after the module folders.
 
-set(HFS_CORE_MODULES hfshade_lib hfs_gles hfs_gl hfs_cpu hfs_truth hfs_core hfs_sh)
+set(HFS_CORE_MODULES hfshade_lib hfs_envmap hfs_gles hfs_gl hfs_cpu hfs_truth hfs_core hfs_sh)
 set(hfs_core_objects "")
 foreach(module IN LISTS HFS_CORE_MODULES)
   list(APPEND hfs_core_objects $<TARGET_OBJECTS:${module}>)
@@ -43,4 +44,5 @@ target_include_directories(hfshade_shared INTERFACE
   $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 # The public headers, installed to include/hfshade/ (cmake/install.cmake).
 set(HFS_PUBLIC_HEADERS ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.h ${CMAKE_CURRENT_SOURCE_DIR}/hfshade_inputs.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/hfshade_envmap.h
     ${HFS_GENERATED_INCLUDE}/hfshade_version.h CACHE INTERNAL "Installed headers")

@@ -15,7 +15,12 @@
 #      hfshade::hfshade, each run against the installed library (not the
 #      build tree's): versions agree, CPU render, GLES render or skip;
 #   4. tools/examples/embed_mesh built both ways too (it also links
-#      libEGL/libGLESv2 itself) and run: its PPM, or a skip without GLES.
+#      libEGL/libGLESv2 itself) and run: its PPM, or a skip without GLES;
+#   5. libhfshade_gis.so.VERSION (SONAME, needs libhfshade, exports exactly
+#      hfshade_gis.h's HFS_GIS_API functions) and the Python module
+#      (lib/python3/dist-packages/hfshade) imported by /usr/bin/python3 from
+#      the prefix, the libraries found by their SONAMEs, rendering and
+#      computing an SVF (skipped, said so, without numpy/cffi).
 set -euo pipefail
 build=$1 src=$2 version=$3
 major=${version%%.*}
@@ -34,6 +39,10 @@ libdir=$(sed -n 's/^libdir=${prefix}\///p' "$pc")   # lib or lib/<triplet>
 # 1. places
 for f in "$libdir/libhfshade.so.$version" "$libdir/libhfshade.so.$major" "$libdir/libhfshade.so" \
          include/hfshade/hfshade.h include/hfshade/hfshade_inputs.h include/hfshade/hfshade_version.h \
+         include/hfshade/hfshade_envmap.h include/hfshade/hfshade_gis.h \
+         "$libdir/libhfshade_gis.so.$version" "$libdir/libhfshade_gis.so.$major" "$libdir/libhfshade_gis.so" \
+         lib/python3/dist-packages/hfshade/__init__.py lib/python3/dist-packages/hfshade/_ffi.py \
+         share/doc/python3-hfshade/examples/svf_geotiff.py \
          "$libdir/pkgconfig/hfshade.pc" "$libdir/cmake/hfshade/hfshadeConfig.cmake" \
          "$libdir/cmake/hfshade/hfshadeConfigVersion.cmake" "$libdir/cmake/hfshade/hfshadeTargets.cmake" \
          bin/hfshade bin/hfgen bin/hfbench bin/hfshade-kiosk bin/hfs-capture-info bin/hfs-capture-synth \
@@ -111,5 +120,39 @@ for exe in "$tmp/embed-pc" "$tmp/embed-build/embed_mesh"; do
     [ "$(head -c 15 "$tmp/embed.ppm" | tr '\n' ' ')" = "P6 640 400 255 " ] ||
         bad "$exe: $tmp/embed.ppm is not a 640x400 PPM"
 done
+# 5. libhfshade_gis and the Python module
+gso=$prefix/$libdir/libhfshade_gis.so.$version
+readelf -d "$gso" | grep -q "SONAME.*\[libhfshade_gis.so.$major\]" || bad "libhfshade_gis: SONAME is not libhfshade_gis.so.$major"
+gneeded=$(readelf -d "$gso" | sed -n 's/.*NEEDED.*\[\(.*\)\]/\1/p' | sort | tr '\n' ' ')
+for n in $gneeded; do
+    case $n in
+        "libhfshade.so.$major"|libc.so.*|libm.so.*) ;;
+        *) bad "libhfshade_gis needs $n (only libhfshade, libc, libm allowed)" ;;
+    esac
+done
+nm -D --defined-only "$gso" | awk '{print $3}' | grep -vE '^(_init|_fini|_edata|_end|__bss_start)$' |
+    sort -u >"$tmp/gis_exported"
+tr '\n' ' ' <"$prefix/include/hfshade/hfshade_gis.h" | grep -oE 'HFS_GIS_API[^;{(]*[( ]' |
+    grep -oE 'hfs_[a-z0-9_]+ *\($' | tr -d ' (' | sort -u >"$tmp/gis_declared"
+[ -s "$tmp/gis_declared" ] || bad "no HFS_GIS_API declarations in hfshade_gis.h"
+diff "$tmp/gis_declared" "$tmp/gis_exported" >"$tmp/gis_symdiff" ||
+    { bad "libhfshade_gis exports differ from hfshade_gis.h (< declared only, > exported only):"; cat "$tmp/gis_symdiff"; }
+py=/usr/bin/python3
+if [ -x $py ] && $py -c 'import numpy, cffi' 2>/dev/null; then
+    (cd "$tmp" && env -u HFSHADE_LIBRARY -u HFSHADE_GIS_LIBRARY PYTHONDONTWRITEBYTECODE=1 \
+        PYTHONPATH="$prefix/lib/python3/dist-packages" LD_LIBRARY_PATH="$prefix/$libdir" $py -c "
+import numpy as np, hfshade
+assert hfshade.__file__.startswith('$prefix/'), hfshade.__file__
+assert hfshade.library_version() == '$version', hfshade.library_version()
+z = np.add.outer(np.sin(np.arange(24) / 3.0), np.cos(np.arange(32) / 4.0)).astype(np.float32)
+img = hfshade.render(z, backend='cpu', dx=2.0, key=[(30, 40, 2, 3.0)], env=np.ones(16))
+assert img.shape == (24, 32, 3) and np.isfinite(img).all() and img.max() > 0
+v = hfshade.svf(z, 2.0, backend='cpu')
+assert v.shape == (24, 32) and 0 < v.min() and v.max() <= 1
+print('install: python3-hfshade: render and svf from', hfshade.__file__)
+") || bad "the installed Python module"
+else
+    echo "install: python3-hfshade: not checked ($py without numpy or cffi)"
+fi
 [ $fail = 0 ] && echo "install: ok"
 exit $fail

@@ -2,11 +2,14 @@
 # package.sh BUILD_DIR VERSION — `cpack -G DEB` on the build (into a
 # temporary directory), then each package's contents and control fields
 # (cmake/package.cmake, docs/INSTALL.md):
-#   - exactly libhfshade0, libhfshade-dev, hfshade-tools, hfshade-kiosk;
+#   - exactly libhfshade0, libhfshade-dev, hfshade-tools, hfshade-kiosk,
+#     python3-hfshade (Architecture: all);
 #   - each holds its own files and only them, under /usr, /etc/hfshade and
 #     /lib/systemd/system (never /usr/local), no file in two packages, every
 #     ELF file stripped;
-#   - Depends: libhfshade-dev on libhfshade0 (= VERSION); libhfshade0 on
+#   - Depends: libhfshade-dev and python3-hfshade on libhfshade0 (= VERSION),
+#     python3-hfshade also on python3-numpy and python3-cffi (Suggests
+#     python3-gdal); libhfshade0 on
 #     libc6 and libegl1 only; the tools and the kiosk on the libraries they
 #     link (libpng, OpenEXR, inih; the kiosk also gpiod, evdev, DRM/GBM, X11,
 #     adduser); every dependency a package dpkg knows here;
@@ -26,12 +29,13 @@ bad() { echo "package: FAIL: $*"; fail=1; }
 cpack -G DEB -B "$tmp/out" --config "$build/CPackConfig.cmake" >"$tmp/cpack.log" 2>&1 ||
     { cat "$tmp/cpack.log"; echo "package: FAIL: cpack -G DEB"; exit 1; }
 arch=$(dpkg --print-architecture)
-names="libhfshade$major libhfshade-dev hfshade-tools hfshade-kiosk"
+names="libhfshade$major libhfshade-dev hfshade-tools hfshade-kiosk python3-hfshade"
+debarch() { case $1 in python3-*) echo all ;; *) echo "$arch" ;; esac; }
 got=$(cd "$tmp/out" && ls -- *.deb | sort | tr '\n' ' ')
-want=$(for n in $names; do echo "${n}_${version}_$arch.deb"; done | sort | tr '\n' ' ')
+want=$(for n in $names; do echo "${n}_${version}_$(debarch "$n").deb"; done | sort | tr '\n' ' ')
 [ "$got" = "$want" ] || { bad "packages: '$got', expected '$want'"; exit 1; }
 
-deb() { echo "$tmp/out/${1}_${version}_$arch.deb"; }
+deb() { echo "$tmp/out/${1}_${version}_$(debarch "$1").deb"; }
 files() { dpkg-deb -c "$(deb "$1")" | awk '$1 !~ /^d/ {print $6}' | sed 's|^\./|/|' | sort; }
 depends() { dpkg-deb -f "$(deb "$1")" Depends; }
 expect_files() { # PACKAGE FILE... : exactly these files (and links), and its doc files
@@ -43,9 +47,11 @@ expect_files() { # PACKAGE FILE... : exactly these files (and links), and its do
 
 libdir=$(files libhfshade-dev | sed -n 's|^\(.*\)/pkgconfig/hfshade.pc$|\1|p')
 case $libdir in /usr/lib|/usr/lib/*-linux-*) ;; *) bad "libdir '$libdir' is not /usr/lib[/triplet]" ;; esac
-expect_files "libhfshade$major" "$libdir/libhfshade.so.$major" "$libdir/libhfshade.so.$version"
+expect_files "libhfshade$major" "$libdir/libhfshade.so.$major" "$libdir/libhfshade.so.$version" \
+    "$libdir/libhfshade_gis.so.$major" "$libdir/libhfshade_gis.so.$version"
 expect_files libhfshade-dev /usr/include/hfshade/hfshade.h /usr/include/hfshade/hfshade_inputs.h \
-    /usr/include/hfshade/hfshade_version.h \
+    /usr/include/hfshade/hfshade_version.h /usr/include/hfshade/hfshade_envmap.h \
+    /usr/include/hfshade/hfshade_gis.h "$libdir/libhfshade_gis.so" \
     "$libdir/libhfshade.so" "$libdir/pkgconfig/hfshade.pc" \
     "$libdir/cmake/hfshade/hfshadeConfig.cmake" "$libdir/cmake/hfshade/hfshadeConfigVersion.cmake" \
     "$libdir/cmake/hfshade/hfshadeTargets.cmake" \
@@ -56,12 +62,20 @@ expect_files hfshade-kiosk /usr/bin/hfshade-kiosk /usr/bin/hfs-capture-info /usr
     /usr/share/hfshade/demo.ini /usr/share/hfshade/demo-objects.txt \
     /usr/share/hfshade/jacksboro.png /usr/share/hfshade/courtyard.exr \
     /usr/share/doc/hfshade-kiosk/KIOSK.md /usr/share/doc/hfshade-kiosk/INPUT.md
+py=/usr/lib/python3/dist-packages/hfshade
+expect_files python3-hfshade $py/__init__.py $py/_errors.py $py/_ffi.py $py/envmap.py $py/gis.py \
+    $py/render.py /usr/share/doc/python3-hfshade/examples/svf_geotiff.py
 dups=$(for n in $names; do files "$n"; done | sort | uniq -d)
 [ -z "$dups" ] || bad "files in two packages: $dups"
 
 # Depends
 dev_dep=$(depends libhfshade-dev)
 [ "$dev_dep" = "libhfshade$major (= $version)" ] || bad "libhfshade-dev Depends: '$dev_dep'"
+py_dep=$(depends python3-hfshade)
+[ "$py_dep" = "libhfshade$major (= $version), python3:any, python3-numpy, python3-cffi" ] ||
+    bad "python3-hfshade Depends: '$py_dep'"
+[ "$(dpkg-deb -f "$(deb python3-hfshade)" Suggests)" = python3-gdal ] ||
+    bad "python3-hfshade Suggests: '$(dpkg-deb -f "$(deb python3-hfshade)" Suggests)'"
 lib_dep=$(depends "libhfshade$major")
 for d in $(echo "$lib_dep" | tr ',' '\n' | sed 's/(.*//; s/ //g'); do
     case $d in libc6|libegl1) ;; *) bad "libhfshade$major depends on $d (only libc6, libegl1)" ;; esac
@@ -77,7 +91,7 @@ for need in adduser libgpiod libevdev libdrm libgbm libx11; do
 done
 for n in $names; do
     for d in $(depends "$n" | tr ',|' '\n\n' | sed 's/(.*//; s/ //g'); do
-        case $d in libhfshade$major) continue ;; esac
+        case $d in libhfshade$major|python3:any) continue ;; esac
         dpkg-query -W "$d" >/dev/null 2>&1 || bad "$n depends on $d, a package dpkg does not know here"
     done
     echo "package: $n Depends: $(depends "$n")"

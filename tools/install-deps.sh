@@ -16,11 +16,14 @@ set -eu
 # parallel runs the jobs of `hfshade tiles` (docs/GIS.md "Many machines";
 # tests/test_gis_tiles.c); slurm-wlm and munge a single-node Slurm for
 # tests/slurm_tiles.sh (started by the test, in a folder of its own).
+# python3-numpy, python3-cffi and python3-gdal are the Python module's
+# (tools/python/hfshade, docs/PYTHON.md) and its tests' (tests/python.cmake).
 PKGS="build-essential cmake pkg-config libpng-dev libinih-dev libstb-dev
       libopenexr-dev libegl-dev libgles-dev libosmesa6-dev libegl-mesa0
       libgl1-mesa-dri glslang-tools clang libclang-rt-14-dev llvm gnuplot-nox
       libx11-dev libgbm-dev libdrm-dev xvfb xauth libgpiod-dev libevdev-dev umockdev
-      linux-libc-dev libgdal-dev dpkg-dev file parallel slurm-wlm munge"
+      linux-libc-dev libgdal-dev dpkg-dev file parallel slurm-wlm munge
+      python3-numpy python3-cffi python3-gdal"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"

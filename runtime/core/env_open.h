@@ -38,10 +38,7 @@
 #ifndef HFS_ENV_OPEN_H
 #define HFS_ENV_OPEN_H
 
-#include "hfshade.h"
-
-#define HFS_ENV_OPEN_N 33
-#define HFS_ENV_OPEN_FLOATS (HFS_ENV_OPEN_N * HFS_ENV_OPEN_N * 3)
+#include "hfshade_envmap.h" /* HFS_ENV_OPEN_N, HFS_ENV_OPEN_FLOATS */
 
 /* Writes D for the w x h linear RGB map (SPEC's equirect, finite texels)
  * and sh, the map's order-4 projection (hfs_sh_project_equirect), into

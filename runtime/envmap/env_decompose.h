@@ -43,58 +43,15 @@
 #ifndef HFS_ENV_DECOMPOSE_H
 #define HFS_ENV_DECOMPOSE_H
 
-#include "hfshade.h"
+#include "hfshade_envmap.h"
 
-#define HFS_ENV_MAX_LIGHTS HFS_MAX_KEY_LIGHTS
+/* The options, the lights found and the decomposition's result
+ * (hfs_env_decompose_opts, hfs_env_light, hfs_env_decomp), and
+ * hfs_env_decompose, hfs_env_decompose_defaults, hfs_env_decomp_keys are
+ * public and exported: hfshade_envmap.h declares and documents them. */
+
 /* Largest map taken: 2^28 texels (3 GiB of float RGB, e.g. 23170^2). */
 #define HFS_ENVMAP_DECOMP_MAX_TEXELS (1LL << 28)
-
-typedef struct hfs_env_decompose_opts {
-    int max_lights;     /* 0..HFS_ENV_MAX_LIGHTS; default 4                 */
-    double min_share;   /* stop below this share of the map's energy;
-                           default 0.02 (the paper's Weber fraction)        */
-    double contrast;    /* a block is a light candidate only where its mean
-                           exceeds contrast x its surround's; default 4     */
-    double max_radius;  /* radians; a candidate wider than this ends the
-                           search (0, the default: no limit).  A renderer
-                           that shades the residual map itself (env-shade =
-                           map) resolves broad lights better than a uniform
-                           disk does: it keeps only what its slices cannot */
-    int threads;        /* coarse pass workers, 0 = all cores               */
-} hfs_env_decompose_opts;
-
-/* One extracted light.  energy[c] = radiance[c] * 2 pi (1 - cos alpha) is
- * the energy removed from the map (sum of L dOmega). */
-typedef struct hfs_env_light {
-    double phi, elev, alpha;     /* radians (SPEC directions)                */
-    float radiance[3];           /* linear RGB, >= 0                         */
-    double energy[3];
-    double share;                /* luminance energy / the map's             */
-    int id;                      /* tracker identity (0 without a tracker)   */
-} hfs_env_light;
-
-typedef struct hfs_env_decomp {
-    int n_lights;
-    hfs_env_light light[HFS_ENV_MAX_LIGHTS];
-    double residual_sh[3][HFS_SH_COEFFS]; /* the residual's projection      */
-    double total_energy[3];      /* the input map's integral, per channel    */
-    double residual_energy[3];   /* the residual map's integral              */
-} hfs_env_decomp;
-
-void hfs_env_decompose_defaults(hfs_env_decompose_opts *o);
-
-/* Decomposes the w x h map rgb (modified in place into the residual).
- * o may be NULL (defaults).  Errors (0 or a negative hfs_status, one line
- * naming `name`): a size below 1x1, a NaN or infinite texel ("sky.pfm:
- * texel (3, 7) G is NaN"), a texel below -1% of the mean ("sky.pfm: texel
- * (3, 7) G is -0.5, below -0.01 x the map's mean radiance 1"), an option
- * out of range.  On error
- * *out is zeroed and rgb untouched. */
-int hfs_env_decompose(float *rgb, int w, int h, const hfs_env_decompose_opts *o,
-                      const char *name, hfs_env_decomp *out, hfs_error *err);
-
-/* The lights as key lights (from_env = 1), at most max; returns the count. */
-int hfs_env_decomp_keys(const hfs_env_decomp *d, hfs_key_light *keys, int max);
 
 /* ---- temporal stability (a live probe) --------------------------------------- */
 

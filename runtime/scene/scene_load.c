@@ -15,6 +15,7 @@
 
 #include "env_decompose.h"
 #include "env_open.h"
+#include "hfshade_envmap.h"
 #include "sh.h"
 
 /* Serials of loaded heights (hfs_renderer_set_field_serial): unique in the
@@ -33,96 +34,88 @@ void hfs_scene_inputs_free(hfs_scene_inputs *in)
     memset(in, 0, sizeof *in);
 }
 
-int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *err)
+/* The build options of the scene's env-map (env-lights, env-shade,
+ * truth-env, nphi_env). */
+static hfs_env_lighting_opts env_opts(const hfs_scene *s)
 {
-    hfs_lighting l;
     hfs_quality q;
-    hfs_scene_lighting(s, in->has_env_map ? (const double(*)[HFS_SH_COEFFS])in->env_map_sh : NULL,
-                       &l);
     hfs_scene_quality(s, &q);
-    /* The map's lights after the scene's, turned with the residual (the
-     * backends rotate env_sh by env_rotate about +z: phi + angle). */
-    for (int i = 0; i < in->n_env_keys && l.n_key < HFS_MAX_KEY_LIGHTS; ++i) {
-        hfs_key_light k = in->env_keys[i];
-        k.phi = fmod(k.phi + l.env_rotate, 6.283185307179586);
-        if (k.phi < 0.0)
-            k.phi += 6.283185307179586;
-        l.key[l.n_key++] = k;
-    }
-    l.albedo_map = in->albedo_map; /* checked by its loader */
-    /* The field does not change here: hfs_scene_inputs_load checked it. */
-    int rc = hfs_validate_lighting(&l, err);
-    if (!rc)
-        rc = hfs_validate_quality(&q, err);
-    if (rc)
-        return rc;
-    /* The map after the check: its loader found every pixel finite, and a
-     * relight (a knob's frame) must not scan millions of them again. */
-    l.env_map = s->truth_env_sh ? NULL : in->env_map; /* NULL: no map */
-    l.env_map_width = in->env_map_width;
-    l.env_map_height = in->env_map_height;
-    if (in->has_env_open && !s->env_shade_sh) {
-        l.env_open = in->env_open;
-        l.env_shade_map = in->env_residual ? in->env_residual : in->env_map;
-    }
-    in->lighting = l;
-    in->quality = q;
-    return HFS_OK;
+    const hfs_env_lighting_opts o = {.lights = s->env_lights, .n_scene_keys = s->n_key,
+                                     .shade_sh = s->env_shade_sh, .truth_sh = s->truth_env_sh,
+                                     .nphi_env = q.nphi_env};
+    return o;
 }
 
-/* The open sky beyond order 4 (env_open.h) of rgb (the map or its
- * residual), whose projection in->env_map_sh already holds. */
-static int env_open_table(const float *rgb, const hfs_envmap *env, hfs_scene_inputs *in,
-                          hfs_error *err)
+/* A view of the state kept in in (the kiosk's camera sky may have
+ * replaced it: no open sky then). */
+static hfs_env_lighting env_state(const hfs_scene_inputs *in)
 {
-    int rc = hfs_env_open_build(rgb, env->width, env->height,
-                                (const double(*)[HFS_SH_COEFFS])in->env_map_sh, in->env_open, err);
-    in->has_env_open = !rc;
-    return rc;
+    hfs_env_lighting e;
+    memset(&e, 0, sizeof e);
+    memcpy(e.sh, in->env_map_sh, sizeof e.sh);
+    e.n_keys = in->n_env_keys;
+    memcpy(e.keys, in->env_keys, sizeof e.keys);
+    e.residual = in->env_residual;
+    e.open = in->has_env_open ? (float *)in->env_open : NULL;
+    return e;
 }
 
-/* The map's SH, or with env-lights its lights + the residual's SH.  The
- * lights fit beside the scene's own key lights (HFS_MAX_KEY_LIGHTS in all);
- * auto takes the decomposition's defaults (up to 4, 2% of the energy).
- * The decomposition works on a copy: env stays the map as loaded (the
- * truth integrates the whole map), the copy becomes the residual the other
+/* The map's SH, or with env-lights its lights + the residual's SH, and
+ * the open sky beyond order 4 (env_open.h) of the map or residual:
+ * hfs_env_lighting_build (hfshade_envmap.h), kept in in.  The
+ * decomposition works on a copy: env stays the map as loaded (the truth
+ * integrates the whole map), the copy becomes the residual the other
  * backends shade from (env-shade = map). */
 static int env_map_light(const hfs_scene *s, const hfs_envmap *env, hfs_scene_inputs *in,
                          hfs_error *err)
 {
-    if (!s->env_lights) {
-        hfs_sh_project_equirect(env->rgb, env->width, env->height, in->env_map_sh);
-        return env_open_table(env->rgb, env, in, err);
+    const hfs_env_lighting_opts o = env_opts(s);
+    hfs_env_lighting e;
+    const int rc = hfs_env_lighting_build(env->rgb, env->width, env->height, &o, s->env_map, &e,
+                                          err);
+    if (rc)
+        return rc;
+    memcpy(in->env_map_sh, e.sh, sizeof in->env_map_sh);
+    in->n_env_keys = e.n_keys;
+    memcpy(in->env_keys, e.keys, sizeof in->env_keys);
+    memcpy(in->env_open, e.open, sizeof in->env_open);
+    in->has_env_open = 1;
+    in->env_residual = e.residual; /* taken over */
+    e.residual = NULL;
+    hfs_env_lighting_free(&e);
+    return HFS_OK;
+}
+
+int hfs_scene_inputs_relight(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *err)
+{
+    hfs_lighting l;
+    hfs_quality q;
+    hfs_scene_lighting(s, NULL, &l);
+    hfs_scene_quality(s, &q);
+    l.albedo_map = in->albedo_map; /* checked by its loader */
+    /* The map's lights after the scene's (turned with the residual), its
+     * SH, the map and its open sky: hfs_env_lighting_apply, as every
+     * program of the library does it (hfshade_envmap.h). */
+    if (in->has_env_map) {
+        const hfs_env_lighting_opts o = env_opts(s);
+        hfs_env_lighting e = env_state(in);
+        hfs_env_lighting_apply(&e, &o, in->env_map, in->env_map_width, in->env_map_height, &l);
     }
-    hfs_env_decompose_opts o;
-    hfs_env_decompose_defaults(&o);
-    if (s->env_lights > 0)
-        o.max_lights = s->env_lights;
-    if (o.max_lights > HFS_MAX_KEY_LIGHTS - s->n_key)
-        o.max_lights = HFS_MAX_KEY_LIGHTS - s->n_key;
-    if (!s->env_shade_sh) { /* the slices shade what is as wide as their wedge */
-        hfs_quality q;
-        hfs_scene_quality(s, &q);
-        o.max_radius = 3.14159265358979323846 / q.nphi_env;
-    }
-    const size_t n = (size_t)env->width * (size_t)env->height * 3;
-    float *work = malloc(n * sizeof *work);
-    if (!work)
-        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory for its decomposition",
-                        s->env_map);
-    memcpy(work, env->rgb, n * sizeof *work);
-    hfs_env_decomp d;
-    int rc = hfs_env_decompose(work, env->width, env->height, &o, s->env_map, &d, err);
-    if (!rc) {
-        in->n_env_keys = hfs_env_decomp_keys(&d, in->env_keys, HFS_MAX_KEY_LIGHTS);
-        memcpy(in->env_map_sh, d.residual_sh, sizeof in->env_map_sh);
-        rc = env_open_table(work, env, in, err); /* of the residual */
-    }
-    if (rc || in->n_env_keys == 0)
-        free(work); /* no light: the residual is the map */
-    else
-        in->env_residual = work;
-    return rc;
+    /* The field does not change here: hfs_scene_inputs_load checked it.
+     * The maps after the check: their loader found every pixel finite,
+     * and a relight (a knob's frame) must not scan millions of them
+     * again. */
+    hfs_lighting v = l;
+    v.env_map = v.env_shade_map = NULL;
+    v.env_open = NULL;
+    int rc = hfs_validate_lighting(&v, err);
+    if (!rc)
+        rc = hfs_validate_quality(&q, err);
+    if (rc)
+        return rc;
+    in->lighting = l;
+    in->quality = q;
+    return HFS_OK;
 }
 
 int hfs_scene_inputs_load(const hfs_scene *s, hfs_scene_inputs *in, hfs_error *err)
