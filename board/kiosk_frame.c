@@ -145,8 +145,8 @@ int kiosk_frame_prefetch(kiosk_frame *f, const hfs_scene_inputs *in, hfs_error *
     hfs_renderer_set_amortize(f->renderer, 0); /* a tile is kept: lit whole */
     const int rc = kiosk_map_prefetch(f->map, f->renderer, in, err);
     hfs_renderer_set_amortize(f->renderer, f->amortize);
-    f->prefetching = rc == 1;
-    return rc < 0 ? rc : HFS_OK;
+    f->prefetching = rc > 0;
+    return rc < 0 ? rc : rc == 2;
 }
 
 /* The render (w x h) and the picture: a field larger than any display's
@@ -183,7 +183,8 @@ static void draw_overlay(kiosk_frame *f, const char *preset)
     if (f->map && n > 0 && (size_t)n < sizeof text) { /* the map's level, tiles lit now */
         kiosk_map_stats ms;
         kiosk_map_stats_get(f->map, &ms);
-        snprintf(text + n, sizeof text - (size_t)n, " L%d %d tiles", ms.level, ms.rendered);
+        snprintf(text + n, sizeof text - (size_t)n, " L%d %d tiles %d coarse", ms.level,
+                 ms.rendered, ms.coarse);
     }
     const hfs_image *pic = f->shrink > 1 ? &f->small : &f->img;
     const int w = pic->width, h = pic->height;

@@ -163,27 +163,31 @@ static void capture_stats(kiosk *k, int heights, int sky)
         kiosk_stats_sky(k->stats, k->capture_env, &k->frame);
 }
 
-/* One tile the map's view wants ahead (none: nothing to do).  A tile that
- * fails is logged and the fetching stops; the next frame renders what it
- * lacks itself, and fails there if it must. */
-static void prefetch(kiosk *k)
+/* One tile the map's view wants (none: nothing to do); one of the view's
+ * own is shown at once.  A tile that fails is logged and the fetching
+ * stops; the next frame renders what it lacks itself, and fails there if
+ * it must.  -1: a frame could not be shown (fatal). */
+static int prefetch(kiosk *k)
 {
     if (!k->frame.prefetching)
-        return;
+        return 0;
     hfs_error err = {{0}};
     kiosk_map_stats before;
     kiosk_map_stats_get(k->frame.map, &before);
-    if (kiosk_frame_prefetch(&k->frame, &k->world->in, &err)) {
+    const int rc = kiosk_frame_prefetch(&k->frame, &k->world->in, &err);
+    if (rc < 0) {
         kiosk_log(KIOSK_WARNING, "map: a tile ahead of the view: %s", err.msg);
         k->frame.prefetching = 0;
-        return;
+        return 0;
     }
     kiosk_map_stats after;
     kiosk_map_stats_get(k->frame.map, &after);
-    if (after.prefetched > before.prefetched) {
+    if (after.prefetched > before.prefetched)
         kiosk_stats_prefetch(k->stats, &k->frame);
-        kiosk_stats_flush(k->stats);
-    }
+    if (rc == 1 && show(k, 0)) /* a tile of the view, shown coarse until now */
+        return -1;
+    kiosk_stats_flush(k->stats);
+    return 0;
 }
 
 /* Relight, render, present, then the stats of the batch.  -1: fatal.
@@ -509,8 +513,10 @@ int kiosk_run(kiosk *k)
             rc = 1;
             break;
         }
-        if (k->frame.presented == presented)
-            prefetch(k); /* idle: a tile of the map ahead of its view */
+        if (k->frame.presented == presented && prefetch(k)) { /* idle: a tile of the map */
+            rc = 1;
+            break;
+        }
     }
     const int pid = (int)k->check.pid;
     if (kiosk_check_stop(&k->check)) /* a reload still being checked is dropped */

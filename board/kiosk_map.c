@@ -301,6 +301,42 @@ static void compose(const kiosk_map *m, const kiosk_map_tile *t, int ox, int oy,
                (size_t)(x1 - x0) * 3 * sizeof *out->rgb);
 }
 
+/* A stand-in for the view's tile (l, tx, ty), not lit yet: the lit tiles of
+ * the nearest coarser level that has every one covering it, each of their
+ * texels shown on the 2^k x 2^k it covers.  1 when one was found. */
+static int compose_coarser(const kiosk_map *m, int l, int tx, int ty, int ox, int oy,
+                           hfs_image *out)
+{
+    enum { MOST = 4 }; /* coarse tiles a side: (1024 >> 1) + 1 texels over tiles >= 256 */
+    const kiosk_map_level *v = &m->lv[l];
+    const int x0 = max_i(tx * v->tile, ox), x1 = min_i(min_i((tx + 1) * v->tile, v->w),
+                                                       ox + out->width);
+    const int y0 = max_i(ty * v->tile, oy), y1 = min_i(min_i((ty + 1) * v->tile, v->h),
+                                                       oy + out->height);
+    for (int k = 1; l + k < m->n_levels; ++k) {
+        const int T = m->lv[l + k].tile;
+        const int cx0 = (x0 >> k) / T, cy0 = (y0 >> k) / T;
+        const int ncx = ((x1 - 1) >> k) / T - cx0 + 1, ncy = ((y1 - 1) >> k) / T - cy0 + 1;
+        const kiosk_map_tile *c[MOST][MOST] = {{NULL}};
+        int all = ncx <= MOST && ncy <= MOST;
+        for (int j = 0; all && j < ncy; ++j)
+            for (int i = 0; all && i < ncx; ++i)
+                all = (c[j][i] = find((kiosk_map *)m, l + k, cx0 + i, cy0 + j)) != NULL;
+        if (!all)
+            continue;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                const int px = x >> k, py = y >> k;
+                const kiosk_map_tile *t = c[py / T - cy0][px / T - cx0];
+                memcpy(out->rgb + ((size_t)(y - oy) * out->width + (size_t)(x - ox)) * 3,
+                       t->rgb + ((size_t)(py - t->ty * T) * t->w + (size_t)(px - t->tx * T)) * 3,
+                       3 * sizeof *out->rgb);
+            }
+        return 1;
+    }
+    return 0;
+}
+
 int kiosk_map_frame(kiosk_map *m, hfs_renderer *r, const hfs_scene_inputs *in, double cx,
                     double cy, int level, hfs_image *out, hfs_error *err)
 {
@@ -316,11 +352,15 @@ int kiosk_map_frame(kiosk_map *m, hfs_renderer *r, const hfs_scene_inputs *in, d
     if ((rc = want(m, level, cx, cy, err)))
         return rc;
     m->view_level = level, m->view_x = cx, m->view_y = cy;
-    m->rendered = 0;
+    m->rendered = 0, m->coarse = 0;
     view_origin(m, level, cx, cy, &ox, &oy);
     for (int k = 0; k < m->n_visible; ++k) {
         const kiosk_map_want *w = &m->want[k];
         kiosk_map_tile *t = find(m, w->level, w->tx, w->ty);
+        if (!t && compose_coarser(m, w->level, w->tx, w->ty, ox, oy, out)) {
+            ++m->coarse; /* lit next, by kiosk_map_prefetch */
+            continue;
+        }
         if (!t) { /* rendered even past the budget (its tiles and the view's fit it) */
             (void)make_room(m, (size_t)m->lv[level].tile * m->lv[level].tile * 3 * sizeof(float));
             if ((rc = render_tile(m, r, w->level, w->tx, w->ty, err)))
@@ -339,7 +379,7 @@ int kiosk_map_prefetch(kiosk_map *m, hfs_renderer *r, const hfs_scene_inputs *in
     int rc = follow_inputs(m, in, err); /* a relit world: nothing is wanted until a frame */
     if (rc)
         return rc;
-    for (int k = m->n_visible; k < m->n_want; ++k) {
+    for (int k = 0; k < m->n_want; ++k) {
         const kiosk_map_want *w = &m->want[k];
         if (find(m, w->level, w->tx, w->ty))
             continue;
@@ -351,7 +391,7 @@ int kiosk_map_prefetch(kiosk_map *m, hfs_renderer *r, const hfs_scene_inputs *in
         if ((rc = render_tile(m, r, w->level, w->tx, w->ty, err)))
             return rc;
         ++m->prefetched;
-        return 1;
+        return k < m->n_visible ? 2 : 1;
     }
     return 0;
 }
@@ -362,6 +402,7 @@ void kiosk_map_stats_get(const kiosk_map *m, kiosk_map_stats *s)
                            .x = m->view_x,
                            .y = m->view_y,
                            .rendered = m->rendered,
+                           .coarse = m->coarse,
                            .cached = m->n_tiles,
                            .bytes = m->bytes,
                            .budget = m->budget,

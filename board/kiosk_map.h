@@ -26,12 +26,17 @@
  * the tiles of the view and of a ring one tile wide around it, and of the
  * view one level in and one out, at the level whose tiles take the most
  * bytes.  So memory is bounded by the display and the halo, not by the
- * field.  A frame composes the view from the cache and renders at once
- * only the tiles it lacks (counted: `rendered`).  kiosk_map_prefetch
- * renders one missing tile a call, in this order: the ring around the view
- * (the nearest to its centre first), the view one level in, one level out;
- * so a pan step of up to a tile, or a zoom step, finds its tiles lit.  A
- * tile the budget needs back is the one wanted longest ago.
+ * field.  A frame composes the view from the cache; a tile it lacks is
+ * shown from the nearest coarser level whose tiles cover it (`coarse`:
+ * each of their texels on the 2^k x 2^k texels it covers), or, where no
+ * level has it, rendered at once (`rendered`: the one stall, a fresh map's
+ * or a relit one's first frame).  kiosk_map_prefetch renders one missing
+ * tile a call, in this order: the view's own (each one means the view is
+ * to be shown again), the ring around the view (the nearest to its centre
+ * first), the view one level in, one level out; so a pan step of up to a
+ * tile, or a zoom step, finds its tiles lit, and a longer one shows the
+ * coarser level at once and sharpens tile by tile.  A tile the budget
+ * needs back is the one wanted longest ago.
  *
  * A change of the lighting or the quality (a knob) drops every tile; new
  * heights (another field, a capture's: the serial) rebuild the levels too.
@@ -70,8 +75,9 @@ void kiosk_map_view_size(const kiosk_map *m, int level, int *w, int *h);
 int kiosk_map_frame(kiosk_map *m, hfs_renderer *r, const hfs_scene_inputs *in, double cx,
                     double cy, int level, hfs_image *out, hfs_error *err);
 
-/* Renders the first tile the last view wants and lacks (above): 1 when it
- * rendered one, 0 when none is wanted (or the budget holds no more). */
+/* Renders the first tile the last view wants and lacks (above): 2 when it
+ * rendered one of the view's own (show the view again), 1 one ahead of it,
+ * 0 when none is wanted (or the budget holds no more). */
 int kiosk_map_prefetch(kiosk_map *m, hfs_renderer *r, const hfs_scene_inputs *in,
                        hfs_error *err);
 
@@ -79,6 +85,7 @@ typedef struct kiosk_map_stats {
     int level;             /* of the last frame                            */
     double x, y;           /* its centre, texels of the field (as asked)   */
     int rendered;          /* tiles the last frame rendered itself         */
+    int coarse;            /* tiles it showed from a coarser level         */
     int cached;            /* tiles held now                               */
     size_t bytes, budget;  /* the lit tiles' bytes, and the budget          */
     size_t level_bytes;    /* the levels above 0 (heights, albedo)         */

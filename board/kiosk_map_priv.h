@@ -59,7 +59,7 @@ struct kiosk_map {
     float *wz, *walb;          /* a window's heights and albedo              */
     hfs_image wimg;            /* its render                                  */
     size_t wcap;
-    int rendered;
+    int rendered, coarse;
     long prefetched;
     double last_tile_ms;
 };

@@ -14,14 +14,15 @@
  *   capture SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED SUPERSEDED
  *   sky    SEQ T_FRAME_NS T_PRESENT_NS LATENCY_NS CPU_NS DROPPED SUPERSEDED
  *          NLIGHTS [ID PHI_DEG ELEV_DEG]...
- *   map    N LEVEL X Y RENDERED CACHED BYTES BUDGET LEVEL_BYTES
+ *   map    N LEVEL X Y RENDERED CACHED BYTES BUDGET LEVEL_BYTES COARSE
  *   prefetch T_NS LEVEL TILE_MS CACHED BYTES
  *   exit   T_NS CPU_US FRAMES
  *
  * "map" follows the frame it describes when the kiosk shows a map
  * (kiosk_map.h): the level, the view's centre (texels of the field), the
- * tiles that frame rendered itself (0: every tile was lit ahead), the
- * tiles and bytes held, the budget, the levels' bytes.  "prefetch": a tile
+ * tiles that frame rendered itself (0: every tile was lit ahead, or shown
+ * from a coarser level), the tiles and bytes held, the budget, the levels'
+ * bytes, the tiles shown from a coarser level.  "prefetch": a tile
  * rendered ahead of the view, its render time, the cache after it.
  * "frame" is written after hfs_display_present returned, then one "event"
  * line per input event of the batch that frame shows (CHANGED 1 when the
@@ -94,7 +95,7 @@ kiosk_stats *kiosk_stats_open(const char *path, hfs_error *err)
             "# frame N T_PRESENT_NS RENDER_MS PASSES_RAN PASSES_TOTAL EVENTS CPU_US\n"
             "# event T_EVENT_NS T_PRESENT_NS LATENCY_NS FRAME CHANGED CONTROL\n"
             "# reload T_NS OK CPU_US\n"
-            "# map N LEVEL X Y RENDERED CACHED BYTES BUDGET LEVEL_BYTES\n"
+            "# map N LEVEL X Y RENDERED CACHED BYTES BUDGET LEVEL_BYTES COARSE\n"
             "# prefetch T_NS LEVEL TILE_MS CACHED BYTES\n"
             "# exit T_NS CPU_US FRAMES\n");
     if (fflush(s->f) != 0 || ferror(s->f)) {
@@ -127,8 +128,8 @@ void kiosk_stats_frame(kiosk_stats *s, const kiosk_frame *f, int events)
         return;
     kiosk_map_stats m;
     kiosk_map_stats_get(f->map, &m);
-    fprintf(s->f, "map %d %d %.1f %.1f %d %d %zu %zu %zu\n", f->presented - 1, m.level, m.x,
-            m.y, m.rendered, m.cached, m.bytes, m.budget, m.level_bytes);
+    fprintf(s->f, "map %d %d %.1f %.1f %d %d %zu %zu %zu %d\n", f->presented - 1, m.level,
+            m.x, m.y, m.rendered, m.cached, m.bytes, m.budget, m.level_bytes, m.coarse);
 }
 
 void kiosk_stats_prefetch(kiosk_stats *s, const kiosk_frame *f)
