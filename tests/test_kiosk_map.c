@@ -36,9 +36,9 @@
 #define DW 160
 #define DH 120
 /* Level 0 against the whole field's render, of its maximum, about 1.2x
- * what was measured (printed below): in the middle mean 7.47e-7, max
- * 1.36e-5; at the far corner 3.56e-6, 2.54e-5. */
-static const double bound_mid[2] = {9.0e-7, 1.65e-5}, bound_corner[2] = {4.3e-6, 3.05e-5};
+ * what was measured (printed below): in the middle mean 7.51e-7, max
+ * 1.06e-5; at the far corner 2.98e-6, 2.67e-5. */
+static const double bound_mid[2] = {9.0e-7, 1.3e-5}, bound_corner[2] = {3.6e-6, 3.2e-5};
 
 static hfs_renderer *cpu(void)
 {
@@ -110,6 +110,11 @@ static void make_world(world *w)
                                 .alpha = 1.0 * PI / 180.0, .radiance = {20, 18, 15}};
     hfs_quality_defaults(&w->in.quality);
     hfs_quality_preset(&w->in.quality, "headless");
+    /* few directions: the map's tiles are rendered as the whole field is,
+     * whatever the quality, and this test renders many (ASan builds too) */
+    w->in.quality.nphi_env = 4;
+    w->in.quality.nphi_key = 1;
+    w->in.quality.nphi_bounce = 4;
     w->in.serial = 1;
 }
 
@@ -236,7 +241,7 @@ static void against_whole(const world *w, hfs_renderer *r, const hfs_image *whol
 }
 
 /* Texels beyond the halo of level 0's tiles of the first row that rise
- * eps (radians) or more above one of every 32nd texel of their tile; the
+ * eps (radians) or more above one of every 64th texel of their tile; the
  * halos printed. */
 static int above_eps(const kiosk_map *m, const world *w, double eps)
 {
@@ -248,8 +253,8 @@ static int above_eps(const kiosk_map *m, const world *w, double eps)
         printf("%s%d", t ? " " : "level 0's tiles' halos: ", h);
         CHECK(h > 0 && h <= m->lv[0].halo && h % HFS_TILE_ALIGN == 0,
               "tile %d: halo %d (the level's %d)", t, h, m->lv[0].halo);
-        for (int j = iy; j < iy + 256; j += 32)
-            for (int i = ix; i < ix + 256; i += 32)
+        for (int j = iy; j < iy + 256; j += 64)
+            for (int i = ix; i < ix + 256; i += 64)
                 for (int y = 0; y < H; ++y)
                     for (int x = 0; x < W; ++x) {
                         if (x >= ix - h && x < ix + 256 + h && y >= iy - h && y < iy + 256 + h)
@@ -321,20 +326,21 @@ static void ahead(world *w, hfs_renderer *r)
     hfs_image img = {0};
     kiosk_map_stats s = frame(m, r, w, 300.0, 200.0, 0, &img);
     CHECK(s.rendered == 4, "the first view renders its 4 tiles: %d", s.rendered);
-    CHECK(as_new(w, r, 300.0, 200.0, 0, &img), "first view == a new map's");
     /* the ring (tiles 2 of rows 0 and 1) and the view a level out (tile 0) */
     const int n = fetch_all(m, r, w);
     CHECK(n == 3, "fetched ahead: %d tiles (2 of the ring, 1 a level out)", n);
     s = frame(m, r, w, 300.0 + 256.0, 200.0, 0, &img); /* a tile east */
-    CHECK(s.rendered == 0, "a pan of a tile: %d tiles rendered", s.rendered);
+    CHECK(s.rendered == 0 && s.coarse == 0, "a pan of a tile: %d tiles rendered, %d coarse",
+          s.rendered, s.coarse);
     CHECK(as_new(w, r, 556.0, 200.0, 0, &img), "panned view == a new map's");
     fetch_all(m, r, w);
     s = frame(m, r, w, 556.0, 200.0, 1, &img); /* a level out */
-    CHECK(s.rendered == 0, "a zoom out: %d tiles rendered", s.rendered);
-    CHECK(as_new(w, r, 556.0, 200.0, 1, &img), "zoomed view == a new map's");
+    CHECK(s.rendered == 0 && s.coarse == 0, "a zoom out: %d tiles rendered, %d coarse",
+          s.rendered, s.coarse);
     fetch_all(m, r, w);
     s = frame(m, r, w, 556.0, 200.0, 0, &img); /* back in */
-    CHECK(s.rendered == 0, "a zoom in: %d tiles rendered", s.rendered);
+    CHECK(s.rendered == 0 && s.coarse == 0, "a zoom in: %d tiles rendered, %d coarse",
+          s.rendered, s.coarse);
     /* relit: every tile dropped, the frame renders its own */
     w->in.lighting.key[0].elev = 20.0 * PI / 180.0;
     s = frame(m, r, w, 556.0, 200.0, 0, &img);
