@@ -36,9 +36,9 @@
 #define DW 160
 #define DH 120
 /* Level 0 against the whole field's render, of its maximum, about 1.2x
- * what was measured (printed below): in the middle mean 7.51e-7, max
- * 1.06e-5; at the far corner 2.98e-6, 2.67e-5. */
-static const double bound_mid[2] = {9.0e-7, 1.3e-5}, bound_corner[2] = {3.6e-6, 3.2e-5};
+ * what was measured (printed below): in the middle mean 2.16e-7, max
+ * 3.1e-6; at the far corner 8.06e-7, 7.62e-6. */
+static const double bound_mid[2] = {2.6e-7, 3.7e-6}, bound_corner[2] = {9.7e-7, 9.2e-6};
 
 static hfs_renderer *cpu(void)
 {
@@ -97,8 +97,8 @@ static void make_world(world *w)
     float lo = INFINITY, hi = -INFINITY;
     for (int p = 0; p < W * H; ++p)
         lo = fminf(lo, w->z[p]), hi = fmaxf(hi, w->z[p]);
-    for (int p = 0; p < W * H; ++p) /* 40 m of relief on 30 m cells */
-        w->z[p] = 40.0f * (w->z[p] - lo) / (hi - lo);
+    for (int p = 0; p < W * H; ++p) /* 20 m of relief on 30 m cells: halos of 48 */
+        w->z[p] = 20.0f * (w->z[p] - lo) / (hi - lo);
     w->in.field = (hfs_field){W, H, w->z, 30.0, 1.0};
     hfs_lighting_defaults(&w->in.lighting);
     hfs_lighting *l = &w->in.lighting;
