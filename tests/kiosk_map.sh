@@ -16,7 +16,7 @@ trap 'rm -rf "$T"' EXIT
 cd "$T" || exit 1
 fail() { echo "FAIL: $*"; exit 1; }
 "$HFGEN" fractal --size 512x256 --relief 0.12 --hurst 0.3 --seed 3 -o dem.pfm >/dev/null || fail hfgen
-printf 'height = dem.pfm\ndx = 30\nkey = 120,12,1,20\nenv-sh = %s\nbackend = cpu\npreset = headless\n' \
+printf 'height = dem.pfm\ndx = 30\nkey = 120,12,1,20\nenv-sh = %s\nbackend = cpu\npreset = headless\nnphi-env = 4\nnphi-key = 1\n' \
     3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 > scene.ini
 cat > knobs.ini <<'EOF'
 [knob px]
