@@ -180,23 +180,11 @@ int kiosk_map_window(kiosk_map *m, int l, int x0, int y0, int w, int h,
     const int rc = scratch(m, (size_t)w * (size_t)h, err);
     if (rc)
         return rc;
-    for (int j = 0; j < h; ++j) {
-        const size_t src = (size_t)(y0 + j) * (size_t)v->w + (size_t)x0;
-        memcpy(m->wz + (size_t)j * w, v->z + src, (size_t)w * sizeof *m->wz);
-        if (v->albedo)
-            memcpy(m->walb + (size_t)j * w * 3, v->albedo + 3 * src,
-                   (size_t)w * 3 * sizeof *m->walb);
-    }
     /* The level's texel (i, j) stands at (i, j) 2^l dx: world positions
      * (a local light's, a viewer's eye) keep their place on the terrain. */
-    *wl = *lit;
-    wl->albedo_map = v->albedo ? m->walb : NULL;
-    for (int k = 0; k < wl->n_local; ++k) {
-        wl->local[k].pos[0] -= x0 * v->dx;
-        wl->local[k].pos[1] -= y0 * v->dx;
-    }
-    wl->view_eye[0] -= x0 * v->dx;
-    wl->view_eye[1] -= y0 * v->dx;
-    *f = (hfs_field){w, h, m->wz, v->dx, m->zscale};
+    const hfs_field level = {v->w, v->h, v->z, v->dx, m->zscale};
+    hfs_lighting ll = *lit;
+    ll.albedo_map = v->albedo;
+    *f = hfs_tile_sub_field(&level, &ll, x0, y0, w, h, m->wz, v->albedo ? m->walb : NULL, wl);
     return HFS_OK;
 }

@@ -11,6 +11,7 @@
 #   - a knob of a map with no map (a field that fits): nothing moves.
 set -u
 KIOSK=$1 HFGEN=$2
+KNOBS=$(cd "$(dirname "$0")/.." && pwd)/board/kiosk-map.ini # the example's knobs
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 cd "$T" || exit 1
@@ -18,24 +19,12 @@ fail() { echo "FAIL: $*"; exit 1; }
 "$HFGEN" fractal --size 512x256 --relief 0.12 --hurst 0.3 --seed 3 -o dem.pfm >/dev/null || fail hfgen
 printf 'height = dem.pfm\ndx = 30\nkey = 120,12,1,20\nenv-sh = %s\nbackend = cpu\npreset = headless\nnphi-env = 4\nnphi-key = 1\n' \
     3.5449077,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 > scene.ini
-cat > knobs.ini <<'EOF'
-[knob px]
-evdev = /dev/input/event0:REL_DIAL
-action = map.pan_x
-[knob py]
-evdev = /dev/input/event0:REL_WHEEL
-action = map.pan_y
-step = 10
-[knob zoom]
-evdev = /dev/input/event0:REL_HWHEEL
-action = map.zoom
-EOF
 # 0 s: three levels in (to level 0); 0.5 s: a detent east (64 texels);
-# idle 4 s (tiles ahead); then 2 detents south (20 texels) and far east
-# (kept on the field), then out a level.
+# idle 4 s (tiles ahead); then 2 detents south (128 texels: kept on the
+# field, 256 tall) and far east (kept too), then out a level.
 printf '0 zoom turn 3\n500 px turn 1\n4500 py turn 2\n4600 px turn 40\n5000 zoom turn -1\n' \
     > replay.txt
-"$KIOSK" scene.ini --input knobs.ini --no-devices --replay replay.txt --exit-after-replay \
+"$KIOSK" scene.ini --input "$KNOBS" --no-devices --replay replay.txt --exit-after-replay \
     --display headless --size 96x64 --out 'f-%03d.png' --stats st.txt 2> log.txt ||
     { cat log.txt; fail "kiosk exit"; }
 # map N LEVEL X Y RENDERED CACHED BYTES BUDGET LEVEL_BYTES, one per frame
@@ -50,8 +39,8 @@ expect 1 0 256.0 128.0
 expect 2 0 320.0 128.0
 n=$(wc -l < map.txt)
 [ "$n" -ge 4 ] || fail "$n map lines"
-tail -1 map.txt | awk '{ exit !($3 == 1 && $4 == 512.0 && $5 == 148.0) }' ||
-    fail "last frame not level 1 at (512, 148): $(tail -1 map.txt)"
+tail -1 map.txt | awk '{ exit !($3 == 1 && $4 == 512.0 && $5 == 256.0) }' ||
+    fail "last frame not level 1 at (512, 256): $(tail -1 map.txt)"
 awk '$1 == "map" && $8 > $9 { exit 1 }' st.txt || fail "the cache over its budget: $(cat map.txt)"
 grep -q '^prefetch ' st.txt || fail "no tile fetched ahead in 4 s idle"
 # pictures on the 96x64 canvas; the pan shows other terrain
@@ -61,7 +50,7 @@ for f in f-000.png f-001.png f-002.png; do
 done
 ! cmp -s f-001.png f-002.png || fail "the pan east shows the same picture"
 # a field that fits the display: no map, the knobs move nothing
-"$KIOSK" scene.ini --input knobs.ini --no-devices --replay replay.txt --exit-after-replay \
+"$KIOSK" scene.ini --input "$KNOBS" --no-devices --replay replay.txt --exit-after-replay \
     --display headless --size 600x300 --stats st2.txt 2> log2.txt || { cat log2.txt; fail "fits"; }
 ! grep -q '^map ' st2.txt || fail "a map for a field that fits"
 [ "$(grep -c '^frame ' st2.txt)" -eq 1 ] || fail "knobs moved a map that is not there"

@@ -55,17 +55,7 @@ env-map = $PWD/data/courtyard.exr
 key = 336,15,2,1500
 albedo = 0.35
 EOS
-cat > "$T/knobs.ini" <<'EOS'
-[knob px]
-evdev = /dev/input/event0:REL_DIAL
-action = map.pan_x
-[knob py]
-evdev = /dev/input/event0:REL_WHEEL
-action = map.pan_y
-[knob zoom]
-evdev = /dev/input/event0:REL_HWHEEL
-action = map.zoom
-EOS
+cp board/kiosk-map.ini "$T/knobs.ini" # the example's knobs: px, py, zoom
 W=${SIZE%x*}; H=${SIZE#*x}
 LEVELS=1; w=$N
 while [ "$w" -gt "$W" ] || [ "$w" -gt "$H" ]; do w=$(((w + 1) / 2)); LEVELS=$((LEVELS + 1)); done

@@ -32,10 +32,8 @@ int hfs_tile_halo(const hfs_field *f, const hfs_lighting *l)
     return reach < 1e9 ? (int)ceil(reach) + 2 : -1;
 }
 
-/* The sub-field [x0, x0 + w) x [y0, y0 + h) of f into z, its lighting
- * (a viewer's eye moved with it) into sl, its albedo map into alb. */
-static hfs_field sub_field(const hfs_field *f, const hfs_lighting *l, int x0, int y0, int w,
-                           int h, float *z, float *alb, hfs_lighting *sl)
+hfs_field hfs_tile_sub_field(const hfs_field *f, const hfs_lighting *l, int x0, int y0, int w,
+                             int h, float *z, float *alb, hfs_lighting *sl)
 {
     for (int j = 0; j < h; ++j) {
         const size_t src = (size_t)(y0 + j) * (size_t)f->width + (size_t)x0;
@@ -46,6 +44,10 @@ static hfs_field sub_field(const hfs_field *f, const hfs_lighting *l, int x0, in
     }
     *sl = *l;
     sl->albedo_map = alb;
+    for (int k = 0; k < sl->n_local; ++k) {
+        sl->local[k].pos[0] -= x0 * f->dx;
+        sl->local[k].pos[1] -= y0 * f->dx;
+    }
     sl->view_eye[0] -= x0 * f->dx;
     sl->view_eye[1] -= y0 * f->dx;
     return (hfs_field){w, h, z, f->dx, f->zscale};
@@ -77,7 +79,7 @@ int hfs_tiled_render(const hfs_field *f, const hfs_lighting *l, int max_side,
             const int x1 = tx + inner + halo < f->width ? tx + inner + halo : f->width;
             const int y1 = ty + inner + halo < f->height ? ty + inner + halo : f->height;
             hfs_lighting sl;
-            const hfs_field sf = sub_field(f, l, x0, y0, x1 - x0, y1 - y0, z, alb, &sl);
+            const hfs_field sf = hfs_tile_sub_field(f, l, x0, y0, x1 - x0, y1 - y0, z, alb, &sl);
             tile.width = sf.width, tile.height = sf.height;
             if ((rc = render(ctx, &sf, &sl, &tile, err)))
                 break;

@@ -39,6 +39,14 @@ typedef int (*hfs_tile_frame_fn)(void *ctx, const hfs_field *f, const hfs_lighti
 int hfs_tiled_render(const hfs_field *f, const hfs_lighting *l, int max_side,
                      hfs_tile_frame_fn render, void *ctx, hfs_image *out, hfs_error *err);
 
+/* The sub-field [x0, x0 + w) x [y0, y0 + h) of f with its heights copied
+ * into z (w*h) and, when l has an albedo map, its albedo into alb
+ * (w*h*3; NULL without one); *sl = l with world positions (local lights,
+ * a viewer's eye) moved with the window and albedo_map = alb.  Also the
+ * kiosk's map (board/kiosk_map.h) cuts its tiles' windows with it. */
+hfs_field hfs_tile_sub_field(const hfs_field *f, const hfs_lighting *l, int x0, int y0, int w,
+                             int h, float *z, float *alb, hfs_lighting *sl);
+
 /* The lowest elevation (radians) terrain must rise to for lighting l to
  * see it, as above (the environment's eps, each key light's e - a); 0
  * when terrain at any elevation matters (a local light, a key light at or
