@@ -80,4 +80,22 @@ static inline hfs_renderer *gl_test_gles(void)
     return gl_test_renderer(&d);
 }
 
+/* A test's renderer from its arguments: `TEST gles ...` the product's
+ * (gl_test_gles: 77 without a context), anything else the CPU reference
+ * (an error exits 1); *gles says which. */
+static inline hfs_renderer *gl_test_from_args(int argc, char **argv, int *gles)
+{
+    *gles = argc > 1 && !strcmp(argv[1], "gles");
+    if (*gles)
+        return gl_test_gles();
+    hfs_renderer *r = NULL;
+    hfs_error err = {""};
+    const hfs_renderer_desc d = {.backend = HFS_BACKEND_CPU};
+    if (hfs_renderer_create(&d, &r, &err)) {
+        fprintf(stderr, "cpu: %s\n", err.msg);
+        exit(1);
+    }
+    return r;
+}
+
 #endif /* HFS_TEST_GL_TEST_H */

@@ -159,18 +159,8 @@ static inline void mm_report(const char *name, int sub, const mm_setting *st, co
 static inline int mm_main(int argc, char **argv, const char *test,
                    void (*run)(hfs_renderer *r, const char *backend, int sub))
 {
-    const int gles = argc > 1 && !strcmp(argv[1], "gles");
-    hfs_renderer *r = NULL;
-    if (gles) {
-        r = gl_test_gles();
-    } else {
-        hfs_error err = {""};
-        const hfs_renderer_desc d = {.backend = HFS_BACKEND_CPU};
-        if (hfs_renderer_create(&d, &r, &err)) {
-            fprintf(stderr, "cpu: %s\n", err.msg);
-            return 1;
-        }
-    }
+    int gles;
+    hfs_renderer *r = gl_test_from_args(argc, argv, &gles);
     /* the subsample: argv[2], else 2 on GLES and the CPU's 0 (its default) */
     run(r, gles ? "gles" : "cpu", argc > 2 ? atoi(argv[2]) : (gles ? 2 : 0));
     hfs_renderer_destroy(r);

@@ -385,18 +385,8 @@ static void run(hfs_renderer *r, const char *be, int gles)
 
 int main(int argc, char **argv)
 {
-    const int gles = argc > 1 && !strcmp(argv[1], "gles");
-    hfs_renderer *r = NULL;
-    if (gles) {
-        r = gl_test_gles();
-    } else {
-        hfs_error err = {""};
-        const hfs_renderer_desc d = {.backend = HFS_BACKEND_CPU};
-        if (hfs_renderer_create(&d, &r, &err)) {
-            fprintf(stderr, "cpu: %s\n", err.msg);
-            return 1;
-        }
-    }
+    int gles;
+    hfs_renderer *r = gl_test_from_args(argc, argv, &gles);
     run(r, gles ? "gles" : "cpu", gles);
     hfs_renderer_destroy(r);
     if (failures) {
