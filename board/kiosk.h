@@ -180,9 +180,9 @@ void kiosk_frame_free(kiosk_frame *f);
 int kiosk_frame_map(kiosk_frame *f, const hfs_scene_inputs *in, hfs_input_state *st, int dw,
                     int dh, int keep, hfs_error *err);
 /* Renders one tile the map's view wants (kiosk_map_prefetch); clears
- * f->prefetching when none is left.  1 when it was one of the view's own
- * (shown from a coarser level until now): show the view again; 0; or an
- * error. */
+ * f->prefetching when none is left.  As kiosk_map_prefetch: 2 one of the
+ * view's own (shown from a coarser level until now: show the view again),
+ * 1 one ahead of it, 0 none; or an error. */
 int kiosk_frame_prefetch(kiosk_frame *f, const hfs_scene_inputs *in, hfs_error *err);
 
 /* Renders in (its grid dump, or with st->view the 3-D view from st's

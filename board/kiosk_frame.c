@@ -146,7 +146,7 @@ int kiosk_frame_prefetch(kiosk_frame *f, const hfs_scene_inputs *in, hfs_error *
     const int rc = kiosk_map_prefetch(f->map, f->renderer, in, err);
     hfs_renderer_set_amortize(f->renderer, f->amortize);
     f->prefetching = rc > 0;
-    return rc < 0 ? rc : rc == 2;
+    return rc;
 }
 
 /* The render (w x h) and the picture: a field larger than any display's

@@ -172,19 +172,15 @@ static int prefetch(kiosk *k)
     if (!k->frame.prefetching)
         return 0;
     hfs_error err = {{0}};
-    kiosk_map_stats before;
-    kiosk_map_stats_get(k->frame.map, &before);
     const int rc = kiosk_frame_prefetch(&k->frame, &k->world->in, &err);
     if (rc < 0) {
         kiosk_log(KIOSK_WARNING, "map: a tile ahead of the view: %s", err.msg);
         k->frame.prefetching = 0;
         return 0;
     }
-    kiosk_map_stats after;
-    kiosk_map_stats_get(k->frame.map, &after);
-    if (after.prefetched > before.prefetched)
+    if (rc > 0)
         kiosk_stats_prefetch(k->stats, &k->frame);
-    if (rc == 1 && show(k, 0)) /* a tile of the view, shown coarse until now */
+    if (rc == 2 && show(k, 0)) /* a tile of the view, shown coarse until now */
         return -1;
     kiosk_stats_flush(k->stats);
     return 0;
