@@ -1,8 +1,9 @@
 /*
- * test_gis_stream.c — `hfshade svf | horizon | openness --tile N` (issue
- * 39 item 1, tools/gis/gis_stream.h): a DEM larger than a tile, with a
- * search radius, read, computed and written window by window, against the
- * same command computing it whole (--tile 0):
+ * test_gis_stream.c — `hfshade svf | horizon | openness | sun | insolation
+ * --tile N` (issue 39 item 1, issue 40; tools/gis/gis_stream.h): a DEM
+ * larger than a tile, with a search radius, read, computed and written
+ * window by window, against the same command computing it whole (--tile
+ * 0):
  *   utm      a 150x110 GeoTIFF in UTM (30 m square cells), hills, holes
  *            (-9999) alone, in pairs, a 3x3 block, on the seams of 64-texel
  *            tiles and at the DEM's edges; --tile 64 makes 3 x 2 windows;
@@ -14,7 +15,11 @@
  *            CRS, nodata (at exactly the holes), metadata and band
  *            descriptions; the summary line counts the windows and the
  *            holes; --cog streamed is a COG of the same values;
- *   gles     svf and openness on GLES within the bounds below of the
+ *   sun      sun (its halo the reach of the hills' shadows from the whole
+ *            DEM's relief) and insolation (--radius 600) on the CPU
+ *            reference: the whole run's bits; insolation without a radius
+ *            is computed whole and says why;
+ *   gles     svf, openness and sun on GLES within the bounds below of the
  *            whole run (each window's heights normalized for the GPU by
  *            their own range: fp16's level, no seam larger);
  *   whole    a geographic DEM (non-square cells) over the tile is computed
@@ -31,7 +36,10 @@
  * MESA_GLES_VERSION_OVERRIDE=3.0, GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 and
  * HFS_GL_STRICT_LIMITS=1): svf --radius 600, 8 directions, max 2.98e-7
  * (a few float32 steps of the sum); openness, 4 directions, its default
- * radius: max 3.05e-5 degrees.  The bounds are 1.2x those.
+ * radius: max 3.05e-5 degrees.  The bounds are 1.2x those.  sun (14.4
+ * degrees, 557 texels in shadow, 56 partly): 0 in all four settings, so
+ * the bound is 0 (its one azimuth's horizon, searched only across the
+ * disk, came out the same bits from each window's normalization).
  */
 #define _XOPEN_SOURCE 700 /* realpath */
 
@@ -48,6 +56,7 @@
 #define ND (-9999.0)
 #define SVF_GLES_BOUND 3.58e-7
 #define OPEN_GLES_BOUND 3.66e-5
+#define SUN_GLES_BOUND 0.0
 
 /* Hills, a valley and a ripple, metres; holes (ND) where is_hole says. */
 static int is_hole(int i, int j)
@@ -177,6 +186,31 @@ static void test_cpu(void)
     CHECK(left_over(NULL) == 0);
 }
 
+/* sun and insolation streamed on the CPU reference: the whole run's bits
+ * (the sun's halo the reach of the hills' shadows from the whole DEM's
+ * relief; insolation's its --radius). */
+#define SUN_AT "--datetime 2026-06-21T07:30-04:00"
+#define INS_PERIOD "--from 2026-06-21T07:00-04:00 --to 2026-06-21T11:00-04:00 --step 60"
+static void test_sun_cpu(void)
+{
+    REQUIRE(run("sun utm.tif -o sun_w.tif " SUN_AT " --tile 0 --backend cpu") == 0 &&
+                run("sun utm.tif -o sun_s.tif " SUN_AT " --tile 64 --backend cpu") == 0,
+            "sun failed");
+    CHECK(said("sun of 150x110, 6 windows of at most 64 texels a side (halo "));
+    CHECK(compare("sun_s.tif", "sun_w.tif") == 0.0);
+    REQUIRE(run("insolation utm.tif -o ins_w.tif " INS_PERIOD " --radius 600 --tile 0 --backend "
+                "cpu") == 0 &&
+                run("insolation utm.tif -o ins_s.tif " INS_PERIOD " --radius 600 --tile 64 "
+                    "--backend cpu") == 0,
+            "insolation failed");
+    CHECK(said("6 windows of at most 64 texels a side (halo 22)"));
+    CHECK(compare("ins_s.tif", "ins_w.tif") == 0.0);
+    REQUIRE(run("insolation utm.tif -o ins_all.tif " INS_PERIOD " --tile 64 --backend cpu") == 0,
+            "insolation without a radius");
+    CHECK(said("whole (over --tile 64, but no --radius"));
+    CHECK(left_over(NULL) == 0);
+}
+
 /* GLES streamed: within fp16's level of the whole run. */
 static void test_gles(void)
 {
@@ -190,12 +224,18 @@ static void test_gles(void)
     REQUIRE(run("openness utm.tif -o gopen_w.tif --directions 4 --tile 0") == 0 &&
                 run("openness utm.tif -o gopen_s.tif --directions 4 --tile 64") == 0,
             "openness gles failed");
+    REQUIRE(run("sun utm.tif -o gsun_w.tif " SUN_AT " --tile 0") == 0 &&
+                run("sun utm.tif -o gsun_s.tif " SUN_AT " --tile 64") == 0,
+            "sun gles failed");
     const double svf = compare("gsvf_s.tif", "gsvf_w.tif");
     const double open = compare("gopen_s.tif", "gopen_w.tif");
+    const double sun = compare("gsun_s.tif", "gsun_w.tif");
     printf("gles --tile 64 vs --tile 0: svf max %.3g (bound %.3g), openness max %.3g deg "
-           "(bound %.3g)\n", svf, SVF_GLES_BOUND, open, OPEN_GLES_BOUND);
+           "(bound %.3g), sun max %.3g W/m^2 (bound %.3g)\n", svf, SVF_GLES_BOUND, open,
+           OPEN_GLES_BOUND, sun, SUN_GLES_BOUND);
     CHECK(svf >= 0.0 && svf <= SVF_GLES_BOUND);
     CHECK(open >= 0.0 && open <= OPEN_GLES_BOUND);
+    CHECK(sun >= 0.0 && sun <= SUN_GLES_BOUND);
 }
 
 /* Over the tile but computed whole: a geographic DEM, and no radius. */
@@ -253,6 +293,7 @@ int main(int argc, char **argv)
     const double gt[6] = {500000.0, 30.0, 0.0, 4000000.0, 0.0, -30.0};
     write_dem("utm.tif", z, gt, 32617);
     test_cpu();
+    test_sun_cpu();
     test_gles();
     test_whole(z);
     test_failures();

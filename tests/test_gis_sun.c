@@ -19,6 +19,11 @@
  *            minutes): band 1 = the sum of beam_normal sin(e) hours over
  *            the steps with the sun up (at each step's middle), band 2 =
  *            the sum of diffuse_horizontal hours, band 3 = both;
+ *   sky      insolation's sky-diffuse share (band 2 over the clear sky's
+ *            diffuse horizontal irradiation): on an open 20-degree slope
+ *            the upper hemisphere's (1 + cos 20) / 2 at every texel, edges
+ *            included; on the hills, 16 azimuths against the truth's
+ *            exact horizons in 64;
  *   night    a sun below the horizon: zeros, no renderer, the summary
  *            line says so;
  *   bad inputs  one line on stderr, non-zero exit, no output file.
@@ -38,6 +43,11 @@
  *     under a straight horizon (gis_disk_visible), not fp16.  The bounds
  *     GT_* are 1.2x those.  (The key-light frame the sun was rendered
  *     with before issue 39's horizon path: 0.0199, 2.39; 0.00124, 0.368.)
+ *   sky: the slope within 8.94e-6 of (1 + cos 20) / 2 (GLES and CPU: the
+ *     normals of Float32 heights); the hills, GLES and CPU against the
+ *     truth's 64 azimuths: mean 4.01e-5, max 3.77e-4 (16 azimuths against
+ *     64).  Bounds 1.2x.  (The sky rendered before issue 40, the whole
+ *     sphere's sky counted, gave a tilted open plane (1 + 1) / 2 = 1.)
  */
 #define _XOPEN_SOURCE 700 /* realpath */
 
@@ -66,6 +76,9 @@
 #define GT_BEAM_MAX 1.2
 #define GT_VIS_MEAN 5.1e-4
 #define GT_VIS_MAX 0.27
+#define SLOPE_SKY_TOL 1.1e-5   /* the sky's share, an open tilted plane    */
+#define SKY_MEAN_TOL 4.8e-5    /* the sky's share, hills, against truth   */
+#define SKY_MAX_TOL 4.5e-4
 
 /* ---- files in ------------------------------------------------------------ */
 
@@ -417,6 +430,75 @@ static void test_insolation(void)
         check_insolation("ins_gles.tif", INS_FLAT_TOL);
 }
 
+/* Band 2 of insolation run `name` over its diffuse horizontal
+ * irradiation: the sky's share (texel p; band 1 unused). */
+static double sky_of(const raster *r, int p)
+{
+    return r->v[W * H + p] / meta_num(r, "HFS_DIFFUSE_HORIZONTAL_WH");
+}
+
+/* The sky's share on an open tilted plane (a 20-degree slope facing
+ * south-east, nothing else): the upper hemisphere's (1 + cos s) / 2 at
+ * every texel, edges included (downhill rays leave the DEM: the
+ * horizontal bounds the sky, not the plane). */
+static void check_slope(const char *name)
+{
+    raster r;
+    REQUIRE(read_sized(name, &r) == 0 && r.bands == 3, "%s: not 3 bands", name);
+    const double want = 0.5 * (1.0 + cos(20.0 * RAD));
+    double worst = 0.0;
+    for (int p = 0; p < W * H; ++p)
+        worst = fmax(worst, fabs(sky_of(&r, p) - want));
+    printf("%s: sky share within %.3g of (1 + cos 20 deg) / 2 = %.6f\n", name, worst, want);
+    CHECK(worst <= SLOPE_SKY_TOL);
+    free_raster(&r);
+}
+
+static void test_sky(void)
+{
+    float z[W * H];
+    const double t = tan(20.0 * RAD);
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i < W; ++i) /* falls to the south-east: +i east, +j south */
+            z[j * W + i] = (float)(900.0 - t * CELL * (i + j) / sqrt(2.0));
+    write_dem("slope.tif", z, utm_gt, EPSG_UTM33);
+    const char *one = "--from 2026-06-21T12:00+02:00 --to 2026-06-21T12:30+02:00 --step 30";
+    REQUIRE(run("insolation slope.tif %s -o slope_cpu.tif --backend cpu", one) == 0, "slope cpu");
+    check_slope("slope_cpu.tif");
+    if (run("insolation slope.tif %s -o slope_gles.tif", one) != 0)
+        REQUIRE(gles_failed("insolation slope"), "insolation slope (gles) failed");
+    else
+        check_slope("slope_gles.tif");
+    /* the hills: 16 azimuths (the default) on GLES and the CPU against
+     * the truth's exact horizons in 64 */
+    REQUIRE(run("insolation hills.tif %s -o sky_truth.tif --backend truth --directions 64", one) ==
+                0, "hills sky truth");
+    raster tr;
+    REQUIRE(read_sized("sky_truth.tif", &tr) == 0, "sky_truth.tif");
+    for (int b = 0; b < 2; ++b) {
+        const char *name = b ? "sky_cpu.tif" : "sky_gles.tif";
+        if (run("insolation hills.tif %s -o %s --backend %s", one, name, b ? "cpu" : "gles")) {
+            REQUIRE(b == 0 && gles_failed("insolation hills"), "insolation hills failed");
+            continue;
+        }
+        raster r;
+        REQUIRE(read_sized(name, &r) == 0, "%s", name);
+        double sum = 0.0, max = 0.0;
+        int n = 0;
+        for (int p = 0; p < W * H; ++p) {
+            if (r.v[p] == (float)r.nd)
+                continue;
+            const double e = fabs(sky_of(&r, p) - sky_of(&tr, p));
+            sum += e, max = fmax(max, e), ++n;
+        }
+        printf("%s: sky share against the truth's 64 azimuths: mean %.3g max %.3g\n", name,
+               sum / n, max);
+        CHECK(sum / n <= SKY_MEAN_TOL && max <= SKY_MAX_TOL);
+        free_raster(&r);
+    }
+    free_raster(&tr);
+}
+
 /* A sun below the horizon: zeros, no renderer made, said on stderr. */
 static void test_night(void)
 {
@@ -461,7 +543,11 @@ static void test_bad_inputs(void)
     bad("sun flat.tif -o x.tif --datetime 2026-06-21T08:00Z --timezone +03:00");
     bad("sun flat.tif -o x.tif");
     bad("sun flat.tif -o x.tif --datetime 2026-06-21T08:00Z --linke 0.5");
-    bad("sun flat.tif -o x.tif --datetime 2026-06-21T08:00Z --radius 100");
+    bad("sun flat.tif -o x.tif --datetime 2026-06-21T08:00Z --radius 100 --backend truth");
+    CHECK(holds("err.txt", "not with --backend truth"));
+    bad("sun flat.tif -o x.tif --datetime 2026-06-21T08:00Z --radius -100");
+    bad("insolation flat.tif -o x.tif --from 2026-06-21T00:00Z --to 2026-06-22T00:00Z "
+        "--directions 0");
     bad("sun flat.tif -o x.tif --datetime 2026-06-21T08:00Z --zscale 100 --backend cpu");
     CHECK(holds("err.txt", "outside -1000..9000 m"));
     bad("sun missing.tif -o x.tif --datetime 2026-06-21T08:00Z");
@@ -491,6 +577,7 @@ int main(int argc, char **argv)
     test_wall();
     test_gles_truth();
     test_insolation();
+    test_sky();
     test_night();
     test_bad_inputs();
     return gis_cli_end("test_gis_sun");

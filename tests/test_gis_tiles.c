@@ -15,6 +15,10 @@
  *            mosaic holds the streamed command's values bit for bit
  *            (`hfshade svf --tile 64`), its grid, CRS and nodata; horizon
  *            merges one file an azimuth;
+ *   sun      sun (a morning sun: its halo the reach of the hills' shadows)
+ *            and insolation (--radius 450) planned, run and merged: the
+ *            whole run's (--tile 0) values bit for bit, shadows included;
+ *            insolation without a radius and the truth's sun refused;
  *   parallel the same plan run by GNU parallel on 2 cores, and once more
  *            stopped after 2 jobs and resumed with --resume-failed: each
  *            mosaic byte for byte the sequential run's.
@@ -114,8 +118,14 @@ static void test_plan(void)
           said("a plan is there already"));
     EXPECT(run("tiles plan dem.tif --product svf --tile 64 -o X --backend cpu") == 1 &&
           said("no tiles to plan: no --radius"));
-    EXPECT(run("tiles plan dem.tif --product sun --tile 64 -o X") == 2 &&
-          said("is not svf, horizon or openness"));
+    EXPECT(run("tiles plan dem.tif --product render --tile 64 -o X") == 2 &&
+          said("is not svf, horizon, openness, sun or insolation"));
+    EXPECT(run("tiles plan dem.tif --product insolation --tile 64 -o X --backend cpu "
+               "--from 2026-06-21T05:00Z --to 2026-06-21T06:00Z") == 1 &&
+          said("no tiles to plan: no --radius"));
+    EXPECT(run("tiles plan dem.tif --product sun --tile 64 -o X --backend truth "
+               "--datetime 2026-06-21T06:30Z") == 1 &&
+          said("no tiles to plan: the truth renders the whole DEM's shadows"));
     EXPECT(access(tpath("X"), F_OK) != 0, "a refused plan left its directory");
 }
 
@@ -166,6 +176,44 @@ static void test_horizon(void)
     }
 }
 
+/* Mosaic a and whole run b: the same bands, bit for bit; *shade the
+ * texels of band `band` below 0.5 (the sun's shadows). */
+static long same_values(const char *a, const char *b, int bands, int band, long *shade)
+{
+    raster m, w;
+    EXPECT(read_raster(a, &m) == 0 && read_raster(b, &w) == 0, "%s, %s", a, b);
+    long off = m.v && w.v && m.bands == bands && w.bands == bands ? 0 : -1;
+    *shade = 0;
+    for (size_t p = 0; off >= 0 && p < (size_t)bands * W * H; ++p)
+        off += memcmp(&m.v[p], &w.v[p], sizeof(float)) != 0;
+    for (size_t p = 0; off >= 0 && p < (size_t)W * H; ++p)
+        *shade += m.v[(size_t)band * W * H + p] < 0.5f && m.v[p] != (float)ND;
+    EXPECT(off == 0, "%s: %ld values differ from %s", a, off, b);
+    EXPECT(!strcmp(meta(&m, "HFS_PRODUCT"), meta(&w, "HFS_PRODUCT")), "%s: metadata", a);
+    free_raster(&m), free_raster(&w);
+    return off;
+}
+
+/* sun (its halo the shadows' reach from the DEM's relief, no radius) and
+ * insolation (--radius) in tiles: the mosaic is the whole run's, bit for
+ * bit, shadows and all. */
+#define SUN_ARGS "--backend cpu --datetime 2026-06-21T04:30Z"
+#define INS_ARGS "--backend cpu --radius 450 --from 2026-06-21T04:00Z --to 2026-06-21T08:00Z " \
+                 "--step 60"
+static void test_sun(void)
+{
+    EXPECT(run("tiles plan dem.tif --product sun --tile 64 -o S " SUN_ARGS) == 0);
+    EXPECT(run_jobs("S", 1, 6) == 0 && run("tiles merge S -o sm.tif") == 0);
+    EXPECT(run("sun dem.tif " SUN_ARGS " --tile 0 -o sw.tif") == 0);
+    long shade;
+    EXPECT(same_values("sm.tif", "sw.tif", 2, 1, &shade) == 0);
+    EXPECT(shade > 1000, "%ld texels in the hills' shadows (V < 0.5)", shade);
+    EXPECT(run("tiles plan dem.tif --product insolation --tile 64 -o I " INS_ARGS) == 0);
+    EXPECT(run_jobs("I", 1, 6) == 0 && run("tiles merge I -o im.tif") == 0);
+    EXPECT(run("insolation dem.tif " INS_ARGS " --tile 0 -o iw.tif") == 0);
+    EXPECT(same_values("im.tif", "iw.tif", 3, 0, &shade) == 0);
+}
+
 /* GNU parallel runs the jobs: the mosaic is the sequential run's, bytes
  * and all; stopped after 2 jobs and resumed, the same. */
 static void test_parallel(void)
@@ -205,6 +253,7 @@ int main(int argc, char **argv)
     test_plan();
     test_run_merge();
     test_horizon();
+    test_sun();
     test_parallel();
     (void)gles_failed; /* the CPU reference only: no GL context needed */
     return gis_cli_end("gis_tiles");

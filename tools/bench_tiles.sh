@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # A DEM's windows as jobs for GNU parallel (issue 40 item 1; docs/GIS.md
 # "Many machines"): an `hfgen fractal` field of N x N (default 4096) as a
-# UTM GeoTIFF with 30 m cells (tools/bench_dem.py), its sky-view factor
-# (GLES, 8 directions within RADIUS metres) cut into tiles of TILE texels
-# (default 1024: 16 jobs), four ways, wall time of each:
+# UTM GeoTIFF with 30 m cells (tools/bench_dem.py), a PRODUCT of it (GLES)
+# cut into tiles of TILE texels (default 1024: 16 jobs), four ways, wall
+# time of each.  PRODUCT: svf (default; 8 directions within RADIUS
+# metres), sun (2026-06-21 08:00 local; RADIUS 0: the halo is the reach of
+# its shadows) or insolation (that day 05:00-21:00 in hourly steps, the
+# sky's 16 azimuths and the shadows within RADIUS):
 #   single     one process streams it: `hfshade svf --tile TILE`;
 #   sequential the plan's jobs one after the other (`parallel -j1`), merged;
 #   parallel   the same plan on the cores (`parallel -j JOBS`), merged;
@@ -11,10 +14,11 @@
 #              half the tiles are written, then `parallel --resume-failed`
 #              with the same joblog, merged.
 # Checks: each mosaic byte for byte the sequential one's (cmp), and its
-# values bit for bit the single run's.  Installs GNU parallel, python3-gdal
+# values (every band) bit for bit the single run's.  Installs GNU parallel, python3-gdal
 # and python3-numpy when missing (tools/install-deps.sh has parallel).
-# usage: tools/bench_tiles.sh [BUILD] [N] [TILE] [RADIUS] [JOBS]
+# usage: tools/bench_tiles.sh [BUILD] [N] [TILE] [RADIUS] [JOBS] [PRODUCT]
 #   e.g. tools/bench_tiles.sh build 4096 1024 600 2
+#        tools/bench_tiles.sh build 4096 1024 0 2 sun
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B=${1:-build}
@@ -22,6 +26,7 @@ N=${2:-4096}
 TILE=${3:-1024}
 RADIUS=${4:-600}
 JOBS=${5:-2}
+PRODUCT=${6:-svf}
 H="$(pwd)/$B/tools/hfshade"
 PY=/usr/bin/python3
 need=()
@@ -34,20 +39,27 @@ C=$(mktemp -d)
 trap 'rm -rf "$C"' EXIT
 "$B/tools/hfgen" fractal --size "${N}x$N" -o "$C/f.pfm"
 $PY tools/bench_dem.py "$C/f.pfm" "$C/dem.tif" 30
-OPTS=(--radius "$RADIUS" --directions 8)
+case "$PRODUCT" in
+svf) OPTS=(--radius "$RADIUS" --directions 8) ;;
+sun) OPTS=(--datetime 2026-06-21T08:00-05:00 --radius "$RADIUS") ;;
+insolation) OPTS=(--from 2026-06-21T05:00-05:00 --to 2026-06-21T21:00-05:00 --step 60
+                  --radius "$RADIUS") ;;
+*) echo "bench_tiles.sh: PRODUCT '$PRODUCT' is not svf, sun or insolation" >&2; exit 2 ;;
+esac
 now() { date +%s.%N; }
 since() { awk -v a="$1" -v b="$(now)" 'BEGIN {printf "%.1f", b - a}'; }
 cd "$C"
 
 t=$(now)
-"$H" svf dem.tif "${OPTS[@]}" --tile "$TILE" --quiet -o single.tif
+"$H" "$PRODUCT" dem.tif "${OPTS[@]}" --tile "$TILE" -o single.tif 2>&1 | sed 's/^/  /'
+
 echo "single process, streamed (--tile $TILE): $(since "$t") s"
 
 plan_run() { # DIR PARALLEL-OPTIONS...: plan, run, merge; prints the wall time
     local dir=$1 t
     shift
     t=$(now)
-    "$H" tiles plan dem.tif --product svf --tile "$TILE" -o "$dir" "${OPTS[@]}"
+    "$H" tiles plan dem.tif --product "$PRODUCT" --tile "$TILE" -o "$dir" "${OPTS[@]}"
     parallel "$@" --joblog "$dir/log" "$H" tiles run "$dir/manifest" {} :::: "$dir/jobs" 2>/dev/null
     "$H" tiles merge "$dir" -o "$dir.tif" 2>/dev/null
     echo "$(since "$t")"
@@ -57,7 +69,7 @@ echo "parallel -j$JOBS, plan + run + merge: $(plan_run par "-j$JOBS") s"
 
 # killed half-way, then resumed
 t=$(now)
-"$H" tiles plan dem.tif --product svf --tile "$TILE" -o res "${OPTS[@]}"
+"$H" tiles plan dem.tif --product "$PRODUCT" --tile "$TILE" -o res "${OPTS[@]}"
 total=$(wc -l <res/jobs)
 setsid parallel "-j$JOBS" --joblog res/log "$H" tiles run res/manifest {} :::: res/jobs \
     >/dev/null 2>&1 &
@@ -82,7 +94,7 @@ from osgeo import gdal
 gdal.UseExceptions()
 def rd(p):
     ds = gdal.Open(p)
-    a = ds.GetRasterBand(1).ReadAsArray()
+    a = np.stack([ds.GetRasterBand(k + 1).ReadAsArray() for k in range(ds.RasterCount)])
     ds = None
     return a
 a, b = rd("single.tif"), rd("seq.tif")

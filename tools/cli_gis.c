@@ -47,6 +47,8 @@ static const gis_opt opts[] = {
     {"-o", "PREFIX", HOR, "the GeoTIFFs written: PREFIX_AAA.tif an azimuth (r.horizon's names)"},
     {"--directions", "N", SVF, "azimuths, equally spaced from east (1..1024; default 16)"},
     {"--directions", "N", OPEN, "azimuths, equally spaced from east (1..1024; default 8)"},
+    {"--directions", "N", INS, "the sky's horizons: azimuths, equally spaced from east "
+     "(1..1024; default 16)"},
     {"--lambertian", NULL, SVF, "the Lambertian-weighted variant, mean cos^2 (SAGA's)"},
     {"--azimuths", "A,B,...", HOR, "these azimuths, degrees (or --step)"},
     {"--step", "DEG", HOR, "every DEG degrees around the circle, in (0, 360]"},
@@ -56,10 +58,12 @@ static const gis_opt opts[] = {
      "compass: clockwise from north"},
     {"--radius", "R", SVF | HOR, "search radius, metres (default 0: the whole DEM)"},
     {"--radius", "R", OPEN, "search radius, metres (default 10 cells of the DEM)"},
-    {"--tile", "N", SVF | HOR | OPEN,
+    {"--radius", "R", SUN | INS, "shadows cast from farther than R metres are left out, "
+     "and the sky's horizons searched within R (default 0: as far as terrain can reach)"},
+    {"--tile", "N", SVF | HOR | OPEN | SUN | INS,
      "with a radius, a DEM wider or taller than N texels is read, computed and written "
      "window by window, memory bounded (square cells only); 0: always whole (default 4096)"},
-    {"--job", "K", SVF | HOR | OPEN,
+    {"--job", "K", SVF | HOR | OPEN | SUN | INS,
      "with --tile: only window K (from 1, row by row) of a DEM that streams, written as a "
      "GeoTIFF of its own extent (what `hfshade tiles run` does for one job)"},
     {"--backend", "gles|cpu|truth", ALL, "GLES renderer (default), CPU reference, ground truth"},
@@ -217,11 +221,11 @@ static int set_value(gis_args *a, const char *prog, const char *name, const char
                      pending *st)
 {
     long n;
-    if (a->product == GIS_SUN || a->product == GIS_INSOLATION) {
-        if (strcmp(name, "-o") && strcmp(name, "--backend") && strcmp(name, "--zscale") &&
-            strcmp(name, "--nodata"))
+    static const char *const sun_only[] = {"--datetime", "--from", "--to", "--timezone",
+                                           "--linke", "--step"};
+    for (size_t k = 0; k < sizeof sun_only / sizeof sun_only[0]; ++k)
+        if ((a->product == GIS_SUN || a->product == GIS_INSOLATION) && !strcmp(name, sun_only[k]))
             return set_sun_value(a, prog, name, v, st);
-    }
     if (!strcmp(name, "-o")) {
         a->out = v;
     } else if (!strcmp(name, "--directions")) {
@@ -343,6 +347,10 @@ static int check_args(gis_args *a, const char *prog, const pending *st)
     if (!a->out)
         return hfs_usage_error(prog, "no output given (-o %s)",
                                a->product == GIS_HORIZON ? "PREFIX" : "OUT.tif");
+    if ((a->product == GIS_SUN || a->product == GIS_INSOLATION) && a->radius_given &&
+        a->backend == HFS_BACKEND_TRUTH)
+        return hfs_usage_error(prog, "--radius: not with --backend truth (the truth renders the "
+                               "sun's exact shadows from the whole DEM)");
     if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
         return check_sun(a, prog, st);
     if (a->product != GIS_HORIZON)
@@ -414,7 +422,7 @@ int hfs_cli_gis_args(int argc, char **argv, gis_args *a, double *azimuth)
     *a = (gis_args){.product = p, .backend = HFS_BACKEND_GLES, .zscale = 1.0,
                     .linke = HFS_LINKE_DEFAULT, .step_min = 15.0, .tile = GIS_TILE_DEFAULT,
                     .azimuth = azimuth};
-    a->directions = a->product == GIS_SVF ? 16 : 8;
+    a->directions = a->product == GIS_OPENNESS ? 8 : 16;
     return parse(argc, argv, a);
 }
 

@@ -20,7 +20,8 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: hfshade tiles plan DEM --product svf|horizon|openness --tile N -o DIR\n"
+            "usage: hfshade tiles plan DEM --product svf|horizon|openness|sun|insolation\n"
+            "                          --tile N -o DIR\n"
             "                          [the product's options: --radius R, --directions N, ...]\n"
             "       hfshade tiles run DIR/manifest LINE\n"
             "       hfshade tiles merge DIR -o OUT.tif [--cog]\n"
@@ -57,9 +58,9 @@ static int plan(int argc, char **argv)
     if (!product || !dir || !tile)
         return hfs_usage_error("hfshade tiles plan", "%s is required",
                                !product ? "--product" : !dir ? "-o DIR" : "--tile N");
-    if (strcmp(product, "svf") && strcmp(product, "horizon") && strcmp(product, "openness"))
-        return hfs_usage_error("hfshade tiles plan", "--product: '%s' is not svf, horizon or "
-                               "openness", product);
+    if (!hfs_cli_is_gis(product))
+        return hfs_usage_error("hfshade tiles plan", "--product: '%s' is not svf, horizon, "
+                               "openness, sun or insolation", product);
     /* the product's own parser checks every option: PRODUCT REST --tile N -o DIR/tiles/0 */
     char out[4096];
     snprintf(out, sizeof out, "%s/tiles/0", dir);

@@ -112,10 +112,10 @@ static int compute_and_write(gis_run *r, hfs_error *err)
 {
     const gis_args *a = r->a;
     const size_t n = (size_t)r->dem.width * (size_t)r->dem.height;
-    if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
-        return gis_sun_write(r, err);
     if (r->mode == GIS_STREAMED)
         return gis_stream_write(r, err);
+    if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
+        return gis_sun_write(r, err);
     if (a->product == GIS_HORIZON) {
         double *phi = malloc((size_t)a->n_azimuths * sizeof *phi);
         if (!phi)
@@ -184,20 +184,64 @@ static void summary(const gis_run *r, double seconds)
             r->c.r ? hfs_renderer_backend_name(r->c.r) : backend_name[a->backend], seconds);
 }
 
-/* The DEM opened; read whole unless the product streams (gis_stream.h). */
-static int read_dem(gis_run *r, hfs_error *err)
+/* sun, insolation: 1 when the DEM may stream (gis_sun_choose's first
+ * tests), so that its relief and centre are scanned window by window
+ * rather than read whole. */
+static int sun_may_stream(const gis_run *r)
+{
+    const gis_args *a = r->a;
+    const gis_dem *d = &r->dem;
+    return a->tile > 0 && (d->width > a->tile || d->height > a->tile) && d->square &&
+           a->backend != HFS_BACKEND_TRUTH;
+}
+
+/* svf, horizon, openness: the mode, then the DEM read whole unless it
+ * streams; the product described. */
+static int open_horizons(gis_run *r, int load, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    r->mode = gis_stream_choose(&r->dem, a->tile, gis_command_radius(a, &r->dem), &r->halo);
+    int rc = load && r->mode != GIS_STREAMED ? gis_dem_load(&r->dem, a->dem, err) : HFS_OK;
+    return rc ? rc : describe(r, err);
+}
+
+/* sun, insolation: the site needs the DEM's centre and the mode the sun
+ * and the relief, so a DEM that may stream is scanned first (its relief
+ * and centre, window by window), described, and only then read whole if
+ * it does not stream after all. */
+static int open_sun(gis_run *r, int load, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    int rc;
+    if (sun_may_stream(r)) {
+        double lo, hi;
+        rc = gis_dem_scan(&r->dem, a->dem, &lo, &hi, err);
+        r->c.has_relief = 1;
+        r->c.relief = hi >= lo ? a->zscale * (hi - lo) : 0.0;
+    } else {
+        rc = load ? gis_dem_load(&r->dem, a->dem, err) : HFS_OK;
+    }
+    if (!rc)
+        rc = describe(r, err);
+    if (!rc)
+        r->mode = gis_sun_choose(r);
+    if (!rc && load && r->mode != GIS_STREAMED && !r->dem.sz)
+        rc = gis_dem_load(&r->dem, a->dem, err);
+    return rc;
+}
+
+int gis_run_open(gis_run *r, int load, hfs_error *err)
 {
     const gis_args *a = r->a;
     int rc = gis_dem_open(a->dem, &a->load, &r->dem, err);
-    if (rc)
-        return rc;
-    if (a->product == GIS_SVF || a->product == GIS_HORIZON || a->product == GIS_OPENNESS)
-        r->mode = gis_stream_choose(&r->dem, a->tile, gis_command_radius(a, &r->dem), &r->halo);
-    if (a->job && r->mode != GIS_STREAMED)
-        return hfs_fail(err, HFS_E_INVALID, "%s: --job %d: the DEM is not computed window by "
-                        "window (%s)", a->dem, a->job, r->mode == GIS_WHOLE
-                        ? "it fits one --tile" : gis_stream_why(r->mode));
-    return r->mode == GIS_STREAMED ? HFS_OK : gis_dem_load(&r->dem, a->dem, err);
+    if (!rc)
+        rc = a->product == GIS_SUN || a->product == GIS_INSOLATION ? open_sun(r, load, err)
+                                                                   : open_horizons(r, load, err);
+    if (!rc && a->job && r->mode != GIS_STREAMED)
+        rc = hfs_fail(err, HFS_E_INVALID, "%s: --job %d: the DEM is not computed window by "
+                      "window (%s)", a->dem, a->job, r->mode == GIS_WHOLE
+                      ? "it fits one --tile" : gis_stream_why(r->mode));
+    return rc;
 }
 
 int gis_command_run(const gis_args *a, hfs_error *err)
@@ -206,9 +250,7 @@ int gis_command_run(const gis_args *a, hfs_error *err)
     const double t0 = now_seconds();
     int rc = plan_outputs(&r, err);
     if (!rc)
-        rc = read_dem(&r, err);
-    if (!rc)
-        rc = describe(&r, err);
+        rc = gis_run_open(&r, 1, err);
     if (!rc && !r.no_render) {
         const hfs_renderer_desc desc = {.backend = a->backend};
         rc = hfs_renderer_create(&desc, &r.c.r, err);

@@ -165,6 +165,56 @@ int gis_dem_read_window(const gis_dem *dem, const char *path, int x0, int y0, in
     return rc ? hfs_fail(err, rc, "%s: %s", path, ferr.msg) : HFS_OK;
 }
 
+/* The centre's height of an opened dem, from a window of up to 64 x 64
+ * texels around it, filled (gis_dem_read_window). */
+static int scan_centre(gis_dem *dem, const char *path, hfs_error *err)
+{
+    enum { W = 64 };
+    const int cx = dem->width / 2, cy = dem->height / 2;
+    const int x0 = cx > W / 2 ? (cx - W / 2) / 16 * 16 : 0, y0 = cy > W / 2 ? (cy - W / 2) / 16 * 16 : 0;
+    const int w = dem->width - x0 < W ? dem->width - x0 : W;
+    const int h = dem->height - y0 < W ? dem->height - y0 : W;
+    float z[W * W];
+    unsigned char hole[W * W];
+    long holes;
+    const int rc = gis_dem_read_window(dem, path, x0, y0, w, h, z, hole, &holes, err);
+    if (!rc)
+        dem->centre_z = z[(size_t)(cy - y0) * (size_t)w + (size_t)(cx - x0)];
+    return rc;
+}
+
+int gis_dem_scan(gis_dem *dem, const char *path, double *lo, double *hi, hfs_error *err)
+{
+    enum { STRIP = 256 };
+    float *z = malloc((size_t)dem->width * STRIP * sizeof *z);
+    if (!z)
+        return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory for a strip of %d rows", path,
+                        STRIP);
+    const float nd = (float)dem->nodata;
+    float l = INFINITY, u = -INFINITY;
+    int rc = HFS_OK;
+    for (int y = 0; y < dem->height && !rc; y += STRIP) {
+        const int h = dem->height - y < STRIP ? dem->height - y : STRIP;
+        CPLPushErrorHandler(CPLQuietErrorHandler);
+        const CPLErr e = GDALRasterIO(GDALGetRasterBand(dem->ds, 1), GF_Read, 0, y, dem->width,
+                                      h, z, dem->width, h, GDT_Float32, 0, 0);
+        CPLPopErrorHandler();
+        if (e != CE_None)
+            rc = hfs_fail(err, HFS_E_FORMAT, "%s: GDAL could not read its band 1 at row %d (%s)",
+                          path, y, CPLGetLastErrorMsg());
+        for (size_t p = 0; !rc && p < (size_t)dem->width * (size_t)h; ++p) {
+            if (!isfinite(z[p]) || (dem->has_nodata && z[p] == nd))
+                continue; /* a hole, as gis_dem_read_window marks them */
+            l = fminf(l, z[p]);
+            u = fmaxf(u, z[p]);
+        }
+        gis_dem_drop_cache(dem);
+    }
+    free(z);
+    *lo = l, *hi = u;
+    return rc ? rc : scan_centre(dem, path, err);
+}
+
 void gis_dem_drop_cache(const gis_dem *dem)
 {
     if (dem->ds)

@@ -81,6 +81,13 @@ int gis_dem_load(gis_dem *dem, const char *path, hfs_error *err);
 int gis_dem_read_window(const gis_dem *dem, const char *path, int x0, int y0, int w, int h,
                         float *z, unsigned char *hole, long *holes, hfs_error *err);
 
+/* Of an opened dem, read strip by strip (never whole): *lo and *hi, its
+ * lowest and highest valid heights (*lo > *hi when it has none), and
+ * dem->centre_z, the height at texel (w/2, h/2), filled from a 64 x 64
+ * window around it where it is a hole (as the whole band's fill where the
+ * hole is a few texels across).  0, or an error naming path. */
+int gis_dem_scan(gis_dem *dem, const char *path, double *lo, double *hi, hfs_error *err);
+
 /* Frees what GDAL holds of an opened dem's blocks (read so far). */
 void gis_dem_drop_cache(const gis_dem *dem);
 

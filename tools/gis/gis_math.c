@@ -148,6 +148,24 @@ double gis_disk_visible(const double n[3], double phi, double elev, double alpha
     return all > 0.0 ? lit / all : 0.0;
 }
 
+void gis_sky_add(double *acc, const float *gamma, const float *n, size_t count, double phi)
+{
+    const double cp = cos(phi), sp = sin(phi);
+    for (size_t p = 0; p < count; ++p) {
+        const double nx = n[3 * p], ny = n[3 * p + 1], nz = n[3 * p + 2];
+        const double nh = nx * cp + ny * sp, t = atan2(-nh, nz);
+        const double g = fmax(fmax((double)gamma[p], t), 0.0); /* NONE is -pi/2 */
+        const double c = cos(g);
+        acc[p] += 0.5 * nz * c * c + nh * (0.5 * (0.5 * PI - g) - 0.25 * sin(2.0 * g));
+    }
+}
+
+void gis_sky_finish(float *out, const double *acc, size_t count, int n_dirs)
+{
+    for (size_t p = 0; p < count; ++p)
+        out[p] = (float)fmin(fmax(2.0 * acc[p] / n_dirs, 0.0), 1.0);
+}
+
 double gis_shadow_reach(double relief, double low)
 {
     if (!(low > 0.0))

@@ -8,6 +8,7 @@
  *   - the products from horizon elevation angles gamma (radians, as
  *     hfs_renderer_horizons returns them): sky-view factor (Zaksek or
  *     Lambertian), openness, the horizon raster's degrees;
+ *   - the isotropic sky's share on a tilted surface (insolation's diffuse);
  *   - the horizon command's file names, as GRASS r.horizon names its maps.
  * Angles on the command line are degrees; everything here that takes or
  * returns phi speaks radians.
@@ -92,6 +93,27 @@ float gis_nodata_for(int has_nodata, double nodata, double lo, double hi);
  * them as floats, count as outside). */
 int gis_disk_cut(double elev, double alpha, float gamma);
 double gis_disk_visible(const double n[3], double phi, double elev, double alpha, float gamma);
+
+/* The isotropic sky's share on a tilted surface under its horizons:
+ * (1/pi) times the integral of max(0, n.w) over the sky's directions
+ * that the terrain leaves open, the sky being the upper hemisphere (as a
+ * clear-sky model's diffuse horizontal irradiance is: below the
+ * horizontal lies ground, whose reflection is not counted; the svf's
+ * gamma+ = max(gamma, 0) likewise); 1 on open flat ground, (1 + n_z) / 2
+ * on an open tilted plane.  Azimuth by azimuth, above g = max(gamma, t,
+ * 0), t = atan(-n_h / n_z) where the tangent plane cuts the azimuth's
+ * vertical half-plane (n_h = n_x cos phi + n_y sin phi), the integral of
+ * (n_z sin e + n_h cos e) cos e de is, in closed form,
+ *   n_z cos^2(g) / 2 + n_h ((pi/2 - g) / 2 - sin(2g) / 4),
+ * and twice the azimuths' mean of it is the share (a uniform rule over
+ * the circle).  A ray that met no terrain (gis_horizon_none) has gamma
+ * below every g.  acc[p] += the term of azimuth phi (the grid's, radians)
+ * at texel p of unit normal n[3p..3p+2] (n_z > 0, a height field's). */
+void gis_sky_add(double *acc, const float *gamma, const float *n, size_t count, double phi);
+
+/* out[p] = the share from the n_dirs azimuths' summed terms acc[p],
+ * clamped to [0, 1] (2 acc / n_dirs). */
+void gis_sky_finish(float *out, const double *acc, size_t count, int n_dirs);
 
 /* How far (world units of horizontal distance) terrain of relief `relief`
  * (world units: zscale times the field's highest minus lowest height) can

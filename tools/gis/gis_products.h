@@ -27,6 +27,11 @@ typedef struct gis_compute {
     double zscale;
     double radius;           /* metres, 0: the whole DEM                   */
     float nodata;            /* written where the input has no data        */
+    /* sun, insolation: zscale times the whole DEM's highest minus lowest
+     * height (the shadows' reach), when the field computed on is only a
+     * window of it (has_relief); else taken from dem. */
+    int has_relief;
+    double relief;
 } gis_compute;
 
 /* The n_dirs map azimuths of the sky-view factor and openness: ccw-east

@@ -36,6 +36,18 @@ gis_raster gis_run_product_raster(const gis_run *r, const float *v, size_t n)
         g.band[0] = (gis_band){v, r->a->svf == GIS_SVF_LAMBERTIAN
                                       ? "sky-view factor, Lambertian (Haentzschel et al. 2005)"
                                       : "sky-view factor (Zaksek et al. 2011)", ""};
+    } else if (r->a->product == GIS_SUN) {
+        g.n_bands = 2;
+        g.band[0] = (gis_band){v, "direct-beam irradiance on the tilted, shadowed surface "
+                               "(clear sky)", "W/m^2"};
+        g.band[1] = (gis_band){v ? v + n : NULL, "visible fraction of the sun's disk", ""};
+    } else if (r->a->product == GIS_INSOLATION) {
+        g.n_bands = 3;
+        g.band[0] = (gis_band){v, "beam irradiation (clear sky)", "Wh/m^2"};
+        g.band[1] = (gis_band){v ? v + n : NULL, "sky-diffuse irradiation (clear sky, "
+                               "isotropic)", "Wh/m^2"};
+        g.band[2] = (gis_band){v ? v + 2 * n : NULL, "global irradiation (beam + sky-diffuse)",
+                               "Wh/m^2"};
     } else {
         g.n_bands = 2;
         g.band[0] = (gis_band){v, "positive openness (Yokoyama et al. 2002)", "degrees"};

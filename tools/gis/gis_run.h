@@ -31,7 +31,7 @@ typedef struct gis_run {
     char meta[GIS_RASTER_MAX_META - 2][GIS_RUN_META_LEN]; /* every file's items */
     int n_meta;
     int no_render;           /* nothing to render: no renderer is made      */
-    /* svf, horizon, openness: whole or window by window (gis_stream.h) */
+    /* whole or window by window (gis_stream.h) */
     gis_stream_mode mode;
     int halo;                /* streamed: texels around each window         */
     int windows;             /* streamed: windows computed                  */
@@ -53,9 +53,10 @@ void gis_run_meta(gis_run *r, const char *fmt, ...)
  * `extra` (NULL: none). */
 gis_raster gis_run_raster(const gis_run *r, const char *extra);
 
-/* svf's or openness's raster (bands' descriptions and units) with the
- * values v: svf one band, openness two (v and v + n); v NULL for a file
- * written window by window. */
+/* The product's raster (bands' descriptions and units) with the values
+ * v, n a band: svf one band, openness and sun two (v, v + n), insolation
+ * three; v NULL for a file written window by window.  Not horizon's
+ * (gis_run_horizon_raster). */
 gis_raster gis_run_product_raster(const gis_run *r, const float *v, size_t n);
 
 /* The strings of a horizon file's raster (the caller's: alive while the
@@ -68,12 +69,29 @@ typedef struct gis_horizon_text {
 gis_raster gis_run_horizon_raster(const gis_run *r, int k, const float *deg,
                                   gis_horizon_text *t);
 
+/* Opens the run's DEM, describes the product (radius, nodata, metadata;
+ * sun and insolation: the site, the sun or the period) and settles
+ * whether it is computed whole or window by window (r->mode, r->halo:
+ * gis_stream.h); with load, a DEM computed whole is read whole.  What
+ * `hfshade tiles plan` (load 0) and the commands share, so a plan's
+ * windows are the streamed command's.  0, or an error naming the DEM
+ * (--job on a DEM that does not stream, among them). */
+int gis_run_open(gis_run *r, int load, hfs_error *err);
+
 /* sun, insolation: the site (the DEM's centre: WGS84 longitude and
  * latitude, its height), the sun or the period, nodata and the metadata.
  * 0, or an error (a DEM without a CRS, a site out of range). */
 int gis_sun_describe(gis_run *r, hfs_error *err);
 
-/* sun, insolation: renders and writes the raster. */
+/* sun, insolation: how the DEM is computed (r->mode, r->halo), the
+ * site and sun described: window by window when --tile asks for it, the
+ * cells are square, the backend is not the truth (it renders the whole
+ * DEM) and the shadows' search radius (the sun's reach from the whole
+ * DEM's relief r->c.relief, cut by --radius; insolation: --radius, which
+ * its sky needs) leaves a halo narrower than the DEM. */
+gis_stream_mode gis_sun_choose(gis_run *r);
+
+/* sun, insolation: renders and writes the raster (whole). */
 int gis_sun_write(gis_run *r, hfs_error *err);
 
 /* sun, insolation: the summary line's middle ("sun at azimuth ..."). */

@@ -70,6 +70,8 @@ const char *gis_stream_why(gis_stream_mode mode)
         return "cells not square: resampled over the whole grid";
     case GIS_WHOLE_HALO:
         return "a window with its halo spans the DEM";
+    case GIS_WHOLE_TRUTH:
+        return "the truth renders the whole DEM's shadows";
     default:
         return "";
     }
@@ -126,6 +128,12 @@ static int compute(stream *s, float *z, unsigned char *hole, float *v, hfs_error
         return gis_product_horizons(&c, s->phi, a->n_azimuths, write_horizon, s, err);
     if (a->product == GIS_SVF)
         return gis_product_svf(&c, a->directions, a->svf, v, err);
+    if (a->product == GIS_SUN) /* c.relief: the whole DEM's (gis_run_open) */
+        return gis_product_sun(&c, &r->sun, v, v + n, err);
+    if (a->product == GIS_INSOLATION) {
+        gis_period_stats st;
+        return gis_product_insolation(&c, &r->period, v, v + n, v + 2 * n, &st, err);
+    }
     return gis_product_openness(&c, a->directions, v, v + n, err);
 }
 
@@ -172,7 +180,9 @@ static int open_files(stream *s, hfs_error *err)
     const gis_args *a = r->a;
     const int horizon = a->product == GIS_HORIZON;
     s->n_out = horizon ? a->n_azimuths : 1;
-    s->n_bands = a->product == GIS_OPENNESS ? 2 : 1;
+    s->n_bands = a->product == GIS_INSOLATION                             ? 3
+                 : a->product == GIS_OPENNESS || a->product == GIS_SUN ? 2
+                                                                         : 1;
     s->out = calloc((size_t)s->n_out, sizeof *s->out);
     s->phi = horizon ? malloc((size_t)a->n_azimuths * sizeof *s->phi) : NULL;
     if (!s->out || (horizon && !s->phi))

@@ -1,13 +1,15 @@
 /*
- * gis_stream.h — svf, horizon and openness of a DEM larger than a tile,
+ * gis_stream.h — the GIS products of a DEM larger than a tile,
  * window by window, so that memory stays bounded (issue 39 item 1): the
  * whole-DEM path (gis_command.c) holds the DEM, the product and its
  * encoded file at once (3.0 GB of RSS for an 8192x6144 sky-view factor).
  *
- * When: the command is svf, horizon or openness; --tile N > 0 and the
- * DEM wider or taller than N; a search radius (--radius, or openness's
- * default); square cells (gis_dem.h `square`: a projected CRS's); and a
- * window smaller than the DEM (a halo can span it).  Otherwise the DEM is
+ * When: --tile N > 0 and the DEM wider or taller than N; a search radius
+ * (--radius, or openness's default; sun: the reach of its shadows, cut by
+ * --radius; insolation: --radius, for its sky); square cells (gis_dem.h
+ * `square`: a projected CRS's); not sun or insolation on the truth (it
+ * renders the whole DEM); and a window smaller than the DEM (a halo can
+ * span it).  Otherwise the DEM is
  * computed whole, and gis_stream_choose says why (the summary line):
  *   - without a radius every horizon may reach the DEM's edge: no halo
  *     short of the whole DEM is enough;
@@ -53,13 +55,15 @@ typedef enum gis_stream_mode {
     GIS_WHOLE_NO_RADIUS,   /* over a tile, but no radius                     */
     GIS_WHOLE_NOT_SQUARE,  /* over a tile, but its cells are not square      */
     GIS_WHOLE_HALO,        /* over a tile, but a window and its halo span it */
+    GIS_WHOLE_TRUTH,       /* sun, insolation on the truth: it renders the
+                              whole DEM's exact shadows                      */
     GIS_STREAMED           /* window by window                               */
 } gis_stream_mode;
 
 /* How dem is computed with tiles of `tile` texels a side (0: never
- * windows) and a search radius of `radius` metres (0: the whole DEM), for
- * a product that can stream (svf, horizon, openness); *halo the halo in
- * texels when streamed. */
+ * windows) and a search radius of `radius` metres (0: the whole DEM; sun
+ * and insolation: gis_sun_choose's); *halo the halo in texels when
+ * streamed. */
 gis_stream_mode gis_stream_choose(const gis_dem *dem, int tile, double radius, int *halo);
 
 /* The summary line's words for mode ("" for GIS_WHOLE; "windows" for

@@ -7,6 +7,7 @@
 
 #include "clear_sky.h"
 #include "field_geom.h"
+#include "gis_horizons.h"
 #include "gis_resample.h"
 
 #include <math.h>
@@ -113,17 +114,24 @@ static int sun_factor_render(const gis_compute *c, const gis_sun_at *s, float *f
     return rc;
 }
 
-/* zscale times the highest minus the lowest height of the square grid. */
+/* zscale times the highest minus the lowest height: the whole DEM's when
+ * c is a window of it, else the square grid's (its holes left out where
+ * it is the input's own grid, as a window's scan leaves them out). */
 static double relief_of(const gis_compute *c)
 {
+    if (c->has_relief)
+        return c->relief;
     const gis_dem *d = c->dem;
     const size_t n = (size_t)d->sw * (size_t)d->sh;
-    float lo = d->sz[0], hi = d->sz[0];
-    for (size_t p = 1; p < n; ++p) {
+    const int own = d->sw == d->width && d->sh == d->height && d->hole;
+    float lo = INFINITY, hi = -INFINITY;
+    for (size_t p = 0; p < n; ++p) {
+        if (own && d->hole[p])
+            continue;
         lo = fminf(lo, d->sz[p]);
         hi = fmaxf(hi, d->sz[p]);
     }
-    return c->zscale * ((double)hi - (double)lo);
+    return hi >= lo ? c->zscale * ((double)hi - (double)lo) : 0.0;
 }
 
 /* The same f and V through one horizon: the unshadowed f (the exact cap,
@@ -141,7 +149,8 @@ static int sun_factor_horizon(const gis_compute *c, const gis_sun_at *s, double 
     hfs_quality q;
     sun_scene(c, s, &l, &q);
     const double low = l.key[0].elev - l.key[0].alpha, high = l.key[0].elev + l.key[0].alpha;
-    const double reach = gis_shadow_reach(relief, low);
+    const double reach = fmin(gis_shadow_reach(relief, low), c->radius > 0.0 ? c->radius
+                                                                              : HUGE_VAL);
     const hfs_horizon_desc desc = {.n_azimuths = 1, .azimuth = &l.key[0].phi,
                                    .radius = isfinite(reach) ? fmax(reach, 2.0 * field.dx) : 0.0,
                                    .window = 1, .lo = fmax(low, -PI / 2), .hi = fmin(high, PI / 2)};
@@ -225,25 +234,54 @@ int gis_period_scan(const gis_period *p, gis_period_stats *st)
     return 0;
 }
 
-/* pi Lo of the isotropic sky of radiance 1/pi, on the square grid. */
-static int sky_share(const gis_compute *c, float *sky, hfs_error *err)
+/* What the sky's horizons are summed into. */
+typedef struct sky_sums {
+    double *acc;
+    const float *normal;   /* 3 a texel                                   */
+    const double *phi;     /* the grid's azimuths                         */
+    size_t n;
+} sky_sums;
+
+static int add_sky(void *user, int k, const float *gamma, hfs_error *err)
+{
+    sky_sums *s = user;
+    (void)err;
+    gis_sky_add(s->acc, gamma, s->normal, s->n, s->phi[k]);
+    return HFS_OK;
+}
+
+/* The isotropic sky's share on the tilted surface under the horizons of
+ * n_dirs azimuths (gis_sky_add), on the square grid. */
+static int sky_share(const gis_compute *c, int n_dirs, float *sky, hfs_error *err)
 {
     const hfs_field field = field_of(c);
-    hfs_lighting l;
-    hfs_lighting_defaults(&l);
-    l.has_env = 1;
-    for (int ch = 0; ch < 3; ++ch)
-        l.env_sh[ch][0] = 2.0 * sqrt(PI) / PI;
-    hfs_quality q;
-    quality(&q);
-    hfs_image lit = {0};
-    int rc = hfs_image_alloc(&lit, field.width, field.height, err);
-    if (!rc)
-        rc = hfs_renderer_render(c->r, &field, &l, &q, &lit, NULL, NULL, err);
     const size_t n = (size_t)field.width * (size_t)field.height;
-    for (size_t p = 0; p < n && !rc; ++p)
-        sky[p] = (float)fmax(PI * lit.rgb[3 * p], 0.0);
-    hfs_image_free(&lit);
+    sky_sums s = {.acc = calloc(n, sizeof(double)), .n = n};
+    float *normal = malloc(3 * n * sizeof *normal);
+    double *phi = malloc((size_t)n_dirs * sizeof *phi);
+    if (!s.acc || !normal || !phi) {
+        free(s.acc), free(normal), free(phi);
+        return hfs_fail(err, HFS_E_NOMEM, "insolation: out of memory");
+    }
+    for (size_t p = 0; p < n; ++p) {
+        double nrm[3];
+        hfs_field_normal(&field, (int)(p % (size_t)field.width),
+                         (int)(p / (size_t)field.width), nrm);
+        for (int a = 0; a < 3; ++a)
+            normal[3 * p + (size_t)a] = (float)nrm[a];
+    }
+    gis_product_directions(phi, n_dirs);
+    for (int k = 0; k < n_dirs; ++k)
+        phi[k] = gis_grid_phi(phi[k], c->dem->ex, c->dem->ey);
+    s.normal = normal, s.phi = phi;
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    const int rc = gis_horizons_each(c->r, &field, &q, phi, n_dirs, c->radius, add_sky, &s, err);
+    if (!rc)
+        gis_sky_finish(sky, s.acc, n, n_dirs);
+    free(phi);
+    free(normal);
+    free(s.acc);
     return rc;
 }
 
@@ -282,7 +320,7 @@ int gis_product_insolation(const gis_compute *c, const gis_period *p, float *bea
     if (!rc && gis_period_scan(p, st))
         rc = hfs_fail(err, HFS_E_INVALID, "insolation: the site or period is out of range");
     if (!rc && st->steps_sun > 0)
-        rc = sky_share(c, sky, err);
+        rc = sky_share(c, p->sky_directions, sky, err);
     if (!rc)
         rc = beam_sum(c, p, acc, f, err);
     if (!rc) {

@@ -21,10 +21,12 @@
  * hfs_render_unshadowed (the exact cap irradiance, V = 1), clamped to
  * [0, 1]; 0 where f_unshadowed <= GIS_SUN_SELF_SHADOW (the slope faces away
  * from the sun: self-shadowed).
- * The sky: an isotropic sky of radiance 1/pi (the environment's SH
- * coefficient 0 = 2 sqrt(pi) / pi, the rest 0) gives an open horizontal
- * texel E = 1, so pi Lo of its render is the sky's shadowed and tilted
- * share of the diffuse horizontal irradiance (1 on open flat ground).
+ * The search radius c->radius (> 0: `--radius`) cuts the sun's horizon
+ * search short of its reach: shadows cast from farther are left out.
+ * The sky: the isotropic upper hemisphere's share on the tilted surface
+ * under the terrain's horizons (gis_sky_add: closed form per azimuth,
+ * p->sky_directions azimuths searched within c->radius), 1 on open flat
+ * ground: the share of the diffuse horizontal irradiance the texel gets.
  *
  * One sun for the whole DEM: the site is the DEM's centre (its longitude,
  * latitude and height); the sun's direction moves about 0.01 degrees per
@@ -83,6 +85,7 @@ typedef struct gis_period {
     long n_steps;               /* ceil((jd_to - jd_from) / step)             */
     hfs_solar_site site;
     double linke;
+    int sky_directions;         /* azimuths of the sky's horizons (>= 1)     */
 } gis_period;
 
 /* Step k (0..n_steps - 1) of p: its midpoint (UTC Julian day) and length
@@ -104,8 +107,8 @@ int gis_period_scan(const gis_period *p, gis_period_stats *st);
 /* `hfshade insolation` over p (Wh/m^2 on the input's grid): beam[] = the
  * sum over the steps with h0 > 0 of beam_normal * f * hours (one render a
  * step, the same renderer and field: only the key light moves), diffuse[]
- * = the diffuse horizontal irradiation times pi Lo of one render of the
- * isotropic sky, global[] = beam + diffuse. */
+ * = the diffuse horizontal irradiation times the sky's share (above),
+ * global[] = beam + diffuse. */
 int gis_product_insolation(const gis_compute *c, const gis_period *p, float *beam,
                            float *diffuse, float *global, gis_period_stats *st, hfs_error *err);
 

@@ -39,6 +39,7 @@ static int site_of(gis_run *r, hfs_error *err)
     gis_run_meta(r, "HFS_SITE_LAT=%.6f", lat);
     gis_run_meta(r, "HFS_SITE_ELEVATION_M=%.6g", z);
     gis_run_meta(r, "HFS_LINKE=%.6g", a->linke);
+    gis_run_meta(r, "HFS_RADIUS_M=%.9g", a->radius);
     gis_run_meta(r, "HFS_SOLAR_POSITION=NOAA solar calculator (Meeus 1998), apparent "
                  "elevation with refraction");
     gis_run_meta(r, "HFS_CLEAR_SKY=ESRA (Rigollier et al. 2000), as GRASS r.sun");
@@ -67,7 +68,8 @@ static int describe_period(gis_run *r, hfs_error *err)
 {
     const gis_args *a = r->a;
     r->period = (gis_period){.jd_from = a->jd_from, .jd_to = a->jd_to, .step_min = a->step_min,
-                             .n_steps = a->n_steps, .site = r->site, .linke = a->linke};
+                             .n_steps = a->n_steps, .site = r->site, .linke = a->linke,
+                             .sky_directions = a->directions};
     if (gis_period_scan(&r->period, &r->stats))
         return hfs_fail(err, HFS_E_INVALID, "%s: no sun for this site and period", a->dem);
     r->no_render = r->stats.steps_sun == 0;
@@ -81,8 +83,9 @@ static int describe_period(gis_run *r, hfs_error *err)
     gis_run_meta(r, "HFS_STEPS_SUN=%ld", r->stats.steps_sun);
     gis_run_meta(r, "HFS_BEAM_NORMAL_WH=%.3f", r->stats.beam_normal_wh);
     gis_run_meta(r, "HFS_DIFFUSE_HORIZONTAL_WH=%.3f", r->stats.diffuse_wh);
-    gis_run_meta(r, "HFS_DIFFUSE_MODEL=isotropic sky over the terrain's horizons; no "
-                 "ground-reflected part");
+    gis_run_meta(r, "HFS_DIFFUSE_MODEL=isotropic sky (upper hemisphere) over the terrain's "
+                 "horizons; no ground-reflected part");
+    gis_run_meta(r, "HFS_DIRECTIONS=%d", a->directions);
     return HFS_OK;
 }
 
@@ -90,10 +93,30 @@ int gis_sun_describe(gis_run *r, hfs_error *err)
 {
     /* Every value >= 0 and finite: the input's nodata when negative. */
     r->c.nodata = gis_nodata_for(r->dem.has_nodata, r->dem.nodata, 0.0, FLT_MAX);
+    r->c.radius = r->a->radius;
     const int rc = site_of(r, err);
     if (rc)
         return rc;
     return r->a->product == GIS_SUN ? describe_sun(r, err) : describe_period(r, err);
+}
+
+gis_stream_mode gis_sun_choose(gis_run *r)
+{
+    const gis_args *a = r->a;
+    const gis_dem *d = &r->dem;
+    if (a->tile <= 0 || (d->width <= a->tile && d->height <= a->tile))
+        return GIS_WHOLE;
+    if (a->backend == HFS_BACKEND_TRUTH)
+        return GIS_WHOLE_TRUTH;
+    double radius = a->radius; /* insolation: its sky's, and no farther for the suns */
+    if (a->product == GIS_SUN) {
+        const double alpha = r->sun.alpha_deg * 3.14159265358979323846 / 180.0;
+        const double low = r->sun.pos.elevation_deg * 3.14159265358979323846 / 180.0 - alpha;
+        const double reach = fmin(gis_shadow_reach(r->c.relief, low),
+                                  a->radius > 0.0 ? a->radius : HUGE_VAL);
+        radius = fmax(reach, 2.0 * d->d); /* as the search's own (gis_sun.c) */
+    }
+    return gis_stream_choose(d, a->tile, radius, &r->halo);
 }
 
 int gis_sun_write(gis_run *r, hfs_error *err)
@@ -104,24 +127,13 @@ int gis_sun_write(gis_run *r, hfs_error *err)
     float *v = malloc((sun ? 2 : 3) * n * sizeof *v);
     if (!v)
         return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", a->out);
-    gis_raster g = gis_run_raster(r, NULL);
-    int rc;
-    if (sun) {
-        rc = gis_product_sun(&r->c, &r->sun, v, v + n, err);
-        g.n_bands = 2;
-        g.band[0] = (gis_band){v, "direct-beam irradiance on the tilted, shadowed surface "
-                               "(clear sky)", "W/m^2"};
-        g.band[1] = (gis_band){v + n, "visible fraction of the sun's disk", ""};
-    } else {
-        rc = gis_product_insolation(&r->c, &r->period, v, v + n, v + 2 * n, &r->stats, err);
-        g.n_bands = 3;
-        g.band[0] = (gis_band){v, "beam irradiation (clear sky)", "Wh/m^2"};
-        g.band[1] = (gis_band){v + n, "sky-diffuse irradiation (clear sky, isotropic)",
-                               "Wh/m^2"};
-        g.band[2] = (gis_band){v + 2 * n, "global irradiation (beam + sky-diffuse)", "Wh/m^2"};
-    }
-    if (!rc)
+    int rc = sun ? gis_product_sun(&r->c, &r->sun, v, v + n, err)
+                 : gis_product_insolation(&r->c, &r->period, v, v + n, v + 2 * n, &r->stats,
+                                          err);
+    if (!rc) {
+        const gis_raster g = gis_run_product_raster(r, v, n);
         rc = gis_raster_write(gis_outputs_set(r->outs, a->out), a->out, &g, err);
+    }
     free(v);
     return rc;
 }

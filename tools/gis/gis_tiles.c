@@ -7,10 +7,7 @@
 
 #include "gis_tiles.h"
 
-#include "gis_dem.h"
-#include "gis_outputs.h"
-#include "gis_raster.h"
-#include "gis_stream.h"
+#include "gis_run.h"
 
 #include <gdal.h>
 #include <gdal_utils.h>
@@ -24,7 +21,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static const char *const product_names[] = {"svf", "horizon", "openness"};
+static const char *const product_names[] = {"svf", "horizon", "openness", "sun", "insolation"};
 
 /* ---- the manifest -------------------------------------------------------- */
 
@@ -93,7 +90,7 @@ int gis_tiles_read(const char *manifest, gis_tiles_plan_t *m, hfs_error *err)
     *m = (gis_tiles_plan_t){0};
     const int line = ini_parse(manifest, on_key, m);
     int known = 0;
-    for (int p = 0; p < 3; ++p)
+    for (int p = 0; p < GIS_N_PRODUCTS; ++p)
         known |= !strcmp(m->product, product_names[p]);
     const int ok = line == 0 && known && m->format == GIS_TILES_FORMAT && m->dem[0] &&
                    m->tile > 0 && m->columns > 0 && m->rows > 0 &&
@@ -134,14 +131,17 @@ int gis_tiles_job_done(const gis_tiles_plan_t *m, int job)
 
 /* ---- plan ---------------------------------------------------------------- */
 
-/* The plan of a on dem (opened): its windows, or why it has none. */
-static int plan_of(const gis_args *a, const gis_dem *dem, gis_tiles_plan_t *m, hfs_error *err)
+/* The plan of run r (opened, not loaded: gis_run_open's windows, the
+ * streamed command's): its windows, or why it has none. */
+static int plan_of(const gis_run *r, gis_tiles_plan_t *m, hfs_error *err)
 {
-    int halo;
-    const gis_stream_mode mode = gis_stream_choose(dem, a->tile, gis_command_radius(a, dem), &halo);
-    if (mode != GIS_STREAMED)
+    const gis_args *a = r->a;
+    const gis_dem *dem = &r->dem;
+    const int halo = r->halo;
+    if (r->mode != GIS_STREAMED)
         return hfs_fail(err, HFS_E_INVALID, "%s: no tiles to plan: %s", a->dem,
-                        mode == GIS_WHOLE ? "the DEM fits one --tile" : gis_stream_why(mode));
+                        r->mode == GIS_WHOLE ? "the DEM fits one --tile"
+                                             : gis_stream_why(r->mode));
     m->format = GIS_TILES_FORMAT;
     m->tile = a->tile, m->halo = halo, m->width = dem->width, m->height = dem->height;
     m->columns = (dem->width + a->tile - 1) / a->tile;
@@ -219,12 +219,15 @@ int gis_tiles_plan(const gis_args *a, char *const *args, int n_args, const char 
     if (!access(path, F_OK))
         return hfs_fail(err, HFS_E_INVALID, "%s: a plan is there already (plan into a new "
                         "directory)", path);
-    gis_dem dem;
-    int rc = gis_dem_open(a->dem, &a->load, &dem, err);
-    if (rc)
-        return rc;
-    rc = plan_of(a, &dem, &m, err);
-    gis_dem_free(&dem);
+    gis_run *r = calloc(1, sizeof *r);
+    if (!r)
+        return hfs_fail(err, HFS_E_NOMEM, "tiles plan: out of memory");
+    r->a = a;
+    int rc = gis_run_open(r, 0, err);
+    if (!rc)
+        rc = plan_of(r, &m, err);
+    gis_dem_free(&r->dem);
+    free(r);
     char tiles[PATH_MAX + 64];
     snprintf(tiles, sizeof tiles, "%s/tiles", dir);
     if (!rc && ((mkdir(dir, 0777) && errno != EEXIST) || (mkdir(tiles, 0777) && errno != EEXIST)))

@@ -42,7 +42,7 @@ typedef struct gis_tiles_plan_t {
     int format;
     char dir[PATH_MAX];       /* the plan's directory (the manifest's)       */
     char dem[PATH_MAX];       /* absolute                                    */
-    char product[16];         /* svf | horizon | openness                    */
+    char product[16];         /* svf | horizon | openness | sun | insolation */
     int tile, halo, columns, rows, jobs, width, height;
     int n_args;               /* the product's option words, replayed        */
     char *args[GIS_TILES_MAX_ARGS];
