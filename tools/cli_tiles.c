@@ -20,7 +20,7 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: hfshade tiles plan DEM --product svf|horizon|openness|sun|insolation\n"
+            "usage: hfshade tiles plan DEM --product render|svf|horizon|openness|sun|insolation\n"
             "                          --tile N -o DIR\n"
             "                          [the product's options: --radius R, --directions N, ...]\n"
             "       hfshade tiles run DIR/manifest LINE\n"
@@ -34,6 +34,34 @@ static void usage(FILE *f)
             "  merge  writes the mosaic: DIR/mosaic.vrt and OUT.tif (horizon: PREFIX_AAA.tif an\n"
             "         azimuth); refused while a job's files are missing.\n"
             "e.g. parallel --joblog DIR/log hfshade tiles run DIR/manifest {} :::: DIR/jobs\n");
+}
+
+/* tiles plan DEM --product render --tile N -o DIR [scene options]: the
+ * render's command line checks them (hfs_cli_render_plan); every job
+ * replays all but the DEM. */
+static int plan_render(const char *tile, char **rest, int n_rest, const char *dir)
+{
+    char *end;
+    const long n = strtol(tile, &end, 10);
+    if (end == tile || *end || n < 16 || n > 1L << 20)
+        return hfs_usage_error("hfshade tiles plan", "--tile: '%s' is not a tile side in "
+                               "[16, 1048576] texels", tile);
+    char *words[MAX_WORDS], *args[MAX_WORDS];
+    int m = 0, n_args = 0;
+    const char *dem = NULL;
+    for (int k = 0; k < n_rest; ++k) {
+        if (!dem && rest[k][0] != '-' && (k == 0 || rest[k - 1][0] != '-'))
+            dem = rest[k];
+        else
+            args[n_args++] = rest[k];
+    }
+    if (!dem)
+        return hfs_usage_error("hfshade tiles plan", "no DEM given");
+    words[m++] = "hfshade", words[m++] = "render", words[m++] = "--height";
+    words[m++] = (char *)dem;
+    for (int k = 0; k < n_args; ++k)
+        words[m++] = args[k];
+    return hfs_cli_render_plan(m, words, (int)n, args, n_args, dir);
 }
 
 /* tiles plan DEM --product P --tile N -o DIR [options] */
@@ -58,9 +86,11 @@ static int plan(int argc, char **argv)
     if (!product || !dir || !tile)
         return hfs_usage_error("hfshade tiles plan", "%s is required",
                                !product ? "--product" : !dir ? "-o DIR" : "--tile N");
-    if (!hfs_cli_is_gis(product))
-        return hfs_usage_error("hfshade tiles plan", "--product: '%s' is not svf, horizon, "
-                               "openness, sun or insolation", product);
+    if (!hfs_cli_is_gis(product) && strcmp(product, "render"))
+        return hfs_usage_error("hfshade tiles plan", "--product: '%s' is not render, svf, "
+                               "horizon, openness, sun or insolation", product);
+    if (!strcmp(product, "render"))
+        return plan_render(tile, rest, n_rest, dir);
     /* the product's own parser checks every option: PRODUCT REST --tile N -o DIR/tiles/0 */
     char out[4096];
     snprintf(out, sizeof out, "%s/tiles/0", dir);
@@ -110,12 +140,17 @@ static int run(int argc, char **argv)
         gis_tiles_path(&m, (int)k, strcmp(m.product, "horizon") ? 0 : -1, out, sizeof out);
         snprintf(tile, sizeof tile, "%d", m.tile);
         snprintf(job, sizeof job, "%ld", k);
-        words[n++] = m.product, words[n++] = m.dem;
+        const int render = !strcmp(m.product, "render");
+        if (render) /* hfshade render --height DEM ... --geotiff OUT */
+            words[n++] = "hfshade", words[n++] = "render", words[n++] = "--height";
+        else
+            words[n++] = m.product;
+        words[n++] = m.dem;
         for (int j = 0; j < m.n_args; ++j)
             words[n++] = m.args[j];
         words[n++] = "--tile", words[n++] = tile, words[n++] = "--job", words[n++] = job;
-        words[n++] = "-o", words[n++] = out;
-        rc = hfs_cli_gis(n, words);
+        words[n++] = render ? "--geotiff" : "-o", words[n++] = out;
+        rc = render ? hfs_cli_scene_main(n, words) : hfs_cli_gis(n, words);
     }
     gis_tiles_plan_free(&m);
     return rc;

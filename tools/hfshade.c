@@ -11,6 +11,8 @@
  *   hfshade svf | horizon | openness | sun | insolation DEM -o OUT [...]
  *                                     (GIS rasters on the DEM's own grid,
  *                                     through GDAL; cli_gis.h)
+ *   hfshade tiles plan | run | merge  (a DEM's windows as jobs; cli_tiles.h;
+ *                                     the render's jobs: cli_render_job.h)
  *
  * Every scene key is also a flag (--KEY VALUE); flags override the file.
  * Errors: one line on stderr naming the input and the problem, exit 1 (2 for
@@ -26,10 +28,12 @@
 #include "cli_query.h"
 #include "cli_usage.h"
 #include "cli_picture.h"
+#include "cli_render_job.h"
 #include "cli_view.h"
 #ifdef HFS_HAVE_GDAL
 #include "geotiff_write.h"
 #include "gis_lit.h"
+#include "gis_tiles.h"
 #include "height_gdal.h"
 #endif
 #include "cli_envmap.h"
@@ -60,6 +64,7 @@ typedef struct cli {
     int colormap; /* 0 none, 1 terrain */
     int quiet;
     int check;    /* --check: everything a render does but write the outputs */
+    int tile, job; /* --tile N --job K: render job K only (cli_render_job.h)   */
     cli_view v;   /* --view, --camera, --exaggeration, --view-size, --background, --haze */
     hfs_scene scene;
 } cli;
@@ -95,6 +100,8 @@ static void usage(FILE *f)
             "         --background sky|studio|#rrggbb|R,G,B (default sky; studio with\n"
             "         preset = panel; R,G,B linear radiance), --haze off|auto|DEPTH (optical\n"
             "         depth across the field's diagonal; default auto, off with preset = panel),\n"
+            "         --tile N --job K (with --geotiff OUT.tif only: job K of a DEM's render in\n"
+            "         tiles of N texels, the part written as a GeoTIFF; `hfshade tiles`),\n"
             "         --quiet, --help\n"
             "scene keys (also accepted in SCENE.ini as KEY = VALUE): run 'hfshade keys'\n");
 }
@@ -188,7 +195,7 @@ static int takes_value(const char *name)
 {
     static const char *const own[] = {"o",    "pfm",      "geotiff",  "points",       "time",
                                       "colormap", "exposure", "view", "camera", "exaggeration",
-                                      "view-size", "background", "haze"};
+                                      "view-size", "background", "haze", "tile", "job"};
     for (size_t k = 0; k < sizeof own / sizeof own[0]; ++k)
         if (!strcmp(name, own[k]))
             return 1;
@@ -260,6 +267,15 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
             if (end == v || *end || n < 1 || n > 10000)
                 return hfs_fail(err, HFS_E_INVALID, "--time: '%s' is not a frame count in [1, 10000]", v);
             c->time_frames = (int)n;
+        } else if (!strcmp(name, "tile") || !strcmp(name, "job")) {
+            char *end;
+            const long n = strtol(v, &end, 10);
+            const int tile = !strcmp(name, "tile");
+            if (end == v || *end || n < (tile ? 16 : 1) || n > (tile ? 1L << 20 : 1L << 30))
+                return hfs_fail(err, HFS_E_INVALID, "--%s: '%s' is not %s", name, v,
+                                tile ? "a tile side in [16, 1048576] texels"
+                                     : "a job number (1, 2, ...)");
+            *(tile ? &c->tile : &c->job) = (int)n;
         } else if (!strcmp(name, "colormap")) {
             if (!strcmp(v, "terrain"))
                 c->colormap = 1;
@@ -379,8 +395,95 @@ static int plan_outputs(const cli *c, hfs_outputs **o, hfs_error *err)
     return rc;
 }
 
+#ifdef HFS_HAVE_GDAL
+/* --tile N --job K: job K's part of the lit grid, as a GeoTIFF of its own
+ * extent (cli_render_job.h). */
+static int cmd_render_job(const cli *c, hfs_error *err)
+{
+    if (!c->tile || !c->job || !c->out_tif || c->out_png || c->out_pfm || c->v.view ||
+        c->time_frames || c->check)
+        return hfs_fail(err, HFS_E_INVALID, "--tile and --job: together, with --geotiff OUT.tif "
+                        "only (a render job of `hfshade tiles`; no -o, --pfm, --view, --time, "
+                        "--check)");
+    const hfs_height_load_opts lo = {.has_nodata = c->scene.has_nodata,
+                                     .nodata = (float)c->scene.nodata};
+    scene_inputs in = {0};
+    hfs_renderer *r = NULL;
+    hfs_image part = {0};
+    hfs_outputs *outs = NULL;
+    int halo = 0, ix = 0, iy = 0;
+    int rc = plan_outputs(c, &outs, err);
+    if (!rc)
+        rc = gis_lit_check_grid(c->scene.height, &lo, err);
+    if (!rc)
+        rc = load_inputs(c, &in, err);
+    if (!rc)
+        rc = render_job_halo(&in.field, &in.lighting, c->tile, &halo, err);
+    const hfs_renderer_desc desc = {.backend = c->scene.backend,
+                                    .context = c->scene.context[0] ? c->scene.context : NULL};
+    if (!rc)
+        rc = hfs_renderer_create(&desc, &r, err);
+    const double t0 = now_seconds();
+    if (!rc)
+        rc = render_job_frame(r, &in.field, &in.lighting, &in.quality, c->tile, halo, c->job,
+                              &part, &ix, &iy, err);
+    if (!rc)
+        rc = gis_lit_write_part(outs, c->out_tif, c->scene.height, &lo, &part, ix, iy, err);
+    if (!rc)
+        rc = hfs_outputs_commit(outs, err);
+    if (!rc && !c->quiet)
+        fprintf(stderr, "%s: job %d of --tile %d (%dx%d at %d,%d, halo %d), backend %s, "
+                "%.3f s\n", c->out_tif, c->job, c->tile, part.width, part.height, ix, iy, halo,
+                hfs_renderer_backend_name(r), now_seconds() - t0);
+    hfs_outputs_destroy(outs);
+    hfs_image_free(&part);
+    hfs_renderer_destroy(r);
+    scene_inputs_free(&in);
+    return rc;
+}
+
+int hfs_cli_render_plan(int argc, char **argv, int tile, char *const *args, int n_args,
+                        const char *dir)
+{
+    cli c;
+    memset(&c, 0, sizeof c);
+    hfs_scene_init(&c.scene);
+    c.command = argv[1];
+    c.quiet = 1;
+    hfs_error err = {{0}};
+    scene_inputs in = {0};
+    int halo = 0, rc = parse_args(&c, argc, argv, &err);
+    if (rc) {
+        fprintf(stderr, "hfshade: %s\n", err.msg);
+        return HFS_EXIT_USAGE;
+    }
+    const hfs_height_load_opts lo = {.has_nodata = c.scene.has_nodata,
+                                     .nodata = (float)c.scene.nodata};
+    rc = gis_lit_check_grid(c.scene.height, &lo, &err);
+    if (!rc)
+        rc = load_inputs(&c, &in, &err);
+    if (!rc)
+        rc = render_job_halo(&in.field, &in.lighting, tile, &halo, &err);
+    if (!rc)
+        rc = gis_tiles_plan_grid("render", c.scene.height, in.field.width, in.field.height,
+                                 tile, halo, args, n_args, dir, &err);
+    scene_inputs_free(&in);
+    if (rc)
+        fprintf(stderr, "hfshade: %s\n", err.msg);
+    return rc ? 1 : 0;
+}
+#endif
+
 static int cmd_render(const cli *c, hfs_error *err)
 {
+#ifdef HFS_HAVE_GDAL
+    if (c->tile || c->job)
+        return cmd_render_job(c, err);
+#else
+    if (c->tile || c->job)
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "--tile, --job: this hfshade was built without "
+                        "GDAL (a job writes a GeoTIFF)");
+#endif
     int rc = cli_view_check(&c->v, err);
     if (rc)
         return rc;
@@ -572,6 +675,15 @@ int main(int argc, char **argv)
     if (strcmp(c.command, "render") && strcmp(c.command, "compare") && strcmp(c.command, "query")) {
         return hfs_usage_error("hfshade", "unknown command '%s'", c.command);
     }
+    return hfs_cli_scene_main(argc, argv);
+}
+
+int hfs_cli_scene_main(int argc, char **argv)
+{
+    cli c;
+    memset(&c, 0, sizeof c);
+    hfs_scene_init(&c.scene);
+    c.command = argv[1];
     hfs_error err = {{0}};
     int rc = parse_args(&c, argc, argv, &err);
     if (rc) {

@@ -23,4 +23,20 @@ int gis_lit_write(hfs_outputs *o, const char *path, const char *dem_path,
                   const hfs_height_load_opts *opts, const hfs_image *lit,
                   const hfs_heightmap *hm, hfs_error *err);
 
+/* dem_path (opened with opts) as the render's jobs need it: georeferenced,
+ * rows running south and columns east, square cells, so that the lit grid
+ * is the file's own, texel for texel, and a job's part has a place in it.
+ * 0, or an error naming dem_path and what it lacks. */
+int gis_lit_check_grid(const char *dem_path, const hfs_height_load_opts *opts, hfs_error *err);
+
+/* Writes part (a render job's lit part of dem_path's grid: part->width x
+ * part->height texels at column ix, row iy; cli_render_job.h) to path
+ * through o, as gis_lit_write writes a whole grid: 3 Float32 bands, the
+ * part's own geotransform (the DEM's shifted to it), the CRS, the DEM's
+ * holes in it as nodata.  The DEM must pass gis_lit_check_grid.  0, or an
+ * error naming path. */
+int gis_lit_write_part(hfs_outputs *o, const char *path, const char *dem_path,
+                       const hfs_height_load_opts *opts, const hfs_image *part, int ix, int iy,
+                       hfs_error *err);
+
 #endif /* HFS_GIS_LIT_H */

@@ -11,6 +11,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#define RAD (3.14159265358979323846 / 180.0)
+
 /* t as ISO 8601 UTC: 2026-06-21T07:30:00Z (seconds with decimals only when
  * it has them). */
 static void utc_string(const hfs_solar_time *t, char *buf, size_t n)
@@ -110,8 +112,7 @@ gis_stream_mode gis_sun_choose(gis_run *r)
         return GIS_WHOLE_TRUTH;
     double radius = a->radius; /* insolation: its sky's, and no farther for the suns */
     if (a->product == GIS_SUN) {
-        const double alpha = r->sun.alpha_deg * 3.14159265358979323846 / 180.0;
-        const double low = r->sun.pos.elevation_deg * 3.14159265358979323846 / 180.0 - alpha;
+        const double low = (r->sun.pos.elevation_deg - r->sun.alpha_deg) * RAD;
         const double reach = fmin(gis_shadow_reach(r->c.relief, low),
                                   a->radius > 0.0 ? a->radius : HUGE_VAL);
         radius = fmax(reach, 2.0 * d->d); /* as the search's own (gis_sun.c) */

@@ -21,7 +21,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static const char *const product_names[] = {"svf", "horizon", "openness", "sun", "insolation"};
+static const char *const product_names[] = {"svf", "horizon", "openness", "sun", "insolation",
+                                            "render"};
+#define N_NAMES (sizeof product_names / sizeof product_names[0])
 
 /* ---- the manifest -------------------------------------------------------- */
 
@@ -90,7 +92,7 @@ int gis_tiles_read(const char *manifest, gis_tiles_plan_t *m, hfs_error *err)
     *m = (gis_tiles_plan_t){0};
     const int line = ini_parse(manifest, on_key, m);
     int known = 0;
-    for (int p = 0; p < GIS_N_PRODUCTS; ++p)
+    for (size_t p = 0; p < N_NAMES; ++p)
         known |= !strcmp(m->product, product_names[p]);
     const int ok = line == 0 && known && m->format == GIS_TILES_FORMAT && m->dem[0] &&
                    m->tile > 0 && m->columns > 0 && m->rows > 0 &&
@@ -131,27 +133,35 @@ int gis_tiles_job_done(const gis_tiles_plan_t *m, int job)
 
 /* ---- plan ---------------------------------------------------------------- */
 
+/* The plan's grid: product, the DEM (made absolute), its size, the tile
+ * and the halo; no files yet. */
+static int grid_of(gis_tiles_plan_t *m, const char *product, const char *dem, int width,
+                   int height, int tile, int halo, hfs_error *err)
+{
+    m->format = GIS_TILES_FORMAT;
+    m->tile = tile, m->halo = halo, m->width = width, m->height = height;
+    m->columns = (width + tile - 1) / tile;
+    m->rows = (height + tile - 1) / tile;
+    m->jobs = m->columns * m->rows;
+    snprintf(m->product, sizeof m->product, "%s", product);
+    if (!realpath(dem, m->dem))
+        return hfs_fail(err, HFS_E_IO, "%s: %s", dem, strerror(errno));
+    return HFS_OK;
+}
+
 /* The plan of run r (opened, not loaded: gis_run_open's windows, the
  * streamed command's): its windows, or why it has none. */
 static int plan_of(const gis_run *r, gis_tiles_plan_t *m, hfs_error *err)
 {
     const gis_args *a = r->a;
-    const gis_dem *dem = &r->dem;
-    const int halo = r->halo;
     if (r->mode != GIS_STREAMED)
         return hfs_fail(err, HFS_E_INVALID, "%s: no tiles to plan: %s", a->dem,
                         r->mode == GIS_WHOLE ? "the DEM fits one --tile"
                                              : gis_stream_why(r->mode));
-    m->format = GIS_TILES_FORMAT;
-    m->tile = a->tile, m->halo = halo, m->width = dem->width, m->height = dem->height;
-    m->columns = (dem->width + a->tile - 1) / a->tile;
-    m->rows = (dem->height + a->tile - 1) / a->tile;
-    m->jobs = m->columns * m->rows;
-    snprintf(m->product, sizeof m->product, "%s", product_names[a->product]);
-    if (!realpath(a->dem, m->dem))
-        return hfs_fail(err, HFS_E_IO, "%s: %s", a->dem, strerror(errno));
+    int rc = grid_of(m, product_names[a->product], a->dem, r->dem.width, r->dem.height, a->tile,
+                     r->halo, err);
     const int n = a->product == GIS_HORIZON ? a->n_azimuths : 1;
-    for (int k = 0; k < n; ++k) {
+    for (int k = 0; k < n && !rc; ++k) {
         char s[64] = ".tif";
         if (a->product == GIS_HORIZON && gis_horizon_name(s, sizeof s, "", a->azimuth[k],
                                                           a->decimals))
@@ -159,7 +169,7 @@ static int plan_of(const gis_run *r, gis_tiles_plan_t *m, hfs_error *err)
         if (!(m->suffix[m->n_suffix++] = strdup(s)))
             return hfs_fail(err, HFS_E_NOMEM, "tiles plan: out of memory");
     }
-    return HFS_OK;
+    return rc;
 }
 
 /* m as the manifest's text into f. */
@@ -206,38 +216,71 @@ static int write_file(const char *path, const gis_tiles_plan_t *m, int manifest,
     return HFS_OK;
 }
 
-int gis_tiles_plan(const gis_args *a, char *const *args, int n_args, const char *dir,
-                   hfs_error *err)
+/* A plan's directory: nothing there yet, at most GIS_TILES_MAX_ARGS
+ * words to replay. */
+static int check_dir(const char *dir, int n_args, hfs_error *err)
 {
+    char path[PATH_MAX + 64];
+    snprintf(path, sizeof path, "%s/manifest", dir);
     if (n_args > GIS_TILES_MAX_ARGS)
         return hfs_fail(err, HFS_E_INVALID, "tiles plan: more than %d option words",
                         GIS_TILES_MAX_ARGS);
-    gis_tiles_plan_t m = {0};
-    char path[PATH_MAX + 64];
-    snprintf(m.dir, sizeof m.dir, "%s", dir);
-    snprintf(path, sizeof path, "%s/manifest", dir);
     if (!access(path, F_OK))
         return hfs_fail(err, HFS_E_INVALID, "%s: a plan is there already (plan into a new "
                         "directory)", path);
-    gis_run *r = calloc(1, sizeof *r);
-    if (!r)
-        return hfs_fail(err, HFS_E_NOMEM, "tiles plan: out of memory");
-    r->a = a;
-    int rc = gis_run_open(r, 0, err);
-    if (!rc)
-        rc = plan_of(r, &m, err);
-    gis_dem_free(&r->dem);
-    free(r);
-    char tiles[PATH_MAX + 64];
+    return HFS_OK;
+}
+
+/* m (its grid and files made, or rc an error) written into dir: the
+ * directories, the jobs, the manifest last; m freed. */
+static int write_plan(gis_tiles_plan_t *m, int rc, char *const *args, int n_args,
+                      const char *dir, hfs_error *err)
+{
+    char path[PATH_MAX + 64], tiles[PATH_MAX + 64];
+    snprintf(m->dir, sizeof m->dir, "%s", dir);
+    snprintf(path, sizeof path, "%s/manifest", dir);
     snprintf(tiles, sizeof tiles, "%s/tiles", dir);
     if (!rc && ((mkdir(dir, 0777) && errno != EEXIST) || (mkdir(tiles, 0777) && errno != EEXIST)))
         rc = hfs_fail(err, HFS_E_IO, "%s: %s", dir, strerror(errno));
     if (!rc) {
         snprintf(tiles, sizeof tiles, "%s/jobs", dir);
-        rc = write_file(tiles, &m, 0, args, n_args, err);
+        rc = write_file(tiles, m, 0, args, n_args, err);
     }
     if (!rc) /* the manifest last: a plan with a manifest is whole */
-        rc = write_file(path, &m, 1, args, n_args, err);
-    gis_tiles_plan_free(&m);
+        rc = write_file(path, m, 1, args, n_args, err);
+    gis_tiles_plan_free(m);
     return rc;
+}
+
+int gis_tiles_plan(const gis_args *a, char *const *args, int n_args, const char *dir,
+                   hfs_error *err)
+{
+    int rc = check_dir(dir, n_args, err);
+    if (rc)
+        return rc;
+    gis_tiles_plan_t m = {0};
+    gis_run *r = calloc(1, sizeof *r);
+    if (!r)
+        return hfs_fail(err, HFS_E_NOMEM, "tiles plan: out of memory");
+    r->a = a;
+    rc = gis_run_open(r, 0, err);
+    if (!rc)
+        rc = plan_of(r, &m, err);
+    gis_dem_free(&r->dem);
+    free(r);
+    return write_plan(&m, rc, args, n_args, dir, err);
+}
+
+int gis_tiles_plan_grid(const char *product, const char *dem, int width, int height, int tile,
+                        int halo, char *const *args, int n_args, const char *dir,
+                        hfs_error *err)
+{
+    int rc = check_dir(dir, n_args, err);
+    if (rc)
+        return rc;
+    gis_tiles_plan_t m = {0};
+    rc = grid_of(&m, product, dem, width, height, tile, halo, err);
+    if (!rc && !(m.suffix[m.n_suffix++] = strdup(".tif")))
+        rc = hfs_fail(err, HFS_E_NOMEM, "tiles plan: out of memory");
+    return write_plan(&m, rc, args, n_args, dir, err);
 }

@@ -42,7 +42,8 @@ typedef struct gis_tiles_plan_t {
     int format;
     char dir[PATH_MAX];       /* the plan's directory (the manifest's)       */
     char dem[PATH_MAX];       /* absolute                                    */
-    char product[16];         /* svf | horizon | openness | sun | insolation */
+    char product[16];         /* svf | horizon | openness | sun | insolation |
+                                 render                                      */
     int tile, halo, columns, rows, jobs, width, height;
     int n_args;               /* the product's option words, replayed        */
     char *args[GIS_TILES_MAX_ARGS];
@@ -72,6 +73,14 @@ int gis_tiles_job_done(const gis_tiles_plan_t *m, int job);
  * 0, or an error. */
 int gis_tiles_plan(const gis_args *a, char *const *args, int n_args, const char *dir,
                    hfs_error *err);
+
+/* plan for a product whose windows its own command lays out (the lit
+ * render: tools/cli_render_job.h): the DEM (made absolute), its width x
+ * height grid cut into tiles of `tile` texels, each read with `halo`
+ * texels around it, one file a job (".tif"); args and dir as above. */
+int gis_tiles_plan_grid(const char *product, const char *dem, int width, int height, int tile,
+                        int halo, char *const *args, int n_args, const char *dir,
+                        hfs_error *err);
 
 /* merge (gis_tiles_merge.c): the mosaic of every job's files: a VRT of the
  * tiles in the plan's directory (mosaic + suffix, ".vrt" for ".tif") and
