@@ -200,6 +200,15 @@ static long same_values(const char *a, const char *b, int bands, int band, long 
     return off;
 }
 
+/* dem.tif's plan of `product` with args in tiles of 64 (6 jobs) into
+ * dir, each job run, merged into out: 1 when all of it succeeded. */
+static int plan_run_merge(const char *dir, const char *product, const char *args,
+                          const char *out)
+{
+    return run("tiles plan dem.tif --product %s --tile 64 -o %s %s", product, dir, args) == 0 &&
+           run_jobs(dir, 1, 6) == 0 && run("tiles merge %s -o %s", dir, out) == 0;
+}
+
 /* sun (its halo the shadows' reach from the DEM's relief, no radius) and
  * insolation (--radius) in tiles: the mosaic is the whole run's, bit for
  * bit, shadows and all. */
@@ -208,14 +217,12 @@ static long same_values(const char *a, const char *b, int bands, int band, long 
                  "--step 60"
 static void test_sun(void)
 {
-    EXPECT(run("tiles plan dem.tif --product sun --tile 64 -o S " SUN_ARGS) == 0);
-    EXPECT(run_jobs("S", 1, 6) == 0 && run("tiles merge S -o sm.tif") == 0);
+    EXPECT(plan_run_merge("S", "sun", SUN_ARGS, "sm.tif"));
     EXPECT(run("sun dem.tif " SUN_ARGS " --tile 0 -o sw.tif") == 0);
     long shade;
     EXPECT(same_values("sm.tif", "sw.tif", 2, 1, &shade) == 0);
     EXPECT(shade > 1000, "%ld texels in the hills' shadows (V < 0.5)", shade);
-    EXPECT(run("tiles plan dem.tif --product insolation --tile 64 -o I " INS_ARGS) == 0);
-    EXPECT(run_jobs("I", 1, 6) == 0 && run("tiles merge I -o im.tif") == 0);
+    EXPECT(plan_run_merge("I", "insolation", INS_ARGS, "im.tif"));
     EXPECT(run("insolation dem.tif " INS_ARGS " --tile 0 -o iw.tif") == 0);
     EXPECT(same_values("im.tif", "iw.tif", 3, 0, &shade) == 0);
 }
@@ -229,8 +236,7 @@ static void test_sun(void)
                     "--env-sh 3.5449,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 --key 40,3,0.5,5000"
 static void test_render(void)
 {
-    EXPECT(run("tiles plan dem.tif --product render --tile 64 -o R " RENDER_ARGS) == 0);
-    EXPECT(run_jobs("R", 1, 6) == 0 && run("tiles merge R -o rm.tif") == 0);
+    EXPECT(plan_run_merge("R", "render", RENDER_ARGS, "rm.tif"));
     EXPECT(run("render --height dem.tif " RENDER_ARGS " --geotiff rw.tif") == 0);
     raster m, w;
     EXPECT(read_raster("rm.tif", &m) == 0 && read_raster("rw.tif", &w) == 0);
