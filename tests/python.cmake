@@ -20,12 +20,18 @@ add_executable(python_layout ${CMAKE_CURRENT_LIST_DIR}/python_layout.c)
 target_link_libraries(python_layout PRIVATE hfs_public)
 target_include_directories(python_layout PRIVATE ${PROJECT_SOURCE_DIR}/tools/gis)
 
+# python_julian_day: the commands' Julian day of a date-time (the parser's),
+# compared with the library's of the same instant in seconds (test_sun.py).
+add_executable(python_julian_day ${CMAKE_CURRENT_LIST_DIR}/python/julian_day.c)
+target_link_libraries(python_julian_day PRIVATE hfs_solar)
+
 set(hfs_py_env
     "PYTHONPATH=${PROJECT_SOURCE_DIR}/tools/python:${CMAKE_CURRENT_LIST_DIR}/python"
     "HFSHADE_LIBRARY=$<TARGET_FILE:hfshade_shared>"
     "HFSHADE_GIS_LIBRARY=$<TARGET_FILE:hfshade_gis_shared>"
     "HFSHADE_CLI=$<TARGET_FILE:hfshade>"
     "HFSHADE_LAYOUT=$<TARGET_FILE:python_layout>"
+    "HFSHADE_JULIAN_DAY=$<TARGET_FILE:python_julian_day>"
     "HFSHADE_VERSION=${PROJECT_VERSION}"
     "HFSHADE_EXAMPLE=${PROJECT_SOURCE_DIR}/tools/examples/python/svf_geotiff.py"
     "PYTHONDONTWRITEBYTECODE=1")
@@ -52,7 +58,7 @@ if(HFS_SANITIZE)
        "UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
 endif()
 
-foreach(area layout render gis envmap errors example)
+foreach(area layout render gis sun envmap errors example)
   if(NOT HFS_PYTHON3)
     add_test(NAME python_${area} COMMAND sh -c "echo 'SKIP: no python3'; exit 77")
   elseif(hfs_py_skip)
@@ -65,4 +71,4 @@ foreach(area layout render gis envmap errors example)
                        SKIP_RETURN_CODE 77 LABELS "python" TIMEOUT 300)
 endforeach()
 # The GLES equalities make a GL context: the gl tests' label too.
-set_tests_properties(python_render python_gis PROPERTIES LABELS "python;gl")
+set_tests_properties(python_render python_gis python_sun PROPERTIES LABELS "python;gl")

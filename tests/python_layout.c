@@ -73,6 +73,8 @@ static void envmap(void)
     S(hfs_gis_dem), F(hfs_gis_dem, width), F(hfs_gis_dem, height), F(hfs_gis_dem, z),
         F(hfs_gis_dem, hole), F(hfs_gis_dem, has_nodata), F(hfs_gis_dem, nodata),
         F(hfs_gis_dem, cell), F(hfs_gis_dem, zscale);
+    S(hfs_gis_site), F(hfs_gis_site, lat), F(hfs_gis_site, lon), F(hfs_gis_site, elevation_m),
+        F(hfs_gis_site, linke);
 }
 
 /* The constants the cdef spells as numbers. */
@@ -90,6 +92,7 @@ static void constants(void)
            HFS_PRECISION_FP32);
     printf("#HFS_GIS_SVF %d\n#HFS_GIS_HORIZON %d\n#HFS_GIS_OPENNESS %d\n", HFS_GIS_SVF,
            HFS_GIS_HORIZON, HFS_GIS_OPENNESS);
+    printf("#HFS_GIS_SUN %d\n#HFS_GIS_INSOLATION %d\n", HFS_GIS_SUN, HFS_GIS_INSOLATION);
 }
 
 int main(void)

@@ -189,7 +189,7 @@ static void test_cpu(void)
 /* sun and insolation streamed on the CPU reference: the whole run's bits
  * (the sun's halo the reach of the hills' shadows from the whole DEM's
  * relief; insolation's its --radius). */
-#define SUN_AT "--datetime 2026-06-21T07:30-04:00"
+#define SUN_AT "--datetime 2026-06-21T06:50-04:00"
 #define INS_PERIOD "--from 2026-06-21T07:00-04:00 --to 2026-06-21T11:00-04:00 --step 60"
 static void test_sun_cpu(void)
 {

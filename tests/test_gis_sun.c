@@ -13,6 +13,7 @@
  *            to the sun passes under the wall's top have V = 0 and no beam,
  *            the texels whose ray clears it by a margin V = 1, on the truth
  *            and GLES (the shadow's edge and the wall's foot left out);
+ *            with --radius 300 the shadow's far part is lit, none added;
  *   gles ~ truth  a geographic DEM of hills (non-square cells, holes), a
  *            low sun: both bands, mean and max difference within bounds;
  *   insolation  a flat DEM over a day in hourly steps (the last one 30
@@ -315,6 +316,22 @@ static void test_wall(void)
         REQUIRE(gles_failed("sun wall"), "sun wall (gles) failed");
     else
         check_wall("wall_gles.tif", &s);
+    /* --radius 300: the shadow's part farther than 300 m from the wall
+     * is left out (lit), the rest kept; nothing lit becomes shadowed */
+    REQUIRE(run("sun wall.tif %s -o wall_cpu.tif --backend cpu", when) == 0 &&
+                run("sun wall.tif %s -o wall_r.tif --backend cpu --radius 300", when) == 0,
+            "sun wall --radius");
+    raster a, b;
+    REQUIRE(read_sized("wall_cpu.tif", &a) == 0 && read_sized("wall_r.tif", &b) == 0, "wall");
+    long full = 0, cut = 0, new_shade = 0;
+    for (int p = 0; p < W * H; ++p) {
+        full += a.v[W * H + p] < 0.5f, cut += b.v[W * H + p] < 0.5f;
+        new_shade += b.v[W * H + p] < a.v[W * H + p] - 1e-6f;
+    }
+    printf("the wall's shadow: %ld texels, %ld within --radius 300\n", full, cut);
+    CHECK(full > 150 && cut > 20 && cut < full - 100 && new_shade == 0);
+    CHECK(meta_num(&b, "HFS_RADIUS_M") == 300.0);
+    free_raster(&a), free_raster(&b);
 }
 
 /* Hills on a geographic grid (3" cells at 47 N: 63 x 93 m, not square,

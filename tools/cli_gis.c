@@ -10,6 +10,7 @@
 #include "clear_sky.h"
 #include "cli_usage.h"
 #include "gis_command.h"
+#include "gis_sun.h"
 
 #include <float.h>
 #include <math.h>
@@ -326,12 +327,10 @@ static int check_sun(gis_args *a, const char *prog, const pending *st)
         rc = instant(prog, "--to", st->to, st->tz, &a->to, &a->jd_to);
     if (rc)
         return rc;
-    /* The period in minutes to a microsecond: the Julian days' rounding
-     * (1e-6 min) must not make a step of nothing at the end. */
-    const double minutes = round((a->jd_to - a->jd_from) * 1440.0 * 1e6) / 1e6;
+    double minutes, steps;
+    gis_period_length(a->jd_from, a->jd_to, a->step_min, &minutes, &steps);
     if (!(minutes > 0.0))
         return hfs_usage_error(prog, "--to: %s is not after --from %s", st->to, st->from);
-    const double steps = ceil(minutes / a->step_min - 1e-9);
     if (steps > GIS_MAX_STEPS)
         return hfs_usage_error(prog, "--step: %g minutes over %g minutes makes %.0f steps (at "
                                "most %ld)", a->step_min, minutes, steps, GIS_MAX_STEPS);

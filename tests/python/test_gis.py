@@ -17,9 +17,7 @@ NODATA = -9999.0
 class Gis(util.TempDir):
     @classmethod
     def setUpClass(cls):
-        cls.gdal = util.gdal()
-        if cls.gdal is None:
-            raise unittest.SkipTest("osgeo.gdal is not installed (Debian: python3-gdal)")
+        cls.gdal = util.gdal_or_skip()
 
     def setUp(self):
         super().setUp()

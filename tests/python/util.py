@@ -37,6 +37,14 @@ def gdal():
     return g
 
 
+def gdal_or_skip():
+    """osgeo.gdal, or the test class skipped (SkipTest) where it is missing."""
+    g = gdal()
+    if g is None:
+        raise unittest.SkipTest("osgeo.gdal is not installed (Debian: python3-gdal)")
+    return g
+
+
 def run_cli(*args):
     """Runs `hfshade ARGS`; its stderr on failure in the exception."""
     p = subprocess.run([CLI, *map(str, args)], capture_output=True, text=True)

@@ -210,6 +210,13 @@ int gis_product_sun(const gis_compute *c, const gis_sun_at *s, float *beam, floa
     return rc;
 }
 
+void gis_period_length(double jd_from, double jd_to, double step_min, double *minutes,
+                       double *steps)
+{
+    *minutes = round((jd_to - jd_from) * 1440.0 * 1e6) / 1e6;
+    *steps = ceil(*minutes / step_min - 1e-9);
+}
+
 void gis_period_step(const gis_period *p, long k, double *jd_mid, double *hours)
 {
     const double step = p->step_min / 1440.0, t0 = p->jd_from + (double)k * step;

@@ -88,6 +88,14 @@ typedef struct gis_period {
     int sky_directions;         /* azimuths of the sky's horizons (>= 1)     */
 } gis_period;
 
+/* The period [jd_from, jd_to) in steps of step_min minutes, as the
+ * command line and the library both take it: *minutes its length rounded
+ * to a microsecond (the Julian days' rounding must not make a step of
+ * nothing at the end), *steps = ceil(minutes / step_min) (the last step
+ * shortened).  The callers refuse minutes <= 0 and too many steps. */
+void gis_period_length(double jd_from, double jd_to, double step_min, double *minutes,
+                       double *steps);
+
 /* Step k (0..n_steps - 1) of p: its midpoint (UTC Julian day) and length
  * in hours. */
 void gis_period_step(const gis_period *p, long k, double *jd_mid, double *hours);

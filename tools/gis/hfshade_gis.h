@@ -1,12 +1,14 @@
 /*
  * hfshade_gis.h — public interface of libhfshade_gis (issue 40): the GIS
- * products of `hfshade svf | horizon | openness` (docs/GIS.md, SPEC.md
- * "Terrain rasters") on a DEM held in memory, for bindings (the Python
- * module) and programs that have their heights already.  The same code as
- * the commands (tools/gis: gis_products, gis_math, gis_horizons,
- * gis_resample), over libhfshade's hfs_renderer_horizons: on the same
- * heights, cell size, options and backend, every value equals the
- * command's GeoTIFF, bit for bit.  No GDAL: the caller reads the DEM.
+ * products of `hfshade svf | horizon | openness | sun | insolation`
+ * (docs/GIS.md, SPEC.md "Terrain rasters") on a DEM held in memory, for
+ * bindings (the Python module) and programs that have their heights
+ * already.  The same code as the commands (tools/gis: gis_products,
+ * gis_math, gis_horizons, gis_resample, gis_sun, solar_position,
+ * clear_sky), over libhfshade's hfs_renderer_horizons: on the same
+ * heights, cell size, options, site, instants and backend, every value
+ * equals the command's GeoTIFF, bit for bit.  No GDAL: the caller reads
+ * the DEM (and, for the sun, finds its site's longitude and latitude).
  *
  * The DEM: width x height heights, row-major, row 0 = NORTH, column 0 =
  * west (a north-up raster as GDAL reads it), square cells of `cell`
@@ -21,7 +23,9 @@
  * every direction leaves the DEM at once) they hold the product's nodata
  * value, hfs_gis_nodata's.  Angles are DEGREES here, as on the command
  * line.  Errors: 0 or a negative hfs_status with a one-line message in err
- * (the argument named); nothing is written to out on failure.
+ * (the argument named as the Python module names it: cell_size, radius,
+ * directions, when, start, end, step, lat, lon, elevation, linke); nothing
+ * is written to out on failure.
  *
  * Threads: as libhfshade (one renderer per thread).
  */
@@ -55,12 +59,15 @@ typedef struct hfs_gis_dem {
 typedef enum hfs_gis_product {
     HFS_GIS_SVF = 0,            /* 0..1                                       */
     HFS_GIS_HORIZON,            /* 0..90 degrees                              */
-    HFS_GIS_OPENNESS            /* 0..180 degrees                             */
+    HFS_GIS_OPENNESS,           /* 0..180 degrees                             */
+    HFS_GIS_SUN,                /* W/m^2 and a fraction, >= 0                 */
+    HFS_GIS_INSOLATION          /* Wh/m^2, >= 0                               */
 } hfs_gis_product;
 
 /* radius: the search distance in metres, [0, 1e9], 0 = the whole DEM; or
  * HFS_GIS_RADIUS_DEFAULT, the command's default: the whole DEM for svf and
- * horizon, 10 cells for openness (the Relief Visualization Toolbox's). */
+ * horizon, 10 cells for openness (the Relief Visualization Toolbox's), 0
+ * for sun and insolation (below). */
 #define HFS_GIS_RADIUS_DEFAULT (-1.0)
 
 /* The value written where a product has none: the DEM's nodata when a
@@ -88,6 +95,62 @@ HFS_GIS_API int hfs_gis_horizon(hfs_renderer *r, const hfs_gis_dem *dem, double 
 HFS_GIS_API int hfs_gis_openness(hfs_renderer *r, const hfs_gis_dem *dem, int directions,
                                  double radius, float *positive, float *negative,
                                  hfs_error *err);
+
+/* Where the sun is seen from (hfs_gis_sun, hfs_gis_insolation): one site
+ * for the whole DEM, as the commands take the DEM's centre (docs/GIS.md
+ * "The sun"). */
+typedef struct hfs_gis_site {
+    double lat, lon;            /* WGS84 degrees, [-90, 90] north and
+                                 * [-360, 360] east; the commands': the
+                                 * centre of the DEM's extent (gis_dem_lonlat) */
+    double elevation_m;         /* metres, [-1000, 9000]; NaN: the DEM's centre
+                                 * texel (width/2, height/2; filled where a
+                                 * hole) times zscale, the commands' site      */
+    double linke;               /* Linke turbidity [1, 10]; 0: 3.0 (r.sun's
+                                 * default, the commands')                   */
+} hfs_gis_site;
+
+/* Instants are seconds since 1970-01-01T00:00:00Z (POSIX time: no leap
+ * seconds), in the years 1900..2100.  The sun's formulas take a UTC Julian
+ * day: the one of the instant's UTC calendar date and time, computed as
+ * the commands compute it from a parsed date-time (hfs_solar_julian_day),
+ * so a whole-second instant gives the command's double exactly (a
+ * fraction of a second may differ by an ulp: the command adds the
+ * seconds' decimals digit by digit).  hfs_gis_julian_day gives that day
+ * into *jd: 0, or HFS_E_INVALID for an instant out of range. */
+HFS_GIS_API int hfs_gis_julian_day(double unix_utc, double *jd, hfs_error *err);
+
+/* `hfshade sun --datetime T`: the direct-beam irradiance of a clear sky
+ * (ESRA, as GRASS r.sun; Linke turbidity site->linke) on each texel's
+ * tilted, terrain-shadowed surface at instant unix_utc, W/m^2, into beam,
+ * and the visible fraction of the sun's disk, 0..1, into visible (the
+ * command's bands 1 and 2; 0 on a slope facing away).  A sun at or below
+ * the horizon gives zeros without rendering.  radius: metres, [0, 1e9]; 0
+ * (or HFS_GIS_RADIUS_DEFAULT): shadows cast from as far as the DEM's
+ * relief can reach, else none from farther than radius (`--radius`;
+ * refused on the truth renderer, which renders the sun's exact shadows
+ * from the whole DEM, as the command refuses it).  Nodata:
+ * hfs_gis_nodata(dem, HFS_GIS_SUN). */
+HFS_GIS_API int hfs_gis_sun(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_site *site,
+                            double unix_utc, double radius, float *beam, float *visible,
+                            hfs_error *err);
+
+/* `hfshade insolation --from A --to B --step MIN --directions N`: the
+ * clear sky's irradiation over [from, to), Wh/m^2, in steps of step_min
+ * minutes (> 0; the last step shortened to end at `to`; at most 100000
+ * steps), each step's sun at its middle: beam the direct beam on the
+ * tilted, shadowed surface summed over the steps whose sun is up;
+ * diffuse the isotropic sky's share under the terrain's horizons in
+ * `directions` azimuths (1..1024; the command's default 16) times the
+ * diffuse horizontal irradiation; global their sum (the command's bands
+ * 1, 2, 3).  radius as hfs_gis_sun's, and the sky's horizons are searched
+ * within it (0: to the DEM's edge).  Nodata: hfs_gis_nodata(dem,
+ * HFS_GIS_INSOLATION). */
+HFS_GIS_API int hfs_gis_insolation(hfs_renderer *r, const hfs_gis_dem *dem,
+                                   const hfs_gis_site *site, double from_unix_utc,
+                                   double to_unix_utc, double step_min, int directions,
+                                   double radius, float *beam, float *diffuse, float *global,
+                                   hfs_error *err);
 
 #ifdef __cplusplus
 }

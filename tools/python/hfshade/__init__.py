@@ -1,7 +1,7 @@
 """hfshade: soft shadows on height fields, and the GIS rasters of DEMs,
 from numpy (issue 40).  A thin layer over the installed libraries
 libhfshade (the renderer) and libhfshade_gis (sky-view factor, horizons,
-openness), through cffi: the numbers are the C library's, the same as the
+openness, the sun, insolation), through cffi: the numbers are the C library's, the same as the
 `hfshade` command's on the same inputs.
 
     import numpy as np, hfshade
@@ -19,7 +19,7 @@ from ._errors import Error
 from ._ffi import MAJOR, VERSION as __version__
 from ._ffi import lib as _lib
 from .envmap import EnvLight, decompose_env, project_env
-from .gis import horizon, openness, svf
+from .gis import horizon, insolation, openness, sun, svf
 from .render import Renderer, render
 
 _lib()  # the library found and of this major version, or ImportError
@@ -31,5 +31,6 @@ def library_version():
     return ffi.string(_lib().hfs_version()).decode()
 
 
-__all__ = ["Error", "Renderer", "render", "svf", "horizon", "openness", "project_env",
-           "decompose_env", "EnvLight", "library_version", "MAJOR", "__version__"]
+__all__ = ["Error", "Renderer", "render", "svf", "horizon", "openness", "sun", "insolation",
+           "project_env", "decompose_env", "EnvLight", "library_version", "MAJOR",
+           "__version__"]

@@ -210,8 +210,14 @@ typedef struct hfs_gis_dem {
 typedef enum hfs_gis_product {
     HFS_GIS_SVF = 0,
     HFS_GIS_HORIZON = 1,
-    HFS_GIS_OPENNESS = 2
+    HFS_GIS_OPENNESS = 2,
+    HFS_GIS_SUN = 3,
+    HFS_GIS_INSOLATION = 4
 } hfs_gis_product;
+
+typedef struct hfs_gis_site {
+    double lat, lon, elevation_m, linke;
+} hfs_gis_site;
 
 float hfs_gis_nodata(const hfs_gis_dem *dem, hfs_gis_product product);
 int hfs_gis_svf(hfs_renderer *r, const hfs_gis_dem *dem, int directions, int lambertian,
@@ -220,6 +226,13 @@ int hfs_gis_horizon(hfs_renderer *r, const hfs_gis_dem *dem, double azimuth, int
                     double radius, float *out, hfs_error *err);
 int hfs_gis_openness(hfs_renderer *r, const hfs_gis_dem *dem, int directions, double radius,
                      float *positive, float *negative, hfs_error *err);
+int hfs_gis_julian_day(double unix_utc, double *jd, hfs_error *err);
+int hfs_gis_sun(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_site *site,
+                double unix_utc, double radius, float *beam, float *visible, hfs_error *err);
+int hfs_gis_insolation(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_site *site,
+                       double from_unix_utc, double to_unix_utc, double step_min,
+                       int directions, double radius, float *beam, float *diffuse,
+                       float *global, hfs_error *err);
 """
 
 #: Every struct the cdef declares, with its fields (the layout test walks
@@ -228,7 +241,7 @@ STRUCTS = (
     "hfs_error", "hfs_field", "hfs_key_light", "hfs_local_light", "hfs_lighting",
     "hfs_quality", "hfs_image", "hfs_renderer_desc", "hfs_env_decompose_opts",
     "hfs_env_light", "hfs_env_decomp", "hfs_env_lighting_opts", "hfs_env_lighting",
-    "hfs_gis_dem",
+    "hfs_gis_dem", "hfs_gis_site",
 )
 
 ffi = cffi.FFI()

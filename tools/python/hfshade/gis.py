@@ -1,6 +1,7 @@
 """GIS rasters of a DEM held as a numpy array: sky-view factor, horizon
-angle, openness (libhfshade_gis, the code of `hfshade svf | horizon |
-openness`; docs/GIS.md): on the same heights, cell size and options the
+angle, openness, the sun at an instant and insolation over a period
+(libhfshade_gis, the code of `hfshade svf | horizon | openness | sun |
+insolation`; docs/GIS.md): on the same heights, cell size and options the
 values equal the commands' GeoTIFFs bit for bit.
 
 Conventions (those of rasterio and richdem): the DEM is a 2-D array, row
@@ -15,15 +16,24 @@ nodata value (the DEM's `nodata` when it cannot be a value of the
 product, else -9999), which is also the array's fill_value, so
 `.filled()` gives what the command writes.  The mask is always an array
 (never numpy.ma.nomask).  Degrees throughout.
+
+The sun's instants are timezone-aware datetime.datetime objects or ISO
+8601 strings with their offset ("2026-06-21T09:30+02:00", "...Z"): as the
+command refuses a date-time without one, no time zone is guessed.
 """
+import datetime as _dt
+import math
+
 import numpy as np
 
 from ._errors import check, float32_array, integer, new_error, number
 from ._ffi import ffi, gis_lib
 from .render import Renderer
 
-_SVF, _HORIZON, _OPENNESS = 0, 1, 2
+_SVF, _HORIZON, _OPENNESS, _SUN, _INSOLATION = 0, 1, 2, 3, 4
 RADIUS_DEFAULT = -1.0
+_EPOCH = _dt.datetime(1970, 1, 1, tzinfo=_dt.timezone.utc)
+_YEARS = (1900, 2100)  # solar_position.h's HFS_SOLAR_YEAR_MIN..MAX
 
 
 def _cell(cell_size):
@@ -174,4 +184,107 @@ def openness(dem, cell_size, directions=8, radius=None, zscale=1.0, nodata=None,
     return d.masked(pos, _OPENNESS), d.masked(neg, _OPENNESS)
 
 
-__all__ = ["svf", "horizon", "openness"]
+def _instant(name, value):
+    """value (an aware datetime, or an ISO 8601 string with its offset) as
+    seconds since 1970-01-01T00:00:00Z: whole seconds exactly (integer
+    arithmetic), which the library turns into the command's Julian day."""
+    if isinstance(value, str):
+        text = value.strip()
+        if text[-1:] in ("Z", "z"):  # Python < 3.11 reads no "Z"
+            text = text[:-1] + "+00:00"
+        try:
+            value = _dt.datetime.fromisoformat(text)
+        except ValueError:
+            raise ValueError(f"{name}: {value!r} is not an ISO 8601 date-time with its offset "
+                             "(2026-06-21T09:30+02:00)") from None
+    if not isinstance(value, _dt.datetime):
+        raise TypeError(f"{name}: expected a datetime.datetime with a time zone, or an ISO "
+                        f"8601 string, got {type(value).__name__}")
+    if value.utcoffset() is None:
+        raise ValueError(f"{name}: {value.isoformat()} has no time zone: give one (tzinfo=, "
+                         "or an offset such as +02:00 or Z); none is guessed")
+    for what in ("local", "UTC"):  # as the command checks both (and year 9999 + 1 fails)
+        y = value.year if what == "local" else value.astimezone(_dt.timezone.utc).year
+        if not _YEARS[0] <= y <= _YEARS[1]:
+            raise ValueError(f"{name}: {value.isoformat()} ({what} year {y}) is outside the "
+                             f"years {_YEARS[0]}..{_YEARS[1]}")
+    d = value - _EPOCH
+    return float(d.days * 86400 + d.seconds) + d.microseconds / 1e6
+
+
+def _site(lat, lon, elevation, linke):
+    site = ffi.new("hfs_gis_site *")
+    site.lat = number("lat", lat, -90.0, 90.0)
+    site.lon = number("lon", lon, -360.0, 360.0)
+    site.elevation_m = math.nan if elevation is None else number("elevation", elevation,
+                                                                 -1000.0, 9000.0)
+    site.linke = number("linke", linke, 1.0, 10.0)
+    return site
+
+
+def sun(dem, cell_size, when, lat, lon, *, elevation=None, linke=3.0, radius=0.0, zscale=1.0,
+        nodata=None, backend="gles", renderer=None):
+    """The sun at one instant, as `hfshade sun --datetime WHEN`'s bands 1 and
+    2: returns (beam, visible).
+
+    beam: the clear sky's direct-beam irradiance on each texel's tilted,
+    terrain-shadowed surface, W/m^2 (ESRA as GRASS r.sun, Linke turbidity
+    `linke`, 1..10); visible: the fraction of the sun's disk in view, 0..1
+    (0 on a slope facing away).  A sun at or below the horizon gives zeros.
+    when: a timezone-aware datetime or an ISO 8601 string with its offset.
+    lat, lon: WGS84 degrees of the site the sun is seen from (the command's:
+    the centre of the DEM's extent); elevation: its height in metres, None
+    = the DEM's centre texel times zscale (the command's).  radius: metres;
+    0 or None: shadows from as far as they reach, else none cast from
+    farther (`--radius`; refused with the truth).  Other arguments as svf()."""
+    d = _Dem(dem, cell_size, zscale, nodata)
+    site = _site(lat, lon, elevation, linke)
+    t = _instant("when", when)
+    rad = _radius(radius)
+    beam = np.empty(d.shape, dtype=np.float32)
+    visible = np.empty(d.shape, dtype=np.float32)
+
+    def go(r):
+        err = new_error()
+        check(gis_lib().hfs_gis_sun(r, d.c, site, t, rad, ffi.from_buffer("float[]", beam),
+                                    ffi.from_buffer("float[]", visible), err), err)
+    _run(renderer, backend, go)
+    return d.masked(beam, _SUN), d.masked(visible, _SUN)
+
+
+def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16, radius=0.0,
+               elevation=None, linke=3.0, zscale=1.0, nodata=None, backend="gles",
+               renderer=None):
+    """Clear-sky irradiation over [start, end), Wh/m^2, as `hfshade
+    insolation --from START --to END`'s bands 1, 2, 3: returns
+    (beam, diffuse, global_).
+
+    Steps of `step` minutes (default 15; the last one shortened to end at
+    `end`; at most 100000), each step's sun at its middle.  beam: the
+    direct beam on the tilted, shadowed surface summed over the steps with
+    the sun up; diffuse: the diffuse horizontal irradiation times the share
+    of an isotropic sky each texel gets under the terrain's horizons in
+    `directions` azimuths (1..1024, default 16); global_: their sum.
+    radius: metres, also the sky's horizons' search (0 or None: to the
+    DEM's edge).  start, end, lat, lon, elevation, linke as sun()'s; other
+    arguments as svf()."""
+    d = _Dem(dem, cell_size, zscale, nodata)
+    site = _site(lat, lon, elevation, linke)
+    t0, t1 = _instant("start", start), _instant("end", end)
+    minutes = number("step", step, 0.0, 1e9)
+    if minutes <= 0.0:
+        raise ValueError(f"step: {step!r} is not a number of minutes above 0")
+    n = integer("directions", directions, 1, 1024)
+    rad = _radius(radius)
+    out = [np.empty(d.shape, dtype=np.float32) for _ in range(3)]
+
+    def go(r):
+        err = new_error()
+        check(gis_lib().hfs_gis_insolation(r, d.c, site, t0, t1, minutes, n, rad,
+                                           *(ffi.from_buffer("float[]", o) for o in out), err),
+              err)
+    _run(renderer, backend, go)
+    return tuple(d.masked(o, _INSOLATION) for o in out)
+
+
+__all__ = ["svf", "horizon", "openness", "sun", "insolation"]
