@@ -4,17 +4,21 @@
 # UTM GeoTIFF with 30 m cells (tools/bench_dem.py), a PRODUCT of it (GLES)
 # cut into tiles of TILE texels (default 1024: 16 jobs), four ways, wall
 # time of each.  PRODUCT: svf (default; 8 directions within RADIUS
-# metres), sun (2026-06-21 08:00 local; RADIUS 0: the halo is the reach of
-# its shadows) or insolation (that day 05:00-21:00 in hourly steps, the
-# sky's 16 azimuths and the shadows within RADIUS):
-#   single     one process streams it: `hfshade svf --tile TILE`;
+# metres), sun (2026-06-21 06:30 local; RADIUS 0: the halo is the reach of
+# its shadows), insolation (that day 05:00-21:00 in hourly steps, the
+# sky's 16 azimuths and the shadows within RADIUS) or render (the lit
+# render of a uniform sky and a 20-degree sun; RADIUS unused: the halo is
+# the render's own, from the relief and the lights):
+#   single     one process streams it: `hfshade svf --tile TILE` (render:
+#              one process renders it whole, `hfshade render --geotiff`);
 #   sequential the plan's jobs one after the other (`parallel -j1`), merged;
 #   parallel   the same plan on the cores (`parallel -j JOBS`), merged;
 #   resumed    the same plan killed (SIGKILL to parallel and its jobs) once
 #              half the tiles are written, then `parallel --resume-failed`
 #              with the same joblog, merged.
 # Checks: each mosaic byte for byte the sequential one's (cmp), and its
-# values (every band) bit for bit the single run's.  Installs GNU parallel, python3-gdal
+# values (every band) bit for bit the single run's (render: the largest
+# difference, relative to the largest value).  Installs GNU parallel, python3-gdal
 # and python3-numpy when missing (tools/install-deps.sh has parallel).
 # usage: tools/bench_tiles.sh [BUILD] [N] [TILE] [RADIUS] [JOBS] [PRODUCT]
 #   e.g. tools/bench_tiles.sh build 4096 1024 600 2
@@ -41,19 +45,23 @@ trap 'rm -rf "$C"' EXIT
 $PY tools/bench_dem.py "$C/f.pfm" "$C/dem.tif" 30
 case "$PRODUCT" in
 svf) OPTS=(--radius "$RADIUS" --directions 8) ;;
-sun) OPTS=(--datetime 2026-06-21T08:00-05:00 --radius "$RADIUS") ;;
+sun) OPTS=(--datetime 2026-06-21T06:30-05:00 --radius "$RADIUS") ;;
 insolation) OPTS=(--from 2026-06-21T05:00-05:00 --to 2026-06-21T21:00-05:00 --step 60
                   --radius "$RADIUS") ;;
-*) echo "bench_tiles.sh: PRODUCT '$PRODUCT' is not svf, sun or insolation" >&2; exit 2 ;;
+render) OPTS=(--dx 30 --env-sh 3.5449,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 --key 135,20,0.5,10000) ;;
+*) echo "bench_tiles.sh: PRODUCT '$PRODUCT' is not svf, sun, insolation or render" >&2; exit 2 ;;
 esac
 now() { date +%s.%N; }
 since() { awk -v a="$1" -v b="$(now)" 'BEGIN {printf "%.1f", b - a}'; }
 cd "$C"
 
 t=$(now)
-"$H" "$PRODUCT" dem.tif "${OPTS[@]}" --tile "$TILE" -o single.tif 2>&1 | sed 's/^/  /'
-
-echo "single process, streamed (--tile $TILE): $(since "$t") s"
+if [ "$PRODUCT" = render ]; then
+    "$H" render --height dem.tif "${OPTS[@]}" --geotiff single.tif 2>&1 | sed 's/^/  /'
+else
+    "$H" "$PRODUCT" dem.tif "${OPTS[@]}" --tile "$TILE" -o single.tif 2>&1 | sed 's/^/  /'
+fi
+echo "single process ($([ "$PRODUCT" = render ] && echo whole || echo "streamed, --tile $TILE")): $(since "$t") s"
 
 plan_run() { # DIR PARALLEL-OPTIONS...: plan, run, merge; prints the wall time
     local dir=$1 t
@@ -65,6 +73,7 @@ plan_run() { # DIR PARALLEL-OPTIONS...: plan, run, merge; prints the wall time
     echo "$(since "$t")"
 }
 echo "sequential jobs (parallel -j1), plan + run + merge: $(plan_run seq -j1) s"
+echo "  $(wc -l <seq/jobs) jobs, the first: $(head -1 seq/jobs) (K IX IY IW IH HALO FILES)"
 echo "parallel -j$JOBS, plan + run + merge: $(plan_run par "-j$JOBS") s"
 
 # killed half-way, then resumed
@@ -98,7 +107,9 @@ def rd(p):
     ds = None
     return a
 a, b = rd("single.tif"), rd("seq.tif")
-print("mosaic against the single process: %s (%d texels differ)"
-      % ("bit for bit" if np.array_equal(a.view(np.uint32), b.view(np.uint32)) else "DIFFERENT",
-         int((a.view(np.uint32) != b.view(np.uint32)).sum())))
+print("mosaic against the single process: %s (%d values differ; largest difference %.3g of "
+      "the largest value)"
+      % ("bit for bit" if np.array_equal(a.view(np.uint32), b.view(np.uint32)) else "not bit for bit",
+         int((a.view(np.uint32) != b.view(np.uint32)).sum()),
+         float(np.abs(a.astype(np.float64) - b).max() / max(np.abs(a).max(), 1e-30))))
 EOF
