@@ -24,6 +24,7 @@
  *            of the whole render, holes nodata in both; its jobs run in
  *            reverse merge to the same bytes; a local light and a DEM that
  *            fits one tile refused;
+ *   vrt      the DEM as a VRT of two GeoTIFF halves: the same mosaic;
  *   parallel the same plan run by GNU parallel on 2 cores, and once more
  *            stopped after 2 jobs and resumed with --resume-failed: each
  *            mosaic byte for byte the sequential run's.
@@ -32,6 +33,8 @@
 
 #include "gdal_fixture.h"
 #include "gis_cli_util.h"
+
+#include <gdal_utils.h>
 
 #include <math.h>
 #include <sys/stat.h>
@@ -271,6 +274,35 @@ static void test_render(void)
     EXPECT(access(tpath("X"), F_OK) != 0, "a refused plan left its directory");
 }
 
+/* A VRT of the DEM's two halves (two GeoTIFFs, GDALBuildVRT) plans and
+ * runs as the DEM itself: its mosaic holds a.tif's values bit for bit. */
+static void test_vrt(const float *z, const double gt[6])
+{
+    enum { HW = W / 2 };
+    static float half[HW * H];
+    const char *names[2] = {"west.tif", "east.tif"};
+    char *paths[2];
+    for (int k = 0; k < 2; ++k) {
+        for (int j = 0; j < H; ++j)
+            memcpy(half + (size_t)j * HW, z + (size_t)j * W + (size_t)k * HW, sizeof(float) * HW);
+        const double g[6] = {gt[0] + k * HW * gt[1], gt[1], gt[2], gt[3], gt[4], gt[5]};
+        EXPECT(gdal_fixture_write("GTiff", tpath(names[k]), HW, H, half, g, 32633, 1, ND,
+                                  GDT_Float32) == 0);
+        paths[k] = strdup(tpath(names[k]));
+    }
+    int bad = 0;
+    GDALDatasetH v = GDALBuildVRT(tpath("dem.vrt"), 2, NULL, (const char *const *)paths, NULL,
+                                  &bad);
+    EXPECT(v && !bad, "GDALBuildVRT");
+    if (v)
+        GDALClose(v);
+    free(paths[0]), free(paths[1]);
+    EXPECT(run("tiles plan dem.vrt --product svf --tile 64 -o V " SVF_ARGS) == 0);
+    EXPECT(run_jobs("V", 1, 6) == 0 && run("tiles merge V -o v.tif") == 0);
+    long shade;
+    EXPECT(same_values("v.tif", "a.tif", 1, 0, &shade) == 0);
+}
+
 /* GNU parallel runs the jobs: the mosaic is the sequential run's, bytes
  * and all; stopped after 2 jobs and resumed, the same. */
 static void test_parallel(void)
@@ -312,6 +344,7 @@ int main(int argc, char **argv)
     test_horizon();
     test_sun();
     test_render();
+    test_vrt(z, gt);
     test_parallel();
     (void)gles_failed; /* the CPU reference only: no GL context needed */
     return gis_cli_end("gis_tiles");

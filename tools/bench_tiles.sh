@@ -7,8 +7,10 @@
 # metres), sun (2026-06-21 06:30 local; RADIUS 0: the halo is the reach of
 # its shadows), insolation (that day 05:00-21:00 in hourly steps, the
 # sky's 16 azimuths and the shadows within RADIUS) or render (the lit
-# render of a uniform sky and a 20-degree sun; RADIUS unused: the halo is
-# the render's own, from the relief and the lights):
+# render of a uniform sky and a 20-degree sun at --zscale 0.1; RADIUS
+# unused: the halo is the render's own, from the relief and the lights; at
+# zscale 1 the fractal's relief of about 1 km makes it some 1550 texels,
+# and every job renders most of the DEM):
 #   single     one process streams it: `hfshade svf --tile TILE` (render:
 #              one process renders it whole, `hfshade render --geotiff`);
 #   sequential the plan's jobs one after the other (`parallel -j1`), merged;
@@ -48,7 +50,8 @@ svf) OPTS=(--radius "$RADIUS" --directions 8) ;;
 sun) OPTS=(--datetime 2026-06-21T06:30-05:00 --radius "$RADIUS") ;;
 insolation) OPTS=(--from 2026-06-21T05:00-05:00 --to 2026-06-21T21:00-05:00 --step 60
                   --radius "$RADIUS") ;;
-render) OPTS=(--dx 30 --env-sh 3.5449,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 --key 135,20,0.5,10000) ;;
+render) OPTS=(--dx 30 --zscale 0.1 --env-sh 3.5449,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0
+               --key 135,20,0.5,10000) ;;
 *) echo "bench_tiles.sh: PRODUCT '$PRODUCT' is not svf, sun, insolation or render" >&2; exit 2 ;;
 esac
 now() { date +%s.%N; }
