@@ -563,6 +563,7 @@ static void test_bad_inputs(void)
     bad("sun flat.tif -o x.tif --datetime 2026-06-21T08:00Z --radius 100 --backend truth");
     CHECK(holds("err.txt", "not with --backend truth"));
     bad("sun flat.tif -o x.tif --datetime 2026-06-21T08:00Z --radius -100");
+    bad("sun flat.tif -o x.tif --datetime 2026-06-21T08:00Z --relief -1");
     bad("insolation flat.tif -o x.tif --from 2026-06-21T00:00Z --to 2026-06-22T00:00Z "
         "--directions 0");
     bad("sun flat.tif -o x.tif --datetime 2026-06-21T08:00Z --zscale 100 --backend cpu");

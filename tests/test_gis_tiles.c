@@ -221,6 +221,11 @@ static int plan_run_merge(const char *dir, const char *product, const char *args
 static void test_sun(void)
 {
     EXPECT(plan_run_merge("S", "sun", SUN_ARGS, "sm.tif"));
+    size_t n = 0;
+    char *manifest = (char *)read_all(tpath("S/manifest"), &n);
+    EXPECT(manifest && strstr(manifest, "\narg = --relief\narg = "),
+           "the plan gives its jobs the relief it read");
+    free(manifest);
     EXPECT(run("sun dem.tif " SUN_ARGS " --tile 0 -o sw.tif") == 0);
     long shade;
     EXPECT(same_values("sm.tif", "sw.tif", 2, 1, &shade) == 0);

@@ -45,6 +45,8 @@ static const gis_opt opts[] = {
     {"--timezone", "TZ", SUN | INS,
      "the date-times' offset east of UTC: Z, +02:00, +0530, -5 (unless they carry one)"},
     {"--linke", "TLK", SUN | INS, "Linke turbidity, 1..10 (default 3.0, r.sun's)"},
+    {"--relief", "H", SUN | INS, "the DEM's highest minus lowest height, in its own units, as "
+     "`hfshade tiles plan` measured it (its jobs are given it): not read from the DEM again"},
     {"-o", "PREFIX", HOR, "the GeoTIFFs written: PREFIX_AAA.tif an azimuth (r.horizon's names)"},
     {"--directions", "N", SVF, "azimuths, equally spaced from east (1..1024; default 16)"},
     {"--directions", "N", OPEN, "azimuths, equally spaced from east (1..1024; default 8)"},
@@ -204,6 +206,10 @@ static int set_sun_value(gis_args *a, const char *prog, const char *name, const 
         st->to = v;
     } else if (!strcmp(name, "--timezone")) {
         st->tz = v;
+    } else if (!strcmp(name, "--relief")) {
+        if (hfs_cli_real(v, 0.0, FLT_MAX, &a->relief))
+            return hfs_usage_error(prog, "--relief: '%s' is not a height difference >= 0", v);
+        a->relief_given = 1;
     } else if (!strcmp(name, "--linke")) {
         if (hfs_cli_real(v, HFS_LINKE_MIN, HFS_LINKE_MAX, &a->linke))
             return hfs_usage_error(prog, "--linke: '%s' is not a Linke turbidity in [%g, %g]", v,
@@ -223,7 +229,7 @@ static int set_value(gis_args *a, const char *prog, const char *name, const char
 {
     long n;
     static const char *const sun_only[] = {"--datetime", "--from", "--to", "--timezone",
-                                           "--linke", "--step"};
+                                           "--linke", "--step", "--relief"};
     for (size_t k = 0; k < sizeof sun_only / sizeof sun_only[0]; ++k)
         if ((a->product == GIS_SUN || a->product == GIS_INSOLATION) && !strcmp(name, sun_only[k]))
             return set_sun_value(a, prog, name, v, st);

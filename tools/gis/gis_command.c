@@ -213,11 +213,16 @@ static int open_sun(gis_run *r, int load, hfs_error *err)
 {
     const gis_args *a = r->a;
     int rc;
-    if (sun_may_stream(r)) {
+    if (sun_may_stream(r) && a->relief_given) { /* tiles plan measured it */
+        rc = gis_dem_scan_centre(&r->dem, a->dem, err);
+        r->c.has_relief = 1;
+        r->c.relief = a->zscale * a->relief;
+    } else if (sun_may_stream(r)) {
         double lo, hi;
         rc = gis_dem_scan(&r->dem, a->dem, &lo, &hi, err);
         r->c.has_relief = 1;
-        r->c.relief = hi >= lo ? a->zscale * (hi - lo) : 0.0;
+        r->c.relief = a->zscale * (hi >= lo ? hi - lo : 0.0);
+        r->relief = hi >= lo ? hi - lo : 0.0;
     } else {
         rc = load ? gis_dem_load(&r->dem, a->dem, err) : HFS_OK;
     }
@@ -227,6 +232,8 @@ static int open_sun(gis_run *r, int load, hfs_error *err)
         r->mode = gis_sun_choose(r);
     if (!rc && load && r->mode != GIS_STREAMED && !r->dem.sz)
         rc = gis_dem_load(&r->dem, a->dem, err);
+    if (!rc && a->relief_given) /* the whole run's search as the jobs' */
+        r->c.has_relief = 1, r->c.relief = a->zscale * a->relief;
     return rc;
 }
 

@@ -42,6 +42,9 @@ typedef struct gis_args {
     gis_svf_kind svf;           /* svf: --lambertian                          */
     double radius;              /* metres, 0: the whole DEM                   */
     int radius_given;           /* openness: else 10 cells (gis_products.h)   */
+    double relief;              /* sun, insolation: --relief, the DEM's highest
+                                 * minus lowest valid height (its units)     */
+    int relief_given;           /* else measured by reading the DEM           */
     int tile;                   /* --tile: texels a side, 0 never streams     */
     int job;                    /* --job K: only window K (from 1, row by row)
                                  * of the streamed windows, as a raster of its

@@ -165,9 +165,9 @@ int gis_dem_read_window(const gis_dem *dem, const char *path, int x0, int y0, in
     return rc ? hfs_fail(err, rc, "%s: %s", path, ferr.msg) : HFS_OK;
 }
 
-/* The centre's height of an opened dem, from a window of up to 64 x 64
- * texels around it, filled (gis_dem_read_window). */
-static int scan_centre(gis_dem *dem, const char *path, hfs_error *err)
+/* From a window of up to 64 x 64 texels around the centre, filled
+ * (gis_dem_read_window). */
+int gis_dem_scan_centre(gis_dem *dem, const char *path, hfs_error *err)
 {
     enum { W = 64 };
     const int cx = dem->width / 2, cy = dem->height / 2;
@@ -212,7 +212,7 @@ int gis_dem_scan(gis_dem *dem, const char *path, double *lo, double *hi, hfs_err
     }
     free(z);
     *lo = l, *hi = u;
-    return rc ? rc : scan_centre(dem, path, err);
+    return rc ? rc : gis_dem_scan_centre(dem, path, err);
 }
 
 void gis_dem_drop_cache(const gis_dem *dem)

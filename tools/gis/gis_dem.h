@@ -88,6 +88,9 @@ int gis_dem_read_window(const gis_dem *dem, const char *path, int x0, int y0, in
  * hole is a few texels across).  0, or an error naming path. */
 int gis_dem_scan(gis_dem *dem, const char *path, double *lo, double *hi, hfs_error *err);
 
+/* Only dem->centre_z, as gis_dem_scan reads it (a window around it). */
+int gis_dem_scan_centre(gis_dem *dem, const char *path, hfs_error *err);
+
 /* Frees what GDAL holds of an opened dem's blocks (read so far). */
 void gis_dem_drop_cache(const gis_dem *dem);
 

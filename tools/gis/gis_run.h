@@ -35,6 +35,9 @@ typedef struct gis_run {
     gis_stream_mode mode;
     int halo;                /* streamed: texels around each window         */
     int windows;             /* streamed: windows computed                  */
+    double relief;           /* sun, insolation: the DEM's relief as scanned
+                                (its units), when c.has_relief without
+                                --relief                                   */
     /* sun, insolation (gis_sun_command.c) */
     hfs_solar_site site;
     gis_sun_at sun;          /* sun: the instant's                          */

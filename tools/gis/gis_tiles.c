@@ -255,7 +255,7 @@ static int write_plan(gis_tiles_plan_t *m, int rc, char *const *args, int n_args
 int gis_tiles_plan(const gis_args *a, char *const *args, int n_args, const char *dir,
                    hfs_error *err)
 {
-    int rc = check_dir(dir, n_args, err);
+    int rc = check_dir(dir, n_args + 2, err);
     if (rc)
         return rc;
     gis_tiles_plan_t m = {0};
@@ -266,9 +266,18 @@ int gis_tiles_plan(const gis_args *a, char *const *args, int n_args, const char 
     rc = gis_run_open(r, 0, err);
     if (!rc)
         rc = plan_of(r, &m, err);
+    /* sun, insolation: the relief the plan read, given to every job, so
+     * that no job reads the whole DEM again to find it (the same double:
+     * %.17g round-trips) */
+    char relief[40], *words[GIS_TILES_MAX_ARGS + 2];
+    const int scanned = r->c.has_relief && !a->relief_given;
+    for (int k = 0; k < n_args && k < GIS_TILES_MAX_ARGS; ++k)
+        words[k] = args[k];
+    snprintf(relief, sizeof relief, "%.17g", r->relief);
+    words[n_args] = "--relief", words[n_args + 1] = relief;
     gis_dem_free(&r->dem);
     free(r);
-    return write_plan(&m, rc, args, n_args, dir, err);
+    return write_plan(&m, rc, words, n_args + (scanned ? 2 : 0), dir, err);
 }
 
 int gis_tiles_plan_grid(const char *product, const char *dem, int width, int height, int tile,
