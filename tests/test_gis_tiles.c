@@ -135,6 +135,9 @@ static void test_plan(void)
     EXPECT(run("tiles plan dem.tif --product sun --tile 64 -o X --backend truth "
                "--datetime 2026-06-21T06:30Z") == 1 &&
           said("no tiles to plan: the truth renders the whole DEM's shadows"));
+    EXPECT(run("tiles plan dem.tif --product sun --tile 64 -o X --backend cpu "
+               "--datetime 2026-06-21T01:00Z") == 1 &&
+          said("no tiles to plan: the sun is below the horizon: the raster is zeros"));
     EXPECT(access(tpath("X"), F_OK) != 0, "a refused plan left its directory");
 }
 

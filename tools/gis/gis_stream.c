@@ -72,6 +72,8 @@ const char *gis_stream_why(gis_stream_mode mode)
         return "a window with its halo spans the DEM";
     case GIS_WHOLE_TRUTH:
         return "the truth renders the whole DEM's shadows";
+    case GIS_WHOLE_NIGHT:
+        return "the sun is below the horizon: the raster is zeros";
     default:
         return "";
     }

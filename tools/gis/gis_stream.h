@@ -57,6 +57,7 @@ typedef enum gis_stream_mode {
     GIS_WHOLE_HALO,        /* over a tile, but a window and its halo span it */
     GIS_WHOLE_TRUTH,       /* sun, insolation on the truth: it renders the
                               whole DEM's exact shadows                      */
+    GIS_WHOLE_NIGHT,       /* sun below the horizon: zeros, nothing searched */
     GIS_STREAMED           /* window by window                               */
 } gis_stream_mode;
 

@@ -110,6 +110,8 @@ gis_stream_mode gis_sun_choose(gis_run *r)
         return GIS_WHOLE;
     if (a->backend == HFS_BACKEND_TRUTH)
         return GIS_WHOLE_TRUTH;
+    if (r->no_render) /* no sun up (sun), or none in the period (insolation) */
+        return GIS_WHOLE_NIGHT;
     double radius = a->radius; /* insolation: its sky's, and no farther for the suns */
     if (a->product == GIS_SUN) {
         const double low = (r->sun.pos.elevation_deg - r->sun.alpha_deg) * RAD;
