@@ -23,10 +23,11 @@
 #include "hfshade.h"
 #include "scene.h"
 #include "scene_load.h"
-#include "median.h"
 #include "cli_compare.h"
 #include "cli_query.h"
 #include "cli_usage.h"
+#include "cli_frames.h"
+#include "cli_help.h"
 #include "cli_picture.h"
 #include "cli_render_job.h"
 #include "cli_view.h"
@@ -68,64 +69,6 @@ typedef struct cli {
     cli_view v;   /* --view, --camera, --exaggeration, --view-size, --background, --haze */
     hfs_scene scene;
 } cli;
-
-static void usage(FILE *f)
-{
-    fprintf(f,
-            "usage: hfshade render  [SCENE.ini] [--KEY VALUE ...] -o OUT.png [--pfm OUT.pfm] "
-            "[--geotiff OUT.tif]\n"
-            "       hfshade compare [SCENE.ini] [--KEY VALUE ...] RESULT.pfm REFERENCE.pfm\n"
-            "       hfshade query   [SCENE.ini] [--KEY VALUE ...] --points FILE  (x y z a line;\n"
-            "                       prints each point's visible fraction of every key light)\n"
-            "       hfshade keys\n"
-            "       hfshade --version\n"
-            "       hfshade info [--context surfaceless|osmesa|auto]\n"
-            "       hfshade envmap decompose MAP [--max-lights N] [--min-share F]\n"
-            "                      [--contrast C] [--picture OUT.png]\n"
-            "       hfshade svf DEM -o OUT.tif [...]        (GIS rasters on the DEM's own grid:\n"
-            "       hfshade openness DEM -o OUT.tif [...]    sky-view factor, openness, horizon\n"
-            "       hfshade horizon DEM -o PREFIX [...]      angles, the sun's beam at an\n"
-            "       hfshade sun DEM -o OUT.tif [...]         instant, clear-sky irradiation;\n"
-            "       hfshade insolation DEM -o OUT.tif [...]  COMMAND --help, docs/GIS.md)\n"
-            "       hfshade tiles plan|run|merge ...         (a DEM's windows as jobs for GNU\n"
-            "                                                parallel or Slurm: tiles --help)\n"
-            "options: --exposure auto|EV (PNG only; default auto: the lit terrain's median\n"
-            "         luminance at middle grey; EV: stops, 0 = radiance x 1, -1 = x 0.5),\n"
-            "         --colormap none|terrain (PNG only),\n"
-            "         --time N (render N full frames after a warm-up; print per-pass medians),\n"
-            "         --check (load, validate and render one frame off screen; write nothing),\n"
-            "         --view ortho|perspective (the outputs are the 3-D view, not the grid),\n"
-            "         --camera AZ,EL,DIST,FOV[,TX,TY,TZ] (degrees; DIST empty: frame the field),\n"
-            "         --exaggeration E, --view-size WxH (default 512x512),\n"
-            "         --background sky|studio|#rrggbb|R,G,B (default sky; studio with\n"
-            "         preset = panel; R,G,B linear radiance), --haze off|auto|DEPTH (optical\n"
-            "         depth across the field's diagonal; default auto, off with preset = panel),\n"
-            "         --tile N --job K (with --geotiff OUT.tif only: job K of a DEM's render in\n"
-            "         tiles of N texels, the part written as a GeoTIFF; `hfshade tiles`),\n"
-            "         --quiet, --help\n"
-            "scene keys (also accepted in SCENE.ini as KEY = VALUE): run 'hfshade keys'\n");
-}
-
-/* One line a key: its form, help, the range of a single number and the
- * default, all from the table of scene keys. */
-static void print_keys(void)
-{
-    int n;
-    const hfs_scene_key_info *k = hfs_scene_keys(&n);
-    for (int i = 0; i < n; ++i) {
-        char range[96] = "";
-        const hfs_key_number *num = &k[i].num[0];
-        if (k[i].n == 1 && !k[i].pow2 && num->range.lo != -DBL_MAX) {
-            range[0] = ' ';
-            hfs_key_range_text(&num->range, num->unit, range + 1, sizeof range - 1);
-            if (*hfs_key_unit_name(num->unit))
-                snprintf(range + strlen(range), sizeof range - strlen(range), " %s",
-                         hfs_key_unit_name(num->unit));
-        }
-        printf("  --%-15s %-24s %s%s%s%s\n", k[i].name, k[i].arg, k[i].help, range,
-               k[i].def ? "; default " : "", k[i].def ? k[i].def : "");
-    }
-}
 
 static double now_seconds(void)
 {
@@ -243,7 +186,7 @@ static int parse_args(cli *c, int argc, char **argv, hfs_error *err)
             continue;
         }
         if (!strcmp(name, "help") || !strcmp(name, "h")) {
-            usage(stdout);
+            hfshade_usage(stdout);
             exit(0);
         }
         if (i + 1 >= argc)
@@ -322,55 +265,6 @@ static int load_inputs(const cli *c, scene_inputs *in, hfs_error *err)
         fprintf(stderr, "%s: filled %ld hole%s (nodata)\n", c->scene.height, in->hm.holes,
                 in->hm.holes == 1 ? "" : "s");
     return HFS_OK;
-}
-
-/* --time N: one warm-up frame, then N full frames (caches invalidated so every
- * pass runs), per-pass medians on stdout.  The image of the last frame is
- * what gets written. */
-/* One frame: the lit grid, and with a view (v not NULL) its view too. */
-static int render_once(hfs_renderer *r, const scene_inputs *in, const hfs_view *v,
-                       hfs_image *img, hfs_image *vimg, hfs_progress_fn progress, void *user,
-                       hfs_error *err)
-{
-    if (v)
-        return hfs_renderer_render_view(r, &in->field, &in->lighting, &in->quality, v, img, vimg,
-                                        err);
-    return hfs_renderer_render(r, &in->field, &in->lighting, &in->quality, img, progress, user,
-                               err);
-}
-
-static int time_frames(const cli *c, hfs_renderer *r, const scene_inputs *in, const hfs_view *v,
-                       hfs_image *img, hfs_image *vimg, hfs_error *err)
-{
-    const int n = c->time_frames;
-    double *ms = calloc((size_t)n * (HFS_MAX_PASSES + 2), sizeof *ms);
-    if (!ms)
-        return hfs_fail(err, HFS_E_NOMEM, "--time: out of memory");
-    hfs_timings t = {0};
-    int rc = hfs_renderer_set_timing(r, 1);
-    for (int f = -1; f < n && !rc; ++f) {
-        hfs_renderer_invalidate(r);
-        rc = render_once(r, in, v, img, vimg, NULL, NULL, err);
-        if (rc || f < 0)
-            continue;
-        hfs_renderer_timings(r, &t);
-        for (int p = 0; p < t.n_passes; ++p)
-            ms[(size_t)p * n + f] = t.pass[p].ms;
-        ms[(size_t)HFS_MAX_PASSES * n + f] = t.gpu_ms;
-        ms[(size_t)(HFS_MAX_PASSES + 1) * n + f] = t.frame_ms;
-    }
-    if (!rc) {
-        printf("timing: %s, %dx%d, %d frames after 1 warm-up, method %s\n", t.device,
-               in->field.width, in->field.height, n, t.method);
-        printf("%-12s %10s\n", "pass", "median ms");
-        for (int p = 0; p < t.n_passes; ++p)
-            printf("%-12s %10.3f\n", t.pass[p].name, hfs_median(ms + (size_t)p * n, n));
-        printf("%-12s %10.3f\n", "passes", hfs_median(ms + (size_t)HFS_MAX_PASSES * n, n));
-        printf("%-12s %10.3f\n", "frame", hfs_median(ms + (size_t)(HFS_MAX_PASSES + 1) * n, n));
-        printf("texture memory: %.2f MiB (%zu bytes)\n", t.texture_bytes / 1048576.0, t.texture_bytes);
-    }
-    free(ms);
-    return rc;
 }
 
 /* The run's output set: every output checked against every input and the
@@ -531,9 +425,9 @@ static int cmd_render(const cli *c, hfs_error *err)
     const int show = !c->quiet && isatty(STDERR_FILENO);
     const double t0 = now_seconds();
     if (c->time_frames)
-        rc = time_frames(c, r, &in, vp, &img, &vimg, err);
+        rc = cli_time_frames(c->time_frames, r, &in, vp, &img, &vimg, err);
     else
-        rc = render_once(r, &in, vp, &img, &vimg, show ? progress_bar : NULL, &last_pct, err);
+        rc = cli_render_once(r, &in, vp, &img, &vimg, show ? progress_bar : NULL, &last_pct, err);
     const double t1 = now_seconds();
     if (rc)
         goto out;
@@ -634,11 +528,11 @@ int main(int argc, char **argv)
     hfs_scene_init(&c.scene);
     c.command = argv[1];
     if (!strcmp(c.command, "--help") || !strcmp(c.command, "-h") || !strcmp(c.command, "help")) {
-        usage(stdout);
+        hfshade_usage(stdout);
         return 0;
     }
     if (!strcmp(c.command, "keys")) {
-        print_keys();
+        hfshade_print_keys();
         return 0;
     }
     if (!strcmp(c.command, "--version") || !strcmp(c.command, "version")) {

@@ -3,7 +3,8 @@ add_executable(hfshade ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.c ${CMAKE_CURRENT_SOU
                ${CMAKE_CURRENT_SOURCE_DIR}/cli_picture.c
                ${CMAKE_CURRENT_SOURCE_DIR}/cli_query.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_envmap.c
                ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_gis.c
-               ${CMAKE_CURRENT_SOURCE_DIR}/cli_tiles.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_render_job.c)
+               ${CMAKE_CURRENT_SOURCE_DIR}/cli_tiles.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_render_job.c
+               ${CMAKE_CURRENT_SOURCE_DIR}/cli_help.c ${CMAKE_CURRENT_SOURCE_DIR}/cli_frames.c)
 target_link_libraries(hfshade PRIVATE hfshade_lib hfshade_io hfshade_scene hfs_gl
                       hfs_envmap hfs_cli_usage hfs_gis_core)
 
