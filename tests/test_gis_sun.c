@@ -47,8 +47,9 @@
  *   sky: the slope within 8.94e-6 of (1 + cos 20) / 2 (GLES and CPU: the
  *     normals of Float32 heights); the hills, GLES and CPU against the
  *     truth's 64 azimuths: mean 4.01e-5, max 3.77e-4 (16 azimuths against
- *     64).  Bounds 1.2x.  (The sky rendered before issue 40, the whole
- *     sphere's sky counted, gave a tilted open plane (1 + 1) / 2 = 1.)
+ *     64).  Bounds 1.2x.  (The sky rendered before issue 40 covered the
+ *     whole sphere, so an open tilted plane, which sees a whole hemisphere
+ *     of it, got 1.)
  */
 #define _XOPEN_SOURCE 700 /* realpath */
 

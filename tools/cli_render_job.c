@@ -8,11 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int min_i(int a, int b)
-{
-    return a < b ? a : b;
-}
-
 int render_job_halo(const hfs_field *f, const hfs_lighting *l, int tile, int *halo,
                     hfs_error *err)
 {
@@ -31,17 +26,15 @@ int render_job_frame(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
                      const hfs_quality *q, int tile, int halo, int job, hfs_image *part,
                      int *ix, int *iy, hfs_error *err)
 {
-    enum { A = HFS_TILE_ALIGN };
     const int nx = (f->width + tile - 1) / tile, ny = (f->height + tile - 1) / tile;
     if (job < 1 || job > nx * ny)
         return hfs_fail(err, HFS_E_INVALID, "--job %d: the field has %d jobs of --tile %d", job,
                         nx * ny, tile);
-    *ix = (job - 1) % nx * tile, *iy = (job - 1) / nx * tile;
-    const int iw = min_i(tile, f->width - *ix), ih = min_i(tile, f->height - *iy);
-    const int x0 = *ix > halo ? (*ix - halo) / A * A : 0;
-    const int y0 = *iy > halo ? (*iy - halo) / A * A : 0;
-    const int w = min_i((*ix + iw + halo + A - 1) / A * A, f->width) - x0;
-    const int h = min_i((*iy + ih + halo + A - 1) / A * A, f->height) - y0;
+    /* the GIS commands' windows, with the render's halo */
+    const hfs_tile_window v = hfs_tile_window_of(f->width, f->height, tile, halo,
+                                                 (job - 1) % nx, (job - 1) / nx);
+    const int x0 = v.x0, y0 = v.y0, w = v.w, h = v.h, iw = v.iw, ih = v.ih;
+    *ix = v.ix, *iy = v.iy;
     float *z = malloc((size_t)w * (size_t)h * sizeof *z);
     float *alb = l->albedo_map ? malloc((size_t)w * (size_t)h * 3 * sizeof *alb) : NULL;
     hfs_image win = {0};

@@ -21,6 +21,24 @@ double hfs_tile_eps(const hfs_lighting *l)
     return eps > 0.0 ? eps : 0.0;
 }
 
+static int min_side(int a, int b)
+{
+    return a < b ? a : b;
+}
+
+hfs_tile_window hfs_tile_window_of(int width, int height, int tile, int halo, int tx, int ty)
+{
+    enum { A = HFS_TILE_ALIGN };
+    hfs_tile_window v;
+    v.ix = tx * tile, v.iy = ty * tile;
+    v.iw = min_side(tile, width - v.ix), v.ih = min_side(tile, height - v.iy);
+    v.x0 = v.ix > halo ? (v.ix - halo) / A * A : 0;
+    v.y0 = v.iy > halo ? (v.iy - halo) / A * A : 0;
+    v.w = min_side((v.ix + v.iw + halo + A - 1) / A * A, width) - v.x0;
+    v.h = min_side((v.iy + v.ih + halo + A - 1) / A * A, height) - v.y0;
+    return v;
+}
+
 int hfs_tile_halo(const hfs_field *f, const hfs_lighting *l)
 {
     const double eps = hfs_tile_eps(l);

@@ -47,6 +47,18 @@ int hfs_tiled_render(const hfs_field *f, const hfs_lighting *l, int max_side,
 hfs_field hfs_tile_sub_field(const hfs_field *f, const hfs_lighting *l, int x0, int y0, int w,
                              int h, float *z, float *alb, hfs_lighting *sl);
 
+/* Tile (tx, ty) of a width x height grid cut into tiles of `tile` texels,
+ * row by row: its part (ix, iy, iw x ih) and the window read for it: the
+ * part grown by halo texels on every side, widened outwards to multiples
+ * of HFS_TILE_ALIGN (so that sub-sampled and hole-filling grids fall on
+ * the whole grid's), cut to the grid.  The jobs of `hfshade tiles` and
+ * the GIS commands' streamed windows (tools/gis/gis_stream.h) are these. */
+typedef struct hfs_tile_window {
+    int x0, y0, w, h;     /* the window read                              */
+    int ix, iy, iw, ih;   /* the part kept                                */
+} hfs_tile_window;
+hfs_tile_window hfs_tile_window_of(int width, int height, int tile, int halo, int tx, int ty);
+
 /* The lowest elevation (radians) terrain must rise to for lighting l to
  * see it, as above (the environment's eps, each key light's e - a); 0
  * when terrain at any elevation matters (a local light, a key light at or

@@ -9,6 +9,7 @@
 
 #include "gis_raster_stream.h"
 #include "gis_run.h"
+#include "tiled_render.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -17,31 +18,21 @@
 #define BLOCK 256 /* the files' blocks (gis_raster_gtiff_options) */
 
 /* One window: the texels read (x0, y0, w, h) and the output's texels it
- * computes (ix, iy, iw, ih), both in the DEM's grid. */
-typedef struct window {
-    int x0, y0, w, h;
-    int ix, iy, iw, ih;
-} window;
+ * computes (ix, iy, iw, ih), both in the DEM's grid: the tiles' own
+ * (tiled_render.h), GIS_STREAM_ALIGN being HFS_TILE_ALIGN. */
+typedef hfs_tile_window window;
+_Static_assert(GIS_STREAM_ALIGN == HFS_TILE_ALIGN, "one alignment for every tile");
 
 static int min_i(int a, int b)
 {
     return a < b ? a : b;
 }
 
-/* The window of tile (tx, ty): its inner part grown by the halo on every
- * side, widened outwards to multiples of GIS_STREAM_ALIGN, cut to the DEM.
- * halo <= width + height (gis_stream_choose), so nothing overflows. */
+/* The window of tile (tx, ty).  halo <= width + height
+ * (gis_stream_choose), so nothing overflows. */
 static window window_of(const gis_dem *d, int tile, int halo, int tx, int ty)
 {
-    enum { A = GIS_STREAM_ALIGN };
-    window v;
-    v.ix = tx * tile, v.iy = ty * tile;
-    v.iw = min_i(tile, d->width - v.ix), v.ih = min_i(tile, d->height - v.iy);
-    v.x0 = v.ix > halo ? (v.ix - halo) / A * A : 0;
-    v.y0 = v.iy > halo ? (v.iy - halo) / A * A : 0;
-    v.w = min_i((v.ix + v.iw + halo + A - 1) / A * A, d->width) - v.x0;
-    v.h = min_i((v.iy + v.ih + halo + A - 1) / A * A, d->height) - v.y0;
-    return v;
+    return hfs_tile_window_of(d->width, d->height, tile, halo, tx, ty);
 }
 
 gis_stream_mode gis_stream_choose(const gis_dem *dem, int tile, double radius, int *halo)
