@@ -29,6 +29,111 @@ int hfs_ray_level(ivec2 lo, ivec2 hi)
     return l;
 }
 
+/* One search with cells (runtime/core/ray_bound.c ray_search, the same
+ * steps): the ray, its receiver and the result so far.  A segment reads
+ * both its columns: keeping the last one, as the CPU does, was no faster
+ * on llvmpipe. */
+struct hfs_ray {
+    bool xm;
+    int step, p, q, nq;
+    float inv, r, zf, tie;
+    vec2 h0;
+    float best, lead, dist;
+    int fetches;
+};
+
+/* A surface point's slope sl at distance t: the max, and dist past the
+ * tie (ray_bound.c take). */
+void hfs_ray_take(inout hfs_ray R, float sl, float t)
+{
+    if (hfs_scale_takes_over(sl, R.lead, R.tie)) {
+        R.lead = sl;
+        R.dist = t;
+    }
+    R.best = max(R.best, sl);
+}
+
+/* Rows v0 .. v0 + n - 1 (n = 2, 3) of major column u relative to the
+ * receiver (ray_bound.c column; a third row not asked for repeats the
+ * second). */
+vec3 hfs_ray_column(highp sampler2D heights, inout hfs_ray R, int u, int v0, int n)
+{
+    ivec2 at = R.xm ? ivec2(u, v0) : ivec2(v0, u), dv = R.xm ? ivec2(0, 1) : ivec2(1, 0);
+    float a = hfs_hdiff(texelFetch(heights, at, 0).xy, R.h0);
+    float b = hfs_hdiff(texelFetch(heights, at + dv, 0).xy, R.h0);
+    float c = n > 2 ? hfs_hdiff(texelFetch(heights, at + 2 * dv, 0).xy, R.h0) : b;
+    R.fetches += n;
+    return vec3(a, b, c);
+}
+
+float hfs_ray_minor(hfs_ray R, float u)
+{
+    return clamp(float(R.q) + u * R.r, 0.0, float(R.nq - 1));
+}
+
+/* Crossing m's surface from its column c (rows v0 ..; ray_bound.c
+ * crossing_from). */
+float hfs_ray_crossing_from(hfs_ray R, int m, vec3 c, int v0)
+{
+    float y = hfs_ray_minor(R, float(m));
+    int y0 = min(int(floor(y)), R.nq - 2);
+    float f = y - float(y0);
+    vec2 ab = y0 == v0 ? c.xy : c.yz;
+    return f == 0.0 ? ab.x : ab.x + f * (ab.y - ab.x);
+}
+
+/* Crossing m, the cells on to a1 crossings farther and, at a1 = 1,
+ * crossing m + 1 (ray_bound.c segment, the same steps). */
+void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
+{
+    float fm = float(m);
+    float ya = float(R.q) + fm * R.r, yb = float(R.q) + (fm + a1) * R.r;
+    float ca = hfs_ray_minor(R, fm), cb = hfs_ray_minor(R, fm + a1);
+    int v_lo = min(int(floor(min(ca, cb))), R.nq - 2);
+    int v_hi = max(int(ceil(max(ca, cb))), v_lo + 1);
+    int u0 = R.p + R.step * m, n = v_hi - v_lo + 1;
+    vec3 c0 = hfs_ray_column(heights, R, u0, v_lo, n);
+    vec3 c1 = hfs_ray_column(heights, R, u0 + R.step, v_lo, n);
+    hfs_ray_take(R, hfs_ray_crossing_from(R, m, c0, v_lo) * R.zf / (fm * R.inv), fm * R.inv);
+    if (a1 >= 1.0)
+        hfs_ray_take(R, hfs_ray_crossing_from(R, m + 1, c1, v_lo) * R.zf / ((fm + 1.0) * R.inv),
+                     (fm + 1.0) * R.inv);
+    /* the cells lie below their highest corner: most never reach the best */
+    float top = max(max(max(c0.x, c0.y), c0.z), max(max(c1.x, c1.y), c1.z));
+    if (top * R.zf / ((top >= 0.0 ? fm : fm + a1) * R.inv) <= R.best)
+        return;
+    float cut = -1.0;
+    if (R.r > 0.0 && floor(ya) + 1.0 < yb)
+        cut = (floor(ya) + 1.0 - ya) / R.r;
+    else if (R.r < 0.0 && ceil(ya) - 1.0 > yb)
+        cut = (ceil(ya) - 1.0 - ya) / R.r;
+    for (int pc = 0; pc < 2; ++pc) {
+        if (pc == 1 && !(cut > 0.0))
+            break;
+        float lo = pc == 0 ? 0.0 : cut, hi = pc == 0 && cut > 0.0 ? cut : a1;
+        int v0 = clamp(int(floor(float(R.q) + (fm + 0.5 * (lo + hi)) * R.r)), v_lo, v_hi - 1);
+        vec2 n0 = v0 == v_lo ? c0.xy : c0.yz, n1 = v0 == v_lo ? c1.xy : c1.yz;
+        float z00 = n0.x, z10 = n1.x, z01 = n0.y, z11 = n1.y;
+        float b0 = ya - float(v0), e = z11 - z10 - z01 + z00;
+        float A = z00 + (z01 - z00) * b0, B = z10 - z00 + (z01 - z00) * R.r + e * b0;
+        float C = e * R.r;
+        vec2 at = vec2(hi < 1.0 ? hi : -1.0, -1.0);
+        if (C < 0.0) {
+            float D = C * C * fm * fm - C * (B * fm - A);
+            if (D >= 0.0)
+                at.y = (B * fm - A) / (sqrt(D) - C * fm);
+        }
+        for (int i = 0; i < 2; ++i) {
+            float a = i == 0 ? at.x : at.y;
+            if (!(a > lo && a <= hi))
+                continue;
+            float b = clamp(b0 + R.r * a, 0.0, 1.0);
+            float v = z00 + (z10 - z00) * a + (z01 - z00) * b + e * a * b;
+            hfs_ray_take(R, v * R.zf / ((fm + a) * R.inv), (fm + a) * R.inv);
+        }
+    }
+}
+
 /* max(best, the slope of every crossing at distance >= t_first and <=
  * t_last) of receiver g (height h0 at g) in direction cs: bounds from the atlas
  * `bounds` (level l at at[l]), heights (hi, lo) from `heights` (the input,
@@ -37,19 +142,28 @@ int hfs_ray_level(ivec2 lo, ivec2 hi)
  * as ray_bound.c), the value is the max; it
  * returns as soon as best reaches `stop` (1e30: never; a key light's
  * window fully blocked needs no more).  *dist: the distance of the
- * crossing that raised best.  Counts its reads. */
-float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
-                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
-                     float tie, vec2 h0, float best, float stop, inout float dist,
-                     inout int fetches)
+ * crossing that raised best.  Counts its reads.  cells: the whole ray's
+ * supremum instead, every cell between crossings solved or bounded
+ * (ray_bound.h "cells", hfs_ray_bound_search_cells; the GIS horizons).
+ * (A second walk from the crossings' max, to solve only the cells that
+ * can beat it, was no faster on llvmpipe: it reads more.) */
+float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
+                           ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
+                           float t_last, float zf, float tie, vec2 h0, float best, float stop,
+                           bool cells, inout float dist, inout int fetches)
 {
-    bool xm = abs(cs.x) >= abs(cs.y);
-    float ma = xm ? cs.x : cs.y, mi = xm ? cs.y : cs.x;
-    int step = ma >= 0.0 ? 1 : -1;
-    float inv = 1.0 / abs(ma), r = mi / abs(ma);
-    int p = xm ? g.x : g.y, q = xm ? g.y : g.x;
-    int nq = xm ? size.y : size.x;
-    int last = step > 0 ? (xm ? size.x : size.y) - 1 - p : p;
+    hfs_ray R;
+    R.xm = abs(cs.x) >= abs(cs.y);
+    float ma = R.xm ? cs.x : cs.y, mi = R.xm ? cs.y : cs.x;
+    R.step = ma >= 0.0 ? 1 : -1;
+    R.inv = 1.0 / abs(ma), R.r = mi / abs(ma);
+    R.p = R.xm ? g.x : g.y, R.q = R.xm ? g.y : g.x;
+    R.nq = R.xm ? size.y : size.x;
+    R.zf = zf, R.tie = tie, R.h0 = h0;
+    R.best = best, R.lead = best, R.dist = dist, R.fetches = fetches;
+    int p = R.p, q = R.q, nq = R.nq, step = R.step;
+    float inv = R.inv, r = R.r;
+    int last = step > 0 ? (R.xm ? size.x : size.y) - 1 - p : p;
     float lim = r > 0.0 ? (float(nq - 1 - q) + HFS_RAY_EDGE_TOL) / r
                         : (r < 0.0 ? (float(q) + HFS_RAY_EDGE_TOL) / -r : 1e9);
     if (lim < float(last))
@@ -57,50 +171,72 @@ float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
     float lim_t = floor(t_last * abs(ma) + 1e-4);
     if (lim_t < float(last))
         last = int(max(lim_t, 0.0));
+    cells = cells && nq >= 2; /* one row: linear between crossings */
     int m = max(1, int(ceil(t_first * abs(ma) - 1e-4)));
+    int m_first = m;
     float v0 = hfs_h(h0);
     int l = 0;
-    float lead = best; /* the slope of the crossing dist names (ray_bound.c) */
-    while (m <= last && best < stop) {
+    while (m <= last && R.best < stop) {
         float t = float(m) * inv;
-        if (l == 0) { /* one crossing: the surface there, exactly */
-            float y = clamp(float(q) + float(m) * r, 0.0, float(nq - 1));
-            int y0 = min(int(floor(y)), max(nq - 2, 0));
-            float f = y - float(y0);
-            int x = p + step * m;
-            ivec2 ia = xm ? ivec2(x, y0) : ivec2(y0, x);
-            ivec2 ib = nq >= 2 ? ia + (xm ? ivec2(0, 1) : ivec2(1, 0)) : ia;
-            vec2 a = texelFetch(heights, ia, 0).xy;
-            vec2 b = texelFetch(heights, ib, 0).xy;
-            float sl = (hfs_hdiff(a, h0) + f * hfs_hdiff(b, a)) * zf / t;
-            fetches += 2;
-            if (hfs_scale_takes_over(sl, lead, tie)) {
-                lead = sl;
-                dist = t;
+        if (l == 0) { /* one crossing (and with cells its segment): exactly */
+            if (cells && m < last) {
+                hfs_ray_segment(heights, R, m, 1.0);
+            } else {
+                float y = clamp(float(q) + float(m) * r, 0.0, float(nq - 1));
+                int y0 = min(int(floor(y)), max(nq - 2, 0));
+                float f = y - float(y0);
+                int x = p + step * m;
+                ivec2 ia = R.xm ? ivec2(x, y0) : ivec2(y0, x);
+                ivec2 ib = nq >= 2 ? ia + (R.xm ? ivec2(0, 1) : ivec2(1, 0)) : ia;
+                vec2 a = texelFetch(heights, ia, 0).xy;
+                vec2 b = texelFetch(heights, ib, 0).xy;
+                R.fetches += 2;
+                hfs_ray_take(R, (hfs_hdiff(a, h0) + f * hfs_hdiff(b, a)) * zf / t, t);
             }
-            best = max(best, sl);
             ++m;
             l = 1;
             continue;
         }
         int m1 = min(m + (1 << l) - 1, last);
-        float ya = float(q) + float(m) * r, yb = float(q) + float(m1) * r;
+        /* with cells the box also holds the cells on to the next crossing */
+        int mb = cells && m1 < last ? m1 + 1 : m1;
+        float ya = float(q) + float(m) * r, yb = float(q) + float(mb) * r;
         int q0 = max(int(floor(min(ya, yb) - HFS_RAY_EDGE_TOL)), 0);
         int q1 = min(int(ceil(max(ya, yb) + HFS_RAY_EDGE_TOL)), nq - 1);
-        int pa = p + step * m, pb = p + step * m1;
-        ivec2 lo = xm ? ivec2(min(pa, pb), q0) : ivec2(q0, min(pa, pb));
-        ivec2 hi = xm ? ivec2(max(pa, pb), q1) : ivec2(q1, max(pa, pb));
+        int pa = p + step * m, pb = p + step * mb;
+        ivec2 lo = R.xm ? ivec2(min(pa, pb), q0) : ivec2(q0, min(pa, pb));
+        ivec2 hi = R.xm ? ivec2(max(pa, pb), q1) : ivec2(q1, max(pa, pb));
         int lv = hfs_ray_level(lo, hi);
         float rise = texelFetch(bounds, at[lv] + (lo >> lv), 0).x - v0;
-        ++fetches;
+        ++R.fetches;
         /* the largest slope the run can hold: a rise over its nearest
          * crossing, a fall over its farthest */
-        if (rise * zf / (rise >= 0.0 ? t : float(m1) * inv) > best) {
+        if (rise * zf / (rise >= 0.0 ? t : float(mb) * inv) > R.best) {
             --l;
             continue;
         }
         m = m1 + 1;
         ++l;
     }
-    return best;
+    if (cells && last >= m_first && R.best < stop) { /* past the last crossing */
+        float u = min(t_last * abs(ma), float(step > 0 ? (R.xm ? size.x : size.y) - 1 - p : p));
+        if (r != 0.0)
+            u = min(u, r > 0.0 ? float(nq - 1 - q) / r : float(q) / -r);
+        if (u - float(last) > 0.0)
+            hfs_ray_segment(heights, R, last, min(u - float(last), 1.0));
+    }
+    dist = R.dist;
+    fetches = R.fetches;
+    return R.best;
+}
+
+/* The crossings alone (cells false): the key lights' and the far grid's
+ * search. */
+float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
+                     float tie, vec2 h0, float best, float stop, inout float dist,
+                     inout int fetches)
+{
+    return hfs_gap_search_cells(heights, bounds, at, size, g, cs, t_first, t_last, zf, tie, h0,
+                                best, stop, false, dist, fetches);
 }

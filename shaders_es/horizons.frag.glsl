@@ -1,8 +1,9 @@
 /*
  * horizons.frag - the GIS horizons (hfshade.h hfs_renderer_horizons,
  * runtime/gles/horizons.c): for two azimuths a draw, each grid point's gap
- * search (gles_ray.frag hfs_gap_search, the key lights' whole search) over
- * every crossing within u_reach texels, the near end of its own cell,
+ * search (gles_ray.frag hfs_gap_search_cells, the key lights' whole search
+ * with every cell between crossings solved) over the ray within u_reach
+ * texels, the near end of its own cell,
  * where it leaves the grid and where it reaches the radius, from the
  * point's own height; the
  * elevation angle atan(max slope) per azimuth as an fp16 (hi, lo) pair
@@ -20,10 +21,10 @@ precision highp sampler2D;
 vec2 hfs_split(float v);
 float hfs_hdiff(vec2 a, vec2 b);
 #define HFS_RAY_LEVELS 16
-float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
-                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
-                     float tie, vec2 h0, float best, float stop, inout float dist,
-                     inout int fetches);
+float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
+                           ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
+                           float t_last, float zf, float tie, vec2 h0, float best, float stop,
+                           bool cells, inout float dist, inout int fetches);
 
 uniform highp sampler2D u_height;        /* normalized heights (hi, lo) */
 uniform highp sampler2D u_bounds;        /* the max pyramid's atlas */
@@ -96,10 +97,11 @@ float horizon(ivec2 p, vec2 cs, vec2 h0)
 {
     float dist = 0.0;
     int fetches = 0;
-    float best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, p, cs, 0.0, u_reach, u_zf,
-                                0.0, h0, max(max(near_slope(p, cs, h0), u_window.x),
-                                             max(exit_slope(p, cs, h0), end_slope(p, cs, h0))),
-                                u_window.y, dist, fetches);
+    float best = hfs_gap_search_cells(u_height, u_bounds, u_rb_at, u_size, p, cs, 0.0, u_reach,
+                                      u_zf, 0.0, h0,
+                                      max(max(near_slope(p, cs, h0), u_window.x),
+                                          max(exit_slope(p, cs, h0), end_slope(p, cs, h0))),
+                                      u_window.y, true, dist, fetches);
     /* at the window's ends the sentinels, not atan(tan(lo)) a rounding off
      * lo: the host clamps them to lo and hi exactly (-2 also: no terrain) */
     return best >= u_window.y ? 2.0 : best > max(u_window.x, -1e29) ? atan(best) : -2.0;

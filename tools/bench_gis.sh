@@ -160,7 +160,7 @@ def rd(p):
 def inner(a):
     return a[2:-2, 2:-2]
 def stats(d):
-    return "%.4f | %.3f | %.3f" % (d.mean(), np.percentile(d, 99), d.max())
+    return "%.3g | %.3g | %.3g" % (d.mean(), np.percentile(d, 99), d.max())
 rows = []
 for name, sub, clamp in (("hfshade horizon (gles)", "gles", False),
                          ("hfshade horizon (cpu)", "cpu", False),

@@ -130,72 +130,238 @@ static ray_walk walk_make(int w, int h, int i, int j, double c, double s)
     return k;
 }
 
-double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
-                            size_t stride, int i, int j, double c, double s, double t_first,
-                            double t_last, double zs, double tie, double best, double *dist,
-                            long *reads)
+/* One search's state: the ray from its receiver, the result so far and
+ * (cells) the column of heights the last segment ended on, which the next
+ * one starts from. */
+typedef struct ray_search {
+    const hfs_ray_bound_layout *L;
+    const double *atlas, *z;
+    size_t stride;
+    ray_walk k;
+    int p, q, nq;              /* the receiver's major, minor coordinate; minor size */
+    double z0, zs, tie;
+    double best, lead, *dist;  /* lead: the slope *dist names */
+    long reads;
+    int col_u, col_v0, col_n;  /* the kept column: major u, rows v0 .. v0 + n - 1 */
+    double col[3];
+} ray_search;
+
+/* A surface point's slope sl at distance t: the max, and the lead past
+ * the tie (ray_bound.h). */
+static void take(ray_search *S, double sl, double t)
 {
-    ray_walk k = walk_make(L->w, L->h, i, j, c, s);
-    const double m_last = floor(t_last / k.inv + 1e-4); /* as in float */
-    if (m_last < k.last)
-        k.last = m_last < 0.0 ? 0 : (int)m_last;
-    const int p = k.x_major ? i : j, q = k.x_major ? j : i, nq = k.x_major ? L->h : L->w;
-    const double z0 = z[(size_t)j * stride + (size_t)i];
-    int m = (int)ceil(t_first / k.inv - 1e-4); /* as in float */
+    if (sl > S->lead + HFS_HORIZON_TIE * fabs(S->lead) + S->tie) {
+        S->lead = sl;
+        *S->dist = t;
+    }
+    S->best = sl > S->best ? sl : S->best;
+}
+
+/* Rows v0 .. v0 + n - 1 (n <= 3) of major column u, from the kept column
+ * where it holds them. */
+static void column(ray_search *S, int u, int v0, int n, double *out)
+{
+    for (int r = 0; r < n; ++r) {
+        const int v = v0 + r;
+        if (u == S->col_u && v >= S->col_v0 && v < S->col_v0 + S->col_n) {
+            out[r] = S->col[v - S->col_v0];
+            continue;
+        }
+        const int x = S->k.x_major ? u : v, y = S->k.x_major ? v : u;
+        out[r] = S->z[(size_t)y * S->stride + (size_t)x];
+        ++S->reads;
+    }
+}
+
+/* The minor coordinate at u crossings, clamped to the grid. */
+static double minor_at(const ray_search *S, double u)
+{
+    const double y = S->q + u * S->k.r;
+    return y < 0.0 ? 0.0 : (y > S->nq - 1 ? S->nq - 1 : y);
+}
+
+/* Crossing m's surface from its column c (rows v0 ..): the minor axis'
+ * linear interpolation (a row that weighs 0 is not needed). */
+static double crossing_from(const ray_search *S, int m, const double *c, int v0)
+{
+    const double y = minor_at(S, m);
+    int y0 = (int)floor(y);
+    y0 = y0 > S->nq - 2 ? S->nq - 2 : y0;
+    const double f = y - y0, a = c[y0 - v0];
+    return f == 0.0 ? a : a + f * (c[y0 + 1 - v0] - a);
+}
+
+/* One crossing alone (the crossings' search, a one-row grid, the last
+ * crossing): one read, its two heights being one pair. */
+static void crossing(ray_search *S, int m)
+{
+    const double y = minor_at(S, m);
+    int y0 = (int)floor(y);
+    y0 = y0 > S->nq - 2 ? (S->nq >= 2 ? S->nq - 2 : 0) : y0;
+    const int x = S->p + S->k.step * m;
+    const double *a = S->k.x_major ? S->z + (size_t)y0 * S->stride + (size_t)x
+                                   : S->z + (size_t)x * S->stride + (size_t)y0;
+    const double b = S->nq >= 2 ? (S->k.x_major ? a[S->stride] : a[1]) : a[0];
+    const double v = a[0] + (y - y0) * (b - a[0]);
+    ++S->reads;
+    take(S, (v - S->z0) * S->zs / (m * S->k.inv), m * S->k.inv);
+}
+
+/* Crossing m, the ray's cells on to a1 crossings farther (0 < a1 <= 1;
+ * ray_bound.h "cells") and, at a1 = 1, crossing m + 1, from the columns
+ * of the two crossings (2-3 rows each, the first kept from the segment
+ * before).  Split where the ray crosses a minor grid line, a piece's
+ * surface is the quadratic z(a) = A + B a + C a^2 (relative to z0) of one
+ * bilinear cell; its slope z / (m + a) peaks inside only where C < 0, at
+ * the root of C a^2 + 2 C m a + (B m - A) = 0 nearer 0, written so that
+ * nothing cancels at large m.  Takes the crossings, that point and every
+ * piece's far end. */
+static void segment(ray_search *S, int m, double a1)
+{
+    const ray_walk *k = &S->k;
+    const double ya = S->q + m * k->r, yb = S->q + (m + a1) * k->r;
+    const double ca = minor_at(S, m), cb = minor_at(S, m + a1);
+    int v_lo = (int)floor(ca < cb ? ca : cb), v_hi = (int)ceil(ca > cb ? ca : cb);
+    v_lo = v_lo > S->nq - 2 ? S->nq - 2 : v_lo;
+    v_hi = v_hi < v_lo + 1 ? v_lo + 1 : v_hi;
+    const int u0 = S->p + k->step * m, n = v_hi - v_lo + 1;
+    double c0[3], c1[3];
+    column(S, u0, v_lo, n, c0);
+    column(S, u0 + k->step, v_lo, n, c1);
+    S->col_u = u0 + k->step, S->col_v0 = v_lo, S->col_n = n;
+    for (int r = 0; r < n; ++r)
+        S->col[r] = c1[r];
+    take(S, (crossing_from(S, m, c0, v_lo) - S->z0) * S->zs / (m * k->inv), m * k->inv);
+    if (a1 >= 1.0)
+        take(S, (crossing_from(S, m + 1, c1, v_lo) - S->z0) * S->zs / ((m + 1) * k->inv),
+             (m + 1) * k->inv);
+    /* the cells lie below their highest corner: most never reach the best */
+    double top = -HUGE_VAL;
+    for (int r = 0; r < n; ++r)
+        top = fmax(top, fmax(c0[r], c1[r]) - S->z0);
+    if (top * S->zs / ((top >= 0.0 ? m : m + a1) * k->inv) <= S->best)
+        return;
+    double cut = -1.0; /* where the ray crosses a minor grid line inside */
+    if (k->r > 0.0 && floor(ya) + 1.0 < yb)
+        cut = (floor(ya) + 1.0 - ya) / k->r;
+    else if (k->r < 0.0 && ceil(ya) - 1.0 > yb)
+        cut = (ceil(ya) - 1.0 - ya) / k->r;
+    const double ends[3] = {0.0, cut > 0.0 ? cut : a1, a1};
+    for (int pc = 0; pc < (cut > 0.0 ? 2 : 1); ++pc) {
+        const double lo = ends[pc], hi = ends[pc + 1];
+        int v0 = (int)floor(S->q + (m + 0.5 * (lo + hi)) * k->r);
+        v0 = v0 < v_lo ? v_lo : (v0 > v_hi - 1 ? v_hi - 1 : v0);
+        const double z00 = c0[v0 - v_lo] - S->z0, z10 = c1[v0 - v_lo] - S->z0;
+        const double z01 = c0[v0 + 1 - v_lo] - S->z0, z11 = c1[v0 + 1 - v_lo] - S->z0;
+        const double b0 = ya - v0, e = z11 - z10 - z01 + z00;
+        const double A = z00 + (z01 - z00) * b0, B = z10 - z00 + (z01 - z00) * k->r + e * b0;
+        const double C = e * k->r;
+        double at[2] = {hi < 1.0 ? hi : -1.0, -1.0};
+        if (C < 0.0) {
+            const double D = C * C * m * m - C * (B * m - A);
+            if (D >= 0.0)
+                at[1] = (B * m - A) / (sqrt(D) - C * m);
+        }
+        for (int i = 0; i < 2; ++i) {
+            const double a = at[i];
+            if (!(a > lo && a <= hi))
+                continue;
+            double b = b0 + k->r * a;
+            b = b < 0.0 ? 0.0 : (b > 1.0 ? 1.0 : b);
+            const double v = z00 + (z10 - z00) * a + (z01 - z00) * b + e * a * b;
+            take(S, v * S->zs / ((m + a) * k->inv), (m + a) * k->inv);
+        }
+    }
+}
+
+/* The crossings (cells = 0) or the whole ray (cells = 1) from t_first to
+ * t_last: ray_bound.h. */
+static double search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
+                     size_t stride, int i, int j, double c, double s, double t_first,
+                     double t_last, double zs, double tie, double best, double *dist,
+                     long *reads, int cells)
+{
+    ray_search S = {.L = L, .atlas = atlas, .z = z, .stride = stride, .zs = zs, .tie = tie,
+                    .best = best, .lead = best, .dist = dist, .col_u = -1};
+    ray_walk *k = &S.k;
+    *k = walk_make(L->w, L->h, i, j, c, s);
+    const double m_last = floor(t_last / k->inv + 1e-4); /* as in float */
+    if (m_last < k->last)
+        k->last = m_last < 0.0 ? 0 : (int)m_last;
+    S.p = k->x_major ? i : j, S.q = k->x_major ? j : i, S.nq = k->x_major ? L->h : L->w;
+    const int p = S.p, q = S.q, nq = S.nq;
+    S.z0 = z[(size_t)j * stride + (size_t)i];
+    const double z0 = S.z0;
+    cells = cells && nq >= 2; /* one row: the surface is linear between crossings */
+    int m = (int)ceil(t_first / k->inv - 1e-4); /* as in float */
     m = m < 1 ? 1 : m;
-    long n_reads = 0;
+    const int m_first = m;
     int l = 0;
-    /* the slope of the crossing *dist names: it moves only past the tie */
-    double lead = best;
-    while (m <= k.last) {
-        const double t = m * k.inv;
-        if (l == 0) { /* one crossing: the surface there, exactly */
-            double y = q + m * k.r;
-            y = y < 0.0 ? 0.0 : (y > nq - 1 ? nq - 1 : y);
-            int y0 = (int)floor(y);
-            y0 = y0 > nq - 2 ? (nq >= 2 ? nq - 2 : 0) : y0;
-            const double f = y - y0;
-            const int x = p + k.step * m;
-            const double *a = k.x_major ? z + (size_t)y0 * stride + (size_t)x
-                                        : z + (size_t)x * stride + (size_t)y0;
-            const double b = nq >= 2 ? (k.x_major ? a[stride] : a[1]) : a[0];
-            const double v = a[0] + f * (b - a[0]);
-            const double sl = (v - z0) * zs / t;
-            ++n_reads;
-            if (sl > lead + HFS_HORIZON_TIE * fabs(lead) + tie) {
-                lead = sl;
-                *dist = t;
-            }
-            best = sl > best ? sl : best;
+    while (m <= k->last) {
+        const double t = m * k->inv;
+        if (l == 0) { /* one crossing (and with cells its segment): exactly */
+            if (cells && m < k->last)
+                segment(&S, m, 1.0);
+            else
+                crossing(&S, m);
             ++m;
             l = 1;
             continue;
         }
-        const int m1 = m + (1 << l) - 1 > k.last ? k.last : m + (1 << l) - 1;
-        /* the run's bounding box of grid points */
-        const double ya = q + m * k.r, yb = q + m1 * k.r;
+        const int m1 = m + (1 << l) - 1 > k->last ? k->last : m + (1 << l) - 1;
+        /* the run's bounding box of grid points; with cells, also those of
+         * the cells on to the next crossing (a skipped run bounds them) */
+        const int mb = cells && m1 < k->last ? m1 + 1 : m1;
+        const double ya = q + m * k->r, yb = q + mb * k->r;
         int q0 = (int)floor((ya < yb ? ya : yb) - RAY_EDGE_TOL);
         int q1 = (int)ceil((ya > yb ? ya : yb) + RAY_EDGE_TOL);
         q0 = q0 < 0 ? 0 : q0;
         q1 = q1 > nq - 1 ? nq - 1 : q1;
-        const int pa = p + k.step * m, pb = p + k.step * m1;
+        const int pa = p + k->step * m, pb = p + k->step * mb;
         const int p0 = pa < pb ? pa : pb, p1 = pa < pb ? pb : pa;
-        const int x0 = k.x_major ? p0 : q0, x1 = k.x_major ? p1 : q1;
-        const int y0 = k.x_major ? q0 : p0, y1 = k.x_major ? q1 : p1;
+        const int x0 = k->x_major ? p0 : q0, x1 = k->x_major ? p1 : q1;
+        const int y0 = k->x_major ? q0 : p0, y1 = k->x_major ? q1 : p1;
         const int lv = hfs_ray_bound_level(x0, x1, y0, y1);
         const double rise = atlas[(size_t)(L->y0[lv] + (y0 >> lv)) * L->aw +
                                   (size_t)(L->x0[lv] + (x0 >> lv))] - z0;
-        ++n_reads;
+        ++S.reads;
         /* the largest slope the run can hold: a rise over its nearest
          * crossing, a fall over its farthest */
-        if (rise * zs / (rise >= 0.0 ? t : m1 * k.inv) > best) {
+        if (rise * zs / (rise >= 0.0 ? t : mb * k->inv) > S.best) {
             --l;
             continue;
         }
         m = m1 + 1;
         ++l;
     }
+    if (cells && k->last >= m_first) { /* past the last crossing: to the radius or a side */
+        const int np = k->x_major ? L->w : L->h;
+        double u = t_last / k->inv, side = k->step > 0 ? np - 1 - p : p;
+        u = side < u ? side : u;
+        if (k->r != 0.0) {
+            const double out = k->r > 0.0 ? (nq - 1 - q) / k->r : q / -k->r;
+            u = out < u ? out : u;
+        }
+        if (u - k->last > 0.0)
+            segment(&S, k->last, u - k->last < 1.0 ? u - k->last : 1.0);
+    }
     if (reads)
-        *reads += n_reads;
-    return best;
+        *reads += S.reads;
+    return S.best;
+}
+
+double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
+                            size_t stride, int i, int j, double c, double s, double t_first,
+                            double t_last, double zs, double tie, double best, double *dist,
+                            long *reads)
+{
+    return search(L, atlas, z, stride, i, j, c, s, t_first, t_last, zs, tie, best, dist, reads, 0);
+}
+
+double hfs_ray_bound_search_cells(const hfs_ray_bound_layout *L, const double *atlas,
+                                  const double *z, size_t stride, int i, int j, double c,
+                                  double s, double t_first, double t_last, double zs, double tie,
+                                  double best, double *dist, long *reads)
+{
+    return search(L, atlas, z, stride, i, j, c, s, t_first, t_last, zs, tie, best, dist, reads, 1);
 }

@@ -42,6 +42,19 @@
  * quadratic, at most the larger of its corners above them: a feature one
  * texel wide is seen at its crossing.
  *
+ * cells      the exact maximum over the whole ray instead (the GIS
+ *            horizons, which the truth's supremum checks): a twisted cell
+ *            rises between its crossings (a corner's peak passed
+ *            diagonally: 11 deg above both crossings on a rough fractal).
+ *            Each evaluated crossing also solves the ray's cells on to the
+ *            next crossing in closed form (ray_bound.c cells_between), a
+ *            run's box also holds the cells on to the crossing past it, so
+ *            a skipped run bounds them too, and the cells past the last
+ *            crossing (to the radius or the grid's side) are solved at the
+ *            end.  Every stretch of the ray from crossing m_first on is
+ *            then solved or bounded, and the result is the supremum
+ *            there.  Costs 4-8 reads more an evaluated crossing.
+ *
  * Shared by the CPU reference (this file's search) and the GLES path
  * (gles_ray.frag hfs_gap_search, the same steps); pure functions.
  */
@@ -98,5 +111,14 @@ double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, 
                             size_t stride, int i, int j, double c, double s, double t_first,
                             double t_last, double zs, double tie, double best, double *dist,
                             long *reads);
+
+/* The same over the whole ray from crossing m_first (the first at distance
+ * >= t_first) to t_last or the grid's edge: the supremum of the bilinear
+ * surface's slopes there, each cell between crossings in closed form
+ * ("cells" above). */
+double hfs_ray_bound_search_cells(const hfs_ray_bound_layout *L, const double *atlas,
+                                  const double *z, size_t stride, int i, int j, double c,
+                                  double s, double t_first, double t_last, double zs, double tie,
+                                  double best, double *dist, long *reads);
 
 #endif /* HFS_RAY_BOUND_H */

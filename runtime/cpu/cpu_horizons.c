@@ -79,8 +79,9 @@ static void horizon_row(void *ctx, int j, int worker)
             const double near = fmax(fmax(hfs_field_first_cell_slope(f, i, j, c, s), h->floor),
                                      fmax(exit_slope(f, i, j, c, s, h->t_last),
                                           end_slope(f, i, j, c, s, h->t_last)));
-            const double m = hfs_ray_bound_search(h->L, h->atlas, h->z, w, i, j, c, s, 0.0,
-                                                  h->t_last, zs, 0.0, near, &dist, NULL);
+            const double m = hfs_ray_bound_search_cells(h->L, h->atlas, h->z, w, i, j, c, s,
+                                                        0.0, h->t_last, zs, 0.0, near, &dist,
+                                                        NULL);
             row[i] = m > -DBL_MAX ? (float)atan(m) : HFS_HORIZON_NONE;
         }
     }
