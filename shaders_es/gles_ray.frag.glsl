@@ -53,50 +53,40 @@ void hfs_ray_take(inout hfs_ray R, float sl, float t)
     R.best = max(R.best, sl);
 }
 
-/* Rows v0 .. v0 + n - 1 (n = 2, 3) of major column u relative to the
- * receiver (ray_bound.c column; a third row not asked for repeats the
- * second). */
-vec3 hfs_ray_column(highp sampler2D heights, inout hfs_ray R, int u, int v0, int n)
+/* Crossing m's surface from its column c (rows v0 .. v0 + 2) at the
+ * clamped minor coordinate y (ray_bound.c crossing_from; a row that
+ * weighs 0 adds 0). */
+float hfs_ray_crossing_from(float y, int nq, vec3 c, int v0)
 {
-    ivec2 at = R.xm ? ivec2(u, v0) : ivec2(v0, u), dv = R.xm ? ivec2(0, 1) : ivec2(1, 0);
-    float a = hfs_hdiff(texelFetch(heights, at, 0).xy, R.h0);
-    float b = hfs_hdiff(texelFetch(heights, at + dv, 0).xy, R.h0);
-    float c = n > 2 ? hfs_hdiff(texelFetch(heights, at + 2 * dv, 0).xy, R.h0) : b;
-    R.fetches += n;
-    return vec3(a, b, c);
-}
-
-float hfs_ray_minor(hfs_ray R, float u)
-{
-    return clamp(float(R.q) + u * R.r, 0.0, float(R.nq - 1));
-}
-
-/* Crossing m's surface from its column c (rows v0 ..; ray_bound.c
- * crossing_from). */
-float hfs_ray_crossing_from(hfs_ray R, int m, vec3 c, int v0)
-{
-    float y = hfs_ray_minor(R, float(m));
-    int y0 = min(int(floor(y)), R.nq - 2);
-    float f = y - float(y0);
+    int y0 = min(int(floor(y)), nq - 2);
     vec2 ab = y0 == v0 ? c.xy : c.yz;
-    return f == 0.0 ? ab.x : ab.x + f * (ab.y - ab.x);
+    return ab.x + (y - float(y0)) * (ab.y - ab.x);
 }
 
 /* Crossing m, the cells on to a1 crossings farther and, at a1 = 1,
- * crossing m + 1 (ray_bound.c segment, the same steps). */
+ * crossing m + 1 (ray_bound.c segment, the same steps; both columns read
+ * here, three rows each, the third clamped to the grid). */
 void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
 {
     float fm = float(m);
     float ya = float(R.q) + fm * R.r, yb = float(R.q) + (fm + a1) * R.r;
-    float ca = hfs_ray_minor(R, fm), cb = hfs_ray_minor(R, fm + a1);
+    float ca = clamp(ya, 0.0, float(R.nq - 1)), cb = clamp(yb, 0.0, float(R.nq - 1));
     int v_lo = min(int(floor(min(ca, cb))), R.nq - 2);
     int v_hi = max(int(ceil(max(ca, cb))), v_lo + 1);
-    int u0 = R.p + R.step * m, n = v_hi - v_lo + 1;
-    vec3 c0 = hfs_ray_column(heights, R, u0, v_lo, n);
-    vec3 c1 = hfs_ray_column(heights, R, u0 + R.step, v_lo, n);
-    hfs_ray_take(R, hfs_ray_crossing_from(R, m, c0, v_lo) * R.zf / (fm * R.inv), fm * R.inv);
+    int u0 = R.p + R.step * m;
+    ivec2 dv = R.xm ? ivec2(0, 1) : ivec2(1, 0), du = R.xm ? ivec2(R.step, 0) : ivec2(0, R.step);
+    ivec2 at0 = R.xm ? ivec2(u0, v_lo) : ivec2(v_lo, u0);
+    ivec2 at2 = R.xm ? ivec2(u0, min(v_lo + 2, R.nq - 1)) : ivec2(min(v_lo + 2, R.nq - 1), u0);
+    vec3 c0 = vec3(hfs_hdiff(texelFetch(heights, at0, 0).xy, R.h0),
+                   hfs_hdiff(texelFetch(heights, at0 + dv, 0).xy, R.h0),
+                   hfs_hdiff(texelFetch(heights, at2, 0).xy, R.h0));
+    vec3 c1 = vec3(hfs_hdiff(texelFetch(heights, at0 + du, 0).xy, R.h0),
+                   hfs_hdiff(texelFetch(heights, at0 + du + dv, 0).xy, R.h0),
+                   hfs_hdiff(texelFetch(heights, at2 + du, 0).xy, R.h0));
+    R.fetches += 6;
+    hfs_ray_take(R, hfs_ray_crossing_from(ca, R.nq, c0, v_lo) * R.zf / (fm * R.inv), fm * R.inv);
     if (a1 >= 1.0)
-        hfs_ray_take(R, hfs_ray_crossing_from(R, m + 1, c1, v_lo) * R.zf / ((fm + 1.0) * R.inv),
+        hfs_ray_take(R, hfs_ray_crossing_from(cb, R.nq, c1, v_lo) * R.zf / ((fm + 1.0) * R.inv),
                      (fm + 1.0) * R.inv);
     /* the cells lie below their highest corner: most never reach the best */
     float top = max(max(max(c0.x, c0.y), c0.z), max(max(c1.x, c1.y), c1.z));
