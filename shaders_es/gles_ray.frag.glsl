@@ -31,9 +31,8 @@ int hfs_ray_level(ivec2 lo, ivec2 hi)
 
 /* One search with cells (runtime/core/ray_bound.c ray_search, the same
  * steps): the ray, its receiver and the result so far.  A segment reads
- * both its columns from the pairs texture (two rows a fetch): keeping the
- * last one, as the CPU does, saves nothing on a SIMD device, where a fetch
- * that one lane needs runs for all. */
+ * both its columns: keeping the last one, as the CPU does, was no faster
+ * on llvmpipe. */
 struct hfs_ray {
     bool xm;
     int step, p, q, nq;
@@ -65,11 +64,9 @@ float hfs_ray_crossing_from(float y, int nq, vec3 c, int v0)
 }
 
 /* Crossing m, the cells on to a1 crossings farther and, at a1 = 1,
- * crossing m + 1 (ray_bound.c segment, the same steps): both columns,
- * three rows each (the third clamped to the grid), in four fetches of
- * `pairs`, whose texel holds the (hi, lo) heights of a grid point and of
- * the next one along the ray's minor axis. */
-void hfs_ray_segment(highp sampler2D pairs, inout hfs_ray R, int m, float a1)
+ * crossing m + 1 (ray_bound.c segment, the same steps; both columns read
+ * here, three rows each, the third clamped to the grid). */
+void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
 {
     float fm = float(m);
     float ya = float(R.q) + fm * R.r, yb = float(R.q) + (fm + a1) * R.r;
@@ -77,15 +74,16 @@ void hfs_ray_segment(highp sampler2D pairs, inout hfs_ray R, int m, float a1)
     int v_lo = min(int(floor(min(ca, cb))), R.nq - 2);
     int v_hi = max(int(ceil(max(ca, cb))), v_lo + 1);
     int u0 = R.p + R.step * m;
-    ivec2 du = R.xm ? ivec2(R.step, 0) : ivec2(0, R.step);
+    ivec2 dv = R.xm ? ivec2(0, 1) : ivec2(1, 0), du = R.xm ? ivec2(R.step, 0) : ivec2(0, R.step);
     ivec2 at0 = R.xm ? ivec2(u0, v_lo) : ivec2(v_lo, u0);
     ivec2 at2 = R.xm ? ivec2(u0, min(v_lo + 2, R.nq - 1)) : ivec2(min(v_lo + 2, R.nq - 1), u0);
-    vec4 p0 = texelFetch(pairs, at0, 0), p1 = texelFetch(pairs, at0 + du, 0);
-    vec3 c0 = vec3(hfs_hdiff(p0.xy, R.h0), hfs_hdiff(p0.zw, R.h0),
-                   hfs_hdiff(texelFetch(pairs, at2, 0).xy, R.h0));
-    vec3 c1 = vec3(hfs_hdiff(p1.xy, R.h0), hfs_hdiff(p1.zw, R.h0),
-                   hfs_hdiff(texelFetch(pairs, at2 + du, 0).xy, R.h0));
-    R.fetches += 4;
+    vec3 c0 = vec3(hfs_hdiff(texelFetch(heights, at0, 0).xy, R.h0),
+                   hfs_hdiff(texelFetch(heights, at0 + dv, 0).xy, R.h0),
+                   hfs_hdiff(texelFetch(heights, at2, 0).xy, R.h0));
+    vec3 c1 = vec3(hfs_hdiff(texelFetch(heights, at0 + du, 0).xy, R.h0),
+                   hfs_hdiff(texelFetch(heights, at0 + du + dv, 0).xy, R.h0),
+                   hfs_hdiff(texelFetch(heights, at2 + du, 0).xy, R.h0));
+    R.fetches += 6;
     hfs_ray_take(R, hfs_ray_crossing_from(ca, R.nq, c0, v_lo) * R.zf / (fm * R.inv), fm * R.inv);
     if (a1 >= 1.0)
         hfs_ray_take(R, hfs_ray_crossing_from(cb, R.nq, c1, v_lo) * R.zf / ((fm + 1.0) * R.inv),
@@ -136,15 +134,13 @@ void hfs_ray_segment(highp sampler2D pairs, inout hfs_ray R, int m, float a1)
  * window fully blocked needs no more).  *dist: the distance of the
  * crossing that raised best.  Counts its reads.  cells: the whole ray's
  * supremum instead, every cell between crossings solved or bounded
- * (ray_bound.h "cells", hfs_ray_bound_search_cells; the GIS horizons),
- * its columns read from `pairs` (hfs_ray_segment; unused without cells).
+ * (ray_bound.h "cells", hfs_ray_bound_search_cells; the GIS horizons).
  * (A second walk from the crossings' max, to solve only the cells that
  * can beat it, was no faster on llvmpipe: it reads more.) */
 float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
                            ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
                            float t_last, float zf, float tie, vec2 h0, float best, float stop,
-                           bool cells, highp sampler2D pairs, inout float dist,
-                           inout int fetches)
+                           bool cells, inout float dist, inout int fetches)
 {
     hfs_ray R;
     R.xm = abs(cs.x) >= abs(cs.y);
@@ -174,7 +170,7 @@ float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
         float t = float(m) * inv;
         if (l == 0) { /* one crossing (and with cells its segment): exactly */
             if (cells && m < last) {
-                hfs_ray_segment(pairs, R, m, 1.0);
+                hfs_ray_segment(heights, R, m, 1.0);
             } else {
                 float y = clamp(float(q) + float(m) * r, 0.0, float(nq - 1));
                 int y0 = min(int(floor(y)), max(nq - 2, 0));
@@ -217,7 +213,7 @@ float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
         if (r != 0.0)
             u = min(u, r > 0.0 ? float(nq - 1 - q) / r : float(q) / -r);
         if (u - float(last) > 0.0)
-            hfs_ray_segment(pairs, R, last, min(u - float(last), 1.0));
+            hfs_ray_segment(heights, R, last, min(u - float(last), 1.0));
     }
     dist = R.dist;
     fetches = R.fetches;
@@ -232,5 +228,5 @@ float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
                      inout int fetches)
 {
     return hfs_gap_search_cells(heights, bounds, at, size, g, cs, t_first, t_last, zf, tie, h0,
-                                best, stop, false, heights, dist, fetches);
+                                best, stop, false, dist, fetches);
 }

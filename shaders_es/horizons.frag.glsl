@@ -24,13 +24,10 @@ float hfs_hdiff(vec2 a, vec2 b);
 float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
                            ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
                            float t_last, float zf, float tie, vec2 h0, float best, float stop,
-                           bool cells, highp sampler2D pairs, inout float dist,
-                           inout int fetches);
+                           bool cells, inout float dist, inout int fetches);
 
 uniform highp sampler2D u_height;        /* normalized heights (hi, lo) */
 uniform highp sampler2D u_bounds;        /* the max pyramid's atlas */
-uniform highp sampler2D u_vpairs;        /* (hi, lo) of (x, y) and (x, y + 1) */
-uniform highp sampler2D u_hpairs;        /* (hi, lo) of (x, y) and (x + 1, y) */
 uniform ivec2 u_rb_at[HFS_RAY_LEVELS];   /* level l's corner in the atlas */
 uniform ivec2 u_size;                    /* W, H */
 uniform float u_zf;                      /* normalized height to slope: hscale zscale / dx */
@@ -100,17 +97,11 @@ float horizon(ivec2 p, vec2 cs, vec2 h0)
 {
     float dist = 0.0;
     int fetches = 0;
-    float start = max(max(near_slope(p, cs, h0), u_window.x),
-                      max(exit_slope(p, cs, h0), end_slope(p, cs, h0)));
-    /* the pairs along the ray's minor axis (the same for every texel of
-     * the draw: no divergence) */
-    float best = abs(cs.x) >= abs(cs.y)
-                     ? hfs_gap_search_cells(u_height, u_bounds, u_rb_at, u_size, p, cs, 0.0,
-                                            u_reach, u_zf, 0.0, h0, start, u_window.y, true,
-                                            u_vpairs, dist, fetches)
-                     : hfs_gap_search_cells(u_height, u_bounds, u_rb_at, u_size, p, cs, 0.0,
-                                            u_reach, u_zf, 0.0, h0, start, u_window.y, true,
-                                            u_hpairs, dist, fetches);
+    float best = hfs_gap_search_cells(u_height, u_bounds, u_rb_at, u_size, p, cs, 0.0, u_reach,
+                                      u_zf, 0.0, h0,
+                                      max(max(near_slope(p, cs, h0), u_window.x),
+                                          max(exit_slope(p, cs, h0), end_slope(p, cs, h0))),
+                                      u_window.y, true, dist, fetches);
     /* at the window's ends the sentinels, not atan(tan(lo)) a rounding off
      * lo: the host clamps them to lo and hi exactly (-2 also: no terrain) */
     return best >= u_window.y ? 2.0 : best > max(u_window.x, -1e29) ? atan(best) : -2.0;

@@ -1,9 +1,7 @@
 /*
  * horizons.c — the GIS horizons on the GLES path (hfs_renderer_horizons):
- * the heights as the frame uploads them (normalized fp16 hi + lo), the same
- * heights in pairs along each axis (a cell's side in one fetch, for the
- * cells the search solves: gles_ray.frag hfs_ray_segment) and the gap
- * search's bounds (bounds_texture.h) in textures of this call's own,
+ * the heights as the frame uploads them (normalized fp16 hi + lo) and the
+ * gap search's bounds (bounds_texture.h) in textures of this call's own,
  * then horizons.frag over the field, two azimuths a draw into one RGBA
  * target (each angle an fp16 hi + lo pair), read back after each draw.
  * Outside the frame like the point queries (shm_query.c): the frame's
@@ -29,7 +27,6 @@
 
 typedef struct horizon_targets {
     GLuint heights, bounds, out, fbo;
-    GLuint pairs[2]; /* the heights of (x, y) and (x, y + 1), of (x, y) and (x + 1, y) */
 } horizon_targets;
 
 static void targets_free(const hfs_gl *gl, horizon_targets *t)
@@ -39,38 +36,6 @@ static void targets_free(const hfs_gl *gl, horizon_targets *t)
     hfs_gles_tex_delete(gl, &t->heights);
     hfs_gles_tex_delete(gl, &t->bounds);
     hfs_gles_tex_delete(gl, &t->out);
-    hfs_gles_tex_delete(gl, &t->pairs[0]);
-    hfs_gles_tex_delete(gl, &t->pairs[1]);
-}
-
-/* The pairs textures (horizons.frag u_vpairs, u_hpairs) from the split
- * heights `hl` (hi, lo a texel, elements of es bytes): texel (x, y) holds
- * its own (hi, lo) and its neighbour's one row (0) or column (1) on,
- * clamped to the grid, so that a cell's side is one fetch. */
-static int pairs_upload(const hfs_gl *gl, const hfs_gl_caps *c, const hfs_gles_layout *L,
-                        const void *hl, horizon_targets *t, hfs_error *err)
-{
-    const size_t es = c->fp32 ? 4 : 2, n = (size_t)L->w * (size_t)L->h;
-    unsigned char *buf = malloc(n * 4 * es);
-    if (!buf)
-        return hfs_fail(err, HFS_E_NOMEM, "horizons: out of memory for a %dx%d upload", L->w,
-                        L->h);
-    const unsigned char *src = hl;
-    for (int k = 0; k < 2; ++k) {
-        for (int y = 0; y < L->h; ++y)
-            for (int x = 0; x < L->w; ++x) {
-                const int nx = k && x + 1 < L->w ? x + 1 : x, ny = !k && y + 1 < L->h ? y + 1 : y;
-                unsigned char *d = buf + ((size_t)y * L->w + x) * 4 * es;
-                memcpy(d, src + ((size_t)y * L->w + x) * 2 * es, 2 * es);
-                memcpy(d + 2 * es, src + ((size_t)ny * L->w + nx) * 2 * es, 2 * es);
-            }
-        t->pairs[k] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->w, L->h, 1, 0);
-        gl->BindTexture(GL_TEXTURE_2D, t->pairs[k]);
-        gl->TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, L->w, L->h, GL_RGBA, c->type_upload, buf);
-    }
-    gl->BindTexture(GL_TEXTURE_2D, 0);
-    free(buf);
-    return HFS_OK;
 }
 
 /* The call begun (hfs_gles_begin_outside), the heights and bounds
@@ -99,8 +64,7 @@ static int begin(hfs_gles *g, const hfs_field *f, const hfs_quality *q, hfs_gles
     gl->BindTexture(GL_TEXTURE_2D, t->heights);
     gl->TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, L->w, L->h, GL_RG, c->type_upload, buf);
     gl->BindTexture(GL_TEXTURE_2D, 0);
-    if ((rc = pairs_upload(gl, c, L, buf, t, err)) ||
-        (rc = hfs_gles_bounds_upload(gl, c, t->bounds, L, f, buf, err)))
+    if ((rc = hfs_gles_bounds_upload(gl, c, t->bounds, L, f, buf, err)))
         return rc;
     return hfs_gl_check(gl, "horizons: upload", err);
 }
@@ -122,9 +86,7 @@ static int draw_pair(hfs_gles *g, const hfs_gles_layout *L, const horizon_target
     const hfs_gles_variant v = {.fp32 = g->caps.fp32};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_HORIZONS, &v, &prog, err);
-    if (rc || (rc = hfs_gles_bind_ray(gl, prog, L, t->heights, t->bounds, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_vpairs", GL_TEXTURE_2D, t->pairs[0], err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_hpairs", GL_TEXTURE_2D, t->pairs[1], err)))
+    if (rc || (rc = hfs_gles_bind_ray(gl, prog, L, t->heights, t->bounds, err)))
         return rc;
     const int two = a + 1 < d->n_azimuths;
     double cs[4];
@@ -168,7 +130,7 @@ static int search(hfs_gles *g, const hfs_field *f, const hfs_quality *q,
                   hfs_error *err)
 {
     hfs_gles_layout L;
-    horizon_targets t = {0, 0, 0, 0, {0, 0}};
+    horizon_targets t = {0, 0, 0, 0};
     int rc = begin(g, f, q, &L, &t, err);
     for (int a = 0; a < d->n_azimuths && !rc; a += 2)
         rc = draw_pair(g, &L, &t, d, a, win, out, err);
