@@ -423,12 +423,14 @@ typedef struct hfs_horizon_desc {
  * definitions (sky-view factor, openness) are built on these.
  *   - truth: the exact supremum over SPEC's bilinear surface (each crossed
  *     cell in closed form; double precision);
- *   - CPU reference and GLES: the gap search of the key lights
- *     (runtime/core/ray_bound.h): the exact maximum over the ray's
- *     crossings of grid lines, where the bilinear surface is linear; GLES
- *     on the fp16 (hi, lo) heights, its angles returned as fp16 hi + lo.
- *     A cell's interior can rise above its crossings by a twist term: the
- *     error this leaves is measured in BENCHMARKS.md "GIS rasters".
+ *   - CPU reference and GLES: the gap search of the key lights with
+ *     every cell solved (runtime/core/ray_bound.h "cells"): the max-pyramid
+ *     skips the runs of the ray that cannot beat the best, and each cell
+ *     it does not skip is solved in closed form (the surface along the ray
+ *     is a quadratic there), so the result is the same supremum; the CPU
+ *     in double precision (equal to the truth to rounding), GLES on the
+ *     fp16 (hi, lo) heights, its angles returned as fp16 hi + lo (about
+ *     1e-5 rad; BENCHMARKS.md "Every cell solved").
  * quality: NULL or filled by hfs_quality_defaults; only precision (GLES)
  * and threads (CPU, truth) are read.  Errors (one line): a bad desc, a
  * field over the backend's texture limit (GLES: the limit named). */

@@ -6,7 +6,14 @@
  *     + [sh_product.glsl.inc] + the pass shader
  * (runtime/gles/programs.c; source string 3 in driver messages).  Kept
  * apart from gles_lib.frag so that each library file stays one job.
+ *
+ * HFS_CELLS 1 (the GIS horizons' program alone, runtime/gles/horizons.c)
+ * compiles the whole ray's supremum as hfs_gap_search_cells instead of the
+ * crossings' hfs_gap_search: the cells' code stays out of every other
+ * program, whose compile it would slow, and a program that calls the
+ * search it was not built with fails to link.
  */
+// hfs-variant: HFS_CELLS 1
 precision highp float;
 precision highp int;
 precision highp sampler2D;
@@ -19,6 +26,9 @@ bool hfs_scale_takes_over(float sl, float ref, float tie);
 
 #define HFS_RAY_LEVELS 16       /* ray_bound.h HFS_RAY_BOUND_MAX_LEVELS */
 #define HFS_RAY_EDGE_TOL 1e-3   /* ray_bound.c RAY_EDGE_TOL */
+#ifndef HFS_CELLS
+#define HFS_CELLS 0
+#endif
 
 /* The level whose one read bounds the grid points [lo, hi]. */
 int hfs_ray_level(ivec2 lo, ivec2 hi)
@@ -53,6 +63,7 @@ void hfs_ray_take(inout hfs_ray R, float sl, float t)
     R.best = max(R.best, sl);
 }
 
+#if HFS_CELLS
 /* Crossing m's surface from its column c (rows v0 .. v0 + 2) at the
  * clamped minor coordinate y (ray_bound.c crossing_from; a row that
  * weighs 0 adds 0). */
@@ -123,6 +134,10 @@ void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
         }
     }
 }
+#define HFS_GAP_SEARCH hfs_gap_search_cells
+#else
+#define HFS_GAP_SEARCH hfs_gap_search
+#endif
 
 /* max(best, the slope of every crossing at distance >= t_first and <=
  * t_last) of receiver g (height h0 at g) in direction cs: bounds from the atlas
@@ -132,15 +147,16 @@ void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
  * as ray_bound.c), the value is the max; it
  * returns as soon as best reaches `stop` (1e30: never; a key light's
  * window fully blocked needs no more).  *dist: the distance of the
- * crossing that raised best.  Counts its reads.  cells: the whole ray's
- * supremum instead, every cell between crossings solved or bounded
- * (ray_bound.h "cells", hfs_ray_bound_search_cells; the GIS horizons).
- * (A second walk from the crossings' max, to solve only the cells that
- * can beat it, was no faster on llvmpipe: it reads more.) */
-float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
-                           ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
-                           float t_last, float zf, float tie, vec2 h0, float best, float stop,
-                           bool cells, inout float dist, inout int fetches)
+ * crossing that raised best.  Counts its reads.  With HFS_CELLS, as
+ * hfs_gap_search_cells: the whole ray's supremum instead, every cell
+ * between crossings solved or bounded (ray_bound.h "cells",
+ * hfs_ray_bound_search_cells; the GIS horizons).  (A second walk from the
+ * crossings' max, to solve only the cells that can beat it, was no faster
+ * on llvmpipe: it reads more.) */
+float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
+                     float tie, vec2 h0, float best, float stop, inout float dist,
+                     inout int fetches)
 {
     hfs_ray R;
     R.xm = abs(cs.x) >= abs(cs.y);
@@ -161,7 +177,11 @@ float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
     float lim_t = floor(t_last * abs(ma) + 1e-4);
     if (lim_t < float(last))
         last = int(max(lim_t, 0.0));
-    cells = cells && nq >= 2; /* one row: linear between crossings */
+#if HFS_CELLS
+    bool cells = nq >= 2; /* one row: linear between crossings */
+#else
+    const bool cells = false;
+#endif
     int m = max(1, int(ceil(t_first * abs(ma) - 1e-4)));
     int m_first = m;
     float v0 = hfs_h(h0);
@@ -169,9 +189,12 @@ float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
     while (m <= last && R.best < stop) {
         float t = float(m) * inv;
         if (l == 0) { /* one crossing (and with cells its segment): exactly */
+#if HFS_CELLS
             if (cells && m < last) {
                 hfs_ray_segment(heights, R, m, 1.0);
-            } else {
+            } else
+#endif
+            {
                 float y = clamp(float(q) + float(m) * r, 0.0, float(nq - 1));
                 int y0 = min(int(floor(y)), max(nq - 2, 0));
                 float f = y - float(y0);
@@ -208,6 +231,7 @@ float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
         m = m1 + 1;
         ++l;
     }
+#if HFS_CELLS
     if (cells && last >= m_first && R.best < stop) { /* past the last crossing */
         float u = min(t_last * abs(ma), float(step > 0 ? (R.xm ? size.x : size.y) - 1 - p : p));
         if (r != 0.0)
@@ -215,18 +239,9 @@ float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
         if (u - float(last) > 0.0)
             hfs_ray_segment(heights, R, last, min(u - float(last), 1.0));
     }
+#endif
     dist = R.dist;
     fetches = R.fetches;
     return R.best;
 }
 
-/* The crossings alone (cells false): the key lights' and the far grid's
- * search. */
-float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
-                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
-                     float tie, vec2 h0, float best, float stop, inout float dist,
-                     inout int fetches)
-{
-    return hfs_gap_search_cells(heights, bounds, at, size, g, cs, t_first, t_last, zf, tie, h0,
-                                best, stop, false, dist, fetches);
-}

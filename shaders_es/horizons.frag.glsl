@@ -12,6 +12,7 @@
  * search from its low slope and stops it at its high one; -2 then also
  * stands for nothing above the low end and 2 for the high end reached.
  */
+// hfs-base: HFS_CELLS 1
 // hfs-variant: HFS_FP32 1
 
 precision highp float;
@@ -21,10 +22,11 @@ precision highp sampler2D;
 vec2 hfs_split(float v);
 float hfs_hdiff(vec2 a, vec2 b);
 #define HFS_RAY_LEVELS 16
+/* gles_ray.frag, compiled with HFS_CELLS 1 (runtime/gles/horizons.c) */
 float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
                            ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
                            float t_last, float zf, float tie, vec2 h0, float best, float stop,
-                           bool cells, inout float dist, inout int fetches);
+                           inout float dist, inout int fetches);
 
 uniform highp sampler2D u_height;        /* normalized heights (hi, lo) */
 uniform highp sampler2D u_bounds;        /* the max pyramid's atlas */
@@ -101,7 +103,7 @@ float horizon(ivec2 p, vec2 cs, vec2 h0)
                                       u_zf, 0.0, h0,
                                       max(max(near_slope(p, cs, h0), u_window.x),
                                           max(exit_slope(p, cs, h0), end_slope(p, cs, h0))),
-                                      u_window.y, true, dist, fetches);
+                                      u_window.y, dist, fetches);
     /* at the window's ends the sentinels, not atan(tan(lo)) a rounding off
      * lo: the host clamps them to lo and hi exactly (-2 also: no terrain) */
     return best >= u_window.y ? 2.0 : best > max(u_window.x, -1e29) ? atan(best) : -2.0;

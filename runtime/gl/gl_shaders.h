@@ -7,7 +7,9 @@
  * prepends "#version 300 es", the variant #defines and "#line 1", so driver
  * messages give the line numbers of the .glsl file.  When glslangValidator
  * was installed at build time every shader was validated as ES 3.00
- * (with each "// hfs-variant: NAME VALUE, ..." line of the file as well).
+ * (with each "// hfs-variant: NAME VALUE, ..." line of the file as well,
+ * and every "// hfs-base: NAME VALUE" line's defines in each of them:
+ * cmake/shader_variants.cmake).
  */
 #ifndef HFS_GL_SHADERS_H
 #define HFS_GL_SHADERS_H

@@ -83,7 +83,7 @@ static int draw_pair(hfs_gles *g, const hfs_gles_layout *L, const horizon_target
                      hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
-    const hfs_gles_variant v = {.fp32 = g->caps.fp32};
+    const hfs_gles_variant v = {.fp32 = g->caps.fp32, .cells = 1};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_HORIZONS, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_ray(gl, prog, L, t->heights, t->bounds, err)))

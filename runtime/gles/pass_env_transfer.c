@@ -81,7 +81,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
         (rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, g->r.normals, err)))
         return rc;
     for (int i = 0; i < 4; ++i) {
-        char name[8];
+        char name[16]; /* room for any int, as the optimiser checks */
         snprintf(name, sizeof name, "u_v%d", i);
         if ((rc = hfs_gles_program_texture(gl, prog, name, GL_TEXTURE_2D, g->r.venv[i], err)))
             return rc;

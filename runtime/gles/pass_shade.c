@@ -153,7 +153,7 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     if ((rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, r->normals, err)))
         return rc;
     for (int i = 0; i < 4; ++i) {
-        char name[8];
+        char name[16]; /* room for any int, as the optimiser checks */
         snprintf(name, sizeof name, "u_t%d", i);
         if ((rc = hfs_gles_program_texture(gl, prog, name, GL_TEXTURE_2D, r->transfer[i], err)))
             return rc;

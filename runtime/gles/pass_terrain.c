@@ -155,7 +155,7 @@ static int reconstruct_y(hfs_gles *g, const hfs_gles_layout *L, const hfs_tiles 
         hfs_gles_set_i2(gl, prog, "u_dst_size", w, h);
         for (int k = 0; k < n; ++k) {
             const int l = L->lmin + i + k;
-            char name[16];
+            char name[24]; /* room for any int, as the optimiser checks */
             snprintf(name, sizeof name, "u_vsrc[%d]", k);
             if ((rc = hfs_gles_program_texture(gl, prog, name, GL_TEXTURE_2D, g->r.half[l], err)))
                 return rc;

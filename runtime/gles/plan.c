@@ -17,33 +17,40 @@ static int node_find(const hfs_plan *p, const char *fmt, int i)
     return -1;
 }
 
+_Static_assert(HFS_MAX_LOCAL_LIGHTS < 100 && HFS_GLES_PLAN_KEYS < 100,
+               "an instance's input name holds a two-digit index");
+
+/* Input "<what> <i> <part>", e.g. "key 2 direction". The index is taken
+ * modulo 100 (a no-op by the assert above) so that the compiler can prove
+ * the name fits HFS_PLAN_NAME at any optimisation level. */
+static int indexed_input(hfs_plan *p, const char *what, int i, const char *part)
+{
+    char name[HFS_PLAN_NAME];
+    snprintf(name, sizeof name, "%s %u %s", what, (unsigned)i % 100u, part);
+    return hfs_plan_input(p, name);
+}
+
 /* The inputs: what a frame signature carries (diff_inputs below). */
 static void declare_inputs(hfs_gles_plan *gp)
 {
     hfs_plan *p = &gp->p;
-    char name[HFS_PLAN_NAME];
     gp->in_terrain = hfs_plan_input(p, "terrain");
     gp->in_grid = hfs_plan_input(p, "subsample");
     gp->in_env_set = hfs_plan_input(p, "env settings");
     gp->in_env_light = hfs_plan_input(p, "env light");
     gp->in_albedo = hfs_plan_input(p, "albedo");
     gp->in_local_set = hfs_plan_input(p, "local settings");
-    for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i) {
-        snprintf(name, sizeof name, "local %d geometry", i);
-        gp->in_local_geom[i] = hfs_plan_input(p, name);
-    }
+    for (int i = 0; i < HFS_MAX_LOCAL_LIGHTS; ++i)
+        gp->in_local_geom[i] = indexed_input(p, "local", i, "geometry");
     gp->in_local_rad = hfs_plan_input(p, "local radiance");
     gp->in_light_set = hfs_plan_input(p, "light set");
     gp->in_bounce = hfs_plan_input(p, "bounce settings");
     gp->in_camera = hfs_plan_input(p, "camera");
     gp->in_lit = hfs_plan_input(p, "lit texture settings");
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
-        snprintf(name, sizeof name, "key %d swath", i);
-        gp->in_key_geom[i] = hfs_plan_input(p, name);
-        snprintf(name, sizeof name, "key %d direction", i);
-        gp->in_key_dir[i] = hfs_plan_input(p, name);
-        snprintf(name, sizeof name, "key %d radiance", i);
-        gp->in_key_rad[i] = hfs_plan_input(p, name);
+        gp->in_key_geom[i] = indexed_input(p, "key", i, "swath");
+        gp->in_key_dir[i] = indexed_input(p, "key", i, "direction");
+        gp->in_key_rad[i] = indexed_input(p, "key", i, "radiance");
     }
 }
 

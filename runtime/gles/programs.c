@@ -67,7 +67,7 @@ void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
         {"HFS_GLOSSY", v->glossy},     {"HFS_ENV_MAP", v->env_map},
         {"HFS_PAIRS", v->pairs},       {"HFS_FARK", v->far_k},
         {"HFS_FAR_ATLAS", v->far_atlas}, {"HFS_GLOSS_MAP", v->gloss_map},
-        {"HFS_NEAR", v->near}};
+        {"HFS_NEAR", v->near},         {"HFS_CELLS", v->cells}};
     _Static_assert(sizeof all / sizeof all[0] <= HFS_GLES_MAX_DEFINES, "defines");
     int n = 0;
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)

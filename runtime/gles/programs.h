@@ -64,6 +64,8 @@ typedef struct hfs_gles_variant {
                        beyond order 4 (u_egloss, env_gloss.h)                */
     int near;       /* HFS_NEAR 1: the bounces' near part at every texel
                        (bounce_gather.frag) and its use (bounce_light.frag)  */
+    int cells;      /* HFS_CELLS 1: gles_ray.frag's search of every cell,
+                       hfs_gap_search_cells (the GIS horizons)               */
 } hfs_gles_variant;
 
 #define HFS_GLES_MAX_PROGRAMS 64
@@ -103,7 +105,7 @@ void hfs_gles_set_f4(const hfs_gl *gl, const hfs_gles_program *p, const char *na
 
 /* The "#define NAME VALUE" strings of variant v (NULL-terminated; bufs
  * holds their text).  Exposed for tests. */
-#define HFS_GLES_MAX_DEFINES 28
+#define HFS_GLES_MAX_DEFINES 32
 void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
                               const char *defs[HFS_GLES_MAX_DEFINES + 1]);
 
