@@ -6,3 +6,7 @@
 # tile size window by window) in gdal.cmake.
 hfs_add_test(test_gis_math SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_math.c
              LIBS hfs_gis_core m LABEL unit TIMEOUT 60)
+# insolation's sky from a map (--sky-map): uniform = isotropic, a
+# brute-force sum over the map's pixels, the map's north, bad maps.
+hfs_add_test(test_gis_sky_map SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_sky_map.c
+             LIBS hfs_gis_core m LABEL unit TIMEOUT 60)

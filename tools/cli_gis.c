@@ -52,6 +52,10 @@ static const gis_opt opts[] = {
     {"--directions", "N", OPEN, "azimuths, equally spaced from east (1..1024; default 8)"},
     {"--directions", "N", INS, "the sky's horizons: azimuths, equally spaced from east "
      "(1..1024; default 16)"},
+    {"--sky-map", "FILE", INS, "the sky's shape from an equirectangular map (.exr, .hdr, .pfm; "
+     "its upper half, luminance), scaled to the clear sky's diffuse; default: isotropic"},
+    {"--sky-north", "DEG", INS, "the compass azimuth the map's left edge looks at (default 0: "
+     "north; 90: east)"},
     {"--lambertian", NULL, SVF, "the Lambertian-weighted variant, mean cos^2 (SAGA's)"},
     {"--azimuths", "A,B,...", HOR, "these azimuths, degrees (or --step)"},
     {"--step", "DEG", HOR, "every DEG degrees around the circle, in (0, 360]"},
@@ -192,6 +196,7 @@ typedef struct pending {
     const char *step_s, *start_s;     /* as given; NULL: not given          */
     const char *datetime, *from, *to; /* sun, insolation: parsed at the end */
     const char *tz;
+    const char *sky_north;            /* insolation: --sky-north as given   */
 } pending;
 
 /* The sun's options' values; 0, or the usage error's exit status. */
@@ -210,6 +215,13 @@ static int set_sun_value(gis_args *a, const char *prog, const char *name, const 
         if (hfs_cli_real(v, 0.0, FLT_MAX, &a->relief))
             return hfs_usage_error(prog, "--relief: '%s' is not a height difference >= 0", v);
         a->relief_given = 1;
+    } else if (!strcmp(name, "--sky-map")) {
+        a->sky_map = v;
+    } else if (!strcmp(name, "--sky-north")) {
+        if (hfs_cli_real(v, -360.0, 360.0, &a->sky_north))
+            return hfs_usage_error(prog, "--sky-north: '%s' is not an angle in [-360, 360] "
+                                   "degrees", v);
+        st->sky_north = v;
     } else if (!strcmp(name, "--linke")) {
         if (hfs_cli_real(v, HFS_LINKE_MIN, HFS_LINKE_MAX, &a->linke))
             return hfs_usage_error(prog, "--linke: '%s' is not a Linke turbidity in [%g, %g]", v,
@@ -229,7 +241,8 @@ static int set_value(gis_args *a, const char *prog, const char *name, const char
 {
     long n;
     static const char *const sun_only[] = {"--datetime", "--from", "--to", "--timezone",
-                                           "--linke", "--step", "--relief"};
+                                           "--linke", "--step", "--relief", "--sky-map",
+                                           "--sky-north"};
     for (size_t k = 0; k < sizeof sun_only / sizeof sun_only[0]; ++k)
         if ((a->product == GIS_SUN || a->product == GIS_INSOLATION) && !strcmp(name, sun_only[k]))
             return set_sun_value(a, prog, name, v, st);
@@ -356,6 +369,8 @@ static int check_args(gis_args *a, const char *prog, const pending *st)
         a->backend == HFS_BACKEND_TRUTH)
         return hfs_usage_error(prog, "--radius: not with --backend truth (the truth renders the "
                                "sun's exact shadows from the whole DEM)");
+    if (st->sky_north && !a->sky_map)
+        return hfs_usage_error(prog, "--sky-north: only with --sky-map");
     if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
         return check_sun(a, prog, st);
     if (a->product != GIS_HORIZON)

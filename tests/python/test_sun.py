@@ -166,6 +166,42 @@ class Sun(util.TempDir):
             self.skipTest("no GLES context on this machine")
         self.insolation_both("gles", "--radius", 200, "--linke", 2, radius=200, linke=2)
 
+    def test_insolation_sky_map(self):
+        # a sky bright towards the north-east, as a file for the command (PFM,
+        # top row first) and as an array for the module: the same bits
+        h, w = 16, 32
+        compass = 360.0 * (np.arange(w) + 0.5) / w
+        glow = 1.0 + 4.0 * np.maximum(0.0, np.cos(np.radians(compass - 45.0)))
+        sky = np.repeat((np.ones((h, 1)) * glow)[:, :, None], 3, axis=2).astype(np.float32)
+        sky[:, :, 2] *= 0.5
+        pfm = self.path("sky.pfm")
+        with open(pfm, "wb") as f:
+            f.write(b"PF\n%d %d\n-1.0\n" % (w, h))
+            f.write(sky.astype("<f4").tobytes())
+        out = self.path("ins_sky.tif")
+        util.run_cli("insolation", self.dem, "-o", out, "--from", HOURS[0], "--to", HOURS[1],
+                     "--step", 60, "--directions", 8, "--backend", "cpu", "--quiet",
+                     "--sky-map", pfm, "--sky-north", 30)
+        bands = hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, step=60,
+                                   directions=8, nodata=NODATA, backend="cpu", sky_map=sky,
+                                   sky_north=30)
+        for k, b in enumerate(bands):
+            meta = self.same(b, out, k + 1)
+        self.assertEqual(meta["HFS_SKY_MAP"], "sky.pfm")
+        iso = hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, step=60,
+                                 directions=8, nodata=NODATA, backend="cpu")
+        self.assertEqual(iso[0].tobytes(), bands[0].tobytes())  # the beam is the sun's
+        self.assertGreater(float(np.abs(iso[1] - bands[1]).max()), 0.0)
+        with self.assertRaisesRegex(hfshade.Error, "sky: pixel .* negative"):
+            hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, step=60,
+                               backend="cpu", sky_map=-sky)
+        with self.assertRaisesRegex(ValueError, "^sky_north: "):
+            hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, backend="cpu",
+                               sky_map=sky, sky_north=400)
+        with self.assertRaisesRegex(ValueError, "^sky_map: expected an .h, w, 3. RGB map"):
+            hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, backend="cpu",
+                               sky_map=sky[:, :, :2])
+
     def test_julian_day_is_the_commands(self):
         instants = ["2026-06-21T06:30-05:00", "2026-12-31T23:59:59-03:30", "2024-02-29T12:00Z",
                     "2000-01-01T12:00:00Z", "1969-12-31T23:59:59+00:00", "1900-03-01T00:30+01:00",

@@ -358,16 +358,44 @@ int hfs_gis_insolation(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_si
                        int directions, double radius, float *beam, float *diffuse,
                        float *global, hfs_error *err)
 {
+    return hfs_gis_insolation_sky(r, dem, site, from_unix_utc, to_unix_utc, step_min, directions,
+                                  radius, NULL, 0, 0, 0.0, beam, diffuse, global, err);
+}
+
+/* The sky map of hfs_gis_insolation_sky over the directions' azimuths. */
+static int sky_of(const float *rgb, int w, int h, double north, int directions,
+                  gis_sky_map *out, hfs_error *err)
+{
+    if (!(w >= 1 && h >= 1 && (size_t)w * (size_t)h <= ((size_t)1 << 28)))
+        return hfs_fail(err, HFS_E_INVALID, "sky: %d x %d is not a map size (1 .. 2^28 "
+                        "pixels)", w, h);
+    if (!(north >= -360.0 && north <= 360.0))
+        return hfs_fail(err, HFS_E_INVALID, "sky_north: %g is not an angle in [-360, 360] "
+                        "degrees", north);
+    double phi[HFS_MAX_HORIZON_AZIMUTHS];
+    gis_product_directions(phi, directions);
+    return gis_sky_map_make(rgb, w, h, north, phi, directions, "sky", out, err);
+}
+
+int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_site *site,
+                           double from_unix_utc, double to_unix_utc, double step_min,
+                           int directions, double radius, const float *sky_rgb, int sky_w,
+                           int sky_h, double sky_north, float *beam, float *diffuse,
+                           float *global, hfs_error *err)
+{
     gis_dem d = {0};
     gis_compute c;
     gis_period p = {0};
     gis_period_stats st;
+    gis_sky_map sky = {0};
     int rc = beam && diffuse && global ? HFS_OK
                                        : hfs_fail(err, HFS_E_INVALID, "out: no output given");
     if (!rc)
         rc = period_of(from_unix_utc, to_unix_utc, step_min, &p, err);
     if (!rc)
         rc = check_directions(directions, err);
+    if (!rc && sky_rgb && !(rc = sky_of(sky_rgb, sky_w, sky_h, sky_north, directions, &sky, err)))
+        p.sky = &sky;
     if (!rc)
         rc = begin_sun(r, dem, site, HFS_GIS_INSOLATION, radius, &d, &c, &p.site, err);
     if (!rc) {
@@ -375,6 +403,7 @@ int hfs_gis_insolation(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_si
         p.sky_directions = directions;
         rc = gis_product_insolation(&c, &p, beam, diffuse, global, &st, err);
     }
+    gis_sky_map_free(&sky);
     free_dem(&d);
     return rc;
 }

@@ -269,6 +269,7 @@ int gis_command_run(const gis_args *a, hfs_error *err)
     if (!rc && !a->quiet)
         summary(&r, now_seconds() - t0);
     hfs_renderer_destroy(r.c.r);
+    gis_sky_map_free(&r.sky);
     gis_dem_free(&r.dem);
     gis_outputs_destroy(r.outs);
     for (int k = 0; r.names && k < a->n_azimuths; ++k)

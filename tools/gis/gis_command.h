@@ -65,6 +65,10 @@ typedef struct gis_args {
     double step_min;             /* insolation: minutes, > 0              */
     long n_steps;                /* insolation: ceil((to - from) / step)  */
     double linke;                /* Linke turbidity (clear_sky.h)         */
+    const char *sky_map;         /* insolation: --sky-map, the sky's shape
+                                  * (gis_sky_map.h); NULL: isotropic       */
+    double sky_north;            /* --sky-north: the map's left edge, compass
+                                  * degrees                               */
 } gis_args;
 
 struct gis_dem;

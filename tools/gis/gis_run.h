@@ -42,6 +42,7 @@ typedef struct gis_run {
     hfs_solar_site site;
     gis_sun_at sun;          /* sun: the instant's                          */
     gis_period period;       /* insolation                                  */
+    gis_sky_map sky;         /* insolation --sky-map (period.sky points here) */
     gis_period_stats stats;
 } gis_run;
 

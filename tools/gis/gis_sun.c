@@ -246,6 +246,7 @@ typedef struct sky_sums {
     double *acc;
     const float *normal;   /* 3 a texel                                   */
     const double *phi;     /* the grid's azimuths                         */
+    const gis_sky_map *map; /* NULL: the isotropic sky                    */
     size_t n;
 } sky_sums;
 
@@ -253,13 +254,18 @@ static int add_sky(void *user, int k, const float *gamma, hfs_error *err)
 {
     sky_sums *s = user;
     (void)err;
-    gis_sky_add(s->acc, gamma, s->normal, s->n, s->phi[k]);
+    if (s->map)
+        gis_sky_map_add(s->map, k, s->phi[k], s->acc, gamma, s->normal, s->n);
+    else
+        gis_sky_add(s->acc, gamma, s->normal, s->n, s->phi[k]);
     return HFS_OK;
 }
 
-/* The isotropic sky's share on the tilted surface under the horizons of
- * n_dirs azimuths (gis_sky_add), on the square grid. */
-static int sky_share(const gis_compute *c, int n_dirs, float *sky, hfs_error *err)
+/* The sky's share on the tilted surface under the horizons of n_dirs
+ * azimuths, on the square grid: the isotropic sky's (gis_sky_add) or, with
+ * map, the map's (gis_sky_map_add). */
+static int sky_share(const gis_compute *c, int n_dirs, const gis_sky_map *map, float *sky,
+                     hfs_error *err)
 {
     const hfs_field field = field_of(c);
     const size_t n = (size_t)field.width * (size_t)field.height;
@@ -280,11 +286,13 @@ static int sky_share(const gis_compute *c, int n_dirs, float *sky, hfs_error *er
     gis_product_directions(phi, n_dirs);
     for (int k = 0; k < n_dirs; ++k)
         phi[k] = gis_grid_phi(phi[k], c->dem->ex, c->dem->ey);
-    s.normal = normal, s.phi = phi;
+    s.normal = normal, s.phi = phi, s.map = map;
     hfs_quality q;
     hfs_quality_defaults(&q);
     const int rc = gis_horizons_each(c->r, &field, &q, phi, n_dirs, c->radius, add_sky, &s, err);
-    if (!rc)
+    if (!rc && map)
+        gis_sky_map_finish(map, sky, s.acc, n);
+    else if (!rc)
         gis_sky_finish(sky, s.acc, n, n_dirs);
     free(phi);
     free(normal);
@@ -327,7 +335,7 @@ int gis_product_insolation(const gis_compute *c, const gis_period *p, float *bea
     if (!rc && gis_period_scan(p, st))
         rc = hfs_fail(err, HFS_E_INVALID, "insolation: the site or period is out of range");
     if (!rc && st->steps_sun > 0)
-        rc = sky_share(c, p->sky_directions, sky, err);
+        rc = sky_share(c, p->sky_directions, p->sky, sky, err);
     if (!rc)
         rc = beam_sum(c, p, acc, f, err);
     if (!rc) {

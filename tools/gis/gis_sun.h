@@ -36,6 +36,7 @@
 #define HFS_GIS_SUN_H
 
 #include "gis_products.h"
+#include "gis_sky_map.h"
 #include "solar_position.h"
 
 /* The sun's angular radius at 1 AU: 959.63 arcseconds (Auwers; the
@@ -86,6 +87,8 @@ typedef struct gis_period {
     hfs_solar_site site;
     double linke;
     int sky_directions;         /* azimuths of the sky's horizons (>= 1)     */
+    const gis_sky_map *sky;     /* the sky's shape (its sky_directions azimuths
+                                 * of gis_product_directions); NULL: isotropic */
 } gis_period;
 
 /* The period [jd_from, jd_to) in steps of step_min minutes, as the
@@ -116,7 +119,8 @@ int gis_period_scan(const gis_period *p, gis_period_stats *st);
  * sum over the steps with h0 > 0 of beam_normal * f * hours (one render a
  * step, the same renderer and field: only the key light moves), diffuse[]
  * = the diffuse horizontal irradiation times the sky's share (above),
- * global[] = beam + diffuse. */
+ * global[] = beam + diffuse.  With p->sky the sky's share is the map's
+ * (gis_sky_map.h), else the isotropic sky's. */
 int gis_product_insolation(const gis_compute *c, const gis_period *p, float *beam,
                            float *diffuse, float *global, gis_period_stats *st, hfs_error *err);
 

@@ -10,6 +10,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+
+#include "hfs_io.h"
 
 #define RAD (3.14159265358979323846 / 180.0)
 
@@ -66,12 +69,41 @@ static int describe_sun(gis_run *r, hfs_error *err)
     return HFS_OK;
 }
 
+/* --sky-map: the map's sky over the period's azimuths (gis_sky_map.h). */
+static int load_sky(gis_run *r, hfs_error *err)
+{
+    const gis_args *a = r->a;
+    hfs_envmap m = {0};
+    double phi[HFS_MAX_HORIZON_AZIMUTHS];
+    int rc = hfs_envmap_load(a->sky_map, &m, err);
+    if (rc)
+        return rc;
+    gis_product_directions(phi, a->directions);
+    rc = gis_sky_map_make(m.rgb, m.width, m.height, a->sky_north, phi, a->directions,
+                          a->sky_map, &r->sky, err);
+    hfs_envmap_free(&m);
+    if (rc)
+        return rc;
+    r->period.sky = &r->sky;
+    const char *base = strrchr(a->sky_map, '/');
+    gis_run_meta(r, "HFS_SKY_MAP=%.100s", base ? base + 1 : a->sky_map);
+    gis_run_meta(r, "HFS_SKY_NORTH=%.6g", a->sky_north);
+    gis_run_meta(r, "HFS_DIFFUSE_MODEL=sky map (upper half, luminance, scaled to the clear "
+                 "sky) over the terrain's horizons; no ground reflection");
+    return HFS_OK;
+}
+
 static int describe_period(gis_run *r, hfs_error *err)
 {
     const gis_args *a = r->a;
     r->period = (gis_period){.jd_from = a->jd_from, .jd_to = a->jd_to, .step_min = a->step_min,
                              .n_steps = a->n_steps, .site = r->site, .linke = a->linke,
                              .sky_directions = a->directions};
+    if (a->sky_map) {
+        const int rc = load_sky(r, err);
+        if (rc)
+            return rc;
+    }
     if (gis_period_scan(&r->period, &r->stats))
         return hfs_fail(err, HFS_E_INVALID, "%s: no sun for this site and period", a->dem);
     r->no_render = r->stats.steps_sun == 0;
@@ -85,8 +117,9 @@ static int describe_period(gis_run *r, hfs_error *err)
     gis_run_meta(r, "HFS_STEPS_SUN=%ld", r->stats.steps_sun);
     gis_run_meta(r, "HFS_BEAM_NORMAL_WH=%.3f", r->stats.beam_normal_wh);
     gis_run_meta(r, "HFS_DIFFUSE_HORIZONTAL_WH=%.3f", r->stats.diffuse_wh);
-    gis_run_meta(r, "HFS_DIFFUSE_MODEL=isotropic sky (upper hemisphere) over the terrain's "
-                 "horizons; no ground-reflected part");
+    if (!a->sky_map)
+        gis_run_meta(r, "HFS_DIFFUSE_MODEL=isotropic sky (upper hemisphere) over the "
+                     "terrain's horizons; no ground-reflected part");
     gis_run_meta(r, "HFS_DIRECTIONS=%d", a->directions);
     return HFS_OK;
 }

@@ -275,6 +275,7 @@ int gis_tiles_plan(const gis_args *a, char *const *args, int n_args, const char 
         words[k] = args[k];
     snprintf(relief, sizeof relief, "%.17g", r->relief);
     words[n_args] = "--relief", words[n_args + 1] = relief;
+    gis_sky_map_free(&r->sky);
     gis_dem_free(&r->dem);
     free(r);
     return write_plan(&m, rc, words, n_args + (scanned ? 2 : 0), dir, err);

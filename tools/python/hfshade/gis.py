@@ -28,6 +28,7 @@ import numpy as np
 
 from ._errors import check, float32_array, integer, new_error, number
 from ._ffi import ffi, gis_lib
+from .envmap import env_map_array
 from .render import Renderer
 
 _SVF, _HORIZON, _OPENNESS, _SUN, _INSOLATION = 0, 1, 2, 3, 4
@@ -254,7 +255,7 @@ def sun(dem, cell_size, when, lat, lon, *, elevation=None, linke=3.0, radius=0.0
 
 def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16, radius=0.0,
                elevation=None, linke=3.0, zscale=1.0, nodata=None, backend="gles",
-               renderer=None):
+               renderer=None, sky_map=None, sky_north=0.0):
     """Clear-sky irradiation over [start, end), Wh/m^2, as `hfshade
     insolation --from START --to END`'s bands 1, 2, 3: returns
     (beam, diffuse, global_).
@@ -267,7 +268,13 @@ def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16
     `directions` azimuths (1..1024, default 16); global_: their sum.
     radius: metres, also the sky's horizons' search (0 or None: to the
     DEM's edge).  start, end, lat, lon, elevation, linke as sun()'s; other
-    arguments as svf()."""
+    arguments as svf().
+
+    sky_map: the sky's shape instead of an isotropic sky (`--sky-map`): an
+    (h, w, 3) linear RGB equirectangular map, row 0 the zenith, its upper
+    half finite, >= 0 and not all black; column u looks at compass azimuth
+    sky_north + 360 u degrees (`--sky-north`, default 0: north).  The clear
+    sky still gives the diffuse light's amount at each step."""
     d = _Dem(dem, cell_size, zscale, nodata)
     site = _site(lat, lon, elevation, linke)
     t0, t1 = _instant("start", start), _instant("end", end)
@@ -276,13 +283,19 @@ def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16
         raise ValueError(f"step: {step!r} is not a number of minutes above 0")
     n = integer("directions", directions, 1, 1024)
     rad = _radius(radius)
+    sky, north = ffi.NULL, number("sky_north", sky_north, -360.0, 360.0)
+    if sky_map is not None:
+        sky_map = env_map_array(sky_map, "sky_map")
+        sky = ffi.from_buffer("float[]", sky_map)
     out = [np.empty(d.shape, dtype=np.float32) for _ in range(3)]
 
     def go(r):
         err = new_error()
-        check(gis_lib().hfs_gis_insolation(r, d.c, site, t0, t1, minutes, n, rad,
-                                           *(ffi.from_buffer("float[]", o) for o in out), err),
-              err)
+        h, w = (sky_map.shape[0], sky_map.shape[1]) if sky_map is not None else (0, 0)
+        check(gis_lib().hfs_gis_insolation_sky(r, d.c, site, t0, t1, minutes, n, rad, sky, w,
+                                               h, north,
+                                               *(ffi.from_buffer("float[]", o) for o in out),
+                                               err), err)
     _run(renderer, backend, go)
     return tuple(d.masked(o, _INSOLATION) for o in out)
 
