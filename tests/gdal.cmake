@@ -38,7 +38,7 @@ if(TARGET hfshade_gdal)
   # insolation --sky-map: a uniform map is the isotropic sky, a sky bright
   # in the north lights north faces, the map's north, GLES against the
   # truth with the map, bad maps (test_gis_sky_cli.c).
-  hfs_gis_cli_test(test_gis_sky_cli)
+  hfs_gis_cli_test(test_gis_sky_cli hfs_solar)
   # Issue 40 item 1: tiles plan | run | merge, jobs by line, a killed job
   # rerun, merge refused while jobs are missing, the mosaic the streamed
   # run's bits; GNU parallel and --resume-failed byte for byte

@@ -1,9 +1,10 @@
 /*
- * test_gis_sky_cli.c — `hfshade insolation --sky-map` end to end (issue 39:
- * "the sky from ... a clear-sky model or a user's env map"; tools/gis/
- * gis_sky_map.h, gis_sun_command.c), on a 64x48 UTM DEM of a ridge running
- * east-west with hills on it, written here with GDAL, and sky maps written
- * here as PFM (top row the zenith):
+ * test_gis_sky_cli.c — `hfshade insolation --sky-map` and `--albedo` end to
+ * end (issue 39: "the sky from ... a clear-sky model or a user's env map",
+ * "like r.sun's mode 2"; tools/gis/gis_sky_map.h, gis_sun.c,
+ * gis_sun_command.c), on 64x48 UTM DEMs (a ridge running east-west with
+ * hills on it, an open 20-degree slope) written here with GDAL, and sky
+ * maps written here as PFM (top row the zenith):
  *   uniform  a map of one radiance: band 2 is the isotropic sky's (the run
  *            without --sky-map) at every texel, band 1 the same bits; the
  *            metadata names the map and its north;
@@ -15,8 +16,17 @@
  *   truth    GLES against the truth's exact horizons, both with the north
  *            sky in 32 azimuths: the share's mean and max difference
  *            within bounds (what remains is the horizons' fp16 search);
+ *   albedo   the ground-reflected part, band 3 - band 1 - band 2: on the
+ *            open slope albedo G (1 - cos 20) / 2 at every texel (r.sun's
+ *            refl_rad), G the clear sky's global horizontal irradiation
+ *            (HFS_GLOBAL_HORIZONTAL_WH, checked against the library's sun
+ *            and clear sky step by step); on the ridge albedo G (1 - S),
+ *            S the isotropic sky's share (band 2 of the run without a map
+ *            over its diffuse), with the map too; --albedo 0 the run
+ *            without it, bit for bit;
  *   bad      --sky-north without --sky-map, a missing map, a negative sky,
- *            a black sky, --sky-map on `sun`: one line, non-zero, no file.
+ *            a black sky, --sky-map on `sun`, an albedo out of [0, 1]: one
+ *            line, non-zero, no file.
  * Without a GL context (and HFS_REQUIRE_GL unset) the GLES parts are
  * skipped and the test exits 77 at the end.
  *
@@ -25,12 +35,17 @@
  * face 1.405, south face 0.635 times the isotropic share (means); the
  * turned map 0; gles - truth with the north sky, 32 azimuths: mean
  * 8.7e-9, max 1.9e-7 of the share (the ridge's horizons are smooth: the
- * hills of test_gis_sun.c pin the GLES horizons).  Bounds 1.2x.
+ * hills of test_gis_sun.c pin the GLES horizons); the reflected part
+ * within 0.00087 (slope, cpu), 0.0011 (ridge, gles, with and without the
+ * map) of albedo G (1 - S), G equal to the library's to the metadata's
+ * 3 decimals.  Bounds 1.2x.
  */
 #define _XOPEN_SOURCE 700 /* realpath */
 
+#include "clear_sky.h"
 #include "gdal_fixture.h"
 #include "gis_cli_util.h"
+#include "solar_position.h"
 
 #include <math.h>
 #include <unistd.h>
@@ -44,6 +59,9 @@
 #define UNIFORM_TOL 1e-6   /* relative: the same sums, up to rounding     */
 #define TRUTH_MEAN 1.05e-8 /* the share, gles - truth, north sky          */
 #define TRUTH_MAX 2.3e-7
+#define GLOBAL_TOL 1e-9    /* relative: HFS_GLOBAL_HORIZONTAL_WH, %.3f    */
+#define REFLECT_TOL 1.4e-3 /* Wh/m^2: the three Float32 bands' rounding at
+                            * some 9000 Wh/m^2 (half an ulp, 0.00049, each) */
 
 static const double utm_gt[6] = {500000.0 - CELL * W / 2, CELL, 0.0, 5200000.0 + CELL * H / 2,
                                  0.0, -CELL};
@@ -129,8 +147,7 @@ static void test_uniform(void)
     CHECK(worst <= UNIFORM_TOL && beam_same);
     CHECK(!strcmp(meta(&b, "HFS_SKY_MAP"), "uniform.pfm") &&
           atof(meta(&b, "HFS_SKY_NORTH")) == 0.0);
-    CHECK(strstr(meta(&b, "HFS_DIFFUSE_MODEL"), "sky map") != NULL &&
-          strstr(meta(&b, "HFS_DIFFUSE_MODEL"), "no ground reflection") != NULL);
+    CHECK(strstr(meta(&b, "HFS_DIFFUSE_MODEL"), "sky map") != NULL);
     free_raster(&a), free_raster(&b);
 }
 
@@ -181,6 +198,104 @@ static void test_truth(void)
     free_raster(&t), free_raster(&g);
 }
 
+/* ---- the ground's reflection ------------------------------------------- */
+
+static double meta_num(const raster *r, const char *key)
+{
+    const char *v = GDALGetMetadataItem(r->ds, key, NULL);
+    return v ? atof(v) : NAN;
+}
+
+static double jd_of(const char *iso)
+{
+    hfs_solar_time t;
+    char msg[200];
+    if (hfs_solar_parse_local(iso, NULL, &t, msg, sizeof msg)) {
+        fprintf(stderr, "%s: %s\n", iso, msg);
+        CHECK(!"a date-time of the run's metadata");
+        return 0.0;
+    }
+    return hfs_solar_julian_day(&t);
+}
+
+/* The clear sky's global horizontal irradiation over run r's period at
+ * its site, from the library's sun and clear sky step by step: (beam
+ * normal sin h0 + diffuse horizontal) hours, h0 the true elevation. */
+static double expected_global(const raster *r)
+{
+    const hfs_solar_site site = {.lat_deg = meta_num(r, "HFS_SITE_LAT"),
+                                 .lon_deg = meta_num(r, "HFS_SITE_LON"),
+                                 .elevation_m = meta_num(r, "HFS_SITE_ELEVATION_M")};
+    const double from = jd_of(meta(r, "HFS_FROM")), to = jd_of(meta(r, "HFS_TO"));
+    const double step = meta_num(r, "HFS_STEP_MIN") / 1440.0;
+    double g = 0.0;
+    for (double t0 = from; t0 < to - 1e-9; t0 += step) {
+        const double len = fmin(step, to - t0);
+        hfs_solar_angles a;
+        double beam = 0.0, diffuse = 0.0;
+        CHECK(hfs_solar_position_jd(t0 + 0.5 * len, &site, &a) == 0);
+        CHECK(hfs_clear_sky_g0(a.elevation_true_deg, site.elevation_m, meta_num(r, "HFS_LINKE"),
+                               HFS_SOLAR_CONSTANT_WM2 * a.distance_factor, &beam, &diffuse) == 0);
+        g += (beam * fmax(sin(a.elevation_true_deg * PI / 180.0), 0.0) + diffuse) * 24.0 * len;
+    }
+    return g;
+}
+
+/* The reflected part at texel p: band 3 - band 1 - band 2. */
+static double reflected(const raster *r, int p)
+{
+    return (double)r->v[2 * W * H + p] - r->v[p] - r->v[W * H + p];
+}
+
+/* Run `name` (with --albedo rho): its reflected part against rho G (1 -
+ * S(p)); S from iso (the isotropic run's band 2 over its diffuse) or,
+ * with iso NULL, the open plane's (1 + cos 20) / 2.  The worst |error|. */
+static double check_reflected(const char *name, double rho, const raster *iso)
+{
+    raster r;
+    if (read_raster(name, &r) != 0) {
+        CHECK(!"a raster of the albedo runs");
+        return HUGE_VAL;
+    }
+    const double g = meta_num(&r, "HFS_GLOBAL_HORIZONTAL_WH"), want_g = expected_global(&r);
+    CHECK(fabs(g - want_g) <= GLOBAL_TOL * want_g + 1e-3);
+    CHECK(meta_num(&r, "HFS_ALBEDO") == rho);
+    double worst = 0.0;
+    for (int p = 0; p < W * H; ++p) {
+        const double s = iso ? share(iso, p) : 0.5 * (1.0 + cos(20.0 * PI / 180.0));
+        worst = fmax(worst, fabs(reflected(&r, p) - rho * g * (1.0 - s)));
+    }
+    printf("%s: global horizontal %.3f Wh/m^2 (library %.3f), reflected within %.3g\n", name,
+           g, want_g, worst);
+    free_raster(&r);
+    return worst;
+}
+
+static void test_albedo(void)
+{
+    float z[W * H];
+    const double t = tan(20.0 * PI / 180.0);
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i < W; ++i) /* falls to the south-east */
+            z[j * W + i] = (float)(900.0 - t * CELL * (i + j) / sqrt(2.0));
+    CHECK(gdal_fixture_write("GTiff", tpath("slope.tif"), W, H, z, utm_gt, EPSG_UTM33, 0, 0.0,
+                             GDT_Float32) == 0);
+    REQUIRE(run("insolation slope.tif %s -o slope_a3.tif --backend cpu --albedo 0.3", day) == 0,
+            "the slope with an albedo");
+    CHECK(check_reflected("slope_a3.tif", 0.3, NULL) <= REFLECT_TOL);
+    if (insolation("iso.tif", "") || insolation("a0.tif", "--albedo 0") ||
+        insolation("a2.tif", "--albedo 0.2") ||
+        insolation("a2map.tif", "--albedo 0.2 --sky-map north.pfm"))
+        return;
+    raster iso, a0;
+    REQUIRE(read_raster("iso.tif", &iso) == 0 && read_raster("a0.tif", &a0) == 0, "iso, a0");
+    CHECK(!memcmp(iso.v, a0.v, sizeof(float) * 3 * W * H)); /* --albedo 0: the same bands */
+    free_raster(&a0);
+    CHECK(check_reflected("a2.tif", 0.2, &iso) <= REFLECT_TOL);
+    CHECK(check_reflected("a2map.tif", 0.2, &iso) <= REFLECT_TOL);
+    free_raster(&iso);
+}
+
 /* A bad command or input: non-zero, one line on stderr, x.tif not there. */
 static void bad(const char *args, const char *says)
 {
@@ -214,6 +329,10 @@ static void test_bad(void)
     snprintf(cmd, sizeof cmd, "%s %s --sky-map north.pfm --sky-north 400", base, day);
     bad(cmd, "--sky-north");
     bad("sun ridge.tif -o x.tif --datetime 2026-06-21T08:00Z --sky-map north.pfm", "--sky-map");
+    snprintf(cmd, sizeof cmd, "%s %s --albedo 1.5", base, day);
+    bad(cmd, "--albedo");
+    snprintf(cmd, sizeof cmd, "%s %s --albedo -0.1", base, day);
+    bad(cmd, "--albedo");
 }
 
 int main(int argc, char **argv)
@@ -233,6 +352,7 @@ int main(int argc, char **argv)
     test_uniform();
     test_north();
     test_truth();
+    test_albedo();
     test_bad();
     return gis_cli_end("test_gis_sky_cli");
 }

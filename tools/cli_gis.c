@@ -56,6 +56,8 @@ static const gis_opt opts[] = {
      "its upper half, luminance), scaled to the clear sky's diffuse; default: isotropic"},
     {"--sky-north", "DEG", INS, "the compass azimuth the map's left edge looks at (default 0: "
      "north; 90: east)"},
+    {"--albedo", "A", INS, "the ground's albedo, 0..1: band 3 adds the light the terrain and "
+     "the ground reflect onto the texel (r.sun's refl_rad; default 0: none)"},
     {"--lambertian", NULL, SVF, "the Lambertian-weighted variant, mean cos^2 (SAGA's)"},
     {"--azimuths", "A,B,...", HOR, "these azimuths, degrees (or --step)"},
     {"--step", "DEG", HOR, "every DEG degrees around the circle, in (0, 360]"},
@@ -215,6 +217,9 @@ static int set_sun_value(gis_args *a, const char *prog, const char *name, const 
         if (hfs_cli_real(v, 0.0, FLT_MAX, &a->relief))
             return hfs_usage_error(prog, "--relief: '%s' is not a height difference >= 0", v);
         a->relief_given = 1;
+    } else if (!strcmp(name, "--albedo")) {
+        if (hfs_cli_real(v, 0.0, 1.0, &a->albedo))
+            return hfs_usage_error(prog, "--albedo: '%s' is not an albedo in [0, 1]", v);
     } else if (!strcmp(name, "--sky-map")) {
         a->sky_map = v;
     } else if (!strcmp(name, "--sky-north")) {
@@ -242,7 +247,7 @@ static int set_value(gis_args *a, const char *prog, const char *name, const char
     long n;
     static const char *const sun_only[] = {"--datetime", "--from", "--to", "--timezone",
                                            "--linke", "--step", "--relief", "--sky-map",
-                                           "--sky-north"};
+                                           "--sky-north", "--albedo"};
     for (size_t k = 0; k < sizeof sun_only / sizeof sun_only[0]; ++k)
         if ((a->product == GIS_SUN || a->product == GIS_INSOLATION) && !strcmp(name, sun_only[k]))
             return set_sun_value(a, prog, name, v, st);

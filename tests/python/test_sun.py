@@ -181,13 +181,14 @@ class Sun(util.TempDir):
         out = self.path("ins_sky.tif")
         util.run_cli("insolation", self.dem, "-o", out, "--from", HOURS[0], "--to", HOURS[1],
                      "--step", 60, "--directions", 8, "--backend", "cpu", "--quiet",
-                     "--sky-map", pfm, "--sky-north", 30)
+                     "--sky-map", pfm, "--sky-north", 30, "--albedo", 0.25)
         bands = hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, step=60,
                                    directions=8, nodata=NODATA, backend="cpu", sky_map=sky,
-                                   sky_north=30)
+                                   sky_north=30, albedo=0.25)
         for k, b in enumerate(bands):
             meta = self.same(b, out, k + 1)
         self.assertEqual(meta["HFS_SKY_MAP"], "sky.pfm")
+        self.assertEqual(meta["HFS_ALBEDO"], "0.25")
         iso = hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, step=60,
                                  directions=8, nodata=NODATA, backend="cpu")
         self.assertEqual(iso[0].tobytes(), bands[0].tobytes())  # the beam is the sun's
@@ -195,6 +196,9 @@ class Sun(util.TempDir):
         with self.assertRaisesRegex(hfshade.Error, "sky: pixel .* negative"):
             hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, step=60,
                                backend="cpu", sky_map=-sky)
+        with self.assertRaisesRegex(ValueError, "^albedo: "):
+            hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, backend="cpu",
+                               albedo=1.5)
         with self.assertRaisesRegex(ValueError, "^sky_north: "):
             hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, backend="cpu",
                                sky_map=sky, sky_north=400)

@@ -359,7 +359,7 @@ int hfs_gis_insolation(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_si
                        float *global, hfs_error *err)
 {
     return hfs_gis_insolation_sky(r, dem, site, from_unix_utc, to_unix_utc, step_min, directions,
-                                  radius, NULL, 0, 0, 0.0, beam, diffuse, global, err);
+                                  radius, NULL, 0, 0, 0.0, 0.0, beam, diffuse, global, err);
 }
 
 /* The sky map of hfs_gis_insolation_sky over the directions' azimuths. */
@@ -380,8 +380,8 @@ static int sky_of(const float *rgb, int w, int h, double north, int directions,
 int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_site *site,
                            double from_unix_utc, double to_unix_utc, double step_min,
                            int directions, double radius, const float *sky_rgb, int sky_w,
-                           int sky_h, double sky_north, float *beam, float *diffuse,
-                           float *global, hfs_error *err)
+                           int sky_h, double sky_north, double albedo, float *beam,
+                           float *diffuse, float *global, hfs_error *err)
 {
     gis_dem d = {0};
     gis_compute c;
@@ -394,6 +394,8 @@ int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gi
         rc = period_of(from_unix_utc, to_unix_utc, step_min, &p, err);
     if (!rc)
         rc = check_directions(directions, err);
+    if (!rc && !(albedo >= 0.0 && albedo <= 1.0))
+        rc = hfs_fail(err, HFS_E_INVALID, "albedo: %g is not an albedo in [0, 1]", albedo);
     if (!rc && sky_rgb && !(rc = sky_of(sky_rgb, sky_w, sky_h, sky_north, directions, &sky, err)))
         p.sky = &sky;
     if (!rc)
@@ -401,6 +403,7 @@ int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gi
     if (!rc) {
         p.linke = linke_of(site);
         p.sky_directions = directions;
+        p.albedo = albedo;
         rc = gis_product_insolation(&c, &p, beam, diffuse, global, &st, err);
     }
     gis_sky_map_free(&sky);

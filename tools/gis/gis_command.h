@@ -69,6 +69,8 @@ typedef struct gis_args {
                                   * (gis_sky_map.h); NULL: isotropic       */
     double sky_north;            /* --sky-north: the map's left edge, compass
                                   * degrees                               */
+    double albedo;               /* insolation --albedo: the ground's, for the
+                                  * reflected part of band 3; 0: none      */
 } gis_args;
 
 struct gis_dem;

@@ -23,7 +23,7 @@
 #include <gdal.h>
 
 #define GIS_RASTER_MAX_BANDS 3
-#define GIS_RASTER_MAX_META 28
+#define GIS_RASTER_MAX_META 32
 
 typedef struct gis_band {
     const float *v;           /* width*height values, row 0 first (NULL for

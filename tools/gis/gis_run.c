@@ -44,10 +44,12 @@ gis_raster gis_run_product_raster(const gis_run *r, const float *v, size_t n)
     } else if (r->a->product == GIS_INSOLATION) {
         g.n_bands = 3;
         g.band[0] = (gis_band){v, "beam irradiation (clear sky)", "Wh/m^2"};
-        g.band[1] = (gis_band){v ? v + n : NULL, "sky-diffuse irradiation (clear sky, "
-                               "isotropic)", "Wh/m^2"};
-        g.band[2] = (gis_band){v ? v + 2 * n : NULL, "global irradiation (beam + sky-diffuse)",
-                               "Wh/m^2"};
+        g.band[1] = (gis_band){v ? v + n : NULL, r->a->sky_map
+                               ? "sky-diffuse irradiation (clear sky, the sky map's shape)"
+                               : "sky-diffuse irradiation (clear sky, isotropic)", "Wh/m^2"};
+        g.band[2] = (gis_band){v ? v + 2 * n : NULL, r->a->albedo > 0.0
+                               ? "global irradiation (beam + sky-diffuse + ground-reflected)"
+                               : "global irradiation (beam + sky-diffuse)", "Wh/m^2"};
     } else {
         g.n_bands = 2;
         g.band[0] = (gis_band){v, "positive openness (Yokoyama et al. 2002)", "degrees"};

@@ -237,13 +237,17 @@ int gis_period_scan(const gis_period *p, gis_period_stats *st)
         st->steps_sun += s.pos.elevation_true_deg > 0.0;
         st->beam_normal_wh += s.beam_normal * hours;
         st->diffuse_wh += s.diffuse_horizontal * hours;
+        st->global_wh += (s.beam_normal * fmax(sin(s.pos.elevation_true_deg * RAD), 0.0) +
+                          s.diffuse_horizontal) * hours;
     }
     return 0;
 }
 
 /* What the sky's horizons are summed into. */
 typedef struct sky_sums {
-    double *acc;
+    double *acc;           /* the sky's share: the map's, or isotropic     */
+    double *iso;           /* with a map, the isotropic share (the ground's
+                              part); NULL: not wanted                      */
     const float *normal;   /* 3 a texel                                   */
     const double *phi;     /* the grid's azimuths                         */
     const gis_sky_map *map; /* NULL: the isotropic sky                    */
@@ -258,22 +262,27 @@ static int add_sky(void *user, int k, const float *gamma, hfs_error *err)
         gis_sky_map_add(s->map, k, s->phi[k], s->acc, gamma, s->normal, s->n);
     else
         gis_sky_add(s->acc, gamma, s->normal, s->n, s->phi[k]);
+    if (s->iso)
+        gis_sky_add(s->iso, gamma, s->normal, s->n, s->phi[k]);
     return HFS_OK;
 }
 
 /* The sky's share on the tilted surface under the horizons of n_dirs
  * azimuths, on the square grid: the isotropic sky's (gis_sky_add) or, with
- * map, the map's (gis_sky_map_add). */
+ * map, the map's (gis_sky_map_add); ground (when not NULL): 1 - the
+ * isotropic share, the terrain's and the ground's part of the view. */
 static int sky_share(const gis_compute *c, int n_dirs, const gis_sky_map *map, float *sky,
-                     hfs_error *err)
+                     float *ground, hfs_error *err)
 {
     const hfs_field field = field_of(c);
     const size_t n = (size_t)field.width * (size_t)field.height;
     sky_sums s = {.acc = calloc(n, sizeof(double)), .n = n};
     float *normal = malloc(3 * n * sizeof *normal);
     double *phi = malloc((size_t)n_dirs * sizeof *phi);
-    if (!s.acc || !normal || !phi) {
-        free(s.acc), free(normal), free(phi);
+    if (map && ground)
+        s.iso = calloc(n, sizeof(double));
+    if (!s.acc || !normal || !phi || (map && ground && !s.iso)) {
+        free(s.acc), free(s.iso), free(normal), free(phi);
         return hfs_fail(err, HFS_E_NOMEM, "insolation: out of memory");
     }
     for (size_t p = 0; p < n; ++p) {
@@ -294,9 +303,18 @@ static int sky_share(const gis_compute *c, int n_dirs, const gis_sky_map *map, f
         gis_sky_map_finish(map, sky, s.acc, n);
     else if (!rc)
         gis_sky_finish(sky, s.acc, n, n_dirs);
+    if (!rc && ground) {
+        if (s.iso)
+            gis_sky_finish(ground, s.iso, n, n_dirs);
+        else
+            memcpy(ground, sky, n * sizeof *ground);
+        for (size_t i = 0; i < n; ++i)
+            ground[i] = 1.0f - ground[i];
+    }
     free(phi);
     free(normal);
     free(s.acc);
+    free(s.iso);
     return rc;
 }
 
@@ -329,13 +347,16 @@ int gis_product_insolation(const gis_compute *c, const gis_period *p, float *bea
 {
     const gis_dem *d = c->dem;
     const size_t n = (size_t)d->sw * (size_t)d->sh;
+    const int reflect = p->albedo > 0.0;
     double *acc = calloc(n, sizeof *acc);
     float *f = calloc(n, sizeof *f), *sky = calloc(n, sizeof *sky);
-    int rc = acc && f && sky ? HFS_OK : hfs_fail(err, HFS_E_NOMEM, "insolation: out of memory");
+    float *ground = reflect ? calloc(n, sizeof *ground) : NULL;
+    int rc = acc && f && sky && (ground || !reflect)
+                 ? HFS_OK : hfs_fail(err, HFS_E_NOMEM, "insolation: out of memory");
     if (!rc && gis_period_scan(p, st))
         rc = hfs_fail(err, HFS_E_INVALID, "insolation: the site or period is out of range");
     if (!rc && st->steps_sun > 0)
-        rc = sky_share(c, p->sky_directions, p->sky, sky, err);
+        rc = sky_share(c, p->sky_directions, p->sky, sky, ground, err);
     if (!rc)
         rc = beam_sum(c, p, acc, f, err);
     if (!rc) {
@@ -345,12 +366,17 @@ int gis_product_insolation(const gis_compute *c, const gis_period *p, float *bea
         }
         back(c, f, beam);
         back(c, sky, diffuse);
-        for (size_t q = 0; q < n; ++q)
-            f[q] = (float)(acc[q] + sky[q]);
+        for (size_t q = 0; q < n; ++q) {
+            double g = acc[q] + sky[q];
+            if (reflect)
+                g += p->albedo * st->global_wh * ground[q];
+            f[q] = (float)g;
+        }
         back(c, f, global);
     }
     free(acc);
     free(f);
     free(sky);
+    free(ground);
     return rc;
 }

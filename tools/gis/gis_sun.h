@@ -89,6 +89,8 @@ typedef struct gis_period {
     int sky_directions;         /* azimuths of the sky's horizons (>= 1)     */
     const gis_sky_map *sky;     /* the sky's shape (its sky_directions azimuths
                                  * of gis_product_directions); NULL: isotropic */
+    double albedo;              /* the ground's, [0, 1]: band 3 adds the
+                                 * ground-reflected part; 0: none            */
 } gis_period;
 
 /* The period [jd_from, jd_to) in steps of step_min minutes, as the
@@ -108,6 +110,10 @@ typedef struct gis_period_stats {
     long steps_sun;             /* steps whose sun has h0 > 0                  */
     double beam_normal_wh;      /* sum of beam_normal * hours, Wh/m^2          */
     double diffuse_wh;          /* sum of diffuse_horizontal * hours          */
+    double global_wh;           /* sum of (beam_normal sin h0 + diffuse_horizontal)
+                                 * hours: the clear sky's global horizontal
+                                 * irradiation, h0 the true elevation (as
+                                 * r.sun's beam on the horizontal)           */
 } gis_period_stats;
 
 /* Counts the steps with the sun above the horizon and sums the clear
@@ -120,7 +126,14 @@ int gis_period_scan(const gis_period *p, gis_period_stats *st);
  * step, the same renderer and field: only the key light moves), diffuse[]
  * = the diffuse horizontal irradiation times the sky's share (above),
  * global[] = beam + diffuse.  With p->sky the sky's share is the map's
- * (gis_sky_map.h), else the isotropic sky's. */
+ * (gis_sky_map.h), else the isotropic sky's.  With p->albedo > 0 global
+ * also holds the ground-reflected part, albedo * global_wh * (1 - S_iso):
+ * S_iso the isotropic sky's share, so 1 - S_iso is the part of the
+ * texel's cosine-weighted view that is ground or terrain, (1 - cos s) / 2
+ * on an open plane of slope s (r.sun's refl_rad; the terrain taken as lit
+ * as open flat ground: the terrain configuration factor of Dozier & Frew
+ * 1990, "Rapid calculation of terrain parameters for radiation modeling
+ * from digital elevation data", IEEE TGRS 28(5):963-969). */
 int gis_product_insolation(const gis_compute *c, const gis_period *p, float *beam,
                            float *diffuse, float *global, gis_period_stats *st, hfs_error *err);
 

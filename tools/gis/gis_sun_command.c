@@ -89,7 +89,7 @@ static int load_sky(gis_run *r, hfs_error *err)
     gis_run_meta(r, "HFS_SKY_MAP=%.100s", base ? base + 1 : a->sky_map);
     gis_run_meta(r, "HFS_SKY_NORTH=%.6g", a->sky_north);
     gis_run_meta(r, "HFS_DIFFUSE_MODEL=sky map (upper half, luminance, scaled to the clear "
-                 "sky) over the terrain's horizons; no ground reflection");
+                 "sky) over the terrain's horizons");
     return HFS_OK;
 }
 
@@ -98,7 +98,7 @@ static int describe_period(gis_run *r, hfs_error *err)
     const gis_args *a = r->a;
     r->period = (gis_period){.jd_from = a->jd_from, .jd_to = a->jd_to, .step_min = a->step_min,
                              .n_steps = a->n_steps, .site = r->site, .linke = a->linke,
-                             .sky_directions = a->directions};
+                             .sky_directions = a->directions, .albedo = a->albedo};
     if (a->sky_map) {
         const int rc = load_sky(r, err);
         if (rc)
@@ -119,8 +119,14 @@ static int describe_period(gis_run *r, hfs_error *err)
     gis_run_meta(r, "HFS_DIFFUSE_HORIZONTAL_WH=%.3f", r->stats.diffuse_wh);
     if (!a->sky_map)
         gis_run_meta(r, "HFS_DIFFUSE_MODEL=isotropic sky (upper hemisphere) over the "
-                     "terrain's horizons; no ground-reflected part");
+                     "terrain's horizons");
     gis_run_meta(r, "HFS_DIRECTIONS=%d", a->directions);
+    if (a->albedo > 0.0) {
+        gis_run_meta(r, "HFS_ALBEDO=%.6g", a->albedo);
+        gis_run_meta(r, "HFS_GLOBAL_HORIZONTAL_WH=%.3f", r->stats.global_wh);
+        gis_run_meta(r, "HFS_REFLECTED_MODEL=albedo x global horizontal x (1 - isotropic sky "
+                     "share): the view's ground and terrain, lit as open ground");
+    }
     return HFS_OK;
 }
 

@@ -152,20 +152,25 @@ HFS_GIS_API int hfs_gis_insolation(hfs_renderer *r, const hfs_gis_dem *dem,
                                    double radius, float *beam, float *diffuse, float *global,
                                    hfs_error *err);
 
-/* The same with the sky's shape from a map (`--sky-map FILE --sky-north
- * DEG`, docs/GIS.md "The sun"): diffuse is the diffuse horizontal
- * irradiation times the share of that sky the texel gets under its
- * horizons, 1 on open flat ground.  sky_rgb: sky_w x sky_h linear RGB
- * (top row the zenith, SPEC's equirectangular rows; what hfs_envmap_load
- * gives), its upper half finite and >= 0 and not all black; its column u
- * looks at compass azimuth sky_north + 360 u (degrees, [-360, 360]).
- * sky_rgb NULL: hfs_gis_insolation's isotropic sky. */
+/* The same with the sky's shape from a map and the ground's reflection
+ * (`--sky-map FILE --sky-north DEG --albedo A`, docs/GIS.md "The sun"):
+ * diffuse is the diffuse horizontal irradiation times the share of that
+ * sky the texel gets under its horizons, 1 on open flat ground.  sky_rgb:
+ * sky_w x sky_h linear RGB (top row the zenith, SPEC's equirectangular
+ * rows; what hfs_envmap_load gives), its upper half finite and >= 0 and
+ * not all black; its column u looks at compass azimuth sky_north + 360 u
+ * (degrees, [-360, 360]); NULL: the isotropic sky.  albedo in [0, 1]: the
+ * ground's, global then adds albedo times the clear sky's global
+ * horizontal irradiation times the part of the texel's view that is
+ * ground or terrain (1 - the isotropic sky's share); 0: none, as
+ * hfs_gis_insolation. */
 HFS_GIS_API int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem,
                                        const hfs_gis_site *site, double from_unix_utc,
                                        double to_unix_utc, double step_min, int directions,
                                        double radius, const float *sky_rgb, int sky_w,
-                                       int sky_h, double sky_north, float *beam,
-                                       float *diffuse, float *global, hfs_error *err);
+                                       int sky_h, double sky_north, double albedo,
+                                       float *beam, float *diffuse, float *global,
+                                       hfs_error *err);
 
 #ifdef __cplusplus
 }

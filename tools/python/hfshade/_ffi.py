@@ -236,8 +236,8 @@ int hfs_gis_insolation(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_si
 int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_site *site,
                            double from_unix_utc, double to_unix_utc, double step_min,
                            int directions, double radius, const float *sky_rgb, int sky_w,
-                           int sky_h, double sky_north, float *beam, float *diffuse,
-                           float *global, hfs_error *err);
+                           int sky_h, double sky_north, double albedo, float *beam,
+                           float *diffuse, float *global, hfs_error *err);
 """
 
 #: Every struct the cdef declares, with its fields (the layout test walks

@@ -255,7 +255,7 @@ def sun(dem, cell_size, when, lat, lon, *, elevation=None, linke=3.0, radius=0.0
 
 def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16, radius=0.0,
                elevation=None, linke=3.0, zscale=1.0, nodata=None, backend="gles",
-               renderer=None, sky_map=None, sky_north=0.0):
+               renderer=None, sky_map=None, sky_north=0.0, albedo=0.0):
     """Clear-sky irradiation over [start, end), Wh/m^2, as `hfshade
     insolation --from START --to END`'s bands 1, 2, 3: returns
     (beam, diffuse, global_).
@@ -274,7 +274,9 @@ def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16
     (h, w, 3) linear RGB equirectangular map, row 0 the zenith, its upper
     half finite, >= 0 and not all black; column u looks at compass azimuth
     sky_north + 360 u degrees (`--sky-north`, default 0: north).  The clear
-    sky still gives the diffuse light's amount at each step."""
+    sky still gives the diffuse light's amount at each step.  albedo: the
+    ground's, 0..1 (`--albedo`); global_ then adds the light the ground and
+    the terrain reflect onto the texel (r.sun's refl_rad; 0: none)."""
     d = _Dem(dem, cell_size, zscale, nodata)
     site = _site(lat, lon, elevation, linke)
     t0, t1 = _instant("start", start), _instant("end", end)
@@ -284,6 +286,7 @@ def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16
     n = integer("directions", directions, 1, 1024)
     rad = _radius(radius)
     sky, north = ffi.NULL, number("sky_north", sky_north, -360.0, 360.0)
+    rho = number("albedo", albedo, 0.0, 1.0)
     if sky_map is not None:
         sky_map = env_map_array(sky_map, "sky_map")
         sky = ffi.from_buffer("float[]", sky_map)
@@ -293,7 +296,7 @@ def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16
         err = new_error()
         h, w = (sky_map.shape[0], sky_map.shape[1]) if sky_map is not None else (0, 0)
         check(gis_lib().hfs_gis_insolation_sky(r, d.c, site, t0, t1, minutes, n, rad, sky, w,
-                                               h, north,
+                                               h, north, rho,
                                                *(ffi.from_buffer("float[]", o) for o in out),
                                                err), err)
     _run(renderer, backend, go)
