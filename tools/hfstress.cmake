@@ -18,6 +18,9 @@ add_test(NAME stress_fast_gles COMMAND hfstress --fast --backend gles)
 add_test(NAME stress_fast_slice COMMAND hfstress --fast --visibility slice --backend cpu,gles)
 set_tests_properties(stress_fast_cpu stress_fast_gles stress_fast_slice PROPERTIES
                      LABELS stress TIMEOUT 600 SKIP_RETURN_CODE 77)
+# the longest tests start first (tests/CMakeLists.txt "COST")
+set_tests_properties(stress_fast_gles PROPERTIES COST 33)
+set_tests_properties(stress_fast_slice PROPERTIES COST 31)
 if(HFS_SANITIZE)
   # Mesa/LLVM allocations LSan reports at exit (tests/lsan.supp, as tests/gles.cmake).
   set_property(TEST stress_fast_gles stress_fast_slice APPEND PROPERTY ENVIRONMENT
