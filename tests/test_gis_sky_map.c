@@ -111,27 +111,30 @@ static void test_sky(float *rgb, int w, int h)
         }
 }
 
+/* The brute force's sub-pixels a map pixel: sub_az in azimuth, sub_el in
+ * elevation (`test_gis_sky_map fine`: 4x each, to see its own error). */
+static int sub_az = 8, sub_el = 64;
+
 /* The brute force: E over the map's pixels above the horizontal, each cut
- * into sa x se sub-pixels; sub-pixel direction phi (SPEC, the grid's = the
- * map's) falls in the sector of the nearest of the K directions, open when
- * above that sector's horizon. */
+ * into sub_az x sub_el sub-pixels; a sub-pixel's direction phi (SPEC, the
+ * grid's = the map's) falls in the sector of the nearest of the K
+ * directions, open when above that sector's horizon. */
 static double brute_e(const float *rgb, int w, int h, double north_deg, int K, const double *phi,
                       const float n[3], const float *gamma)
 {
-    enum { SA = 8, SE = 64 };
     double e_sum = 0.0;
     for (int r = 0; r < (h + 1) / 2; ++r)
         for (int i = 0; i < w; ++i) {
             const float *p = rgb + 3 * ((size_t)r * (size_t)w + (size_t)i);
             const double lum = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
-            for (int a = 0; a < SA; ++a) {
-                const double compass = north_deg + 360.0 * (i + (a + 0.5) / SA) / w;
+            for (int a = 0; a < sub_az; ++a) {
+                const double compass = north_deg + 360.0 * (i + (a + 0.5) / sub_az) / w;
                 const double ph = (compass - 90.0) * PI / 180.0;
                 const double sector = 2.0 * PI / K;
                 int k = (int)floor(remainder(ph - phi[0], 2.0 * PI) / sector + 0.5);
                 k = ((k % K) + K) % K;
-                for (int b = 0; b < SE; ++b) {
-                    const double e = 0.5 * PI - PI * (r + (b + 0.5) / SE) / h;
+                for (int b = 0; b < sub_el; ++b) {
+                    const double e = 0.5 * PI - PI * (r + (b + 0.5) / sub_el) / h;
                     if (e <= 0.0 || e <= (double)gamma[k])
                         continue;
                     const double d = n[0] * cos(ph) * cos(e) + n[1] * sin(ph) * cos(e) +
@@ -173,9 +176,11 @@ static void test_oracle(void)
     }
     /* measured 2.30e-4 worst, 6.41e-5 mean, mostly the brute force's own
      * midpoint rule where a horizon or the tangent plane cuts a pixel: at
-     * 32 x 256 sub-pixels it is 5.0e-5 / 2.4e-5, what remains being the
-     * sector's one azimuth for n.w across its width (3.75 degrees) */
-    printf("the map's sky against the brute force: worst %.2e, mean %.2e\n", worst, mean);
+     * 32 x 256 sub-pixels (`test_gis_sky_map fine`) it is 5.0e-5 / 2.4e-5,
+     * what remains being the sector's one azimuth for n.w across its width
+     * (3.75 degrees) */
+    printf("the map's sky against the brute force (%d x %d sub-pixels): worst %.2e, mean "
+           "%.2e\n", sub_az, sub_el, worst, mean);
     CHECK(worst < 2.8e-4 && mean < 7.7e-5, "the map's sky against the brute force: worst %.2e, "
           "mean %.2e", worst, mean);
     gis_sky_map_free(&m);
@@ -254,8 +259,10 @@ static void test_refused(void)
           strstr(err.msg, "negative"), "a negative pixel: %s", err.msg);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    if (argc > 1 && !strcmp(argv[1], "fine"))
+        sub_az *= 4, sub_el *= 4;
     test_uniform();
     test_oracle();
     test_north();

@@ -22,8 +22,9 @@ static double part_b(double e)
     return 0.5 * (0.5 * PI - e) - 0.25 * sin(2.0 * e);
 }
 
-/* The integral of row y over x in [0, x) columns, the row periodic
- * (prefix[i]: columns 0 .. i - 1; prefix[w]: the whole row). */
+/* The integral of a row's luminance lum over the columns [0, x), x >= 0
+ * in columns, the row repeating around the circle (prefix[i]: the sum of
+ * columns 0 .. i - 1; prefix[w]: the whole row). */
 static double row_integral(const double *prefix, const double *lum, int w, double x)
 {
     const double turns = floor(x / w);
@@ -49,9 +50,10 @@ static int alloc(gis_sky_map *m, hfs_error *err, const char *name)
     m->sb = malloc(nd * (nb + 1) * sizeof *m->sb);
     if (m->edge && m->lum && m->sa && m->sb)
         return HFS_OK;
+    const int dirs = m->n_dirs, bands = m->n_bands;
     gis_sky_map_free(m);
     return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory for the sky's %d x %d table", name,
-                    m->n_dirs, m->n_bands);
+                    dirs, bands);
 }
 
 /* Band j's luminance in every azimuth's sector: the row's mean over the
@@ -92,11 +94,12 @@ int gis_sky_map_make(const float *rgb, int w, int h, double north_deg, const dou
     int rc = alloc(&m, err, name);
     if (rc)
         return rc;
-    double *prefix = malloc(2 * ((size_t)w + 1) * sizeof *prefix), *lum = prefix + w + 1;
+    double *prefix = malloc(2 * ((size_t)w + 1) * sizeof *prefix);
     if (!prefix) {
         gis_sky_map_free(&m);
         return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", name);
     }
+    double *lum = prefix + w + 1; /* a row's luminance, beside its sums */
     /* band j: row n_bands - 1 - j, from max(0, its lower edge) to its upper */
     for (int j = 0; j < m.n_bands; ++j)
         m.edge[j] = fmax(0.0, 0.5 * PI - PI * (band_row(&m, j) + 1) / h);
@@ -123,10 +126,11 @@ int gis_sky_map_make(const float *rgb, int w, int h, double north_deg, const dou
         }
         m.open += sa[0];
     }
-    if (!(m.open > 0.0) || !isfinite(m.open)) {
+    /* finite: floats summed in doubles, each band's weight at most 1/2 */
+    if (!(m.open > 0.0)) {
         gis_sky_map_free(&m);
-        return hfs_fail(err, HFS_E_INVALID, "%s: the sky (the map's upper half) is %s", name,
-                        m.open > 0.0 ? "too bright (not finite)" : "black: it sends no light");
+        return hfs_fail(err, HFS_E_INVALID, "%s: the sky (the map's upper half) is black: it "
+                        "sends no light", name);
     }
     *out = m;
     return HFS_OK;
