@@ -65,8 +65,8 @@ if [ "$DEM" = jacksboro ]; then
         x = -84.25 - 0.5 * w * d; y = 36.25 + 0.5 * h * d; printf "%.10f %.10f %.10f %.10f\n", x, y, x + w * d, y - h * d}')
     gdal_translate -q -ot Int16 -a_srs EPSG:4326 -a_ullr "$ULX" "$ULY" "$LRX" "$LRY" -a_nodata -32768 \
         "$OLDPWD/data/jacksboro.png" geo.tif
-    gdal_translate -q -ot Float32 -a_srs EPSG:32616 -a_ullr 733000 4029000 766449 4000448 \
-        -a_nodata -32768 "$OLDPWD/data/jacksboro.png" utm.tif
+    . "$OLDPWD/tools/bench_gdal.sh"
+    bench_jacksboro_utm "$OLDPWD" utm.tif
     echo "## Outputs on the input's grid (the geographic 3 arc-second DEM)"
     "$H" svf geo.tif --quiet -o geo_svf.tif
     for f in geo.tif geo_svf.tif; do

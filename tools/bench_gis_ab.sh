@@ -13,8 +13,8 @@ B=$(cd "${2:?usage: bench_gis_ab.sh BUILD_A BUILD_B [ROUNDS]}" && pwd)
 ROUNDS=${3:-3}
 C=$(mktemp -d)
 trap 'rm -rf "$C"' EXIT
-gdal_translate -q -ot Float32 -a_srs EPSG:32616 -a_ullr 733000 4029000 766449 4000448 \
-    -a_nodata -32768 data/jacksboro.png "$C/utm.tif"
+. tools/bench_gdal.sh
+bench_jacksboro_utm "$(pwd)" "$C/utm.tif"
 DAY="--from 2026-06-21T00:00 --to 2026-06-22T00:00 --timezone -05:00 --step 30 --linke 3"
 now() { date +%s.%N; }
 # run NAME BUILD ARGS...: appends the wall seconds of one run to NAME.t

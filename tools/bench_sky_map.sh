@@ -18,16 +18,11 @@ B=${1:-build}
 ROUNDS=${2:-3}
 H="$(pwd)/$B/tools/hfshade"
 PY=/usr/bin/python3
-need=()
-command -v gdal_translate >/dev/null || need+=(gdal-bin)
-$PY -c "from osgeo import gdal; import numpy" 2>/dev/null || need+=(python3-gdal python3-numpy)
-if [ ${#need[@]} -gt 0 ]; then
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${need[@]}" >&2
-fi
+. tools/bench_gdal.sh
+bench_gdal_need
 C=$(mktemp -d)
 trap 'rm -rf "$C"' EXIT
-gdal_translate -q -ot Float32 -a_srs EPSG:32616 -a_ullr 733000 4029000 766449 4000448 \
-    -a_nodata -32768 data/jacksboro.png "$C/utm.tif"
+bench_jacksboro_utm "$(pwd)" "$C/utm.tif"
 cd "$C"
 $PY - <<'PY'
 import numpy as np

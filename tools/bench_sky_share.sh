@@ -21,16 +21,11 @@ ROUNDS=${3:-3}
 H="$(pwd)/$B/tools/hfshade"
 O=${OLD:+$(cd "$OLD" && pwd)/tools/hfshade}
 PY=/usr/bin/python3
-need=()
-command -v gdal_translate >/dev/null || need+=(gdal-bin)
-$PY -c "from osgeo import gdal; import numpy" 2>/dev/null || need+=(python3-gdal python3-numpy)
-if [ ${#need[@]} -gt 0 ]; then
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${need[@]}" >&2
-fi
+. tools/bench_gdal.sh
+bench_gdal_need
 C=$(mktemp -d)
 trap 'rm -rf "$C"' EXIT
-gdal_translate -q -ot Float32 -a_srs EPSG:32616 -a_ullr 733000 4029000 766449 4000448 \
-    -a_nodata -32768 data/jacksboro.png "$C/utm.tif"
+bench_jacksboro_utm "$(pwd)" "$C/utm.tif"
 cd "$C"
 NOON="--from 2026-06-21T12:00-05:00 --to 2026-06-21T12:30-05:00 --step 30"
 DAY="--from 2026-06-21T05:00-05:00 --to 2026-06-21T21:00-05:00 --step 30"

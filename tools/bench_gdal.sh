@@ -1,0 +1,30 @@
+# bench_gdal.sh — what the GIS benches share; sourced (bash), not run.
+#   bench_gdal_need [PKG...]  installs gdal-bin, python3-gdal, python3-numpy
+#                             and the packages named when any is missing
+#                             (apt-get: the benches install their own tools,
+#                             the README's set-up does not)
+#   bench_jacksboro_utm REPO OUT.tif
+#                             data/jacksboro.png as a Float32 GeoTIFF in UTM
+#                             16N with 83 m cells (its 3 arc-second grid
+#                             taken as square: the DEM the GIS benchmarks
+#                             compare on), nodata -32768
+
+bench_gdal_need() {
+    local need=() p
+    command -v gdal_translate >/dev/null || need+=(gdal-bin)
+    /usr/bin/python3 -c "from osgeo import gdal; import numpy" 2>/dev/null ||
+        need+=(python3-gdal python3-numpy)
+    for p in "$@"; do
+        dpkg -s "$p" >/dev/null 2>&1 || need+=("$p")
+    done
+    if [ ${#need[@]} -gt 0 ]; then
+        echo "installing: ${need[*]}" >&2
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends \
+            "${need[@]}" >&2
+    fi
+}
+
+bench_jacksboro_utm() {
+    gdal_translate -q -ot Float32 -a_srs EPSG:32616 -a_ullr 733000 4029000 766449 4000448 \
+        -a_nodata -32768 "$1/data/jacksboro.png" "$2"
+}
