@@ -282,6 +282,35 @@ static void test_render(void)
            "the render mosaic of jobs run in another order differs");
     EXPECT(run("tiles plan dem.tif --product render --tile 64 -o X " RENDER_ARGS
                " --local 600,600,300,20,1") == 1 && said("no halo short of the whole field"));
+    /* a file-valued key is made absolute in the manifest, as the DEM is,
+     * so that a job finds it from any folder */
+    FILE *f = fopen(tpath("sky.pfm"), "wb");
+    if (f) {
+        const float grey[2 * 4 * 3] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1,
+                                       1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+        fprintf(f, "PF\n4 2\n-1.0\n");
+        fwrite(grey, sizeof grey, 1, f);
+        fclose(f);
+    }
+    char sky[PATH_MAX], want[PATH_MAX + 16];
+    EXPECT(f && realpath(tpath("sky.pfm"), sky));
+    snprintf(want, sizeof want, "arg = %s\n", sky);
+    EXPECT(run("tiles plan dem.tif --product render --tile 64 -o RM --backend cpu --dx 60 "
+               "--zscale 0.25 --env-map sky.pfm --key 40,3,0.5,5000") == 0);
+    size_t n = 0;
+    unsigned char *manifest = read_all(tpath("RM/manifest"), &n);
+    if (manifest)
+        manifest[n] = '\0';
+    EXPECT(manifest && strstr((const char *)manifest, want), "the manifest has no '%s'", sky);
+    free(manifest);
+    EXPECT(run("tiles plan dem.tif --product insolation --tile 64 -o IM --backend cpu "
+               "--from 2026-06-21T10:00Z --to 2026-06-21T11:00Z --radius 200 "
+               "--sky-map sky.pfm") == 0);
+    manifest = read_all(tpath("IM/manifest"), &n);
+    if (manifest)
+        manifest[n] = '\0';
+    EXPECT(manifest && strstr((const char *)manifest, want), "insolation: no '%s'", sky);
+    free(manifest);
     EXPECT(run("tiles plan dem.tif --product render --tile 256 -o X " RENDER_ARGS) == 1 &&
            said("fits one tile"));
     EXPECT(access(tpath("X"), F_OK) != 0, "a refused plan left its directory");

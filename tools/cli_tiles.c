@@ -3,6 +3,8 @@
  * command lines of tools/gis/gis_tiles.h.  A job is the streamed product
  * command itself (`--job K`), run through hfs_cli_gis as if typed.
  */
+#define _XOPEN_SOURCE 700 /* realpath */
+
 #include "cli_tiles.h"
 
 #include "cli_usage.h"
@@ -14,6 +16,9 @@
 #ifdef HFS_HAVE_GDAL
 #include "cli_gis.h"
 #include "gis_tiles.h"
+#include "scene_keys.h"
+
+#include <limits.h>
 
 #define MAX_WORDS (GIS_TILES_MAX_ARGS + 16)
 
@@ -34,6 +39,22 @@ static void usage(FILE *f)
             "  merge  writes the mosaic: DIR/mosaic.vrt and OUT.tif (horizon: PREFIX_AAA.tif an\n"
             "         azimuth); refused while a job's files are missing.\n"
             "e.g. parallel --joblog DIR/log hfshade tiles run DIR/manifest {} :::: DIR/jobs\n");
+}
+
+/* The value of each file-valued scene key (--env-map, --albedo-map,
+ * --objects, ...; HFS_FORM_PATH) in args made absolute, as the plan makes
+ * the DEM's, so that a job finds it from any folder: into abs (n_args
+ * paths), args[k] pointed there.  A file realpath cannot resolve is left
+ * as given, for the render's own check to name. */
+static void absolute_paths(char **args, int n_args, char (*abs)[PATH_MAX])
+{
+    for (int k = 1; k < n_args; ++k) {
+        const char *flag = args[k - 1];
+        const int id = flag[0] == '-' && flag[1] == '-' ? hfs_scene_key_find(flag + 2) : -1;
+        const hfs_scene_key *key = id >= 0 ? hfs_scene_key_get((hfs_scene_key_id)id) : NULL;
+        if (key && key->form == HFS_FORM_PATH && realpath(args[k], abs[k]))
+            args[k] = abs[k];
+    }
 }
 
 /* tiles plan DEM --product render --tile N -o DIR [scene options]: the
@@ -57,11 +78,19 @@ static int plan_render(const char *tile, char **rest, int n_rest, const char *di
     }
     if (!dem)
         return hfs_usage_error("hfshade tiles plan", "no DEM given");
+    char (*abs)[PATH_MAX] = calloc((size_t)n_args + 1, PATH_MAX);
+    if (!abs) {
+        fprintf(stderr, "hfshade tiles plan: out of memory\n");
+        return 1;
+    }
+    absolute_paths(args, n_args, abs);
     words[m++] = "hfshade", words[m++] = "render", words[m++] = "--height";
     words[m++] = (char *)dem;
     for (int k = 0; k < n_args; ++k)
         words[m++] = args[k];
-    return hfs_cli_render_plan(m, words, (int)n, args, n_args, dir);
+    const int rc = hfs_cli_render_plan(m, words, (int)n, args, n_args, dir);
+    free(abs);
+    return rc;
 }
 
 /* tiles plan DEM --product P --tile N -o DIR [options] */
