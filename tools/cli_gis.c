@@ -437,13 +437,26 @@ int hfs_cli_is_gis(const char *name)
            !strcmp(name, "sun") || !strcmp(name, "insolation");
 }
 
-int hfs_cli_gis_args(int argc, char **argv, gis_args *a, double *azimuth)
+/* The product of command name (svf when none matches: the callers check). */
+static gis_product product_of(const char *name)
 {
     static const char *const names[GIS_N_PRODUCTS] = {"svf", "horizon", "openness", "sun",
                                                       "insolation"};
     gis_product p = GIS_SVF;
-    while (p + 1 < GIS_N_PRODUCTS && strcmp(argv[0], names[p]))
+    while (p + 1 < GIS_N_PRODUCTS && strcmp(name, names[p]))
         p = (gis_product)(p + 1);
+    return p;
+}
+
+int hfs_cli_gis_file_option(const char *command, const char *flag)
+{
+    const gis_opt *o = find(flag, product_of(command));
+    return o && o->arg && !strcmp(o->arg, "FILE");
+}
+
+int hfs_cli_gis_args(int argc, char **argv, gis_args *a, double *azimuth)
+{
+    const gis_product p = product_of(argv[0]);
     *a = (gis_args){.product = p, .backend = HFS_BACKEND_GLES, .zscale = 1.0,
                     .linke = HFS_LINKE_DEFAULT, .step_min = 15.0, .tile = GIS_TILE_DEFAULT,
                     .azimuth = azimuth};

@@ -12,6 +12,10 @@
 /* 1 if name is one of the GIS commands. */
 int hfs_cli_is_gis(const char *name);
 
+/* 1 if option flag of GIS command `command` takes a file (its value a
+ * path, as --sky-map's): `hfshade tiles plan` makes those absolute. */
+int hfs_cli_gis_file_option(const char *command, const char *flag);
+
 /* argv[0] = the command ("svf", "horizon", "openness", "sun", "insolation").  Returns the
  * process exit status: 0, 1 (an error: one line on stderr naming the input
  * and the problem, nothing written) or 2 (a bad command line: one line). */

@@ -41,20 +41,27 @@ static void usage(FILE *f)
             "e.g. parallel --joblog DIR/log hfshade tiles run DIR/manifest {} :::: DIR/jobs\n");
 }
 
-/* The value of each file-valued scene key (--env-map, --albedo-map,
- * --objects, ...; HFS_FORM_PATH) in args made absolute, as the plan makes
- * the DEM's, so that a job finds it from any folder: into abs (n_args
- * paths), args[k] pointed there.  A file realpath cannot resolve is left
- * as given, for the render's own check to name. */
-static void absolute_paths(char **args, int n_args, char (*abs)[PATH_MAX])
+/* 1 if flag of product takes a file: a render's scene keys of form PATH
+ * (--env-map, --albedo-map, --objects, ...), a GIS command's FILE options
+ * (--sky-map). */
+static int file_option(const char *product, const char *flag)
 {
-    for (int k = 1; k < n_args; ++k) {
-        const char *flag = args[k - 1];
-        const int id = flag[0] == '-' && flag[1] == '-' ? hfs_scene_key_find(flag + 2) : -1;
-        const hfs_scene_key *key = id >= 0 ? hfs_scene_key_get((hfs_scene_key_id)id) : NULL;
-        if (key && key->form == HFS_FORM_PATH && realpath(args[k], abs[k]))
-            args[k] = abs[k];
-    }
+    if (strcmp(product, "render"))
+        return hfs_cli_gis_file_option(product, flag);
+    const int id = flag[0] == '-' && flag[1] == '-' ? hfs_scene_key_find(flag + 2) : -1;
+    const hfs_scene_key *key = id >= 0 ? hfs_scene_key_get((hfs_scene_key_id)id) : NULL;
+    return key && key->form == HFS_FORM_PATH;
+}
+
+/* The value of each file option in rest made absolute, as the plan makes
+ * the DEM's, so that a job finds it from any folder: into abs (n paths),
+ * rest[k] pointed there.  A file realpath cannot resolve is left as given,
+ * for the product's own check to name. */
+static void absolute_paths(const char *product, char **rest, int n, char (*abs)[PATH_MAX])
+{
+    for (int k = 1; k < n; ++k)
+        if (file_option(product, rest[k - 1]) && realpath(rest[k], abs[k]))
+            rest[k] = abs[k];
 }
 
 /* tiles plan DEM --product render --tile N -o DIR [scene options]: the
@@ -78,19 +85,11 @@ static int plan_render(const char *tile, char **rest, int n_rest, const char *di
     }
     if (!dem)
         return hfs_usage_error("hfshade tiles plan", "no DEM given");
-    char (*abs)[PATH_MAX] = calloc((size_t)n_args + 1, PATH_MAX);
-    if (!abs) {
-        fprintf(stderr, "hfshade tiles plan: out of memory\n");
-        return 1;
-    }
-    absolute_paths(args, n_args, abs);
     words[m++] = "hfshade", words[m++] = "render", words[m++] = "--height";
     words[m++] = (char *)dem;
     for (int k = 0; k < n_args; ++k)
         words[m++] = args[k];
-    const int rc = hfs_cli_render_plan(m, words, (int)n, args, n_args, dir);
-    free(abs);
-    return rc;
+    return hfs_cli_render_plan(m, words, (int)n, args, n_args, dir);
 }
 
 /* tiles plan DEM --product P --tile N -o DIR [options] */
@@ -118,6 +117,8 @@ static int plan(int argc, char **argv)
     if (!hfs_cli_is_gis(product) && strcmp(product, "render"))
         return hfs_usage_error("hfshade tiles plan", "--product: '%s' is not render, svf, "
                                "horizon, openness, sun or insolation", product);
+    static char abs[MAX_WORDS][PATH_MAX];
+    absolute_paths(product, rest, n_rest, abs);
     if (!strcmp(product, "render"))
         return plan_render(tile, rest, n_rest, dir);
     /* the product's own parser checks every option: PRODUCT REST --tile N -o DIR/tiles/0 */

@@ -269,15 +269,10 @@ int gis_tiles_plan(const gis_args *a, char *const *args, int n_args, const char 
     /* sun, insolation: the relief the plan read, given to every job, so
      * that no job reads the whole DEM again to find it (the same double:
      * %.17g round-trips) */
-    char relief[40], *words[GIS_TILES_MAX_ARGS + 2], sky[PATH_MAX];
+    char relief[40], *words[GIS_TILES_MAX_ARGS + 2];
     const int scanned = r->c.has_relief && !a->relief_given;
     for (int k = 0; k < n_args && k < GIS_TILES_MAX_ARGS; ++k)
         words[k] = args[k];
-    /* the sky map as the DEM: absolute, so a job finds it from any folder
-     * (the map was read, and so exists, when the run opened) */
-    for (int k = 1; !rc && k < n_args && k < GIS_TILES_MAX_ARGS; ++k)
-        if (!strcmp(args[k - 1], "--sky-map") && realpath(args[k], sky))
-            words[k] = sky;
     snprintf(relief, sizeof relief, "%.17g", r->relief);
     words[n_args] = "--relief", words[n_args + 1] = relief;
     gis_sky_map_free(&r->sky);
