@@ -372,9 +372,7 @@ static int sky_of(const float *rgb, int w, int h, double north, int directions,
     if (!(north >= -360.0 && north <= 360.0))
         return hfs_fail(err, HFS_E_INVALID, "sky_north: %g is not an angle in [-360, 360] "
                         "degrees", north);
-    double phi[HFS_MAX_HORIZON_AZIMUTHS];
-    gis_product_directions(phi, directions);
-    return gis_sky_map_make(rgb, w, h, north, phi, directions, "sky", out, err);
+    return gis_sky_map_make(rgb, w, h, north, directions, "sky", out, err);
 }
 
 int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_site *site,

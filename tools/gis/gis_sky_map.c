@@ -3,6 +3,8 @@
  */
 #include "gis_sky_map.h"
 
+#include "gis_products.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -86,11 +88,16 @@ static int band_sectors(gis_sky_map *m, const float *rgb, int w, int j, double n
     return 0;
 }
 
-int gis_sky_map_make(const float *rgb, int w, int h, double north_deg, const double *phi_map,
-                     int n_dirs, const char *name, gis_sky_map *out, hfs_error *err)
+int gis_sky_map_make(const float *rgb, int w, int h, double north_deg, int n_dirs,
+                     const char *name, gis_sky_map *out, hfs_error *err)
 {
     gis_sky_map m = {.n_dirs = n_dirs, .n_bands = (h + 1) / 2};
     memset(out, 0, sizeof *out);
+    double phi_map[HFS_MAX_HORIZON_AZIMUTHS];
+    if (!(n_dirs >= 1 && n_dirs <= HFS_MAX_HORIZON_AZIMUTHS))
+        return hfs_fail(err, HFS_E_INVALID, "%s: %d azimuths (1..%d)", name, n_dirs,
+                        HFS_MAX_HORIZON_AZIMUTHS);
+    gis_product_directions(phi_map, n_dirs);
     int rc = alloc(&m, err, name);
     if (rc)
         return rc;

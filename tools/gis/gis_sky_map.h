@@ -49,18 +49,19 @@ typedef struct gis_sky_map {
     double open;         /* sum over k of sa[k][0]: open flat ground's E       */
 } gis_sky_map;
 
-/* The map (w x h RGB, top row first; finite, >= 0) for the n_dirs azimuths
- * of phi_map[] (SPEC phi on a north-up map, radians: compass = phi + 90
- * degrees), the map's left edge at compass north_deg.  0, or an error
+/* The map (w x h RGB, top row first; finite, >= 0) for the n_dirs
+ * azimuths the sky's horizons are searched in, gis_product_directions's
+ * (1..HFS_MAX_HORIZON_AZIMUTHS; SPEC phi on a north-up map: compass = phi
+ * + 90 degrees), the map's left edge at compass north_deg.  0, or an error
  * naming `name` (negative radiance, a black upper half, out of memory). */
-int gis_sky_map_make(const float *rgb, int w, int h, double north_deg, const double *phi_map,
-                     int n_dirs, const char *name, gis_sky_map *out, hfs_error *err);
+int gis_sky_map_make(const float *rgb, int w, int h, double north_deg, int n_dirs,
+                     const char *name, gis_sky_map *out, hfs_error *err);
 void gis_sky_map_free(gis_sky_map *m);
 
 /* acc[p] += azimuth k's part of E at texel p: its horizon gamma[p] (the
  * grid's, radians; gis_horizon_none: no terrain), unit normal
  * n[3p..3p+2] on the grid, phi the azimuth in the grid's axes
- * (gis_grid_phi of phi_map[k]). */
+ * (gis_grid_phi of gis_product_directions's k-th). */
 void gis_sky_map_add(const gis_sky_map *m, int k, double phi, double *acc, const float *gamma,
                      const float *n, size_t count);
 

@@ -74,13 +74,11 @@ static int load_sky(gis_run *r, hfs_error *err)
 {
     const gis_args *a = r->a;
     hfs_envmap m = {0};
-    double phi[HFS_MAX_HORIZON_AZIMUTHS];
     int rc = hfs_envmap_load(a->sky_map, &m, err);
     if (rc)
         return rc;
-    gis_product_directions(phi, a->directions);
-    rc = gis_sky_map_make(m.rgb, m.width, m.height, a->sky_north, phi, a->directions,
-                          a->sky_map, &r->sky, err);
+    rc = gis_sky_map_make(m.rgb, m.width, m.height, a->sky_north, a->directions, a->sky_map,
+                          &r->sky, err);
     hfs_envmap_free(&m);
     if (rc)
         return rc;
