@@ -13,6 +13,7 @@
 #include "test_util.h"
 
 #include <gdal.h>
+#include <math.h>
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -142,6 +143,13 @@ static const char *meta(const raster *r, const char *key)
 {
     const char *v = GDALGetMetadataItem(r->ds, key, NULL);
     return v ? v : "";
+}
+
+/* The same as a number (NaN when absent). */
+static inline double meta_num(const raster *r, const char *key)
+{
+    const char *v = GDALGetMetadataItem(r->ds, key, NULL);
+    return v ? atof(v) : NAN;
 }
 
 #endif /* HFS_TEST_GIS_CLI_UTIL_H */

@@ -45,15 +45,12 @@
 #include "clear_sky.h"
 #include "gdal_fixture.h"
 #include "gis_cli_util.h"
+#include "gis_utm_grid.h"
 #include "solar_position.h"
 
 #include <math.h>
 #include <unistd.h>
 
-#define W 64
-#define H 48
-#define CELL 30.0
-#define EPSG_UTM33 32633
 #define PI 3.14159265358979323846
 
 #define UNIFORM_TOL 1e-6   /* relative: the same sums, up to rounding     */
@@ -63,8 +60,6 @@
 #define REFLECT_TOL 1.4e-3 /* Wh/m^2: the three Float32 bands' rounding at
                             * some 9000 Wh/m^2 (half an ulp, 0.00049, each) */
 
-static const double utm_gt[6] = {500000.0 - CELL * W / 2, CELL, 0.0, 5200000.0 + CELL * H / 2,
-                                 0.0, -CELL};
 static const char *day = "--from 2026-06-21T04:00+02:00 --to 2026-06-21T22:00+02:00 --step 60";
 
 /* The ridge: its crest along row 24 (east-west), faces of about 25
@@ -199,12 +194,6 @@ static void test_truth(void)
 }
 
 /* ---- the ground's reflection ------------------------------------------- */
-
-static double meta_num(const raster *r, const char *key)
-{
-    const char *v = GDALGetMetadataItem(r->ds, key, NULL);
-    return v ? atof(v) : NAN;
-}
 
 static double jd_of(const char *iso)
 {

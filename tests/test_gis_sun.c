@@ -57,6 +57,7 @@
 #include "clear_sky.h"
 #include "gdal_fixture.h"
 #include "gis_cli_util.h"
+#include "gis_utm_grid.h"
 #include "solar_position.h"
 
 #include <gdal.h>
@@ -64,10 +65,6 @@
 
 #include <math.h>
 
-#define W 64
-#define H 48
-#define CELL 30.0
-#define EPSG_UTM33 32633
 #define PI 3.14159265358979323846
 #define RAD (PI / 180.0)
 #define LINKE 3.0
@@ -85,9 +82,6 @@
 
 /* ---- files in ------------------------------------------------------------ */
 
-/* The UTM grid centred on (500000, 5200000): longitude 15, latitude ~47. */
-static const double utm_gt[6] = {500000.0 - CELL * W / 2, CELL, 0.0, 5200000.0 + CELL * H / 2,
-                                 0.0, -CELL};
 
 static void write_dem(const char *name, const float *z, const double gt[6], int epsg)
 {
@@ -126,12 +120,6 @@ static int holds(const char *name, const char *needle)
 static int read_sized(const char *name, raster *r)
 {
     return read_raster(name, r) == 0 && r->w == W && r->h == H ? 0 : -1;
-}
-
-static double meta_num(const raster *r, const char *key)
-{
-    const char *v = GDALGetMetadataItem(r->ds, key, NULL);
-    return v ? atof(v) : NAN;
 }
 
 /* ---- the expected sun ---------------------------------------------------- */
