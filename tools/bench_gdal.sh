@@ -3,6 +3,10 @@
 #                             and the packages named when any is missing
 #                             (apt-get: the benches install their own tools,
 #                             the README's set-up does not)
+#   bench_jacksboro_workdir REPO
+#                             a new temporary folder, removed on exit, as
+#                             the current one and $C, holding utm.tif
+#                             (bench_jacksboro_utm)
 #   bench_jacksboro_utm REPO OUT.tif
 #                             data/jacksboro.png as a Float32 GeoTIFF in UTM
 #                             16N with 83 m cells (its 3 arc-second grid
@@ -22,6 +26,13 @@ bench_gdal_need() {
         DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends \
             "${need[@]}" >&2
     fi
+}
+
+bench_jacksboro_workdir() {
+    C=$(mktemp -d)
+    trap 'rm -rf "$C"' EXIT
+    bench_jacksboro_utm "$1" "$C/utm.tif"
+    cd "$C"
 }
 
 bench_jacksboro_utm() {

@@ -20,10 +20,7 @@ H="$(pwd)/$B/tools/hfshade"
 PY=/usr/bin/python3
 . tools/bench_gdal.sh
 bench_gdal_need
-C=$(mktemp -d)
-trap 'rm -rf "$C"' EXIT
-bench_jacksboro_utm "$(pwd)" "$C/utm.tif"
-cd "$C"
+bench_jacksboro_workdir "$(pwd)"
 $PY - <<'PY'
 import numpy as np
 h, w = 32, 64

@@ -23,10 +23,7 @@ O=${OLD:+$(cd "$OLD" && pwd)/tools/hfshade}
 PY=/usr/bin/python3
 . tools/bench_gdal.sh
 bench_gdal_need
-C=$(mktemp -d)
-trap 'rm -rf "$C"' EXIT
-bench_jacksboro_utm "$(pwd)" "$C/utm.tif"
-cd "$C"
+bench_jacksboro_workdir "$(pwd)"
 NOON="--from 2026-06-21T12:00-05:00 --to 2026-06-21T12:30-05:00 --step 30"
 DAY="--from 2026-06-21T05:00-05:00 --to 2026-06-21T21:00-05:00 --step 30"
 "$H" insolation utm.tif $NOON -o truth128.tif --backend truth --directions 128 --quiet
