@@ -10,3 +10,7 @@ hfs_add_test(test_gis_math SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_math.c
 # brute-force sum over the map's pixels, the map's north, bad maps.
 hfs_add_test(test_gis_sky_map SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_sky_map.c
              LIBS hfs_gis_core m LABEL unit TIMEOUT 60)
+# the horizons' sweep (--method sweep): exact along the axes, against the
+# CPU backend's exact horizons on oblique azimuths, turns, threads.
+hfs_add_test(test_gis_sweep SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_sweep.c
+             LIBS hfs_gis_core m LABEL unit TIMEOUT 60)

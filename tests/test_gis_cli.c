@@ -20,6 +20,10 @@
  *   orientation  the same ground written south-up or west-running: the
  *            same horizons, on the file's own grid (rows or columns
  *            reversed), looking the same way on the ground;
+ *   sweep    --method sweep: the sky-view factor and a horizon on the
+ *            input's grid, against the truth's within the bounds below,
+ *            metadata HFS_HORIZON_METHOD; refused with a radius, with the
+ *            truth, for openness without --radius 0;
  *   --cog    a Cloud Optimized GeoTIFF (GDAL says LAYOUT=COG);
  *   --help   exit 0, "Usage:" on stdout; bad inputs: non-zero, one line on
  *            stderr, no output file.
@@ -50,6 +54,13 @@
  * with the grid lines' crossings alone it was 8.4e-6 and 1.8e-4, docs/GIS.md). */
 #define SVF_MEAN_BOUND 6.9e-7
 #define SVF_MAX_BOUND 1.3e-6
+/* --method sweep against the truth: measured svf mean 1.69e-4, max
+ * 1.44e-3, the horizon at 30 degrees mean 0.0325, max 0.678 degrees; the
+ * bounds 1.2x those */
+#define SWEEP_SVF_MEAN 2.03e-4
+#define SWEEP_SVF_MAX 1.73e-3
+#define SWEEP_HOR_MEAN 0.039
+#define SWEEP_HOR_MAX 0.814
 
 /* ---- files in ------------------------------------------------------------ */
 
@@ -164,6 +175,23 @@ static void test_products(const raster *in, const float *z)
     CHECK(access(tpath("hor_360_0.tif"), F_OK) != 0 && lines_of("err.txt") == 1);
 }
 
+/* |g - t| over the truth's texels with data within mean_bound (mean)
+ * and max_bound; the measured error printed. */
+static void check_error(const char *what, const raster *g, const raster *t, double mean_bound,
+                        double max_bound)
+{
+    double sum = 0.0, max = 0.0;
+    int n = 0;
+    for (int p = 0; p < W * H; ++p)
+        if (t->v[p] != (float)ND) {
+            const double e = fabs((double)g->v[p] - t->v[p]);
+            sum += e, max = fmax(max, e), ++n;
+        }
+    printf("%s vs truth: mean %.3g, max %.3g over %d texels (bounds %.3g, %.3g)\n", what,
+           sum / n, max, n, mean_bound, max_bound);
+    CHECK(sum / n <= mean_bound && max <= max_bound);
+}
+
 /* gles against truth on the geographic DEM; the measured error printed. */
 static void test_gles_truth(const raster *in, const float *z)
 {
@@ -176,18 +204,34 @@ static void test_gles_truth(const raster *in, const float *z)
     raster g, t;
     REQUIRE(read_raster("svf_gles.tif", &g) == 0 && read_raster("svf_truth.tif", &t) == 0,
             "svf rasters");
-    double sum = 0.0, max = 0.0;
-    int n = 0;
-    for (int p = 0; p < W * H; ++p)
-        if (t.v[p] != (float)ND) {
-            const double e = fabs((double)g.v[p] - t.v[p]);
-            sum += e, max = fmax(max, e), ++n;
-        }
-    printf("svf gles vs truth: mean %.3g, max %.3g over %d texels (bounds %.3g, %.3g)\n",
-           sum / n, max, n, SVF_MEAN_BOUND, SVF_MAX_BOUND);
-    CHECK(sum / n <= SVF_MEAN_BOUND && max <= SVF_MAX_BOUND);
+    check_error("svf gles", &g, &t, SVF_MEAN_BOUND, SVF_MAX_BOUND);
     CHECK(!strcmp(meta(&g, "HFS_BACKEND"), "gles"));
     free_raster(&g), free_raster(&t);
+}
+
+/* --method sweep (gis_sweep.h): on the input's grid, its metadata saying
+ * so, the sky-view factor and a horizon against the truth's within the
+ * bounds above (no renderer: no GL needed). */
+static void test_sweep(const raster *in, const float *z)
+{
+    REQUIRE(run("svf geo.tif -o svf_truth.tif --backend truth") == 0 &&
+                run("svf geo.tif -o svf_sweep.tif --method sweep") == 0 &&
+                run("horizon geo.tif -o hsw_tru --azimuths 30 --backend truth") == 0 &&
+                run("horizon geo.tif -o hsw --azimuths 30 --method sweep") == 0,
+            "svf, horizon --method sweep failed");
+    check_grid("svf_sweep.tif", in, z, ND, 0.0, 1.0);
+    check_grid("hsw_030.tif", in, z, ND, 0.0, 90.0);
+    const char *pairs[2][2] = {{"svf_sweep.tif", "svf_truth.tif"}, {"hsw_030.tif", "hsw_tru_030.tif"}};
+    const double bound[2][2] = {{SWEEP_SVF_MEAN, SWEEP_SVF_MAX}, {SWEEP_HOR_MEAN, SWEEP_HOR_MAX}};
+    for (int k = 0; k < 2; ++k) {
+        raster g, t;
+        REQUIRE(read_raster(pairs[k][0], &g) == 0 && read_raster(pairs[k][1], &t) == 0,
+                "sweep rasters");
+        check_error(pairs[k][0], &g, &t, bound[k][0], bound[k][1]);
+        CHECK(!strcmp(meta(&g, "HFS_HORIZON_METHOD"), "sweep") &&
+              !strcmp(meta(&t, "HFS_HORIZON_METHOD"), "exact"));
+        free_raster(&g), free_raster(&t);
+    }
 }
 
 /* A flat DEM: sky-view factor exactly 1, openness 90 / 90; NaN holes and
@@ -307,6 +351,10 @@ static void test_bad_inputs(void)
     bad("x_000.tif", "horizon geo.tif -o x --step 0");
     bad("x_000.tif", "horizon geo.tif -o x --step 90 --azimuths 10");
     bad("x_000.tif", "horizon geo.tif -o nodir/x --azimuths 0 --backend cpu");
+    bad("x.tif", "svf geo.tif -o x.tif --method fast");
+    bad("x.tif", "svf geo.tif -o x.tif --method sweep --radius 500");
+    bad("x.tif", "svf geo.tif -o x.tif --method sweep --backend truth");
+    bad("x.tif", "openness geo.tif -o x.tif --method sweep");
 }
 
 int main(int argc, char **argv)
@@ -324,6 +372,7 @@ int main(int argc, char **argv)
         test_products(&in, z);
         test_render_grid(&in, z);
         test_gles_truth(&in, z);
+        test_sweep(&in, z);
         test_flat();
         test_conventions();
         test_orientation(z);

@@ -87,8 +87,11 @@ if [ "$RADIUS" != 0 ]; then
     HR=(--radius "$RADIUS") RH="maxdistance=$RADIUS" SR=$RADIUS
 fi
 echo "## search radius: ${RADIUS} m (0: the whole DEM)"
+# --method sweep searches the whole DEM only: with a radius its rows are n/a
+SW=(--method sweep)
+[ "$RADIUS" = 0 ] || SW=(--method sweep --radius "$RADIUS")
 
-mkdir -p tru gles cpu rh
+mkdir -p tru gles cpu sweep rh
 "$H" horizon utm.tif --step 22.5 "${HR[@]}" --backend truth --quiet -o tru/hor
 "$H" horizon utm.tif --convention compass --step 22.5 "${HR[@]}" --backend truth --quiet -o tru/cmp
 "$H" svf utm.tif "${HR[@]}" --backend truth --quiet -o tru_svf.tif
@@ -128,12 +131,16 @@ for r in $(seq "$ROUNDS"); do
     time_of hf_horizon_gles "$H" horizon utm.tif --step 22.5 "${HR[@]}" --quiet -o gles/hor
     time_of hf_horizon_cpu "$H" horizon utm.tif --step 22.5 "${HR[@]}" --backend cpu --quiet \
         -o cpu/hor
+    time_of hf_horizon_sweep "$H" horizon utm.tif --step 22.5 "${SW[@]}" --quiet -o sweep/hor
     time_of r_horizon grass gdb/jb/PERMANENT --exec bash rhor.sh
     time_of hf_svf_gles "$H" svf utm.tif "${HR[@]}" --quiet -o gles_svf.tif
+    time_of hf_svf_sweep "$H" svf utm.tif "${SW[@]}" --quiet -o sweep_svf.tif
     time_of saga_svf saga_cmd -f=s ta_lighting 3 -DEM utm.tif -VISIBLE saga_vis.sdat \
         -SVF saga_svf.sdat -RADIUS "$SR" -NDIRS 16 -METHOD 0
     # shellcheck disable=SC2086
     time_of hf_ins_gles "$H" insolation utm.tif $DAY --quiet -o gles_ins.tif
+    # shellcheck disable=SC2086
+    time_of hf_ins_sweep "$H" insolation utm.tif $DAY --method sweep --quiet -o sweep_ins.tif
     time_of r_sun grass gdb/jb/PERMANENT --exec bash rsun.sh
 done
 cat >rout.sh <<'EOF'
@@ -145,14 +152,17 @@ EOF
 grass gdb/jb/PERMANENT --exec bash rout.sh >/dev/null 2>&1
 median() { sort -n "$1.t" | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
 
-$PY - "$(median hf_horizon_gles)" "$(median hf_horizon_cpu)" "$(median r_horizon)" \
-    "$(median hf_svf_gles)" "$(median saga_svf)" "$(median hf_ins_gles)" "$(median r_sun)" <<'EOF'
+$PY - "$(median hf_horizon_gles)" "$(median hf_horizon_cpu)" "$(median hf_horizon_sweep)" \
+    "$(median r_horizon)" "$(median hf_svf_gles)" "$(median hf_svf_sweep)" "$(median saga_svf)" \
+    "$(median hf_ins_gles)" "$(median hf_ins_sweep)" "$(median r_sun)" <<'EOF'
 import glob, os, sys
 import numpy as np
 from osgeo import gdal
 gdal.UseExceptions()
-t_hg, t_hc, t_rh, t_sg, t_sa, t_ig, t_rs = (float(v) for v in sys.argv[1:8])
+t_hg, t_hc, t_hs, t_rh, t_sg, t_ss, t_sa, t_ig, t_is, t_rs = (float(v) for v in sys.argv[1:11])
 def rd(p):
+    if not os.path.exists(p):  # a run that refused (the sweep with a radius): n/a
+        return rd(p.replace("sweep", "tru", 1)) * np.nan
     ds = gdal.Open(p)
     a = ds.GetRasterBand(1).ReadAsArray().astype(np.float64)
     ds = None
@@ -164,6 +174,7 @@ def stats(d):
 rows = []
 for name, sub, clamp in (("hfshade horizon (gles)", "gles", False),
                          ("hfshade horizon (cpu)", "cpu", False),
+                         ("hfshade horizon --method sweep", "sweep", False),
                          ("GRASS r.horizon", "rh", True)):
     e = []
     for f in sorted(glob.glob("tru/hor_*.tif")):
@@ -175,6 +186,7 @@ for name, sub, clamp in (("hfshade horizon (gles)", "gles", False),
     rows.append((name, "horizon angle, deg", np.concatenate(e)))
 tz = rd("tru_svf.tif")
 rows.append(("hfshade svf (gles)", "sky-view factor (Zaksek)", inner(np.abs(rd("gles_svf.tif") - tz)).ravel()))
+rows.append(("hfshade svf --method sweep", "sky-view factor (Zaksek)", inner(np.abs(rd("sweep_svf.tif") - tz)).ravel()))
 g = [np.radians(rd(f)) for f in sorted(glob.glob("tru/cmp_*.tif"))]
 tv = np.mean([(np.pi / 2 - x) / (np.pi / 2) for x in g], axis=0)
 sv = rd("saga_vis.sdat") / 100.0
@@ -188,13 +200,17 @@ else:  # no truth on this DEM: NaN errors (n/a)
           "r.sun's %.0f on average)" % (rd("gles_ins.tif").mean(), np.nanmean(rd("rsun_beam.tif"))))
 rows.append(("hfshade insolation (gles)", "beam irradiation of a day, Wh/m^2",
              inner(np.abs(rd("gles_ins.tif") - tb)).ravel()))
+rows.append(("hfshade insolation --method sweep", "beam irradiation of a day, Wh/m^2",
+             inner(np.abs(rd("sweep_ins.tif") - tb)).ravel()))
 rows.append(("GRASS r.sun (mode 2)", "beam irradiation of a day, Wh/m^2",
              inner(np.abs(rd("rsun_beam.tif") - tb)).ravel()))
-times = [t_hg, t_hc, t_rh, t_sg, t_sa, t_ig, t_rs]
+times = [t_hg, t_hc, t_hs, t_rh, t_sg, t_ss, t_sa, t_ig, t_is, t_rs]
 print("| tool | quantity | time (s, median) | mean error | p99 | max |")
 print("|---|---|---|---|---|---|")
 for (name, what, d), t in zip(rows, times):
     print("| %s | %s | %.2f | %s |" % (name, what, t, stats(d)))
 print("\nspeed: r.horizon / hfshade horizon (gles) %.2fx; SAGA / hfshade svf (gles) %.2fx; "
       "r.sun / hfshade insolation (gles) %.2fx" % (t_rh / t_hg, t_sa / t_sg, t_rs / t_ig))
+print("with --method sweep: r.horizon / horizon %.2fx; SAGA / svf %.2fx; r.sun / insolation "
+      "%.2fx" % (t_rh / t_hs, t_sa / t_ss, t_rs / t_is))
 EOF

@@ -76,6 +76,9 @@ static const gis_opt opts[] = {
      "with --tile: only window K (from 1, row by row) of a DEM that streams, written as a "
      "GeoTIFF of its own extent (what `hfshade tiles run` does for one job)"},
     {"--backend", "gles|cpu|truth", ALL, "GLES renderer (default), CPU reference, ground truth"},
+    {"--method", "exact|sweep", ALL, "the horizons: exact, the bilinear surface's supremum on "
+     "--backend (default); sweep, on the host, the whole DEM, convex hulls along lines "
+     "a texel apart (faster, a few hundredths of a degree off; docs/GIS.md)"},
     {"--zscale", "F", ALL, "heights times F are metres (default 1)"},
     {"--nodata", "V", ALL, "V marks holes (instead of the band's nodata value)"},
     {"--cog", NULL, ALL, "a Cloud Optimized GeoTIFF (GDAL's COG driver)"},
@@ -289,6 +292,10 @@ static int set_value(gis_args *a, const char *prog, const char *name, const char
         if (hfs_cli_long(v, 1, 1L << 30, &n))
             return hfs_usage_error(prog, "--job: '%s' is not a window number (1, 2, ...)", v);
         a->job = (int)n;
+    } else if (!strcmp(name, "--method")) {
+        if (strcmp(v, "exact") && strcmp(v, "sweep"))
+            return hfs_usage_error(prog, "--method: '%s' is not exact or sweep", v);
+        a->sweep = !strcmp(v, "sweep");
     } else if (!strcmp(name, "--backend")) {
         static const char *const names[] = {"gles", "cpu", "truth"};
         static const hfs_backend b[] = {HFS_BACKEND_GLES, HFS_BACKEND_CPU, HFS_BACKEND_TRUTH};
@@ -374,6 +381,13 @@ static int check_args(gis_args *a, const char *prog, const pending *st)
         a->backend == HFS_BACKEND_TRUTH)
         return hfs_usage_error(prog, "--radius: not with --backend truth (the truth renders the "
                                "sun's exact shadows from the whole DEM)");
+    if (a->sweep && a->backend == HFS_BACKEND_TRUTH)
+        return hfs_usage_error(prog, "--method sweep: not with --backend truth (the truth is "
+                               "exact)");
+    if (a->sweep && (a->radius_given ? a->radius > 0.0 : a->product == GIS_OPENNESS))
+        return hfs_usage_error(prog, "--method sweep: the sweep searches the whole DEM; give "
+                               "--radius 0%s", a->product == GIS_OPENNESS && !a->radius_given
+                               ? " (openness searches 10 cells unless told)" : "");
     if (st->sky_north && !a->sky_map)
         return hfs_usage_error(prog, "--sky-north: only with --sky-map");
     if (a->product == GIS_SUN || a->product == GIS_INSOLATION)

@@ -75,8 +75,10 @@ static int describe(gis_run *r, hfs_error *err)
     static const double hi[] = {1.0, 90.0, 180.0}; /* each product's largest value */
     r->c.dem = d;
     r->c.zscale = a->zscale;
+    r->c.sweep = a->sweep;
     gis_run_meta(r, "HFS_PRODUCT=%s", product_name[a->product]);
     gis_run_meta(r, "HFS_BACKEND=%s", backend_name[a->backend]);
+    gis_run_meta(r, "HFS_HORIZON_METHOD=%s", a->sweep ? "sweep" : "exact");
     gis_run_meta(r, "HFS_ZSCALE=%.9g", a->zscale);
     gis_run_meta(r, "HFS_CELL_M=%.9g", d->d);
     gis_run_meta(r, "HFS_SOFTWARE=hfshade %s", hfs_version());
@@ -181,7 +183,10 @@ static void summary(const gis_run *r, double seconds)
             a->product == GIS_HORIZON ? r->prefix : a->out,
             a->product == GIS_HORIZON ? "_*.tif" : "", product_name[a->product], d->width,
             d->height, grid, windows, what, d->holes, d->holes == 1 ? "" : "s",
-            r->c.r ? hfs_renderer_backend_name(r->c.r) : backend_name[a->backend], seconds);
+            a->sweep ? "none (horizons by the sweep)"
+            : r->c.r ? hfs_renderer_backend_name(r->c.r)
+                     : backend_name[a->backend],
+            seconds);
 }
 
 /* sun, insolation: 1 when the DEM may stream (gis_sun_choose's first
@@ -258,7 +263,7 @@ int gis_command_run(const gis_args *a, hfs_error *err)
     int rc = plan_outputs(&r, err);
     if (!rc)
         rc = gis_run_open(&r, 1, err);
-    if (!rc && !r.no_render) {
+    if (!rc && !r.no_render && !a->sweep) { /* the sweep needs no renderer */
         const hfs_renderer_desc desc = {.backend = a->backend};
         rc = hfs_renderer_create(&desc, &r.c.r, err);
     }

@@ -50,6 +50,7 @@ typedef struct gis_args {
                                  * of the streamed windows, as a raster of its
                                  * own extent (hfshade tiles run); 0: all     */
     hfs_backend backend;
+    int sweep;                  /* --method sweep: horizons by gis_sweep.h     */
     double zscale;
     hfs_height_load_opts load;  /* --nodata                                   */
     int cog, quiet;

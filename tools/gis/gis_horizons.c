@@ -3,9 +3,30 @@
  */
 #include "gis_horizons.h"
 
+#include "gis_sweep.h"
+
 #include <stdlib.h>
 
-int gis_horizons_each(hfs_renderer *r, const hfs_field *field, const hfs_quality *q,
+int gis_horizons_get(hfs_renderer *r, int sweep, const hfs_field *field, const hfs_quality *q,
+                     const hfs_horizon_desc *desc, float *out, hfs_error *err)
+{
+    if (!sweep)
+        return hfs_renderer_horizons(r, field, q, desc, out, err);
+    if (desc->radius != 0.0)
+        return hfs_fail(err, HFS_E_INVALID, "horizons: the sweep searches the whole field "
+                        "(radius %g asked)", desc->radius);
+    const int rc = gis_sweep_horizons(field, desc->azimuth, desc->n_azimuths,
+                                      q ? q->threads : 0, out, err);
+    const size_t n = (size_t)desc->n_azimuths * (size_t)field->width * (size_t)field->height;
+    for (size_t p = 0; p < n && !rc && desc->window; ++p) /* as the renderer's window */
+        out[p] = out[p] == HFS_HORIZON_NONE ? (float)desc->lo
+                 : out[p] < desc->lo        ? (float)desc->lo
+                 : out[p] > desc->hi        ? (float)desc->hi
+                                            : out[p];
+    return rc;
+}
+
+int gis_horizons_each(hfs_renderer *r, int sweep, const hfs_field *field, const hfs_quality *q,
                       const double *phi, int n, double radius, gis_horizon_fn fn, void *user,
                       hfs_error *err)
 {
@@ -22,7 +43,7 @@ int gis_horizons_each(hfs_renderer *r, const hfs_field *field, const hfs_quality
     for (int k0 = 0; k0 < n && !rc; k0 += (int)batch) {
         const int m = n - k0 < (int)batch ? n - k0 : (int)batch;
         const hfs_horizon_desc desc = {.n_azimuths = m, .azimuth = phi + k0, .radius = radius};
-        rc = hfs_renderer_horizons(r, field, q, &desc, out, err);
+        rc = gis_horizons_get(r, sweep, field, q, &desc, out, err);
         for (int a = 0; a < m && !rc; ++a)
             rc = fn(user, k0 + a, out + (size_t)a * texels, err);
     }

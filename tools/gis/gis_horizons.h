@@ -5,7 +5,9 @@
  * (each call's block is at most GIS_HORIZON_BATCH_FLOATS floats, and at
  * least one azimuth).  Each azimuth's angles go to a callback as they come,
  * in the order given: the products sum them (sky-view factor, openness)
- * or write them (one raster per azimuth).  No GDAL.
+ * or write them (one raster per azimuth).  With `sweep` the angles come
+ * from gis_sweep.h's sweep on the host instead of the renderer (the whole
+ * field: radius 0 only).  No GDAL.
  */
 #ifndef HFS_GIS_HORIZONS_H
 #define HFS_GIS_HORIZONS_H
@@ -19,10 +21,17 @@
  * with err filled (the run stops). */
 typedef int (*gis_horizon_fn)(void *user, int k, const float *gamma, hfs_error *err);
 
+/* hfs_renderer_horizons(r, field, q, desc, out), or with sweep != 0 the
+ * sweep's angles (desc->radius must be 0; a window clamps them as the
+ * renderer's do, the renderer unused: r may be NULL). */
+int gis_horizons_get(hfs_renderer *r, int sweep, const hfs_field *field, const hfs_quality *q,
+                     const hfs_horizon_desc *desc, float *out, hfs_error *err);
+
 /* Calls fn for each of the n azimuths phi[k] (the grid's phi, radians)
  * searched up to radius world units (0: the whole field) over field, on
- * renderer r with quality q (NULL: defaults).  0, or the first error. */
-int gis_horizons_each(hfs_renderer *r, const hfs_field *field, const hfs_quality *q,
+ * renderer r with quality q (NULL: defaults), or by the sweep
+ * (gis_horizons_get).  0, or the first error. */
+int gis_horizons_each(hfs_renderer *r, int sweep, const hfs_field *field, const hfs_quality *q,
                       const double *phi, int n, double radius, gis_horizon_fn fn, void *user,
                       hfs_error *err);
 

@@ -53,7 +53,7 @@ static int horizons(const gis_compute *c, const float *z, const double *phi, int
                              .zscale = c->zscale};
     hfs_quality q;
     hfs_quality_defaults(&q);
-    const int rc = gis_horizons_each(c->r, &field, &q, grid, n, c->radius, fn, user, err);
+    const int rc = gis_horizons_each(c->r, c->sweep, &field, &q, grid, n, c->radius, fn, user, err);
     free(grid);
     return rc;
 }

@@ -32,6 +32,7 @@ typedef struct gis_compute {
      * window of it (has_relief); else taken from dem. */
     int has_relief;
     double relief;
+    int sweep;               /* 1: horizons by the sweep (gis_sweep.h), radius 0 */
 } gis_compute;
 
 /* The n_dirs map azimuths of the sky-view factor and openness: ccw-east

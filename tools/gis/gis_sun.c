@@ -152,7 +152,10 @@ static int sun_factor_horizon(const gis_compute *c, const gis_sun_at *s, double 
     const double reach = fmin(gis_shadow_reach(relief, low), c->radius > 0.0 ? c->radius
                                                                               : HUGE_VAL);
     const hfs_horizon_desc desc = {.n_azimuths = 1, .azimuth = &l.key[0].phi,
-                                   .radius = isfinite(reach) ? fmax(reach, 2.0 * field.dx) : 0.0,
+                                   /* the sweep reads the whole field: the window's
+                                    * clamp makes what lies beyond the reach moot */
+                                   .radius = isfinite(reach) && !c->sweep
+                                                 ? fmax(reach, 2.0 * field.dx) : 0.0,
                                    .window = 1, .lo = fmax(low, -PI / 2), .hi = fmin(high, PI / 2)};
     const size_t n = (size_t)field.width * (size_t)field.height;
     hfs_image open = {0};
@@ -162,7 +165,7 @@ static int sun_factor_horizon(const gis_compute *c, const gis_sun_at *s, double 
     if (!rc)
         rc = hfs_render_unshadowed(&field, &l, &q, &open, err);
     if (!rc)
-        rc = hfs_renderer_horizons(c->r, &field, &q, &desc, gamma, err);
+        rc = gis_horizons_get(c->r, c->sweep, &field, &q, &desc, gamma, err);
     for (size_t p = 0; p < n && !rc; ++p) {
         const double fu = factor_of(&l.key[0], open.rgb[3 * p]);
         double nrm[3] = {0.0, 0.0, 1.0};
@@ -185,7 +188,7 @@ static int sun_factor_horizon(const gis_compute *c, const gis_sun_at *s, double 
 static int sun_factor(const gis_compute *c, const gis_sun_at *s, double relief, float *f,
                       float *vis, hfs_error *err)
 {
-    if (!strcmp(hfs_renderer_backend_name(c->r), "truth"))
+    if (!c->sweep && !strcmp(hfs_renderer_backend_name(c->r), "truth"))
         return sun_factor_render(c, s, f, vis, err);
     return sun_factor_horizon(c, s, relief, f, vis, err);
 }
@@ -298,7 +301,8 @@ static int sky_share(const gis_compute *c, int n_dirs, const gis_sky_map *map, f
     s.normal = normal, s.phi = phi, s.map = map;
     hfs_quality q;
     hfs_quality_defaults(&q);
-    const int rc = gis_horizons_each(c->r, &field, &q, phi, n_dirs, c->radius, add_sky, &s, err);
+    const int rc = gis_horizons_each(c->r, c->sweep, &field, &q, phi, n_dirs, c->radius, add_sky,
+                                     &s, err);
     if (!rc && map)
         gis_sky_map_finish(map, sky, s.acc, n);
     else if (!rc)

@@ -1,0 +1,323 @@
+/*
+ * gis_sweep.c — see gis_sweep.h.
+ */
+#include "gis_sweep.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+/* A crossing this close outside the field's side is on it (ray_bound.c's
+ * RAY_EDGE_TOL, so a ray along the last row keeps its crossings). */
+#define EDGE_TOL 1e-3
+
+/* One azimuth's frame: u runs along its major axis in the direction of
+ * the rays, v across it so that the rays climb in v (r >= 0); the field's
+ * index of (u, v) is off + u du + v dv. */
+typedef struct sweep_dir {
+    int nu, nv;      /* the field's size along u and v                  */
+    ptrdiff_t off, du, dv;
+    double r;        /* v gained per column, |minor / major|, in [0, 1] */
+    double unit;     /* horizontal world distance of one column: dx / |major| */
+} sweep_dir;
+
+static void dir_make(sweep_dir *d, const hfs_field *f, double phi)
+{
+    const double c = cos(phi), s = sin(phi);
+    const int xm = fabs(c) >= fabs(s);
+    const double ma = xm ? c : s, mi = xm ? s : c;
+    const ptrdiff_t w = f->width, h = f->height;
+    /* steps along x and y of one u and one v, and the origin's (x, y) */
+    const ptrdiff_t su = ma >= 0.0 ? 1 : -1, sv = mi >= 0.0 ? 1 : -1;
+    d->nu = xm ? f->width : f->height;
+    d->nv = xm ? f->height : f->width;
+    const ptrdiff_t x0 = (xm ? su : sv) > 0 ? 0 : w - 1, y0 = (xm ? sv : su) > 0 ? 0 : h - 1;
+    d->off = y0 * w + x0;
+    d->du = xm ? su : su * w;
+    d->dv = xm ? sv * w : sv;
+    d->r = fabs(mi) / fabs(ma);
+    d->unit = f->dx / fabs(ma);
+}
+
+/* The field's index of (u, v). */
+static inline size_t texel_of(const sweep_dir *d, int u, int v)
+{
+    return (size_t)(d->off + (ptrdiff_t)u * d->du + (ptrdiff_t)v * d->dv);
+}
+
+static inline double max2(double a, double b)
+{
+    return a > b ? a : b;
+}
+
+/* The height (world units) where column u is crossed at v = y: linear
+ * between the two texels about y, y clamped to the field. */
+static double crossing(const hfs_field *f, const sweep_dir *d, int u, double y)
+{
+    y = y < 0.0 ? 0.0 : (y > d->nv - 1 ? d->nv - 1 : y);
+    int y0 = (int)y;
+    if (y0 > d->nv - 2)
+        y0 = d->nv >= 2 ? d->nv - 2 : 0;
+    const double a = f->z[texel_of(d, u, y0)];
+    const double b = d->nv >= 2 ? f->z[texel_of(d, u, y0 + 1)] : a;
+    return f->zscale * (a + (y - y0) * (b - a));
+}
+
+/* The last crossing of the ray from (u, v) inside the field. */
+static int last_crossing(const sweep_dir *d, int u, int v)
+{
+    int last = d->nu - 1 - u;
+    if (d->r > 0.0) {
+        const double lim = (d->nv - 1 - v + EDGE_TOL) / d->r;
+        if (lim < last)
+            last = (int)floor(lim);
+    }
+    return last;
+}
+
+/* The upper convex hull of a line's surface points beyond the texels
+ * still to come, nearest last: (x, z) in columns and world units. */
+typedef struct hull {
+    double *x, *z;
+    int n;
+} hull;
+
+/* Adds a point nearer than all the hull holds; drops the ones that fall
+ * under the hull with it (each point leaves at most once). */
+static void hull_add(hull *h, double x, double z)
+{
+    while (h->n >= 2 &&
+           (h->z[h->n - 1] - z) * (h->x[h->n - 2] - x) <= (h->z[h->n - 2] - z) * (h->x[h->n - 1] - x))
+        --h->n;
+    h->x[h->n] = x, h->z[h->n] = z, ++h->n;
+}
+
+/* The steepest slope (rise over columns) from (x, z), nearer than every
+ * point of the hull: along the hull the slopes rise to the tangent's
+ * vertex and fall after it, so a binary search finds it. */
+static double hull_tangent(const hull *h, double x, double z)
+{
+    int lo = 0, hi = h->n - 1; /* index 0 the farthest */
+    while (lo < hi) {
+        const int mid = (lo + hi + 1) / 2;
+        if ((h->z[mid - 1] - z) * (h->x[mid] - x) > (h->z[mid] - z) * (h->x[mid - 1] - x))
+            hi = mid - 1;
+        else
+            lo = mid;
+    }
+    return (h->z[lo] - z) / (h->x[lo] - x);
+}
+
+/* One cell's part of a line v = y0 + r a from column u (a = 0) to u + 1
+ * (a = 1), a in [lo, hi] inside the cell whose lower row is `row`: the
+ * bilinear surface there is z(a) = A + B a + C a^2 (world units). */
+typedef struct piece {
+    double lo, hi, A, B, C;
+} piece;
+
+/* The pieces (one or two: the line crosses at most one row between two
+ * columns, r <= 1) of the line from (u, y) to (u + 1, y + r); the heights
+ * clamped to the field as `crossing` clamps them. */
+static piece piece_make(const hfs_field *f, const sweep_dir *d, int u, int y0, double lo,
+                        double hi, double b0, double rb)
+{
+    const int y1 = d->nv >= 2 ? y0 + 1 : y0;
+    const size_t t00 = texel_of(d, u, y0), t01 = texel_of(d, u, y1);
+    const double zs = f->zscale;
+    const double z00 = zs * f->z[t00], z10 = zs * f->z[(size_t)((ptrdiff_t)t00 + d->du)];
+    const double z01 = zs * f->z[t01], z11 = zs * f->z[(size_t)((ptrdiff_t)t01 + d->du)];
+    const double e = z11 - z10 - z01 + z00;
+    return (piece){lo, hi, z00 + (z01 - z00) * b0, z10 - z00 + (z01 - z00) * rb + e * b0, e * rb};
+}
+
+static int pieces_of(const hfs_field *f, const sweep_dir *d, int u, double y, piece p[2])
+{
+    const double r = d->r;
+    if (y >= 0.0 && y + r <= d->nv - 1 && d->nv >= 2) { /* inside: no clamp */
+        int y0 = (int)y;
+        y0 = y0 > d->nv - 2 ? d->nv - 2 : y0;
+        const double b0 = y - y0;
+        if (y0 + 1 < y + r && y0 + 1 < d->nv - 1) { /* crosses row y0 + 1 */
+            const double cut = (y0 + 1 - y) / r;
+            p[0] = piece_make(f, d, u, y0, 0.0, cut, b0, r);
+            p[1] = piece_make(f, d, u, y0 + 1, cut, 1.0, b0 - 1.0, r);
+            return 2;
+        }
+        p[0] = piece_make(f, d, u, y0, 0.0, 1.0, b0, r);
+        return 1;
+    }
+    /* at the field's side: the line clamped to its last row, as crossings
+     * are (a line outside the field runs along it) */
+    const double yc = y < 0.0 ? 0.0 : (y > d->nv - 1 ? d->nv - 1 : y);
+    int y0 = (int)yc;
+    y0 = y0 > d->nv - 2 ? (d->nv >= 2 ? d->nv - 2 : 0) : y0;
+    p[0] = piece_make(f, d, u, y0, 0.0, 1.0, d->nv >= 2 ? yc - y0 : 0.0, 0.0);
+    return 1;
+}
+
+/* best raised to the steepest slope (rise per column) from height zp at
+ * column distance m before the piece's a = 0: its ends, and inside it
+ * where the slope of (z(a) - zp) / (m + a) turns (a concave piece, C < 0:
+ * the surface along the ray bulges above the chord, a twisted cell).  A
+ * candidate divides only when it wins (num > best den, den > 0). */
+static double piece_max(const piece *p, double m, double zp, double best)
+{
+    /* from the texel itself (m = 0, a = 0, A = zp): the surface's slope
+     * leaving it, the limit of the ratio as a -> 0 (its own cell, which
+     * rises from the texel at B however near) */
+    if (m == 0.0 && p->lo == 0.0)
+        best = max2(best, p->B);
+    const double ends[2] = {p->lo, p->hi};
+    for (int k = 0; k < 2; ++k) {
+        const double a = ends[k], den = m + a, num = p->A + (p->B + p->C * a) * a - zp;
+        if (den > 0.0 && num > best * den)
+            best = num / den;
+    }
+    if (p->C < 0.0) { /* C a^2 + 2 C m a + (B m - A + zp) = 0, the root past -m */
+        const double q = m * m - (p->B * m - p->A + zp) / p->C;
+        if (q >= 0.0) {
+            const double a = -m + sqrt(q), den = m + a;
+            const double num = p->A + (p->B + p->C * a) * a - zp;
+            if (a > p->lo && a < p->hi && den > 0.0 && num > best * den)
+                best = num / den;
+        }
+    }
+    return best;
+}
+
+/* Texel (u, v)'s horizon: the bilinear surface along its own ray up to
+ * `near` columns, exactly, then the tangent to its line's hull. */
+static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h, int near, int u,
+                           int v)
+{
+    const int last = last_crossing(d, u, v);
+    if (last < 1)
+        return HFS_HORIZON_NONE;
+    const double zp = f->zscale * f->z[texel_of(d, u, v)];
+    double best = -HUGE_VAL; /* rise per column */
+    const int own = last < near ? last : near;
+    for (int m = 0; m < own; ++m) { /* the cells from column u + m to u + m + 1 */
+        piece p[2];
+        const int n = pieces_of(f, d, u + m, v + m * d->r, p);
+        for (int k = 0; k < n; ++k)
+            best = piece_max(&p[k], m, zp, best);
+    }
+    if (h->n > 0 && last > near)
+        best = max2(best, hull_tangent(h, u, zp));
+    return (float)atan(best / d->unit);
+}
+
+/* Adds line k's surface points from column u to u + 1 (nearer than all
+ * the hull holds): the crossings at u, a row crossing between, and each
+ * concave piece's highest point (what a distant texel's tangent meets). */
+static void hull_add_cell(const hfs_field *f, const sweep_dir *d, hull *h, int u, double y)
+{
+    if (u + 1 <= d->nu - 1) {
+        piece p[2];
+        const int n = pieces_of(f, d, u, y, p);
+        for (int k = n - 1; k >= 0; --k) {
+            const piece *q = &p[k];
+            if (q->C < 0.0) {
+                const double a = -q->B / (2.0 * q->C);
+                if (a > q->lo && a < q->hi)
+                    hull_add(h, u + a, q->A + (q->B + q->C * a) * a);
+            }
+            if (q->lo > 0.0)
+                hull_add(h, u + q->lo, q->A + (q->B + q->C * q->lo) * q->lo);
+        }
+    }
+    hull_add(h, u, crossing(f, d, u, y));
+}
+
+/* One azimuth: every line k (v = k + r u), walked from the field's end. */
+static void sweep_azimuth(const hfs_field *f, double phi, int near, hull *h, float *out)
+{
+    sweep_dir d;
+    dir_make(&d, f, phi);
+    const double r = d.r;
+    const long k0 = (long)floor(-r * (d.nu - 1)) - 1, k1 = d.nv;
+    for (long k = k0; k <= k1; ++k) {
+        h->n = 0;
+        for (int u = d.nu - 1; u >= 0; --u) {
+            const int ui = u + near; /* the column that joins the hull now */
+            if (ui <= d.nu - 1) {
+                const double y = (double)k + r * ui;
+                if (y >= -EDGE_TOL && y <= d.nv - 1 + EDGE_TOL)
+                    hull_add_cell(f, &d, h, ui, y);
+            }
+            /* the texel whose own line is nearest this one here */
+            const double v = ceil((double)k + r * u - 0.5);
+            if (v < 0.0 || v > d.nv - 1)
+                continue;
+            out[texel_of(&d, u, (int)v)] = texel_horizon(f, &d, h, near, u, (int)v);
+        }
+    }
+}
+
+typedef struct job {
+    const hfs_field *f;
+    const double *phi;
+    int n, workers, worker;
+    float *out;
+    hull h;
+} job;
+
+static void *run_job(void *arg)
+{
+    job *j = arg;
+    const size_t texels = (size_t)j->f->width * (size_t)j->f->height;
+    for (int k = j->worker; k < j->n; k += j->workers)
+        sweep_azimuth(j->f, j->phi[k], GIS_SWEEP_NEAR, &j->h, j->out + (size_t)k * texels);
+    return NULL;
+}
+
+int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads, float *out,
+                       hfs_error *err)
+{
+    if (!f || !f->z || f->width < 1 || f->height < 1 || !(f->dx > 0.0) || !phi || n < 0 || !out)
+        return hfs_fail(err, HFS_E_INVALID, "sweep: a bad field or azimuths");
+    for (int k = 0; k < n; ++k)
+        if (!isfinite(phi[k]))
+            return hfs_fail(err, HFS_E_INVALID, "sweep: azimuth %d is not finite", k);
+    if (threads <= 0) {
+        const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+        threads = cores > 0 ? (int)cores : 1;
+    }
+    threads = threads > n ? n : threads;
+    threads = threads < 1 ? 1 : threads > 64 ? 64 : threads;
+    const size_t side = (size_t)(f->width > f->height ? f->width : f->height) + 2;
+    job jobs[64];
+    int made = 0, rc = HFS_OK;
+    for (; made < threads; ++made) {
+        job *j = &jobs[made];
+        *j = (job){.f = f, .phi = phi, .n = n, .workers = threads, .worker = made, .out = out};
+        j->h.x = malloc(side * sizeof *j->h.x);
+        j->h.z = malloc(side * sizeof *j->h.z);
+        if (!j->h.x || !j->h.z) {
+            free(j->h.x), free(j->h.z);
+            rc = hfs_fail(err, HFS_E_NOMEM, "sweep: out of memory for a %dx%d field", f->width,
+                          f->height);
+            break;
+        }
+    }
+    if (!rc) {
+        /* workers 1.. on threads; worker 0, and any that cannot start,
+         * here (each azimuth is one worker's, so the result is the same) */
+        pthread_t tid[64];
+        int started[64] = {0};
+        for (int w = 1; w < threads; ++w)
+            started[w] = pthread_create(&tid[w], NULL, run_job, &jobs[w]) == 0;
+        run_job(&jobs[0]);
+        for (int w = 1; w < threads; ++w) {
+            if (started[w])
+                pthread_join(tid[w], NULL);
+            else
+                run_job(&jobs[w]);
+        }
+    }
+    for (int w = 0; w < made; ++w)
+        free(jobs[w].h.x), free(jobs[w].h.z);
+    return rc;
+}
