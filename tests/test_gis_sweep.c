@@ -11,6 +11,11 @@
  *             bounds 1.2x what was measured on these fields (the sweep
  *             reads up to half a texel aside beyond GIS_SWEEP_NEAR
  *             columns);
+ *   between   tops between the columns' crossings: saddles along the
+ *             diagonals, ridges along rows, each within bounds; closed
+ *             forms of one twisted cell (near and far) and one ridge;
+ *   dome      a profile concave along every line: more hull points than
+ *             the line has columns (the hull's storage, under ASan);
  *   turn      the field turned a quarter (and mirrored), the azimuth with
  *             it: the same angles, bit for bit (the lines turn with it);
  *   threads   1 and 3 workers: the same angles, bit for bit;
@@ -35,6 +40,8 @@
 #define BOUND_SADDLES_WORST 0.052 /* 0.043 */
 #define BOUND_ROWS_MEAN 0.716     /* 0.5965 */
 #define BOUND_ROWS_WORST 16.1     /* 13.41 */
+#define BOUND_DOME_MEAN 0.171     /* 0.1427 */
+#define BOUND_DOME_WORST 6.81     /* 5.679 */
 
 /* Two ridges and texel-scale noise of amplitude `noise`, W x H. */
 static float *field_of(int w, int h, unsigned seed, double noise)
@@ -192,6 +199,23 @@ static void check_closed_forms(void)
           (double)out[2 * W], want);
 }
 
+/* A dome (z = -(i - W/2)^2 / 100 - j^2 / 20), concave along every line:
+ * each crossing with a column and a row stays on the upper hull, more
+ * points than the line has columns (the hull's storage, under the
+ * sanitizers), and the angles within the bounds measured. */
+static void check_dome(void)
+{
+    const int w = 300, h = 12;
+    float *z = malloc((size_t)w * h * sizeof *z);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            z[(size_t)j * w + i] = (float)(-0.01 * (i - w / 2) * (i - w / 2) - 0.05 * j * j);
+    const hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
+    const double phi[2] = {atan(0.035), PI + atan(0.035)}; /* 10 rows over 300 columns */
+    check_against_exact("dome", &f, phi, 2, BOUND_DOME_MEAN, BOUND_DOME_WORST);
+    free(z);
+}
+
 /* A quarter turn of field f: (i, j) -> (H - 1 - j, i), W and H swapped. */
 static float *turned(const hfs_field *f)
 {
@@ -269,6 +293,7 @@ int main(void)
     check_oblique();
     check_between();
     check_closed_forms();
+    check_dome();
     check_turns_threads();
     check_refused();
     printf("test_gis_sweep: %ld checks, %d failures\n", checks, failures);

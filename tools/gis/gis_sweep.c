@@ -287,7 +287,9 @@ int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads
     }
     threads = threads > n ? n : threads;
     threads = threads < 1 ? 1 : threads > 64 ? 64 : threads;
-    const size_t side = (size_t)(f->width > f->height ? f->width : f->height) + 2;
+    /* a line's hull holds at most 4 points a column: its crossing, a row's
+     * and the tops of two bulging pieces (a concave profile keeps them all) */
+    const size_t side = 4 * (size_t)(f->width > f->height ? f->width : f->height) + 4;
     job jobs[64];
     int made = 0, rc = HFS_OK;
     for (; made < threads; ++made) {
