@@ -101,6 +101,23 @@ class Gis(util.TempDir):
         self.same(pos, self.path("o.tif"), 1)
         self.same(neg, self.path("o.tif"), 2)
 
+    def test_sweep(self):
+        util.run_cli("svf", self.dem, "-o", self.path("s.tif"), "--method", "sweep", "--quiet")
+        self.same(hfshade.svf(self.z, CELL, nodata=NODATA, method="sweep"), self.path("s.tif"))
+        util.run_cli("horizon", self.dem, "-o", self.path("sh"), "--azimuths", "30",
+                     "--method", "sweep", "--quiet")
+        self.same(hfshade.horizon(self.z, CELL, 30, nodata=NODATA, method="sweep"),
+                  self.path("sh_030.tif"))
+        with self.assertRaisesRegex(ValueError, "^method: 'fast'"):
+            hfshade.svf(self.z, CELL, method="fast")
+        with self.assertRaisesRegex(ValueError, "^method: 'sweep' takes no renderer"):
+            with hfshade.Renderer("cpu") as r:
+                hfshade.svf(self.z, CELL, renderer=r, method="sweep")
+        with self.assertRaisesRegex(hfshade.Error, "^radius: the sweep .*openness"):
+            hfshade.openness(self.z, CELL, method="sweep")
+        with self.assertRaisesRegex(hfshade.Error, "^radius: the sweep"):
+            hfshade.svf(self.z, CELL, radius=300, method="sweep")
+
     def test_bad_arguments(self):
         with self.assertRaisesRegex(ValueError, "^cell_size: .*not square"):
             hfshade.svf(self.z, (25.0, 30.0), backend="cpu")

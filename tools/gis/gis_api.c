@@ -108,13 +108,16 @@ static void free_dem(gis_dem *d)
 }
 
 /* Checks, the gis_dem and the compute of product p (radius resolved as
- * gis_command_radius: openness's default 10 cells). */
+ * gis_command_radius: openness's default 10 cells); no renderer: the
+ * sweep, whose radius must be 0. */
 static int begin(hfs_renderer *r, const hfs_gis_dem *dem, hfs_gis_product p, double radius,
                  gis_dem *d, gis_compute *c, hfs_error *err)
 {
     memset(d, 0, sizeof *d);
-    if (!r)
-        return hfs_fail(err, HFS_E_INVALID, "renderer: none given");
+    if (!r && (radius > 0.0 || (p == HFS_GIS_OPENNESS && radius == HFS_GIS_RADIUS_DEFAULT)))
+        return hfs_fail(err, HFS_E_INVALID, "radius: the sweep (no renderer) searches the "
+                        "whole DEM: give 0%s", p == HFS_GIS_OPENNESS && radius < 0.0
+                        ? " (openness searches 10 cells by default)" : "");
     int rc = check_dem(dem, err);
     if (!rc)
         rc = check_radius(radius, err);
@@ -125,7 +128,7 @@ static int begin(hfs_renderer *r, const hfs_gis_dem *dem, hfs_gis_product p, dou
     if (radius == HFS_GIS_RADIUS_DEFAULT)
         radius = p == HFS_GIS_OPENNESS ? GIS_OPENNESS_DEFAULT_CELLS * fmax(d->cx, d->cy) : 0.0;
     *c = (gis_compute){.r = r, .dem = d, .zscale = dem->zscale, .radius = radius,
-                       .nodata = hfs_gis_nodata(dem, p)};
+                       .nodata = hfs_gis_nodata(dem, p), .sweep = r == NULL};
     return HFS_OK;
 }
 

@@ -64,7 +64,11 @@ typedef enum hfs_gis_product {
     HFS_GIS_INSOLATION          /* Wh/m^2, >= 0                               */
 } hfs_gis_product;
 
-/* radius: the search distance in metres, [0, 1e9], 0 = the whole DEM; or
+/* r: the renderer the horizons are computed on (its backend: exact), or
+ * NULL: by the sweep on the host (`--method sweep`, docs/GIS.md "The
+ * sweep"), the whole DEM only (radius 0; openness then needs 0 given).
+ *
+ * radius: the search distance in metres, [0, 1e9], 0 = the whole DEM; or
  * HFS_GIS_RADIUS_DEFAULT, the command's default: the whole DEM for svf and
  * horizon, 10 cells for openness (the Relief Visualization Toolbox's), 0
  * for sun and insolation (below). */

@@ -98,7 +98,16 @@ def _radius(radius):
     return number("radius", radius, 0.0, 1e9)
 
 
-def _run(renderer, backend, fn):
+def _run(renderer, backend, fn, method="exact"):
+    """fn(the renderer's handle), or with method "sweep" fn(NULL): the
+    library's horizons by the sweep (docs/GIS.md "The sweep")."""
+    if method not in ("exact", "sweep"):
+        raise ValueError(f"method: {method!r} is not exact or sweep")
+    if method == "sweep":
+        if renderer is not None or backend == "truth":
+            raise ValueError("method: 'sweep' takes no renderer and no truth backend "
+                             "(it runs on the host)")
+        return fn(ffi.NULL)
     if renderer is not None:
         if not isinstance(renderer, Renderer):
             raise TypeError("renderer: expected an hfshade.Renderer")
@@ -108,7 +117,7 @@ def _run(renderer, backend, fn):
 
 
 def svf(dem, cell_size, directions=16, radius=None, kind="zaksek", zscale=1.0, nodata=None,
-        backend="gles", renderer=None):
+        backend="gles", renderer=None, method="exact"):
     """Sky-view factor, 0..1 (1 on a plane), as `hfshade svf`.
 
     kind: "zaksek" (Zaksek et al. 2011: 1 - mean sin(max(gamma, 0)), the
@@ -117,7 +126,9 @@ def svf(dem, cell_size, directions=16, radius=None, kind="zaksek", zscale=1.0, n
     azimuths equally spaced from east (default 16).  radius: search
     distance in metres (None or 0: the whole DEM).  zscale: heights times
     zscale are metres.  backend: "gles" (the command's default), "cpu",
-    "truth"; or renderer: an hfshade.Renderer to reuse."""
+    "truth"; or renderer: an hfshade.Renderer to reuse.  method: "exact"
+    (the default) or "sweep" (`--method sweep`: the horizons on the host by
+    a line sweep, no renderer, the whole DEM only: radius None or 0)."""
     if kind not in ("zaksek", "lambertian"):
         raise ValueError(f"kind: {kind!r} is not zaksek or lambertian")
     d = _Dem(dem, cell_size, zscale, nodata)
@@ -129,12 +140,12 @@ def svf(dem, cell_size, directions=16, radius=None, kind="zaksek", zscale=1.0, n
         err = new_error()
         check(gis_lib().hfs_gis_svf(r, d.c, n, kind == "lambertian", rad,
                                     ffi.from_buffer("float[]", out), err), err)
-    _run(renderer, backend, go)
+    _run(renderer, backend, go, method)
     return d.masked(out, _SVF)
 
 
 def horizon(dem, cell_size, azimuth, convention="ccw-east", radius=None, zscale=1.0,
-            nodata=None, backend="gles", renderer=None):
+            nodata=None, backend="gles", renderer=None, method="exact"):
     """Horizon elevation angle in degrees >= 0 (GRASS r.horizon -d: 0 where
     nothing rises above the horizontal), as `hfshade horizon`.
 
@@ -157,13 +168,13 @@ def horizon(dem, cell_size, azimuth, convention="ccw-east", radius=None, zscale=
             err = new_error()
             check(gis_lib().hfs_gis_horizon(r, d.c, a, convention == "compass", rad,
                                             ffi.from_buffer("float[]", out[k]), err), err)
-    _run(renderer, backend, go)
+    _run(renderer, backend, go, method)
     result = d.masked(out, _HORIZON)
     return result if many else result[0]
 
 
 def openness(dem, cell_size, directions=8, radius=None, zscale=1.0, nodata=None,
-             backend="gles", renderer=None):
+             backend="gles", renderer=None, method="exact"):
     """Positive and negative openness (Yokoyama et al. 2002), degrees
     (90 on a plane), as `hfshade openness`'s bands 1 and 2: returns
     (positive, negative).
@@ -181,7 +192,7 @@ def openness(dem, cell_size, directions=8, radius=None, zscale=1.0, nodata=None,
         err = new_error()
         check(gis_lib().hfs_gis_openness(r, d.c, n, rad, ffi.from_buffer("float[]", pos),
                                          ffi.from_buffer("float[]", neg), err), err)
-    _run(renderer, backend, go)
+    _run(renderer, backend, go, method)
     return d.masked(pos, _OPENNESS), d.masked(neg, _OPENNESS)
 
 
@@ -224,7 +235,7 @@ def _site(lat, lon, elevation, linke):
 
 
 def sun(dem, cell_size, when, lat, lon, *, elevation=None, linke=3.0, radius=0.0, zscale=1.0,
-        nodata=None, backend="gles", renderer=None):
+        nodata=None, backend="gles", renderer=None, method="exact"):
     """The sun at one instant, as `hfshade sun --datetime WHEN`'s bands 1 and
     2: returns (beam, visible).
 
@@ -249,13 +260,13 @@ def sun(dem, cell_size, when, lat, lon, *, elevation=None, linke=3.0, radius=0.0
         err = new_error()
         check(gis_lib().hfs_gis_sun(r, d.c, site, t, rad, ffi.from_buffer("float[]", beam),
                                     ffi.from_buffer("float[]", visible), err), err)
-    _run(renderer, backend, go)
+    _run(renderer, backend, go, method)
     return d.masked(beam, _SUN), d.masked(visible, _SUN)
 
 
 def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16, radius=0.0,
                elevation=None, linke=3.0, zscale=1.0, nodata=None, backend="gles",
-               renderer=None, sky_map=None, sky_north=0.0, albedo=0.0):
+               renderer=None, sky_map=None, sky_north=0.0, albedo=0.0, method="exact"):
     """Clear-sky irradiation over [start, end), Wh/m^2, as `hfshade
     insolation --from START --to END`'s bands 1, 2, 3: returns
     (beam, diffuse, global_).
@@ -299,7 +310,7 @@ def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16
                                                h, north, rho,
                                                *(ffi.from_buffer("float[]", o) for o in out),
                                                err), err)
-    _run(renderer, backend, go)
+    _run(renderer, backend, go, method)
     return tuple(d.masked(o, _INSOLATION) for o in out)
 
 
