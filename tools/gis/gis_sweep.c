@@ -110,16 +110,16 @@ static double hull_tangent(const hull *h, double x, double z)
     return (h->z[lo] - z) / (h->x[lo] - x);
 }
 
-/* One cell's part of a line v = y0 + r a from column u (a = 0) to u + 1
- * (a = 1), a in [lo, hi] inside the cell whose lower row is `row`: the
- * bilinear surface there is z(a) = A + B a + C a^2 (world units). */
+/* One cell's part of a line from column u (a = 0) to u + 1 (a = 1): for
+ * a in [lo, hi] the line stays in one cell, and the bilinear surface along
+ * it is z(a) = A + B a + C a^2 (world units). */
 typedef struct piece {
     double lo, hi, A, B, C;
 } piece;
 
-/* The pieces (one or two: the line crosses at most one row between two
- * columns, r <= 1) of the line from (u, y) to (u + 1, y + r); the heights
- * clamped to the field as `crossing` clamps them. */
+/* The piece for a in [lo, hi] of the cell from column u and row y0 (the
+ * next row y0 + 1, or y0 itself on a one-row field), the line at b0 + rb a
+ * rows above y0 (b0 may be negative: the cell after a row crossing). */
 static piece piece_make(const hfs_field *f, const sweep_dir *d, int u, int y0, double lo,
                         double hi, double b0, double rb)
 {
@@ -132,6 +132,9 @@ static piece piece_make(const hfs_field *f, const sweep_dir *d, int u, int y0, d
     return (piece){lo, hi, z00 + (z01 - z00) * b0, z10 - z00 + (z01 - z00) * rb + e * b0, e * rb};
 }
 
+/* The pieces (one or two: the line crosses at most one row between two
+ * columns, r <= 1) of the line from (u, y) to (u + 1, y + r); at the
+ * field's side the heights clamped as `crossing` clamps them. */
 static int pieces_of(const hfs_field *f, const sweep_dir *d, int u, double y, piece p[2])
 {
     const double r = d->r;
