@@ -12,14 +12,11 @@
 #include <math.h>
 #include <string.h>
 
-/* NUM_THREADS: the blocks are compressed on every core and written in
- * their order, the same bytes as one thread's (test_gis_tiles compares
- * mosaics byte for byte; BENCHMARKS.md "The sweep"). */
 const char *const gis_raster_gtiff_options[] = {"TILED=YES", "BLOCKXSIZE=256",
                                                  "BLOCKYSIZE=256", "COMPRESS=DEFLATE",
-                                                 "PREDICTOR=3", "NUM_THREADS=ALL_CPUS", NULL};
+                                                 "PREDICTOR=3", NULL};
 const char *const gis_raster_cog_options[] = {"COMPRESS=DEFLATE", "PREDICTOR=YES",
-                                               "OVERVIEWS=AUTO", "NUM_THREADS=ALL_CPUS", NULL};
+                                               "OVERVIEWS=AUTO", NULL};
 
 long gis_raster_bad_value(const float *const *v, int n_bands, size_t n, double nodata,
                           int *band)
