@@ -11,7 +11,7 @@ add_library(hfs_gis_core STATIC ${CMAKE_CURRENT_LIST_DIR}/gis/gis_math.c
             ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sun.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sky_map.c
             ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sweep.c)
 target_include_directories(hfs_gis_core PUBLIC ${CMAKE_CURRENT_LIST_DIR}/gis)
-target_link_libraries(hfs_gis_core PUBLIC hfshade_lib hfshade_io hfs_solar Threads::Threads m)
+target_link_libraries(hfs_gis_core PUBLIC hfshade_lib hfshade_io hfs_solar m)
 if(TARGET hfshade_gdal)
   add_library(hfs_gis_gdal STATIC ${CMAKE_CURRENT_LIST_DIR}/gis/gis_dem.c
               ${CMAKE_CURRENT_LIST_DIR}/gis/gis_raster.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_command.c

@@ -16,7 +16,8 @@ add_library(hfshade_gis_shared SHARED
   ${HFS_GIS_DIR}/gis_horizons.c ${HFS_GIS_DIR}/gis_products.c ${HFS_GIS_DIR}/gis_sun.c
   ${HFS_GIS_DIR}/gis_sky_map.c ${HFS_GIS_DIR}/gis_sweep.c ${HFS_GIS_DIR}/solar_position.c
   ${HFS_GIS_DIR}/clear_sky.c
-  ${PROJECT_SOURCE_DIR}/runtime/io/hole_fill.c ${PROJECT_SOURCE_DIR}/runtime/core/field_geom.c)
+  ${PROJECT_SOURCE_DIR}/runtime/io/hole_fill.c ${PROJECT_SOURCE_DIR}/runtime/core/field_geom.c
+  ${PROJECT_SOURCE_DIR}/runtime/core/parallel.c)
 target_include_directories(hfshade_gis_shared PRIVATE ${HFS_GIS_DIR}
                            ${PROJECT_SOURCE_DIR}/runtime/io ${PROJECT_SOURCE_DIR}/runtime/core)
 target_compile_definitions(hfshade_gis_shared PRIVATE HFS_GIS_BUILDING_LIBRARY)

@@ -3,11 +3,11 @@
  */
 #include "gis_sweep.h"
 
+#include "parallel.h"
+
 #include <math.h>
-#include <pthread.h>
 #include <stddef.h>
 #include <stdlib.h>
-#include <unistd.h>
 
 /* A crossing this close outside the field's side is on it (ray_bound.c's
  * RAY_EDGE_TOL, so a ray along the last row keeps its crossings). */
@@ -259,21 +259,19 @@ static void sweep_azimuth(const hfs_field *f, double phi, int near, hull *h, flo
     }
 }
 
-typedef struct job {
+typedef struct sweep_run {
     const hfs_field *f;
     const double *phi;
-    int n, workers, worker;
     float *out;
-    hull h;
-} job;
+    hull *hulls; /* one per worker */
+} sweep_run;
 
-static void *run_job(void *arg)
+/* Azimuth k on worker `worker` (parallel.h: each azimuth one worker's). */
+static void sweep_row(void *ctx, int k, int worker)
 {
-    job *j = arg;
-    const size_t texels = (size_t)j->f->width * (size_t)j->f->height;
-    for (int k = j->worker; k < j->n; k += j->workers)
-        sweep_azimuth(j->f, j->phi[k], GIS_SWEEP_NEAR, &j->h, j->out + (size_t)k * texels);
-    return NULL;
+    const sweep_run *s = ctx;
+    const size_t texels = (size_t)s->f->width * (size_t)s->f->height;
+    sweep_azimuth(s->f, s->phi[k], GIS_SWEEP_NEAR, &s->hulls[worker], s->out + (size_t)k * texels);
 }
 
 int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads, float *out,
@@ -284,45 +282,27 @@ int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads
     for (int k = 0; k < n; ++k)
         if (!isfinite(phi[k]))
             return hfs_fail(err, HFS_E_INVALID, "sweep: azimuth %d is not finite", k);
-    if (threads <= 0) {
-        const long cores = sysconf(_SC_NPROCESSORS_ONLN);
-        threads = cores > 0 ? (int)cores : 1;
-    }
-    threads = threads > n ? n : threads;
-    threads = threads < 1 ? 1 : threads > 64 ? 64 : threads;
+    int workers = threads > 0 ? threads : hfs_parallel_default_threads();
+    workers = workers > n ? n : workers;
+    workers = workers < 1 ? 1 : workers;
     /* a line's hull holds at most 4 points a column: its crossing, a row's
      * and the tops of two bulging pieces (a concave profile keeps them all) */
     const size_t side = 4 * (size_t)(f->width > f->height ? f->width : f->height) + 4;
-    job jobs[64];
-    int made = 0, rc = HFS_OK;
-    for (; made < threads; ++made) {
-        job *j = &jobs[made];
-        *j = (job){.f = f, .phi = phi, .n = n, .workers = threads, .worker = made, .out = out};
-        j->h.x = malloc(side * sizeof *j->h.x);
-        j->h.z = malloc(side * sizeof *j->h.z);
-        if (!j->h.x || !j->h.z) {
-            free(j->h.x), free(j->h.z);
-            rc = hfs_fail(err, HFS_E_NOMEM, "sweep: out of memory for a %dx%d field", f->width,
-                          f->height);
-            break;
-        }
+    hull *hulls = calloc((size_t)workers, sizeof *hulls);
+    int rc = hulls ? HFS_OK : HFS_E_NOMEM;
+    for (int w = 0; w < workers && !rc; ++w) {
+        hulls[w].x = malloc(side * sizeof *hulls[w].x);
+        hulls[w].z = malloc(side * sizeof *hulls[w].z);
+        rc = hulls[w].x && hulls[w].z ? HFS_OK : HFS_E_NOMEM;
     }
     if (!rc) {
-        /* workers 1.. on threads; worker 0, and any that cannot start,
-         * here (each azimuth is one worker's, so the result is the same) */
-        pthread_t tid[64];
-        int started[64] = {0};
-        for (int w = 1; w < threads; ++w)
-            started[w] = pthread_create(&tid[w], NULL, run_job, &jobs[w]) == 0;
-        run_job(&jobs[0]);
-        for (int w = 1; w < threads; ++w) {
-            if (started[w])
-                pthread_join(tid[w], NULL);
-            else
-                run_job(&jobs[w]);
-        }
+        sweep_run run = {.f = f, .phi = phi, .out = out, .hulls = hulls};
+        hfs_parallel_rows(n, workers, sweep_row, &run, NULL, NULL);
+    } else {
+        hfs_fail(err, rc, "sweep: out of memory for a %dx%d field", f->width, f->height);
     }
-    for (int w = 0; w < made; ++w)
-        free(jobs[w].h.x), free(jobs[w].h.z);
+    for (int w = 0; hulls && w < workers; ++w)
+        free(hulls[w].x), free(hulls[w].z);
+    free(hulls);
     return rc;
 }

@@ -37,7 +37,8 @@
  * radians), as hfs_renderer_horizons gives them for a radius of 0 (the
  * whole field) and no window: out[(k H + j) W + i], radians, signed,
  * HFS_HORIZON_NONE where the texel's ray leaves the field at once.  The
- * azimuths are shared among `threads` workers (0: the machine's cores),
+ * azimuths are shared among `threads` workers (0: the machine's cores;
+ * runtime/core/parallel.h),
  * each computed by one: the result does not depend on the count.  0, or
  * HFS_E_NOMEM / HFS_E_INVALID with err filled. */
 int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads, float *out,
