@@ -24,6 +24,9 @@
  *            input's grid, against the truth's within the bounds below,
  *            metadata HFS_HORIZON_METHOD; refused with a radius, with the
  *            truth, for openness without --radius 0;
+ *   files    horizon's 16 files (encoded a few at a time on worker
+ *            threads): each its own azimuth's, as a run of that azimuth
+ *            alone; a late file that cannot be written leaves none;
  *   --cog    a Cloud Optimized GeoTIFF (GDAL says LAYOUT=COG);
  *   --help   exit 0, "Usage:" on stdout; bad inputs: non-zero, one line on
  *            stderr, no output file.
@@ -45,6 +48,7 @@
 #include <ogr_srs_api.h>
 
 #include <math.h>
+#include <unistd.h>
 
 #define W 64
 #define H 48
@@ -234,6 +238,41 @@ static void test_sweep(const raster *in, const float *z)
     }
 }
 
+/* The horizon command's files, encoded a few at a time on worker threads
+ * (gis_horizon_files.h; 16 azimuths are several queues on a machine of
+ * up to 7 cores): each file holds its own azimuth's angles, the same
+ * values as a run of that azimuth alone; and a file that cannot be
+ * written late in the run (a link to /dev/full: a device is written in
+ * place, and fails only when written) leaves none of the others behind,
+ * with one line of error. */
+static void test_horizon_files(void)
+{
+    REQUIRE(run("horizon geo.tif -o hq --step 22.5 --method sweep") == 0 &&
+                run("horizon geo.tif -o h1 --azimuths 157.5,337.5 --method sweep") == 0,
+            "horizon --method sweep, 16 and 2 azimuths");
+    static const char *const pairs[2][2] = {{"hq_157_5.tif", "h1_157_5.tif"},
+                                            {"hq_337_5.tif", "h1_337_5.tif"}};
+    raster q, one, east;
+    REQUIRE(read_raster("hq_000_0.tif", &east) == 0, "hq_000_0.tif");
+    for (int k = 0; k < 2; ++k) {
+        REQUIRE(read_raster(pairs[k][0], &q) == 0 && read_raster(pairs[k][1], &one) == 0,
+                "%s, %s", pairs[k][0], pairs[k][1]);
+        CHECK(!memcmp(q.v, one.v, sizeof(float) * W * H));
+        CHECK(memcmp(q.v, east.v, sizeof(float) * W * H) != 0);
+        CHECK(!strcmp(meta(&q, "HFS_AZIMUTH"), k ? "337.5" : "157.5"));
+        free_raster(&q), free_raster(&one);
+    }
+    free_raster(&east);
+    if (access("/dev/full", W_OK) != 0)
+        return; /* no such device here: the rest has run */
+    REQUIRE(symlink("/dev/full", tpath("hx_315_0.tif")) == 0, "hx_315_0.tif -> /dev/full");
+    const int rc = run("horizon geo.tif -o hx --step 22.5 --method sweep");
+    CHECK(rc != 0 && lines_of("err.txt") == 1);
+    CHECK(access(tpath("hx_000_0.tif"), F_OK) != 0 && access(tpath("hx_292_5.tif"), F_OK) != 0 &&
+          access(tpath("hx_337_5.tif"), F_OK) != 0);
+    unlink(tpath("hx_315_0.tif"));
+}
+
 /* A flat DEM: sky-view factor exactly 1, openness 90 / 90; NaN holes and
  * no declared nodata: -9999. */
 static void test_flat(void)
@@ -373,6 +412,7 @@ int main(int argc, char **argv)
         test_render_grid(&in, z);
         test_gles_truth(&in, z);
         test_sweep(&in, z);
+        test_horizon_files();
         test_flat();
         test_conventions();
         test_orientation(z);

@@ -18,7 +18,8 @@ if(TARGET hfshade_gdal)
               ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sun_command.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_run.c
               ${CMAKE_CURRENT_LIST_DIR}/gis/gis_lit.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_stream.c
               ${CMAKE_CURRENT_LIST_DIR}/gis/gis_raster_stream.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_tiles.c
-              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_tiles_merge.c)
+              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_tiles_merge.c
+              ${CMAKE_CURRENT_LIST_DIR}/gis/gis_horizon_files.c)
   # the tiles' manifest is INI, read by the scene's reader (libinih)
   pkg_check_modules(HFS_GIS_INIH REQUIRED IMPORTED_TARGET inih)
   target_link_libraries(hfs_gis_gdal PUBLIC hfs_gis_core hfshade_gdal PkgConfig::HFS_GIS_INIH)

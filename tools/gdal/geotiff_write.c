@@ -40,9 +40,10 @@ static GDALDatasetH mem_dataset(const hfs_image *img, const hfs_heightmap *hm)
     return ds;
 }
 
-int hfs_gdal_write_copy(hfs_outputs *o, const char *path, GDALDatasetH src, const char *driver,
-                        char **opts, hfs_error *err)
+int hfs_gdal_encode_copy(const char *path, GDALDatasetH src, const char *driver, char **opts,
+                         void **bytes, size_t *len, hfs_error *err)
 {
+    *bytes = NULL, *len = 0;
     char name[64]; /* a memory file of this call's own */
     snprintf(name, sizeof name, "/vsimem/hfshade-%p.tif", (void *)src);
     CPLPushErrorHandler(CPLQuietErrorHandler);
@@ -54,13 +55,26 @@ int hfs_gdal_write_copy(hfs_outputs *o, const char *path, GDALDatasetH src, cons
         GDALClose(out);
         ok &= CPLGetLastErrorType() != CE_Failure && CPLGetLastErrorType() != CE_Fatal;
     }
-    vsi_l_offset len = 0;
-    GByte *bytes = VSIGetMemFileBuffer(name, &len, TRUE); /* ours now */
+    vsi_l_offset n = 0;
+    GByte *b = VSIGetMemFileBuffer(name, &n, TRUE); /* ours now */
     CPLPopErrorHandler();
-    int rc = ok && bytes && len > 0
-                 ? hfs_bytes_write_to(o, path, bytes, (size_t)len, err)
-                 : hfs_fail(err, HFS_E_IO, "%s: GDAL could not encode the %s (%s)", path,
-                            !strcmp(driver, "GTiff") ? "GeoTIFF" : driver, CPLGetLastErrorMsg());
+    if (ok && b && n > 0) {
+        *bytes = b, *len = (size_t)n;
+        return HFS_OK;
+    }
+    VSIFree(b);
+    return hfs_fail(err, HFS_E_IO, "%s: GDAL could not encode the %s (%s)", path,
+                    !strcmp(driver, "GTiff") ? "GeoTIFF" : driver, CPLGetLastErrorMsg());
+}
+
+int hfs_gdal_write_copy(hfs_outputs *o, const char *path, GDALDatasetH src, const char *driver,
+                        char **opts, hfs_error *err)
+{
+    void *bytes;
+    size_t len;
+    int rc = hfs_gdal_encode_copy(path, src, driver, opts, &bytes, &len, err);
+    if (!rc)
+        rc = hfs_bytes_write_to(o, path, bytes, len, err);
     VSIFree(bytes);
     return rc;
 }

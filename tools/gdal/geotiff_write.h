@@ -29,6 +29,13 @@ int hfs_gdal_write_geotiff(hfs_outputs *o, const char *path, const hfs_image *im
 int hfs_gdal_write_copy(hfs_outputs *o, const char *path, GDALDatasetH src, const char *driver,
                         char **opts, hfs_error *err);
 
+/* The encoding alone: *bytes (*len of them; free with VSIFree) the file
+ * hfs_gdal_write_copy would write, path only naming it in err.  Calls on
+ * other threads with datasets of their own may run at the same time (each
+ * its own memory file; GDAL's error state is per thread). */
+int hfs_gdal_encode_copy(const char *path, GDALDatasetH src, const char *driver, char **opts,
+                         void **bytes, size_t *len, hfs_error *err);
+
 /* A world file beside a PNG or PFM of the grid (the ESRI six lines GDAL
  * and GIS tools read, named PATH + "w": out.png -> out.pngw): the pixel
  * size, no rotation, the upper-left texel's centre, from hm's

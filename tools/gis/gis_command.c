@@ -8,6 +8,7 @@
  */
 #include "gis_command.h"
 
+#include "gis_horizon_files.h"
 #include "gis_run.h"
 
 #include <math.h>
@@ -104,10 +105,7 @@ static int describe(gis_run *r, hfs_error *err)
 
 static int write_horizon(void *user, int k, const float *deg, hfs_error *err)
 {
-    const gis_run *r = user;
-    gis_horizon_text t;
-    const gis_raster g = gis_run_horizon_raster(r, k, deg, &t);
-    return gis_raster_write(gis_outputs_set(r->outs, r->names[k]), r->names[k], &g, err);
+    return gis_horizon_files_add(user, k, deg, err);
 }
 
 static int compute_and_write(gis_run *r, hfs_error *err)
@@ -124,7 +122,11 @@ static int compute_and_write(gis_run *r, hfs_error *err)
             return hfs_fail(err, HFS_E_NOMEM, "horizon: out of memory");
         for (int k = 0; k < a->n_azimuths; ++k)
             phi[k] = gis_phi_of(a->azimuth[k], a->convention);
-        const int rc = gis_product_horizons(&r->c, phi, a->n_azimuths, write_horizon, r, err);
+        gis_horizon_files *files = NULL;
+        int rc = gis_horizon_files_create(&files, r, err);
+        if (!rc)
+            rc = gis_product_horizons(&r->c, phi, a->n_azimuths, write_horizon, files, err);
+        gis_horizon_files_destroy(files);
         free(phi);
         return rc;
     }

@@ -7,6 +7,7 @@
 
 #include <cpl_error.h>
 #include <cpl_string.h>
+#include <cpl_vsi.h>
 #include <gdal.h>
 
 #include <math.h>
@@ -72,8 +73,10 @@ static GDALDatasetH mem_dataset(const gis_raster *r)
     return ds;
 }
 
-int gis_raster_write(hfs_outputs *o, const char *path, const gis_raster *r, hfs_error *err)
+int gis_raster_encode(const char *path, const gis_raster *r, void **bytes, size_t *len,
+                      hfs_error *err)
 {
+    *bytes = NULL, *len = 0;
     int band = 0;
     const float *v[GIS_RASTER_MAX_BANDS];
     for (int b = 0; b < r->n_bands; ++b)
@@ -87,10 +90,22 @@ int gis_raster_write(hfs_outputs *o, const char *path, const gis_raster *r, hfs_
                                                 : gis_raster_gtiff_options));
     CPLPushErrorHandler(CPLQuietErrorHandler);
     GDALDatasetH mem = mem_dataset(r);
-    const int rc = hfs_gdal_write_copy(o, path, mem, r->cog ? "COG" : "GTiff", opts, err);
+    const int rc = hfs_gdal_encode_copy(path, mem, r->cog ? "COG" : "GTiff", opts, bytes, len,
+                                        err);
     if (mem)
         GDALClose(mem);
     CPLPopErrorHandler();
     CSLDestroy(opts);
+    return rc;
+}
+
+int gis_raster_write(hfs_outputs *o, const char *path, const gis_raster *r, hfs_error *err)
+{
+    void *bytes;
+    size_t len;
+    int rc = gis_raster_encode(path, r, &bytes, &len, err);
+    if (!rc)
+        rc = hfs_bytes_write_to(o, path, bytes, len, err);
+    VSIFree(bytes);
     return rc;
 }

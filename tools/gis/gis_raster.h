@@ -44,6 +44,11 @@ typedef struct gis_raster {
 
 int gis_raster_write(hfs_outputs *o, const char *path, const gis_raster *r, hfs_error *err);
 
+/* The encoding alone (thread-safe for rasters of their own): *bytes (*len
+ * of them; free with VSIFree) the file gis_raster_write would write. */
+int gis_raster_encode(const char *path, const gis_raster *r, void **bytes, size_t *len,
+                      hfs_error *err);
+
 /* What a file written window by window (gis_raster_stream.h) shares with
  * gis_raster_write's: */
 /* the creation options, GTiff's and the COG driver's (NULL-terminated); */

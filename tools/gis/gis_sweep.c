@@ -47,11 +47,6 @@ static inline size_t texel_of(const sweep_dir *d, int u, int v)
     return (size_t)(d->off + (ptrdiff_t)u * d->du + (ptrdiff_t)v * d->dv);
 }
 
-static inline double max2(double a, double b)
-{
-    return a > b ? a : b;
-}
-
 /* The height (world units) where column u is crossed at v = y: linear
  * between the two texels about y, y clamped to the field. */
 static double crossing(const hfs_field *f, const sweep_dir *d, int u, double y)
@@ -94,10 +89,24 @@ static void hull_add(hull *h, double x, double z)
     h->x[h->n] = x, h->z[h->n] = z, ++h->n;
 }
 
-/* The steepest slope (rise over columns) from (x, z), nearer than every
- * point of the hull: along the hull the slopes rise to the tangent's
- * vertex and fall after it, so a binary search finds it. */
-static double hull_tangent(const hull *h, double x, double z)
+/* A slope as a fraction, rise num (world units) over den columns: the
+ * searches compare candidates by cross-multiplication and divide once, at
+ * the end (a division per winning candidate was the sweep's largest cost).
+ * {-1, 0} is no candidate yet: every candidate (den > 0) beats it. */
+typedef struct slope {
+    double num, den;
+} slope;
+
+/* Whether num / den (den > 0) is steeper than b. */
+static inline int steeper(double num, double den, slope b)
+{
+    return num * b.den > b.num * den;
+}
+
+/* The steepest slope from (x, z), nearer than every point of the hull:
+ * along the hull the slopes rise to the tangent's vertex and fall after
+ * it, so a binary search finds it. */
+static slope hull_tangent(const hull *h, double x, double z)
 {
     int lo = 0, hi = h->n - 1; /* index 0 the farthest */
     while (lo < hi) {
@@ -107,7 +116,7 @@ static double hull_tangent(const hull *h, double x, double z)
         else
             lo = mid;
     }
-    return (h->z[lo] - z) / (h->x[lo] - x);
+    return (slope){h->z[lo] - z, h->x[lo] - x};
 }
 
 /* One cell's part of a line from column u (a = 0) to u + 1 (a = 1): for
@@ -163,28 +172,27 @@ static int pieces_of(const hfs_field *f, const sweep_dir *d, int u, double y, pi
 /* best raised to the steepest slope (rise per column) from height zp at
  * column distance m before the piece's a = 0: its ends, and inside it
  * where the slope of (z(a) - zp) / (m + a) turns (a concave piece, C < 0:
- * the surface along the ray bulges above the chord, a twisted cell).  A
- * candidate divides only when it wins (num > best den, den > 0). */
-static double piece_max(const piece *p, double m, double zp, double best)
+ * the surface along the ray bulges above the chord, a twisted cell). */
+static slope piece_max(const piece *p, double m, double zp, slope best)
 {
     /* from the texel itself (m = 0, a = 0, A = zp): the surface's slope
      * leaving it, the limit of the ratio as a -> 0 (its own cell, which
      * rises from the texel at B however near) */
-    if (m == 0.0 && p->lo == 0.0)
-        best = max2(best, p->B);
+    if (m == 0.0 && p->lo == 0.0 && steeper(p->B, 1.0, best))
+        best = (slope){p->B, 1.0};
     const double ends[2] = {p->lo, p->hi};
     for (int k = 0; k < 2; ++k) {
         const double a = ends[k], den = m + a, num = p->A + (p->B + p->C * a) * a - zp;
-        if (den > 0.0 && num > best * den)
-            best = num / den;
+        if (den > 0.0 && steeper(num, den, best))
+            best = (slope){num, den};
     }
     if (p->C < 0.0) { /* C a^2 + 2 C m a + (B m - A + zp) = 0, the root past -m */
         const double q = m * m - (p->B * m - p->A + zp) / p->C;
         if (q >= 0.0) {
             const double a = -m + sqrt(q), den = m + a;
             const double num = p->A + (p->B + p->C * a) * a - zp;
-            if (a > p->lo && a < p->hi && den > 0.0 && num > best * den)
-                best = num / den;
+            if (a > p->lo && a < p->hi && den > 0.0 && steeper(num, den, best))
+                best = (slope){num, den};
         }
     }
     return best;
@@ -199,7 +207,9 @@ static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h
     if (last < 1)
         return HFS_HORIZON_NONE;
     const double zp = f->zscale * f->z[texel_of(d, u, v)];
-    double best = -HUGE_VAL; /* rise per column */
+    /* the hull first: a steep far horizon leaves the near candidates
+     * fewer wins */
+    slope best = h->n > 0 && last > near ? hull_tangent(h, u, zp) : (slope){-1.0, 0.0};
     const int own = last < near ? last : near;
     for (int m = 0; m < own; ++m) { /* the cells from column u + m to u + m + 1 */
         piece p[2];
@@ -207,9 +217,8 @@ static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h
         for (int k = 0; k < n; ++k)
             best = piece_max(&p[k], m, zp, best);
     }
-    if (h->n > 0 && last > near)
-        best = max2(best, hull_tangent(h, u, zp));
-    return (float)atan(best / d->unit);
+    const double rise = best.den > 0.0 ? best.num / best.den : -HUGE_VAL; /* per column */
+    return (float)atan(rise / d->unit);
 }
 
 /* Adds line k's surface points from column u to u + 1 (nearer than all
