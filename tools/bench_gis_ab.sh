@@ -5,6 +5,8 @@
 # in UTM 16N with 83 m cells (as bench_gis.sh places it), GLES, the whole
 # DEM searched.  Rounds alternate A, B, A, B...; each command's wall-clock
 # median of ROUNDS runs per build, and B / A.  Needs gdal-bin (gdal_translate).
+# GIS_AB_FLAGS: more flags for every command of both builds (e.g.
+# "--method sweep").
 # usage: tools/bench_gis_ab.sh BUILD_A BUILD_B [ROUNDS]   (default 3)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,7 +24,8 @@ run() {
     local name=$1 b=$2 t0
     shift 2
     t0=$(now)
-    "$b/tools/hfshade" "$@" --quiet >/dev/null
+    # shellcheck disable=SC2086 # the flags are words
+    "$b/tools/hfshade" "$@" ${GIS_AB_FLAGS:-} --quiet >/dev/null
     awk -v a="$t0" -v b="$(now)" 'BEGIN {printf "%.3f\n", b - a}' >>"$C/$name.t"
 }
 mkdir -p "$C/a" "$C/b"
