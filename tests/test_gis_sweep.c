@@ -19,6 +19,8 @@
  *   turn      the field turned a quarter (and mirrored), the azimuth with
  *             it: the same angles, bit for bit (the lines turn with it);
  *   threads   1 and 3 workers: the same angles, bit for bit;
+ *   window    angles wanted in [lo, hi] only (a sun's disk): the clamp of
+ *             the whole sweep's, bit for bit;
  *   refused   a non-finite azimuth, a field without heights.
  */
 #include "check.h"
@@ -272,6 +274,39 @@ static void check_turns_threads(void)
     free(a), free(b), free(c), free(z), free(zt), free(zm);
 }
 
+/* A window [lo, hi] (a sun's disk, a wider one, one at the field's
+ * top): each angle the clamp of the whole sweep's, bit for bit, lo where
+ * the ray meets nothing, though the hull's texels above hi skip their own
+ * columns and the others their arctangent. */
+static void check_window(void)
+{
+    const int w = 61, h = 47, n = 5;
+    float *z = field_of(w, h, 7u, 2.0);
+    const hfs_field f = {.width = w, .height = h, .z = z, .dx = 2.5, .zscale = 1.3};
+    const double phi[5] = {0.3, 1.2, 2.9, 4.0, 5.5};
+    const double win[3][2] = {{0.30, 0.31}, {-0.2, 0.6}, {1.2, PI / 2}};
+    const size_t all = (size_t)n * w * h;
+    float *a = malloc(all * sizeof *a), *b = malloc(all * sizeof *b);
+    hfs_error err;
+    CHECK(gis_sweep_horizons(&f, phi, n, 2, a, &err) == HFS_OK, "window: %s", err.msg);
+    for (int k = 0; k < 3; ++k) {
+        const double lo = win[k][0], hi = win[k][1];
+        CHECK(gis_sweep_horizons_in(&f, phi, n, 2, lo, hi, b, &err) == HFS_OK, "window: %s",
+              err.msg);
+        long differ = 0, inside = 0;
+        for (size_t p = 0; p < all; ++p) {
+            const float want = a[p] < lo ? (float)lo : a[p] > hi ? (float)hi : a[p];
+            differ += b[p] != want;
+            inside += a[p] > lo && a[p] < hi;
+        }
+        CHECK(differ == 0 && inside > 0, "window [%g, %g]: %ld of %zu angles differ (%ld inside)",
+              lo, hi, differ, all, inside);
+    }
+    CHECK(gis_sweep_horizons_in(&f, phi, n, 1, 0.5, 0.4, b, &err) == HFS_E_INVALID,
+          "window: lo above hi refused");
+    free(a), free(b), free(z);
+}
+
 static void check_refused(void)
 {
     float z[4] = {0};
@@ -295,6 +330,7 @@ int main(void)
     check_closed_forms();
     check_dome();
     check_turns_threads();
+    check_window();
     check_refused();
     printf("test_gis_sweep: %ld checks, %d failures\n", checks, failures);
     return failures != 0;

@@ -15,15 +15,11 @@ int gis_horizons_get(hfs_renderer *r, int sweep, const hfs_field *field, const h
     if (desc->radius != 0.0)
         return hfs_fail(err, HFS_E_INVALID, "horizons: the sweep searches the whole field "
                         "(radius %g asked)", desc->radius);
-    const int rc = gis_sweep_horizons(field, desc->azimuth, desc->n_azimuths,
-                                      q ? q->threads : 0, out, err);
-    const size_t n = (size_t)desc->n_azimuths * (size_t)field->width * (size_t)field->height;
-    for (size_t p = 0; p < n && !rc && desc->window; ++p) /* as the renderer's window */
-        out[p] = out[p] == HFS_HORIZON_NONE ? (float)desc->lo
-                 : out[p] < desc->lo        ? (float)desc->lo
-                 : out[p] > desc->hi        ? (float)desc->hi
-                                            : out[p];
-    return rc;
+    const int threads = q ? q->threads : 0;
+    return desc->window ? gis_sweep_horizons_in(field, desc->azimuth, desc->n_azimuths, threads,
+                                                desc->lo, desc->hi, out, err)
+                        : gis_sweep_horizons(field, desc->azimuth, desc->n_azimuths, threads, out,
+                                             err);
 }
 
 int gis_horizons_each(hfs_renderer *r, int sweep, const hfs_field *field, const hfs_quality *q,

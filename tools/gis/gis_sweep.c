@@ -9,6 +9,8 @@
 #include <stddef.h>
 #include <stdlib.h>
 
+#define HFS_SWEEP_HALF_PI 1.5707963267948966
+
 /* A crossing this close outside the field's side is on it (ray_bound.c's
  * RAY_EDGE_TOL, so a ray along the last row keeps its crossings). */
 #define EDGE_TOL 1e-3
@@ -198,18 +200,30 @@ static slope piece_max(const piece *p, double m, double zp, slope best)
     return best;
 }
 
-/* Texel (u, v)'s horizon: the bilinear surface along its own ray up to
- * `near` columns, exactly, then the tangent to its line's hull. */
+/* The angles wanted, [lo, hi] radians (hfs_horizon_desc's window; the
+ * whole [-pi/2, pi/2] without one), and as rises per column of the
+ * azimuth at hand (-inf / +inf where they cut nothing). */
+typedef struct sweep_window {
+    double lo, hi, rlo, rhi;
+} sweep_window;
+
+/* Texel (u, v)'s horizon clamped to w: the bilinear surface along its own
+ * ray up to `near` columns, exactly, then the tangent to its line's hull.
+ * A hull that already hides the window's top decides it without the near
+ * columns (they can only raise it), and a rise outside the window needs
+ * no arctangent: the same values as clamping afterwards. */
 static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h, int near, int u,
-                           int v)
+                           int v, const sweep_window *w)
 {
     const int last = last_crossing(d, u, v);
     if (last < 1)
-        return HFS_HORIZON_NONE;
+        return (float)w->lo;
     const double zp = f->zscale * f->z[texel_of(d, u, v)];
     /* the hull first: a steep far horizon leaves the near candidates
      * fewer wins */
     slope best = h->n > 0 && last > near ? hull_tangent(h, u, zp) : (slope){-1.0, 0.0};
+    if (best.den > 0.0 && best.num >= w->rhi * best.den)
+        return (float)w->hi;
     const int own = last < near ? last : near;
     for (int m = 0; m < own; ++m) { /* the cells from column u + m to u + m + 1 */
         piece p[2];
@@ -217,8 +231,12 @@ static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h
         for (int k = 0; k < n; ++k)
             best = piece_max(&p[k], m, zp, best);
     }
-    const double rise = best.den > 0.0 ? best.num / best.den : -HUGE_VAL; /* per column */
-    return (float)atan(rise / d->unit);
+    if (!(best.den > 0.0) || best.num <= w->rlo * best.den)
+        return (float)w->lo;
+    if (best.num >= w->rhi * best.den)
+        return (float)w->hi;
+    const float g = (float)atan(best.num / best.den / d->unit); /* rise per column, then angle */
+    return g < w->lo ? (float)w->lo : g > w->hi ? (float)w->hi : g;
 }
 
 /* Adds line k's surface points from column u to u + 1 (nearer than all
@@ -243,11 +261,20 @@ static void hull_add_cell(const hfs_field *f, const sweep_dir *d, hull *h, int u
     hull_add(h, u, crossing(f, d, u, y));
 }
 
+/* A window's rise per column on a column of `unit` world units: tan(a)
+ * unit, or +-inf at +-pi/2 and beyond (nothing cut there). */
+static double window_rise(double a, double unit)
+{
+    return a >= HFS_SWEEP_HALF_PI ? HUGE_VAL : a <= -HFS_SWEEP_HALF_PI ? -HUGE_VAL : tan(a) * unit;
+}
+
 /* One azimuth: every line k (v = k + r u), walked from the field's end. */
-static void sweep_azimuth(const hfs_field *f, double phi, int near, hull *h, float *out)
+static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, double hi, hull *h,
+                          float *out)
 {
     sweep_dir d;
     dir_make(&d, f, phi);
+    const sweep_window w = {lo, hi, window_rise(lo, d.unit), window_rise(hi, d.unit)};
     const double r = d.r;
     const long k0 = (long)floor(-r * (d.nu - 1)) - 1, k1 = d.nv;
     for (long k = k0; k <= k1; ++k) {
@@ -263,7 +290,7 @@ static void sweep_azimuth(const hfs_field *f, double phi, int near, hull *h, flo
             const double v = ceil((double)k + r * u - 0.5);
             if (v < 0.0 || v > d.nv - 1)
                 continue;
-            out[texel_of(&d, u, (int)v)] = texel_horizon(f, &d, h, near, u, (int)v);
+            out[texel_of(&d, u, (int)v)] = texel_horizon(f, &d, h, near, u, (int)v, &w);
         }
     }
 }
@@ -271,6 +298,7 @@ static void sweep_azimuth(const hfs_field *f, double phi, int near, hull *h, flo
 typedef struct sweep_run {
     const hfs_field *f;
     const double *phi;
+    double lo, hi;
     float *out;
     hull *hulls; /* one per worker */
 } sweep_run;
@@ -280,14 +308,24 @@ static void sweep_row(void *ctx, int k, int worker)
 {
     const sweep_run *s = ctx;
     const size_t texels = (size_t)s->f->width * (size_t)s->f->height;
-    sweep_azimuth(s->f, s->phi[k], GIS_SWEEP_NEAR, &s->hulls[worker], s->out + (size_t)k * texels);
+    sweep_azimuth(s->f, s->phi[k], GIS_SWEEP_NEAR, s->lo, s->hi, &s->hulls[worker],
+                  s->out + (size_t)k * texels);
 }
 
 int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads, float *out,
                        hfs_error *err)
 {
+    return gis_sweep_horizons_in(f, phi, n, threads, -HFS_SWEEP_HALF_PI, HFS_SWEEP_HALF_PI, out,
+                                 err);
+}
+
+int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int threads, double lo,
+                          double hi, float *out, hfs_error *err)
+{
     if (!f || !f->z || f->width < 1 || f->height < 1 || !(f->dx > 0.0) || !phi || n < 0 || !out)
         return hfs_fail(err, HFS_E_INVALID, "sweep: a bad field or azimuths");
+    if (!(lo >= -HFS_SWEEP_HALF_PI && lo <= hi && hi <= HFS_SWEEP_HALF_PI))
+        return hfs_fail(err, HFS_E_INVALID, "sweep: a bad window [%g, %g]", lo, hi);
     for (int k = 0; k < n; ++k)
         if (!isfinite(phi[k]))
             return hfs_fail(err, HFS_E_INVALID, "sweep: azimuth %d is not finite", k);
@@ -305,7 +343,7 @@ int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads
         rc = hulls[w].x && hulls[w].z ? HFS_OK : HFS_E_NOMEM;
     }
     if (!rc) {
-        sweep_run run = {.f = f, .phi = phi, .out = out, .hulls = hulls};
+        sweep_run run = {.f = f, .phi = phi, .lo = lo, .hi = hi, .out = out, .hulls = hulls};
         hfs_parallel_rows(n, workers, sweep_row, &run, NULL, NULL);
     } else {
         hfs_fail(err, rc, "sweep: out of memory for a %dx%d field", f->width, f->height);

@@ -44,4 +44,13 @@
 int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads, float *out,
                        hfs_error *err);
 
+/* The same for the angles in [lo, hi] only (radians, -pi/2 <= lo <= hi <=
+ * pi/2; hfs_horizon_desc's window): each result clamp(gamma, lo, hi), lo
+ * where the ray meets no terrain.  A texel whose line's hull already rises
+ * above hi skips its own columns, and one outside the window its
+ * arctangent (a sun's disk wants 0.53 degrees of them).  [-pi/2, pi/2] is
+ * gis_sweep_horizons. */
+int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int threads, double lo,
+                          double hi, float *out, hfs_error *err);
+
 #endif /* HFS_GIS_SWEEP_H */
