@@ -74,7 +74,7 @@ static void envmap(void)
         F(hfs_gis_dem, hole), F(hfs_gis_dem, has_nodata), F(hfs_gis_dem, nodata),
         F(hfs_gis_dem, cell), F(hfs_gis_dem, zscale);
     S(hfs_gis_site), F(hfs_gis_site, lat), F(hfs_gis_site, lon), F(hfs_gis_site, elevation_m),
-        F(hfs_gis_site, linke);
+        F(hfs_gis_site, linke), F(hfs_gis_site, convergence_deg);
 }
 
 /* The constants the cdef spells as numbers. */

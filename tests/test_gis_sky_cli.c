@@ -13,6 +13,9 @@
  *            south face's below; the same map turned half a turn with
  *            --sky-north 180 is the same sky as its columns rolled by half
  *            the width: the same band 2;
+ *   convergence  the ridge 400 km east of the central meridian: the map's
+ *            azimuths are true ones, turned onto the grid by the grid
+ *            convergence (--sky-north at it gives the meridian's shares);
  *   truth    GLES against the truth's exact horizons, both with the north
  *            sky in 32 azimuths: the share's mean and max difference
  *            within bounds (what remains is the horizons' fp16 search);
@@ -172,6 +175,40 @@ static void test_north(void)
     CHECK(fn / nn > 1.05 && fs / ns < 0.95);
     CHECK(worst <= UNIFORM_TOL);
     free_raster(&iso), free_raster(&nb), free_raster(&tu);
+}
+
+/* The same ridge 400 km east of the zone's central meridian, where grid
+ * north lies about 3.8 degrees east of true north: the map's azimuths are
+ * true ones, so its north sky there with --sky-north at the convergence
+ * lies on the grid as the same sky does on the meridian with --sky-north
+ * 0: the same shares (band 2 over the clear sky's diffuse).  The CPU
+ * reference on both, so that nothing but the sky's placement differs. */
+static void test_convergence(void)
+{
+    float z[W * H];
+    ridge(z);
+    double gt[6];
+    memcpy(gt, utm_gt, sizeof gt);
+    gt[0] += 400000.0;
+    CHECK(gdal_fixture_write("GTiff", tpath("ridge_far.tif"), W, H, z, gt, EPSG_UTM33, 0, 0.0,
+                             GDT_Float32) == 0);
+    REQUIRE(run("insolation ridge.tif %s -o on.tif --backend cpu --sky-map north.pfm", day) == 0 &&
+                run("insolation ridge_far.tif %s -o far0.tif --backend cpu", day) == 0,
+            "insolation on and off the meridian");
+    raster on, far0, far;
+    REQUIRE(read_raster("on.tif", &on) == 0 && read_raster("far0.tif", &far0) == 0, "rasters");
+    const double gamma = meta_num(&far0, "HFS_GRID_CONVERGENCE_DEG");
+    REQUIRE(run("insolation ridge_far.tif %s -o far.tif --backend cpu --sky-map north.pfm "
+                "--sky-north %.9f", day, gamma) == 0, "insolation off the meridian, the map");
+    REQUIRE(read_raster("far.tif", &far) == 0, "far.tif");
+    double worst = 0.0;
+    for (int p = 0; p < W * H; ++p)
+        worst = fmax(worst, fabs(share(&far, p) - share(&on, p)) / share(&on, p));
+    printf("north sky 400 km off the meridian (convergence %.4f deg), --sky-north at it: the "
+           "shares within %.3g of the meridian's\n", gamma, worst);
+    CHECK(gamma > 3.0 && meta_num(&on, "HFS_GRID_CONVERGENCE_DEG") == 0.0);
+    CHECK(worst <= UNIFORM_TOL);
+    free_raster(&on), free_raster(&far0), free_raster(&far);
 }
 
 static void test_truth(void)
@@ -341,6 +378,7 @@ int main(int argc, char **argv)
     test_uniform();
     test_north();
     test_truth();
+    test_convergence();
     test_albedo();
     test_bad();
     return gis_cli_end("test_gis_sky_cli");

@@ -14,6 +14,9 @@
  *            the texels whose ray clears it by a margin V = 1, on the truth
  *            and GLES (the shadow's edge and the wall's foot left out);
  *            with --radius 300 the shadow's far part is lit, none added;
+ *   convergence  a pillar 400 km east of the central meridian: its shadow
+ *            points from the sun's true azimuth turned by the grid
+ *            convergence (HFS_GRID_CONVERGENCE_DEG, the projection's);
  *   gles ~ truth  a geographic DEM of hills (non-square cells, holes), a
  *            low sun: both bands, mean and max difference within bounds;
  *   insolation  a flat DEM over a day in hourly steps (the last one 30
@@ -154,8 +157,8 @@ static double jd_of(const char *local)
     return hfs_solar_julian_day(&t);
 }
 
-/* The WGS84 latitude of the UTM grid's centre. */
-static double utm_centre_lat(void)
+/* The WGS84 longitude and latitude of UTM 33N's (x, y), in place. */
+static void utm_to_lonlat(double *x, double *y)
 {
     OGRSpatialReferenceH a = OSRNewSpatialReference(NULL), b = OSRNewSpatialReference(NULL);
     OSRImportFromEPSG(a, EPSG_UTM33);
@@ -163,11 +166,17 @@ static double utm_centre_lat(void)
     OSRSetAxisMappingStrategy(a, OAMS_TRADITIONAL_GIS_ORDER);
     OSRSetAxisMappingStrategy(b, OAMS_TRADITIONAL_GIS_ORDER);
     OGRCoordinateTransformationH ct = OCTNewCoordinateTransformation(a, b);
-    double x = 500000.0, y = 5200000.0;
-    CHECK(ct && OCTTransform(ct, 1, &x, &y, NULL));
-    CHECK(fabs(x - 15.0) < 1e-9); /* the zone's central meridian */
+    CHECK(ct && OCTTransform(ct, 1, x, y, NULL));
     OCTDestroyCoordinateTransformation(ct);
     OSRDestroySpatialReference(a), OSRDestroySpatialReference(b);
+}
+
+/* The WGS84 latitude of the UTM grid's centre. */
+static double utm_centre_lat(void)
+{
+    double x = 500000.0, y = 5200000.0;
+    utm_to_lonlat(&x, &y);
+    CHECK(fabs(x - 15.0) < 1e-9); /* the zone's central meridian */
     return y;
 }
 
@@ -322,6 +331,55 @@ static void test_wall(void)
     CHECK(full > 150 && cut > 20 && cut < full - 100 && new_shade == 0);
     CHECK(meta_num(&b, "HFS_RADIUS_M") == 300.0);
     free_raster(&a), free_raster(&b);
+}
+
+/* The grid convergence of UTM 33N at easting x, northing y: the angle
+ * from true north to grid north, degrees (the sphere's atan(tan(dlon)
+ * sin(lat)); the ellipsoid's differs by about 1e-5 of it here). */
+static double utm_convergence(double x, double y)
+{
+    utm_to_lonlat(&x, &y);
+    return atan(tan((x - LON0) * RAD) * sin(y * RAD)) / RAD;
+}
+
+/* A pillar 400 m tall on a plain 400 km east of the zone's central
+ * meridian, where grid north lies about 3.9 degrees east of true north:
+ * its shadow points away from the sun's true azimuth turned onto the grid
+ * (A - convergence + 180, grid compass), not from the grid's azimuth A
+ * (the commands before the convergence was taken into account); the
+ * metadata's convergence is the projection's. */
+static void test_convergence(void)
+{
+    float z[W * H];
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i < W; ++i)
+            z[j * W + i] = i >= 48 && i <= 51 && j >= 18 && j <= 21 ? 700.0f : 300.0f;
+    double gt[6];
+    memcpy(gt, utm_gt, sizeof gt);
+    gt[0] += 400000.0;
+    write_dem("pillar.tif", z, gt, EPSG_UTM33);
+    REQUIRE(run("sun pillar.tif --datetime 2026-06-21T07:30+02:00 -o pillar_sun.tif --backend "
+                "cpu") == 0, "sun pillar.tif");
+    raster r;
+    REQUIRE(read_sized("pillar_sun.tif", &r) == 0, "pillar_sun.tif");
+    const double gamma = meta_num(&r, "HFS_GRID_CONVERGENCE_DEG");
+    const double want = utm_convergence(gt[0] + CELL * W / 2, gt[3] - CELL * H / 2);
+    const double az = meta_num(&r, "HFS_SUN_AZIMUTH");
+    double si = 0.0, sj = 0.0;
+    long n = 0;
+    for (int j = 0; j < H; ++j)
+        for (int i = 0; i < W; ++i)
+            if (r.v[W * H + j * W + i] < 0.5f && z[j * W + i] < 500.0f)
+                si += i - 49.5, sj += j - 19.5, ++n;
+    /* grid compass of the shadow's centroid: +i east, +j south */
+    const double shadow = n ? fmod(atan2(si / n, -sj / n) / RAD + 360.0, 360.0) : NAN;
+    const double expect = fmod(az - gamma + 180.0, 360.0);
+    printf("pillar off the meridian: convergence %.5f deg (the projection's %.5f), sun at %.3f, "
+           "shadow (%ld texels) at grid compass %.3f, expected %.3f\n", gamma, want, az, n,
+           shadow, expect);
+    CHECK(fabs(gamma - want) < 0.01 && gamma > 3.0);
+    CHECK(n > 50 && fabs(shadow - expect) < 1.0);
+    free_raster(&r);
 }
 
 /* Hills on a geographic grid (3" cells at 47 N: 63 x 93 m, not square,
@@ -583,6 +641,7 @@ int main(int argc, char **argv)
     lat0 = utm_centre_lat();
     test_flat();
     test_wall();
+    test_convergence();
     test_gles_truth();
     test_insolation();
     test_sky();

@@ -56,6 +56,7 @@ class Sun(util.TempDir):
         band.WriteArray(z)
         ds = None
         self.lon, self.lat = self.site(srs)
+        self.conv = self.convergence(srs)
 
     def site(self, srs):
         """gis_dem_lonlat: the extent's centre (0.5 width, 0.5 height) to
@@ -69,6 +70,28 @@ class Sun(util.TempDir):
         wgs.SetAxisMappingStrategy(osr.OAMS_TRADITIONAL_GIS_ORDER)
         lon, lat, _ = osr.CoordinateTransformation(srs, wgs).TransformPoint(x, y)
         return math.remainder(lon, 360.0), lat
+
+    def convergence(self, srs):
+        """gis_dem_lonlat's grid convergence, as it computes it: the meridian
+        0.001 degrees either side of the centre carried back into the
+        DEM's pixels (square 30 m cells, north-up), its angle from the
+        grid's up axis."""
+        osr = self.osr
+        wgs = osr.SpatialReference()
+        wgs.SetWellKnownGeogCS("WGS84")
+        wgs.SetAxisMappingStrategy(osr.OAMS_TRADITIONAL_GIS_ORDER)
+        back = osr.CoordinateTransformation(wgs, srs)
+        dlat = min(1e-3, 90.0 - abs(self.lat))
+        det = GT[1] * GT[5] - GT[2] * GT[4]
+        px = []
+        for lat in (self.lat - dlat, self.lat + dlat):
+            x, y, _ = back.TransformPoint(self.lon, lat)
+            x, y = x - GT[0], y - GT[3]
+            px.append(((GT[5] * x - GT[2] * y) / det, (GT[1] * y - GT[4] * x) / det))
+        east = (px[1][0] - px[0][0]) * CELL
+        north = -(px[1][1] - px[0][1]) * CELL
+        d = -math.atan2(east, north) * (180.0 / 3.14159265358979323846)
+        return 0.0 if abs(d) < 1e-9 else d
 
     def same(self, got, path, band):
         ds = self.gdal.Open(path)
@@ -91,11 +114,13 @@ class Sun(util.TempDir):
         util.run_cli("sun", self.dem, "-o", out, "--datetime", LOW, "--backend", backend,
                      "--quiet")
         beam, vis = hfshade.sun(self.z, CELL, LOW, self.lat, self.lon, nodata=NODATA,
-                                backend=backend)
+                                backend=backend, convergence=self.conv)
         meta = self.same(beam, out, 1)
         self.same(vis, out, 2)
         self.assertEqual(meta["HFS_SITE_LON"], f"{self.lon:.6f}")
         self.assertEqual(meta["HFS_SITE_LAT"], f"{self.lat:.6f}")
+        self.assertEqual(meta["HFS_GRID_CONVERGENCE_DEG"], f"{self.conv:.6f}")
+        self.assertGreater(self.conv, 0.004)  # east of the central meridian
         # not vacuous: a low sun, cast shadows, partial disks and lit slopes
         self.assertLess(float(meta["HFS_SUN_ELEVATION"]), 15.0)
         v = vis.compressed()
@@ -120,14 +145,15 @@ class Sun(util.TempDir):
         masked = np.ma.MaskedArray(self.z, mask=self.holes)
         with hfshade.Renderer("cpu") as r:
             beam, vis = hfshade.sun(masked, CELL, when, self.lat, self.lon, radius=100,
-                                    linke=4.5, zscale=1.5, renderer=r)
+                                    linke=4.5, zscale=1.5, renderer=r, convergence=self.conv)
             _, far = hfshade.sun(masked, CELL, when, self.lat, self.lon, linke=4.5,
-                                 zscale=1.5, renderer=r)
+                                 zscale=1.5, renderer=r, convergence=self.conv)
         self.same(beam, out, 1)
         self.same(vis, out, 2)
         self.assertGreater(int(np.sum(vis != far)), 0, "the radius cut no shadow")
         high, _ = hfshade.sun(masked, CELL, when, self.lat, self.lon, radius=100, linke=4.5,
-                              zscale=1.5, elevation=2500.0, backend="cpu")
+                              zscale=1.5, elevation=2500.0, backend="cpu",
+                              convergence=self.conv)
         # a site higher up: thinner air, more beam (and less refraction)
         self.assertGreater(float(high.mean()), 1.1 * float(beam.mean()))
 
@@ -136,7 +162,7 @@ class Sun(util.TempDir):
         util.run_cli("sun", self.dem, "-o", out, "--datetime", "2026-06-21T00:00-05:00",
                      "--backend", "cpu", "--quiet")
         beam, vis = hfshade.sun(self.z, CELL, "2026-06-21T05:00Z", self.lat, self.lon,
-                                nodata=NODATA, backend="cpu")
+                                nodata=NODATA, backend="cpu", convergence=self.conv)
         self.same(beam, out, 1)
         self.same(vis, out, 2)
         self.assertEqual(float(np.abs(beam).sum() + np.abs(vis).sum()), 0.0)
@@ -147,7 +173,8 @@ class Sun(util.TempDir):
                      "--step", 60, "--directions", 8, "--backend", backend, "--quiet", *extra)
         with hfshade.Renderer(backend) as r:
             bands = hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, step=60,
-                                       directions=8, nodata=NODATA, renderer=r, **kwargs)
+                                       directions=8, nodata=NODATA, renderer=r,
+                                       convergence=self.conv, **kwargs)
         self.assertEqual(len(bands), 3)
         for k, b in enumerate(bands):
             meta = self.same(b, out, k + 1)
@@ -184,13 +211,14 @@ class Sun(util.TempDir):
                      "--sky-map", pfm, "--sky-north", 30, "--albedo", 0.25)
         bands = hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, step=60,
                                    directions=8, nodata=NODATA, backend="cpu", sky_map=sky,
-                                   sky_north=30, albedo=0.25)
+                                   sky_north=30, albedo=0.25, convergence=self.conv)
         for k, b in enumerate(bands):
             meta = self.same(b, out, k + 1)
         self.assertEqual(meta["HFS_SKY_MAP"], "sky.pfm")
         self.assertEqual(meta["HFS_ALBEDO"], "0.25")
         iso = hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, step=60,
-                                 directions=8, nodata=NODATA, backend="cpu")
+                                 directions=8, nodata=NODATA, backend="cpu",
+                                 convergence=self.conv)
         self.assertEqual(iso[0].tobytes(), bands[0].tobytes())  # the beam is the sun's
         self.assertGreater(float(np.abs(iso[1] - bands[1]).max()), 0.0)
         with self.assertRaisesRegex(hfshade.Error, "sky: pixel .* negative"):
@@ -242,6 +270,8 @@ class Sun(util.TempDir):
             hfshade.sun(z, CELL, LOW, la, lo, linke=0.5, backend="cpu")
         with self.assertRaisesRegex(ValueError, "^elevation: "):
             hfshade.sun(z, CELL, LOW, la, lo, elevation=9500, backend="cpu")
+        with self.assertRaisesRegex(ValueError, "^convergence: "):
+            hfshade.sun(z, CELL, LOW, la, lo, convergence=200, backend="cpu")
         with self.assertRaisesRegex(ValueError, "^step: "):
             hfshade.insolation(z, CELL, *HOURS, la, lo, step=0, backend="cpu")
         with self.assertRaisesRegex(ValueError, "^directions: "):
@@ -274,7 +304,8 @@ class Sun(util.TempDir):
         cases = [((math.nan, 0.0, math.nan, 0.0), "^lat: nan is not a latitude"),
                  ((0.0, 361.0, math.nan, 0.0), "^lon: 361 is not a longitude"),
                  ((0.0, 0.0, -1001.0, 0.0), "^elevation: -1001 m"),
-                 ((0.0, 0.0, math.nan, 10.5), "^linke: 10.5 is not a Linke turbidity")]
+                 ((0.0, 0.0, math.nan, 10.5), "^linke: 10.5 is not a Linke turbidity"),
+                 ((0.0, 0.0, math.nan, 0.0, 181.0), "^convergence: 181 is not an angle")]
         with hfshade.Renderer("cpu") as r:
             for fields, message in cases:
                 site = ffi.new("hfs_gis_site *", fields)
@@ -284,14 +315,14 @@ class Sun(util.TempDir):
             self.assertNotEqual(lib.hfs_gis_sun(r.handle, d.c, ffi.NULL, t, 0.0, buf[0], buf[1],
                                                 err), 0)
             self.assertRegex(ffi.string(err.msg).decode(), "^site: none given")
-            site = ffi.new("hfs_gis_site *", (self.lat, self.lon, math.nan, 0.0))
+            site = ffi.new("hfs_gis_site *", (self.lat, self.lon, math.nan, 0.0, self.conv))
             self.assertNotEqual(lib.hfs_gis_insolation(r.handle, d.c, site, t, t + 3600, 15.0,
                                                        0, 0.0, *buf, err), 0)
             self.assertRegex(ffi.string(err.msg).decode(), "^directions: 0 ")
             # linke 0: r.sun's 3.0, the command's default
             self.assertEqual(lib.hfs_gis_sun(r.handle, d.c, site, t, 0.0, buf[0], buf[1], err), 0)
             beam, _ = hfshade.sun(self.z, CELL, LOW, self.lat, self.lon, nodata=NODATA,
-                                  renderer=r)
+                                  renderer=r, convergence=self.conv)
         self.assertTrue(util.same_bits(out[0], beam.filled()))
 
 

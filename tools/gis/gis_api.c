@@ -262,6 +262,9 @@ static int check_site(const hfs_gis_site *s, hfs_error *err)
     if (!(s->lon >= -360.0 && s->lon <= 360.0))
         return hfs_fail(err, HFS_E_INVALID, "lon: %g is not a longitude in [-360, 360] degrees",
                         s->lon);
+    if (!(s->convergence_deg >= -180.0 && s->convergence_deg <= 180.0))
+        return hfs_fail(err, HFS_E_INVALID, "convergence: %g is not an angle in [-180, 180] "
+                        "degrees", s->convergence_deg);
     if (s->linke != 0.0 && !(s->linke >= HFS_LINKE_MIN && s->linke <= HFS_LINKE_MAX))
         return hfs_fail(err, HFS_E_INVALID, "linke: %g is not a Linke turbidity in [%g, %g]",
                         s->linke, HFS_LINKE_MIN, HFS_LINKE_MAX);
@@ -302,6 +305,8 @@ static int begin_sun(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_site
         rc = begin(r, dem, p, radius, d, c, err);
     if (!rc)
         rc = site_of(site, d, dem->zscale, ss, err);
+    if (!rc)
+        c->convergence_deg = site->convergence_deg;
     return rc;
 }
 
@@ -365,9 +370,11 @@ int hfs_gis_insolation(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_si
                                   radius, NULL, 0, 0, 0.0, 0.0, beam, diffuse, global, err);
 }
 
-/* The sky map of hfs_gis_insolation_sky over the directions' azimuths. */
-static int sky_of(const float *rgb, int w, int h, double north, int directions,
-                  gis_sky_map *out, hfs_error *err)
+/* The sky map of hfs_gis_insolation_sky over the directions' azimuths,
+ * its north at true compass `north` on a grid whose own north lies
+ * `convergence` east of true north. */
+static int sky_of(const float *rgb, int w, int h, double north, double convergence,
+                  int directions, gis_sky_map *out, hfs_error *err)
 {
     if (!(w >= 1 && h >= 1 && (size_t)w * (size_t)h <= ((size_t)1 << 28)))
         return hfs_fail(err, HFS_E_INVALID, "sky: %d x %d is not a map size (1 .. 2^28 "
@@ -375,7 +382,7 @@ static int sky_of(const float *rgb, int w, int h, double north, int directions,
     if (!(north >= -360.0 && north <= 360.0))
         return hfs_fail(err, HFS_E_INVALID, "sky_north: %g is not an angle in [-360, 360] "
                         "degrees", north);
-    return gis_sky_map_make(rgb, w, h, north, directions, "sky", out, err);
+    return gis_sky_map_make(rgb, w, h, north - convergence, directions, "sky", out, err);
 }
 
 int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gis_site *site,
@@ -397,10 +404,11 @@ int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gi
         rc = check_directions(directions, err);
     if (!rc && !(albedo >= 0.0 && albedo <= 1.0))
         rc = hfs_fail(err, HFS_E_INVALID, "albedo: %g is not an albedo in [0, 1]", albedo);
-    if (!rc && sky_rgb && !(rc = sky_of(sky_rgb, sky_w, sky_h, sky_north, directions, &sky, err)))
-        p.sky = &sky;
     if (!rc)
         rc = begin_sun(r, dem, site, HFS_GIS_INSOLATION, radius, &d, &c, &p.site, err);
+    if (!rc && sky_rgb &&
+        !(rc = sky_of(sky_rgb, sky_w, sky_h, sky_north, c.convergence_deg, directions, &sky, err)))
+        p.sky = &sky;
     if (!rc) {
         p.linke = linke_of(site);
         p.sky_directions = directions;

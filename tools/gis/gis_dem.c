@@ -233,8 +233,44 @@ void gis_dem_free(gis_dem *dem)
     memset(dem, 0, sizeof *dem);
 }
 
+/* Pixel (i, j) of CRS point (x, y) by the inverse of dem's geotransform;
+ * 0 when it has no inverse. */
+static int pixel_of(const double *gt, double x, double y, double *i, double *j)
+{
+    const double det = gt[1] * gt[5] - gt[2] * gt[4];
+    if (!(fabs(det) > 0.0))
+        return 0;
+    x -= gt[0], y -= gt[3];
+    *i = (gt[5] * x - gt[2] * y) / det;
+    *j = (gt[1] * y - gt[4] * x) / det;
+    return 1;
+}
+
+/* The grid convergence at (lon, lat) (gis_dem.h): the meridian through
+ * it, 0.001 degrees either way, carried by back (WGS84 to the DEM's CRS)
+ * into the DEM's pixels, then into the north-up map frame of its cells
+ * (x east cx a column, y north cy a row), and the angle of that meridian
+ * from the frame's up axis. */
+static int convergence_of(const gis_dem *dem, OGRCoordinateTransformationH back, double lon,
+                          double lat, double *deg)
+{
+    const double dlat = fmin(1e-3, 90.0 - fabs(lat));
+    double x[2] = {lon, lon}, y[2] = {lat - dlat, lat + dlat}, i[2], j[2];
+    if (!(dlat > 0.0) || !OCTTransform(back, 2, x, y, NULL))
+        return 0;
+    for (int k = 0; k < 2; ++k)
+        if (!isfinite(x[k]) || !isfinite(y[k]) || !pixel_of(dem->gt, x[k], y[k], &i[k], &j[k]))
+            return 0;
+    const double east = dem->ex * (i[1] - i[0]) * dem->cx, north = -dem->ey * (j[1] - j[0]) * dem->cy;
+    if (!(hypot(east, north) > 0.0))
+        return 0;
+    const double d = -atan2(east, north) * (180.0 / 3.14159265358979323846);
+    *deg = fabs(d) < 1e-9 ? 0.0 : d; /* no "-0.000000" on a longitude-latitude grid */
+    return 1;
+}
+
 int gis_dem_lonlat(const gis_dem *dem, const char *path, double *lon, double *lat,
-                   hfs_error *err)
+                   double *convergence_deg, hfs_error *err)
 {
     if (!dem->wkt || !*dem->wkt)
         return hfs_fail(err, HFS_E_INVALID, "%s: no CRS (the sun's position needs the DEM's "
@@ -244,21 +280,26 @@ int gis_dem_lonlat(const gis_dem *dem, const char *path, double *lon, double *la
     CPLPushErrorHandler(CPLQuietErrorHandler);
     OGRSpatialReferenceH src = OSRNewSpatialReference(dem->wkt);
     OGRSpatialReferenceH dst = OSRNewSpatialReference(NULL);
-    OGRCoordinateTransformationH ct = NULL;
+    OGRCoordinateTransformationH ct = NULL, back = NULL;
     if (src && dst && OSRSetWellKnownGeogCS(dst, "WGS84") == OGRERR_NONE) {
         OSRSetAxisMappingStrategy(src, OAMS_TRADITIONAL_GIS_ORDER);
         OSRSetAxisMappingStrategy(dst, OAMS_TRADITIONAL_GIS_ORDER);
         ct = OCTNewCoordinateTransformation(src, dst);
+        back = convergence_deg ? OCTNewCoordinateTransformation(dst, src) : NULL;
     }
-    const int ok = ct && OCTTransform(ct, 1, &x, &y, NULL) && isfinite(x) && isfinite(y) &&
-                   fabs(y) <= 90.0;
+    int ok = ct && OCTTransform(ct, 1, &x, &y, NULL) && isfinite(x) && isfinite(y) &&
+             fabs(y) <= 90.0;
+    if (ok && convergence_deg)
+        ok = back && convergence_of(dem, back, x, y, convergence_deg);
     const char *why = CPLGetLastErrorMsg();
     int rc = ok ? HFS_OK
                 : hfs_fail(err, HFS_E_INVALID, "%s: its centre cannot be transformed to WGS84 "
-                           "longitude and latitude%s%s%s", path, *why ? " (" : "", why,
-                           *why ? ")" : "");
+                           "longitude and latitude, or back to find its north%s%s%s", path,
+                           *why ? " (" : "", why, *why ? ")" : "");
     if (ct)
         OCTDestroyCoordinateTransformation(ct);
+    if (back)
+        OCTDestroyCoordinateTransformation(back);
     OSRDestroySpatialReference(src);
     OSRDestroySpatialReference(dst);
     CPLPopErrorHandler();

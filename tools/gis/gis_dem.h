@@ -99,9 +99,17 @@ void gis_dem_free(gis_dem *dem);
 
 /* The WGS84 longitude and latitude (degrees, east and north positive) of
  * the centre of dem's extent (the geotransform at (w/2, h/2)), through
- * GDAL/OSR (OAMS_TRADITIONAL_GIS_ORDER: longitude first).  0, or an error
- * naming path: a DEM without a CRS, a CRS GDAL cannot transform. */
+ * GDAL/OSR (OAMS_TRADITIONAL_GIS_ORDER: longitude first), and with
+ * convergence_deg not NULL the grid convergence there: the angle from
+ * true north to the grid's north (up the columns of the DEM turned
+ * north-up), degrees, positive where grid north lies east of true north
+ * (a transverse Mercator grid east of its central meridian, north of the
+ * equator: about (lon - lon0) sin(lat)); 0 on a longitude-latitude grid.
+ * So a true compass azimuth A is the grid's A - convergence.  Found by
+ * carrying the meridian 0.001 degrees either side of the centre back into
+ * the DEM's pixels.  0, or an error naming path: a DEM without a CRS, a
+ * CRS GDAL cannot transform either way. */
 int gis_dem_lonlat(const gis_dem *dem, const char *path, double *lon, double *lat,
-                   hfs_error *err);
+                   double *convergence_deg, hfs_error *err);
 
 #endif /* HFS_GIS_DEM_H */

@@ -33,6 +33,10 @@ typedef struct gis_compute {
     int has_relief;
     double relief;
     int sweep;               /* 1: horizons by the sweep (gis_sweep.h), radius 0 */
+    double convergence_deg;  /* sun, insolation: the grid convergence at the
+                                site (gis_dem_lonlat): a true compass azimuth
+                                A is the grid's A - convergence_deg; 0: the
+                                grid's north is true north                */
 } gis_compute;
 
 /* The n_dirs map azimuths of the sky-view factor and openness: ccw-east

@@ -33,11 +33,12 @@ int gis_sun_up(const gis_sun_at *s)
     return s->pos.elevation_deg > 0.0;
 }
 
-void gis_sun_key(const gis_sun_at *s, int ex, int ey, hfs_key_light *k)
+void gis_sun_key(const gis_sun_at *s, int ex, int ey, double convergence_deg, hfs_key_light *k)
 {
     const double alpha = s->alpha_deg * RAD, s2 = sin(alpha) * sin(alpha);
+    const double grid_azimuth = s->pos.azimuth_deg - convergence_deg;
     *k = (hfs_key_light){
-        .phi = gis_grid_phi(gis_phi_of(s->pos.azimuth_deg, GIS_COMPASS), ex, ey),
+        .phi = gis_grid_phi(gis_phi_of(grid_azimuth, GIS_COMPASS), ex, ey),
         .elev = s->pos.elevation_deg * RAD,
         .alpha = alpha,
         .radiance = {(float)(1.0 / s2), (float)(1.0 / s2), (float)(1.0 / s2)}};
@@ -78,7 +79,7 @@ static void sun_scene(const gis_compute *c, const gis_sun_at *s, hfs_lighting *l
 {
     hfs_lighting_defaults(l);
     l->n_key = 1;
-    gis_sun_key(s, c->dem->ex, c->dem->ey, &l->key[0]);
+    gis_sun_key(s, c->dem->ex, c->dem->ey, c->convergence_deg, &l->key[0]);
     quality(q);
 }
 

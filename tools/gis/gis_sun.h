@@ -30,7 +30,10 @@
  *
  * One sun for the whole DEM: the site is the DEM's centre (its longitude,
  * latitude and height); the sun's direction moves about 0.01 degrees per
- * km across a DEM (docs/GIS.md).
+ * km across a DEM (docs/GIS.md).  Its azimuth is turned onto the grid by
+ * the grid convergence at that centre (gis_compute convergence_deg: a
+ * projected grid's north is not true north away from its central
+ * meridian).
  */
 #ifndef HFS_GIS_SUN_H
 #define HFS_GIS_SUN_H
@@ -68,9 +71,12 @@ int gis_sun_compute(double jd, const hfs_solar_site *site, double linke, gis_sun
 int gis_sun_up(const gis_sun_at *s);
 
 /* The sun as a key light on a grid whose +x runs east (ex = 1) or west and
- * +y south (ey = 1) or north (gis_grid_phi): SPEC's phi from the compass
- * azimuth, the apparent elevation, alpha, Le = 1 / sin^2(alpha). */
-void gis_sun_key(const gis_sun_at *s, int ex, int ey, hfs_key_light *k);
+ * +y south (ey = 1) or north (gis_grid_phi), its north convergence_deg
+ * east of true north (gis_dem_lonlat; 0: true north): SPEC's phi from the
+ * compass azimuth less the convergence, the apparent elevation, alpha, Le
+ * = 1 / sin^2(alpha). */
+void gis_sun_key(const gis_sun_at *s, int ex, int ey, double convergence_deg,
+                 hfs_key_light *k);
 
 /* `hfshade sun` at sun s: beam[w*h] = beam_normal * f (W/m^2) and vis[w*h]
  * = V, on the input's grid (the input's holes: c->nodata).  A sun not up

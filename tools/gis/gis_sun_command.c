@@ -30,8 +30,8 @@ static void utc_string(const hfs_solar_time *t, char *buf, size_t n)
 static int site_of(gis_run *r, hfs_error *err)
 {
     const gis_args *a = r->a;
-    double lon = 0.0, lat = 0.0;
-    const int rc = gis_dem_lonlat(&r->dem, a->dem, &lon, &lat, err);
+    double lon = 0.0, lat = 0.0, convergence = 0.0;
+    const int rc = gis_dem_lonlat(&r->dem, a->dem, &lon, &lat, &convergence, err);
     if (rc)
         return rc;
     const double z = r->dem.centre_z * a->zscale;
@@ -40,8 +40,10 @@ static int site_of(gis_run *r, hfs_error *err)
                         "-1000..9000 m (the site of the sun and the clear sky; heights not "
                         "in metres? --zscale)", a->dem, z);
     r->site = (hfs_solar_site){.lat_deg = lat, .lon_deg = lon, .elevation_m = z};
+    r->c.convergence_deg = convergence;
     gis_run_meta(r, "HFS_SITE_LON=%.6f", lon);
     gis_run_meta(r, "HFS_SITE_LAT=%.6f", lat);
+    gis_run_meta(r, "HFS_GRID_CONVERGENCE_DEG=%.6f", convergence);
     gis_run_meta(r, "HFS_SITE_ELEVATION_M=%.6g", z);
     gis_run_meta(r, "HFS_LINKE=%.6g", a->linke);
     gis_run_meta(r, "HFS_RADIUS_M=%.9g", a->radius);
@@ -77,8 +79,9 @@ static int load_sky(gis_run *r, hfs_error *err)
     int rc = hfs_envmap_load(a->sky_map, &m, err);
     if (rc)
         return rc;
-    rc = gis_sky_map_make(m.rgb, m.width, m.height, a->sky_north, a->directions, a->sky_map,
-                          &r->sky, err);
+    /* the map's azimuths are true compass ones, the sectors the grid's */
+    rc = gis_sky_map_make(m.rgb, m.width, m.height, a->sky_north - r->c.convergence_deg,
+                          a->directions, a->sky_map, &r->sky, err);
     hfs_envmap_free(&m);
     if (rc)
         return rc;

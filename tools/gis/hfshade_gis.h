@@ -112,6 +112,17 @@ typedef struct hfs_gis_site {
                                  * hole) times zscale, the commands' site      */
     double linke;               /* Linke turbidity [1, 10]; 0: 3.0 (r.sun's
                                  * default, the commands')                   */
+    double convergence_deg;     /* [-180, 180]: the grid convergence there,
+                                 * the angle from true north to the grid's
+                                 * north (up its columns), positive where grid
+                                 * north lies east of true north (a UTM grid
+                                 * east of its central meridian, in the north);
+                                 * a true compass azimuth A is the grid's A -
+                                 * convergence_deg.  The commands': computed
+                                 * at the site through the DEM's CRS
+                                 * (HFS_GRID_CONVERGENCE_DEG); 0: the grid's
+                                 * up is true north (a longitude-latitude
+                                 * grid, or on the central meridian)        */
 } hfs_gis_site;
 
 /* Instants are seconds since 1970-01-01T00:00:00Z (POSIX time: no leap

@@ -216,7 +216,7 @@ typedef enum hfs_gis_product {
 } hfs_gis_product;
 
 typedef struct hfs_gis_site {
-    double lat, lon, elevation_m, linke;
+    double lat, lon, elevation_m, linke, convergence_deg;
 } hfs_gis_site;
 
 float hfs_gis_nodata(const hfs_gis_dem *dem, hfs_gis_product product);

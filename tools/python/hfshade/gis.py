@@ -224,18 +224,19 @@ def _instant(name, value):
     return float(d.days * 86400 + d.seconds) + d.microseconds / 1e6
 
 
-def _site(lat, lon, elevation, linke):
+def _site(lat, lon, elevation, linke, convergence):
     site = ffi.new("hfs_gis_site *")
     site.lat = number("lat", lat, -90.0, 90.0)
     site.lon = number("lon", lon, -360.0, 360.0)
     site.elevation_m = math.nan if elevation is None else number("elevation", elevation,
                                                                  -1000.0, 9000.0)
     site.linke = number("linke", linke, 1.0, 10.0)
+    site.convergence_deg = number("convergence", convergence, -180.0, 180.0)
     return site
 
 
 def sun(dem, cell_size, when, lat, lon, *, elevation=None, linke=3.0, radius=0.0, zscale=1.0,
-        nodata=None, backend="gles", renderer=None, method="exact"):
+        nodata=None, backend="gles", renderer=None, method="exact", convergence=0.0):
     """The sun at one instant, as `hfshade sun --datetime WHEN`'s bands 1 and
     2: returns (beam, visible).
 
@@ -248,9 +249,14 @@ def sun(dem, cell_size, when, lat, lon, *, elevation=None, linke=3.0, radius=0.0
     the centre of the DEM's extent); elevation: its height in metres, None
     = the DEM's centre texel times zscale (the command's).  radius: metres;
     0 or None: shadows from as far as they reach, else none cast from
-    farther (`--radius`; refused with the truth).  Other arguments as svf()."""
+    farther (`--radius`; refused with the truth).  convergence: degrees, the
+    angle from true north to the grid's north (up its columns) at the site,
+    positive where grid north lies east of true north (a UTM grid east of
+    its central meridian, in the north): the command's
+    HFS_GRID_CONVERGENCE_DEG, from the DEM's CRS; 0 (the default) for a
+    grid whose up is true north.  Other arguments as svf()."""
     d = _Dem(dem, cell_size, zscale, nodata)
-    site = _site(lat, lon, elevation, linke)
+    site = _site(lat, lon, elevation, linke, convergence)
     t = _instant("when", when)
     rad = _radius(radius)
     beam = np.empty(d.shape, dtype=np.float32)
@@ -266,7 +272,8 @@ def sun(dem, cell_size, when, lat, lon, *, elevation=None, linke=3.0, radius=0.0
 
 def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16, radius=0.0,
                elevation=None, linke=3.0, zscale=1.0, nodata=None, backend="gles",
-               renderer=None, sky_map=None, sky_north=0.0, albedo=0.0, method="exact"):
+               renderer=None, sky_map=None, sky_north=0.0, albedo=0.0, method="exact",
+               convergence=0.0):
     """Clear-sky irradiation over [start, end), Wh/m^2, as `hfshade
     insolation --from START --to END`'s bands 1, 2, 3: returns
     (beam, diffuse, global_).
@@ -278,18 +285,19 @@ def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16
     of an isotropic sky each texel gets under the terrain's horizons in
     `directions` azimuths (1..1024, default 16); global_: their sum.
     radius: metres, also the sky's horizons' search (0 or None: to the
-    DEM's edge).  start, end, lat, lon, elevation, linke as sun()'s; other
-    arguments as svf().
+    DEM's edge).  start, end, lat, lon, elevation, linke, convergence as
+    sun()'s; other arguments as svf().
 
     sky_map: the sky's shape instead of an isotropic sky (`--sky-map`): an
     (h, w, 3) linear RGB equirectangular map, row 0 the zenith, its upper
     half finite, >= 0 and not all black; column u looks at compass azimuth
-    sky_north + 360 u degrees (`--sky-north`, default 0: north).  The clear
+    sky_north + 360 u degrees (`--sky-north`, default 0: true north; the
+    grid's convergence turns it onto the grid).  The clear
     sky still gives the diffuse light's amount at each step.  albedo: the
     ground's, 0..1 (`--albedo`); global_ then adds the light the ground and
     the terrain reflect onto the texel (r.sun's refl_rad; 0: none)."""
     d = _Dem(dem, cell_size, zscale, nodata)
-    site = _site(lat, lon, elevation, linke)
+    site = _site(lat, lon, elevation, linke, convergence)
     t0, t1 = _instant("start", start), _instant("end", end)
     minutes = number("step", step, 0.0, 1e9)
     if minutes <= 0.0:
