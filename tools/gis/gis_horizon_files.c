@@ -43,15 +43,13 @@ int gis_horizon_files_create(gis_horizon_files **out, const gis_run *r, hfs_erro
     slots = slots > (size_t)r->a->n_azimuths ? (size_t)r->a->n_azimuths : slots;
     f->slots = slots < 1 ? 1 : (int)slots;
     f->q = calloc((size_t)f->slots, sizeof *f->q);
-    for (int s = 0; f->q && s < f->slots; ++s)
-        if (!(f->q[s].deg = malloc(f->texels * sizeof(float)))) {
-            gis_horizon_files_destroy(f);
-            return hfs_fail(err, HFS_E_NOMEM, "horizon: out of memory for %d rasters",
-                            f->slots);
-        }
-    if (!f->q) {
+    int made = f->q != NULL;
+    for (int s = 0; made && s < f->slots; ++s)
+        made = (f->q[s].deg = malloc(f->texels * sizeof(float))) != NULL;
+    if (!made) {
+        const int n = f->slots;
         gis_horizon_files_destroy(f);
-        return hfs_fail(err, HFS_E_NOMEM, "horizon: out of memory");
+        return hfs_fail(err, HFS_E_NOMEM, "horizon: out of memory for %d rasters", n);
     }
     *out = f;
     return HFS_OK;
