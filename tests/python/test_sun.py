@@ -82,12 +82,11 @@ class Sun(util.TempDir):
         wgs.SetAxisMappingStrategy(osr.OAMS_TRADITIONAL_GIS_ORDER)
         back = osr.CoordinateTransformation(wgs, srs)
         dlat = min(1e-3, 90.0 - abs(self.lat))
-        det = GT[1] * GT[5] - GT[2] * GT[4]
+        inv = self.gdal.InvGeoTransform(GT)
         px = []
         for lat in (self.lat - dlat, self.lat + dlat):
             x, y, _ = back.TransformPoint(self.lon, lat)
-            x, y = x - GT[0], y - GT[3]
-            px.append(((GT[5] * x - GT[2] * y) / det, (GT[1] * y - GT[4] * x) / det))
+            px.append(self.gdal.ApplyGeoTransform(inv, x, y))
         east = (px[1][0] - px[0][0]) * CELL
         north = -(px[1][1] - px[0][1]) * CELL
         d = -math.atan2(east, north) * (180.0 / 3.14159265358979323846)

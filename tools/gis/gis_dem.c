@@ -233,19 +233,6 @@ void gis_dem_free(gis_dem *dem)
     memset(dem, 0, sizeof *dem);
 }
 
-/* Pixel (i, j) of CRS point (x, y) by the inverse of dem's geotransform;
- * 0 when it has no inverse. */
-static int pixel_of(const double *gt, double x, double y, double *i, double *j)
-{
-    const double det = gt[1] * gt[5] - gt[2] * gt[4];
-    if (!(fabs(det) > 0.0))
-        return 0;
-    x -= gt[0], y -= gt[3];
-    *i = (gt[5] * x - gt[2] * y) / det;
-    *j = (gt[1] * y - gt[4] * x) / det;
-    return 1;
-}
-
 /* The grid convergence at (lon, lat) (gis_dem.h): the meridian through
  * it, 0.001 degrees either way, carried by back (WGS84 to the DEM's CRS)
  * into the DEM's pixels, then into the north-up map frame of its cells
@@ -255,12 +242,15 @@ static int convergence_of(const gis_dem *dem, OGRCoordinateTransformationH back,
                           double lat, double *deg)
 {
     const double dlat = fmin(1e-3, 90.0 - fabs(lat));
-    double x[2] = {lon, lon}, y[2] = {lat - dlat, lat + dlat}, i[2], j[2];
-    if (!(dlat > 0.0) || !OCTTransform(back, 2, x, y, NULL))
+    double x[2] = {lon, lon}, y[2] = {lat - dlat, lat + dlat}, i[2], j[2], inv[6];
+    if (!(dlat > 0.0) || !OCTTransform(back, 2, x, y, NULL) ||
+        !GDALInvGeoTransform((double *)dem->gt, inv))
         return 0;
-    for (int k = 0; k < 2; ++k)
-        if (!isfinite(x[k]) || !isfinite(y[k]) || !pixel_of(dem->gt, x[k], y[k], &i[k], &j[k]))
+    for (int k = 0; k < 2; ++k) {
+        if (!isfinite(x[k]) || !isfinite(y[k]))
             return 0;
+        GDALApplyGeoTransform(inv, x[k], y[k], &i[k], &j[k]);
+    }
     const double east = dem->ex * (i[1] - i[0]) * dem->cx, north = -dem->ey * (j[1] - j[0]) * dem->cy;
     if (!(hypot(east, north) > 0.0))
         return 0;
