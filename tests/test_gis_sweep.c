@@ -18,9 +18,11 @@
  *             the line has columns (the hull's storage, under ASan);
  *   turn      the field turned a quarter (and mirrored), the azimuth with
  *             it: the same angles, bit for bit (the lines turn with it);
- *   threads   1 and 3 workers: the same angles, bit for bit;
+ *   threads   1 and 3 workers: the same angles, bit for bit; and each
+ *             azimuth alone, its lines in parts among 3 or 7 workers;
  *   window    angles wanted in [lo, hi] only (a sun's disk): the clamp of
- *             the whole sweep's, bit for bit;
+ *             the whole sweep's, bit for bit, though a high sun's lines
+ *             skip what their bounds say cannot reach the window;
  *   refused   a non-finite azimuth, a field without heights.
  */
 #include "check.h"
@@ -256,6 +258,15 @@ static void check_turns_threads(void)
               gis_sweep_horizons(&f, phi, n, 3, b, &err) == HFS_OK,
           "threads: %s", err.msg);
     CHECK(!memcmp(a, b, n * texels * sizeof *a), "threads: 1 and 3 workers differ");
+    /* one azimuth at a time: its lines in parts among the workers (7
+     * workers: more parts than this field has lines) */
+    long alone_diff = 0;
+    for (int k = 0; k < n; ++k)
+        for (int t = 3; t <= 7; t += 4) {
+            CHECK(gis_sweep_horizons(&f, &phi[k], 1, t, c, &err) == HFS_OK, "alone: %s", err.msg);
+            alone_diff += memcmp(a + (size_t)k * texels, c, texels * sizeof *c) != 0;
+        }
+    CHECK(alone_diff == 0, "threads: %ld azimuths alone differ from all at once", alone_diff);
     CHECK(gis_sweep_horizons(&ft, phi_t, n, 2, c, &err) == HFS_OK, "turn: %s", err.msg);
     long turn_diff = 0, mirror_diff = 0;
     for (int k = 0; k < n; ++k)
@@ -284,12 +295,14 @@ static void check_window(void)
     float *z = field_of(w, h, 7u, 2.0);
     const hfs_field f = {.width = w, .height = h, .z = z, .dx = 2.5, .zscale = 1.3};
     const double phi[5] = {0.3, 1.2, 2.9, 4.0, 5.5};
-    const double win[3][2] = {{0.30, 0.31}, {-0.2, 0.6}, {1.2, PI / 2}};
+    /* suns at 17 to 69 degrees (lines that skip their hull, their own
+     * columns or both: line_below), a wide window, one at the top */
+    const double win[5][2] = {{0.30, 0.31}, {0.7, 0.71}, {1.0, 1.01}, {-0.2, 0.6}, {1.2, PI / 2}};
     const size_t all = (size_t)n * w * h;
     float *a = malloc(all * sizeof *a), *b = malloc(all * sizeof *b);
     hfs_error err;
     CHECK(gis_sweep_horizons(&f, phi, n, 2, a, &err) == HFS_OK, "window: %s", err.msg);
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 5; ++k) {
         const double lo = win[k][0], hi = win[k][1];
         CHECK(gis_sweep_horizons_in(&f, phi, n, 2, lo, hi, b, &err) == HFS_OK, "window: %s",
               err.msg);

@@ -9,6 +9,8 @@
 #include "field_geom.h"
 #include "gis_horizons.h"
 #include "gis_resample.h"
+#include "lights.h"
+#include "parallel.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -16,6 +18,9 @@
 
 #define PI 3.14159265358979323846
 #define RAD (PI / 180.0)
+
+/* Texels below which a step's per-texel work stays on the calling thread. */
+#define SUN_TEXELS_THREADED 16384
 
 int gis_sun_compute(double jd, const hfs_solar_site *site, double linke, gis_sun_at *out)
 {
@@ -135,14 +140,65 @@ static double relief_of(const gis_compute *c)
     return hi >= lo ? c->zscale * ((double)hi - (double)lo) : 0.0;
 }
 
-/* The same f and V through one horizon: the unshadowed f (the exact cap,
- * hfs_render_unshadowed) times the disk's fraction above the horizon at
- * the sun's azimuth (gis_disk_visible), the horizon searched only as far
- * as terrain can shadow the disk's lowest point (gis_shadow_reach) and
- * only for angles across the disk (the desc's window): a high sun's
- * search ends within a few reads, where a frame's key-light passes search
- * the whole field at every step. */
-static int sun_factor_horizon(const gis_compute *c, const gis_sun_at *s, double relief,
+/* What every step of a product shares: the square grid's normals and
+ * relief. */
+typedef struct sun_ground {
+    double *normal; /* 3 a texel */
+    double relief;
+} sun_ground;
+
+static int ground_make(const gis_compute *c, sun_ground *g, hfs_error *err)
+{
+    const hfs_field field = field_of(c);
+    const size_t n = (size_t)field.width * (size_t)field.height;
+    g->relief = relief_of(c);
+    g->normal = malloc(3 * n * sizeof *g->normal);
+    if (!g->normal)
+        return hfs_fail(err, HFS_E_NOMEM, "sun: out of memory");
+    for (size_t p = 0; p < n; ++p)
+        hfs_field_normal(&field, (int)(p % (size_t)field.width), (int)(p / (size_t)field.width),
+                         g->normal + 3 * p);
+    return HFS_OK;
+}
+
+/* One step's texels: f and V from the horizon at the sun's azimuth. */
+typedef struct sun_texels {
+    const double *normal;
+    const float *gamma;
+    hfs_key_light key;
+    double dir[3]; /* towards the disk's centre */
+    float *f, *vis;
+} sun_texels;
+
+/* The unshadowed f is the exact cap's irradiance over the disk's own
+ * (hfs_render_unshadowed's, albedo 1: E / (pi sin^2 alpha)), times the
+ * disk's fraction above the horizon. */
+static void sun_texel_range(void *ctx, size_t begin, size_t end, int chunk)
+{
+    const sun_texels *t = ctx;
+    const hfs_key_light *k = &t->key;
+    const double s = sin(k->alpha), disk = PI * s * s;
+    (void)chunk;
+    for (size_t p = begin; p < end; ++p) {
+        const double *n = t->normal + 3 * p;
+        const double nd = n[0] * t->dir[0] + n[1] * t->dir[1] + n[2] * t->dir[2];
+        const double fu = hfs_cap_irradiance(nd, k->alpha) / disk;
+        const double v = gis_disk_visible(n, k->phi, k->elev, k->alpha, t->gamma[p]);
+        t->f[p] = (float)(fmax(fu, 0.0) * v);
+        if (t->vis)
+            t->vis[p] = fu > GIS_SUN_SELF_SHADOW ? (float)v : 0.0f;
+    }
+}
+
+/* The same f and V through one horizon: the unshadowed f (the exact cap)
+ * times the disk's fraction above the horizon at the sun's azimuth
+ * (gis_disk_visible), the horizon searched only as far as terrain can
+ * shadow the disk's lowest point (gis_shadow_reach) and only for angles
+ * across the disk (the desc's window): a high sun's search ends within a
+ * few reads, where a frame's key-light passes search the whole field at
+ * every step.  The texels on all cores (parallel.h: the same bits for any
+ * count). */
+static int sun_factor_horizon(const gis_compute *c, const gis_sun_at *s, const sun_ground *g,
                               float *f, float *vis, hfs_error *err)
 {
     const hfs_field field = field_of(c);
@@ -150,8 +206,8 @@ static int sun_factor_horizon(const gis_compute *c, const gis_sun_at *s, double 
     hfs_quality q;
     sun_scene(c, s, &l, &q);
     const double low = l.key[0].elev - l.key[0].alpha, high = l.key[0].elev + l.key[0].alpha;
-    const double reach = fmin(gis_shadow_reach(relief, low), c->radius > 0.0 ? c->radius
-                                                                              : HUGE_VAL);
+    const double reach = fmin(gis_shadow_reach(g->relief, low), c->radius > 0.0 ? c->radius
+                                                                                 : HUGE_VAL);
     const hfs_horizon_desc desc = {.n_azimuths = 1, .azimuth = &l.key[0].phi,
                                    /* the sweep reads the whole field: the window's
                                     * clamp makes what lies beyond the reach moot */
@@ -159,39 +215,27 @@ static int sun_factor_horizon(const gis_compute *c, const gis_sun_at *s, double 
                                                  ? fmax(reach, 2.0 * field.dx) : 0.0,
                                    .window = 1, .lo = fmax(low, -PI / 2), .hi = fmin(high, PI / 2)};
     const size_t n = (size_t)field.width * (size_t)field.height;
-    hfs_image open = {0};
     float *gamma = malloc(n * sizeof *gamma);
-    int rc = gamma ? hfs_image_alloc(&open, field.width, field.height, err)
-                   : hfs_fail(err, HFS_E_NOMEM, "sun: out of memory");
-    if (!rc)
-        rc = hfs_render_unshadowed(&field, &l, &q, &open, err);
+    int rc = gamma ? HFS_OK : hfs_fail(err, HFS_E_NOMEM, "sun: out of memory");
     if (!rc)
         rc = gis_horizons_get(c->r, c->sweep, &field, &q, &desc, gamma, err);
-    for (size_t p = 0; p < n && !rc; ++p) {
-        const double fu = factor_of(&l.key[0], open.rgb[3 * p]);
-        double nrm[3] = {0.0, 0.0, 1.0};
-        if (gis_disk_cut(l.key[0].elev, l.key[0].alpha, gamma[p])) /* only a cut disk asks */
-            hfs_field_normal(&field, (int)(p % (size_t)field.width),
-                             (int)(p / (size_t)field.width), nrm);
-        const double v = gis_disk_visible(nrm, l.key[0].phi, l.key[0].elev, l.key[0].alpha,
-                                          gamma[p]);
-        f[p] = (float)(fmax(fu, 0.0) * v);
-        if (vis)
-            vis[p] = fu > GIS_SUN_SELF_SHADOW ? (float)v : 0.0f;
+    if (!rc) {
+        sun_texels t = {.normal = g->normal, .gamma = gamma, .key = l.key[0], .f = f, .vis = vis};
+        hfs_dir(t.key.phi, t.key.elev, t.dir);
+        hfs_parallel_ranges(n, SUN_TEXELS_THREADED, sun_texel_range, &t);
     }
     free(gamma);
-    hfs_image_free(&open);
     return rc;
 }
 
 /* f and V by the backend's path: the truth renders its exact disk, the
  * others search the horizon. */
-static int sun_factor(const gis_compute *c, const gis_sun_at *s, double relief, float *f,
+static int sun_factor(const gis_compute *c, const gis_sun_at *s, const sun_ground *g, float *f,
                       float *vis, hfs_error *err)
 {
     if (!c->sweep && !strcmp(hfs_renderer_backend_name(c->r), "truth"))
         return sun_factor_render(c, s, f, vis, err);
-    return sun_factor_horizon(c, s, relief, f, vis, err);
+    return sun_factor_horizon(c, s, g, f, vis, err);
 }
 
 int gis_product_sun(const gis_compute *c, const gis_sun_at *s, float *beam, float *vis,
@@ -200,9 +244,11 @@ int gis_product_sun(const gis_compute *c, const gis_sun_at *s, float *beam, floa
     const gis_dem *d = c->dem;
     const size_t n = (size_t)d->sw * (size_t)d->sh;
     float *f = calloc(n, sizeof *f), *v = calloc(n, sizeof *v);
+    sun_ground g = {0};
     int rc = f && v ? HFS_OK : hfs_fail(err, HFS_E_NOMEM, "sun: out of memory");
-    if (!rc && gis_sun_up(s))
-        rc = sun_factor(c, s, relief_of(c), f, v, err);
+    if (!rc && gis_sun_up(s) && !(rc = ground_make(c, &g, err)))
+        rc = sun_factor(c, s, &g, f, v, err);
+    free(g.normal);
     if (!rc) {
         for (size_t p = 0; p < n; ++p)
             f[p] = (float)(s->beam_normal * f[p]);
@@ -329,22 +375,23 @@ static int beam_sum(const gis_compute *c, const gis_period *p, double *acc, floa
                     hfs_error *err)
 {
     const size_t n = (size_t)c->dem->sw * (size_t)c->dem->sh;
-    const double relief = relief_of(c);
-    for (long k = 0; k < p->n_steps; ++k) {
+    sun_ground g = {0};
+    int rc = ground_make(c, &g, err);
+    for (long k = 0; k < p->n_steps && !rc; ++k) {
         double jd, hours;
         gis_sun_at s;
         gis_period_step(p, k, &jd, &hours);
-        if (gis_sun_compute(jd, &p->site, p->linke, &s))
-            return hfs_fail(err, HFS_E_INVALID, "insolation: no sun for step %ld", k + 1);
-        if (!(s.beam_normal > 0.0))
+        if (gis_sun_compute(jd, &p->site, p->linke, &s)) {
+            rc = hfs_fail(err, HFS_E_INVALID, "insolation: no sun for step %ld", k + 1);
+            break;
+        }
+        if (!(s.beam_normal > 0.0) || (rc = sun_factor(c, &s, &g, f, NULL, err)))
             continue;
-        const int rc = sun_factor(c, &s, relief, f, NULL, err);
-        if (rc)
-            return rc;
         for (size_t q = 0; q < n; ++q)
             acc[q] += s.beam_normal * f[q] * hours;
     }
-    return HFS_OK;
+    free(g.normal);
+    return rc;
 }
 
 int gis_product_insolation(const gis_compute *c, const gis_period *p, float *beam,

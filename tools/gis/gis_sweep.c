@@ -211,9 +211,11 @@ typedef struct sweep_window {
  * ray up to `near` columns, exactly, then the tangent to its line's hull.
  * A hull that already hides the window's top decides it without the near
  * columns (they can only raise it), and a rise outside the window needs
- * no arctangent: the same values as clamping afterwards. */
-static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h, int near, int u,
-                           int v, const sweep_window *w)
+ * no arctangent: the same values as clamping afterwards.  Without
+ * exact_near the own columns are left out (line_below's bound: they
+ * cannot reach the window). */
+static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h, int near,
+                           int exact_near, int u, int v, const sweep_window *w)
 {
     const int last = last_crossing(d, u, v);
     if (last < 1)
@@ -224,7 +226,7 @@ static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h
     slope best = h->n > 0 && last > near ? hull_tangent(h, u, zp) : (slope){-1.0, 0.0};
     if (best.den > 0.0 && best.num >= w->rhi * best.den)
         return (float)w->hi;
-    const int own = last < near ? last : near;
+    const int own = !exact_near ? 0 : last < near ? last : near;
     for (int m = 0; m < own; ++m) { /* the cells from column u + m to u + m + 1 */
         piece p[2];
         const int n = pieces_of(f, d, u + m, v + m * d->r, p);
@@ -268,20 +270,74 @@ static double window_rise(double a, double unit)
     return a >= HFS_SWEEP_HALF_PI ? HUGE_VAL : a <= -HFS_SWEEP_HALF_PI ? -HUGE_VAL : tan(a) * unit;
 }
 
-/* One azimuth: every line k (v = k + r u), walked from the field's end. */
-static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, double hi, hull *h,
-                          float *out)
+/* What line k's texels can see below the window's bottom rlo (a rise per
+ * column, > 0: a sun's disk above the horizontal), from bounds alone:
+ *   - its hull's points (at least `near` columns from the texel that asks)
+ *     rise at most zmax - zmin above it, the extremes of the rows about
+ *     the line (bilinear heights lie within their cell's corners);
+ *   - along its texels' own rays (at most half a row aside) every chord,
+ *     and the slope leaving the texel, rises at most du + r dv a column,
+ *     the largest differences along u and v of the cells the rays cross
+ *     (rows floor(y) - 2 .. floor(y) + 3 about the line at y = k + r u).
+ * Where a bound stays below rlo, with eps for the candidates' rounding
+ * (their denominators are at least a column), that part cannot reach the
+ * window: *use_hull / *own say whether each is still wanted.  A high sun's
+ * lines skip both, and the result is the same as the whole search's. */
+static void line_below(const hfs_field *f, const sweep_dir *d, long k, double rlo, int near,
+                       int *use_hull, int *own)
+{
+    const double zs = f->zscale;
+    double zmin = HUGE_VAL, zmax = -HUGE_VAL, du = 0.0, dv = 0.0, zabs = 0.0; /* rises >= 0 */
+    for (int u = 0; u < d->nu; ++u) {
+        const double y = (double)k + d->r * u;
+        if (y < -1.5 || y > d->nv + 0.5) /* no texel's ray, no hull point */
+            continue;
+        const int j0 = (int)fmax(floor(y) - 2.0, 0.0), j1 = (int)fmin(floor(y) + 3.0, d->nv - 1);
+        double prev = 0.0;
+        for (int j = j0; j <= j1; ++j) {
+            const double z = zs * f->z[texel_of(d, u, j)];
+            zmin = fmin(zmin, z), zmax = fmax(zmax, z), zabs = fmax(zabs, fabs(z));
+            if (j > j0)
+                dv = fmax(dv, z - prev);
+            if (u + 1 < d->nu)
+                du = fmax(du, zs * f->z[texel_of(d, u + 1, j)] - z);
+            prev = z;
+        }
+        const double eps = 1e-9 * (1.0 + zabs);
+        if (zmax - zmin + eps >= rlo * near && du + d->r * dv + eps >= rlo)
+            break; /* neither bound can hold */
+    }
+    const double eps = 1e-9 * (1.0 + zabs);
+    *use_hull = !(zmax - zmin + eps < rlo * near);
+    *own = !(du + d->r * dv + eps < rlo);
+}
+
+/* The lines of an azimuth's sweep: k0..k1 (v = k + r u), each walked from
+ * the field's end. */
+static void sweep_lines(const sweep_dir *d, long *k0, long *k1)
+{
+    *k0 = (long)floor(-d->r * (d->nu - 1)) - 1;
+    *k1 = d->nv;
+}
+
+/* One azimuth's lines k in [ka, kb): each walked from the field's end.
+ * Each texel is written by exactly one line (the one nearest its own),
+ * so any split of the lines gives the same values. */
+static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, double hi, long ka,
+                          long kb, hull *h, float *out)
 {
     sweep_dir d;
     dir_make(&d, f, phi);
     const sweep_window w = {lo, hi, window_rise(lo, d.unit), window_rise(hi, d.unit)};
     const double r = d.r;
-    const long k0 = (long)floor(-r * (d.nu - 1)) - 1, k1 = d.nv;
-    for (long k = k0; k <= k1; ++k) {
+    for (long k = ka; k < kb; ++k) {
+        int use_hull = 1, own = 1;
+        if (w.rlo > 0.0)
+            line_below(f, &d, k, w.rlo, near, &use_hull, &own);
         h->n = 0;
         for (int u = d.nu - 1; u >= 0; --u) {
             const int ui = u + near; /* the column that joins the hull now */
-            if (ui <= d.nu - 1) {
+            if (use_hull && ui <= d.nu - 1) {
                 const double y = (double)k + r * ui;
                 if (y >= -EDGE_TOL && y <= d.nv - 1 + EDGE_TOL)
                     hull_add_cell(f, &d, h, ui, y);
@@ -290,7 +346,8 @@ static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, d
             const double v = ceil((double)k + r * u - 0.5);
             if (v < 0.0 || v > d.nv - 1)
                 continue;
-            out[texel_of(&d, u, (int)v)] = texel_horizon(f, &d, h, near, u, (int)v, &w);
+            out[texel_of(&d, u, (int)v)] =
+                use_hull || own ? texel_horizon(f, &d, h, near, own, u, (int)v, &w) : (float)w.lo;
         }
     }
 }
@@ -299,17 +356,25 @@ typedef struct sweep_run {
     const hfs_field *f;
     const double *phi;
     double lo, hi;
+    int bands;   /* each azimuth's lines in this many parts */
     float *out;
     hull *hulls; /* one per worker */
 } sweep_run;
 
-/* Azimuth k on worker `worker` (parallel.h: each azimuth one worker's). */
-static void sweep_row(void *ctx, int k, int worker)
+/* Part row % bands of azimuth row / bands, on worker `worker` (parallel.h:
+ * each part one worker's). */
+static void sweep_row(void *ctx, int row, int worker)
 {
     const sweep_run *s = ctx;
+    const int k = row / s->bands, b = row % s->bands;
     const size_t texels = (size_t)s->f->width * (size_t)s->f->height;
-    sweep_azimuth(s->f, s->phi[k], GIS_SWEEP_NEAR, s->lo, s->hi, &s->hulls[worker],
-                  s->out + (size_t)k * texels);
+    sweep_dir d;
+    dir_make(&d, s->f, s->phi[k]);
+    long k0, k1;
+    sweep_lines(&d, &k0, &k1);
+    const long n = k1 + 1 - k0;
+    sweep_azimuth(s->f, s->phi[k], GIS_SWEEP_NEAR, s->lo, s->hi, k0 + n * b / s->bands,
+                  k0 + n * (b + 1) / s->bands, &s->hulls[worker], s->out + (size_t)k * texels);
 }
 
 int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads, float *out,
@@ -330,8 +395,10 @@ int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int thre
         if (!isfinite(phi[k]))
             return hfs_fail(err, HFS_E_INVALID, "sweep: azimuth %d is not finite", k);
     int workers = threads > 0 ? threads : hfs_parallel_default_threads();
-    workers = workers > n ? n : workers;
     workers = workers < 1 ? 1 : workers;
+    /* fewer azimuths than workers (a sun's one): each azimuth's lines in
+     * parts, 4 a worker so that the short corner lines even out */
+    const int bands = n >= workers || n == 0 ? 1 : (4 * workers + n - 1) / n;
     /* a line's hull holds at most 4 points a column: its crossing, a row's
      * and the tops of two bulging pieces (a concave profile keeps them all) */
     const size_t side = 4 * (size_t)(f->width > f->height ? f->width : f->height) + 4;
@@ -343,8 +410,9 @@ int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int thre
         rc = hulls[w].x && hulls[w].z ? HFS_OK : HFS_E_NOMEM;
     }
     if (!rc) {
-        sweep_run run = {.f = f, .phi = phi, .lo = lo, .hi = hi, .out = out, .hulls = hulls};
-        hfs_parallel_rows(n, workers, sweep_row, &run, NULL, NULL);
+        sweep_run run = {.f = f, .phi = phi, .lo = lo, .hi = hi, .bands = bands, .out = out,
+                         .hulls = hulls};
+        hfs_parallel_rows(n * bands, workers, sweep_row, &run, NULL, NULL);
     } else {
         hfs_fail(err, rc, "sweep: out of memory for a %dx%d field", f->width, f->height);
     }

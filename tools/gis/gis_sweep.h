@@ -38,8 +38,9 @@
  * whole field) and no window: out[(k H + j) W + i], radians, signed,
  * HFS_HORIZON_NONE where the texel's ray leaves the field at once.  The
  * azimuths are shared among `threads` workers (0: the machine's cores;
- * runtime/core/parallel.h),
- * each computed by one: the result does not depend on the count.  0, or
+ * runtime/core/parallel.h), each computed by one, or, with fewer azimuths
+ * than workers (a sun's one), each azimuth's lines in parts: every texel
+ * is its nearest line's, so the result does not depend on the count.  0, or
  * HFS_E_NOMEM / HFS_E_INVALID with err filled. */
 int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads, float *out,
                        hfs_error *err);
@@ -48,7 +49,11 @@ int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads
  * pi/2; hfs_horizon_desc's window): each result clamp(gamma, lo, hi), lo
  * where the ray meets no terrain.  A texel whose line's hull already rises
  * above hi skips its own columns, and one outside the window its
- * arctangent (a sun's disk wants 0.53 degrees of them).  [-pi/2, pi/2] is
+ * arctangent (a sun's disk wants 0.53 degrees of them).  With lo > 0 (a
+ * sun above the horizontal) a line whose relief, or whose steepest rise
+ * along the azimuth, stays below lo skips its hull, or its texels' own
+ * columns, or both (a high sun's lines do): the same values, from bounds
+ * that cannot miss (gis_sweep.c's line_below).  [-pi/2, pi/2] is
  * gis_sweep_horizons. */
 int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int threads, double lo,
                           double hi, float *out, hfs_error *err);
