@@ -79,11 +79,12 @@ static int last_crossing(const sweep_dir *d, int u, int v)
 typedef struct hull {
     double *x, *z;
     int n;
+    double *rise; /* a worker's scratch for line_rises, a column each */
 } hull;
 
 /* Adds a point nearer than all the hull holds; drops the ones that fall
  * under the hull with it (each point leaves at most once). */
-static void hull_add(hull *h, double x, double z)
+static inline void hull_add(hull *h, double x, double z)
 {
     while (h->n >= 2 &&
            (h->z[h->n - 1] - z) * (h->x[h->n - 2] - x) <= (h->z[h->n - 2] - z) * (h->x[h->n - 1] - x))
@@ -131,7 +132,7 @@ typedef struct piece {
 /* The piece for a in [lo, hi] of the cell from column u and row y0 (the
  * next row y0 + 1, or y0 itself on a one-row field), the line at b0 + rb a
  * rows above y0 (b0 may be negative: the cell after a row crossing). */
-static piece piece_make(const hfs_field *f, const sweep_dir *d, int u, int y0, double lo,
+static inline piece piece_make(const hfs_field *f, const sweep_dir *d, int u, int y0, double lo,
                         double hi, double b0, double rb)
 {
     const int y1 = d->nv >= 2 ? y0 + 1 : y0;
@@ -146,7 +147,7 @@ static piece piece_make(const hfs_field *f, const sweep_dir *d, int u, int y0, d
 /* The pieces (one or two: the line crosses at most one row between two
  * columns, r <= 1) of the line from (u, y) to (u + 1, y + r); at the
  * field's side the heights clamped as `crossing` clamps them. */
-static int pieces_of(const hfs_field *f, const sweep_dir *d, int u, double y, piece p[2])
+static inline int pieces_of(const hfs_field *f, const sweep_dir *d, int u, double y, piece p[2])
 {
     const double r = d->r;
     if (y >= 0.0 && y + r <= d->nv - 1 && d->nv >= 2) { /* inside: no clamp */
@@ -175,7 +176,7 @@ static int pieces_of(const hfs_field *f, const sweep_dir *d, int u, double y, pi
  * column distance m before the piece's a = 0: its ends, and inside it
  * where the slope of (z(a) - zp) / (m + a) turns (a concave piece, C < 0:
  * the surface along the ray bulges above the chord, a twisted cell). */
-static slope piece_max(const piece *p, double m, double zp, slope best)
+static inline slope piece_max(const piece *p, double m, double zp, slope best)
 {
     /* from the texel itself (m = 0, a = 0, A = zp): the surface's slope
      * leaving it, the limit of the ratio as a -> 0 (its own cell, which
@@ -205,17 +206,18 @@ static slope piece_max(const piece *p, double m, double zp, slope best)
  * azimuth at hand (-inf / +inf where they cut nothing). */
 typedef struct sweep_window {
     double lo, hi, rlo, rhi;
+    double eps; /* what a candidate's rounding can add to its rise (line_below) */
 } sweep_window;
 
 /* Texel (u, v)'s horizon clamped to w: the bilinear surface along its own
  * ray up to `near` columns, exactly, then the tangent to its line's hull.
  * A hull that already hides the window's top decides it without the near
  * columns (they can only raise it), and a rise outside the window needs
- * no arctangent: the same values as clamping afterwards.  Without
- * exact_near the own columns are left out (line_below's bound: they
- * cannot reach the window). */
+ * no arctangent: the same values as clamping afterwards.  With rise (a
+ * sun above the horizontal: line_rises) the own columns are left out
+ * where they cannot rise to the window's bottom. */
 static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h, int near,
-                           int exact_near, int u, int v, const sweep_window *w)
+                           const double *rise, int u, int v, const sweep_window *w)
 {
     const int last = last_crossing(d, u, v);
     if (last < 1)
@@ -226,7 +228,13 @@ static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h
     slope best = h->n > 0 && last > near ? hull_tangent(h, u, zp) : (slope){-1.0, 0.0};
     if (best.den > 0.0 && best.num >= w->rhi * best.den)
         return (float)w->hi;
-    const int own = !exact_near ? 0 : last < near ? last : near;
+    int own = last < near ? last : near;
+    if (rise) { /* line_rises: the steepest its own columns can rise */
+        double g = -HUGE_VAL;
+        for (int m = 0; m < own; ++m)
+            g = rise[u + m] > g ? rise[u + m] : g;
+        own = g + w->eps < w->rlo ? 0 : own;
+    }
     for (int m = 0; m < own; ++m) { /* the cells from column u + m to u + m + 1 */
         piece p[2];
         const int n = pieces_of(f, d, u + m, v + m * d->r, p);
@@ -270,46 +278,79 @@ static double window_rise(double a, double unit)
     return a >= HFS_SWEEP_HALF_PI ? HUGE_VAL : a <= -HFS_SWEEP_HALF_PI ? -HUGE_VAL : tan(a) * unit;
 }
 
+/* Line k's band at column u, the rows its texels' own rays cross (at
+ * most half a row aside of the line at y = k + r u: floor(y) - 2 ..
+ * floor(y) + 3, in the field): its lowest and highest height, and the
+ * largest differences along u (to column u + 1) and along v (to the next
+ * row), world units, none below 0.  0 where no texel's ray and no hull
+ * point comes near. */
+typedef struct band {
+    double zmin, zmax, du, dv;
+} band;
+
+static band band_column(const hfs_field *f, const sweep_dir *d, long k, int u)
+{
+    const double zs = f->zscale, y = (double)k + d->r * u;
+    band b = {HUGE_VAL, -HUGE_VAL, 0.0, 0.0};
+    if (y < -1.5 || y > d->nv + 0.5)
+        return b;
+    const int j0 = (int)fmax(floor(y) - 2.0, 0.0), j1 = (int)fmin(floor(y) + 3.0, d->nv - 1);
+    double prev = 0.0;
+    for (int j = j0; j <= j1; ++j) {
+        const double z = zs * f->z[texel_of(d, u, j)];
+        b.zmin = z < b.zmin ? z : b.zmin;
+        b.zmax = z > b.zmax ? z : b.zmax;
+        if (j > j0 && z - prev > b.dv)
+            b.dv = z - prev;
+        if (u + 1 < d->nu) {
+            const double rise = zs * f->z[texel_of(d, u + 1, j)] - z;
+            b.du = rise > b.du ? rise : b.du;
+        }
+        prev = z;
+    }
+    return b;
+}
+
 /* What line k's texels can see below the window's bottom rlo (a rise per
  * column, > 0: a sun's disk above the horizontal), from bounds alone:
  *   - its hull's points (at least `near` columns from the texel that asks)
- *     rise at most zmax - zmin above it, the extremes of the rows about
- *     the line (bilinear heights lie within their cell's corners);
- *   - along its texels' own rays (at most half a row aside) every chord,
- *     and the slope leaving the texel, rises at most du + r dv a column,
- *     the largest differences along u and v of the cells the rays cross
- *     (rows floor(y) - 2 .. floor(y) + 3 about the line at y = k + r u).
- * Where a bound stays below rlo, with eps for the candidates' rounding
+ *     rise at most zmax - zmin above it, the extremes of its bands
+ *     (bilinear heights lie within their cell's corners);
+ *   - along its texels' own rays every chord, and the slope leaving the
+ *     texel, rises at most du + r dv a column, the largest differences of
+ *     the cells the rays cross (a cell's rise along the ray, z_u + r z_v,
+ *     blends its edges' differences).
+ * Where a bound stays below rlo, with w->eps for the candidates' rounding
  * (their denominators are at least a column), that part cannot reach the
  * window: *use_hull / *own say whether each is still wanted.  A high sun's
  * lines skip both, and the result is the same as the whole search's. */
-static void line_below(const hfs_field *f, const sweep_dir *d, long k, double rlo, int near,
-                       int *use_hull, int *own)
+static void line_below(const hfs_field *f, const sweep_dir *d, long k, const sweep_window *w,
+                       int near, int *use_hull, int *own)
 {
-    const double zs = f->zscale;
-    double zmin = HUGE_VAL, zmax = -HUGE_VAL, du = 0.0, dv = 0.0, zabs = 0.0; /* rises >= 0 */
+    double zmin = HUGE_VAL, zmax = -HUGE_VAL, du = 0.0, dv = 0.0;
+    *use_hull = *own = 1;
     for (int u = 0; u < d->nu; ++u) {
-        const double y = (double)k + d->r * u;
-        if (y < -1.5 || y > d->nv + 0.5) /* no texel's ray, no hull point */
-            continue;
-        const int j0 = (int)fmax(floor(y) - 2.0, 0.0), j1 = (int)fmin(floor(y) + 3.0, d->nv - 1);
-        double prev = 0.0;
-        for (int j = j0; j <= j1; ++j) {
-            const double z = zs * f->z[texel_of(d, u, j)];
-            zmin = fmin(zmin, z), zmax = fmax(zmax, z), zabs = fmax(zabs, fabs(z));
-            if (j > j0)
-                dv = fmax(dv, z - prev);
-            if (u + 1 < d->nu)
-                du = fmax(du, zs * f->z[texel_of(d, u + 1, j)] - z);
-            prev = z;
-        }
-        const double eps = 1e-9 * (1.0 + zabs);
-        if (zmax - zmin + eps >= rlo * near && du + d->r * dv + eps >= rlo)
-            break; /* neither bound can hold */
+        const band b = band_column(f, d, k, u);
+        zmin = b.zmin < zmin ? b.zmin : zmin;
+        zmax = b.zmax > zmax ? b.zmax : zmax;
+        du = b.du > du ? b.du : du;
+        dv = b.dv > dv ? b.dv : dv;
+        if (zmax - zmin + w->eps >= w->rlo * near && du + d->r * dv + w->eps >= w->rlo)
+            return; /* neither bound can hold */
     }
-    const double eps = 1e-9 * (1.0 + zabs);
-    *use_hull = !(zmax - zmin + eps < rlo * near);
-    *own = !(du + d->r * dv + eps < rlo);
+    *use_hull = !(zmax - zmin + w->eps < w->rlo * near);
+    *own = !(du + d->r * dv + w->eps < w->rlo);
+}
+
+/* rise[u]: the steepest rise a column of line k's band at column u (as
+ * line_below bounds the whole line's): a texel's own columns u .. u + m
+ * rise at most the largest of theirs. */
+static void line_rises(const hfs_field *f, const sweep_dir *d, long k, double *rise)
+{
+    for (int u = 0; u < d->nu; ++u) {
+        const band b = band_column(f, d, k, u);
+        rise[u] = b.du + d->r * b.dv;
+    }
 }
 
 /* The lines of an azimuth's sweep: k0..k1 (v = k + r u), each walked from
@@ -322,18 +363,24 @@ static void sweep_lines(const sweep_dir *d, long *k0, long *k1)
 
 /* One azimuth's lines k in [ka, kb): each walked from the field's end.
  * Each texel is written by exactly one line (the one nearest its own),
- * so any split of the lines gives the same values. */
-static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, double hi, long ka,
-                          long kb, hull *h, float *out)
+ * so any split of the lines gives the same values.  eps: line_below's. */
+static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, double hi,
+                          double eps, long ka, long kb, hull *h, float *out)
 {
     sweep_dir d;
     dir_make(&d, f, phi);
-    const sweep_window w = {lo, hi, window_rise(lo, d.unit), window_rise(hi, d.unit)};
+    const sweep_window w = {lo, hi, window_rise(lo, d.unit), window_rise(hi, d.unit), eps};
     const double r = d.r;
     for (long k = ka; k < kb; ++k) {
         int use_hull = 1, own = 1;
-        if (w.rlo > 0.0)
-            line_below(f, &d, k, w.rlo, near, &use_hull, &own);
+        const double *rise = NULL;
+        if (w.rlo > 0.0) {
+            line_below(f, &d, k, &w, near, &use_hull, &own);
+            if (own) { /* not the whole line's columns: maybe a texel's */
+                line_rises(f, &d, k, h->rise);
+                rise = h->rise;
+            }
+        }
         h->n = 0;
         for (int u = d.nu - 1; u >= 0; --u) {
             const int ui = u + near; /* the column that joins the hull now */
@@ -347,7 +394,7 @@ static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, d
             if (v < 0.0 || v > d.nv - 1)
                 continue;
             out[texel_of(&d, u, (int)v)] =
-                use_hull || own ? texel_horizon(f, &d, h, near, own, u, (int)v, &w) : (float)w.lo;
+                use_hull || own ? texel_horizon(f, &d, h, near, rise, u, (int)v, &w) : (float)w.lo;
         }
     }
 }
@@ -355,7 +402,7 @@ static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, d
 typedef struct sweep_run {
     const hfs_field *f;
     const double *phi;
-    double lo, hi;
+    double lo, hi, eps;
     int bands;   /* each azimuth's lines in this many parts */
     float *out;
     hull *hulls; /* one per worker */
@@ -373,7 +420,7 @@ static void sweep_row(void *ctx, int row, int worker)
     long k0, k1;
     sweep_lines(&d, &k0, &k1);
     const long n = k1 + 1 - k0;
-    sweep_azimuth(s->f, s->phi[k], GIS_SWEEP_NEAR, s->lo, s->hi, k0 + n * b / s->bands,
+    sweep_azimuth(s->f, s->phi[k], GIS_SWEEP_NEAR, s->lo, s->hi, s->eps, k0 + n * b / s->bands,
                   k0 + n * (b + 1) / s->bands, &s->hulls[worker], s->out + (size_t)k * texels);
 }
 
@@ -407,17 +454,24 @@ int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int thre
     for (int w = 0; w < workers && !rc; ++w) {
         hulls[w].x = malloc(side * sizeof *hulls[w].x);
         hulls[w].z = malloc(side * sizeof *hulls[w].z);
-        rc = hulls[w].x && hulls[w].z ? HFS_OK : HFS_E_NOMEM;
+        hulls[w].rise = malloc(side * sizeof *hulls[w].rise);
+        rc = hulls[w].x && hulls[w].z && hulls[w].rise ? HFS_OK : HFS_E_NOMEM;
     }
     if (!rc) {
-        sweep_run run = {.f = f, .phi = phi, .lo = lo, .hi = hi, .bands = bands, .out = out,
+        /* a candidate's rise is a difference of heights over at least a
+         * column, rounded: far less than this on any field */
+        double zabs = 0.0;
+        for (size_t p = 0; lo > 0.0 && p < (size_t)f->width * (size_t)f->height; ++p)
+            zabs = fabs(f->zscale * f->z[p]) > zabs ? fabs(f->zscale * f->z[p]) : zabs;
+        sweep_run run = {.f = f, .phi = phi, .lo = lo, .hi = hi, .eps = 1e-9 * (1.0 + zabs),
+                         .bands = bands, .out = out,
                          .hulls = hulls};
         hfs_parallel_rows(n * bands, workers, sweep_row, &run, NULL, NULL);
     } else {
         hfs_fail(err, rc, "sweep: out of memory for a %dx%d field", f->width, f->height);
     }
     for (int w = 0; hulls && w < workers; ++w)
-        free(hulls[w].x), free(hulls[w].z);
+        free(hulls[w].x), free(hulls[w].z), free(hulls[w].rise);
     free(hulls);
     return rc;
 }
