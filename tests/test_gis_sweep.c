@@ -22,7 +22,9 @@
  *             azimuth alone, its lines in parts among 3 or 7 workers;
  *   window    angles wanted in [lo, hi] only (a sun's disk): the clamp of
  *             the whole sweep's, bit for bit, though a high sun's lines
- *             skip what their bounds say cannot reach the window;
+ *             skip what their bounds say cannot reach the window; a
+ *             plane rising across the lines, where a line's offset from
+ *             the texel's ray decides;
  *   refused   a non-finite azimuth, a field without heights.
  */
 #include "check.h"
@@ -320,6 +322,39 @@ static void check_window(void)
     free(a), free(b), free(z);
 }
 
+/* A plane rising across the lines (z = y) seen along an azimuth 1 in 20
+ * off the x axis: the texels' own rays rise 0.05 a column, under a sun
+ * with tan(lo) = 0.1 (their own columns skipped), but a line half a row
+ * uphill of a texel's ray shows it a hull up to 0.05 + 0.5 / 4 a column:
+ * the hull's offset from the ray is what decides these texels, and the
+ * window's values must still be the whole sweep's clamped. */
+static void check_cross_slope(void)
+{
+    const int w = 80, h = 40, n = 4;
+    float *z = malloc((size_t)w * h * sizeof *z);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            z[(size_t)j * w + i] = (float)j;
+    const hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
+    const double a = atan(0.05), phi[4] = {a, -a, PI - a, PI + a};
+    const double lo = atan(0.1), hi = lo + 0.05;
+    const size_t all = (size_t)n * w * h;
+    float *full = malloc(all * sizeof *full), *win = malloc(all * sizeof *win);
+    hfs_error err;
+    CHECK(gis_sweep_horizons(&f, phi, n, 2, full, &err) == HFS_OK &&
+              gis_sweep_horizons_in(&f, phi, n, 2, lo, hi, win, &err) == HFS_OK,
+          "cross slope: %s", err.msg);
+    long differ = 0, inside = 0;
+    for (size_t p = 0; p < all; ++p) {
+        const float want = full[p] < lo ? (float)lo : full[p] > hi ? (float)hi : full[p];
+        differ += win[p] != want;
+        inside += full[p] > lo && full[p] < hi;
+    }
+    CHECK(differ == 0 && inside > 0, "cross slope: %ld of %zu angles differ (%ld inside)", differ,
+          all, inside);
+    free(z), free(full), free(win);
+}
+
 static void check_refused(void)
 {
     float z[4] = {0};
@@ -344,6 +379,7 @@ int main(void)
     check_dome();
     check_turns_threads();
     check_window();
+    check_cross_slope();
     check_refused();
     printf("test_gis_sweep: %ld checks, %d failures\n", checks, failures);
     return failures != 0;

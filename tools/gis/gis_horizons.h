@@ -16,6 +16,10 @@
 
 #define GIS_HORIZON_BATCH_FLOATS (1 << 26) /* 256 MiB of angles per call */
 
+/* Texels below which the callbacks' per-texel sums stay on the calling
+ * thread (above it they run on parallel.h's workers, the same values). */
+#define GIS_SUMS_THREADED 16384
+
 /* Azimuth k's angles: gamma (field W x H, radians, signed,
  * HFS_HORIZON_NONE where the ray met no terrain).  0, or an error code
  * with err filled (the run stops). */

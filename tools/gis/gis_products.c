@@ -5,6 +5,7 @@
 
 #include "gis_horizons.h"
 #include "gis_resample.h"
+#include "parallel.h"
 
 #include <stdlib.h>
 
@@ -14,13 +15,31 @@ typedef struct sums {
     double *acc;
     int *count; /* openness only */
     size_t n;
+    const float *gamma; /* the azimuth at hand */
 } sums;
+
+/* An azimuth's sums run on all cores, texel ranges apart (parallel.h:
+ * each texel its own sum, so the same values for any split). */
+static void svf_range(void *ctx, size_t b, size_t e, int chunk)
+{
+    const sums *s = ctx;
+    (void)chunk;
+    gis_svf_add(s->acc + b, s->gamma + b, e - b, s->kind);
+}
+
+static void openness_range(void *ctx, size_t b, size_t e, int chunk)
+{
+    const sums *s = ctx;
+    (void)chunk;
+    gis_openness_add(s->acc + b, s->count + b, s->gamma + b, e - b);
+}
 
 static int add_svf(void *user, int k, const float *gamma, hfs_error *err)
 {
     sums *s = user;
     (void)k, (void)err;
-    gis_svf_add(s->acc, gamma, s->n, s->kind);
+    s->gamma = gamma;
+    hfs_parallel_ranges(s->n, GIS_SUMS_THREADED, svf_range, s);
     return HFS_OK;
 }
 
@@ -28,7 +47,8 @@ static int add_openness(void *user, int k, const float *gamma, hfs_error *err)
 {
     sums *s = user;
     (void)k, (void)err;
-    gis_openness_add(s->acc, s->count, gamma, s->n);
+    s->gamma = gamma;
+    hfs_parallel_ranges(s->n, GIS_SUMS_THREADED, openness_range, s);
     return HFS_OK;
 }
 

@@ -20,7 +20,7 @@
 #define RAD (PI / 180.0)
 
 /* Texels below which a step's per-texel work stays on the calling thread. */
-#define SUN_TEXELS_THREADED 16384
+#define SUN_TEXELS_THREADED GIS_SUMS_THREADED
 
 int gis_sun_compute(double jd, const hfs_solar_site *site, double linke, gis_sun_at *out)
 {
@@ -302,18 +302,31 @@ typedef struct sky_sums {
     const double *phi;     /* the grid's azimuths                         */
     const gis_sky_map *map; /* NULL: the isotropic sky                    */
     size_t n;
+    int k;                 /* the azimuth at hand, and its angles         */
+    const float *gamma;
 } sky_sums;
+
+/* Texels b..e of azimuth k's sums (each texel its own: any split of the
+ * texels among the cores gives the same values, parallel.h). */
+static void sky_range(void *ctx, size_t b, size_t e, int chunk)
+{
+    const sky_sums *s = ctx;
+    const float *gamma = s->gamma + b, *normal = s->normal + 3 * b;
+    (void)chunk;
+    if (s->map)
+        gis_sky_map_add(s->map, s->k, s->phi[s->k], s->acc + b, gamma, normal, e - b);
+    else
+        gis_sky_add(s->acc + b, gamma, normal, e - b, s->phi[s->k]);
+    if (s->iso)
+        gis_sky_add(s->iso + b, gamma, normal, e - b, s->phi[s->k]);
+}
 
 static int add_sky(void *user, int k, const float *gamma, hfs_error *err)
 {
     sky_sums *s = user;
     (void)err;
-    if (s->map)
-        gis_sky_map_add(s->map, k, s->phi[k], s->acc, gamma, s->normal, s->n);
-    else
-        gis_sky_add(s->acc, gamma, s->normal, s->n, s->phi[k]);
-    if (s->iso)
-        gis_sky_add(s->iso, gamma, s->normal, s->n, s->phi[k]);
+    s->k = k, s->gamma = gamma;
+    hfs_parallel_ranges(s->n, GIS_SUMS_THREADED, sky_range, s);
     return HFS_OK;
 }
 

@@ -282,16 +282,17 @@ static double window_rise(double a, double unit)
  * most half a row aside of the line at y = k + r u: floor(y) - 2 ..
  * floor(y) + 3, in the field): its lowest and highest height, and the
  * largest differences along u (to column u + 1) and along v (to the next
- * row), world units, none below 0.  0 where no texel's ray and no hull
- * point comes near. */
+ * row), world units, none below 0, and the largest along v either way.
+ * None where no texel's ray and no hull point comes near. */
 typedef struct band {
     double zmin, zmax, du, dv;
+    double dv_abs; /* the largest |difference| along v */
 } band;
 
 static band band_column(const hfs_field *f, const sweep_dir *d, long k, int u)
 {
     const double zs = f->zscale, y = (double)k + d->r * u;
-    band b = {HUGE_VAL, -HUGE_VAL, 0.0, 0.0};
+    band b = {HUGE_VAL, -HUGE_VAL, 0.0, 0.0, 0.0};
     if (y < -1.5 || y > d->nv + 0.5)
         return b;
     const int j0 = (int)fmax(floor(y) - 2.0, 0.0), j1 = (int)fmin(floor(y) + 3.0, d->nv - 1);
@@ -300,8 +301,10 @@ static band band_column(const hfs_field *f, const sweep_dir *d, long k, int u)
         const double z = zs * f->z[texel_of(d, u, j)];
         b.zmin = z < b.zmin ? z : b.zmin;
         b.zmax = z > b.zmax ? z : b.zmax;
-        if (j > j0 && z - prev > b.dv)
-            b.dv = z - prev;
+        if (j > j0) {
+            b.dv = z - prev > b.dv ? z - prev : b.dv;
+            b.dv_abs = fabs(z - prev) > b.dv_abs ? fabs(z - prev) : b.dv_abs;
+        }
         if (u + 1 < d->nu) {
             const double rise = zs * f->z[texel_of(d, u + 1, j)] - z;
             b.du = rise > b.du ? rise : b.du;
@@ -313,13 +316,15 @@ static band band_column(const hfs_field *f, const sweep_dir *d, long k, int u)
 
 /* What line k's texels can see below the window's bottom rlo (a rise per
  * column, > 0: a sun's disk above the horizontal), from bounds alone:
+ *   - along its texels' own rays every chord, and the slope leaving the
+ *     texel, rises at most g = du + r dv a column, the largest differences
+ *     of the cells the rays cross (a cell's rise along the ray, z_u +
+ *     r z_v, blends its edges' differences);
  *   - its hull's points (at least `near` columns from the texel that asks)
  *     rise at most zmax - zmin above it, the extremes of its bands
- *     (bilinear heights lie within their cell's corners);
- *   - along its texels' own rays every chord, and the slope leaving the
- *     texel, rises at most du + r dv a column, the largest differences of
- *     the cells the rays cross (a cell's rise along the ray, z_u + r z_v,
- *     blends its edges' differences).
+ *     (bilinear heights lie within their cell's corners), and at most g a
+ *     column along the texel's ray plus the line's offset from it (at most
+ *     half a row, dv_abs a row) over `near` columns.
  * Where a bound stays below rlo, with w->eps for the candidates' rounding
  * (their denominators are at least a column), that part cannot reach the
  * window: *use_hull / *own say whether each is still wanted.  A high sun's
@@ -327,7 +332,7 @@ static band band_column(const hfs_field *f, const sweep_dir *d, long k, int u)
 static void line_below(const hfs_field *f, const sweep_dir *d, long k, const sweep_window *w,
                        int near, int *use_hull, int *own)
 {
-    double zmin = HUGE_VAL, zmax = -HUGE_VAL, du = 0.0, dv = 0.0;
+    double zmin = HUGE_VAL, zmax = -HUGE_VAL, du = 0.0, dv = 0.0, dv_abs = 0.0;
     *use_hull = *own = 1;
     for (int u = 0; u < d->nu; ++u) {
         const band b = band_column(f, d, k, u);
@@ -335,11 +340,14 @@ static void line_below(const hfs_field *f, const sweep_dir *d, long k, const swe
         zmax = b.zmax > zmax ? b.zmax : zmax;
         du = b.du > du ? b.du : du;
         dv = b.dv > dv ? b.dv : dv;
+        dv_abs = b.dv_abs > dv_abs ? b.dv_abs : dv_abs;
         if (zmax - zmin + w->eps >= w->rlo * near && du + d->r * dv + w->eps >= w->rlo)
-            return; /* neither bound can hold */
+            return; /* no bound can hold */
     }
-    *use_hull = !(zmax - zmin + w->eps < w->rlo * near);
-    *own = !(du + d->r * dv + w->eps < w->rlo);
+    const double g = du + d->r * dv;
+    *use_hull = !(zmax - zmin + w->eps < w->rlo * near ||
+                  g + 0.5 * dv_abs / near + w->eps < w->rlo);
+    *own = !(g + w->eps < w->rlo);
 }
 
 /* rise[u]: the steepest rise a column of line k's band at column u (as
