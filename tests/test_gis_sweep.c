@@ -320,6 +320,26 @@ static void check_window(void)
     CHECK(gis_sweep_horizons_in(&f, phi, n, 1, 0.5, 0.4, b, &err) == HFS_E_INVALID,
           "window: lo above hi refused");
     free(a), free(b), free(z);
+    /* one row, one column, one cell: the bounds' bands clamp to the field */
+    const int thin[4][2] = {{1, 9}, {9, 1}, {2, 2}, {3, 17}};
+    for (int t = 0; t < 4; ++t) {
+        const int tw = thin[t][0], th = thin[t][1];
+        float *tz = field_of(tw, th, 11u + (unsigned)t, 3.0);
+        const hfs_field ft = {.width = tw, .height = th, .z = tz, .dx = 1.0, .zscale = 1.0};
+        const size_t tn = (size_t)n * tw * th;
+        float *ta = malloc(tn * sizeof *ta), *tb = malloc(tn * sizeof *tb);
+        long differ = 0;
+        for (int k = 0; k < 5; ++k) {
+            const double lo = win[k][0], hi = win[k][1];
+            CHECK(gis_sweep_horizons(&ft, phi, n, 2, ta, &err) == HFS_OK &&
+                      gis_sweep_horizons_in(&ft, phi, n, 2, lo, hi, tb, &err) == HFS_OK,
+                  "window %dx%d: %s", tw, th, err.msg);
+            for (size_t p = 0; p < tn; ++p)
+                differ += tb[p] != (ta[p] < lo ? (float)lo : ta[p] > hi ? (float)hi : ta[p]);
+        }
+        CHECK(differ == 0, "window %dx%d: %ld angles differ from the clamp", tw, th, differ);
+        free(ta), free(tb), free(tz);
+    }
 }
 
 /* A plane rising across the lines (z = y) seen along an azimuth 1 in 20
