@@ -7,6 +7,8 @@
 
 #include <stdlib.h>
 
+#define HALF_PI 1.5707963267948966
+
 int gis_horizons_get(hfs_renderer *r, int sweep, const hfs_field *field, const hfs_quality *q,
                      const hfs_horizon_desc *desc, float *out, hfs_error *err)
 {
@@ -23,8 +25,8 @@ int gis_horizons_get(hfs_renderer *r, int sweep, const hfs_field *field, const h
 }
 
 int gis_horizons_each(hfs_renderer *r, int sweep, const hfs_field *field, const hfs_quality *q,
-                      const double *phi, int n, double radius, gis_horizon_fn fn, void *user,
-                      hfs_error *err)
+                      const double *phi, int n, double radius, double lo, gis_horizon_fn fn,
+                      void *user, hfs_error *err)
 {
     const size_t texels = (size_t)field->width * (size_t)field->height;
     size_t batch = GIS_HORIZON_BATCH_FLOATS / texels;
@@ -38,7 +40,8 @@ int gis_horizons_each(hfs_renderer *r, int sweep, const hfs_field *field, const 
     int rc = HFS_OK;
     for (int k0 = 0; k0 < n && !rc; k0 += (int)batch) {
         const int m = n - k0 < (int)batch ? n - k0 : (int)batch;
-        const hfs_horizon_desc desc = {.n_azimuths = m, .azimuth = phi + k0, .radius = radius};
+        const hfs_horizon_desc desc = {.n_azimuths = m, .azimuth = phi + k0, .radius = radius,
+                                       .window = lo > -HALF_PI, .lo = lo, .hi = HALF_PI};
         rc = gis_horizons_get(r, sweep, field, q, &desc, out, err);
         for (int a = 0; a < m && !rc; ++a)
             rc = fn(user, k0 + a, out + (size_t)a * texels, err);

@@ -31,12 +31,18 @@ typedef int (*gis_horizon_fn)(void *user, int k, const float *gamma, hfs_error *
 int gis_horizons_get(hfs_renderer *r, int sweep, const hfs_field *field, const hfs_quality *q,
                      const hfs_horizon_desc *desc, float *out, hfs_error *err);
 
+/* gis_horizons_each's lo for every angle, signed (openness). */
+#define GIS_HORIZONS_ALL (-1.5707963267948966)
+
 /* Calls fn for each of the n azimuths phi[k] (the grid's phi, radians)
  * searched up to radius world units (0: the whole field) over field, on
  * renderer r with quality q (NULL: defaults), or by the sweep
- * (gis_horizons_get).  0, or the first error. */
+ * (gis_horizons_get).  lo: the lowest angle fn tells apart (0 for the
+ * products that clamp at the horizontal: every angle below comes back as
+ * 0, and the searches skip what stays below it; GIS_HORIZONS_ALL: all,
+ * signed, as openness wants them).  0, or the first error. */
 int gis_horizons_each(hfs_renderer *r, int sweep, const hfs_field *field, const hfs_quality *q,
-                      const double *phi, int n, double radius, gis_horizon_fn fn, void *user,
-                      hfs_error *err);
+                      const double *phi, int n, double radius, double lo, gis_horizon_fn fn,
+                      void *user, hfs_error *err);
 
 #endif /* HFS_GIS_HORIZONS_H */

@@ -60,7 +60,7 @@ void gis_product_directions(double *phi, int n_dirs)
 
 /* Horizons of the map azimuths phi over heights z (the square grid), each
  * to fn. */
-static int horizons(const gis_compute *c, const float *z, const double *phi, int n,
+static int horizons(const gis_compute *c, const float *z, const double *phi, int n, double lo,
                     gis_horizon_fn fn, void *user, hfs_error *err)
 {
     const gis_dem *d = c->dem;
@@ -73,7 +73,8 @@ static int horizons(const gis_compute *c, const float *z, const double *phi, int
                              .zscale = c->zscale};
     hfs_quality q;
     hfs_quality_defaults(&q);
-    const int rc = gis_horizons_each(c->r, c->sweep, &field, &q, grid, n, c->radius, fn, user, err);
+    const int rc =
+        gis_horizons_each(c->r, c->sweep, &field, &q, grid, n, c->radius, lo, fn, user, err);
     free(grid);
     return rc;
 }
@@ -96,7 +97,7 @@ int gis_product_svf(const gis_compute *c, int n_dirs, gis_svf_kind kind, float *
     int rc = s.acc && sq && phi ? HFS_OK : hfs_fail(err, HFS_E_NOMEM, "svf: out of memory");
     if (!rc) {
         gis_product_directions(phi, n_dirs);
-        rc = horizons(c, c->dem->sz, phi, n_dirs, add_svf, &s, err);
+        rc = horizons(c, c->dem->sz, phi, n_dirs, 0.0, add_svf, &s, err); /* clamps at 0 */
     }
     if (!rc) {
         gis_svf_finish(sq, s.acc, n, n_dirs, kind);
@@ -115,7 +116,7 @@ static int openness(const gis_compute *c, const float *z, const double *phi, int
 {
     const size_t n = (size_t)c->dem->sw * (size_t)c->dem->sh;
     sums s = {.acc = calloc(n, sizeof(double)), .count = calloc(n, sizeof(int)), .n = n};
-    int rc = s.acc && s.count ? horizons(c, z, phi, n_dirs, add_openness, &s, err)
+    int rc = s.acc && s.count ? horizons(c, z, phi, n_dirs, GIS_HORIZONS_ALL, add_openness, &s, err)
                               : hfs_fail(err, HFS_E_NOMEM, "openness: out of memory");
     if (!rc) {
         gis_openness_finish(sq, s.acc, s.count, n);
@@ -173,7 +174,7 @@ int gis_product_horizons(const gis_compute *c, const double *phi, int n, gis_ras
                                    sizeof(float)),
                      .fn = fn,
                      .user = user};
-    int rc = a.sq && a.out ? horizons(c, c->dem->sz, phi, n, one_horizon, &a, err)
+    int rc = a.sq && a.out ? horizons(c, c->dem->sz, phi, n, 0.0, one_horizon, &a, err)
                            : hfs_fail(err, HFS_E_NOMEM, "horizon: out of memory");
     free(a.sq);
     free(a.out);

@@ -367,8 +367,10 @@ static int sky_share(const gis_compute *c, int n_dirs, const gis_sky_map *map, f
     s.normal = normal, s.phi = phi, s.map = map;
     hfs_quality q;
     hfs_quality_defaults(&q);
-    const int rc = gis_horizons_each(c->r, c->sweep, &field, &q, phi, n_dirs, c->radius, add_sky,
-                                     &s, err);
+    /* the sums clamp each angle at the horizontal (and at the texel's own
+     * plane): nothing below 0 is wanted */
+    const int rc = gis_horizons_each(c->r, c->sweep, &field, &q, phi, n_dirs, c->radius, 0.0,
+                                     add_sky, &s, err);
     if (!rc && map)
         gis_sky_map_finish(map, sky, s.acc, n);
     else if (!rc)
