@@ -350,14 +350,18 @@ static void line_below(const hfs_field *f, const sweep_dir *d, long k, const swe
     *own = !(g + w->eps < w->rlo);
 }
 
-/* rise[u]: the steepest rise a column of line k's band at column u (as
- * line_below bounds the whole line's): a texel's own columns u .. u + m
- * rise at most the largest of theirs. */
+/* rise[u]: the steepest rise a column of the cells from column u to u + 1
+ * about line k (as line_below bounds the whole line's): the largest
+ * difference along u there, plus r times the largest along v at either
+ * column (a cell's z_v blends both of its columns').  A texel's own
+ * columns u .. u + m rise at most the largest of theirs. */
 static void line_rises(const hfs_field *f, const sweep_dir *d, long k, double *rise)
 {
+    band b = band_column(f, d, k, 0);
     for (int u = 0; u < d->nu; ++u) {
-        const band b = band_column(f, d, k, u);
-        rise[u] = b.du + d->r * b.dv;
+        const band next = u + 1 < d->nu ? band_column(f, d, k, u + 1) : b;
+        rise[u] = b.du + d->r * (next.dv > b.dv ? next.dv : b.dv);
+        b = next;
     }
 }
 
