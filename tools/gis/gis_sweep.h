@@ -51,10 +51,11 @@ int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads
  * above hi skips its own columns, and one outside the window its
  * arctangent (a sun's disk wants 0.53 degrees of them).  With lo > 0 (a
  * sun above the horizontal) a line whose relief, or whose steepest rise
- * along the azimuth, stays below lo skips its hull, or its texels' own
- * columns, or both (a high sun's lines do): the same values, from bounds
- * that cannot miss (gis_sweep.c's line_below).  [-pi/2, pi/2] is
- * gis_sweep_horizons. */
+ * along the azimuth (with its offset from its texels' rays), stays below
+ * lo skips its hull, or its texels' own columns, or both (a high sun's
+ * lines do), and a texel whose own columns cannot rise to lo skips them:
+ * the same values, from bounds that cannot miss (gis_sweep.c's line_below
+ * and line_rises).  [-pi/2, pi/2] is gis_sweep_horizons. */
 int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int threads, double lo,
                           double hi, float *out, hfs_error *err);
 
