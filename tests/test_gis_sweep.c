@@ -298,7 +298,7 @@ static void check_window(void)
     const hfs_field f = {.width = w, .height = h, .z = z, .dx = 2.5, .zscale = 1.3};
     const double phi[5] = {0.3, 1.2, 2.9, 4.0, 5.5};
     /* suns at 17 to 69 degrees (lines that skip their hull, their own
-     * columns or both: line_below), a wide window, one at the top */
+     * columns or both: line_bounds), a wide window, one at the top */
     const double win[5][2] = {{0.30, 0.31}, {0.7, 0.71}, {1.0, 1.01}, {-0.2, 0.6}, {1.2, PI / 2}};
     const size_t all = (size_t)n * w * h;
     float *a = malloc(all * sizeof *a), *b = malloc(all * sizeof *b);

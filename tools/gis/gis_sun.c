@@ -180,14 +180,13 @@ static void sun_texel_range(void *ctx, size_t begin, size_t end, int chunk)
     const double s = sin(k->alpha), disk = PI * s * s, s2 = s * s;
     /* a disk wholly above the texel's plane (n.d >= sin alpha, with room
      * for acos' rounding) is hfs_cap_irradiance's first case, the same
-     * product without its arccosine */
-    const double above = s + 1e-12;
+     * product without its arccosine (a disk of up to a hemisphere) */
+    const double above = k->alpha > 0.0 && k->alpha <= 0.5 * PI ? s + 1e-12 : HUGE_VAL;
     (void)chunk;
     for (size_t p = begin; p < end; ++p) {
         const double *n = t->normal + 3 * p;
         const double nd = n[0] * t->dir[0] + n[1] * t->dir[1] + n[2] * t->dir[2];
-        const double e = nd >= above && nd <= 1.0 && k->alpha > 0.0 && k->alpha <= 0.5 * PI
-                             ? PI * s2 * nd : hfs_cap_irradiance(nd, k->alpha);
+        const double e = nd >= above && nd <= 1.0 ? PI * s2 * nd : hfs_cap_irradiance(nd, k->alpha);
         const double fu = e / disk;
         const double v = gis_disk_visible(n, k->phi, k->elev, k->alpha, t->gamma[p]);
         t->f[p] = (float)(fmax(fu, 0.0) * v);

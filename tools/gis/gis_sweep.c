@@ -79,7 +79,7 @@ static int last_crossing(const sweep_dir *d, int u, int v)
 typedef struct hull {
     double *x, *z;
     int n;
-    double *rise; /* a worker's scratch for line_rises, a column each */
+    double *rise; /* a worker's scratch for line_bounds, a column each */
 } hull;
 
 /* Adds a point nearer than all the hull holds; drops the ones that fall
@@ -206,7 +206,7 @@ static inline slope piece_max(const piece *p, double m, double zp, slope best)
  * azimuth at hand (-inf / +inf where they cut nothing). */
 typedef struct sweep_window {
     double lo, hi, rlo, rhi;
-    double eps; /* what a candidate's rounding can add to its rise (line_below) */
+    double eps; /* what a candidate's rounding can add to its rise (line_bounds) */
 } sweep_window;
 
 /* Texel (u, v)'s horizon clamped to w: the bilinear surface along its own
@@ -214,7 +214,7 @@ typedef struct sweep_window {
  * A hull that already hides the window's top decides it without the near
  * columns (they can only raise it), and a rise outside the window needs
  * no arctangent: the same values as clamping afterwards.  With rise (a
- * sun above the horizontal: line_rises) the own columns are left out
+ * sun above the horizontal: line_bounds) the own columns are left out
  * where they cannot rise to the window's bottom. */
 static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h, int near,
                            const double *rise, int u, int v, const sweep_window *w)
@@ -229,7 +229,7 @@ static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h
     if (best.den > 0.0 && best.num >= w->rhi * best.den)
         return (float)w->hi;
     int own = last < near ? last : near;
-    if (rise) { /* line_rises: the steepest its own columns can rise */
+    if (rise) { /* line_bounds: the steepest its own columns can rise */
         double g = -HUGE_VAL;
         for (int m = 0; m < own; ++m)
             g = rise[u + m] > g ? rise[u + m] : g;
@@ -315,11 +315,13 @@ static band band_column(const hfs_field *f, const sweep_dir *d, long k, int u)
 }
 
 /* What line k's texels can see below the window's bottom rlo (a rise per
- * column, > 0: a sun's disk above the horizontal), from bounds alone:
+ * column, > 0: a sun's disk above the horizontal), from bounds alone, in
+ * one pass over its bands:
  *   - along its texels' own rays every chord, and the slope leaving the
  *     texel, rises at most g = du + r dv a column, the largest differences
  *     of the cells the rays cross (a cell's rise along the ray, z_u +
- *     r z_v, blends its edges' differences);
+ *     r z_v, blends its edges' differences: its u differences, and its v
+ *     differences at both its columns);
  *   - its hull's points (at least `near` columns from the texel that asks)
  *     rise at most zmax - zmin above it, the extremes of its bands
  *     (bilinear heights lie within their cell's corners), and at most g a
@@ -328,41 +330,28 @@ static band band_column(const hfs_field *f, const sweep_dir *d, long k, int u)
  * Where a bound stays below rlo, with w->eps for the candidates' rounding
  * (their denominators are at least a column), that part cannot reach the
  * window: *use_hull / *own say whether each is still wanted.  A high sun's
- * lines skip both, and the result is the same as the whole search's. */
-static void line_below(const hfs_field *f, const sweep_dir *d, long k, const sweep_window *w,
-                       int near, int *use_hull, int *own)
+ * lines skip both, and the result is the same as the whole search's.
+ * rise[u] is g for the cells from column u to u + 1 alone: a texel's own
+ * columns u .. u + m rise at most the largest of theirs. */
+static void line_bounds(const hfs_field *f, const sweep_dir *d, long k, const sweep_window *w,
+                        int near, double *rise, int *use_hull, int *own)
 {
     double zmin = HUGE_VAL, zmax = -HUGE_VAL, du = 0.0, dv = 0.0, dv_abs = 0.0;
-    *use_hull = *own = 1;
+    band b = band_column(f, d, k, 0);
     for (int u = 0; u < d->nu; ++u) {
-        const band b = band_column(f, d, k, u);
+        const band next = u + 1 < d->nu ? band_column(f, d, k, u + 1) : b;
+        rise[u] = b.du + d->r * (next.dv > b.dv ? next.dv : b.dv);
         zmin = b.zmin < zmin ? b.zmin : zmin;
         zmax = b.zmax > zmax ? b.zmax : zmax;
         du = b.du > du ? b.du : du;
         dv = b.dv > dv ? b.dv : dv;
         dv_abs = b.dv_abs > dv_abs ? b.dv_abs : dv_abs;
-        if (zmax - zmin + w->eps >= w->rlo * near && du + d->r * dv + w->eps >= w->rlo)
-            return; /* no bound can hold */
+        b = next;
     }
     const double g = du + d->r * dv;
     *use_hull = !(zmax - zmin + w->eps < w->rlo * near ||
                   g + 0.5 * dv_abs / near + w->eps < w->rlo);
     *own = !(g + w->eps < w->rlo);
-}
-
-/* rise[u]: the steepest rise a column of the cells from column u to u + 1
- * about line k (as line_below bounds the whole line's): the largest
- * difference along u there, plus r times the largest along v at either
- * column (a cell's z_v blends both of its columns').  A texel's own
- * columns u .. u + m rise at most the largest of theirs. */
-static void line_rises(const hfs_field *f, const sweep_dir *d, long k, double *rise)
-{
-    band b = band_column(f, d, k, 0);
-    for (int u = 0; u < d->nu; ++u) {
-        const band next = u + 1 < d->nu ? band_column(f, d, k, u + 1) : b;
-        rise[u] = b.du + d->r * (next.dv > b.dv ? next.dv : b.dv);
-        b = next;
-    }
 }
 
 /* The lines of an azimuth's sweep: k0..k1 (v = k + r u), each walked from
@@ -375,7 +364,7 @@ static void sweep_lines(const sweep_dir *d, long *k0, long *k1)
 
 /* One azimuth's lines k in [ka, kb): each walked from the field's end.
  * Each texel is written by exactly one line (the one nearest its own),
- * so any split of the lines gives the same values.  eps: line_below's. */
+ * so any split of the lines gives the same values.  eps: line_bounds'. */
 static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, double hi,
                           double eps, long ka, long kb, hull *h, float *out)
 {
@@ -387,11 +376,8 @@ static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, d
         int use_hull = 1, own = 1;
         const double *rise = NULL;
         if (w.rlo > 0.0) {
-            line_below(f, &d, k, &w, near, &use_hull, &own);
-            if (own) { /* not the whole line's columns: maybe a texel's */
-                line_rises(f, &d, k, h->rise);
-                rise = h->rise;
-            }
+            line_bounds(f, &d, k, &w, near, h->rise, &use_hull, &own);
+            rise = own ? h->rise : NULL; /* not the whole line's columns: maybe a texel's */
         }
         h->n = 0;
         for (int u = d.nu - 1; u >= 0; --u) {

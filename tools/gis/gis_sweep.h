@@ -54,8 +54,8 @@ int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads
  * along the azimuth (with its offset from its texels' rays), stays below
  * lo skips its hull, or its texels' own columns, or both (a high sun's
  * lines do), and a texel whose own columns cannot rise to lo skips them:
- * the same values, from bounds that cannot miss (gis_sweep.c's line_below
- * and line_rises).  [-pi/2, pi/2] is gis_sweep_horizons. */
+ * the same values, from bounds that cannot miss (gis_sweep.c's
+ * line_bounds).  [-pi/2, pi/2] is gis_sweep_horizons. */
 int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int threads, double lo,
                           double hi, float *out, hfs_error *err);
 
