@@ -4,7 +4,7 @@
 #   -DMODE=embed_product -DINPUT=<sh_product.glsl.inc> -DOUTPUT=<file.c>
 #       the generated GLSL SH product as the C string hfs_gles_sh_product_src;
 #   -DMODE=validate_pass -DVALIDATOR=<glslangValidator> -DLIB=<gles_lib>
-#       -DLIB2=<gles_ray> -DLIB3=<gles_view> -DPRODUCT=<inc or empty> -DINPUT=<pass>
+#       -DLIB0=<gles_pairs> -DLIB2=<gles_ray> -DLIB3=<gles_view> -DPRODUCT=<inc or empty> -DINPUT=<pass>
 #       -DSTAMP=<file>
 #       the pass exactly as the runtime composes it (lib + lib2 + lib3 + [product] + pass,
 #       "#line" markers), once per "// hfs-variant:" line and once plain,
@@ -27,6 +27,7 @@ const char hfs_gles_sh_product_src[] = {
     file(RENAME "${OUTPUT}.tmp" "${OUTPUT}")
   elseif(MODE STREQUAL "validate_pass")
     file(READ "${INPUT}" text)
+    file(READ "${LIB0}" lib0)
     file(READ "${LIB}" lib)
     file(READ "${LIB2}" lib2)
     file(READ "${LIB3}" lib3)
@@ -42,7 +43,7 @@ const char hfs_gles_sh_product_src[] = {
     foreach(variant IN LISTS variants)
       list(GET prefixes ${index} prefix)
       set(tmp "${stamp_dir}/${name}.composed.${index}.frag")
-      file(WRITE "${tmp}" "${prefix}#line 1 1\n${lib}\n#line 1 3\n${lib2}\n#line 1 4\n${lib3}\n#line 1 2\n${prod}\n#line 1 0\n${text}")
+      file(WRITE "${tmp}" "${prefix}#line 1 5\n${lib0}\n#line 1 1\n${lib}\n#line 1 3\n${lib2}\n#line 1 4\n${lib3}\n#line 1 2\n${prod}\n#line 1 0\n${text}")
       set(stages "${tmp}")
       if(VERT)
         file(READ "${VERT}" vtext)
@@ -55,7 +56,7 @@ const char hfs_gles_sh_product_src[] = {
       file(REMOVE ${stages})
       if(NOT result EQUAL 0)
         message(FATAL_ERROR "${INPUT}: composed with gles_lib (and the SH product) it is not "
-                            "valid GLSL ES 3.00 (variant: ${variant}; source 1 = gles_lib, "
+                            "valid GLSL ES 3.00 (variant: ${variant}; source 5 = gles_pairs, 1 = gles_lib, "
                             "3 = gles_ray, 4 = gles_view, 2 = product, 0 = the pass)\n${out}")
       endif()
       math(EXPR index "${index} + 1")

@@ -1,10 +1,12 @@
 /*
  * gles_lib.frag - functions shared by the GLES renderer's passes.  At
  * program creation (runtime/gles/programs.c) every pass is compiled as
- *     "#version 300 es" + variant defines + gles_lib.frag + gles_ray.frag
- *     + sh_product.glsl.inc (generated) + the pass shader,
+ *     "#version 300 es" + variant defines + gles_pairs.frag + gles_lib.frag
+ *     + gles_ray.frag + gles_view.frag + sh_product.glsl.inc (generated)
+ *     + the pass shader,
  * with #line markers so driver messages name the right part (source string
- * 1 = this file, 3 = gles_ray.frag (the gap search), 2 = the SH product,
+ * 5 = gles_pairs.frag (the (hi, lo) pairs), 1 = this file, 3 =
+ * gles_ray.frag (the gap search), 4 = gles_view.frag, 2 = the SH product,
  * 0 = the pass).  Passes declare the
  * prototypes they use, so each file also compiles alone (build-time check).
  *
@@ -13,6 +15,7 @@
  * renderer is safe at fp16 arithmetic except colour output.
  *
  * Variant defines: HFS_FP32 (textures are 32F: heights stored as (v, 0)).
+ * The (hi, lo) pairs' functions are gles_pairs.frag's, composed before.
  */
 precision highp float;
 precision highp int;
@@ -22,68 +25,8 @@ precision highp sampler2DArray;
 #define HFS_PI 3.14159265358979
 #define HFS_HALF_PI 1.5707963267948966
 
-/* ---- heights: normalized v stored as (hi, lo), v = hi + lo -------------- */
-
-float hfs_h(vec2 t)
-{
-    return t.x + t.y;
-}
-
-/* a - b, differencing the halves first (exact for equal his). */
-float hfs_hdiff(vec2 a, vec2 b)
-{
-    return (a.x - b.x) + (a.y - b.y);
-}
-
-/* lerp of two hi+lo values in difference form: exact for a == b. */
-float hfs_hlerp(vec2 a, vec2 b, float t)
-{
-    return hfs_h(a) + t * hfs_hdiff(b, a);
-}
-
-/* The fp16 value nearest to v (HFS_FP32: v itself).  Render targets may
- * convert float to half by truncation (llvmpipe does: a bias of half an
- * ulp, 2^-12 relative, in every stored value), and packHalf2x16's rounding
- * is implementation-defined, so the neighbours of whatever it returns are
- * compared explicitly; the value written is then exactly representable and
- * stored unchanged. */
-float hfs_f16(float v)
-{
-#ifdef HFS_FP32
-    return v;
-#else
-    uint b = packHalf2x16(vec2(v, 0.0));
-    float h = unpackHalf2x16(b).x;
-    float up = unpackHalf2x16(b + 1u).x;    /* next magnitude (inf/NaN at the ends) */
-    float dn = unpackHalf2x16(b - 1u).x;    /* previous magnitude (NaN below 0) */
-    float best = h;
-    if (abs(up - v) < abs(best - v))
-        best = up;
-    if (abs(dn - v) < abs(best - v))
-        best = dn;
-    return best;
-#endif
-}
-
-vec4 hfs_f16v(vec4 v)
-{
-    return vec4(hfs_f16(v.x), hfs_f16(v.y), hfs_f16(v.z), hfs_f16(v.w));
-}
-
-/* v -> (hi, lo) with hi exactly representable in fp16, so that storing the
- * pair in an RG16F target keeps v to ~2^-21 relative.  hi need not be the
- * nearest half (any representable one near v will do: lo holds the rest),
- * and lo's own rounding in the target (truncation on llvmpipe) costs at most
- * an ulp of lo, 2^-21 of v: one pack/unpack is enough. */
-vec2 hfs_split(float v)
-{
-#ifdef HFS_FP32
-    return vec2(v, 0.0);
-#else
-    float hi = unpackHalf2x16(packHalf2x16(vec2(v, 0.0))).x;
-    return vec2(hi, v - hi);
-#endif
-}
+float hfs_hdiff(vec2 a, vec2 b);                          /* gles_pairs.frag */
+vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl);
 
 /* Texture coordinate of full-resolution texel p on the visibility grid
  * (vsize receivers, one every sub texels, the last at W-1/H-1): between
@@ -316,6 +259,27 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
 
 /* ---- lights ------------------------------------------------------------------ */
 
+/* sin(x) to float's RELATIVE precision.  A GPU may
+ * compute sin() to an absolute error near 2^-21 (NVIDIA's hardware sine:
+ * tests/test_glsl_numerics_gpu.c), no digit at all for a 1e-8 rad sun, whose
+ * irradiance goes as sin^2.  Below |x| = 1/2 the Taylor series to x^9
+ * (the next term is under 2^-30 of the sum); above it sin() (in
+ * [1/2, pi/2] an absolute error of 2^-21 is under 2^-20 of the value). */
+float hfs_sin_acc(float x)
+{
+    float x2 = x * x;
+    if (x2 < 0.25)
+        return x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0))));
+    return sin(x);
+}
+
+vec4 hfs_sin_acc4(vec4 x)
+{
+    vec4 x2 = x * x;
+    vec4 ser = x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0))));
+    return mix(sin(x), ser, lessThan(x2, vec4(0.25)));
+}
+
 /* Irradiance of a uniform cap whose half-angle (< pi/2) has sine s and
  * cosine c and whose axis makes angle acos(cos_beta) with the normal
  * (runtime/core/lights.c).  Taking the half-angle by its sine spares a sphere
@@ -359,7 +323,7 @@ float hfs_cap_irradiance(float cos_beta, float alpha)
 {
     if (!(alpha > 0.0))
         return 0.0;
-    return hfs_cap_irradiance_sc(cos_beta, sin(alpha), cos(alpha));
+    return hfs_cap_irradiance_sc(cos_beta, hfs_sin_acc(alpha), cos(alpha));
 }
 
 /* ---- horizon sampling on the visibility grid (env_horizons, key_horizons, ------ */
@@ -429,7 +393,7 @@ float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, 
 {
     vec2 inv_size = 1.0 / vec2(size);
     vec2 gc = vec2(g) + 0.5;
-    vec2 t = texture(levels, vec3((gc + o) * inv_size, sc.z)).xy;
+    vec2 t = hfs_pair_tex4_layer(levels, vec3((gc + o) * inv_size, sc.z)).xy;
     return hfs_hdiff(t, h) * sc.y;
 }
 

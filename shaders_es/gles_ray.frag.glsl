@@ -2,8 +2,8 @@
  * gles_ray.frag - the gap search (runtime/core/ray_bound.h
  * hfs_ray_bound_search, DESIGN.md "Horizons"), the second part of the
  * GLES renderer's shader library: every pass is compiled as
- *     "#version 300 es" + variant defines + gles_lib.frag + gles_ray.frag
- *     + [sh_product.glsl.inc] + the pass shader
+ *     "#version 300 es" + variant defines + gles_pairs.frag + gles_lib.frag
+ *     + gles_ray.frag + gles_view.frag + [sh_product.glsl.inc] + the pass
  * (runtime/gles/programs.c; source string 3 in driver messages).  Kept
  * apart from gles_lib.frag so that each library file stays one job.
  *

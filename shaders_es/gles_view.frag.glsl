@@ -2,8 +2,9 @@
  * gles_view.frag - what the 3-D view shows besides the lit terrain
  * (issue 41): the environment map's background and the aerial
  * perspective, the third part of the GLES renderer's shader library
- * (runtime/gles/programs.c composes every pass as gles_lib + gles_ray +
- * gles_view + [product] + the pass; source string 4 in driver messages).
+ * (runtime/gles/programs.c composes every pass as gles_pairs + gles_lib +
+ * gles_ray + gles_view + [product] + the pass; source string 4 in driver
+ * messages).
  * Each function is the float twin of runtime/core/view_look.c's, which
  * the truth's (and the cpu backend's) view calls per pixel: change both
  * together (test_view_look compares the two paths).

@@ -60,6 +60,7 @@ precision highp sampler2DArray;
 
 vec3 hfs_normal(vec4 t);
 vec2 hfs_split(float v);
+float hfs_half_nearest(float v);
 ivec2 hfs_receiver(ivec2 size, int sub);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
 float hfs_floor(vec3 n, vec2 cs);
@@ -240,7 +241,7 @@ void main()
         float stored = u_near > 0 ? tan(clamp(best, -HFS_KEY_TAN_ANGLE, HFS_KEY_TAN_ANGLE)) : best;
         /* D rounded to fp16 whatever the targets hold, so that fp16 and
          * fp32 frames correct with the same distance */
-        dist = unpackHalf2x16(packHalf2x16(vec2(dist, 0.0))).x;
+        dist = hfs_half_nearest(dist);
         res[q] = vec4(hfs_split(stored), seen ? dist : 0.0, 0.0);
     }
 #ifdef HFS_COUNT

@@ -75,6 +75,8 @@ vec4 hfs_nlp_occ(float sigma);
 vec4 hfs_visible(float omega, vec4 win, vec4 occ_top);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 float hfs_cap_irradiance(float cos_beta, float alpha);
+float hfs_sin_acc(float x);
+vec4 hfs_sin_acc4(vec4 x);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
 float hfs_floor(vec3 n, vec2 cs);
@@ -154,7 +156,7 @@ vec4 local_tri_cos(float w)
     if (!(w > 0.0))
         return vec4(0.0);
     vec4 m = vec4(1.0, 1.0, 2.0, 3.0);
-    vec4 x = m * w, hs = sin(0.5 * x);
+    vec4 x = m * w, hs = hfs_sin_acc4(0.5 * x);
     vec4 r = 2.0 * hs * hs / (m * x);
     r.x = 0.5 * w;
     return r;
@@ -196,7 +198,7 @@ void local_weights(vec2 cs, vec4 gc, vec4 gs, out vec4 A[4])
  * band factors 4 pi sin^2(a/2), pi s^2, pi c s^2, pi/4 s^2 (5c^2 - 1)). */
 void local_cap_sh(float alpha, vec3 d, out vec4 L[4])
 {
-    float c = cos(alpha), s = sin(alpha), s2 = s * s, h = sin(0.5 * alpha);
+    float c = cos(alpha), s = hfs_sin_acc(alpha), s2 = s * s, h = hfs_sin_acc(0.5 * alpha);
     float f0 = 12.566370614359172 * h * h, f1 = 3.141592653589793 * s2;
     float f2 = f1 * c, f3 = 0.7853981633974483 * s2 * (5.0 * c * c - 1.0);
     vec4 y[4];

@@ -69,6 +69,7 @@ void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
 float hfs_cap_irradiance_sc(float cos_beta, float s, float c);
 vec2 hfs_split(float v);
+vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 
@@ -214,7 +215,7 @@ vec3 local_lights(ivec2 p, vec3 n, vec2 uv)
     vec4 rv = vec4(0.0);
     for (int q = 0; q < HFS_NLOCAL; ++q) { /* compiled in, as HFS_NKEYS */
         if (q % 2 == 0)
-            rv = texture(u_localv, vec3(uv, float(q / 2)));
+            rv = hfs_pair_tex4_layer(u_localv, vec3(uv, float(q / 2)));
         vec4 l0 = u_lights[2 * q], l1 = u_lights[2 * q + 1];
         vec3 v = l0.xyz - pw;
         float r = l0.w;

@@ -15,6 +15,7 @@ precision highp int;
 precision highp sampler2D;
 
 vec2 hfs_split(float v);
+vec2 hfs_pair_tex(highp sampler2D t, vec2 uv);
 float hfs_h(vec2 t);
 
 uniform highp sampler2D u_src;
@@ -26,6 +27,6 @@ void main()
 {
     /* gl_FragCoord.xy = (t + 0.5, r + 0.5): the level's texel centre in
      * normalized coordinates is the same point of the finer level. */
-    vec2 t = texture(u_src, gl_FragCoord.xy / vec2(u_dsize)).xy;
+    vec2 t = hfs_pair_tex(u_src, gl_FragCoord.xy / vec2(u_dsize));
     o_h = vec4(hfs_split(hfs_h(t)), 0.0, 0.0);
 }

@@ -29,6 +29,7 @@ precision highp int;
 precision highp sampler2D;
 
 vec2 hfs_split(float v);
+vec2 hfs_pair_tex(highp sampler2D t, vec2 uv);
 float hfs_h(vec2 t);
 float hfs_hdiff(vec2 a, vec2 b);
 
@@ -78,7 +79,7 @@ vec4 vpass(highp sampler2D src, ivec2 size)
     float p0, p1, t;
     taps(y, n, p0, p1, t);
     float cx = gl_FragCoord.x / float(size.x);
-    vec2 sa = texture(src, vec2(cx, p0)).xy, sb = texture(src, vec2(cx, p1)).xy;
+    vec2 sa = hfs_pair_tex(src, vec2(cx, p0)), sb = hfs_pair_tex(src, vec2(cx, p1));
     return vec4(hfs_split(hfs_h(sa) + t * hfs_hdiff(sb, sa)), 0.0, 0.0);
 }
 #endif
@@ -104,10 +105,10 @@ void main()
     float px0, px1, gx, py0, py1, gy;
     taps(x.x, ls.x, px0, px1, gx);
     taps(x.y, ls.y, py0, py1, gy);
-    vec2 s00 = texture(u_src, vec2(px0, py0)).xy;
-    vec2 s10 = texture(u_src, vec2(px1, py0)).xy;
-    vec2 s01 = texture(u_src, vec2(px0, py1)).xy;
-    vec2 s11 = texture(u_src, vec2(px1, py1)).xy;
+    vec2 s00 = hfs_pair_tex(u_src, vec2(px0, py0));
+    vec2 s10 = hfs_pair_tex(u_src, vec2(px1, py0));
+    vec2 s01 = hfs_pair_tex(u_src, vec2(px0, py1));
+    vec2 s11 = hfs_pair_tex(u_src, vec2(px1, py1));
     float top = hfs_h(s00) + gx * hfs_hdiff(s10, s00);
     float bot = hfs_h(s01) + gx * hfs_hdiff(s11, s01);
     o_h = vec4(hfs_split(top + gy * (bot - top)), 0.0, 0.0);
@@ -126,7 +127,7 @@ void main()
         a = vec2(c.x, p0);
         b = vec2(c.x, p1);
     }
-    vec2 sa = texture(u_src, a).xy, sb = texture(u_src, b).xy;
+    vec2 sa = hfs_pair_tex(u_src, a), sb = hfs_pair_tex(u_src, b);
     o_h = vec4(hfs_split(hfs_h(sa) + t * hfs_hdiff(sb, sa)), 0.0, 0.0);
 #endif
 }

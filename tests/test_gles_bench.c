@@ -5,7 +5,7 @@
  *
  *   gles_bench [--scene NAME|FILE] [--size N] [--precision fp16|fp32]
  *              [--path legendre|tables|slice] [--subsample S] [--lights env|key|both]
- *              [--frames F] [--cold] [--count] [--compare] [--k K] [--offset O]
+ *              [--frames F] [--cold] [--count] [--compare] [--finish] [--k K] [--offset O]
  *              [--nphi-env N] [--nphi-key N] [--refine N] [--split 0|1] [--far-from N]
  *              [--far-dirs K] [--far-step G] [--context NAME] [--profile P]
  *              [--data DIR] [--dx F] [--zscale F] [--vs-fp32]
@@ -19,6 +19,10 @@
  * horizon passes (timing level 2, one extra frame).  --compare: SPEC
  * metrics against the CPU reference; --vs-fp32: the fp16 frame against the
  * same renderer at --precision fp32 (the fp16 storage error alone).
+ * --finish times each stage by glFinish and the clock even where timer
+ * queries exist: a stage's host and driver work as well as its GPU time
+ * (on a real GPU the difference shows what the host adds; the frame is
+ * slower by the finishes).
  */
 #include "backends.h"
 #include "test_gles_scenes.h"
@@ -67,7 +71,7 @@ static double minimum(const double *v, int n)
 
 typedef struct bench_opts {
     const char *scene, *prec, *path, *lights, *context, *profile, *data;
-    int n, sub, frames, cold, count, compare, vs32;
+    int n, sub, frames, cold, count, compare, vs32, finish;
     double dx, zscale;
     hfs_quality q;
 } bench_opts;
@@ -78,7 +82,7 @@ static void usage(FILE *to)
 {
     fprintf(to, "usage: gles_bench [--scene NAME|FILE] [--size N] [--precision fp16|fp32]\n"
                 "    [--path legendre|tables|slice] [--subsample S] [--lights env|key|both]\n"
-                "    [--frames F] [--cold] [--count] [--compare] [--k K] [--offset O]\n"
+                "    [--frames F] [--cold] [--count] [--compare] [--finish] [--k K] [--offset O]\n"
                 "    [--nphi-env N] [--nphi-key N] [--refine N] [--split 0|1] [--far-from N]\n"
                 "    [--far-dirs K] [--far-step G] [--context NAME] [--profile P]\n"
                 "    [--data DIR] [--dx F] [--zscale F] [--vs-fp32]\n"
@@ -152,7 +156,7 @@ static int value_arg(bench_opts *o, const char *a, const char *v)
 static int parse_args(int argc, char **argv, bench_opts *o)
 {
     *o = (bench_opts){"fractal25", "fp16", "legendre", "both", NULL, NULL, HFS_DATA_DIR,
-                      256, 2, 5, 0, 0, 0, 0, 0.0, 0.0, {0}};
+                      256, 2, 5, 0, 0, 0, 0, 0, 0.0, 0.0, {0}};
     hfs_quality_defaults(&o->q);
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -160,6 +164,7 @@ static int parse_args(int argc, char **argv, bench_opts *o)
                     : !strcmp(a, "--count")   ? &o->count
                     : !strcmp(a, "--compare") ? &o->compare
                     : !strcmp(a, "--vs-fp32") ? &o->vs32
+                    : !strcmp(a, "--finish")  ? &o->finish
                                               : NULL;
         if (hfs_is_help(a)) {
             usage(stdout);
@@ -214,6 +219,8 @@ int main(int argc, char **argv)
     if (hfs_image_alloc(&img, s.f.width, s.f.height, &err))
         return 1;
     hfs_renderer_set_timing(r, 1);
+    if (o.finish)
+        hfs_renderer_set_timing_finish(r, 1);
     hfs_timings t;
     if (hfs_renderer_render(r, &s.f, &l, &q, &img, NULL, NULL, &err)) {
         fprintf(stderr, "gles_bench: %s\n", err.msg);

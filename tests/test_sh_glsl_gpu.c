@@ -15,16 +15,13 @@
  *
  * Exact readback without float render targets (not in the es30-half
  * profile): the shader writes floatBitsToUint(result) into an RGBA32UI
- * target (colour-renderable in core ES 3.0), read with RGBA_INTEGER /
- * UNSIGNED_INT.  Error measure per output k: |gpu - cpu| / m_k with m_k =
+ * target (colour-renderable in core ES 3.0; tests/gl_bits.h).  Error measure per output k: |gpu - cpu| / m_k with m_k =
  * sum over the product's terms of |C_ijk a_i b_j| (+ |C_ijk a_j b_i|), the
  * scale fp32 rounding works on.  Bounds ~10x the measurement (at each check).
  *
  * Exit 77 (skip) only when no GL context can be made here.
  */
-#include "gl_context.h"
-#include "gl_shaders.h"
-#include "gl_util.h"
+#include "gl_bits.h"
 #include "hfshade.h"
 #include "oracle_sh.h"
 #include "sh.h"
@@ -63,15 +60,13 @@ static const char *frag_main =
     "}\n";
 
 typedef struct gpu_product {
-    const hfs_gl *gl;
-    GLuint program, tex, fbo, vao;
+    gl_bits b; /* the program and its NP x 4 target */
     GLint loc_a, loc_b;
 } gpu_product;
 
 static int gpu_init(gpu_product *g, const hfs_gl *gl, hfs_error *err)
 {
     memset(g, 0, sizeof *g);
-    g->gl = gl;
     const char *prod = hfs_gles_sh_product_src;
     const size_t size = strlen(prod) + strlen(frag_main) + 128;
     char *src = malloc(size);
@@ -81,76 +76,29 @@ static int gpu_init(gpu_product *g, const hfs_gl *gl, hfs_error *err)
     for (char *c = src; *c; ++c) /* the renderer does the same: GLSL ES is ASCII */
         if ((unsigned char)*c >= 0x80)
             *c = ' ';
-    int rc = hfs_gl_program_from_sources(gl, "fullscreen.vert", hfs_shader_source("fullscreen.vert"),
-                                         "sh_product_test.frag", src, NULL, &g->program, err);
+    const int rc = gl_bits_init(&g->b, gl, "sh_product_test.frag", src, NULL, NP, 4, err);
     free(src);
     if (rc)
         return rc;
-    g->loc_a = gl->GetUniformLocation(g->program, "u_a");
-    g->loc_b = gl->GetUniformLocation(g->program, "u_b");
-    gl->GenTextures(1, &g->tex);
-    gl->BindTexture(GL_TEXTURE_2D, g->tex);
-    gl->TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32UI, NP, 4);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl->BindTexture(GL_TEXTURE_2D, 0);
-    gl->GenFramebuffers(1, &g->fbo);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, g->fbo);
-    gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, g->tex, 0);
-    const GLenum st = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
-    gl->GenVertexArrays(1, &g->vao);
-    if (st != GL_FRAMEBUFFER_COMPLETE) {
-        snprintf(err->msg, sizeof err->msg, "RGBA32UI framebuffer incomplete (0x%x)", (unsigned)st);
-        return -1;
-    }
-    return hfs_gl_check(gl, "product test setup", err);
-}
-
-static void gpu_free(gpu_product *g)
-{
-    const hfs_gl *gl = g->gl;
-    if (!gl)
-        return;
-    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (g->vao)
-        gl->DeleteVertexArrays(1, &g->vao);
-    if (g->fbo)
-        gl->DeleteFramebuffers(1, &g->fbo);
-    if (g->tex)
-        gl->DeleteTextures(1, &g->tex);
-    if (g->program)
-        gl->DeleteProgram(g->program);
+    g->loc_a = gl->GetUniformLocation(g->b.program, "u_a");
+    g->loc_b = gl->GetUniformLocation(g->b.program, "u_b");
+    return HFS_OK;
 }
 
 /* out[p][k] = GPU product of pair p (np <= NP pairs). */
 static int gpu_run(gpu_product *g, int np, const float a[][16], const float b[][16], float out[][16],
                    hfs_error *err)
 {
-    const hfs_gl *gl = g->gl;
+    const hfs_gl *gl = g->b.gl;
     float ua[4 * NP * 4] = {0}, ub[4 * NP * 4] = {0};
     for (int p = 0; p < np; ++p)
         for (int k = 0; k < 16; ++k)
             ua[p * 16 + k] = a[p][k], ub[p * 16 + k] = b[p][k]; /* vec4 (4p + k/4), component k%4 */
-    gl->UseProgram(g->program);
+    gl->UseProgram(g->b.program);
     gl->Uniform4fv(g->loc_a, 4 * NP, ua);
     gl->Uniform4fv(g->loc_b, 4 * NP, ub);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, g->fbo);
-    const GLenum att = GL_COLOR_ATTACHMENT0;
-    gl->DrawBuffers(1, &att);
-    gl->Viewport(0, 0, NP, 4);
-    const GLuint clear[4] = {0x7fc00000u, 0x7fc00000u, 0x7fc00000u, 0x7fc00000u}; /* NaN if not drawn */
-    gl->ClearBufferuiv(GL_COLOR, 0, clear);
-    gl->BindVertexArray(g->vao);
-    gl->DrawArrays(GL_TRIANGLES, 0, 3);
-    gl->BindVertexArray(0);
-    gl->UseProgram(0);
     uint32_t bits[NP * 4 * 4];
-    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, g->fbo);
-    gl->ReadBuffer(GL_COLOR_ATTACHMENT0);
-    gl->PixelStorei(GL_PACK_ALIGNMENT, 4);
-    gl->ReadPixels(0, 0, NP, 4, GL_RGBA_INTEGER, GL_UNSIGNED_INT, bits);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (hfs_gl_check(gl, "product draw/readback", err))
+    if (gl_bits_draw(&g->b, bits, err))
         return -1;
     for (int p = 0; p < np; ++p)
         for (int grp = 0; grp < 4; ++grp)
@@ -348,29 +296,15 @@ int main(int argc, char **argv)
     setvbuf(stdout, NULL, _IONBF, 0);
     const char *name = argc > 1 ? argv[1] : "surfaceless";
     const clock_t t0 = clock();
-    hfs_error err = {""};
-    hfs_gl_context *ctx = NULL;
-    int rc = hfs_gl_context_create(name, &ctx, &err);
-    if (rc == HFS_E_CONTEXT || rc == HFS_E_UNSUPPORTED) {
-        printf("SKIP: %s\n", err.msg);
-        return 77;
-    }
-    if (rc) {
-        printf("FAIL: %s (%s)\n", err.msg, hfs_status_name(rc));
-        return 1;
-    }
-    printf("context %s\n", hfs_gl_context_describe(ctx));
     hfs_gl gl;
-    rc = hfs_gl_load(&gl, hfs_gl_context_loader, ctx, &err);
-    CHECK(rc == 0, "%s", err.msg);
-    if (rc == 0) {
-        gpu_product g;
-        rc = gpu_init(&g, &gl, &err);
-        CHECK(rc == 0, "product program: %s", err.msg);
-        if (rc == 0)
-            check_products(&g);
-        gpu_free(&g);
-    }
+    hfs_gl_context *ctx = gl_bits_context(name, &gl);
+    hfs_error err = {""};
+    gpu_product g;
+    const int rc = gpu_init(&g, &gl, &err);
+    CHECK(rc == 0, "product program: %s", err.msg);
+    if (rc == 0)
+        check_products(&g);
+    gl_bits_free(&g.b);
     hfs_gl_context_destroy(ctx);
     check_gles_env_rotate(name);
     printf("cpu time %.2f s\n", (double)(clock() - t0) / CLOCKS_PER_SEC);

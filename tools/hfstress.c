@@ -343,6 +343,16 @@ static void expect_refusal(runner *rn, const stress_case *c, const stress_scene 
 /* Every radiance of case c times r (STRESS_RADIANCE_SCALES): the image
  * divided by r must equal the unscaled one (keep) within the tolerance of
  * the geometric scales; a finite scaled scene must render. */
+/* -v: where a difference check's worst texel is, and the two values. */
+static void add_where(runner *rn, line *ln, const hfs_image *a, const hfs_image *b, size_t at)
+{
+    if (!rn->o->verbose || !a->rgb || !b->rgb)
+        return;
+    const size_t px = at / 3;
+    add(ln, 1, " (at %zu,%zu ch %zu: %.9g vs %.9g)", px % (size_t)a->width,
+        px / (size_t)a->width, at % 3, a->rgb[at], b->rgb[at]);
+}
+
 static void check_radiance_scales(runner *rn, const stress_case *c, int b, const hfs_image *keep,
                                   double umax, line *ln)
 {
@@ -372,8 +382,10 @@ static void check_radiance_scales(runner *rn, const stress_case *c, int b, const
         } else {
             for (size_t i = 0; i < (size_t)img.width * (size_t)img.height * 3; ++i)
                 img.rgb[i] = (float)(img.rgb[i] / r);
-            const double d = stress_max_diff(&img, keep, umax);
+            size_t at;
+            const double d = stress_max_diff_at(&img, keep, umax, &at);
             add(ln, d <= t->scale, "  radiance x%g: %.1e [%.0e]", r, d, t->scale);
+            add_where(rn, ln, &img, keep, at);
         }
         hfs_image_free(&img);
         stress_scene_free(&sc);
@@ -435,8 +447,10 @@ static void run_backend(runner *rn, const stress_case *c, const stress_scene *sc
         if (rc) {
             add(&ln, 0, "  scale %g: render failed (%s): %s", s, hfs_status_name(rc), err.msg);
         } else {
-            const double d = stress_max_diff(&img, keep, umax);
+            size_t at;
+            const double d = stress_max_diff_at(&img, keep, umax, &at);
             add(&ln, d <= t->scale, "  scale %g: %.1e [%.0e]", s, d, t->scale);
+            add_where(rn, &ln, &img, keep, at);
         }
         hfs_image_free(&img);
         stress_scene_free(&scaled);
@@ -452,10 +466,12 @@ static void compare_precisions(runner *rn, const stress_case *c, const char *who
 {
     const double t0 = now_s();
     line ln = {.len = 0};
-    const double d = stress_max_diff(fp16, fp32, umax);
+    size_t at;
+    const double d = stress_max_diff_at(fp16, fp32, umax, &at);
     add(&ln, d <= ft->total,
         "  max %.1e [%.1e = env %.1e + excess %.1e + heights %.1e + normals %.1e + pairs %.1e]", d,
         ft->total, ft->env, ft->excess, ft->heights, ft->normals, ft->pairs);
+    add_where(rn, &ln, fp16, fp32, at);
     finish(rn, c, who, &ln, t0);
 }
 

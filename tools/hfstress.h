@@ -174,6 +174,8 @@ void stress_check_bound(const hfs_image *out, const hfs_image *unshadowed, doubl
 /* max |a - b| / norm over every texel and channel (norm > 0), or, when
  * norm == 0, max |a - b| itself (an image that must be exactly 0). */
 double stress_max_diff(const hfs_image *a, const hfs_image *b, double norm);
+/* The same, and where (*at: the index into rgb of the largest difference). */
+double stress_max_diff_at(const hfs_image *a, const hfs_image *b, double norm, size_t *at);
 
 /* max |out - value| / max(value, 1e-300) over every texel and channel. */
 double stress_const_err(const hfs_image *out, double value);

@@ -68,16 +68,23 @@ void stress_check_bound(const hfs_image *out, const hfs_image *un, double umax,
     b->over = umax > 0.0 ? worst / umax : worst;
 }
 
-double stress_max_diff(const hfs_image *a, const hfs_image *b, double norm)
+double stress_max_diff_at(const hfs_image *a, const hfs_image *b, double norm, size_t *at)
 {
     const size_t n = (size_t)a->width * (size_t)a->height * 3;
     double m = 0.0;
+    *at = 0;
     for (size_t i = 0; i < n; ++i) {
         const double d = fabs((double)a->rgb[i] - (double)b->rgb[i]);
         if (!(d <= m))
-            m = d; /* NaN propagates as a failure */
+            m = d, *at = i; /* NaN propagates as a failure */
     }
     return norm > 0.0 ? m / norm : m;
+}
+
+double stress_max_diff(const hfs_image *a, const hfs_image *b, double norm)
+{
+    size_t at;
+    return stress_max_diff_at(a, b, norm, &at);
 }
 
 double stress_const_err(const hfs_image *out, double value)

@@ -89,9 +89,10 @@ int hfs_gles_query_points(hfs_gles *g, const hfs_field *f, const hfs_lighting *l
 /* The largest field side one GLES frame takes: the profile's texture
  * limit at q's precision, at most HFS_GLES_MAX_FRAME_SIDE (a frame's
  * textures grow with the field: an 8192^2 one exceeds llvmpipe's memory for
- * one texture); 0 when no context can be made (the frame then says why). */
+ * one texture); 0 when no context can be made (the frame then says why).
+ * `limit` (n bytes) gets the limit as a refusal names it. */
 #define HFS_GLES_MAX_FRAME_SIDE 4096
-int hfs_gles_max_side(hfs_gles *g, const hfs_quality *q);
+int hfs_gles_max_side(hfs_gles *g, const hfs_quality *q, char *limit, size_t n);
 int hfs_gles_horizons(hfs_gles *g, const hfs_field *f, const hfs_quality *q,
                       const hfs_horizon_desc *d, float *out, hfs_error *err);
 /* One layer of key light k's shadow height map into out (W*H, world z). */

@@ -155,6 +155,7 @@ int hfs_gl_caps_select(const hfs_gl_driver *d, const char *profile, int want_fp3
     if (out.uniform_buffer_offset_alignment < 1)
         out.uniform_buffer_offset_alignment = 1;
     out.timer_query = d->timer_query;
+    out.pair_fetch = d->filter_inexact;
     out.max_renderbuffer_size = cap(d->max_renderbuffer_size, strict ? ES30_MAX_RENDERBUFFER_SIZE : 0);
     for (int a = 0; a < 2; ++a) /* the viewport bounds the view too */
         if (d->max_viewport[a] > 0 && d->max_viewport[a] < out.max_renderbuffer_size)
@@ -188,14 +189,19 @@ static const char *limit_text(const hfs_gl_caps *c, int limit, int driver, const
     return buf;
 }
 
+const char *hfs_gl_caps_texture_limit(const hfs_gl_caps *c, char *buf, size_t n)
+{
+    return limit_text(c, c->max_texture_size, c->driver.max_texture_size, "GL_MAX_TEXTURE_SIZE",
+                      buf, n);
+}
+
 int hfs_gl_caps_check_texture(const hfs_gl_caps *c, int w, int h, int layers,
                               const char *what, hfs_error *err)
 {
     char t[160];
     if (w > c->max_texture_size || h > c->max_texture_size)
         return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: a %dx%d texture exceeds %s", what, w, h,
-                        limit_text(c, c->max_texture_size, c->driver.max_texture_size,
-                                   "GL_MAX_TEXTURE_SIZE", t, sizeof t));
+                        hfs_gl_caps_texture_limit(c, t, sizeof t));
     if (layers > c->max_array_texture_layers)
         return hfs_fail(err, HFS_E_UNSUPPORTED, "%s: %d array layers exceed %s", what, layers,
                         limit_text(c, c->max_array_texture_layers,

@@ -65,6 +65,9 @@ typedef struct hfs_gl_driver {
                                     (GL_SAMPLES of glGetInternalformativ; 0:
                                     none, e.g. ES 3.0 core without the
                                     extension's multisample support)         */
+    int filter_inexact;          /* LINEAR blends off the exact position or
+                                    rounded to a half (gl_probe.h; set by the
+                                    renderer's setup, not hfs_gl_caps_query)  */
 } hfs_gl_driver;
 
 /* The effective capabilities under a profile. */
@@ -97,6 +100,9 @@ typedef struct hfs_gl_caps {
     int max_vertex_texture_image_units;
     int view_samples;            /* samples of the view's RGBA16F target: the
                                     driver's, at most 4; 1 = no multisampling */
+    int pair_fetch;              /* heights, normals and ratios are blended
+                                    by the shaders, not LINEAR (gl_probe.h):
+                                    a driver whose filter is inexact         */
 } hfs_gl_caps;
 
 /* Reads what the current context offers (the context gl was loaded from
@@ -117,6 +123,10 @@ const char *hfs_gl_profile_names(void);
 /* ---- checks (each returns 0 or HFS_E_UNSUPPORTED with one line) ---------- */
 
 /* A w x h texture with `layers` array layers (1 for a 2D texture). */
+/* The texture size limit as the refusals name it: "the driver's limit
+ * 16384 (GL_MAX_TEXTURE_SIZE)" or "the ES 3.0 minimum 2048
+ * (GL_MAX_TEXTURE_SIZE, strict limits; this driver allows 32768)"; buf. */
+const char *hfs_gl_caps_texture_limit(const hfs_gl_caps *c, char *buf, size_t n);
 int hfs_gl_caps_check_texture(const hfs_gl_caps *c, int w, int h, int layers,
                               const char *what, hfs_error *err);
 /* A uniform block of `bytes` bytes. */

@@ -192,6 +192,7 @@ static const target_format target_formats[] = {
     { GL_RG16F, "GL_RG16F", 1 },
     { GL_R16F, "GL_R16F", 1 },
     { GL_RGBA8, "GL_RGBA8", 0 },
+    { GL_RGBA32UI, "GL_RGBA32UI", 0 }, /* floats' bits, read exactly (gl_probe.c) */
 };
 
 int hfs_gl_target_create(const hfs_gl *gl, int width, int height, GLenum internal_format,

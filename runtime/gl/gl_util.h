@@ -55,8 +55,9 @@ typedef struct hfs_gl_target {
 } hfs_gl_target;
 
 /* internal_format: GL_RGBA16F, GL_RG16F, GL_R16F (need gl->render_half_float,
- * i.e. GL_EXT_color_buffer_half_float or _float on ES) or GL_RGBA8: the
- * product's formats (fp32 targets exist only in the renderer's es30-float
+ * i.e. GL_EXT_color_buffer_half_float or _float on ES), GL_RGBA8 or
+ * GL_RGBA32UI (a shader's floatBitsToUint, read exactly): the product's
+ * formats (fp32 targets exist only in the renderer's es30-float
  * comparison profile, chosen by gl_caps.c).  HFS_E_UNSUPPORTED when the
  * format is not renderable here (capability missing or framebuffer
  * incomplete).  Leaves the target's framebuffer bound to GL_FRAMEBUFFER and

@@ -11,6 +11,7 @@
  */
 #include "gles_backend.h"
 
+#include "gl_probe.h"
 #include "gl_util.h"
 #include "key_setup.h"
 #include "lights.h"
@@ -42,6 +43,8 @@ static int setup(hfs_gles *g, const char *profile, int strict_limits, hfs_error 
     if ((rc = hfs_gl_load(&g->gl, hfs_gl_context_loader, g->ctx, err)))
         return rc;
     hfs_gl_caps_query(&g->gl, &g->driver);
+    g->driver.filter_inexact = hfs_gl_probe_filter_inexact(&g->gl);
+    g->programs.pair_fetch = g->driver.filter_inexact;
     g->strict_limits = strict_limits != 0;
     if (profile) {
         hfs_gl_caps c;
@@ -246,13 +249,19 @@ static void report_timings(hfs_gles *g, double t_start)
 
 /* One frame, with a view from cam when cam is not NULL, into the lit
  * texture instead of out when lit is not NULL. */
-int hfs_gles_max_side(hfs_gles *g, const hfs_quality *q)
+int hfs_gles_max_side(hfs_gles *g, const hfs_quality *q, char *limit, size_t n)
 {
     hfs_error ignored;
     if (hfs_gles_select_caps(g, q, &ignored))
         return 0;
     const int m = g->caps.max_texture_size;
-    return m < HFS_GLES_MAX_FRAME_SIDE ? m : HFS_GLES_MAX_FRAME_SIDE;
+    if (m < HFS_GLES_MAX_FRAME_SIDE) {
+        hfs_gl_caps_texture_limit(&g->caps, limit, n);
+        return m;
+    }
+    snprintf(limit, n, "the GLES frame's limit %d (its textures grow with the field)",
+             HFS_GLES_MAX_FRAME_SIDE);
+    return HFS_GLES_MAX_FRAME_SIDE;
 }
 
 /* A frame the device cannot hold: for a field past the ES 3.0 minimum

@@ -68,7 +68,8 @@ void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
         {"HFS_PAIRS", v->pairs},       {"HFS_FARK", v->far_k},
         {"HFS_FAR_ATLAS", v->far_atlas}, {"HFS_GLOSS_MAP", v->gloss_map},
         {"HFS_NEAR", v->near},         {"HFS_CELLS", v->cells}};
-    _Static_assert(sizeof all / sizeof all[0] <= HFS_GLES_MAX_DEFINES, "defines");
+    /* one slot kept for build()'s HFS_PAIR_FETCH */
+    _Static_assert(sizeof all / sizeof all[0] < HFS_GLES_MAX_DEFINES, "defines");
     int n = 0;
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
         if (all[i].value) {
@@ -154,26 +155,30 @@ static int bind_interface(const hfs_gl *gl, GLuint id, const program_row *row, h
     return HFS_OK;
 }
 
-/* "gles_lib + gles_ray + gles_view + [product] + pass", linked with the
- * row's vertex shader (source strings 1, 3, 4, 2, 0 in driver messages). */
+/* "gles_pairs + gles_lib + gles_ray + gles_view + [product] + pass", linked
+ * with the row's vertex shader (source strings 5, 1, 3, 4, 2, 0 in driver
+ * messages). */
 static int build(const hfs_gl *gl, const program_row *row, const hfs_gles_variant *v,
-                 GLuint *out, hfs_error *err)
+                 int pair_fetch, GLuint *out, hfs_error *err)
 {
+    const char *pairs = hfs_shader_source("gles_pairs.frag");
     const char *lib = hfs_shader_source("gles_lib.frag");
     const char *ray = hfs_shader_source("gles_ray.frag");
     const char *look = hfs_shader_source("gles_view.frag");
     const char *pass = hfs_shader_source(row->shader);
     const char *vert = hfs_shader_source(row->vert);
-    if (!lib || !ray || !look || !pass || !vert)
+    if (!pairs || !lib || !ray || !look || !pass || !vert)
         return hfs_fail(err, HFS_E_INVALID, "backend gles: shader %s not embedded", row->shader);
     const char *prod = row->product ? hfs_gles_sh_product_src : "";
-    const size_t size = strlen(lib) + strlen(ray) + strlen(look) + strlen(prod) + strlen(pass) +
-                        100;
+    const size_t size = strlen(pairs) + strlen(lib) + strlen(ray) + strlen(look) + strlen(prod) +
+                        strlen(pass) + 120;
     char *src = malloc(size);
     if (!src)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
-    snprintf(src, size, "#line 1 1\n%s\n#line 1 3\n%s\n#line 1 4\n%s\n#line 1 2\n%s\n#line 1 0\n%s",
-             lib, ray, look, prod, pass);
+    snprintf(src, size,
+             "#line 1 5\n%s\n#line 1 1\n%s\n#line 1 3\n%s\n#line 1 4\n%s\n#line 1 2\n%s\n"
+             "#line 1 0\n%s",
+             pairs, lib, ray, look, prod, pass);
     /* The generated product carries UTF-8 in a comment; GLSL ES 3.00 knows
      * ASCII only. */
     for (char *c = src; *c; ++c)
@@ -182,6 +187,13 @@ static int build(const hfs_gl *gl, const program_row *row, const hfs_gles_varian
     char bufs[HFS_GLES_MAX_DEFINES][32];
     const char *defs[HFS_GLES_MAX_DEFINES + 1];
     hfs_gles_variant_defines(v, bufs, defs);
+    if (pair_fetch) { /* the slot kept for it */
+        int n = 0;
+        while (defs[n])
+            ++n;
+        defs[n] = "HFS_PAIR_FETCH 1";
+        defs[n + 1] = NULL;
+    }
     int rc = hfs_gl_program_from_sources(gl, row->vert, vert, row->shader, src, defs,
                                          out, err);
     free(src);
@@ -209,7 +221,7 @@ int hfs_gles_program_use(hfs_gles_programs *c, const hfs_gl *gl, hfs_gles_progra
         if (c->n == HFS_GLES_MAX_PROGRAMS) /* a pathological sequence of settings */
             hfs_gles_programs_free(c, gl);
         GLuint name = 0;
-        int rc = build(gl, &rows[id], v, &name, err);
+        int rc = build(gl, &rows[id], v, c->pair_fetch, &name, err);
         if (rc)
             return rc;
         p = &c->prog[c->n++];

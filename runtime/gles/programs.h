@@ -80,6 +80,9 @@ typedef struct hfs_gles_program {
 typedef struct hfs_gles_programs {
     hfs_gles_program prog[HFS_GLES_MAX_PROGRAMS];
     int n;
+    int pair_fetch; /* HFS_PAIR_FETCH 1 in every program (gl_probe.h): a
+                       property of the context's driver, set before the
+                       first program is made */
 } hfs_gles_programs;
 
 /* The program (id, variant), compiled and linked on first use, made

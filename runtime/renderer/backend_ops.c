@@ -131,9 +131,9 @@ static int gles_horizons(void *state, const hfs_field *f, const hfs_quality *q,
     return rc;
 }
 
-static int gles_max_side(void *state, const hfs_quality *q)
+static int gles_max_side(void *state, const hfs_quality *q, char *limit, size_t n)
 {
-    const int side = hfs_gles_max_side(state, q);
+    const int side = hfs_gles_max_side(state, q, limit, n);
     hfs_gles_release(state);
     return side;
 }

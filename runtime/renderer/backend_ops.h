@@ -49,7 +49,7 @@ typedef struct backend_ops {
                     const hfs_horizon_desc *d, float *out, hfs_error *err);
     /* The largest field side one frame may have (a larger field is
      * rendered in tiles, tiled_render.h); NULL or 0: any. */
-    int (*max_side)(void *state, const hfs_quality *q);
+    int (*max_side)(void *state, const hfs_quality *q, char *limit, size_t n);
 } backend_ops;
 
 /* The row of backend b (hfs_backend), or NULL when there is none. */

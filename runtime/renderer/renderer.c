@@ -218,13 +218,14 @@ int hfs_renderer_render(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
     /* Every ES 3.0 device holds a 2048-texel frame: only a larger field asks
      * the backend (a context bound, its caps selected), off the kiosk's
      * per-frame path. */
+    char limit[200] = "";
     const int side = r->ops->max_side && (f->width > HFS_TILE_MIN_SIDE ||
                                           f->height > HFS_TILE_MIN_SIDE)
-                         ? r->ops->max_side(r->state, q)
+                         ? r->ops->max_side(r->state, q, limit, sizeof limit)
                          : 0;
     if (side > 0 && (f->width > side || f->height > side)) {
         tile_frame_ctx ctx = {r, q};
-        rc = hfs_tiled_render(f, l, side, tile_frame, &ctx, out, err);
+        rc = hfs_tiled_render(f, l, side, limit, tile_frame, &ctx, out, err);
         if (!rc && progress)
             progress(user, 1.0);
     } else {

@@ -71,16 +71,16 @@ hfs_field hfs_tile_sub_field(const hfs_field *f, const hfs_lighting *l, int x0, 
     return (hfs_field){w, h, z, f->dx, f->zscale};
 }
 
-int hfs_tiled_render(const hfs_field *f, const hfs_lighting *l, int max_side,
+int hfs_tiled_render(const hfs_field *f, const hfs_lighting *l, int max_side, const char *limit,
                      hfs_tile_frame_fn render, void *ctx, hfs_image *out, hfs_error *err)
 {
     const int halo0 = hfs_tile_halo(f, l);
     const int a = HFS_TILE_ALIGN, halo = halo0 < 0 ? -1 : (halo0 + a - 1) / a * a;
     const int inner = halo < 0 ? 0 : (max_side - 2 * halo) / a * a;
     if (inner < 4 * a)
-        return hfs_fail(err, HFS_E_UNSUPPORTED, "render: a %dx%d field exceeds the %d-texel "
-                        "tiles this device renders, and %s: the cpu backend renders any size",
-                        f->width, f->height, max_side,
+        return hfs_fail(err, HFS_E_UNSUPPORTED, "render: a %dx%d field exceeds %s, and tiles "
+                        "cannot help: %s; the cpu backend renders any size",
+                        f->width, f->height, limit,
                         halo < 0 ? "its lights see terrain at any distance (a local light, or "
                                    "a key light at or below its own radius)"
                                  : "its relief needs halos too wide for them");

@@ -32,11 +32,12 @@
 
 /* Renders field f into out (W x H) tile by tile through render (the
  * backend's frame of a sub-field, its own lighting), tiles of at most
- * max_side texels a side.  0, or an error (one line): the halo needed
- * leaves no room in such tiles, a local light, or the frame's own. */
+ * max_side texels a side (`limit`: the backend's limit as a refusal names
+ * it).  0, or an error (one line): the halo needed leaves no room in such
+ * tiles, a local light, or the frame's own. */
 typedef int (*hfs_tile_frame_fn)(void *ctx, const hfs_field *f, const hfs_lighting *l,
                                  hfs_image *out, hfs_error *err);
-int hfs_tiled_render(const hfs_field *f, const hfs_lighting *l, int max_side,
+int hfs_tiled_render(const hfs_field *f, const hfs_lighting *l, int max_side, const char *limit,
                      hfs_tile_frame_fn render, void *ctx, hfs_image *out, hfs_error *err);
 
 /* The sub-field [x0, x0 + w) x [y0, y0 + h) of f with its heights copied

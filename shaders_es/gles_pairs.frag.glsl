@@ -1,0 +1,154 @@
+/*
+ * gles_pairs.frag - the (hi, lo) pairs of the GLES renderer's shader
+ * library: heights, normals and light ratios stored as two halves whose
+ * sum keeps ~22 bits (hfs_split), read back (hfs_h, hfs_hdiff), rounded to
+ * halves in integer arithmetic (hfs_half_nearest) and blended as texture()
+ * blends them (hfs_pair_tex).  Every pass is compiled as
+ *     "#version 300 es" + variant defines + gles_pairs.frag + gles_lib.frag
+ *     + gles_ray.frag + gles_view.frag + [sh_product.glsl.inc] + the pass
+ * (runtime/gles/programs.c; source string 5 in driver messages).  Kept
+ * apart from gles_lib.frag so that each library file stays one job.
+ *
+ * Variant defines: HFS_FP32 (textures are 32F: heights stored as (v, 0));
+ * HFS_PAIR_FETCH (the driver's LINEAR is inexact: hfs_pair_tex).
+ */
+// hfs-variant: HFS_PAIR_FETCH 1
+// hfs-variant: HFS_PAIR_FETCH 1, HFS_FP32 1
+// hfs-variant: HFS_FP32 1
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+precision highp sampler2DArray;
+
+/* ---- heights: normalized v stored as (hi, lo), v = hi + lo -------------- */
+
+float hfs_h(vec2 t)
+{
+    return t.x + t.y;
+}
+
+/* a - b, differencing the halves first (exact for equal his). */
+float hfs_hdiff(vec2 a, vec2 b)
+{
+    return (a.x - b.x) + (a.y - b.y);
+}
+
+/* lerp of two hi+lo values in difference form: exact for a == b. */
+float hfs_hlerp(vec2 a, vec2 b, float t)
+{
+    return hfs_h(a) + t * hfs_hdiff(b, a);
+}
+
+/* The half nearest to v (ties to even), in integer arithmetic on v's bits.
+ * Not unpackHalf2x16(packHalf2x16(v)): a compiler may fold that pair to v
+ * (NVIDIA's does, seen on an H200: every hi+lo pair then stored lo = 0, and
+ * the heights, normals and lighting kept fp16's 11 bits; BENCHMARKS.md
+ * "Real-GPU stress"), and packHalf2x16's own rounding is implementation-
+ * defined.  Halves below 2^-14 are multiples of 2^-24; from 65520 up there
+ * is no half, and v is returned for the target to convert. */
+float hfs_half_nearest(float v)
+{
+    float a = abs(v);
+    if (a < 6.103515625e-05)
+        return roundEven(v * 16777216.0) * 5.9604644775390625e-08;
+    if (!(a < 65520.0))
+        return v;
+    uint u = floatBitsToUint(v);
+    u += 0x0FFFu + ((u >> 13) & 1u); /* half-way minus one, plus the kept lsb */
+    return uintBitsToFloat(u & 0xFFFFE000u);
+}
+
+/* The fp16 value nearest to v (HFS_FP32: v itself).  Render targets may
+ * convert float to half by truncation (llvmpipe does: a bias of half an
+ * ulp, 2^-12 relative, in every stored value): the value written is
+ * exactly representable and stored unchanged. */
+float hfs_f16(float v)
+{
+#ifdef HFS_FP32
+    return v;
+#else
+    return hfs_half_nearest(v);
+#endif
+}
+
+vec4 hfs_f16v(vec4 v)
+{
+    return vec4(hfs_f16(v.x), hfs_f16(v.y), hfs_f16(v.z), hfs_f16(v.w));
+}
+
+/* v -> (hi, lo) with hi exactly representable in fp16, so that storing the
+ * pair in an RG16F target keeps v to ~2^-21 relative (|v| < 65520): lo's
+ * own rounding in the target (truncation on llvmpipe) costs at most an ulp
+ * of lo, 2^-22 of v. */
+vec2 hfs_split(float v)
+{
+#ifdef HFS_FP32
+    return vec2(v, 0.0);
+#else
+    float hi = hfs_half_nearest(v);
+    return vec2(hi, v - hi);
+#endif
+}
+
+/* ---- (hi, lo) pairs blended as texture() blends them --------------------- */
+
+/* texture() of a pair texture (one pair in xy, or two in xy and zw; at
+ * fp32 (v, 0)).  Where the driver's LINEAR is inexact (HFS_PAIR_FETCH:
+ * runtime/gl/gl_probe.h; NVIDIA's keeps 8 bits of the position and rounds
+ * a 16F blend to a half, so hi's blend keeps 11 bits whatever lo holds),
+ * the four texels are fetched and their sums blended in float at the
+ * exact position, in difference form (exact where they are equal), and
+ * each pair comes back as (v, 0).  Four fetches for one: only there. */
+#ifdef HFS_PAIR_FETCH
+vec4 hfs_pair_blend(vec4 t00, vec4 t10, vec4 t01, vec4 t11, vec2 f)
+{
+    vec2 s00 = t00.xz + t00.yw, s10 = t10.xz + t10.yw;
+    vec2 s01 = t01.xz + t01.yw, s11 = t11.xz + t11.yw;
+    vec2 top = s00 + f.x * (s10 - s00), bot = s01 + f.x * (s11 - s01);
+    vec2 v = top + f.y * (bot - top);
+    return vec4(v.x, 0.0, v.y, 0.0);
+}
+
+/* The texels about uv (texel units p = uv size - 1/2), clamped to the edge
+ * as CLAMP_TO_EDGE does; f the fractions. */
+void hfs_pair_taps(ivec2 size, vec2 uv, out ivec2 a, out ivec2 b, out vec2 f)
+{
+    vec2 p = uv * vec2(size) - 0.5, i = floor(p);
+    f = p - i;
+    a = clamp(ivec2(i), ivec2(0), size - 1);
+    b = clamp(ivec2(i) + 1, ivec2(0), size - 1);
+}
+#endif
+
+vec4 hfs_pair_tex4(highp sampler2D t, vec2 uv)
+{
+#ifdef HFS_PAIR_FETCH
+    ivec2 a, b;
+    vec2 f;
+    hfs_pair_taps(textureSize(t, 0), uv, a, b, f);
+    return hfs_pair_blend(texelFetch(t, a, 0), texelFetch(t, ivec2(b.x, a.y), 0),
+                          texelFetch(t, ivec2(a.x, b.y), 0), texelFetch(t, b, 0), f);
+#else
+    return texture(t, uv);
+#endif
+}
+
+vec2 hfs_pair_tex(highp sampler2D t, vec2 uv)
+{
+    return hfs_pair_tex4(t, uv).xy;
+}
+
+/* The same on layer round(uvl.z) of an array. */
+vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl)
+{
+#ifdef HFS_PAIR_FETCH
+    ivec2 a, b;
+    vec2 f;
+    hfs_pair_taps(textureSize(t, 0).xy, uvl.xy, a, b, f);
+    int l = int(floor(uvl.z + 0.5));
+    return hfs_pair_blend(texelFetch(t, ivec3(a, l), 0), texelFetch(t, ivec3(b.x, a.y, l), 0),
+                          texelFetch(t, ivec3(a.x, b.y, l), 0), texelFetch(t, ivec3(b, l), 0), f);
+#else
+    return texture(t, uvl);
+#endif
+}
