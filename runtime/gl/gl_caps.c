@@ -155,7 +155,6 @@ int hfs_gl_caps_select(const hfs_gl_driver *d, const char *profile, int want_fp3
     if (out.uniform_buffer_offset_alignment < 1)
         out.uniform_buffer_offset_alignment = 1;
     out.timer_query = d->timer_query;
-    out.pair_fetch = d->filter_inexact;
     out.max_renderbuffer_size = cap(d->max_renderbuffer_size, strict ? ES30_MAX_RENDERBUFFER_SIZE : 0);
     for (int a = 0; a < 2; ++a) /* the viewport bounds the view too */
         if (d->max_viewport[a] > 0 && d->max_viewport[a] < out.max_renderbuffer_size)

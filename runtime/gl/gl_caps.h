@@ -100,9 +100,6 @@ typedef struct hfs_gl_caps {
     int max_vertex_texture_image_units;
     int view_samples;            /* samples of the view's RGBA16F target: the
                                     driver's, at most 4; 1 = no multisampling */
-    int pair_fetch;              /* heights, normals and ratios are blended
-                                    by the shaders, not LINEAR (gl_probe.h):
-                                    a driver whose filter is inexact         */
 } hfs_gl_caps;
 
 /* Reads what the current context offers (the context gl was loaded from

@@ -247,8 +247,7 @@ static void report_timings(hfs_gles *g, double t_start)
     t->frame_ms = hfs_gles_now_ms() - t_start;
 }
 
-/* One frame, with a view from cam when cam is not NULL, into the lit
- * texture instead of out when lit is not NULL. */
+/* backends.h */
 int hfs_gles_max_side(hfs_gles *g, const hfs_quality *q, char *limit, size_t n)
 {
     hfs_error ignored;
@@ -277,6 +276,8 @@ static int way_out(const hfs_field *f, hfs_error *err)
     return HFS_E_UNSUPPORTED;
 }
 
+/* One frame, with a view from cam when cam is not NULL, into the lit
+ * texture instead of out when lit is not NULL. */
 static int render_frame(hfs_gles *g, const hfs_field *f, const hfs_lighting *l,
                         const hfs_quality *q, hfs_image *out, const hfs_camera *cam,
                         const hfs_object_set *obj, int w, int h, float *view,
