@@ -57,7 +57,9 @@ static const stress_case cases[] = {
      2, 2, TER_RANDOM, 1.0, 1.0, 1.0, HOLES_NONE, LIGHT_STD, 1, EXPECT_RENDER, -1, SCALES, 0, 0},
     {"size_1x4096", "one column: below SPEC's 2x2 minimum, refused", 1,
      1, 4096, TER_RAMP, 10.0, 1.0, 1.0, HOLES_NONE, LIGHT_STD, 1, EXPECT_REFUSE, -1, NO_SCALES, 0, 0},
-    {"size_2x4096", "two columns of 4096 rows", 0,
+    /* in the fast subset: the ES 3.0 profiles' refusal of it (naming
+     * GL_MAX_TEXTURE_SIZE) changed with the tiled renders unseen */
+    {"size_2x4096", "two columns of 4096 rows", 1,
      2, 4096, TER_FRACTAL, 64.0, 1.0, 1.0, HOLES_NONE, LIGHT_STD, 0, EXPECT_RENDER, -1, SCALES, 0, 0},
     {"size_4096x2", "4096 columns, two rows", 0,
      4096, 2, TER_FRACTAL, 64.0, 1.0, 1.0, HOLES_NONE, LIGHT_STD, 0, EXPECT_RENDER, -1, SCALES, 0, 0},
