@@ -43,7 +43,7 @@ float hfs_hlerp(vec2 a, vec2 b, float t)
  * Not unpackHalf2x16(packHalf2x16(v)): a compiler may fold that pair to v
  * (NVIDIA's does, seen on an H200: every hi+lo pair then stored lo = 0, and
  * the heights, normals and lighting kept fp16's 11 bits; BENCHMARKS.md
- * "Real-GPU stress"), and packHalf2x16's own rounding is implementation-
+ * "On a real GPU"), and packHalf2x16's own rounding is implementation-
  * defined.  Halves below 2^-14 are multiples of 2^-24; from 65520 up there
  * is no half, and v is returned for the target to convert. */
 float hfs_half_nearest(float v)

@@ -11,8 +11,8 @@
  *
  *   sine     hfs_sin_acc(a) for a from 1e-8 to pi/2: relative error.  A GPU
  *            may compute sin() with an ABSOLUTE error near 2^-21 (NVIDIA's
- *            hardware sine, measured on an H200: see BENCHMARKS.md "Real-GPU
- *            stress"), which at a 1e-8 rad sun is no digit at all;
+ *            hardware sine, measured on an H200: see BENCHMARKS.md "On a
+ *            real GPU"), which at a 1e-8 rad sun is no digit at all;
  *   caps     hfs_cap_irradiance(cos_beta, alpha) (key lights) for the same
  *            half-angles, caps above, straddling and below the tangent
  *            plane: the error to hfs_cap_irradiance (lights.c) over the

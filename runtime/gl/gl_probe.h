@@ -12,7 +12,7 @@
  * restore them) and moves every sample along its ray.  Measured on the
  * H200 against the CPU reference (256^2, sky + sun): p99 3.1e-4, max 6.0e-3
  * of the maximum at fp16, against 5.4e-5 and 2.7e-4 with the texels
- * blended by the shaders (BENCHMARKS.md "Real-GPU stress").  Where the
+ * blended by the shaders (BENCHMARKS.md "On a real GPU").  Where the
  * probe sees an inexact filter, the shaders fetch the four texels and
  * blend them in float (HFS_PAIR_FETCH, gles_lib.frag hfs_pair_tex).
  */
