@@ -90,7 +90,11 @@ static void check_bulk(void)
     z[7] = 1e30f; /* beyond the halves' range */
     const double base = 1000.0, scale = 1500.0;
     double worst = 0.0;
-    const double got_worst = hfs_half_split(z, N, base, scale, rg);
+    static uint16_t rg_unmeasured[2 * N];
+    const double none = hfs_half_split(z, N, base, scale, rg_unmeasured, 0);
+    const double got_worst = hfs_half_split(z, N, base, scale, rg, 1);
+    CHECK(none == 0.0 && memcmp(rg, rg_unmeasured, sizeof rg) == 0,
+          "split without its error: other halves, or an error %g", none);
     for (int i = 0; i < N; ++i) {
         const double v = ((double)z[i] - base) / scale;
         const uint16_t h = hfs_float_to_half((float)v);

@@ -240,7 +240,7 @@ static void test_split(void)
         hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
         hfs_gles_layout L;
         default_layout(&f, &L);
-        const double e = hfs_gles_split_heights(&L, &f, 0, pairs);
+        const double e = hfs_gles_split_heights(&L, &f, 0, pairs, 1);
         double worst = 0.0, vmax = 0.0;
         for (size_t i = 0; i < (size_t)w * h; ++i) {
             const double v = hfs_half_to_float(pairs[2 * i]) + (double)hfs_half_to_float(pairs[2 * i + 1]);
@@ -252,14 +252,14 @@ static void test_split(void)
                ranges[ri][0], ranges[ri][1], worst, e);
         CHECK(worst <= ldexp(1.0, -21), "hi+lo error %.3e > 2^-21 of the range", worst);
         CHECK(vmax <= 1.0 + 1e-6, "normalized height %.9f outside [-1, 1]", vmax);
-        CHECK(hfs_gles_split_heights(&L, &f, 1, f32) == 0.0 && f32[1] == 0.0f, "fp32 split");
+        CHECK(hfs_gles_split_heights(&L, &f, 1, f32, 1) == 0.0 && f32[1] == 0.0f, "fp32 split");
     }
     for (size_t i = 0; i < (size_t)w * h; ++i)
         z[i] = 812.25f;
     hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
     hfs_gles_layout L;
     default_layout(&f, &L);
-    CHECK(hfs_gles_split_heights(&L, &f, 0, pairs) == 0.0 && pairs[0] == 0 && pairs[1] == 0,
+    CHECK(hfs_gles_split_heights(&L, &f, 0, pairs, 1) == 0.0 && pairs[0] == 0 && pairs[1] == 0,
           "flat field must be exactly 0");
     free(z);
     free(pairs);
@@ -394,8 +394,8 @@ static void test_split_threaded(void)
     hfs_field f = {.width = w, .height = h, .z = z, .dx = 1.0, .zscale = 1.0};
     hfs_gles_layout L;
     default_layout(&f, &L);
-    const double e = hfs_gles_split_heights(&L, &f, 0, a);
-    const double want = hfs_half_split(z, n, L.base, L.hscale, b);
+    const double e = hfs_gles_split_heights(&L, &f, 0, a, 1);
+    const double want = hfs_half_split(z, n, L.base, L.hscale, b, 1);
     CHECK(memcmp(a, b, n * 2 * sizeof *a) == 0 && e == want,
           "split threaded: differs from one pass (error %.3e, want %.3e)", e, want);
     free(z), free(a), free(b);

@@ -107,7 +107,6 @@ void hfs_gles_frame_report(const hfs_gles *g, hfs_frame_report *out);
 
 /* Facts about the last GLES frame, for tests and tools. */
 typedef struct hfs_gles_stats {
-    double height_split_err;   /* max |hi + lo - v| of the upload (normalized) */
     double height_scale;       /* hscale: normalized units -> height units     */
     long offset_mismatches;    /* (dir, scale) samples whose float offset
                                   classification differs from the CPU's       */

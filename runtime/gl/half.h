@@ -69,8 +69,10 @@ static inline uint16_t hfs_float_to_half(float f)
 
 /* v = (z[i] - base) / scale (double) as two halves, hi = v rounded and
  * lo = v - hi rounded, interleaved in rg (2 n halves); returns the largest
- * |hi + lo - v|. */
-double hfs_half_split(const float *z, size_t n, double base, double scale, uint16_t *rg);
+ * |hi + lo - v| when `measure`, else 0 (a frame's upload does not read it:
+ * a third of the loop's time). */
+double hfs_half_split(const float *z, size_t n, double base, double scale, uint16_t *rg,
+                      int measure);
 
 /* The caller's image from a lit target's two halves: rgb[3 i + c] =
  * (hi[4 i + c] + lo[4 i + c]) inv summed in double, 0 where that is not

@@ -14,7 +14,8 @@
 
 #define BLOCK 256
 
-double hfs_half_split(const float *z, size_t n, double base, double scale, uint16_t *rg)
+double hfs_half_split(const float *z, size_t n, double base, double scale, uint16_t *rg,
+                      int measure)
 {
     double worst = 0.0;
     for (size_t s = 0; s < n; s += BLOCK) {
@@ -29,12 +30,14 @@ double hfs_half_split(const float *z, size_t n, double base, double scale, uint1
             hv[i] = hfs_half_to_float(hi[i]);
         for (size_t i = 0; i < m; ++i)
             lo[i] = hfs_float_to_half((float)(v[i] - hv[i]));
-        for (size_t i = 0; i < m; ++i)
-            e[i] = fabs(hv[i] + (double)hfs_half_to_float(lo[i]) - v[i]);
         for (size_t i = 0; i < m; ++i) {
             rg[2 * (s + i)] = hi[i];
             rg[2 * (s + i) + 1] = lo[i];
         }
+        if (!measure)
+            continue;
+        for (size_t i = 0; i < m; ++i)
+            e[i] = fabs(hv[i] + (double)hfs_half_to_float(lo[i]) - v[i]);
         for (size_t i = 0; i < m; ++i)
             worst = e[i] > worst ? e[i] : worst;
     }

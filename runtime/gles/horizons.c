@@ -59,7 +59,7 @@ static int begin(hfs_gles *g, const hfs_field *f, const hfs_quality *q, hfs_gles
     if (!buf)
         return hfs_fail(err, HFS_E_NOMEM, "horizons: out of memory for a %dx%d upload", L->w,
                         L->h);
-    hfs_gles_split_heights(L, f, c->fp32, buf);
+    hfs_gles_split_heights(L, f, c->fp32, buf, 0);
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
     gl->BindTexture(GL_TEXTURE_2D, t->heights);
     gl->TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, L->w, L->h, GL_RG, c->type_upload, buf);

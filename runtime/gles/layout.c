@@ -58,17 +58,19 @@ typedef struct split_job {
     const float *z;
     double base, scale;
     uint16_t *rg;
+    int measure;
     double worst[HFS_PARALLEL_CHUNKS];
 } split_job;
 
 static void split_range(void *ctx, size_t a, size_t b, int chunk)
 {
     split_job *j = ctx;
-    j->worst[chunk] = hfs_half_split(j->z + a, b - a, j->base, j->scale, j->rg + 2 * a);
+    j->worst[chunk] =
+        hfs_half_split(j->z + a, b - a, j->base, j->scale, j->rg + 2 * a, j->measure);
 }
 
 double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int fp32,
-                              void *dst)
+                              void *dst, int measure)
 {
     const size_t n = (size_t)L->w * (size_t)L->h;
     if (fp32) {
@@ -79,7 +81,7 @@ double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int 
         }
         return 0.0;
     }
-    split_job j = {.z = f->z, .base = L->base, .scale = L->hscale, .rg = dst};
+    split_job j = {.z = f->z, .base = L->base, .scale = L->hscale, .rg = dst, .measure = measure};
     hfs_parallel_ranges(n, SPLIT_THREADED, split_range, &j);
     double worst = 0.0;
     for (int c = 0; c < HFS_PARALLEL_CHUNKS; ++c)

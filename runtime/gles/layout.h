@@ -46,9 +46,10 @@ int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quali
  *   fp32 = 0: uint16_t pairs (hi, lo): hi = half(v), lo = half(v - hi);
  *   fp32 = 1: float pairs (v, 0).
  * dst holds W*H*2 elements of the chosen type.  Returns the max absolute
- * representation error |hi + lo - v| in normalized units (0 for fp32). */
+ * representation error |hi + lo - v| in normalized units when `measure`
+ * (tests), else 0 (0 for fp32). */
 double hfs_gles_split_heights(const hfs_gles_layout *L, const hfs_field *f, int fp32,
-                              void *dst);
+                              void *dst, int measure);
 
 /* The largest irradiance E (exit radiance rho/pi Le E) local light l can
  * give any receiver of the field: pi when the sphere reaches the field's

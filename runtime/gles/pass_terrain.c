@@ -71,7 +71,7 @@ static int upload(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     void *buf = hfs_gles_scratch(g, (size_t)w * h * 2 * (fp32 ? 4 : 2));
     if (!buf)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for a %dx%d upload", w, h);
-    g->stats.height_split_err = hfs_gles_split_heights(L, fr->f, fp32, buf);
+    hfs_gles_split_heights(L, fr->f, fp32, buf, 0);
     g->stats.height_scale = L->hscale;
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
     gl->BindTexture(GL_TEXTURE_2D, g->r.input);

@@ -44,7 +44,7 @@ static int upload(hfs_gles *g, const hfs_gles_layout *L, const hfs_field *f, shm
     if (!buf)
         return hfs_fail(err, HFS_E_NOMEM, "query: out of memory for a %dx%d upload", L->w, L->h);
     unsigned char *rg = buf + n * 4 * unit;
-    hfs_gles_split_heights(L, f, fp32, rg);
+    hfs_gles_split_heights(L, f, fp32, rg, 0);
     memset(buf, 0, n * 4 * unit);
     for (size_t i = 0; i < n; ++i)
         memcpy(buf + 4 * unit * i, rg + 2 * unit * i, 2 * unit);
