@@ -31,17 +31,16 @@ hfs_add_test(test_sh_oracle LABEL unit TIMEOUT 120
 #                            when no context can be made)
 hfs_add_test(test_sh_glsl_gpu LABEL gl TIMEOUT 300
              SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_sh_glsl_gpu.c LIBS hfshade_lib hfs_gles m)
-if(HFS_SANITIZE)
-  set_property(TEST test_sh_glsl_gpu APPEND PROPERTY ENVIRONMENT
-               "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
-endif()
-#   test_glsl_numerics_gpu     gles_lib's sine and cap irradiance run on the
-#                            driver against lights.c in double, from 1e-8 rad
-#                            to pi/2 (relative error; "gl", 77 only when no
-#                            context can be made)
+#   test_glsl_numerics_gpu   the shader library's numerics run on the driver
+#                            (tests/gl_bits.h): the small-angle sine and the
+#                            caps against lights.c in double, the halves bit
+#                            for bit, the filter probe against its own sweep,
+#                            the shaders' blend of pairs against a double
+#                            bilinear ("gl"; 77 only when no context can be
+#                            made)
 hfs_add_test(test_glsl_numerics_gpu LABEL gl TIMEOUT 60
              SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_glsl_numerics_gpu.c LIBS hfshade_lib hfs_gles m)
 if(HFS_SANITIZE)
-  set_property(TEST test_glsl_numerics_gpu APPEND PROPERTY ENVIRONMENT
+  set_property(TEST test_sh_glsl_gpu test_glsl_numerics_gpu APPEND PROPERTY ENVIRONMENT
                "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
 endif()

@@ -49,7 +49,7 @@ int hfs_gles_program_has_product(hfs_gles_program_id id)
     return rows[id].product;
 }
 
-void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
+void hfs_gles_variant_defines(const hfs_gles_variant *v, int pair_fetch, char bufs[][32],
                               const char *defs[HFS_GLES_MAX_DEFINES + 1])
 {
     const struct { const char *name; int value; } all[] = {
@@ -67,9 +67,9 @@ void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
         {"HFS_GLOSSY", v->glossy},     {"HFS_ENV_MAP", v->env_map},
         {"HFS_PAIRS", v->pairs},       {"HFS_FARK", v->far_k},
         {"HFS_FAR_ATLAS", v->far_atlas}, {"HFS_GLOSS_MAP", v->gloss_map},
-        {"HFS_NEAR", v->near},         {"HFS_CELLS", v->cells}};
-    /* one slot kept for build()'s HFS_PAIR_FETCH */
-    _Static_assert(sizeof all / sizeof all[0] < HFS_GLES_MAX_DEFINES, "defines");
+        {"HFS_NEAR", v->near},         {"HFS_CELLS", v->cells},
+        {"HFS_PAIR_FETCH", pair_fetch}};
+    _Static_assert(sizeof all / sizeof all[0] <= HFS_GLES_MAX_DEFINES, "defines");
     int n = 0;
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
         if (all[i].value) {
@@ -186,14 +186,7 @@ static int build(const hfs_gl *gl, const program_row *row, const hfs_gles_varian
             *c = ' ';
     char bufs[HFS_GLES_MAX_DEFINES][32];
     const char *defs[HFS_GLES_MAX_DEFINES + 1];
-    hfs_gles_variant_defines(v, bufs, defs);
-    if (pair_fetch) { /* the slot kept for it */
-        int n = 0;
-        while (defs[n])
-            ++n;
-        defs[n] = "HFS_PAIR_FETCH 1";
-        defs[n + 1] = NULL;
-    }
+    hfs_gles_variant_defines(v, pair_fetch, bufs, defs);
     int rc = hfs_gl_program_from_sources(gl, row->vert, vert, row->shader, src, defs,
                                          out, err);
     free(src);

@@ -106,10 +106,11 @@ void hfs_gles_set_f2(const hfs_gl *gl, const hfs_gles_program *p, const char *na
 void hfs_gles_set_f4(const hfs_gl *gl, const hfs_gles_program *p, const char *name,
                      const double v[4]);
 
-/* The "#define NAME VALUE" strings of variant v (NULL-terminated; bufs
- * holds their text).  Exposed for tests. */
+/* The "#define NAME VALUE" strings of variant v, and HFS_PAIR_FETCH when
+ * pair_fetch (the cache's, a property of the driver: gl_probe.h)
+ * (NULL-terminated; bufs holds their text).  Exposed for tests. */
 #define HFS_GLES_MAX_DEFINES 32
-void hfs_gles_variant_defines(const hfs_gles_variant *v, char bufs[][32],
+void hfs_gles_variant_defines(const hfs_gles_variant *v, int pair_fetch, char bufs[][32],
                               const char *defs[HFS_GLES_MAX_DEFINES + 1]);
 
 /* The shader file of program id ("env_horizons.frag"), whether it gets the
