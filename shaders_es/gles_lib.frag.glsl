@@ -26,7 +26,7 @@ precision highp sampler2DArray;
 #define HFS_HALF_PI 1.5707963267948966
 
 float hfs_hdiff(vec2 a, vec2 b);                          /* gles_pairs.frag */
-vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl);
+vec4 hfs_pair_tex4_layer_at(highp sampler2DArray t, vec3 uvl, ivec2 size, vec2 p);
 
 /* Texture coordinate of full-resolution texel p on the visibility grid
  * (vsize receivers, one every sub texels, the last at W-1/H-1): between
@@ -393,7 +393,7 @@ float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, 
 {
     vec2 inv_size = 1.0 / vec2(size);
     vec2 gc = vec2(g) + 0.5;
-    vec2 t = hfs_pair_tex4_layer(levels, vec3((gc + o) * inv_size, sc.z)).xy;
+    vec2 t = hfs_pair_tex4_layer_at(levels, vec3((gc + o) * inv_size, sc.z), size, vec2(g) + o).xy;
     return hfs_hdiff(t, h) * sc.y;
 }
 

@@ -109,25 +109,39 @@ vec4 hfs_pair_blend(vec4 t00, vec4 t10, vec4 t01, vec4 t11, vec2 f)
     return vec4(v.x, 0.0, v.y, 0.0);
 }
 
-/* The texels about uv (texel units p = uv size - 1/2), clamped to the edge
- * as CLAMP_TO_EDGE does; f the fractions. */
-void hfs_pair_taps(ivec2 size, vec2 uv, out ivec2 a, out ivec2 b, out vec2 f)
+/* The texels about p (texel units: texel i's centre at p = i), clamped to
+ * the edge as CLAMP_TO_EDGE does; f the fractions. */
+void hfs_pair_taps(ivec2 size, vec2 p, out ivec2 a, out ivec2 b, out vec2 f)
 {
-    vec2 p = uv * vec2(size) - 0.5, i = floor(p);
+    vec2 i = floor(p);
     f = p - i;
     a = clamp(ivec2(i), ivec2(0), size - 1);
     b = clamp(ivec2(i) + 1, ivec2(0), size - 1);
 }
 #endif
 
-vec4 hfs_pair_tex4(highp sampler2D t, vec2 uv)
+/* At uv; where the caller knows the texel position p = uv size - 1/2 of a
+ * size-texel texture (the horizon searches: an integer receiver plus an
+ * offset), the _at forms take it as well and spare the shaders' blend
+ * the texture's size and the conversion back (texture() still gets uv). */
+vec4 hfs_pair_tex4_at(highp sampler2D t, vec2 uv, ivec2 size, vec2 p)
 {
 #ifdef HFS_PAIR_FETCH
     ivec2 a, b;
     vec2 f;
-    hfs_pair_taps(textureSize(t, 0), uv, a, b, f);
+    hfs_pair_taps(size, p, a, b, f);
     return hfs_pair_blend(texelFetch(t, a, 0), texelFetch(t, ivec2(b.x, a.y), 0),
                           texelFetch(t, ivec2(a.x, b.y), 0), texelFetch(t, b, 0), f);
+#else
+    return texture(t, uv);
+#endif
+}
+
+vec4 hfs_pair_tex4(highp sampler2D t, vec2 uv)
+{
+#ifdef HFS_PAIR_FETCH
+    ivec2 size = textureSize(t, 0);
+    return hfs_pair_tex4_at(t, uv, size, uv * vec2(size) - 0.5);
 #else
     return texture(t, uv);
 #endif
@@ -139,15 +153,25 @@ vec2 hfs_pair_tex(highp sampler2D t, vec2 uv)
 }
 
 /* The same on layer round(uvl.z) of an array. */
-vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl)
+vec4 hfs_pair_tex4_layer_at(highp sampler2DArray t, vec3 uvl, ivec2 size, vec2 p)
 {
 #ifdef HFS_PAIR_FETCH
     ivec2 a, b;
     vec2 f;
-    hfs_pair_taps(textureSize(t, 0).xy, uvl.xy, a, b, f);
+    hfs_pair_taps(size, p, a, b, f);
     int l = int(floor(uvl.z + 0.5));
     return hfs_pair_blend(texelFetch(t, ivec3(a, l), 0), texelFetch(t, ivec3(b.x, a.y, l), 0),
                           texelFetch(t, ivec3(a.x, b.y, l), 0), texelFetch(t, ivec3(b, l), 0), f);
+#else
+    return texture(t, uvl);
+#endif
+}
+
+vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl)
+{
+#ifdef HFS_PAIR_FETCH
+    ivec2 size = textureSize(t, 0).xy;
+    return hfs_pair_tex4_layer_at(t, uvl, size, uvl.xy * vec2(size) - 0.5);
 #else
     return texture(t, uvl);
 #endif

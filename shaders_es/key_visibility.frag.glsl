@@ -47,7 +47,7 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
                    vec3 s, inout vec4 V[4]);
 float hfs_cap_irradiance(float cos_beta, float alpha);
 vec2 hfs_split(float v);
-vec2 hfs_pair_tex(highp sampler2D t, vec2 uv);
+vec4 hfs_pair_tex4_at(highp sampler2D t, vec2 uv, ivec2 size, vec2 p);
 float hfs_h(vec2 t);
 float hfs_hdiff(vec2 a, vec2 b);
 bool hfs_ray_box(vec2 p, vec2 cs, vec4 box, float t_max, out vec2 t);
@@ -141,7 +141,7 @@ float near_slope(ivec2 p, vec2 cs, float d, vec2 zp)
     vec2 o;
     if (!hfs_scale_offset(p, u_size, d, cs, o))
         return -1e30;
-    vec2 t = hfs_pair_tex(u_height, (vec2(p) + 0.5 + o) / vec2(u_size));
+    vec2 t = hfs_pair_tex4_at(u_height, (vec2(p) + 0.5 + o) / vec2(u_size), u_size, vec2(p) + o).xy;
     ++g_fetches;
     return u_rise * hfs_hdiff(t, zp) / d;
 }
