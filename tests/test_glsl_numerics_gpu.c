@@ -1,7 +1,8 @@
 /*
- * test_glsl_numerics_gpu.c — gles_lib.frag's numerics EXECUTED on the GL
- * driver, where a real GPU's compiler and fast transcendentals part ways
- * with a CPU's (llvmpipe passes either way; an NVIDIA H200 did not):
+ * test_glsl_numerics_gpu.c — the shader library's numerics (gles_pairs.frag,
+ * gles_lib.frag) EXECUTED on the GL driver, where a real GPU's compiler,
+ * fast transcendentals and texture filter part ways with a CPU's (llvmpipe
+ * passes either way; an NVIDIA H200 did not before them):
  *
  *   halves   hfs_half_nearest(v) against runtime/gl/half.h's float -> half
  *            (round to nearest even) bit for bit, and hfs_split(v): hi a
@@ -16,7 +17,12 @@
  *   caps     hfs_cap_irradiance(cos_beta, alpha) (key lights) for the same
  *            half-angles, caps above, straddling and below the tangent
  *            plane: the error to hfs_cap_irradiance (lights.c) over the
- *            light's irradiance at normal incidence, pi sin^2(alpha).
+ *            light's irradiance at normal incidence, pi sin^2(alpha);
+ *   filter   runtime/gl/gl_probe.h's answer against this test's own sweep
+ *            of LINEAR's position and half rounding (printed);
+ *   blend    hfs_pair_tex4 and hfs_pair_tex4_layer under HFS_PAIR_FETCH
+ *            against the exact bilinear blend of the pairs' sums, in 2-D,
+ *            in an array layer and beyond the edges.
  *
  * The driver's own sin() is printed beside them (information: it is what a
  * shader would get without hfs_sin_acc: on the H200 sin(1e-8) had no

@@ -340,9 +340,6 @@ static void expect_refusal(runner *rn, const stress_case *c, const stress_scene 
     finish(rn, c, b < 0 ? "unshadowed" : stress_backend_name(b), &ln, t0);
 }
 
-/* Every radiance of case c times r (STRESS_RADIANCE_SCALES): the image
- * divided by r must equal the unscaled one (keep) within the tolerance of
- * the geometric scales; a finite scaled scene must render. */
 /* -v: where a difference check's worst texel is, and the two values. */
 static void add_where(runner *rn, line *ln, const hfs_image *a, const hfs_image *b, size_t at)
 {
@@ -353,6 +350,9 @@ static void add_where(runner *rn, line *ln, const hfs_image *a, const hfs_image 
         px / (size_t)a->width, at % 3, a->rgb[at], b->rgb[at]);
 }
 
+/* Every radiance of case c times r (STRESS_RADIANCE_SCALES): the image
+ * divided by r must equal the unscaled one (keep) within the tolerance of
+ * the geometric scales; a finite scaled scene must render. */
 static void check_radiance_scales(runner *rn, const stress_case *c, int b, const hfs_image *keep,
                                   double umax, line *ln)
 {
