@@ -7,7 +7,8 @@
  * (runtime/gles/programs.c; source string 3 in driver messages).  Kept
  * apart from gles_lib.frag so that each library file stays one job.
  *
- * HFS_CELLS 1 (the GIS horizons' program alone, runtime/gles/horizons.c)
+ * HFS_CELLS 1 (the key lights' programs, key_horizons.frag and
+ * key_visibility.frag, and the GIS horizons', runtime/gles/horizons.c)
  * compiles the whole ray's supremum as hfs_gap_search_cells instead of the
  * crossings' hfs_gap_search: the cells' code stays out of every other
  * program, whose compile it would slow, and a program that calls the
@@ -40,9 +41,11 @@ int hfs_ray_level(ivec2 lo, ivec2 hi)
 }
 
 /* One search with cells (runtime/core/ray_bound.c ray_search, the same
- * steps): the ray, its receiver and the result so far.  A segment reads
- * both its columns: keeping the last one, as the CPU does, was no faster
- * on llvmpipe. */
+ * steps): the ray, its receiver and the result so far, and the last
+ * segment's far column (rows col_v0 .. col_v0 + col_n - 1, relative to
+ * h0), which is the next segment's near one wherever crossings are
+ * evaluated in a row: a segment then reads 2-3 heights, not 4-6, as the
+ * CPU's (an evaluated crossing of the crossings alone reads 2). */
 struct hfs_ray {
     bool xm;
     int step, p, q, nq;
@@ -50,6 +53,8 @@ struct hfs_ray {
     vec2 h0;
     float best, lead, dist;
     int fetches;
+    vec3 col;
+    int col_u, col_v0, col_n;
 };
 
 /* A surface point's slope sl at distance t: the max, and dist past the
@@ -74,9 +79,34 @@ float hfs_ray_crossing_from(float y, int nq, vec3 c, int v0)
     return ab.x + (y - float(y0)) * (ab.y - ab.x);
 }
 
+/* Rows v0 .. v0 + n - 1 (n = 2 or 3) of major column u relative to h0,
+ * from the kept column where it holds them (ray_bound.c column); with
+ * n = 2 the third repeats the second (the same max, and a crossing at the
+ * second row's line interpolates to it). */
+vec3 hfs_ray_column(highp sampler2D heights, inout hfs_ray R, int u, int v0, int n)
+{
+    vec3 c;
+    for (int k = 0; k < 3; ++k) {
+        if (k == 2 && n < 3) {
+            c.z = c.y;
+            break;
+        }
+        int kv = v0 + k - R.col_v0;
+        if (u == R.col_u && kv >= 0 && kv < R.col_n) {
+            c[k] = R.col[kv];
+            continue;
+        }
+        ivec2 at = R.xm ? ivec2(u, v0 + k) : ivec2(v0 + k, u);
+        c[k] = hfs_hdiff(texelFetch(heights, at, 0).xy, R.h0);
+        ++R.fetches;
+    }
+    return c;
+}
+
 /* Crossing m, the cells on to a1 crossings farther and, at a1 = 1,
- * crossing m + 1 (ray_bound.c segment, the same steps; both columns read
- * here, three rows each, the third clamped to the grid). */
+ * crossing m + 1 (ray_bound.c segment, the same steps): the rows the
+ * segment's cells span, of both columns, the near one kept from the
+ * segment before where it holds them. */
 void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
 {
     float fm = float(m);
@@ -84,17 +114,11 @@ void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
     float ca = clamp(ya, 0.0, float(R.nq - 1)), cb = clamp(yb, 0.0, float(R.nq - 1));
     int v_lo = min(int(floor(min(ca, cb))), R.nq - 2);
     int v_hi = max(int(ceil(max(ca, cb))), v_lo + 1);
-    int u0 = R.p + R.step * m;
-    ivec2 dv = R.xm ? ivec2(0, 1) : ivec2(1, 0), du = R.xm ? ivec2(R.step, 0) : ivec2(0, R.step);
-    ivec2 at0 = R.xm ? ivec2(u0, v_lo) : ivec2(v_lo, u0);
-    ivec2 at2 = R.xm ? ivec2(u0, min(v_lo + 2, R.nq - 1)) : ivec2(min(v_lo + 2, R.nq - 1), u0);
-    vec3 c0 = vec3(hfs_hdiff(texelFetch(heights, at0, 0).xy, R.h0),
-                   hfs_hdiff(texelFetch(heights, at0 + dv, 0).xy, R.h0),
-                   hfs_hdiff(texelFetch(heights, at2, 0).xy, R.h0));
-    vec3 c1 = vec3(hfs_hdiff(texelFetch(heights, at0 + du, 0).xy, R.h0),
-                   hfs_hdiff(texelFetch(heights, at0 + du + dv, 0).xy, R.h0),
-                   hfs_hdiff(texelFetch(heights, at2 + du, 0).xy, R.h0));
-    R.fetches += 6;
+    int u0 = R.p + R.step * m, n = v_hi - v_lo + 1;
+    vec3 c0 = hfs_ray_column(heights, R, u0, v_lo, n);
+    vec3 c1 = hfs_ray_column(heights, R, u0 + R.step, v_lo, n);
+    R.col = c1;
+    R.col_u = u0 + R.step, R.col_v0 = v_lo, R.col_n = n;
     hfs_ray_take(R, hfs_ray_crossing_from(ca, R.nq, c0, v_lo) * R.zf / (fm * R.inv), fm * R.inv);
     if (a1 >= 1.0)
         hfs_ray_take(R, hfs_ray_crossing_from(cb, R.nq, c1, v_lo) * R.zf / ((fm + 1.0) * R.inv),
@@ -130,7 +154,8 @@ void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
                 continue;
             float b = clamp(b0 + R.r * a, 0.0, 1.0);
             float v = z00 + (z10 - z00) * a + (z01 - z00) * b + e * a * b;
-            hfs_ray_take(R, v * R.zf / ((fm + a) * R.inv), (fm + a) * R.inv);
+            /* the value only: the lead stays a crossing's (ray_bound.c) */
+            R.best = max(R.best, v * R.zf / ((fm + a) * R.inv));
         }
     }
 }
@@ -150,7 +175,7 @@ void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
  * crossing that raised best.  Counts its reads.  With HFS_CELLS, as
  * hfs_gap_search_cells: the whole ray's supremum instead, every cell
  * between crossings solved or bounded (ray_bound.h "cells",
- * hfs_ray_bound_search_cells; the GIS horizons).  (A second walk from the
+ * hfs_ray_bound_search_cells; the key lights and the GIS horizons).  (A second walk from the
  * crossings' max, to solve only the cells that can beat it, was no faster
  * on llvmpipe: it reads more.) */
 float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
@@ -167,6 +192,7 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
     R.nq = R.xm ? size.y : size.x;
     R.zf = zf, R.tie = tie, R.h0 = h0;
     R.best = best, R.lead = best, R.dist = dist, R.fetches = fetches;
+    R.col = vec3(0.0), R.col_u = -1, R.col_v0 = 0, R.col_n = 0;
     int p = R.p, q = R.q, nq = R.nq, step = R.step;
     float inv = R.inv, r = R.r;
     int last = step > 0 ? (R.xm ? size.x : size.y) - 1 - p : p;

@@ -30,6 +30,7 @@
  *
  * HFS_COUNT: writes the fetch count to o_h0 instead (see env_horizons.frag).
  */
+// hfs-base: HFS_CELLS 1
 // hfs-variant: HFS_NOUT 4
 // hfs-variant: HFS_FP32 1, HFS_COUNT 1
 // hfs-variant: HFS_SWATH_TEX 1
@@ -73,7 +74,7 @@ bool hfs_scale_takes_over(float sl, float ref, float tie);
 float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs, vec4 sc,
                        vec2 h, int n, float k, float best, inout float dist, inout int fetches);
 #define HFS_RAY_LEVELS 16
-float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
+float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
                      ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
                      float tie, vec2 h0, float best, float stop, inout float dist,
                      inout int fetches);
@@ -177,8 +178,8 @@ float bspline_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
  * to coarse (the first scale off the grid contributes the floor, and every
  * coarser one is off the grid too), then u_refine samples about the finest
  * scale t holding it (hfs_scale_takes_over, hfs_refine_about), then the
- * gap search from u_gap_from (hfs_gap_search: every crossing of the ray
- * with the grid's lines that could beat it).  Slopes, not angles, are
+ * gap search from u_gap_from (hfs_gap_search_cells: every crossing of the
+ * ray with the grid's lines, and every cell between, that could beat it).  Slopes, not angles, are
  * compared: one atan. */
 float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout int fetches,
                       out float dist, out bool seen)
@@ -214,7 +215,7 @@ float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
     best = hfs_refine_about(u_levels, g, u_size, cs, sc, hx[int(sc.z)], u_refine, u_lk, best,
                             dist, fetches);
     /* and every band between the scales: no narrow occluder is stepped over */
-    best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, 1e9, u_zf,
+    best = hfs_gap_search_cells(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, 1e9, u_zf,
                           u_tie, hx[HFS_NLAYERS - 1], best, 1e30, dist, fetches);
     return atan(best);
 }

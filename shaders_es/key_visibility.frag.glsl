@@ -17,6 +17,7 @@
  * normals, horizons, bounds, tables; not the records' texture), as (count
  * mod 1024, floor(count / 1024)), for measurement.
  */
+// hfs-base: HFS_CELLS 1
 // hfs-variant: HFS_TABLES 1
 // hfs-variant: HFS_FP32 1
 // hfs-variant: HFS_KEYS_TEX 1
@@ -56,7 +57,7 @@ void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
 float hfs_refine_factor(int q, int n, float k);
 #define HFS_RAY_LEVELS 16
-float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
+float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
                      ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
                      float tie, vec2 h0, float best, float stop, inout float dist,
                      inout int fetches);
@@ -167,7 +168,8 @@ float own_cell_slope(ivec2 p, vec2 cs, vec2 zp)
  * the 2x2 grid", "Sharp edges on the grid"): the max over the u_near
  * finest scales, u_refine samples about the finest scale holding it (as
  * the grid pass refines, hfs_refine_about), then every crossing of the
- * texel's own ray up to u_near_to (hfs_gap_search): no occluder within
+ * texel's own ray up to u_near_to and every cell between
+ * (hfs_gap_search_cells): no occluder within
  * reach is stepped over, and a shadow edge falls on the texel it falls on.
  * One search serves every direction of the swath.  win_t: the slopes at
  * which the light's window starts and closes; the search starts at the
@@ -190,7 +192,7 @@ float near_horizon(ivec2 p, vec2 zp, vec2 win_t)
         best = max(best, near_slope(p, u_near_cs, d * hfs_refine_factor(q, u_refine, u_lk), zp));
     if (u_near_dir == 0 && u_near > 0) {
         float dist = 0.0;
-        best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, p, u_near_cs, 1.0, u_near_to,
+        best = hfs_gap_search_cells(u_height, u_bounds, u_rb_at, u_size, p, u_near_cs, 1.0, u_near_to,
                               u_rise, 0.0, zp, best, win_t.y, dist, g_fetches);
     }
     return best;
@@ -274,7 +276,7 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, fl
         near = max(near, near_slope(p, cs, exp2(float(m) / u_lk), zp));
     if (u_near_dir == 0 && u_edge > u_near_to) {
         float dist = 0.0;
-        near = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, p, cs, u_near_to, u_edge,
+        near = hfs_gap_search_cells(u_height, u_bounds, u_rb_at, u_size, p, cs, u_near_to, u_edge,
                               u_rise, 0.0, zp, near, stop, dist, g_fetches);
     }
     return max(fl, atan(max(s, near)));

@@ -214,8 +214,8 @@ static void crossing(ray_search *S, int m)
  * surface is the quadratic z(a) = A + B a + C a^2 (relative to z0) of one
  * bilinear cell; its slope z / (m + a) peaks inside only where C < 0, at
  * the root of C a^2 + 2 C m a + (B m - A) = 0 nearer 0, written so that
- * nothing cancels at large m.  Takes the crossings, that point and every
- * piece's far end. */
+ * nothing cancels at large m.  Takes the crossings (value and lead) and,
+ * as a value only, that point and every piece's far end. */
 static void segment(ray_search *S, int m, double a1)
 {
     const ray_walk *k = &S->k;
@@ -269,7 +269,13 @@ static void segment(ray_search *S, int m, double a1)
             double b = b0 + k->r * a;
             b = b < 0.0 ? 0.0 : (b > 1.0 ? 1.0 : b);
             const double v = z00 + (z10 - z00) * a + (z01 - z00) * b + e * a * b;
-            take(S, v * S->zs / ((m + a) * k->inv), (m + a) * k->inv);
+            /* the value only: the lead (dist) stays a crossing's, so that a
+             * cell's peak a rounding above a crossing beside it cannot move
+             * the occluder a grid receiver lends its texels (the float and
+             * double searches, fp16 and fp32 heights, would name different
+             * points) */
+            const double sl = v * S->zs / ((m + a) * k->inv);
+            S->best = sl > S->best ? sl : S->best;
         }
     }
 }

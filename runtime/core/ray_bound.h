@@ -39,11 +39,19 @@
  * whatever the order, the level cap or the rounding of the bounds (as long
  * as they round up: the GLES atlas stores them rounded up to fp16).
  * Between two crossings the surface along the ray is a bilinear cell's
- * quadratic, at most the larger of its corners above them: a feature one
- * texel wide is seen at its crossing.
+ * quadratic, at most its highest corner, but that corner need not be on a
+ * crossing's line segment: a ray that clips the corner of a cell opposite
+ * a spike meets its crossings where the spike weighs 0 and the cell's
+ * interior where it weighs up to |r|/4 (r the ray's minor/major ratio), so
+ * the crossings alone can step over a post's or a pin's whole umbra
+ * (tests/test_long_shadow.c "spike's cell").  Searches that must not miss
+ * an occluder therefore use the cells below: the key lights' and the GIS
+ * horizons'.  The environment's far grid keeps the crossings (a sky's
+ * integral over the grid's sub-directions, where a cell's twist is below
+ * its other errors).
  *
- * cells      the exact maximum over the whole ray instead (the GIS
- *            horizons, which the truth's supremum checks): a twisted cell
+ * cells      the exact maximum over the whole ray instead (the key lights
+ *            and the GIS horizons, which the truth's supremum checks): a twisted cell
  *            rises between its crossings (a corner's peak passed
  *            diagonally: 11 deg above both crossings on a rough fractal).
  *            Each evaluated crossing also solves the ray's cells on to the
@@ -115,7 +123,11 @@ double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, 
 /* The same over the whole ray from crossing m_first (the first at distance
  * >= t_first) to t_last or the grid's edge: the supremum of the bilinear
  * surface's slopes there, each cell between crossings in closed form
- * ("cells" above). */
+ * ("cells" above).  *dist still names a crossing: a cell's interior raises
+ * the value only, so that the lead (the occluder a key light's grid
+ * receiver lends its texels) does not move to a point a rounding above
+ * the crossing beside it, where float and double, fp16 and fp32 would
+ * part. */
 double hfs_ray_bound_search_cells(const hfs_ray_bound_layout *L, const double *atlas,
                                   const double *z, size_t stride, int i, int j, double c,
                                   double s, double t_first, double t_last, double zs, double tie,

@@ -50,7 +50,7 @@ static void far_row(void *ctx, int b, int worker)
             /* and every gap from far-from on (issue 36; env_horizons.frag) */
             if (g->d.gap_from >= 0.0)
                 slope = hfs_horizon_gap(g->plan, e, x, y, g->d.gap_from, g->tie,
-                                        has ? slope : -1e30, &dist, NULL);
+                                        has ? slope : -1e30, 0, &dist, NULL);
             if (dist > 0.0) {
                 double h = slope * dist;
                 h = h > HFS_SPLIT_MAX_H ? HFS_SPLIT_MAX_H : (h < -HFS_SPLIT_MAX_H ? -HFS_SPLIT_MAX_H : h);

@@ -301,7 +301,7 @@ double hfs_cpu_grid_key_near(const render_ctx *c, const swath_job *job, int i, i
     double dist = 0.0;
     hfs_horizon_snap_dir(nr->centre, &cs, &sn);
     return hfs_horizon_gap_along(job->plan ? job->plan : c->jobs[0].plan, cs, sn, i, j, 1.0,
-                                 nr->to, 0.0, best, &dist, NULL);
+                                 nr->to, 0.0, best, 1, &dist, NULL);
 }
 
 /* The blend of the four grid receivers' occluders around texel (i, j) of
@@ -357,7 +357,7 @@ double hfs_cpu_grid_key_horizon(const render_ctx *c, const swath_job *job, int d
         /* the direction's own ray from `to` to `edge` (issue 36 item 2) */
         double dist = 0.0;
         near = hfs_horizon_gap_along(plan, cs, sn, i, j, job->near.to, job->near.edge, 0.0, near,
-                                     &dist, NULL);
+                                     1, &dist, NULL);
     }
     const double om = fmax(fl, atan(fmax(s, near)));
     return om < HALF_PI ? om : HALF_PI;

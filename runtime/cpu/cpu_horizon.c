@@ -370,25 +370,25 @@ double hfs_horizon_key_grid(const hfs_horizon_plan *hp, int dir, int i, int j,
     *dist = hfs_cpu_pyramid_spacing(hp->p, bi);
     best = refine_about(hp, dir, i, j, bi, refine, best, dist);
     /* and every band between the scales: no narrow occluder is stepped over */
-    return hfs_horizon_gap(hp, dir, i, j, gap_from, tie, best, dist, NULL);
+    return hfs_horizon_gap(hp, dir, i, j, gap_from, tie, best, 1, dist, NULL);
 }
 
 double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double t_first,
-                       double tie, double best, double *dist, long *reads)
+                       double tie, double best, int cells, double *dist, long *reads)
 {
     return hfs_horizon_gap_along(hp, hp->cs[2 * dir], hp->cs[2 * dir + 1], i, j, t_first,
-                                 HUGE_VAL, tie, best, dist, reads);
+                                 HUGE_VAL, tie, best, cells, dist, reads);
 }
 
 double hfs_horizon_gap_along(const hfs_horizon_plan *hp, double c, double s, int i, int j,
-                             double t_first, double t_last, double tie, double best,
+                             double t_first, double t_last, double tie, double best, int cells,
                              double *dist, long *reads)
 {
     const hfs_ray_bound_layout *L;
     const double *atlas = hfs_cpu_pyramid_bounds(hp->p, &L);
     const double *z = hfs_cpu_pyramid_full(hp->p, hp->n_levels - 1);
-    return hfs_ray_bound_search(L, atlas, z, hp->stride, i, j, c, s, t_first, t_last, hp->zs,
-                                tie, best, dist, reads);
+    return (cells ? hfs_ray_bound_search_cells : hfs_ray_bound_search)(
+        L, atlas, z, hp->stride, i, j, c, s, t_first, t_last, hp->zs, tie, best, dist, reads);
 }
 
 double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,

@@ -128,17 +128,20 @@ double hfs_horizon_refined_within(const hfs_horizon_plan *hp, int dir, int i, in
  * the pyramid's input heights: the largest of `best` and the slope of
  * every crossing of the ray with the grid's major-axis lines from distance
  * t_first to the grid's edge, so that no occluder
- * between the scales' samples is missed.  *dist becomes the distance of
- * the leading crossing (one takes the lead past the horizons' tie `tie`,
- * hfs_ray_bound_search; left when none beats `best`); *reads (if not
- * NULL) grows by the reads made. */
+ * between the scales' samples is missed; with `cells` (the key lights)
+ * the supremum of the whole ray from that crossing on, every bilinear
+ * cell between crossings solved (hfs_ray_bound_search_cells: a spike's
+ * cell passed near its corner rises between crossings that do not see
+ * it).  *dist becomes the distance of the leading point (one takes the
+ * lead past the horizons' tie `tie`, hfs_ray_bound_search; left when none
+ * beats `best`); *reads (if not NULL) grows by the reads made. */
 double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double t_first,
-                       double tie, double best, double *dist, long *reads);
+                       double tie, double best, int cells, double *dist, long *reads);
 /* The same along any snapped direction (c, s) (hfs_horizon_snap_dir), the
- * crossings from distance t_first to t_last (ray_bound.h; HUGE_VAL: to the
+ * ray from distance t_first to t_last (ray_bound.h; HUGE_VAL: to the
  * grid's edge), over the heights of hp's pyramid. */
 double hfs_horizon_gap_along(const hfs_horizon_plan *hp, double c, double s, int i, int j,
-                             double t_first, double t_last, double tie, double best,
+                             double t_first, double t_last, double tie, double best, int cells,
                              double *dist, long *reads);
 
 /* The far occluder of split horizons (split_horizon.h) at receiver (i, j)

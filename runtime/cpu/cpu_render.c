@@ -137,7 +137,7 @@ static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int
     /* and every band between the scales (issue 36: no narrow occluder's
      * long shadow is lost) */
     double dist = 0.0;
-    const double t = tan(o), g = hfs_horizon_gap(plan, d, i, j, 0.0, c->tie, t, &dist, NULL);
+    const double t = tan(o), g = hfs_horizon_gap(plan, d, i, j, 0.0, c->tie, t, 1, &dist, NULL);
     return fmax(own, g > t ? atan(g) : o);
 }
 

@@ -175,7 +175,8 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
             const int outs = cnt;
             const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                         .n_out = outs, .n_dir = n, .fp32 = g->caps.fp32,
-                                        .count = count, .swath_tex = fr->key_swath_tex};
+                                        .count = count, .swath_tex = fr->key_swath_tex,
+                                        .cells = 1};
             const hfs_gles_program *prog;
             if ((rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_KEY_HORIZONS, &v, &prog,
                                            err)) ||

@@ -66,7 +66,8 @@ static int draw(hfs_gles *g, hfs_gles_frame *fr, const int *which, double *fetch
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.key_vec4 = fr->key_rec_block > 0 ? fr->key_rec_block : 1,
                                 .tables = fr->tables, .fp32 = g->caps.fp32,
-                                .keys_tex = fr->keys_tex, .count = fetch_sum != NULL};
+                                .keys_tex = fr->keys_tex, .count = fetch_sum != NULL,
+                                .cells = 1};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_KEY_VISIBILITY, &v, &prog, err);
     if (rc || (rc = bind_inputs(g, fr, prog, err)))

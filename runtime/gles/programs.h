@@ -65,7 +65,7 @@ typedef struct hfs_gles_variant {
     int near;       /* HFS_NEAR 1: the bounces' near part at every texel
                        (bounce_gather.frag) and its use (bounce_light.frag)  */
     int cells;      /* HFS_CELLS 1: gles_ray.frag's search of every cell,
-                       hfs_gap_search_cells (the GIS horizons)               */
+                       hfs_gap_search_cells (key lights, GIS horizons)       */
 } hfs_gles_variant;
 
 #define HFS_GLES_MAX_PROGRAMS 64
