@@ -132,9 +132,10 @@ double hfs_horizon_refined_within(const hfs_horizon_plan *hp, int dir, int i, in
  * the supremum of the whole ray from that crossing on, every bilinear
  * cell between crossings solved (hfs_ray_bound_search_cells: a spike's
  * cell passed near its corner rises between crossings that do not see
- * it).  *dist becomes the distance of the leading point (one takes the
+ * it).  *dist becomes the distance of the leading crossing (one takes the
  * lead past the horizons' tie `tie`, hfs_ray_bound_search; left when none
- * beats `best`); *reads (if not NULL) grows by the reads made. */
+ * beats `best`; a cell's interior raises the value only); *reads (if not
+ * NULL) grows by the reads made. */
 double hfs_horizon_gap(const hfs_horizon_plan *hp, int dir, int i, int j, double t_first,
                        double tie, double best, int cells, double *dist, long *reads);
 /* The same along any snapped direction (c, s) (hfs_horizon_snap_dir), the
