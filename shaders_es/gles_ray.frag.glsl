@@ -103,15 +103,17 @@ vec3 hfs_ray_column(highp sampler2D heights, inout hfs_ray R, int u, int v0, int
     return c;
 }
 
-/* Crossing m, the cells on to a1 crossings farther and, at a1 = 1,
- * crossing m + 1 (ray_bound.c segment, the same steps): the rows the
- * segment's cells span, of both columns, the near one kept from the
- * segment before where it holds them. */
-void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
+/* The cells from a0 to a1 crossings past crossing m (0 <= a0 < a1 <= 1),
+ * crossing m where a0 = 0 and crossing m + 1 where a1 = 1 (ray_bound.c
+ * segment, the same steps): the rows the stretch's cells span, of both
+ * columns, the near one kept from the segment before where it holds
+ * them. */
+void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a0, float a1)
 {
     float fm = float(m);
     float ya = float(R.q) + fm * R.r, yb = float(R.q) + (fm + a1) * R.r;
-    float ca = clamp(ya, 0.0, float(R.nq - 1)), cb = clamp(yb, 0.0, float(R.nq - 1));
+    float ys = float(R.q) + (fm + a0) * R.r; /* where the stretch starts */
+    float ca = clamp(ys, 0.0, float(R.nq - 1)), cb = clamp(yb, 0.0, float(R.nq - 1));
     int v_lo = min(int(floor(min(ca, cb))), R.nq - 2);
     int v_hi = max(int(ceil(max(ca, cb))), v_lo + 1);
     int u0 = R.p + R.step * m, n = v_hi - v_lo + 1;
@@ -119,38 +121,43 @@ void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a1)
     vec3 c1 = hfs_ray_column(heights, R, u0 + R.step, v_lo, n);
     R.col = c1;
     R.col_u = u0 + R.step, R.col_v0 = v_lo, R.col_n = n;
-    hfs_ray_take(R, hfs_ray_crossing_from(ca, R.nq, c0, v_lo) * R.zf / (fm * R.inv), fm * R.inv);
+    if (a0 <= 0.0)
+        hfs_ray_take(R, hfs_ray_crossing_from(ca, R.nq, c0, v_lo) * R.zf / (fm * R.inv),
+                     fm * R.inv);
     if (a1 >= 1.0)
         hfs_ray_take(R, hfs_ray_crossing_from(cb, R.nq, c1, v_lo) * R.zf / ((fm + 1.0) * R.inv),
                      (fm + 1.0) * R.inv);
     /* the cells lie below their highest corner: most never reach the best */
     float top = max(max(max(c0.x, c0.y), c0.z), max(max(c1.x, c1.y), c1.z));
-    if (top * R.zf / ((top >= 0.0 ? fm : fm + a1) * R.inv) <= R.best)
+    if (top * R.zf / ((top >= 0.0 ? fm + a0 : fm + a1) * R.inv) <= R.best)
         return;
     float cut = -1.0;
-    if (R.r > 0.0 && floor(ya) + 1.0 < yb)
-        cut = (floor(ya) + 1.0 - ya) / R.r;
-    else if (R.r < 0.0 && ceil(ya) - 1.0 > yb)
-        cut = (ceil(ya) - 1.0 - ya) / R.r;
+    if (R.r > 0.0 && floor(ys) + 1.0 < yb)
+        cut = (floor(ys) + 1.0 - ya) / R.r;
+    else if (R.r < 0.0 && ceil(ys) - 1.0 > yb)
+        cut = (ceil(ys) - 1.0 - ya) / R.r;
+    cut = cut > a0 ? cut : -1.0;
     for (int pc = 0; pc < 2; ++pc) {
         if (pc == 1 && !(cut > 0.0))
             break;
-        float lo = pc == 0 ? 0.0 : cut, hi = pc == 0 && cut > 0.0 ? cut : a1;
+        float lo = pc == 0 ? a0 : cut, hi = pc == 0 && cut > 0.0 ? cut : a1;
         int v0 = clamp(int(floor(float(R.q) + (fm + 0.5 * (lo + hi)) * R.r)), v_lo, v_hi - 1);
         vec2 n0 = v0 == v_lo ? c0.xy : c0.yz, n1 = v0 == v_lo ? c1.xy : c1.yz;
         float z00 = n0.x, z10 = n1.x, z01 = n0.y, z11 = n1.y;
         float b0 = ya - float(v0), e = z11 - z10 - z01 + z00;
         float A = z00 + (z01 - z00) * b0, B = z10 - z00 + (z01 - z00) * R.r + e * b0;
         float C = e * R.r;
-        vec2 at = vec2(hi < 1.0 ? hi : -1.0, -1.0);
+        /* the far end (a crossing's is taken above), the inner peak and,
+         * where the stretch starts past a crossing, its near end */
+        vec3 at = vec3(hi < 1.0 ? hi : -1.0, -1.0, pc == 0 && a0 > 0.0 ? a0 : -1.0);
         if (C < 0.0) {
             float D = C * C * fm * fm - C * (B * fm - A);
             if (D >= 0.0)
                 at.y = (B * fm - A) / (sqrt(D) - C * fm);
         }
-        for (int i = 0; i < 2; ++i) {
-            float a = i == 0 ? at.x : at.y;
-            if (!(a > lo && a <= hi))
+        for (int i = 0; i < 3; ++i) {
+            float a = i == 0 ? at.x : (i == 1 ? at.y : at.z);
+            if (!(i == 2 ? a >= lo : a > lo && a <= hi))
                 continue;
             float b = clamp(b0 + R.r * a, 0.0, 1.0);
             float v = z00 + (z10 - z00) * a + (z01 - z00) * b + e * a * b;
@@ -208,16 +215,41 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
 #else
     const bool cells = false;
 #endif
-    int m = max(1, int(ceil(t_first * abs(ma) - 1e-4)));
+    float u0 = t_first * abs(ma); /* in crossings */
+    int m = max(1, int(ceil(u0 - 1e-4)));
     int m_first = m;
     float v0 = hfs_h(h0);
+#if HFS_CELLS
+    /* where the ray ends: the radius, or where it leaves the grid */
+    float u_end = min(t_last * abs(ma), float(step > 0 ? (R.xm ? size.x : size.y) - 1 - p : p));
+    if (r != 0.0)
+        u_end = min(u_end, r > 0.0 ? float(nq - 1 - q) / r : float(q) / -r);
+    /* the stretch from t_first to its first crossing (ray_bound.c search):
+     * a search that continues another leaves no gap between them */
+    if (cells && m_first >= 2 && float(m_first) - u0 > 1e-4 && u_end > u0 && R.best < stop) {
+        int ms = m_first - 1;
+        float a1 = min(u_end - float(ms), 1.0);
+        /* solved where its cells' bound (one read) can beat the start */
+        float ya = float(q) + u0 * r, yb = float(q) + (float(ms) + a1) * r;
+        int q0 = max(int(floor(min(ya, yb) - HFS_RAY_EDGE_TOL)), 0);
+        int q1 = min(int(ceil(max(ya, yb) + HFS_RAY_EDGE_TOL)), nq - 1);
+        int pa = p + step * ms, pb = pa + step;
+        ivec2 lo = R.xm ? ivec2(min(pa, pb), q0) : ivec2(q0, min(pa, pb));
+        ivec2 hi = R.xm ? ivec2(max(pa, pb), q1) : ivec2(q1, max(pa, pb));
+        int lv = hfs_ray_level(lo, hi);
+        float rise = texelFetch(bounds, at[lv] + (lo >> lv), 0).x - v0;
+        ++R.fetches;
+        if (rise * zf / ((rise >= 0.0 ? u0 : float(ms) + a1) * inv) > R.best)
+            hfs_ray_segment(heights, R, ms, u0 - float(ms), a1);
+    }
+#endif
     int l = 0;
     while (m <= last && R.best < stop) {
         float t = float(m) * inv;
         if (l == 0) { /* one crossing (and with cells its segment): exactly */
 #if HFS_CELLS
             if (cells && m < last) {
-                hfs_ray_segment(heights, R, m, 1.0);
+                hfs_ray_segment(heights, R, m, 0.0, 1.0);
             } else
 #endif
             {
@@ -258,13 +290,9 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
         ++l;
     }
 #if HFS_CELLS
-    if (cells && last >= m_first && R.best < stop) { /* past the last crossing */
-        float u = min(t_last * abs(ma), float(step > 0 ? (R.xm ? size.x : size.y) - 1 - p : p));
-        if (r != 0.0)
-            u = min(u, r > 0.0 ? float(nq - 1 - q) / r : float(q) / -r);
-        if (u - float(last) > 0.0)
-            hfs_ray_segment(heights, R, last, min(u - float(last), 1.0));
-    }
+    /* past the last crossing */
+    if (cells && last >= m_first && R.best < stop && u_end - float(last) > 0.0)
+        hfs_ray_segment(heights, R, last, 0.0, min(u_end - float(last), 1.0));
 #endif
     dist = R.dist;
     fetches = R.fetches;

@@ -207,20 +207,21 @@ static void crossing(ray_search *S, int m)
     take(S, (v - S->z0) * S->zs / (m * S->k.inv), m * S->k.inv);
 }
 
-/* Crossing m, the ray's cells on to a1 crossings farther (0 < a1 <= 1;
- * ray_bound.h "cells") and, at a1 = 1, crossing m + 1, from the columns
- * of the two crossings (2-3 rows each, the first kept from the segment
- * before).  Split where the ray crosses a minor grid line, a piece's
+/* The ray's cells from a0 to a1 crossings past crossing m (0 <= a0 < a1
+ * <= 1; ray_bound.h "cells"), crossing m where a0 = 0 and crossing m + 1
+ * where a1 = 1, from the columns of the two crossings (2-3 rows each, the
+ * first kept from the segment before).  Split where the ray crosses a minor grid line, a piece's
  * surface is the quadratic z(a) = A + B a + C a^2 (relative to z0) of one
  * bilinear cell; its slope z / (m + a) peaks inside only where C < 0, at
  * the root of C a^2 + 2 C m a + (B m - A) = 0 nearer 0, written so that
  * nothing cancels at large m.  Takes the crossings (value and lead) and,
  * as a value only, that point and every piece's far end. */
-static void segment(ray_search *S, int m, double a1)
+static void segment(ray_search *S, int m, double a0, double a1)
 {
     const ray_walk *k = &S->k;
     const double ya = S->q + m * k->r, yb = S->q + (m + a1) * k->r;
-    const double ca = minor_at(S, m), cb = minor_at(S, m + a1);
+    const double y0 = S->q + (m + a0) * k->r; /* where the stretch starts */
+    const double ca = minor_at(S, m + a0), cb = minor_at(S, m + a1);
     int v_lo = (int)floor(ca < cb ? ca : cb), v_hi = (int)ceil(ca > cb ? ca : cb);
     v_lo = v_lo > S->nq - 2 ? S->nq - 2 : v_lo;
     v_hi = v_hi < v_lo + 1 ? v_lo + 1 : v_hi;
@@ -231,7 +232,8 @@ static void segment(ray_search *S, int m, double a1)
     S->col_u = u0 + k->step, S->col_v0 = v_lo, S->col_n = n;
     for (int r = 0; r < n; ++r)
         S->col[r] = c1[r];
-    take(S, (crossing_from(S, m, c0, v_lo) - S->z0) * S->zs / (m * k->inv), m * k->inv);
+    if (a0 <= 0.0)
+        take(S, (crossing_from(S, m, c0, v_lo) - S->z0) * S->zs / (m * k->inv), m * k->inv);
     if (a1 >= 1.0)
         take(S, (crossing_from(S, m + 1, c1, v_lo) - S->z0) * S->zs / ((m + 1) * k->inv),
              (m + 1) * k->inv);
@@ -239,14 +241,15 @@ static void segment(ray_search *S, int m, double a1)
     double top = -HUGE_VAL;
     for (int r = 0; r < n; ++r)
         top = fmax(top, fmax(c0[r], c1[r]) - S->z0);
-    if (top * S->zs / ((top >= 0.0 ? m : m + a1) * k->inv) <= S->best)
+    if (top * S->zs / ((top >= 0.0 ? m + a0 : m + a1) * k->inv) <= S->best)
         return;
     double cut = -1.0; /* where the ray crosses a minor grid line inside */
-    if (k->r > 0.0 && floor(ya) + 1.0 < yb)
-        cut = (floor(ya) + 1.0 - ya) / k->r;
-    else if (k->r < 0.0 && ceil(ya) - 1.0 > yb)
-        cut = (ceil(ya) - 1.0 - ya) / k->r;
-    const double ends[3] = {0.0, cut > 0.0 ? cut : a1, a1};
+    if (k->r > 0.0 && floor(y0) + 1.0 < yb)
+        cut = (floor(y0) + 1.0 - ya) / k->r;
+    else if (k->r < 0.0 && ceil(y0) - 1.0 > yb)
+        cut = (ceil(y0) - 1.0 - ya) / k->r;
+    cut = cut > a0 ? cut : -1.0;
+    const double ends[3] = {a0, cut > 0.0 ? cut : a1, a1};
     for (int pc = 0; pc < (cut > 0.0 ? 2 : 1); ++pc) {
         const double lo = ends[pc], hi = ends[pc + 1];
         int v0 = (int)floor(S->q + (m + 0.5 * (lo + hi)) * k->r);
@@ -256,15 +259,17 @@ static void segment(ray_search *S, int m, double a1)
         const double b0 = ya - v0, e = z11 - z10 - z01 + z00;
         const double A = z00 + (z01 - z00) * b0, B = z10 - z00 + (z01 - z00) * k->r + e * b0;
         const double C = e * k->r;
-        double at[2] = {hi < 1.0 ? hi : -1.0, -1.0};
+        /* the far end (a crossing's is taken above), the inner peak and,
+         * where the stretch starts past a crossing, its near end */
+        double at[3] = {hi < 1.0 ? hi : -1.0, -1.0, pc == 0 && a0 > 0.0 ? a0 : -1.0};
         if (C < 0.0) {
             const double D = C * C * m * m - C * (B * m - A);
             if (D >= 0.0)
                 at[1] = (B * m - A) / (sqrt(D) - C * m);
         }
-        for (int i = 0; i < 2; ++i) {
+        for (int i = 0; i < 3; ++i) {
             const double a = at[i];
-            if (!(a > lo && a <= hi))
+            if (!(i == 2 ? a >= lo : a > lo && a <= hi))
                 continue;
             double b = b0 + k->r * a;
             b = b < 0.0 ? 0.0 : (b > 1.0 ? 1.0 : b);
@@ -299,15 +304,47 @@ static double search(const hfs_ray_bound_layout *L, const double *atlas, const d
     S.z0 = z[(size_t)j * stride + (size_t)i];
     const double z0 = S.z0;
     cells = cells && nq >= 2; /* one row: the surface is linear between crossings */
-    int m = (int)ceil(t_first / k->inv - 1e-4); /* as in float */
+    const double u0 = t_first / k->inv; /* in crossings */
+    int m = (int)ceil(u0 - 1e-4);        /* as in float */
     m = m < 1 ? 1 : m;
     const int m_first = m;
+    /* where the ray ends: the radius, or where it leaves the grid */
+    const int np = k->x_major ? L->w : L->h;
+    double u_end = t_last / k->inv, side = k->step > 0 ? np - 1 - p : p;
+    u_end = side < u_end ? side : u_end;
+    if (k->r != 0.0) {
+        const double out = k->r > 0.0 ? (nq - 1 - q) / k->r : q / -k->r;
+        u_end = out < u_end ? out : u_end;
+    }
+    /* with cells, the stretch from t_first to its first crossing (past the
+     * receiver's own cell, whose slope peaks at an end): a search that
+     * continues another from t_first leaves no gap between them */
+    if (cells && m_first >= 2 && m_first - u0 > 1e-4 && u_end > u0) {
+        const int ms = m_first - 1;
+        const double a1 = u_end - ms < 1.0 ? u_end - ms : 1.0;
+        /* solved where its cells' bound (one read) can beat the start */
+        const double ya = q + u0 * k->r, yb = q + (ms + a1) * k->r;
+        int q0 = (int)floor((ya < yb ? ya : yb) - RAY_EDGE_TOL);
+        int q1 = (int)ceil((ya > yb ? ya : yb) + RAY_EDGE_TOL);
+        q0 = q0 < 0 ? 0 : q0;
+        q1 = q1 > nq - 1 ? nq - 1 : q1;
+        const int pa = p + k->step * ms, pb = pa + k->step;
+        const int p0 = pa < pb ? pa : pb, p1 = pa < pb ? pb : pa;
+        const int x0 = k->x_major ? p0 : q0, x1 = k->x_major ? p1 : q1;
+        const int y0 = k->x_major ? q0 : p0, y1 = k->x_major ? q1 : p1;
+        const int lv = hfs_ray_bound_level(x0, x1, y0, y1);
+        const double rise = atlas[(size_t)(L->y0[lv] + (y0 >> lv)) * L->aw +
+                                  (size_t)(L->x0[lv] + (x0 >> lv))] - z0;
+        ++S.reads;
+        if (rise * zs / ((rise >= 0.0 ? u0 : ms + a1) * k->inv) > S.best)
+            segment(&S, ms, u0 - ms, a1);
+    }
     int l = 0;
     while (m <= k->last) {
         const double t = m * k->inv;
         if (l == 0) { /* one crossing (and with cells its segment): exactly */
             if (cells && m < k->last)
-                segment(&S, m, 1.0);
+                segment(&S, m, 0.0, 1.0);
             else
                 crossing(&S, m);
             ++m;
@@ -340,17 +377,8 @@ static double search(const hfs_ray_bound_layout *L, const double *atlas, const d
         m = m1 + 1;
         ++l;
     }
-    if (cells && k->last >= m_first) { /* past the last crossing: to the radius or a side */
-        const int np = k->x_major ? L->w : L->h;
-        double u = t_last / k->inv, side = k->step > 0 ? np - 1 - p : p;
-        u = side < u ? side : u;
-        if (k->r != 0.0) {
-            const double out = k->r > 0.0 ? (nq - 1 - q) / k->r : q / -k->r;
-            u = out < u ? out : u;
-        }
-        if (u - k->last > 0.0)
-            segment(&S, k->last, u - k->last < 1.0 ? u - k->last : 1.0);
-    }
+    if (cells && k->last >= m_first && u_end - k->last > 0.0) /* past the last crossing */
+        segment(&S, k->last, 0.0, u_end - k->last < 1.0 ? u_end - k->last : 1.0);
     if (reads)
         *reads += S.reads;
     return S.best;

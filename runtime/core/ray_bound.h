@@ -55,13 +55,20 @@
  *            rises between its crossings (a corner's peak passed
  *            diagonally: 11 deg above both crossings on a rough fractal).
  *            Each evaluated crossing also solves the ray's cells on to the
- *            next crossing in closed form (ray_bound.c cells_between), a
+ *            next crossing in closed form (ray_bound.c segment), a
  *            run's box also holds the cells on to the crossing past it, so
- *            a skipped run bounds them too, and the cells past the last
+ *            a skipped run bounds them too, the cells past the last
  *            crossing (to the radius or the grid's side) are solved at the
- *            end.  Every stretch of the ray from crossing m_first on is
- *            then solved or bounded, and the result is the supremum
- *            there.  Costs 4-8 reads more an evaluated crossing.
+ *            end, and where t_first lies past crossing 1 and off the
+ *            crossings, the stretch from t_first to the first crossing is
+ *            bounded (one read) and solved where that can beat the start:
+ *            a search continued from where another stopped (a key light's
+ *            edge search after its near one) leaves no gap.  Every stretch
+ *            of the ray from t_first on (from crossing 1 when t_first <= 1:
+ *            the receiver's own cell peaks at an end, which the caller
+ *            takes) is then solved or bounded, and the result is the
+ *            supremum there.  Costs 2-4 reads more an evaluated crossing
+ *            (the last segment's far column is kept).
  *
  * Shared by the CPU reference (this file's search) and the GLES path
  * (gles_ray.frag hfs_gap_search, the same steps); pure functions.
@@ -120,8 +127,8 @@ double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, 
                             double t_last, double zs, double tie, double best, double *dist,
                             long *reads);
 
-/* The same over the whole ray from crossing m_first (the first at distance
- * >= t_first) to t_last or the grid's edge: the supremum of the bilinear
+/* The same over the whole ray from t_first (from crossing 1 where t_first
+ * <= 1) to t_last or the grid's edge: the supremum of the bilinear
  * surface's slopes there, each cell between crossings in closed form
  * ("cells" above).  *dist still names a crossing: a cell's interior raises
  * the value only, so that the lead (the occluder a key light's grid
