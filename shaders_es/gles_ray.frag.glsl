@@ -171,6 +171,22 @@ void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a0, 
 #define HFS_GAP_SEARCH hfs_gap_search
 #endif
 
+/* The bound of the grid points of the ray's stretch from ua to ub
+ * crossings, its columns ma .. mb (ray_bound.c box_rise): one read. */
+float hfs_ray_box_rise(highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS], inout hfs_ray R,
+                       float ua, float ub, int ma, int mb)
+{
+    float ya = float(R.q) + ua * R.r, yb = float(R.q) + ub * R.r;
+    int q0 = max(int(floor(min(ya, yb) - HFS_RAY_EDGE_TOL)), 0);
+    int q1 = min(int(ceil(max(ya, yb) + HFS_RAY_EDGE_TOL)), R.nq - 1);
+    int pa = R.p + R.step * ma, pb = R.p + R.step * mb;
+    ivec2 lo = R.xm ? ivec2(min(pa, pb), q0) : ivec2(q0, min(pa, pb));
+    ivec2 hi = R.xm ? ivec2(max(pa, pb), q1) : ivec2(q1, max(pa, pb));
+    int lv = hfs_ray_level(lo, hi);
+    ++R.fetches;
+    return texelFetch(bounds, at[lv] + (lo >> lv), 0).x;
+}
+
 /* max(best, the slope of every crossing at distance >= t_first and <=
  * t_last) of receiver g (height h0 at g) in direction cs: bounds from the atlas
  * `bounds` (level l at at[l]), heights (hi, lo) from `heights` (the input,
@@ -230,15 +246,7 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
         int ms = m_first - 1;
         float a1 = min(u_end - float(ms), 1.0);
         /* solved where its cells' bound (one read) can beat the start */
-        float ya = float(q) + u0 * r, yb = float(q) + (float(ms) + a1) * r;
-        int q0 = max(int(floor(min(ya, yb) - HFS_RAY_EDGE_TOL)), 0);
-        int q1 = min(int(ceil(max(ya, yb) + HFS_RAY_EDGE_TOL)), nq - 1);
-        int pa = p + step * ms, pb = pa + step;
-        ivec2 lo = R.xm ? ivec2(min(pa, pb), q0) : ivec2(q0, min(pa, pb));
-        ivec2 hi = R.xm ? ivec2(max(pa, pb), q1) : ivec2(q1, max(pa, pb));
-        int lv = hfs_ray_level(lo, hi);
-        float rise = texelFetch(bounds, at[lv] + (lo >> lv), 0).x - v0;
-        ++R.fetches;
+        float rise = hfs_ray_box_rise(bounds, at, R, u0, float(ms) + a1, ms, ms + 1) - v0;
         if (rise * zf / ((rise >= 0.0 ? u0 : float(ms) + a1) * inv) > R.best)
             hfs_ray_segment(heights, R, ms, u0 - float(ms), a1);
     }
@@ -271,15 +279,7 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
         int m1 = min(m + (1 << l) - 1, last);
         /* with cells the box also holds the cells on to the next crossing */
         int mb = cells && m1 < last ? m1 + 1 : m1;
-        float ya = float(q) + float(m) * r, yb = float(q) + float(mb) * r;
-        int q0 = max(int(floor(min(ya, yb) - HFS_RAY_EDGE_TOL)), 0);
-        int q1 = min(int(ceil(max(ya, yb) + HFS_RAY_EDGE_TOL)), nq - 1);
-        int pa = p + step * m, pb = p + step * mb;
-        ivec2 lo = R.xm ? ivec2(min(pa, pb), q0) : ivec2(q0, min(pa, pb));
-        ivec2 hi = R.xm ? ivec2(max(pa, pb), q1) : ivec2(q1, max(pa, pb));
-        int lv = hfs_ray_level(lo, hi);
-        float rise = texelFetch(bounds, at[lv] + (lo >> lv), 0).x - v0;
-        ++R.fetches;
+        float rise = hfs_ray_box_rise(bounds, at, R, float(m), float(mb), m, mb) - v0;
         /* the largest slope the run can hold: a rise over its nearest
          * crossing, a fall over its farthest */
         if (rise * zf / (rise >= 0.0 ? t : float(mb) * inv) > R.best) {

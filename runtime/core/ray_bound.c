@@ -285,6 +285,29 @@ static void segment(ray_search *S, int m, double a0, double a1)
     }
 }
 
+/* The bound, relative to z0, of the grid points of the ray's stretch from
+ * ua to ub crossings (its columns floor(ua) .. ceil(ub), its rows the
+ * minor coordinate's floor and ceiling there, within the edge tolerance):
+ * one read of the max pyramid. */
+static double box_rise(ray_search *S, double ua, double ub)
+{
+    const ray_walk *k = &S->k;
+    const hfs_ray_bound_layout *L = S->L;
+    const double ya = S->q + ua * k->r, yb = S->q + ub * k->r;
+    int q0 = (int)floor((ya < yb ? ya : yb) - RAY_EDGE_TOL);
+    int q1 = (int)ceil((ya > yb ? ya : yb) + RAY_EDGE_TOL);
+    q0 = q0 < 0 ? 0 : q0;
+    q1 = q1 > S->nq - 1 ? S->nq - 1 : q1;
+    const int pa = S->p + k->step * (int)floor(ua), pb = S->p + k->step * (int)ceil(ub);
+    const int p0 = pa < pb ? pa : pb, p1 = pa < pb ? pb : pa;
+    const int x0 = k->x_major ? p0 : q0, x1 = k->x_major ? p1 : q1;
+    const int y0 = k->x_major ? q0 : p0, y1 = k->x_major ? q1 : p1;
+    const int lv = hfs_ray_bound_level(x0, x1, y0, y1);
+    ++S->reads;
+    return S->atlas[(size_t)(L->y0[lv] + (y0 >> lv)) * L->aw + (size_t)(L->x0[lv] + (x0 >> lv))] -
+           S->z0;
+}
+
 /* The crossings (cells = 0) or the whole ray (cells = 1) from t_first to
  * t_last: ray_bound.h. */
 static double search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
@@ -302,7 +325,6 @@ static double search(const hfs_ray_bound_layout *L, const double *atlas, const d
     S.p = k->x_major ? i : j, S.q = k->x_major ? j : i, S.nq = k->x_major ? L->h : L->w;
     const int p = S.p, q = S.q, nq = S.nq;
     S.z0 = z[(size_t)j * stride + (size_t)i];
-    const double z0 = S.z0;
     cells = cells && nq >= 2; /* one row: the surface is linear between crossings */
     const double u0 = t_first / k->inv; /* in crossings */
     int m = (int)ceil(u0 - 1e-4);        /* as in float */
@@ -323,19 +345,7 @@ static double search(const hfs_ray_bound_layout *L, const double *atlas, const d
         const int ms = m_first - 1;
         const double a1 = u_end - ms < 1.0 ? u_end - ms : 1.0;
         /* solved where its cells' bound (one read) can beat the start */
-        const double ya = q + u0 * k->r, yb = q + (ms + a1) * k->r;
-        int q0 = (int)floor((ya < yb ? ya : yb) - RAY_EDGE_TOL);
-        int q1 = (int)ceil((ya > yb ? ya : yb) + RAY_EDGE_TOL);
-        q0 = q0 < 0 ? 0 : q0;
-        q1 = q1 > nq - 1 ? nq - 1 : q1;
-        const int pa = p + k->step * ms, pb = pa + k->step;
-        const int p0 = pa < pb ? pa : pb, p1 = pa < pb ? pb : pa;
-        const int x0 = k->x_major ? p0 : q0, x1 = k->x_major ? p1 : q1;
-        const int y0 = k->x_major ? q0 : p0, y1 = k->x_major ? q1 : p1;
-        const int lv = hfs_ray_bound_level(x0, x1, y0, y1);
-        const double rise = atlas[(size_t)(L->y0[lv] + (y0 >> lv)) * L->aw +
-                                  (size_t)(L->x0[lv] + (x0 >> lv))] - z0;
-        ++S.reads;
+        const double rise = box_rise(&S, u0, ms + a1);
         if (rise * zs / ((rise >= 0.0 ? u0 : ms + a1) * k->inv) > S.best)
             segment(&S, ms, u0 - ms, a1);
     }
@@ -355,19 +365,7 @@ static double search(const hfs_ray_bound_layout *L, const double *atlas, const d
         /* the run's bounding box of grid points; with cells, also those of
          * the cells on to the next crossing (a skipped run bounds them) */
         const int mb = cells && m1 < k->last ? m1 + 1 : m1;
-        const double ya = q + m * k->r, yb = q + mb * k->r;
-        int q0 = (int)floor((ya < yb ? ya : yb) - RAY_EDGE_TOL);
-        int q1 = (int)ceil((ya > yb ? ya : yb) + RAY_EDGE_TOL);
-        q0 = q0 < 0 ? 0 : q0;
-        q1 = q1 > nq - 1 ? nq - 1 : q1;
-        const int pa = p + k->step * m, pb = p + k->step * mb;
-        const int p0 = pa < pb ? pa : pb, p1 = pa < pb ? pb : pa;
-        const int x0 = k->x_major ? p0 : q0, x1 = k->x_major ? p1 : q1;
-        const int y0 = k->x_major ? q0 : p0, y1 = k->x_major ? q1 : p1;
-        const int lv = hfs_ray_bound_level(x0, x1, y0, y1);
-        const double rise = atlas[(size_t)(L->y0[lv] + (y0 >> lv)) * L->aw +
-                                  (size_t)(L->x0[lv] + (x0 >> lv))] - z0;
-        ++S.reads;
+        const double rise = box_rise(&S, m, mb);
         /* the largest slope the run can hold: a rise over its nearest
          * crossing, a fall over its farthest */
         if (rise * zs / (rise >= 0.0 ? t : mb * k->inv) > S.best) {
