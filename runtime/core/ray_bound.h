@@ -67,8 +67,9 @@
  *            of the ray from t_first on (from crossing 1 when t_first <= 1:
  *            the receiver's own cell peaks at an end, which the caller
  *            takes) is then solved or bounded, and the result is the
- *            supremum there.  Costs 2-4 reads more an evaluated crossing
- *            (the last segment's far column is kept).
+ *            supremum there.  Costs about twice the crossings' reads a
+ *            ray on test_ray_bound's rough fields (30.8 against 15.4),
+ *            the last segment's far column kept for the next.
  *
  * Shared by the CPU reference (this file's search) and the GLES path
  * (gles_ray.frag hfs_gap_search, the same steps); pure functions.
