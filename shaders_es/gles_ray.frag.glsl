@@ -86,11 +86,7 @@ float hfs_ray_crossing_from(float y, int nq, vec3 c, int v0)
 vec3 hfs_ray_column(highp sampler2D heights, inout hfs_ray R, int u, int v0, int n)
 {
     vec3 c;
-    for (int k = 0; k < 3; ++k) {
-        if (k == 2 && n < 3) {
-            c.z = c.y;
-            break;
-        }
+    for (int k = 0; k < n; ++k) {
         int kv = v0 + k - R.col_v0;
         if (u == R.col_u && kv >= 0 && kv < R.col_n) {
             c[k] = R.col[kv];
@@ -100,6 +96,8 @@ vec3 hfs_ray_column(highp sampler2D heights, inout hfs_ray R, int u, int v0, int
         c[k] = hfs_hdiff(texelFetch(heights, at, 0).xy, R.h0);
         ++R.fetches;
     }
+    if (n < 3)
+        c.z = c.y;
     return c;
 }
 

@@ -210,8 +210,8 @@ static void crossing(ray_search *S, int m)
 /* The ray's cells from a0 to a1 crossings past crossing m (0 <= a0 < a1
  * <= 1; ray_bound.h "cells"), crossing m where a0 = 0 and crossing m + 1
  * where a1 = 1, from the columns of the two crossings (2-3 rows each, the
- * first kept from the segment before).  Split where the ray crosses a minor grid line, a piece's
- * surface is the quadratic z(a) = A + B a + C a^2 (relative to z0) of one
+ * first kept from the segment before).  Split where the ray crosses a
+ * minor grid line, a piece's surface is the quadratic z(a) = A + B a + C a^2 (relative to z0) of one
  * bilinear cell; its slope z / (m + a) peaks inside only where C < 0, at
  * the root of C a^2 + 2 C m a + (B m - A) = 0 nearer 0, written so that
  * nothing cancels at large m.  Takes the crossings (value and lead) and,
@@ -330,13 +330,18 @@ static double search(const hfs_ray_bound_layout *L, const double *atlas, const d
     int m = (int)ceil(u0 - 1e-4);        /* as in float */
     m = m < 1 ? 1 : m;
     const int m_first = m;
-    /* where the ray ends: the radius, or where it leaves the grid */
-    const int np = k->x_major ? L->w : L->h;
-    double u_end = t_last / k->inv, side = k->step > 0 ? np - 1 - p : p;
-    u_end = side < u_end ? side : u_end;
-    if (k->r != 0.0) {
-        const double out = k->r > 0.0 ? (nq - 1 - q) / k->r : q / -k->r;
-        u_end = out < u_end ? out : u_end;
+    /* with cells, where the ray ends: the radius, or where it leaves the
+     * grid (the crossings' search needs no more than k->last) */
+    double u_end = 0.0;
+    if (cells) {
+        const int np = k->x_major ? L->w : L->h;
+        const double side = k->step > 0 ? np - 1 - p : p;
+        u_end = t_last / k->inv;
+        u_end = side < u_end ? side : u_end;
+        if (k->r != 0.0) {
+            const double out = k->r > 0.0 ? (nq - 1 - q) / k->r : q / -k->r;
+            u_end = out < u_end ? out : u_end;
+        }
     }
     /* with cells, the stretch from t_first to its first crossing (past the
      * receiver's own cell, whose slope peaks at an end): a search that
