@@ -31,12 +31,20 @@ bool hfs_scale_takes_over(float sl, float ref, float tie);
 #define HFS_CELLS 0
 #endif
 
-/* The level whose one read bounds the grid points [lo, hi]. */
+/* The level whose one read bounds the grid points [lo, hi]: the least
+ * l >= 1 at which both axes' ends lie in the same or neighbouring blocks
+ * (ray_bound.c hfs_ray_bound_level, the same value).  With e = floor(log2)
+ * of the larger span, read exactly from its float's exponent, that l is
+ * e - 1, e or e + 1 (a span of 2^e or more crosses at least three blocks
+ * of 2^(e-2); one under 2^(e+1) at most two of 2^(e+1)): two tests in
+ * place of a loop, which a SIMD device runs for its slowest lane. */
 int hfs_ray_level(ivec2 lo, ivec2 hi)
 {
-    int l = 1;
-    while (any(greaterThan((hi >> l) - (lo >> l), ivec2(1))))
-        ++l;
+    ivec2 d = hi - lo;
+    int e = (floatBitsToInt(float(max(max(d.x, d.y), 1))) >> 23) - 127;
+    int l = max(e - 1, 1);
+    l += any(greaterThan((hi >> l) - (lo >> l), ivec2(1))) ? 1 : 0;
+    l += any(greaterThan((hi >> l) - (lo >> l), ivec2(1))) ? 1 : 0;
     return l;
 }
 
@@ -74,57 +82,72 @@ void hfs_ray_take(inout hfs_ray R, float sl, float t)
  * weighs 0 adds 0). */
 float hfs_ray_crossing_from(float y, int nq, vec3 c, int v0)
 {
-    int y0 = min(int(floor(y)), nq - 2);
+    int y0 = max(min(int(floor(y)), nq - 2), 0);
     vec2 ab = y0 == v0 ? c.xy : c.yz;
     return ab.x + (y - float(y0)) * (ab.y - ab.x);
-}
-
-/* Rows v0 .. v0 + n - 1 (n = 2 or 3) of major column u relative to h0,
- * from the kept column where it holds them (ray_bound.c column); with
- * n = 2 the third repeats the second (the same max, and a crossing at the
- * second row's line interpolates to it). */
-vec3 hfs_ray_column(highp sampler2D heights, inout hfs_ray R, int u, int v0, int n)
-{
-    vec3 c;
-    for (int k = 0; k < n; ++k) {
-        int kv = v0 + k - R.col_v0;
-        if (u == R.col_u && kv >= 0 && kv < R.col_n) {
-            c[k] = R.col[kv];
-            continue;
-        }
-        ivec2 at = R.xm ? ivec2(u, v0 + k) : ivec2(v0 + k, u);
-        c[k] = hfs_hdiff(texelFetch(heights, at, 0).xy, R.h0);
-        ++R.fetches;
-    }
-    if (n < 3)
-        c.z = c.y;
-    return c;
 }
 
 /* The cells from a0 to a1 crossings past crossing m (0 <= a0 < a1 <= 1),
  * crossing m where a0 = 0 and crossing m + 1 where a1 = 1 (ray_bound.c
  * segment, the same steps): the rows the stretch's cells span, of both
  * columns, the near one kept from the segment before where it holds
- * them. */
+ * them.  a1 = 0: crossing m alone, from its column (the last crossing,
+ * and every crossing of a one-row grid, whose second row repeats its
+ * first).  The rows are read in one loop, as many turns as this texel
+ * needs reads (2-3 a segment where segments run on): a SIMD device that
+ * runs a loop body for its slowest lane then reads no more (issue 37:
+ * a read per row of each column cost llvmpipe twice the time). */
 void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a0, float a1)
 {
+    bool lone = !(a1 > 0.0);
     float fm = float(m);
     float ya = float(R.q) + fm * R.r, yb = float(R.q) + (fm + a1) * R.r;
     float ys = float(R.q) + (fm + a0) * R.r; /* where the stretch starts */
     float ca = clamp(ys, 0.0, float(R.nq - 1)), cb = clamp(yb, 0.0, float(R.nq - 1));
-    int v_lo = min(int(floor(min(ca, cb))), R.nq - 2);
+    int v_lo = max(min(int(floor(min(ca, cb))), R.nq - 2), 0);
     int v_hi = max(int(ceil(max(ca, cb))), v_lo + 1);
-    int u0 = R.p + R.step * m, n = v_hi - v_lo + 1;
-    vec3 c0 = hfs_ray_column(heights, R, u0, v_lo, n);
-    vec3 c1 = hfs_ray_column(heights, R, u0 + R.step, v_lo, n);
-    R.col = c1;
-    R.col_u = u0 + R.step, R.col_v0 = v_lo, R.col_n = n;
+    int u0 = R.p + R.step * m, u1 = u0 + R.step, n = v_hi - v_lo + 1;
+    /* the near column's rows [k0, k1) that the kept one lacks: one run, as
+     * the kept column has at least two rows and a segment at most three */
+    int k0 = 0, k1 = n;
+    vec3 c0 = vec3(0.0), c1 = vec3(0.0);
+    if (u0 == R.col_u) {
+        int kr0 = R.col_v0 - v_lo, kr1 = kr0 + R.col_n;
+        for (int k = 0; k < 3; ++k)
+            c0[k] = k >= kr0 && k < kr1 ? R.col[clamp(k - kr0, 0, 2)] : 0.0;
+        if (kr0 <= 0 && kr1 >= n)
+            k1 = 0;
+        else if (kr0 <= 0 && kr1 > 0)
+            k0 = kr1;
+        else if (kr1 >= n && kr0 < n)
+            k1 = kr0;
+    }
+    int miss = k1 - k0, reads = miss + (lone ? 0 : n);
+    for (int i = 0; i < reads; ++i) {
+        bool near = i < miss;
+        int k = near ? k0 + i : i - miss;
+        int u = near ? u0 : u1, v = min(v_lo + k, R.nq - 1);
+        float h = hfs_hdiff(texelFetch(heights, R.xm ? ivec2(u, v) : ivec2(v, u), 0).xy, R.h0);
+        if (near)
+            c0[k] = h;
+        else
+            c1[k] = h;
+    }
+    R.fetches += reads;
+    if (n < 3) {
+        c0.z = c0.y;
+        c1.z = c1.y;
+    }
+    R.col = lone ? c0 : c1;
+    R.col_u = lone ? u0 : u1, R.col_v0 = v_lo, R.col_n = n;
     if (a0 <= 0.0)
         hfs_ray_take(R, hfs_ray_crossing_from(ca, R.nq, c0, v_lo) * R.zf / (fm * R.inv),
                      fm * R.inv);
     if (a1 >= 1.0)
         hfs_ray_take(R, hfs_ray_crossing_from(cb, R.nq, c1, v_lo) * R.zf / ((fm + 1.0) * R.inv),
                      (fm + 1.0) * R.inv);
+    if (lone)
+        return;
     /* the cells lie below their highest corner: most never reach the best */
     float top = max(max(max(c0.x, c0.y), c0.z), max(max(c1.x, c1.y), c1.z));
     if (top * R.zf / ((top >= 0.0 ? fm + a0 : fm + a1) * R.inv) <= R.best)
@@ -240,58 +263,85 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
         u_end = min(u_end, r > 0.0 ? float(nq - 1 - q) / r : float(q) / -r);
     /* the stretch from t_first to its first crossing (ray_bound.c search):
      * a search that continues another leaves no gap between them */
-    if (cells && m_first >= 2 && float(m_first) - u0 > 1e-4 && u_end > u0 && R.best < stop) {
-        int ms = m_first - 1;
-        float a1 = min(u_end - float(ms), 1.0);
-        /* solved where its cells' bound (one read) can beat the start */
-        float rise = hfs_ray_box_rise(bounds, at, R, u0, float(ms) + a1, ms, ms + 1) - v0;
-        if (rise * zf / ((rise >= 0.0 ? u0 : float(ms) + a1) * inv) > R.best)
-            hfs_ray_segment(heights, R, ms, u0 - float(ms), a1);
-    }
+    int phase = cells && m_first >= 2 && float(m_first) - u0 > 1e-4 && u_end > u0 ? 0 : 1;
+    float a1s = min(u_end - float(m_first - 1), 1.0);
+#else
+    int phase = 1;
+    const float a1s = 0.0, u_end = 0.0;
 #endif
+    /* One loop does the whole search, a bound read or a segment (or both)
+     * a turn, in the order of ray_bound.c search: phase 0 the stretch
+     * from t_first to the first crossing, 1 the crossings (and with cells
+     * the cells between), 2 the cells past the last crossing.  One call
+     * site for the segment: a SIMD device runs each site for all its
+     * lanes (issue 37). */
     int l = 0;
-    while (m <= last && R.best < stop) {
-        float t = float(m) * inv;
-        if (l == 0) { /* one crossing (and with cells its segment): exactly */
+    while (R.best < stop) {
+        if (phase == 1 && m > last) {
 #if HFS_CELLS
-            if (cells && m < last) {
-                hfs_ray_segment(heights, R, m, 0.0, 1.0);
-            } else
+            if (!(cells && last >= m_first && u_end - float(last) > 0.0))
+                break;
+            phase = 2;
+#else
+            break;
 #endif
-            {
-                float y = clamp(float(q) + float(m) * r, 0.0, float(nq - 1));
-                int y0 = min(int(floor(y)), max(nq - 2, 0));
-                float f = y - float(y0);
-                int x = p + step * m;
-                ivec2 ia = R.xm ? ivec2(x, y0) : ivec2(y0, x);
-                ivec2 ib = nq >= 2 ? ia + (R.xm ? ivec2(0, 1) : ivec2(1, 0)) : ia;
-                vec2 a = texelFetch(heights, ia, 0).xy;
-                vec2 b = texelFetch(heights, ib, 0).xy;
-                R.fetches += 2;
-                hfs_ray_take(R, (hfs_hdiff(a, h0) + f * hfs_hdiff(b, a)) * zf / t, t);
-            }
+        }
+        if (phase > 2)
+            break;
+        /* the run's bounding box of grid points; with cells, also those of
+         * the cells on to the next crossing (a skipped run bounds them) */
+        int m1 = min(m + (1 << l) - 1, last);
+        int mb = cells && m1 < last ? m1 + 1 : m1;
+        bool beats = false;
+        if (phase == 0 || (phase == 1 && l > 0)) {
+            float ua = phase == 0 ? u0 : float(m);
+            float ub = phase == 0 ? float(m_first - 1) + a1s : float(mb);
+            int ca = phase == 0 ? m_first - 1 : m, cb = phase == 0 ? m_first : mb;
+            float rise = hfs_ray_box_rise(bounds, at, R, ua, ub, ca, cb) - v0;
+            /* the largest slope the stretch can hold: a rise over its
+             * nearest point, a fall over its farthest */
+            beats = rise * zf / ((rise >= 0.0 ? ua : ub) * inv) > R.best;
+        }
+        int sm = -1; /* the segment (or crossing) evaluated exactly, if any */
+        float sa0 = 0.0, sa1 = 0.0;
+        if (phase == 0) { /* solved where its cells' bound can beat the start */
+            sm = beats ? m_first - 1 : -1;
+            sa0 = u0 - float(m_first - 1);
+            sa1 = a1s;
+            phase = 1;
+        } else if (phase == 2) {
+            sm = last;
+            sa1 = min(u_end - float(last), 1.0);
+            phase = 3;
+        } else if (l == 0) { /* one crossing (and with cells its segment) */
+            sm = m;
+            sa1 = cells && m < last ? 1.0 : 0.0;
             ++m;
             l = 1;
-            continue;
-        }
-        int m1 = min(m + (1 << l) - 1, last);
-        /* with cells the box also holds the cells on to the next crossing */
-        int mb = cells && m1 < last ? m1 + 1 : m1;
-        float rise = hfs_ray_box_rise(bounds, at, R, float(m), float(mb), m, mb) - v0;
-        /* the largest slope the run can hold: a rise over its nearest
-         * crossing, a fall over its farthest */
-        if (rise * zf / (rise >= 0.0 ? t : float(mb) * inv) > R.best) {
+        } else if (beats) {
             --l;
-            continue;
+        } else {
+            m = m1 + 1;
+            ++l;
         }
-        m = m1 + 1;
-        ++l;
-    }
+        if (sm >= 0) {
 #if HFS_CELLS
-    /* past the last crossing */
-    if (cells && last >= m_first && R.best < stop && u_end - float(last) > 0.0)
-        hfs_ray_segment(heights, R, last, 0.0, min(u_end - float(last), 1.0));
+            hfs_ray_segment(heights, R, sm, sa0, sa1);
+#else
+            float y = clamp(float(q) + float(sm) * r, 0.0, float(nq - 1));
+            int y0 = min(int(floor(y)), max(nq - 2, 0));
+            float f = y - float(y0);
+            int x = p + step * sm;
+            ivec2 ia = R.xm ? ivec2(x, y0) : ivec2(y0, x);
+            ivec2 ib = nq >= 2 ? ia + (R.xm ? ivec2(0, 1) : ivec2(1, 0)) : ia;
+            vec2 a = texelFetch(heights, ia, 0).xy;
+            vec2 b = texelFetch(heights, ib, 0).xy;
+            R.fetches += 2;
+            float t = float(sm) * inv;
+            hfs_ray_take(R, (hfs_hdiff(a, h0) + f * hfs_hdiff(b, a)) * zf / t, t);
 #endif
+        }
+    }
     dist = R.dist;
     fetches = R.fetches;
     return R.best;

@@ -216,15 +216,16 @@ static void fc_rows(float q, float r, int nq, float m, float a1, int *v_lo, int 
 
 /* A segment's reads: the rows of its two columns (crossings m and m + 1),
  * less those of the column the segment before kept (*ku, rows *kv ..
- * *kv + *kn - 1), which then becomes the far one. */
+ * *kv + *kn - 1), which then becomes the far one; a1 = 0 (the last
+ * crossing alone): its own column's rows, which it then keeps. */
 static long fc_segment(float q, float r, int nq, long m, float a1, long *ku, int *kv, int *kn)
 {
     int v0, n;
     fc_rows(q, r, nq, (float)m, a1, &v0, &n);
-    long reads = n; /* the far column */
+    long reads = a1 > 0.0f ? n : 0; /* the far column */
     for (int k = 0; k < n; ++k)
         reads += !(m == *ku && v0 + k >= *kv && v0 + k < *kv + *kn);
-    *ku = m + 1, *kv = v0, *kn = n;
+    *ku = a1 > 0.0f ? m + 1 : m, *kv = v0, *kn = n;
     return reads;
 }
 
@@ -235,7 +236,7 @@ static long fc_segment(float q, float r, int nq, long m, float a1, long *ku, int
  * crossing bounded (one fetch) where t_first lies past crossing 1 and off
  * the crossings, the first crossing evaluated with the
  * cells on to the next (a segment: both columns' rows; the last crossing
- * alone: 2 fetches), then runs of 2, 4, 8 ... crossings (clipped at the
+ * alone: its column's, mostly kept), then runs of 2, 4, 8 ... crossings (clipped at the
  * last), one bound fetch each, then the cells past the last crossing to
  * where the ray leaves the grid (a segment). */
 static long fc_gap(int gx, int gy, int w, int h, double phi, double t_first)
@@ -267,7 +268,7 @@ static long fc_gap(int gx, int gy, int w, int h, double phi, double t_first)
     int l = 0, kv = 0, kn = 0;
     while (m <= last) {
         if (l == 0) {
-            n += m < last ? fc_segment((float)q, fr, nq, m, 1.0f, &ku, &kv, &kn) : 2;
+            n += fc_segment((float)q, fr, nq, m, m < last ? 1.0f : 0.0f, &ku, &kv, &kn);
             ++m, l = 1;
         } else {
             n += 1;

@@ -191,8 +191,8 @@ static double crossing_from(const ray_search *S, int m, const double *c, int v0)
     return f == 0.0 ? a : a + f * (c[y0 + 1 - v0] - a);
 }
 
-/* One crossing alone (the crossings' search, a one-row grid, the last
- * crossing): one read, its two heights being one pair. */
+/* One crossing alone (the crossings' search, a one-row grid): one read,
+ * its two heights being one pair. */
 static void crossing(ray_search *S, int m)
 {
     const double y = minor_at(S, m);
@@ -210,7 +210,9 @@ static void crossing(ray_search *S, int m)
 /* The ray's cells from a0 to a1 crossings past crossing m (0 <= a0 < a1
  * <= 1; ray_bound.h "cells"), crossing m where a0 = 0 and crossing m + 1
  * where a1 = 1, from the columns of the two crossings (2-3 rows each, the
- * first kept from the segment before).  Split where the ray crosses a
+ * first kept from the segment before); a1 = 0: crossing m alone, from its
+ * column, which is then the one kept (the last crossing: the segment
+ * before kept its rows).  Split where the ray crosses a
  * minor grid line, a piece's surface is the quadratic z(a) = A + B a + C a^2 (relative to z0) of one
  * bilinear cell; its slope z / (m + a) peaks inside only where C < 0, at
  * the root of C a^2 + 2 C m a + (B m - A) = 0 nearer 0, written so that
@@ -225,15 +227,18 @@ static void segment(ray_search *S, int m, double a0, double a1)
     int v_lo = (int)floor(ca < cb ? ca : cb), v_hi = (int)ceil(ca > cb ? ca : cb);
     v_lo = v_lo > S->nq - 2 ? S->nq - 2 : v_lo;
     v_hi = v_hi < v_lo + 1 ? v_lo + 1 : v_hi;
-    const int u0 = S->p + k->step * m, n = v_hi - v_lo + 1;
-    double c0[3], c1[3];
+    const int u0 = S->p + k->step * m, n = v_hi - v_lo + 1, lone = !(a1 > 0.0);
+    double c0[3], c1[3] = {0.0, 0.0, 0.0};
     column(S, u0, v_lo, n, c0);
-    column(S, u0 + k->step, v_lo, n, c1);
-    S->col_u = u0 + k->step, S->col_v0 = v_lo, S->col_n = n;
+    if (!lone)
+        column(S, u0 + k->step, v_lo, n, c1);
+    S->col_u = lone ? u0 : u0 + k->step, S->col_v0 = v_lo, S->col_n = n;
     for (int r = 0; r < n; ++r)
-        S->col[r] = c1[r];
+        S->col[r] = lone ? c0[r] : c1[r];
     if (a0 <= 0.0)
         take(S, (crossing_from(S, m, c0, v_lo) - S->z0) * S->zs / (m * k->inv), m * k->inv);
+    if (lone)
+        return;
     if (a1 >= 1.0)
         take(S, (crossing_from(S, m + 1, c1, v_lo) - S->z0) * S->zs / ((m + 1) * k->inv),
              (m + 1) * k->inv);
@@ -358,8 +363,8 @@ static double search(const hfs_ray_bound_layout *L, const double *atlas, const d
     while (m <= k->last) {
         const double t = m * k->inv;
         if (l == 0) { /* one crossing (and with cells its segment): exactly */
-            if (cells && m < k->last)
-                segment(&S, m, 0.0, 1.0);
+            if (cells) /* the last crossing from its column, which the segment before kept */
+                segment(&S, m, 0.0, m < k->last ? 1.0 : 0.0);
             else
                 crossing(&S, m);
             ++m;
