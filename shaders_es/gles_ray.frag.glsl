@@ -313,7 +313,9 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
             sm = last;
             sa1 = min(u_end - float(last), 1.0);
             phase = 3;
-        } else if (l == 0) { /* one crossing (and with cells its segment) */
+        } else if (l == 0 || (l == 1 && beats)) {
+            /* one crossing (and with cells its segment), at once where
+             * the smallest run's bound beats the best: a turn saved */
             sm = m;
             sa1 = cells && m < last ? 1.0 : 0.0;
             ++m;
