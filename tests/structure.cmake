@@ -19,3 +19,9 @@ add_test(NAME include_rules
 add_test(NAME include_rules_planted
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/include_rules_planted.sh ${PROJECT_SOURCE_DIR})
 set_tests_properties(include_rules include_rules_planted PROPERTIES LABELS unit TIMEOUT 120)
+# tools/mutations.txt still applies (session 30): each mutant's FIND occurs
+# exactly once in its file, so a rewrite that moves a mutant's code fails
+# here at once, not in the nightly tools/mutate.sh (which reports it STALE).
+add_test(NAME mutations_apply
+         COMMAND bash ${PROJECT_SOURCE_DIR}/tools/mutations_check.sh)
+set_tests_properties(mutations_apply PROPERTIES LABELS unit TIMEOUT 60)
