@@ -57,7 +57,7 @@ int hfs_ray_level(ivec2 lo, ivec2 hi)
 struct hfs_ray {
     bool xm;
     int step, p, q, nq;
-    float inv, r, zf, tie;
+    float am, inv, r, zf, tie; /* am: |the major component| */
     vec2 h0;
     float best, lead, dist;
     int fetches;
@@ -208,6 +208,69 @@ float hfs_ray_box_rise(highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS], inout h
     return texelFetch(bounds, at[lv] + (lo >> lv), 0).x;
 }
 
+/* The ray from grid point g (height h0) in direction cs: its axes and
+ * steps, the result so far, no column kept. */
+hfs_ray hfs_ray_make(ivec2 size, ivec2 g, vec2 cs, float zf, float tie, vec2 h0, float best,
+                     float dist, int fetches)
+{
+    hfs_ray R;
+    R.xm = abs(cs.x) >= abs(cs.y);
+    float ma = R.xm ? cs.x : cs.y, mi = R.xm ? cs.y : cs.x;
+    R.step = ma >= 0.0 ? 1 : -1;
+    R.am = abs(ma);
+    R.inv = 1.0 / R.am, R.r = mi / R.am;
+    R.p = R.xm ? g.x : g.y, R.q = R.xm ? g.y : g.x;
+    R.nq = R.xm ? size.y : size.x;
+    R.zf = zf, R.tie = tie, R.h0 = h0;
+    R.best = best, R.lead = best, R.dist = dist, R.fetches = fetches;
+    R.col = vec3(0.0), R.col_u = -1, R.col_v0 = 0, R.col_n = 0;
+    return R;
+}
+
+/* The last crossing inside the grid (the minor coordinate within the edge
+ * tolerance of it) at distance <= t_last (ray_bound.c walk_make). */
+int hfs_ray_last(hfs_ray R, ivec2 size, float t_last)
+{
+    int last = R.step > 0 ? (R.xm ? size.x : size.y) - 1 - R.p : R.p;
+    float lim = R.r > 0.0 ? (float(R.nq - 1 - R.q) + HFS_RAY_EDGE_TOL) / R.r
+                          : (R.r < 0.0 ? (float(R.q) + HFS_RAY_EDGE_TOL) / -R.r : 1e9);
+    if (lim < float(last))
+        last = int(floor(lim));
+    float lim_t = floor(t_last * R.am + 1e-4);
+    if (lim_t < float(last))
+        last = int(max(lim_t, 0.0));
+    return last;
+}
+
+#if HFS_CELLS
+/* Where the ray ends, in crossings: the radius t_last, or where it leaves
+ * the grid. */
+float hfs_ray_end(hfs_ray R, ivec2 size, float t_last)
+{
+    float u_end = min(t_last * R.am, float(R.step > 0 ? (R.xm ? size.x : size.y) - 1 - R.p : R.p));
+    if (R.r != 0.0)
+        u_end = min(u_end, R.r > 0.0 ? float(R.nq - 1 - R.q) / R.r : float(R.q) / -R.r);
+    return u_end;
+}
+#else
+/* Crossing m alone (the crossings' search): one pair of heights, the
+ * minor axis' linear interpolation (ray_bound.c crossing). */
+void hfs_ray_crossing(highp sampler2D heights, inout hfs_ray R, int m)
+{
+    float y = clamp(float(R.q) + float(m) * R.r, 0.0, float(R.nq - 1));
+    int y0 = min(int(floor(y)), max(R.nq - 2, 0));
+    float f = y - float(y0);
+    int x = R.p + R.step * m;
+    ivec2 ia = R.xm ? ivec2(x, y0) : ivec2(y0, x);
+    ivec2 ib = R.nq >= 2 ? ia + (R.xm ? ivec2(0, 1) : ivec2(1, 0)) : ia;
+    vec2 a = texelFetch(heights, ia, 0).xy;
+    vec2 b = texelFetch(heights, ib, 0).xy;
+    R.fetches += 2;
+    float t = float(m) * R.inv;
+    hfs_ray_take(R, (hfs_hdiff(a, R.h0) + f * hfs_hdiff(b, a)) * R.zf / t, t);
+}
+#endif
+
 /* max(best, the slope of every crossing at distance >= t_first and <=
  * t_last) of receiver g (height h0 at g) in direction cs: bounds from the atlas
  * `bounds` (level l at at[l]), heights (hi, lo) from `heights` (the input,
@@ -227,40 +290,20 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
                      float tie, vec2 h0, float best, float stop, inout float dist,
                      inout int fetches)
 {
-    hfs_ray R;
-    R.xm = abs(cs.x) >= abs(cs.y);
-    float ma = R.xm ? cs.x : cs.y, mi = R.xm ? cs.y : cs.x;
-    R.step = ma >= 0.0 ? 1 : -1;
-    R.inv = 1.0 / abs(ma), R.r = mi / abs(ma);
-    R.p = R.xm ? g.x : g.y, R.q = R.xm ? g.y : g.x;
-    R.nq = R.xm ? size.y : size.x;
-    R.zf = zf, R.tie = tie, R.h0 = h0;
-    R.best = best, R.lead = best, R.dist = dist, R.fetches = fetches;
-    R.col = vec3(0.0), R.col_u = -1, R.col_v0 = 0, R.col_n = 0;
-    int p = R.p, q = R.q, nq = R.nq, step = R.step;
-    float inv = R.inv, r = R.r;
-    int last = step > 0 ? (R.xm ? size.x : size.y) - 1 - p : p;
-    float lim = r > 0.0 ? (float(nq - 1 - q) + HFS_RAY_EDGE_TOL) / r
-                        : (r < 0.0 ? (float(q) + HFS_RAY_EDGE_TOL) / -r : 1e9);
-    if (lim < float(last))
-        last = int(floor(lim));
-    float lim_t = floor(t_last * abs(ma) + 1e-4);
-    if (lim_t < float(last))
-        last = int(max(lim_t, 0.0));
+    hfs_ray R = hfs_ray_make(size, g, cs, zf, tie, h0, best, dist, fetches);
+    int last = hfs_ray_last(R, size, t_last);
+    float inv = R.inv;
 #if HFS_CELLS
-    bool cells = nq >= 2; /* one row: linear between crossings */
+    bool cells = R.nq >= 2; /* one row: linear between crossings */
 #else
     const bool cells = false;
 #endif
-    float u0 = t_first * abs(ma); /* in crossings */
+    float u0 = t_first * R.am; /* in crossings */
     int m = max(1, int(ceil(u0 - 1e-4)));
     int m_first = m;
     float v0 = hfs_h(h0);
 #if HFS_CELLS
-    /* where the ray ends: the radius, or where it leaves the grid */
-    float u_end = min(t_last * abs(ma), float(step > 0 ? (R.xm ? size.x : size.y) - 1 - p : p));
-    if (r != 0.0)
-        u_end = min(u_end, r > 0.0 ? float(nq - 1 - q) / r : float(q) / -r);
+    float u_end = hfs_ray_end(R, size, t_last);
     /* the stretch from t_first to its first crossing (ray_bound.c search):
      * a search that continues another leaves no gap between them */
     int phase = cells && m_first >= 2 && float(m_first) - u0 > 1e-4 && u_end > u0 ? 0 : 1;
@@ -330,17 +373,7 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
 #if HFS_CELLS
             hfs_ray_segment(heights, R, sm, sa0, sa1);
 #else
-            float y = clamp(float(q) + float(sm) * r, 0.0, float(nq - 1));
-            int y0 = min(int(floor(y)), max(nq - 2, 0));
-            float f = y - float(y0);
-            int x = p + step * sm;
-            ivec2 ia = R.xm ? ivec2(x, y0) : ivec2(y0, x);
-            ivec2 ib = nq >= 2 ? ia + (R.xm ? ivec2(0, 1) : ivec2(1, 0)) : ia;
-            vec2 a = texelFetch(heights, ia, 0).xy;
-            vec2 b = texelFetch(heights, ib, 0).xy;
-            R.fetches += 2;
-            float t = float(sm) * inv;
-            hfs_ray_take(R, (hfs_hdiff(a, h0) + f * hfs_hdiff(b, a)) * zf / t, t);
+            hfs_ray_crossing(heights, R, sm);
 #endif
         }
     }
