@@ -227,11 +227,17 @@ hfs_ray hfs_ray_make(ivec2 size, ivec2 g, vec2 cs, float zf, float tie, vec2 h0,
     return R;
 }
 
+/* The crossings from the receiver to the grid's side along the major axis. */
+int hfs_ray_side(hfs_ray R, ivec2 size)
+{
+    return R.step > 0 ? (R.xm ? size.x : size.y) - 1 - R.p : R.p;
+}
+
 /* The last crossing inside the grid (the minor coordinate within the edge
  * tolerance of it) at distance <= t_last (ray_bound.c walk_make). */
 int hfs_ray_last(hfs_ray R, ivec2 size, float t_last)
 {
-    int last = R.step > 0 ? (R.xm ? size.x : size.y) - 1 - R.p : R.p;
+    int last = hfs_ray_side(R, size);
     float lim = R.r > 0.0 ? (float(R.nq - 1 - R.q) + HFS_RAY_EDGE_TOL) / R.r
                           : (R.r < 0.0 ? (float(R.q) + HFS_RAY_EDGE_TOL) / -R.r : 1e9);
     if (lim < float(last))
@@ -247,7 +253,7 @@ int hfs_ray_last(hfs_ray R, ivec2 size, float t_last)
  * the grid. */
 float hfs_ray_end(hfs_ray R, ivec2 size, float t_last)
 {
-    float u_end = min(t_last * R.am, float(R.step > 0 ? (R.xm ? size.x : size.y) - 1 - R.p : R.p));
+    float u_end = min(t_last * R.am, float(hfs_ray_side(R, size)));
     if (R.r != 0.0)
         u_end = min(u_end, R.r > 0.0 ? float(R.nq - 1 - R.q) / R.r : float(R.q) / -R.r);
     return u_end;
@@ -319,7 +325,7 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
      * site for the segment: a SIMD device runs each site for all its
      * lanes (issue 37). */
     int l = 0;
-    while (R.best < stop) {
+    while (phase < 3 && R.best < stop) {
         if (phase == 1 && m > last) {
 #if HFS_CELLS
             if (!(cells && last >= m_first && u_end - float(last) > 0.0))
@@ -329,8 +335,6 @@ float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
             break;
 #endif
         }
-        if (phase > 2)
-            break;
         /* the run's bounding box of grid points; with cells, also those of
          * the cells on to the next crossing (a skipped run bounds them) */
         int m1 = min(m + (1 << l) - 1, last);
