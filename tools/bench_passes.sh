@@ -11,7 +11,7 @@ R=${2:?usage: bench_passes.sh SIZE ROUNDS FRAMES BUILD...}
 F=${3:?usage: bench_passes.sh SIZE ROUNDS FRAMES BUILD...}
 shift 3
 [ $# -gt 0 ] || { echo "bench_passes.sh: no build given" >&2; exit 2; }
-for r in $(seq "$R"); do
+for _ in $(seq "$R"); do
     for b in "$@"; do
         "$b/tests/gles_bench" --size "$S" --lights both --path slice --frames "$F" --cold 2>&1 |
             awk -v B="$b" '/^  (env|far|transfer|keyfactor|shade) / {v[$1] = $2}
