@@ -38,6 +38,13 @@
  * b G_j read from the slice's rows of u_mslices (runtime/core/env_map_slices.h;
  * over their largest value), into one target: the texel's occluded
  * irradiance over dphi (RGB, <= 0).
+ *
+ * HFS_ENV_DOT 1 (the sky occlusion, pass_env_sky_occlusion.c): T_occ as
+ * above, rounded to fp16 as its targets would store it, dotted here with
+ * the SH sky u_envo (each channel's 16 coefficients over their sum of
+ * magnitudes, uniform_blocks.h hfs_gles_env_occ_weights), into one target (hfs_env_occ):
+ * 3 values a texel kept instead of 16, for a frame whose sky is not being
+ * turned.
  */
 // hfs-variant: HFS_FP32 1
 // hfs-variant: HFS_SWATH_TEX 1
@@ -48,6 +55,9 @@
 // hfs-variant: HFS_FARK 3
 // hfs-variant: HFS_PAIRS 1, HFS_FARK 3
 // hfs-variant: HFS_PAIRS 1, HFS_FARK 2, HFS_ENV_MAP 1
+// hfs-variant: HFS_ENV_DOT 1
+// hfs-variant: HFS_ENV_DOT 1, HFS_FP32 1
+// hfs-variant: HFS_PAIRS 1, HFS_FARK 2, HFS_ENV_DOT 1
 
 #ifndef HFS_NLEV
 #define HFS_NLEV 33
@@ -69,6 +79,7 @@ precision highp sampler2DArray;
 
 vec3 hfs_normal(vec4 t);
 vec4 hfs_f16v(vec4 v);
+vec4 hfs_env_occ(vec4 t[4], vec4 l[12]);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
 float hfs_far_slope(float h, float d, float dz, float inv_step);
@@ -135,6 +146,8 @@ vec3 map_s(int j, float a, float b, float e)
     return a * texture(u_mslices, vec2(u, (float(2 * j) + 0.5) * h)).rgb +
            b * texture(u_mslices, vec2(u, (float(2 * j) + 1.5) * h)).rgb;
 }
+#elif defined(HFS_ENV_DOT)
+uniform vec4 u_envo[12];                 /* the sky, 4 vec4 a channel, over its size */
 #else
 layout(location = 1) out vec4 o_t1;
 layout(location = 2) out vec4 o_t2;
@@ -452,9 +465,15 @@ void main()
 #else
     vec4 T[4];
     contract(S, T);
-    o_t0 = hfs_f16v(T[0]);
-    o_t1 = hfs_f16v(T[1]);
-    o_t2 = hfs_f16v(T[2]);
-    o_t3 = hfs_f16v(T[3]);
+    for (int k = 0; k < 4; ++k)
+        T[k] = hfs_f16v(T[k]);
+#ifdef HFS_ENV_DOT
+    o_t0 = hfs_env_occ(T, u_envo);
+#else
+    o_t0 = T[0];
+    o_t1 = T[1];
+    o_t2 = T[2];
+    o_t3 = T[3];
+#endif
 #endif
 }

@@ -201,6 +201,23 @@ float hfs_sh_dot(vec4 a[4], vec4 b[4])
     return dot(a[0], b[0]) + dot(a[1], b[1]) + dot(a[2], b[2]) + dot(a[3], b[3]);
 }
 
+/* The environment's occluded light per channel, (T_occ . L_r, T_occ . L_g,
+ * T_occ . L_b, 0), l holding 4 vec4 a channel, rounded to fp16 as a target
+ * stores it (HFS_FP32: as is).  env_slices.frag HFS_ENV_DOT stores it (the
+ * sky occlusion) and shade.frag computes it from a kept T_occ: the same
+ * function of the same fp16 coefficients, so the two give the same bits. */
+vec4 hfs_f16v(vec4 v);
+vec4 hfs_env_occ(vec4 t[4], vec4 l[12])
+{
+    vec4 r[4], g[4], b[4];
+    for (int k = 0; k < 4; ++k) {
+        r[k] = l[k];
+        g[k] = l[4 + k];
+        b[k] = l[8 + k];
+    }
+    return hfs_f16v(vec4(hfs_sh_dot(t, r), hfs_sh_dot(t, g), hfs_sh_dot(t, b), 0.0));
+}
+
 /* Rotation about +z by angle a given (cos ma), (sin ma), m = 1..3
  * (runtime/sh/sh.h hfs_sh_rotate_z): per band l and m > 0,
  *   out[l(l+1)+m] = c in[l(l+1)+m] - s in[l(l+1)-m]

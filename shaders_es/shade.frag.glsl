@@ -3,10 +3,13 @@
  * products (DESIGN.md "Shading", "GLES path", "Frame planner"):
  *   environment  Lo += rho/pi * T . L_env per channel, T = H * V_env = the
  *                open part H * hemisphere(N), zonal about N and evaluated
- *                here as k_l Y_lm(N) (u_topen), plus the occluded part from
- *                env_transfer.frag; clamped into [-neg, rho/pi H . L_env +
- *                neg] (u_env_neg) with H = the clamped cosine of this
- *                texel's normal;
+ *                here as k_l Y_lm(N) (u_topen), plus the occluded part
+ *                T_occ (env_transfer.frag, env_slices.frag) dotted with
+ *                the sky on its own (hfs_env_occ, times u_occs); clamped
+ *                into [-neg, rho/pi H . L_env + neg] (u_env_neg) with H =
+ *                the clamped cosine of this texel's normal.  HFS_ENV_OCC:
+ *                that dot was taken by the sky occlusion pass (u_socc;
+ *                pass_env_sky_occlusion.c), the same bits;
  *   key light q  Lo += rho/pi * Le E_max * f_q, f_q = E_cap ratio / E_max
  *                from key_visibility.frag (one layer per light, (hi, lo));
  *   local lights (HFS_LOCAL) Lo += rho/pi * Le * E_cap * ratio, E_cap at
@@ -49,6 +52,9 @@
 // hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_ALBEDO_MAP 1, HFS_GLOSSY 1, HFS_FP32 1
 // hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_GLOSSY 2
 // hfs-variant: HFS_NKEYS 1, HFS_LOCAL 1, HFS_GLOSSY 2
+// hfs-variant: HFS_ENV 1, HFS_ENV_OCC 1
+// hfs-variant: HFS_ENV 1, HFS_ENV_OCC 1, HFS_NKEYS 1, HFS_FP32 1
+// hfs-variant: HFS_ENV 1, HFS_ENV_OCC 1, HFS_ENV_MAP 1, HFS_NKEYS 2, HFS_LOCAL 1
 // hfs-variant: HFS_ENV 1, HFS_ENV_MAP 1
 // hfs-variant: HFS_ENV 1, HFS_ENV_MAP 2, HFS_NKEYS 1
 // hfs-variant: HFS_ENV 1, HFS_ENV_MAP 2, HFS_GLOSSY 1, HFS_FP32 1
@@ -67,6 +73,7 @@ precision highp sampler2DArray;
 vec3 hfs_normal(vec4 t);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
+vec4 hfs_env_occ(vec4 t[4], vec4 l[12]);
 float hfs_cap_irradiance_sc(float cos_beta, float s, float c);
 vec2 hfs_split(float v);
 vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl);
@@ -74,10 +81,14 @@ void hfs_sh_basis(vec3 d, out vec4 y[4]);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 
 uniform highp sampler2D u_normals;       /* full resolution */
-uniform highp sampler2D u_t0;            /* T_occ = H * D, full resolution */
+#ifdef HFS_ENV_OCC
+uniform highp sampler2D u_socc;          /* hfs_env_occ(T_occ, u_envo), full resolution */
+#else
+uniform highp sampler2D u_t0;            /* T_occ, full resolution */
 uniform highp sampler2D u_t1;
 uniform highp sampler2D u_t2;
 uniform highp sampler2D u_t3;
+#endif
 uniform highp sampler2DArray u_kf;       /* key factors f / E_max (hi, lo), a layer each */
 uniform ivec2 u_size;                    /* W, H */
 uniform ivec2 u_vsize;                   /* visibility grid size */
@@ -99,6 +110,9 @@ uniform highp sampler2D u_mocc;          /* the map's occluded light / (F_max dp
 #endif
 #ifdef HFS_GLOSS_MAP
 uniform highp sampler2D u_egloss;        /* D_g(R) / D_g max, 129 x 65, LINEAR */
+#endif
+#if defined(HFS_ENV_OCC) && defined(HFS_GLOSSY)
+#error "the glossy lobe reads all of T: no sky occlusion (gles_frame.c env_fold)"
 #endif
 #ifdef HFS_GLOSSY
 #if HFS_GLOSSY == 2
@@ -123,6 +137,8 @@ layout(std140) uniform HfsShade {
     vec4 u_lle[16];                      /* per local light: Le (rgb) */
     vec4 u_emap;                         /* HFS_ENV_MAP: (rho/pi D_max, cos rotate,
                                             sin rotate, rho/pi F_max dphi) */
+    vec4 u_envo[12];                     /* L_c / m_c, m_c = sum_k |L_ck|: T_occ's sky */
+    vec4 u_occs;                         /* rho/pi m_c s: the occluded light's scale */
 #ifdef HFS_GLOSSY
     vec4 u_gview;                        /* (V towards the viewer, ks) */
     vec4 u_gpar;                         /* (S, ks (S+2)/(2 pi), D_g max, 0) */
@@ -274,20 +290,29 @@ void main()
     {
         vec4 H[4];
         hfs_sh_cosine(n, H);
-        vec4 T[4];
-#if HFS_ENV_MAP != 2 || defined(HFS_GLOSSY)
+        vec4 T[4];                       /* the open part, then (glossy) all of T */
         hfs_sh_basis(n, T);
-        T[0] = T[0] * u_topen[0] + texelFetch(u_t0, p, 0);
-        T[1] = T[1] * u_topen[1] + texelFetch(u_t1, p, 0);
-        T[2] = T[2] * u_topen[2] + texelFetch(u_t2, p, 0);
-        T[3] = T[3] * u_topen[3] + texelFetch(u_t3, p, 0);
+        for (int g = 0; g < 4; ++g)
+            T[g] *= u_topen[g];
+        vec3 occ;                        /* the occluded light, <= 0 */
+#if HFS_ENV_MAP == 2
+        occ = u_emap.w * texelFetch(u_mocc, p, 0).rgb;
+#elif defined(HFS_ENV_OCC)
+        occ = u_occs.rgb * texelFetch(u_socc, p, 0).rgb;
+#endif
+#if !defined(HFS_ENV_OCC) && (HFS_ENV_MAP != 2 || defined(HFS_GLOSSY))
+        vec4 To[4];
+        To[0] = texelFetch(u_t0, p, 0);
+        To[1] = texelFetch(u_t1, p, 0);
+        To[2] = texelFetch(u_t2, p, 0);
+        To[3] = texelFetch(u_t3, p, 0);
+#if HFS_ENV_MAP != 2
+        occ = u_occs.rgb * hfs_env_occ(To, u_envo).rgb;
+#endif
 #endif
         vec3 dmap = vec3(0.0);
 #if HFS_ENV_MAP > 0
         dmap = env_open(n);
-#endif
-#if HFS_ENV_MAP == 2
-        vec3 occ = u_emap.w * texelFetch(u_mocc, p, 0).rgb;
 #endif
         vec4 L[4];
         for (int c = 0; c < 3; ++c) {
@@ -300,12 +325,14 @@ void main()
 #if HFS_ENV_MAP == 2
             float v = open + occ[c];
 #else
-            float v = u_misc.x * hfs_sh_dot(T, L) + dmap[c];
+            float v = u_misc.x * hfs_sh_dot(T, L) + dmap[c] + occ[c];
 #endif
             lo[c] += clamp(v, -u_env_neg[c], open + u_env_neg[c]);
         }
 #ifdef HFS_GLOSSY
         /* gloss.c hfs_gloss_env: the lobe's order-4 visible fraction v. */
+        for (int g = 0; g < 4; ++g) /* all of T: the lobe's visible part */
+            T[g] += To[g];
         if (g_nr > 0.0) {
             vec4 Q[4];
             hfs_sh_basis(g_r, Q);

@@ -77,3 +77,8 @@ target_include_directories(bench_edits PRIVATE ${PROJECT_SOURCE_DIR}/tools)
 # The regions local edits recompute, against brute force (no driver).
 hfs_add_test(test_edit_region SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_edit_region.c
              LIBS hfs_gles m LABEL unit)
+# The SH sky's occluded light as one target until the sky turns, then the
+# transfer (pass_env_sky_occlusion.c): the passes, the memory, and the two
+# renderers' images bit for bit (GLES).
+hfs_add_test(test_gles_sky_occlusion SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gles_sky_occlusion.c
+             LIBS hfshade_lib hfs_terrain_gen m LABEL gl TIMEOUT 300)

@@ -82,6 +82,9 @@ struct hfs_gles_frame {
      * (HFS_ENV_MAP 1), 2 that and the map's occluded light along the
      * slices (the slice path with env_shade_map). */
     int env_map;
+    /* 1: the SH sky's occluded light is dotted per texel by the sky
+     * occlusion pass, no transfer kept (gles_frame.c env_fold). */
+    int env_fold;
     /* 1: a glossy frame with env_map > 0 and env_shade_map: the lobe adds
      * the map's beyond order 4 (env_gloss.h; HFS_GLOSS_MAP). */
     int gloss_map;
@@ -167,6 +170,11 @@ struct hfs_gles {
     hfs_slice_table env_slices;           /* --visibility slice: of env_vis's swath */
     int env_slices_n;
 
+    /* Whether the sky has been turned or re-tinted between two frames: from
+     * then on the renderer keeps the transfer (a turn costs the shading),
+     * before it only the sky occlusion (gles_frame.c env_fold). */
+    double env_seen[3][HFS_SH_N];         /* the last frame's sky */
+    int env_seen_valid, env_turned;
     double lit_scale;                     /* out_scale of the last shaded frame */
     hfs_gles_view_state *view;            /* the 3-D view's targets (pass_view.c) */
     int shared;                           /* ctx shares the application's objects */
@@ -283,11 +291,18 @@ int hfs_gles_bind_ray(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_
  * start u_gap_from (texels). */
 int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
                          float gap_from, hfs_error *err);
-/* env_slices.frag over the field into fbo: the transfer's occluded part
- * (env_map 0, pass_env_transfer.c) or the map's occluded irradiance
- * (env_map 1, pass_env_map_slices.c). */
-int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, int env_map, GLuint fbo,
-                             hfs_error *err);
+/* What env_slices.frag writes. */
+typedef enum hfs_gles_slices_out {
+    HFS_SLICES_TRANSFER, /* T_occ, 16 coefficients in 4 targets (pass_env_transfer.c) */
+    HFS_SLICES_MAP,      /* the map's occluded irradiance (pass_env_map_slices.c) */
+    HFS_SLICES_SKY       /* T_occ dotted with the SH sky (pass_env_sky_occlusion.c) */
+} hfs_gles_slices_out;
+/* env_slices.frag over the field into fbo. */
+int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_gles_slices_out what,
+                             GLuint fbo, hfs_error *err);
+/* The slice path's fetches a texel (the normal, the grid's horizons, the
+ * near scale's neighbourhood, the far grid), before what `what` adds. */
+double hfs_gles_env_slices_fetches(const hfs_gles *g, const hfs_gles_frame *fr);
 /* Draws the bound program over the grid into `outs` layers of array
  * texture tex from layer0 (through fbo), over region only (texels; NULL:
  * the grid); with fetch_sum, adds the counts the HFS_COUNT twin wrote to

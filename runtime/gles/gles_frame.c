@@ -64,7 +64,32 @@ static int fit_resources(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
                                      occ ? fr->L.h : 0, err);
     if (g->envmap.occ_gen != occ_gen)
         hfs_plan_drop(&g->plan.p, g->plan.pr_mocc);
+    /* The frame keeps the transfer or the sky occlusion, not both. */
+    if (fr->env_fold ? hfs_gles_transfer_free(&g->r, &g->gl)
+                     : hfs_gles_skyocc_free(&g->r, &g->gl))
+        hfs_plan_drop(&g->plan.p, fr->env_fold ? g->plan.pr_transfer : g->plan.pr_skyocc);
     return rc;
+}
+
+/* Whether the frame's SH sky is shaded from the sky occlusion (T_occ
+ * dotted with the sky per texel, 1 target) rather than a kept transfer (4
+ * targets, 16 values a texel): on the slice path, for the SH sky's own
+ * occlusion (not env-shade = map's), when nothing else reads T (a glossy
+ * lobe, bounces capped at the grid's horizons), and until the sky turns.
+ * A sky turned or re-tinted between two frames says a knob moves it: from
+ * then on this renderer keeps the transfer, so that a turn costs the
+ * shading alone (the first turn pays the transfer once).  Both give the
+ * shading the same values (hfs_env_occ). */
+static int env_fold(hfs_gles *g, const hfs_gles_frame *fr)
+{
+    if (!fr->has_env)
+        return 0;
+    if (g->env_seen_valid && memcmp(g->env_seen, fr->l_env, sizeof g->env_seen))
+        g->env_turned = 1;
+    memcpy(g->env_seen, fr->l_env, sizeof g->env_seen);
+    g->env_seen_valid = 1;
+    return fr->slice && fr->env_map != 2 && !fr->gloss.on && !(fr->bounces > 0 && fr->capped) &&
+           !g->env_turned;
 }
 
 /* What this frame's passes are computed from, for the planner. */
@@ -85,6 +110,7 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
     if (fr->has_env) {
         memcpy(s->l_env, fr->l_env, sizeof s->l_env);
         s->env_map = fr->env_map;
+        s->env_fold = fr->env_fold;
     }
     if (s->env_map > 0) { /* FNV-1a of the open-sky table: it stands for the map */
         const unsigned char *b = (const unsigned char *)fr->l->env_open;
@@ -274,6 +300,7 @@ int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     hfs_gles_timing_select(&g->timing, g->caps.timer_query);
     fr->tables = fr->q->visibility == HFS_VIS_WEDGE_TABLE;
     fr->slice = fr->q->visibility == HFS_VIS_SLICE;
+    fr->env_fold = env_fold(g, fr);
     if ((rc = check_limits(g, fr, err)) || (rc = fit_resources(g, fr, err)))
         return rc;
     const size_t n_img = (size_t)fr->L.w * fr->L.h * 3;

@@ -33,6 +33,7 @@ typedef enum hfs_gles_pass_id {
     HFS_PASS_LOCAL_LIGHTS,   /* pass_local_lights.c: local ratios, per local light */
     HFS_PASS_ENV_TRANSFER,   /* pass_env_transfer.c: T = H * V_env per texel       */
     HFS_PASS_ENV_MAP_SLICES, /* pass_env_map_slices.c: an env map's occluded light */
+    HFS_PASS_ENV_SKY_OCCLUSION, /* pass_env_sky_occlusion.c: the SH sky's, a sky kept */
     HFS_PASS_KEY_VISIBILITY, /* pass_key_visibility.c: key factor, per key         */
     HFS_PASS_SHADE,          /* pass_shade.c: exit radiance (hi, lo)               */
     HFS_PASS_BOUNCE,         /* pass_bounce.c: indirect bounces, direct + indirect */
@@ -83,6 +84,7 @@ int hfs_gles_pass_max_instances(const hfs_gles_pass *p);
 
 extern const hfs_gles_pass hfs_pass_terrain, hfs_pass_env_horizons, hfs_pass_key_horizons,
     hfs_pass_local_lights, hfs_pass_env_transfer, hfs_pass_env_map_slices,
+    hfs_pass_env_sky_occlusion,
     hfs_pass_key_visibility, hfs_pass_shade,
     hfs_pass_bounce, hfs_pass_readback, hfs_pass_lit_texture;
 extern const hfs_gles_pass hfs_pass_view;

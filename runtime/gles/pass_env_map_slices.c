@@ -45,10 +45,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
      * (all slices counted: an open one skips them). */
     hfs_gles_stage_fetches(g, HFS_PASS_ENV_MAP_SLICES, 0,
                            (double)L->w * L->h *
-                               (1.0 + ceil(g->env_vis_n / (fr->hor_pairs ? 2.0 : 4.0)) +
-                                10.0 * fr->env_near +
-                                4.0 * g->env_vis_n));
-    return hfs_gles_draw_env_slices(g, fr, 1, g->envmap.occ_fbo, err);
+                               (hfs_gles_env_slices_fetches(g, fr) + 4.0 * g->env_vis_n));
+    return hfs_gles_draw_env_slices(g, fr, HFS_SLICES_MAP, g->envmap.occ_fbo, err);
 }
 
 const hfs_gles_pass hfs_pass_env_map_slices = {

@@ -19,14 +19,16 @@ static int present(const hfs_gles_frame *fr)
     return fr->has_env;
 }
 
-int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, int env_map, GLuint fbo,
-                             hfs_error *err)
+int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_gles_slices_out what,
+                             GLuint fbo, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
+    const int env_map = what == HFS_SLICES_MAP;
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_dir = g->env_vis_n,
                                 .fp32 = g->caps.fp32, .swath_tex = fr->env_swath_tex,
-                                .env_map = env_map, .pairs = fr->hor_pairs,
+                                .env_map = env_map, .env_dot = what == HFS_SLICES_SKY,
+                                .pairs = fr->hor_pairs,
                                 .far_k = fr->split.on ? fr->split.k : 0};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_SLICES, &v, &prog, err);
@@ -38,28 +40,42 @@ int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, int env_map, GLuin
     if (env_map && (rc = hfs_gles_program_texture(gl, prog, "u_mslices", GL_TEXTURE_2D,
                                                   g->envmap.slices, err)))
         return rc;
+    if (what == HFS_SLICES_SKY) { /* the same weights as the shading's (uniform_blocks.h) */
+        float envo[3][16];
+        double m[3];
+        hfs_gles_env_occ_weights(fr->l_env, envo, m);
+        const GLint loc = gl->GetUniformLocation(prog->name, "u_envo");
+        if (loc < 0)
+            return hfs_fail(err, HFS_E_GL, "backend gles: sky occlusion: no u_envo");
+        gl->Uniform4fv(loc, 12, &envo[0][0]);
+    }
     hfs_gles_set_i2(gl, prog, "u_vsize", L->vw, L->vh);
     hfs_gles_set_i1(gl, prog, "u_near", fr->env_near);
     hfs_gles_edit_draw(g, fbo, L->w, L->h, 1, fr->edit ? hfs_gles_edit_transfer(g, fr) : NULL);
     gl->UseProgram(0);
-    return hfs_gl_check(gl, env_map ? "backend gles: map occlusion pass"
-                                    : "backend gles: slice transfer pass", err);
+    static const char *const pass_name[] = {"backend gles: slice transfer pass",
+                                            "backend gles: map occlusion pass",
+                                            "backend gles: sky occlusion pass"};
+    return hfs_gl_check(gl, pass_name[what], err);
+}
+
+double hfs_gles_env_slices_fetches(const hfs_gles *g, const hfs_gles_frame *fr)
+{
+    /* Per texel: normal, a horizon layer per 4 directions, and with the
+     * near scale its own height and 9 neighbours; split horizons: a far
+     * texel per 2 sub-directions and the 4 far receivers' heights. */
+    const double per_layer = fr->hor_pairs ? 2.0 : 4.0;
+    const double far = fr->split.on ? ceil(g->env_vis_n * fr->split.k / 2.0) + 4.0 : 0.0;
+    return 1.0 + ceil(g->env_vis_n / per_layer) + 10.0 * fr->env_near + far;
 }
 
 /* The slice path: env_slices.frag from the grid's horizons. */
 static int run_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 {
     const hfs_gles_layout *L = &fr->L;
-    /* Per texel: normal, a horizon layer per 4 directions, and with the
-     * near scale its own height and 9 neighbours; split horizons: a far
-     * texel per 2 sub-directions and the 4 far receivers' heights. */
-    const double per_layer = fr->hor_pairs ? 2.0 : 4.0;
-    const double far = fr->split.on ? ceil(g->env_vis_n * fr->split.k / 2.0) + 4.0 : 0.0;
     hfs_gles_stage_fetches(g, HFS_PASS_ENV_TRANSFER, 0,
-                           (double)L->w * L->h *
-                               (1.0 + ceil(g->env_vis_n / per_layer) + 10.0 * fr->env_near +
-                                far));
-    return hfs_gles_draw_env_slices(g, fr, 0, g->r.transfer_fbo, err);
+                           (double)L->w * L->h * hfs_gles_env_slices_fetches(g, fr));
+    return hfs_gles_draw_env_slices(g, fr, HFS_SLICES_TRANSFER, g->r.transfer_fbo, err);
 }
 
 static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err)

@@ -121,6 +121,12 @@ static void fill_block(const hfs_gles *g, const hfs_gles_frame *fr, double s,
     sb->misc[0] = (float)fr->rho_pi;
     sb->misc[1] = 1.0f; /* the scale is in the radiances */
     sb->misc[2] = fr->has_env ? 1.0f : 0.0f;
+    if (fr->has_env) { /* T_occ's dot with the sky, in its own scale */
+        double m[3];
+        hfs_gles_env_occ_weights(fr->l_env, sb->envo, m);
+        for (int c = 0; c < 3; ++c)
+            sb->occs[c] = (float)(fr->rho_pi * m[c] * s);
+    }
     for (int c = 0; c < 3 && fr->has_env; ++c) /* cpu_render.c env_clamp */
         sb->env_neg[c] = (float)(fr->rho_pi * PI * hfs_sh_negative_bound(fr->l_env[c]) * s);
     for (int i = 0; i < fr->n_keys; ++i) /* rho/pi Le E_max: the factor's scale */
@@ -152,7 +158,10 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     int rc;
     if ((rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, r->normals, err)))
         return rc;
-    for (int i = 0; i < 4; ++i) {
+    if (fr->env_fold && /* the sky occlusion, not T_occ */
+        (rc = hfs_gles_program_texture(gl, prog, "u_socc", GL_TEXTURE_2D, r->skyocc, err)))
+        return rc;
+    for (int i = 0; i < 4 && !fr->env_fold; ++i) {
         char name[16]; /* room for any int, as the optimiser checks */
         snprintf(name, sizeof name, "u_t%d", i);
         if ((rc = hfs_gles_program_texture(gl, prog, name, GL_TEXTURE_2D, r->transfer[i], err)))
@@ -210,6 +219,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
                                 .n_local = fr->n_local, .fp32 = g->caps.fp32,
                                 .albedo_map = fr->albedo != NULL, .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0,
                                 .env_map = fr->has_env ? fr->env_map : 0,
+                                .env_occ = fr->env_fold,
                                 .gloss_map = fr->has_env && fr->gloss_map};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_SHADE, &v, &prog, err);
@@ -219,11 +229,12 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
      * lights' ratios added theirs when they ran: pass_local_lights.c). */
     hfs_gles_edit_draw(g, g->r.out_fbo, L->w, L->h, 1, fr->edit ? &g->edit.shade : NULL);
     gl->UseProgram(0);
-    /* The environment: T (not on the map's occlusion unless glossy), the
-     * open-sky table and the map's occlusion (pass_env_map_slices.c). */
+    /* The environment: T_occ (not on the map's occlusion unless glossy) or
+     * the sky occlusion, the open-sky table and the map's occlusion
+     * (pass_env_map_slices.c). */
+    const int t_occ = fr->env_fold ? 1 : (fr->env_map == 2 && !fr->gloss.on ? 0 : 4);
     const int env_fetches = !fr->has_env ? 0
-                            : (fr->env_map == 2 && !fr->gloss.on ? 0 : 4) + (fr->env_map > 0) +
-                                  (fr->env_map == 2) + fr->gloss_map;
+                            : t_occ + (fr->env_map > 0) + (fr->env_map == 2) + fr->gloss_map;
     double fetches = (double)L->w * L->h * (1 + env_fetches + fr->n_keys + (fr->albedo != NULL));
     if (local) /* the texel's height, one ratio layer per two lights */
         fetches += (double)L->w * L->h * (1 + (fr->n_local + 1) / 2);

@@ -11,6 +11,7 @@ const hfs_gles_pass *const hfs_gles_pass_table[HFS_PASS_COUNT] = {
     [HFS_PASS_LOCAL_LIGHTS] = &hfs_pass_local_lights,
     [HFS_PASS_ENV_TRANSFER] = &hfs_pass_env_transfer,
     [HFS_PASS_ENV_MAP_SLICES] = &hfs_pass_env_map_slices,
+    [HFS_PASS_ENV_SKY_OCCLUSION] = &hfs_pass_env_sky_occlusion,
     [HFS_PASS_KEY_VISIBILITY] = &hfs_pass_key_visibility,
     [HFS_PASS_SHADE] = &hfs_pass_shade,
     [HFS_PASS_BOUNCE] = &hfs_pass_bounce,

@@ -110,10 +110,11 @@ int hfs_gles_plan_init(hfs_gles_plan *gp, hfs_error *err)
     gp->pr_bounced = node_find(p, "bounced targets", 0);
     gp->pr_view = node_find(p, "view image", 0);
     gp->pr_mocc = node_find(p, "env map occlusion", 0);
+    gp->pr_skyocc = node_find(p, "env sky occlusion", 0);
     gp->pr_lit = node_find(p, "lit texture", 0);
     int ok = gp->pr_pyramid >= 0 && gp->pr_env >= 0 && gp->pr_transfer >= 0 &&
              gp->pr_targets >= 0 && gp->pr_image >= 0 && gp->pr_bounced >= 0;
-    ok &= gp->pr_view >= 0 && gp->pr_mocc >= 0 && gp->pr_lit >= 0;
+    ok &= gp->pr_view >= 0 && gp->pr_mocc >= 0 && gp->pr_skyocc >= 0 && gp->pr_lit >= 0;
     for (int i = 0; i < HFS_GLES_PLAN_KEYS; ++i) {
         ok &= (gp->pr_key[i] = node_find(p, "key %d horizons", i)) >= 0;
         ok &= (gp->pr_kfactor[i] = node_find(p, "key %d factor", i)) >= 0;
@@ -275,7 +276,9 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
     reads[n++] = gp->in_albedo;
     reads[n++] = gp->in_light_set;
     if (now->has_env) {
-        if (now->env_map != 2 || now->gloss[0] != 0.0 || now->gloss[1] != 0.0)
+        if (now->env_fold)
+            reads[n++] = gp->pr_skyocc; /* T_occ . L_env, no T kept */
+        else if (now->env_map != 2 || now->gloss[0] != 0.0 || now->gloss[1] != 0.0)
             reads[n++] = gp->pr_transfer; /* T: the environment, or the glossy lobe */
         if (now->env_map == 2)
             reads[n++] = gp->pr_mocc;

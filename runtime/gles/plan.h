@@ -76,6 +76,7 @@ typedef struct hfs_gles_frame_sig {
                                      every env and key horizon */
     double l_env[3][HFS_SH_COEFFS];
     int env_map;                  /* gles_backend.h hfs_gles_frame env_map */
+    int env_fold;                 /* ... env_fold: the shading reads the sky occlusion */
     const float *emap;            /* env-shade = map: the map, its size and */
     int emap_w, emap_h;           /* its open-sky table's contents (a hash, */
     uint64_t eopen_hash;          /* standing for the map's)                */
@@ -121,6 +122,7 @@ typedef struct hfs_gles_plan {
     int in_key_rad[HFS_GLES_PLAN_KEYS];
     int pr_pyramid, pr_env, pr_transfer, pr_targets, pr_image, pr_bounced;
     int pr_mocc;                  /* the map's occluded light (env-shade = map) */
+    int pr_skyocc;                /* the SH sky's, when no transfer is kept */
     int pr_local[HFS_MAX_LOCAL_LIGHTS];
     int pr_key[HFS_GLES_PLAN_KEYS], pr_kfactor[HFS_GLES_PLAN_KEYS];
     /* frame_plan pass id of each (pass, instance); -1 past the pass's

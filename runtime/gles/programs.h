@@ -53,6 +53,9 @@ typedef struct hfs_gles_variant {
     int n_bdir;     /* HFS_NBDIR: the bounces' directions                    */
     int glossy;     /* HFS_GLOSSY 1: the shading adds the Phong lobe (gloss.h);
                        2: for a viewer at a point (each texel's own V)       */
+    int env_dot;    /* HFS_ENV_DOT 1: env_slices.frag dots T_occ with the sky
+                       (the sky occlusion, pass_env_sky_occlusion.c)          */
+    int env_occ;    /* HFS_ENV_OCC 1: shade.frag reads that sky occlusion     */
     int env_map;    /* HFS_ENV_MAP (env-shade = map): env_slices.frag 1, the
                        map's occluded light; shade.frag 1, the open-sky
                        table, 2, and the map's occluded light (pass_shade.c) */

@@ -159,6 +159,7 @@ void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
     fbo_delete(gl, &r->keyhz_fbo);
     fbo_delete(gl, &r->localv_fbo);
     targets_delete(gl, r->transfer, 4, &r->transfer_fbo);
+    targets_delete(gl, &r->skyocc, 1, &r->skyocc_fbo);
     hfs_gles_tex_delete(gl, &r->kf);
     fbo_delete(gl, &r->kf_fbo);
     const unsigned gen[5] = {r->terrain_gen, r->grid_gen, r->keyhz_gen, r->localv_gen,
@@ -318,6 +319,37 @@ int hfs_gles_transfer_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_
     return rc;
 }
 
+int hfs_gles_skyocc_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                           hfs_error *err)
+{
+    if (r->skyocc_fbo)
+        return HFS_OK;
+    r->skyocc = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, r->w, r->h, 1, 0);
+    r->skyocc_bytes = (size_t)r->w * r->h * c->bytes_rgba;
+    int rc = hfs_gles_fbo_new(gl, &r->skyocc_fbo, 1, &r->skyocc, NULL, "sky occlusion", err);
+    if (rc) { /* nothing half made: the next frame that needs it tries again */
+        targets_delete(gl, &r->skyocc, 1, &r->skyocc_fbo);
+        r->skyocc_bytes = 0;
+    }
+    return rc;
+}
+
+int hfs_gles_transfer_free(hfs_gles_resources *r, const hfs_gl *gl)
+{
+    const int had = r->transfer_fbo != 0;
+    targets_delete(gl, r->transfer, 4, &r->transfer_fbo);
+    r->transfer_bytes = 0;
+    return had;
+}
+
+int hfs_gles_skyocc_free(hfs_gles_resources *r, const hfs_gl *gl)
+{
+    const int had = r->skyocc_fbo != 0;
+    targets_delete(gl, &r->skyocc, 1, &r->skyocc_fbo);
+    r->skyocc_bytes = 0;
+    return had;
+}
+
 int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                               const hfs_gles_layout *L, const hfs_gles_layers *n,
                               hfs_error *err)
@@ -352,6 +384,6 @@ int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs
 
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r)
 {
-    return r->bytes + r->build_bytes + r->transfer_bytes + r->venv_bytes + r->hor_bytes +
-           r->far_bytes + r->keyhz_bytes + r->localv_bytes + r->kf_bytes;
+    return r->bytes + r->build_bytes + r->transfer_bytes + r->skyocc_bytes + r->venv_bytes +
+           r->hor_bytes + r->far_bytes + r->keyhz_bytes + r->localv_bytes + r->kf_bytes;
 }

@@ -42,12 +42,13 @@ typedef struct hfs_gles_resources {
     GLuint localv, localv_fbo;                  /* local-light ratios, 2 lights per layer */
     int localv_layers;
     GLuint transfer[4], transfer_fbo;           /* T = H * V_env per texel */
+    GLuint skyocc, skyocc_fbo;                  /* or T_occ . L_env (the sky occlusion) */
     GLuint kf, kf_fbo;      /* key factors f / E_max (hi, lo), a layer per key light */
     int kf_layers;
     GLuint out[2], out_fbo; /* RGB hi, lo: drawn together */
     GLuint out_lo_fbo;      /* lo alone as attachment 0, for the readback */
     size_t bytes, hor_bytes, far_bytes, keyhz_bytes, localv_bytes, kf_bytes;
-    size_t transfer_bytes, venv_bytes;       /* made on demand (0: none) */
+    size_t transfer_bytes, venv_bytes, skyocc_bytes; /* made on demand (0: none) */
     size_t build_bytes;                      /* lev, half: only while the pyramid is built */
     unsigned terrain_gen, grid_gen, keyhz_gen, localv_gen, kf_gen; /* bumped when reallocated */
 } hfs_gles_resources;
@@ -79,6 +80,14 @@ void hfs_gles_pyramid_build_free(hfs_gles_resources *r, const hfs_gl *gl);
  * does: 4 full-resolution RGBA targets, 8 MiB at 512², issue 37). */
 int hfs_gles_transfer_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                              hfs_error *err);
+/* The sky occlusion's target (pass_env_sky_occlusion.c), made the first
+ * time a frame needs it: one full-resolution RGBA target, 2 MiB at 512^2. */
+int hfs_gles_skyocc_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
+                           hfs_error *err);
+/* Frees the transfer targets (1: there were some) or the sky occlusion's:
+ * a frame keeps one of the two (gles_frame.c). */
+int hfs_gles_transfer_free(hfs_gles_resources *r, const hfs_gl *gl);
+int hfs_gles_skyocc_free(hfs_gles_resources *r, const hfs_gl *gl);
 /* Deletes everything; the generations move on. */
 void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl);
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r);

@@ -376,6 +376,17 @@ void hfs_gles_pack_key(const hfs_gles_layout *L, const hfs_gles_key *k, const hf
         fold_key_matrices(k, v, (float *)(rec + 1));
 }
 
+void hfs_gles_env_occ_weights(const double l_env[3][HFS_SH_N], float out[3][16], double m[3])
+{
+    for (int c = 0; c < 3; ++c) {
+        m[c] = 0.0;
+        for (int k = 0; k < HFS_SH_N; ++k)
+            m[c] += fabs(l_env[c][k]);
+        for (int k = 0; k < 16; ++k)
+            out[c][k] = k < HFS_SH_N && m[c] > 0.0 ? (float)(l_env[c][k] / m[c]) : 0.0f;
+    }
+}
+
 void hfs_gles_cosine_transfer(float dst[16])
 {
     double kl[HFS_ZH_N];

@@ -177,6 +177,16 @@ void hfs_gles_open_transfer(float dst[16]);
  * coefficients. */
 void hfs_gles_cosine_transfer(float dst[16]);
 
+/* The weights the occluded part of the transfer is dotted with (the sky
+ * occlusion, env_slices.frag HFS_ENV_DOT, and shade.frag from a kept
+ * T_occ: hfs_env_occ): each channel of the rotated sky l_env over its own
+ * size m_c = sum_k |L_ck| (0 for a dark channel), into out[c][k]; m_c into
+ * m[c].  The dot, |T_occ . L_c / m_c| <= max_k |T_occ,k| < 3.5, is then
+ * stored in fp16 at a relative rounding that does not depend on the sky's
+ * brightness (the image scales with the radiance, tools/hfstress), nor on
+ * the other lights; the shading multiplies it by rho/pi m_c s. */
+void hfs_gles_env_occ_weights(const double l_env[3][HFS_SH_N], float out[3][16], double m[3]);
+
 /* The shading pass's uniform block HfsShade (shade.frag.glsl), std140,
  * by name: every member is a vec4 array there, so the C layout (floats,
  * no padding) is the std140 one; the asserts pin the offsets the shader
@@ -193,8 +203,13 @@ typedef struct hfs_gles_shade_block {
                                            (rho/pi D_max, cos rot, sin rot,
                                            rho/pi F_max dphi), times s for
                                            the radiances                       */
+    float envo[3][16];                  /* u_envo[12]: L_c / m_c, the occluded
+                                           light's weights, and u_occs: its
+                                           scale rho/pi m_c s per channel
+                                           (hfs_gles_env_occ_weights)           */
+    float occs[4];
     /* Glossy surfaces (gloss.h), read only by the HFS_GLOSSY variant (the
-     * others declare the block up to u_emap: a prefix). */
+     * others declare the block up to u_envo: a prefix). */
     float gview[4];                     /* u_gview: (V, ks)                      */
     float gpar[4];                      /* u_gpar: (S, ks (S+2)/(2 pi), 0, 0)    */
     float gzh[16];                      /* u_gzh[4]: g_l per coefficient         */
@@ -211,15 +226,17 @@ _Static_assert(offsetof(hfs_gles_shade_block, env_neg) == 13 * 16, "HfsShade.u_e
 _Static_assert(offsetof(hfs_gles_shade_block, kle) == 14 * 16, "HfsShade.u_kle");
 _Static_assert(offsetof(hfs_gles_shade_block, topen) == 22 * 16, "HfsShade.u_topen");
 _Static_assert(offsetof(hfs_gles_shade_block, lle) == 26 * 16, "HfsShade.u_lle");
-_Static_assert(offsetof(hfs_gles_shade_block, gview) == 43 * 16, "HfsShade.u_gview");
-_Static_assert(offsetof(hfs_gles_shade_block, gpar) == 44 * 16, "HfsShade.u_gpar");
-_Static_assert(offsetof(hfs_gles_shade_block, gzh) == 45 * 16, "HfsShade.u_gzh");
-_Static_assert(offsetof(hfs_gles_shade_block, kspec) == 49 * 16, "HfsShade.u_kspec");
-_Static_assert(offsetof(hfs_gles_shade_block, kdir) == 57 * 16, "HfsShade.u_kdir");
-_Static_assert(offsetof(hfs_gles_shade_block, geye) == 65 * 16, "HfsShade.u_geye");
-_Static_assert(offsetof(hfs_gles_shade_block, ghgt) == 66 * 16, "HfsShade.u_ghgt");
+_Static_assert(offsetof(hfs_gles_shade_block, gview) == 56 * 16, "HfsShade.u_gview");
+_Static_assert(offsetof(hfs_gles_shade_block, gpar) == 57 * 16, "HfsShade.u_gpar");
+_Static_assert(offsetof(hfs_gles_shade_block, gzh) == 58 * 16, "HfsShade.u_gzh");
+_Static_assert(offsetof(hfs_gles_shade_block, kspec) == 62 * 16, "HfsShade.u_kspec");
+_Static_assert(offsetof(hfs_gles_shade_block, kdir) == 70 * 16, "HfsShade.u_kdir");
+_Static_assert(offsetof(hfs_gles_shade_block, geye) == 78 * 16, "HfsShade.u_geye");
+_Static_assert(offsetof(hfs_gles_shade_block, ghgt) == 79 * 16, "HfsShade.u_ghgt");
 _Static_assert(offsetof(hfs_gles_shade_block, emap) == 42 * 16, "HfsShade.u_emap");
-_Static_assert(sizeof(hfs_gles_shade_block) == 67 * 16, "HfsShade size");
+_Static_assert(offsetof(hfs_gles_shade_block, envo) == 43 * 16, "HfsShade.u_envo");
+_Static_assert(offsetof(hfs_gles_shade_block, occs) == 55 * 16, "HfsShade.u_occs");
+_Static_assert(sizeof(hfs_gles_shade_block) == 80 * 16, "HfsShade size");
 
 /* The fixed head of the local-light block HfsLocal (local_visibility.frag.glsl and
  * shade.frag.glsl), std140, by name; u_ldir[nphi_local] follows it,
