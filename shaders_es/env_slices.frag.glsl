@@ -42,8 +42,9 @@
  * HFS_ENV_DOT 1 (the sky occlusion, pass_env_sky_occlusion.c): T_occ as
  * above, rounded to fp16 as its targets would store it, dotted here with
  * the SH sky u_envo (each channel's 16 coefficients over their sum of
- * magnitudes, uniform_blocks.h hfs_gles_env_occ_weights), into one target (hfs_env_occ):
- * 3 values a texel kept instead of 16, for a frame whose sky is not being
+ * magnitudes, uniform_blocks.h hfs_gles_env_occ_weights), into two targets
+ * (hfs_env_occ: RGBA hi + lo_r, RG lo_g, lo_b): 3 values a texel, as fp16
+ * (hi, lo) pairs, kept instead of 16, for a frame whose sky is not being
  * turned.
  */
 // hfs-variant: HFS_FP32 1
@@ -79,7 +80,7 @@ precision highp sampler2DArray;
 
 vec3 hfs_normal(vec4 t);
 vec4 hfs_f16v(vec4 v);
-vec4 hfs_env_occ(vec4 t[4], vec4 l[12]);
+void hfs_env_occ(vec4 t[4], vec4 l[12], out vec4 a, out vec2 b);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
 float hfs_far_slope(float h, float d, float dz, float inv_step);
@@ -148,6 +149,7 @@ vec3 map_s(int j, float a, float b, float e)
 }
 #elif defined(HFS_ENV_DOT)
 uniform vec4 u_envo[12];                 /* the sky, 4 vec4 a channel, over its size */
+layout(location = 1) out vec4 o_t1;      /* (lo_g, lo_b) into an RG target */
 #else
 layout(location = 1) out vec4 o_t1;
 layout(location = 2) out vec4 o_t2;
@@ -468,7 +470,9 @@ void main()
     for (int k = 0; k < 4; ++k)
         T[k] = hfs_f16v(T[k]);
 #ifdef HFS_ENV_DOT
-    o_t0 = hfs_env_occ(T, u_envo);
+    vec2 lo_gb;
+    hfs_env_occ(T, u_envo, o_t0, lo_gb);
+    o_t1 = vec4(lo_gb, 0.0, 0.0);
 #else
     o_t0 = T[0];
     o_t1 = T[1];

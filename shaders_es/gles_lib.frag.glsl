@@ -201,21 +201,34 @@ float hfs_sh_dot(vec4 a[4], vec4 b[4])
     return dot(a[0], b[0]) + dot(a[1], b[1]) + dot(a[2], b[2]) + dot(a[3], b[3]);
 }
 
-/* The environment's occluded light per channel, (T_occ . L_r, T_occ . L_g,
- * T_occ . L_b, 0), l holding 4 vec4 a channel, rounded to fp16 as a target
- * stores it (HFS_FP32: as is).  env_slices.frag HFS_ENV_DOT stores it (the
- * sky occlusion) and shade.frag computes it from a kept T_occ: the same
- * function of the same fp16 coefficients, so the two give the same bits. */
-vec4 hfs_f16v(vec4 v);
-vec4 hfs_env_occ(vec4 t[4], vec4 l[12])
+/* The environment's occluded light per channel, T_occ . L_c (l holding 4
+ * vec4 a channel), as two targets store it exactly: a = (hi_r, hi_g, hi_b,
+ * lo_r), b = (lo_g, lo_b), hi each value's nearest fp16 and lo the rest
+ * rounded to fp16 (HFS_FP32: the values, lo 0); hfs_env_occ_sum adds them
+ * back (~2^-22 of each value: the shading's own rounding of T_occ, fp16 a
+ * coefficient, stays what limits it).  env_slices.frag HFS_ENV_DOT stores
+ * it (the sky occlusion) and shade.frag computes it from a kept T_occ: the
+ * same function of the same fp16 coefficients, so the two give the same
+ * bits. */
+vec2 hfs_split(float v);
+float hfs_f16(float v);
+void hfs_env_occ(vec4 t[4], vec4 l[12], out vec4 a, out vec2 b)
 {
-    vec4 r[4], g[4], b[4];
+    vec4 r[4], g[4], bl[4];
     for (int k = 0; k < 4; ++k) {
         r[k] = l[k];
         g[k] = l[4 + k];
-        b[k] = l[8 + k];
+        bl[k] = l[8 + k];
     }
-    return hfs_f16v(vec4(hfs_sh_dot(t, r), hfs_sh_dot(t, g), hfs_sh_dot(t, b), 0.0));
+    vec2 pr = hfs_split(hfs_sh_dot(t, r)), pg = hfs_split(hfs_sh_dot(t, g));
+    vec2 pb = hfs_split(hfs_sh_dot(t, bl));
+    a = vec4(pr.x, pg.x, pb.x, hfs_f16(pr.y));
+    b = vec2(hfs_f16(pg.y), hfs_f16(pb.y));
+}
+
+vec3 hfs_env_occ_sum(vec4 a, vec2 b)
+{
+    return a.rgb + vec3(a.a, b);
 }
 
 /* Rotation about +z by angle a given (cos ma), (sin ma), m = 1..3

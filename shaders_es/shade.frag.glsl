@@ -73,7 +73,8 @@ precision highp sampler2DArray;
 vec3 hfs_normal(vec4 t);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
-vec4 hfs_env_occ(vec4 t[4], vec4 l[12]);
+void hfs_env_occ(vec4 t[4], vec4 l[12], out vec4 a, out vec2 b);
+vec3 hfs_env_occ_sum(vec4 a, vec2 b);
 float hfs_cap_irradiance_sc(float cos_beta, float s, float c);
 vec2 hfs_split(float v);
 vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl);
@@ -82,7 +83,8 @@ vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 
 uniform highp sampler2D u_normals;       /* full resolution */
 #ifdef HFS_ENV_OCC
-uniform highp sampler2D u_socc;          /* hfs_env_occ(T_occ, u_envo), full resolution */
+uniform highp sampler2D u_socc;          /* hfs_env_occ(T_occ, u_envo): (hi, lo_r), */
+uniform highp sampler2D u_socclo;        /* (lo_g, lo_b), full resolution */
 #else
 uniform highp sampler2D u_t0;            /* T_occ, full resolution */
 uniform highp sampler2D u_t1;
@@ -298,7 +300,8 @@ void main()
 #if HFS_ENV_MAP == 2
         occ = u_emap.w * texelFetch(u_mocc, p, 0).rgb;
 #elif defined(HFS_ENV_OCC)
-        occ = u_occs.rgb * texelFetch(u_socc, p, 0).rgb;
+        occ = u_occs.rgb * hfs_env_occ_sum(texelFetch(u_socc, p, 0),
+                                           texelFetch(u_socclo, p, 0).xy);
 #endif
 #if !defined(HFS_ENV_OCC) && (HFS_ENV_MAP != 2 || defined(HFS_GLOSSY))
         vec4 To[4];
@@ -307,7 +310,10 @@ void main()
         To[2] = texelFetch(u_t2, p, 0);
         To[3] = texelFetch(u_t3, p, 0);
 #if HFS_ENV_MAP != 2
-        occ = u_occs.rgb * hfs_env_occ(To, u_envo).rgb;
+        vec4 oa;
+        vec2 ob;
+        hfs_env_occ(To, u_envo, oa, ob);
+        occ = u_occs.rgb * hfs_env_occ_sum(oa, ob);
 #endif
 #endif
         vec3 dmap = vec3(0.0);

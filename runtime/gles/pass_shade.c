@@ -159,7 +159,8 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     if ((rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, r->normals, err)))
         return rc;
     if (fr->env_fold && /* the sky occlusion, not T_occ */
-        (rc = hfs_gles_program_texture(gl, prog, "u_socc", GL_TEXTURE_2D, r->skyocc, err)))
+        ((rc = hfs_gles_program_texture(gl, prog, "u_socc", GL_TEXTURE_2D, r->skyocc[0], err)) ||
+         (rc = hfs_gles_program_texture(gl, prog, "u_socclo", GL_TEXTURE_2D, r->skyocc[1], err))))
         return rc;
     for (int i = 0; i < 4 && !fr->env_fold; ++i) {
         char name[16]; /* room for any int, as the optimiser checks */
@@ -232,7 +233,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     /* The environment: T_occ (not on the map's occlusion unless glossy) or
      * the sky occlusion, the open-sky table and the map's occlusion
      * (pass_env_map_slices.c). */
-    const int t_occ = fr->env_fold ? 1 : (fr->env_map == 2 && !fr->gloss.on ? 0 : 4);
+    const int t_occ = fr->env_fold ? 2 : (fr->env_map == 2 && !fr->gloss.on ? 0 : 4);
     const int env_fetches = !fr->has_env ? 0
                             : t_occ + (fr->env_map > 0) + (fr->env_map == 2) + fr->gloss_map;
     double fetches = (double)L->w * L->h * (1 + env_fetches + fr->n_keys + (fr->albedo != NULL));

@@ -159,7 +159,7 @@ void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
     fbo_delete(gl, &r->keyhz_fbo);
     fbo_delete(gl, &r->localv_fbo);
     targets_delete(gl, r->transfer, 4, &r->transfer_fbo);
-    targets_delete(gl, &r->skyocc, 1, &r->skyocc_fbo);
+    targets_delete(gl, r->skyocc, 2, &r->skyocc_fbo);
     hfs_gles_tex_delete(gl, &r->kf);
     fbo_delete(gl, &r->kf_fbo);
     const unsigned gen[5] = {r->terrain_gen, r->grid_gen, r->keyhz_gen, r->localv_gen,
@@ -324,11 +324,12 @@ int hfs_gles_skyocc_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl
 {
     if (r->skyocc_fbo)
         return HFS_OK;
-    r->skyocc = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, r->w, r->h, 1, 0);
-    r->skyocc_bytes = (size_t)r->w * r->h * c->bytes_rgba;
-    int rc = hfs_gles_fbo_new(gl, &r->skyocc_fbo, 1, &r->skyocc, NULL, "sky occlusion", err);
-    if (rc) { /* nothing half made: the next frame that needs it tries again */
-        targets_delete(gl, &r->skyocc, 1, &r->skyocc_fbo);
+    r->skyocc[0] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, r->w, r->h, 1, 0);
+    r->skyocc[1] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, r->w, r->h, 1, 0);
+    r->skyocc_bytes = (size_t)r->w * r->h * (c->bytes_rgba + c->bytes_rg);
+    int rc = hfs_gles_fbo_new(gl, &r->skyocc_fbo, 2, r->skyocc, NULL, "sky occlusion", err);
+    if (rc) { /* nothing half made: the next frame that needs them tries again */
+        targets_delete(gl, r->skyocc, 2, &r->skyocc_fbo);
         r->skyocc_bytes = 0;
     }
     return rc;
@@ -345,7 +346,7 @@ int hfs_gles_transfer_free(hfs_gles_resources *r, const hfs_gl *gl)
 int hfs_gles_skyocc_free(hfs_gles_resources *r, const hfs_gl *gl)
 {
     const int had = r->skyocc_fbo != 0;
-    targets_delete(gl, &r->skyocc, 1, &r->skyocc_fbo);
+    targets_delete(gl, r->skyocc, 2, &r->skyocc_fbo);
     r->skyocc_bytes = 0;
     return had;
 }

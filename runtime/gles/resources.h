@@ -42,7 +42,8 @@ typedef struct hfs_gles_resources {
     GLuint localv, localv_fbo;                  /* local-light ratios, 2 lights per layer */
     int localv_layers;
     GLuint transfer[4], transfer_fbo;           /* T = H * V_env per texel */
-    GLuint skyocc, skyocc_fbo;                  /* or T_occ . L_env (the sky occlusion) */
+    GLuint skyocc[2], skyocc_fbo;               /* or T_occ . L_env (the sky occlusion):
+                                                   RGBA (hi, lo_r), RG (lo_g, lo_b) */
     GLuint kf, kf_fbo;      /* key factors f / E_max (hi, lo), a layer per key light */
     int kf_layers;
     GLuint out[2], out_fbo; /* RGB hi, lo: drawn together */
@@ -80,8 +81,9 @@ void hfs_gles_pyramid_build_free(hfs_gles_resources *r, const hfs_gl *gl);
  * does: 4 full-resolution RGBA targets, 8 MiB at 512², issue 37). */
 int hfs_gles_transfer_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                              hfs_error *err);
-/* The sky occlusion's target (pass_env_sky_occlusion.c), made the first
- * time a frame needs it: one full-resolution RGBA target, 2 MiB at 512^2. */
+/* The sky occlusion's targets (pass_env_sky_occlusion.c), made the first
+ * time a frame needs them: a full-resolution RGBA and RG target, 3 MiB at
+ * 512^2 (fp16). */
 int hfs_gles_skyocc_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                            hfs_error *err);
 /* Frees the transfer targets (1: there were some) or the sky occlusion's:
