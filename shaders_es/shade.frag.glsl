@@ -7,8 +7,10 @@
  *                T_occ (env_transfer.frag, env_slices.frag) dotted with
  *                the sky on its own (hfs_env_occ, times u_occs); clamped
  *                into [-neg, rho/pi H . L_env + neg] (u_env_neg) with H =
- *                the clamped cosine of this texel's normal.  HFS_ENV_OCC:
- *                that dot was taken by the sky occlusion pass (u_socc;
+ *                the clamped cosine of this texel's normal.  HFS_SLICE (the
+ *                exact slice path): the open part is H itself, rho/pi
+ *                H . L_env.  HFS_ENV_OCC: the occluded part's dot was
+ *                taken by the sky occlusion pass (u_socc, u_socclo;
  *                pass_env_sky_occlusion.c), the same bits;
  *   key light q  Lo += rho/pi * Le E_max * f_q, f_q = E_cap ratio / E_max
  *                from key_visibility.frag (one layer per light, (hi, lo));
@@ -52,9 +54,11 @@
 // hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_ALBEDO_MAP 1, HFS_GLOSSY 1, HFS_FP32 1
 // hfs-variant: HFS_ENV 1, HFS_NKEYS 1, HFS_GLOSSY 2
 // hfs-variant: HFS_NKEYS 1, HFS_LOCAL 1, HFS_GLOSSY 2
-// hfs-variant: HFS_ENV 1, HFS_ENV_OCC 1
-// hfs-variant: HFS_ENV 1, HFS_ENV_OCC 1, HFS_NKEYS 1, HFS_FP32 1
-// hfs-variant: HFS_ENV 1, HFS_ENV_OCC 1, HFS_ENV_MAP 1, HFS_NKEYS 2, HFS_LOCAL 1
+// hfs-variant: HFS_ENV 1, HFS_SLICE 1
+// hfs-variant: HFS_ENV 1, HFS_SLICE 1, HFS_NKEYS 1, HFS_GLOSSY 1
+// hfs-variant: HFS_ENV 1, HFS_SLICE 1, HFS_ENV_OCC 1
+// hfs-variant: HFS_ENV 1, HFS_SLICE 1, HFS_ENV_OCC 1, HFS_NKEYS 1, HFS_FP32 1
+// hfs-variant: HFS_ENV 1, HFS_SLICE 1, HFS_ENV_OCC 1, HFS_ENV_MAP 1, HFS_NKEYS 2, HFS_LOCAL 1
 // hfs-variant: HFS_ENV 1, HFS_ENV_MAP 1
 // hfs-variant: HFS_ENV 1, HFS_ENV_MAP 2, HFS_NKEYS 1
 // hfs-variant: HFS_ENV 1, HFS_ENV_MAP 2, HFS_GLOSSY 1, HFS_FP32 1
@@ -292,10 +296,15 @@ void main()
     {
         vec4 H[4];
         hfs_sh_cosine(n, H);
-        vec4 T[4];                       /* the open part, then (glossy) all of T */
+        /* T's open part, then (glossy) all of T.  On the exact slice path
+         * (HFS_SLICE) the open part is H(N) itself: the diffuse term takes
+         * H . L, which the clamp needs anyway. */
+        vec4 T[4];
+#if !defined(HFS_SLICE) || defined(HFS_GLOSSY)
         hfs_sh_basis(n, T);
         for (int g = 0; g < 4; ++g)
             T[g] *= u_topen[g];
+#endif
         vec3 occ;                        /* the occluded light, <= 0 */
 #if HFS_ENV_MAP == 2
         occ = u_emap.w * texelFetch(u_mocc, p, 0).rgb;
@@ -328,7 +337,7 @@ void main()
              * interval holds the exact value, and sub-sampling (V of other
              * normals) or fp16 storage can step outside it. */
             float open = u_misc.x * hfs_sh_dot(H, L) + dmap[c];
-#if HFS_ENV_MAP == 2
+#if HFS_ENV_MAP == 2 || defined(HFS_SLICE)
             float v = open + occ[c];
 #else
             float v = u_misc.x * hfs_sh_dot(T, L) + dmap[c] + occ[c];

@@ -220,7 +220,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
                                 .n_local = fr->n_local, .fp32 = g->caps.fp32,
                                 .albedo_map = fr->albedo != NULL, .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0,
                                 .env_map = fr->has_env ? fr->env_map : 0,
-                                .env_occ = fr->env_fold,
+                                .env_occ = fr->env_fold, .slice = fr->has_env && fr->slice,
                                 .gloss_map = fr->has_env && fr->gloss_map};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_SHADE, &v, &prog, err);
