@@ -525,7 +525,14 @@ HFS_API int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out);
 /* Forget results cached from earlier frames (GLES: the pyramid, normals and
  * environment visibility are reused while the terrain and settings do not
  * change) and which heights were found finite; the next frame recomputes
- * and checks everything.  For benchmarks. */
+ * and checks everything.  For benchmarks.
+ * What a GLES renderer keeps of the environment follows how it is used,
+ * and invalidating keeps that choice: while the sky (the SH environment,
+ * its rotation and tint) stays the same from frame to frame, each texel's
+ * occluded sky light (12 bytes a texel at fp16); from the first frame whose
+ * sky differs from the last one's, the sky's transfer (32 bytes a texel),
+ * so that every later turn or tint costs the shading alone.  Both give the
+ * same image, bit for bit. */
 HFS_API void hfs_renderer_invalidate(hfs_renderer *r);
 
 /* What the last frame ran and what it skipped, and why (the GLES renderer's
