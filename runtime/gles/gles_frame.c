@@ -72,8 +72,8 @@ static int fit_resources(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
 }
 
 /* Whether the frame's SH sky is shaded from the sky occlusion (T_occ
- * dotted with the sky per texel, 1 target) rather than a kept transfer (4
- * targets, 16 values a texel): on the slice path, for the SH sky's own
+ * dotted with the sky per texel: 3 values as fp16 pairs, 12 bytes) rather
+ * than a kept transfer (16 values in 4 RGBA targets, 32): on the slice path, for the SH sky's own
  * occlusion (not env-shade = map's), when nothing else reads T (a glossy
  * lobe, bounces capped at the grid's horizons), and until the sky turns.
  * A sky turned or re-tinted between two frames says a knob moves it: from

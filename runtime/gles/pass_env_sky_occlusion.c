@@ -3,8 +3,9 @@
  * resolution, for a frame whose sky is not being turned (DESIGN.md "The
  * sky occlusion"): the slice path's exact slices as the transfer finds
  * them (env_slices.frag HFS_ENV_DOT), their T_occ dotted with the sky in
- * the shader, into one target of 3 values a texel instead of the
- * transfer's 16 in 4 (8 MiB at 512^2 kept for a turn that never comes).
+ * the shader: 3 values a texel as fp16 (hi, lo) pairs in an RGBA and an
+ * RG target, instead of the transfer's 16 in 4 RGBA ones (3 MiB instead
+ * of 8 at 512^2, kept for a turn that never comes).
  * Unlike the transfer it depends on the sky (its rotation and tint), so a
  * renderer whose sky turns keeps the transfer instead from then on
  * (gles_frame.c env_fold): the two give the shading the same bits.
