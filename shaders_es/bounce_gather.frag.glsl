@@ -88,7 +88,7 @@ precision highp sampler2DArray;
 
 float hfs_h(vec2 t);
 float hfs_hdiff(vec2 a, vec2 b);
-vec3 hfs_normal(vec4 t);
+vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
 ivec2 hfs_receiver(ivec2 size, int sub);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
@@ -102,7 +102,8 @@ float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, 
 #endif
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
-uniform highp sampler2D u_normals;       /* full resolution */
+uniform highp sampler2D u_height;        /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform highp sampler2D u_rad;           /* Lo_{b-1}, full resolution, LINEAR */
 #ifdef HFS_SLICE
 uniform highp sampler2DArray u_hor;      /* grid horizons, tan(x / 2), 4 a layer (HFS_PAIRS:
@@ -434,7 +435,7 @@ float skipped_occluded(ivec2 g, vec3 n, vec4 ns, vec4 fine, vec2 h0)
 void main()
 {
     ivec2 g = hfs_receiver(u_size, u_sub);
-    vec3 n = hfs_normal(texelFetch(u_normals, g, 0));
+    vec3 n = hfs_normal_at(u_height, g, u_size, u_zf);
     vec2 hx[HFS_NLAYERS];
     vec4 fine = u_scale[HFS_NLEV - 1];
 #ifdef HFS_NEAR

@@ -84,7 +84,7 @@ precision highp sampler2D;
 precision highp sampler2DArray;
 
 float hfs_h(vec2 t);
-vec3 hfs_normal(vec4 t);
+vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
 ivec2 hfs_receiver(ivec2 size, int sub);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
@@ -101,7 +101,8 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
                    vec3 s, inout vec4 V[4]);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
-uniform highp sampler2D u_normals;       /* full resolution, texelFetch */
+uniform highp sampler2D u_height;        /* the input heights (hi, lo): normals, the gap search */
+uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 #ifdef HFS_TABLES
 uniform highp sampler2DArray u_tab;      /* interior table, 4 layers (k/4) */
 #endif
@@ -133,10 +134,8 @@ float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[H
                      ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
                      float tie, vec2 h0, float best, float stop, inout float dist,
                      inout int fetches);
-uniform highp sampler2D u_height;        /* the input heights (hi, lo) */
 uniform highp sampler2D u_bounds;
 uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
-uniform float u_zf;
 uniform float u_gap_from;
 /* After an edit of the heights (runtime/gles/edit_frame.c): u_edit 1 draws
  * only the texels whose search can end differently and leaves the others
@@ -458,10 +457,10 @@ void main()
 void main()
 {
     ivec2 g = hfs_receiver(u_size, u_sub);
-    vec3 n = hfs_normal(texelFetch(u_normals, g, 0));
+    vec3 n = hfs_normal_at(u_height, g, u_size, u_zf);
     vec2 hx[HFS_NLAYERS];
     hfs_receiver_heights(u_levels, g, hx);
-    int fetches = 1 + HFS_NLAYERS;
+    int fetches = 4 + HFS_NLAYERS; /* the normal's 4 heights, the receiver's layers */
 #ifdef HFS_SLICE
     write_horizons(g, n, hx, fetches);
 #else

@@ -78,7 +78,7 @@ precision highp int;
 precision highp sampler2D;
 precision highp sampler2DArray;
 
-vec3 hfs_normal(vec4 t);
+vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
 vec4 hfs_f16v(vec4 v);
 void hfs_env_occ(vec4 t[4], vec4 l[12], out vec4 a, out vec2 b);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
@@ -88,7 +88,8 @@ float hfs_hdiff(vec2 a, vec2 b);
 float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
-uniform highp sampler2D u_normals;       /* full resolution */
+uniform highp sampler2D u_height;        /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform highp sampler2DArray u_hor;      /* grid horizons, tan(x / 2), 4 a layer, LINEAR */
 uniform ivec2 u_size;                    /* W, H */
 uniform ivec2 u_vsize;                   /* visibility grid size */
@@ -393,7 +394,7 @@ void dir_step(int j, float farj, float fsub[HFS_NSUB], vec3 n, vec4 s0, vec4 s1,
 void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec3 n = hfs_normal(texelFetch(u_normals, p, 0));
+    vec3 n = hfs_normal_at(u_height, p, u_size, u_zf);
     vec2 uv = hfs_grid_uv(p, u_sub, u_size, u_vsize);
     vec4 s0 = vec4(-1e30), s1 = vec4(-1e30);
     float s8 = -1e30;

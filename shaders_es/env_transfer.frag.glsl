@@ -21,13 +21,14 @@ precision highp float;
 precision highp int;
 precision highp sampler2D;
 
-vec3 hfs_normal(vec4 t);
+vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 vec4 hfs_f16v(vec4 v);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 
-uniform highp sampler2D u_normals;       /* full resolution */
+uniform highp sampler2D u_height;        /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform highp sampler2D u_v0;            /* D = V_env - hemisphere, grid, LINEAR */
 uniform highp sampler2D u_v1;
 uniform highp sampler2D u_v2;
@@ -44,7 +45,7 @@ layout(location = 3) out vec4 o_t3;
 void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec3 n = hfs_normal(texelFetch(u_normals, p, 0));
+    vec3 n = hfs_normal_at(u_height, p, u_size, u_zf);
     vec4 H[4];
     hfs_sh_cosine(n, H);
     vec2 uv = hfs_grid_uv(p, u_sub, u_size, u_vsize);

@@ -82,12 +82,26 @@ float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, 
     return mix(mix(r.x, r.y, f.x), mix(r.z, r.w, f.x), f.y);
 }
 
-/* Unit normal from an RGBA texel of terrain_normals.frag: octahedral
- * coordinates (px hi, px lo, py hi, py lo) of the upper hemisphere; nz > 0. */
-vec3 hfs_normal(vec4 t)
+/* The unit normal at texel p of the heights h (RG hi+lo, size W x H):
+ * SPEC's central differences of world z, one-sided at the border, as
+ * runtime/core/field_geom.c hfs_field_normal, its overflow-safe scaling
+ * included (zf = hscale zscale / dx, clamped to 1e30).  Computed where it
+ * is read, from 4 fetches, instead of a full-resolution texture of normals
+ * (2 MiB at 512^2; DESIGN.md "Normals where they are read").  N is
+ * proportional to (-gx, -gy, 1) scaled by 1 / max(1, |gx|, |gy|): every
+ * component in [-1, 1], N_z > 0 even on a wall of slope 1e30. */
+vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf)
 {
-    vec2 o = vec2(t.x + t.y, t.z + t.w);
-    return normalize(vec3(o, max(1.0 - abs(o.x) - abs(o.y), 1e-30)));
+    ivec2 lo = max(p - 1, ivec2(0)), hi = min(p + 1, size - 1);
+    vec2 hx0 = texelFetch(h, ivec2(lo.x, p.y), 0).xy;
+    vec2 hx1 = texelFetch(h, ivec2(hi.x, p.y), 0).xy;
+    vec2 hy0 = texelFetch(h, ivec2(p.x, lo.y), 0).xy;
+    vec2 hy1 = texelFetch(h, ivec2(p.x, hi.y), 0).xy;
+    vec2 span = vec2(max(hi - lo, ivec2(1)));
+    float gx = hfs_hdiff(hx1, hx0) * zf / span.x;
+    float gy = hfs_hdiff(hy1, hy0) * zf / span.y;
+    float m = max(1.0, max(abs(gx), abs(gy)));
+    return normalize(vec3(-gx / m, -gy / m, 1.0 / m));
 }
 
 /* ---- sample offsets (DESIGN.md "Horizons", float-sized snapping) --------- */

@@ -59,7 +59,7 @@ precision highp int;
 precision highp sampler2D;
 precision highp sampler2DArray;
 
-vec3 hfs_normal(vec4 t);
+vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
 vec2 hfs_split(float v);
 float hfs_half_nearest(float v);
 ivec2 hfs_receiver(ivec2 size, int sub);
@@ -80,7 +80,6 @@ float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds, ivec
                      inout int fetches);
 
 uniform highp sampler2DArray u_levels;
-uniform highp sampler2D u_normals;
 uniform ivec2 u_size;
 uniform int u_sub;
 uniform int u_dir0;                      /* first direction of this pass */
@@ -223,10 +222,10 @@ float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
 void main()
 {
     ivec2 g = hfs_receiver(u_size, u_sub);
-    vec3 n = hfs_normal(texelFetch(u_normals, g, 0));
+    vec3 n = hfs_normal_at(u_height, g, u_size, u_zf);
     vec2 hx[HFS_NLAYERS];
     hfs_receiver_heights(u_levels, g, hx);
-    int fetches = 1 + HFS_NLAYERS;
+    int fetches = 4 + HFS_NLAYERS; /* the normal's 4 heights, the receiver's layers */
 
     vec4 res[HFS_NOUT];
     for (int q = 0; q < HFS_NOUT; ++q)

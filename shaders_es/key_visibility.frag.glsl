@@ -39,7 +39,7 @@ precision highp int;
 precision highp sampler2D;
 precision highp sampler2DArray;
 
-vec3 hfs_normal(vec4 t);
+vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
 vec4 hfs_visible(float omega, vec4 win, vec4 occ_top);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
@@ -62,7 +62,7 @@ float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds, ivec
                      float tie, vec2 h0, float best, float stop, inout float dist,
                      inout int fetches);
 
-uniform highp sampler2D u_normals;       /* full resolution */
+uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform highp sampler2DArray u_keyhz;    /* key horizons (hi, lo, D, 0), a direction a layer */
 uniform highp sampler2D u_height;        /* normalized heights (hi, lo), full resolution, LINEAR */
 #ifdef HFS_TABLES
@@ -424,7 +424,7 @@ void main()
     vec2 zp = texelFetch(u_height, p, 0).xy;
     if (u_edit != 0 && !edit_reaches(p, zp))
         discard;
-    vec3 n = hfs_normal(texelFetch(u_normals, p, 0));
+    vec3 n = hfs_normal_at(u_height, p, u_size, u_zf);
     vec4 H[4];
     hfs_sh_cosine(n, H);
     ivec2 nb[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
@@ -434,7 +434,7 @@ void main()
                       ? u_rise * hfs_hdiff(texelFetch(u_height, q, 0).xy, zp)
                       : -1e30;
     }
-    g_fetches = 6;
+    g_fetches = 9; /* its height, the normal's 4 heights, the 4 neighbours' */
     float f = clamp(key_factor(u_kb, n, H, grid_cell(p, zp), p, zp) / u_emax, 0.0, 1.0);
 #ifdef HFS_COUNT
     o_f = vec4(float(g_fetches % 1024), float(g_fetches / 1024), 0.0, 1.0);

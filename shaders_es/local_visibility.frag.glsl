@@ -69,7 +69,7 @@ precision highp sampler2DArray;
 
 float hfs_h(vec2 t);
 vec2 hfs_split(float v);
-vec3 hfs_normal(vec4 t);
+vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
 ivec2 hfs_receiver(ivec2 size, int sub);
 vec4 hfs_nlp_occ(float sigma);
 vec4 hfs_visible(float omega, vec4 win, vec4 occ_top);
@@ -91,7 +91,8 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
                    vec3 s, inout vec4 V[4]);
 
 uniform highp sampler2DArray u_levels;
-uniform highp sampler2D u_normals;
+uniform highp sampler2D u_height;        /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform ivec2 u_size;
 uniform int u_sub;
 uniform int u_light0;                    /* first light of this draw */
@@ -429,9 +430,9 @@ float local_ratio(ivec2 p, vec3 n, vec4 Hn[4], vec3 pw, int q)
 void main()
 {
     ivec2 p = hfs_receiver(u_size, u_sub);
-    vec3 n = hfs_normal(texelFetch(u_normals, p, 0));
+    vec3 n = hfs_normal_at(u_height, p, u_size, u_zf);
     hfs_receiver_heights(u_levels, p, g_hx);
-    g_fetches = 1 + HFS_NLAYERS;
+    g_fetches = 4 + HFS_NLAYERS; /* the normal's 4 heights, the receiver's layers */
     float z = u_lg.w * (u_lg.y + u_lg.z * hfs_h(g_hx[HFS_NLAYERS - 1]));
     vec3 pw = vec3(vec2(p) * u_lg.x, z + 1e-4 * u_lg.x);
 

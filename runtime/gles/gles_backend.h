@@ -278,8 +278,12 @@ int hfs_gles_select_caps(hfs_gles *g, const hfs_quality *q, hfs_error *err);
  * line naming `what`). */
 int hfs_gles_begin_outside(hfs_gles *g, const hfs_field *f, const hfs_quality *q,
                            hfs_gles_layout *L, const char *what, hfs_error *err);
-/* Binds the textures every grid pass reads (levels, normals) and the
- * per-scale constants, and sets the grid uniforms. */
+/* Binds what hfs_normal_at reads (gles_lib.frag): the heights (u_height)
+ * and their slope factor u_zf. */
+int hfs_gles_bind_normals(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
+                          hfs_error *err);
+/* Binds the textures every grid pass reads (levels, the heights for the
+ * normals) and the per-scale constants, and sets the grid uniforms. */
 int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
                               const hfs_gles_layout *L, hfs_error *err);
 /* Binds the gap search's heights and bounds textures (u_height, u_bounds;

@@ -27,7 +27,7 @@
 #include "backends.h"
 
 typedef enum hfs_gles_pass_id {
-    HFS_PASS_TERRAIN,        /* pass_terrain.c: heights -> normals, pyramid       */
+    HFS_PASS_TERRAIN,        /* pass_terrain.c: heights -> pyramid, bounds         */
     HFS_PASS_ENV_HORIZONS,   /* pass_env_horizons.c: env SH visibility on the grid */
     HFS_PASS_KEY_HORIZONS,   /* pass_key_horizons.c: key horizons, per key         */
     HFS_PASS_LOCAL_LIGHTS,   /* pass_local_lights.c: local ratios, per local light */

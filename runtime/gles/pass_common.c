@@ -60,13 +60,24 @@ int hfs_gles_begin_outside(hfs_gles *g, const hfs_field *f, const hfs_quality *q
     return hfs_gl_caps_check_texture(&g->caps, L->w, L->h, 1, what, err);
 }
 
+int hfs_gles_bind_normals(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
+                          hfs_error *err)
+{
+    const int rc = hfs_gles_program_texture(&g->gl, prog, "u_height", GL_TEXTURE_2D, g->r.input,
+                                             err);
+    const double zf = L->hscale * L->zscale / L->dx;
+    if (!rc)
+        hfs_gles_set_f1(&g->gl, prog, "u_zf", (float)(zf < 1e30 ? zf : 1e30));
+    return rc;
+}
+
 int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
                               const hfs_gles_layout *L, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
     int rc;
     if ((rc = hfs_gles_program_texture(gl, prog, "u_levels", GL_TEXTURE_2D_ARRAY, g->r.arr, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, g->r.normals, err)))
+        (rc = hfs_gles_bind_normals(g, prog, L, err)))
         return rc;
     hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
     hfs_gles_set_i1(gl, prog, "u_sub", L->sub);

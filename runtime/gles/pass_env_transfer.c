@@ -61,12 +61,13 @@ int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_gles_slices_ou
 
 double hfs_gles_env_slices_fetches(const hfs_gles *g, const hfs_gles_frame *fr)
 {
-    /* Per texel: normal, a horizon layer per 4 directions, and with the
-     * near scale its own height and 9 neighbours; split horizons: a far
-     * texel per 2 sub-directions and the 4 far receivers' heights. */
+    /* Per texel: the normal's 4 heights, a horizon layer per 4 directions,
+     * and with the near scale its own height and 9 neighbours; split
+     * horizons: a far texel per 2 sub-directions and the 4 far receivers'
+     * heights. */
     const double per_layer = fr->hor_pairs ? 2.0 : 4.0;
     const double far = fr->split.on ? ceil(g->env_vis_n * fr->split.k / 2.0) + 4.0 : 0.0;
-    return 1.0 + ceil(g->env_vis_n / per_layer) + 10.0 * fr->env_near + far;
+    return 4.0 + ceil(g->env_vis_n / per_layer) + 10.0 * fr->env_near + far;
 }
 
 /* The slice path: env_slices.frag from the grid's horizons. */
@@ -94,7 +95,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_TRANSFER, &v, &prog, err);
     if (rc ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, g->r.normals, err)))
+        (rc = hfs_gles_bind_normals(g, prog, L, err)))
         return rc;
     for (int i = 0; i < 4; ++i) {
         char name[16]; /* room for any int, as the optimiser checks */
@@ -107,7 +108,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     hfs_gles_set_i1(gl, prog, "u_sub", L->sub);
     hfs_gles_draw(gl, g->r.transfer_fbo, L->w, L->h);
     gl->UseProgram(0);
-    hfs_gles_stage_fetches(g, HFS_PASS_ENV_TRANSFER, 0, (double)L->w * L->h * 5);
+    hfs_gles_stage_fetches(g, HFS_PASS_ENV_TRANSFER, 0, (double)L->w * L->h * 8);
     return hfs_gl_check(gl, "backend gles: transfer pass", err);
 }
 

@@ -30,9 +30,8 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
     int rc;
-    if ((rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, g->r.normals, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_keyhz", GL_TEXTURE_2D_ARRAY, g->r.keyhz, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, g->r.input, err)))
+    if ((rc = hfs_gles_bind_normals(g, prog, L, err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_keyhz", GL_TEXTURE_2D_ARRAY, g->r.keyhz, err)))
         return rc;
     if (fr->tables &&
         ((rc = hfs_gles_program_texture(gl, prog, "u_ktab", GL_TEXTURE_2D_ARRAY, g->wedge.keys,

@@ -156,7 +156,7 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     const hfs_gl *gl = &g->gl;
     const hfs_gles_resources *r = &g->r;
     int rc;
-    if ((rc = hfs_gles_program_texture(gl, prog, "u_normals", GL_TEXTURE_2D, r->normals, err)))
+    if ((rc = hfs_gles_bind_normals(g, prog, &fr->L, err)))
         return rc;
     if (fr->env_fold && /* the sky occlusion, not T_occ */
         ((rc = hfs_gles_program_texture(gl, prog, "u_socc", GL_TEXTURE_2D, r->skyocc[0], err)) ||
@@ -236,7 +236,8 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     const int t_occ = fr->env_fold ? 2 : (fr->env_map == 2 && !fr->gloss.on ? 0 : 4);
     const int env_fetches = !fr->has_env ? 0
                             : t_occ + (fr->env_map > 0) + (fr->env_map == 2) + fr->gloss_map;
-    double fetches = (double)L->w * L->h * (1 + env_fetches + fr->n_keys + (fr->albedo != NULL));
+    /* the normal's 4 heights (hfs_normal_at) */
+    double fetches = (double)L->w * L->h * (4 + env_fetches + fr->n_keys + (fr->albedo != NULL));
     if (local) /* the texel's height, one ratio layer per two lights */
         fetches += (double)L->w * L->h * (1 + (fr->n_local + 1) / 2);
     if (fr->gloss.on && fr->gloss.at_eye) /* the texel's height for its view vector */

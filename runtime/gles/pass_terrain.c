@@ -1,9 +1,8 @@
 /*
  * pass_terrain.c — the terrain pass: the heights uploaded as fp16 hi+lo
  * pairs (layout.h) into the input texture and the last layer of the level
- * array, with the gap search's bounds (bounds_texture.h); normals at full resolution (terrain_normals.frag, octahedral RGBA
- * hi/lo); the pyramid decimated from level N-2 down to lmin
- * (terrain_decimate.frag, bilinear) and reconstructed to the full grid
+ * array, with the gap search's bounds (bounds_texture.h); the pyramid
+ * decimated from level N-2 down to lmin (terrain_decimate.frag, bilinear) and reconstructed to the full grid
  * (terrain_reconstruct.frag: a B-spline, x passes then y passes with
  * HFS_GLES_RECON_MRT levels per draw).  Kept while the terrain and the
  * settings it reads do not change.
@@ -91,27 +90,6 @@ static int upload(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     return rc ? rc : hfs_gl_check(gl, "backend gles: upload", err);
 }
 
-static int normals(hfs_gles *g, const hfs_gles_layout *L, const hfs_tiles *region,
-                   hfs_error *err)
-{
-    const hfs_gl *gl = &g->gl;
-    const hfs_gles_variant v = {.fp32 = g->caps.fp32};
-    const hfs_gles_program *prog;
-    int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_TERRAIN_NORMALS, &v, &prog, err);
-    if (rc)
-        return rc;
-    hfs_gles_stage_begin(g, HFS_PASS_TERRAIN, 1);
-    if ((rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, g->r.input, err)))
-        return rc;
-    hfs_gles_set_i2(gl, prog, "u_size", L->w, L->h);
-    const double zf = L->hscale * L->zscale / L->dx;
-    hfs_gles_set_f1(gl, prog, "u_zfactor", (float)(zf < 1e30 ? zf : 1e30));
-    hfs_gles_edit_draw(g, g->r.normals_fbo, L->w, L->h, 1, region);
-    hfs_gles_stage_end(g, HFS_PASS_TERRAIN, 1);
-    hfs_gles_stage_fetches(g, HFS_PASS_TERRAIN, 1, 4.0 * L->w * L->h);
-    return HFS_OK;
-}
-
 static int decimate(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
@@ -120,7 +98,7 @@ static int decimate(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_TERRAIN_DECIMATE, &v, &prog, err);
     if (rc)
         return rc;
-    hfs_gles_stage_begin(g, HFS_PASS_TERRAIN, 2);
+    hfs_gles_stage_begin(g, HFS_PASS_TERRAIN, 1);
     double fetches = 0.0;
     for (int l = L->n_levels - 2; l >= L->lmin; --l) {
         const GLuint src = l == L->n_levels - 2 ? g->r.input : g->r.lev[l + 1];
@@ -130,8 +108,8 @@ static int decimate(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
         hfs_gles_draw(gl, g->r.lev_fbo[l], L->lw[l], L->lh[l]);
         fetches += (double)L->lw[l] * L->lh[l];
     }
-    hfs_gles_stage_end(g, HFS_PASS_TERRAIN, 2);
-    hfs_gles_stage_fetches(g, HFS_PASS_TERRAIN, 2, fetches);
+    hfs_gles_stage_end(g, HFS_PASS_TERRAIN, 1);
+    hfs_gles_stage_fetches(g, HFS_PASS_TERRAIN, 1, fetches);
     return HFS_OK;
 }
 
@@ -177,7 +155,7 @@ static int reconstruct(hfs_gles *g, const hfs_gles_layout *L, const hfs_tiles *r
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_TERRAIN_RECONSTRUCT, &v, &prog, err);
     if (rc)
         return rc;
-    hfs_gles_stage_begin(g, HFS_PASS_TERRAIN, 3);
+    hfs_gles_stage_begin(g, HFS_PASS_TERRAIN, 2);
     /* x passes, one per level (the results differ in height)... */
     hfs_gles_set_i1(gl, prog, "u_axis", 0);
     double fetches = 0.0;
@@ -192,8 +170,8 @@ static int reconstruct(hfs_gles *g, const hfs_gles_layout *L, const hfs_tiles *r
     /* ... then the y passes. */
     if ((rc = reconstruct_y(g, L, region, err)))
         return rc;
-    hfs_gles_stage_end(g, HFS_PASS_TERRAIN, 3);
-    hfs_gles_stage_fetches(g, HFS_PASS_TERRAIN, 3, fetches);
+    hfs_gles_stage_end(g, HFS_PASS_TERRAIN, 2);
+    hfs_gles_stage_fetches(g, HFS_PASS_TERRAIN, 2, fetches);
     gl->UseProgram(0);
     return hfs_gl_check(gl, "backend gles: pyramid", err);
 }
@@ -203,7 +181,7 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
     (void)which;
     g->terrain_valid = 0;
     int rc;
-    if ((rc = upload(g, fr, err)) || (rc = normals(g, &fr->L, fr->edit ? &g->edit.normals : NULL, err)) ||
+    if ((rc = upload(g, fr, err)) ||
         (rc = hfs_gles_pyramid_build_ensure(&g->r, &g->gl, &g->caps, &fr->L, err)) ||
         (rc = decimate(g, &fr->L, err)) ||
         (rc = reconstruct(g, &fr->L, fr->edit ? hfs_gles_edit_levels(g, fr) : NULL, err)))
@@ -220,6 +198,6 @@ const hfs_gles_pass hfs_pass_terrain = {
     .scope = HFS_SCOPE_FRAME,
     .reads = {"terrain"},
     .writes = {"pyramid"},
-    .stages = {"upload", "normals", "decimate", "reconstruct"},
+    .stages = {"upload", "decimate", "reconstruct"},
     .run = run,
 };

@@ -148,8 +148,6 @@ void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
         fbo_delete(gl, &r->arr_mrt_fbo[i]);
     }
     hfs_gles_tex_delete(gl, &r->arr);
-    hfs_gles_tex_delete(gl, &r->normals);
-    fbo_delete(gl, &r->normals_fbo);
     hfs_gles_tex_delete(gl, &r->out[0]);
     hfs_gles_tex_delete(gl, &r->out[1]);
     fbo_delete(gl, &r->out_fbo);
@@ -227,7 +225,8 @@ static int pyramid_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_c
     return HFS_OK;
 }
 
-/* Full-resolution targets: normals, output (hi, lo), transfer vectors. */
+/* Full-resolution targets: the output (hi, lo); the normals are computed
+ * where they are read (hfs_normal_at), not kept. */
 static int terrain_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                          const hfs_gles_layout *L, hfs_error *err)
 {
@@ -236,10 +235,6 @@ static int terrain_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_c
     r->w = L->w, r->h = L->h, r->n_levels = L->n_levels, r->lmin = L->lmin;
     r->n_layers = L->n_layers, r->fp32 = c->fp32;
     if ((rc = pyramid_alloc(r, gl, c, L, err)))
-        return rc;
-    r->normals = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
-    r->bytes += (size_t)w * h * c->bytes_rgba;
-    if ((rc = hfs_gles_fbo_new(gl, &r->normals_fbo, 1, &r->normals, NULL, "normals", err)))
         return rc;
     r->out[0] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);
     r->out[1] = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, w, h, 1, 0);

@@ -3,7 +3,7 @@
  * pass writes and later passes read, allocated to the frame's sizes and
  * kept while they fit.
  *
- * Terrain-sized resources (pyramid levels, normals, transfer vectors, key
+ * Terrain-sized resources (pyramid levels, transfer vectors, key
  * factors, output) follow the field size, level layout and precision;
  * grid-sized ones (environment visibility, key horizons, local ratios) also
  * follow the sub-sampling, without touching the terrain's.  Each group
@@ -31,7 +31,6 @@ typedef struct hfs_gles_resources {
     GLuint half[HFS_GLES_MAX_LEVELS], half_fbo[HFS_GLES_MAX_LEVELS];    /* W x lh: x pass */
     GLuint arr, arr_fbo[HFS_GLES_MAX_LEVELS];   /* reconstructed levels, one layer each */
     GLuint arr_mrt_fbo[HFS_GLES_MAX_LEVELS];    /* layers 4g..4g+3 as 4 targets */
-    GLuint normals, normals_fbo;
     GLuint venv[4], venv_fbo;                   /* SH visibility on the grid */
     GLuint hor, hor_fbo;                        /* slice path: horizons, 4 directions a layer */
     int hor_layers;
