@@ -139,11 +139,10 @@ void stress_fp16_bound(const stress_scene *sc, double umax, stress_fp16_terms *t
     }
     const double slope = 0.5 * (zmax - zmin) * f->zscale / f->dx;
     const double dh = fmin(PI / 2, 2.0 * U_PAIR * slope); /* |dw| from heights */
-    /* Normals come from the same heights (hfs_normal_at where they are
-     * read, uploaded heights: 2^-24 each): a one-sided difference's slope
-     * is off by 2^-23 S, the normal's direction by as much; plus float's
-     * own rounding of the normal, a few 2^-22 (a bound kept from when they
-     * were stored as octahedral pairs). */
+    /* Normals come from the same heights (hfs_normal_at, heights 2^-24
+     * each): a one-sided difference's slope is off by 2^-23 S, the normal's
+     * direction by as much; plus float's rounding, a few 2^-22 (the bound
+     * of the stored octahedral pairs they once were). */
     const double dn = fmin(PI / 2, 0.5 * U_PAIR * slope + 4.0 * U_PAIR);
 
     /* Environment: V - hemisphere(N) is stored as one fp16 per coefficient,

@@ -60,14 +60,22 @@ int hfs_gles_begin_outside(hfs_gles *g, const hfs_field *f, const hfs_quality *q
     return hfs_gl_caps_check_texture(&g->caps, L->w, L->h, 1, what, err);
 }
 
+/* u_zf: a normalized height difference a texel apart as a world slope,
+ * hscale zscale / dx, clamped to 1e30 (the normals and the gap search). */
+static void set_slope_factor(const hfs_gl *gl, const hfs_gles_program *prog,
+                             const hfs_gles_layout *L)
+{
+    const double zf = L->hscale * L->zscale / L->dx;
+    hfs_gles_set_f1(gl, prog, "u_zf", (float)(zf < 1e30 ? zf : 1e30));
+}
+
 int hfs_gles_bind_normals(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
                           hfs_error *err)
 {
     const int rc = hfs_gles_program_texture(&g->gl, prog, "u_height", GL_TEXTURE_2D, g->r.input,
                                              err);
-    const double zf = L->hscale * L->zscale / L->dx;
     if (!rc)
-        hfs_gles_set_f1(&g->gl, prog, "u_zf", (float)(zf < 1e30 ? zf : 1e30));
+        set_slope_factor(&g->gl, prog, L);
     return rc;
 }
 
@@ -98,8 +106,7 @@ int hfs_gles_bind_ray(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_
     const GLint loc = gl->GetUniformLocation(prog->name, "u_rb_at");
     if (loc >= 0)
         gl->Uniform2iv(loc, HFS_RAY_BOUND_MAX_LEVELS, at);
-    const double zf = L->hscale * L->zscale / L->dx;
-    hfs_gles_set_f1(gl, prog, "u_zf", (float)(zf < 1e30 ? zf : 1e30));
+    set_slope_factor(gl, prog, L);
     return HFS_OK;
 }
 
