@@ -88,7 +88,7 @@ precision highp sampler2DArray;
 
 float hfs_h(vec2 t);
 float hfs_hdiff(vec2 a, vec2 b);
-vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
+vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
 ivec2 hfs_receiver(ivec2 size, int sub);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
@@ -102,7 +102,7 @@ float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, 
 #endif
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
-uniform highp sampler2D u_height;        /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals (hfs_normal_at) */
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform highp sampler2D u_rad;           /* Lo_{b-1}, full resolution, LINEAR */
 #ifdef HFS_SLICE

@@ -84,7 +84,7 @@ precision highp sampler2D;
 precision highp sampler2DArray;
 
 float hfs_h(vec2 t);
-vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
+vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
 ivec2 hfs_receiver(ivec2 size, int sub);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
@@ -101,7 +101,7 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
                    vec3 s, inout vec4 V[4]);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
-uniform highp sampler2D u_height;        /* the input heights (hi, lo): normals, the gap search */
+uniform highp sampler2DArray u_height;   /* the input heights (hi, lo): normals, the gap search */
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 #ifdef HFS_TABLES
 uniform highp sampler2DArray u_tab;      /* interior table, 4 layers (k/4) */
@@ -130,10 +130,9 @@ uniform int u_fcols;                     /* tiles a row of the atlas */
  * pyramid's atlas, its levels' corners, the slope per normalized height
  * and texel, and far-from. */
 #define HFS_RAY_LEVELS 16
-float hfs_gap_search(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
-                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
-                     float tie, vec2 h0, float best, float stop, inout float dist,
-                     inout int fetches);
+float hfs_gap_search(highp sampler2DArray heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf, float tie,
+                     vec2 h0, float best, float stop, inout float dist, inout int fetches);
 uniform highp sampler2D u_bounds;
 uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
 uniform float u_gap_from;

@@ -78,7 +78,7 @@ precision highp int;
 precision highp sampler2D;
 precision highp sampler2DArray;
 
-vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
+vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
 vec4 hfs_f16v(vec4 v);
 void hfs_env_occ(vec4 t[4], vec4 l[12], out vec4 a, out vec2 b);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
@@ -88,7 +88,7 @@ float hfs_hdiff(vec2 a, vec2 b);
 float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
-uniform highp sampler2D u_height;        /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals (hfs_normal_at) */
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform highp sampler2DArray u_hor;      /* grid horizons, tan(x / 2), 4 a layer, LINEAR */
 uniform ivec2 u_size;                    /* W, H */

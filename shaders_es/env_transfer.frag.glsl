@@ -21,13 +21,13 @@ precision highp float;
 precision highp int;
 precision highp sampler2D;
 
-vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
+vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 vec4 hfs_f16v(vec4 v);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 
-uniform highp sampler2D u_height;        /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals (hfs_normal_at) */
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform highp sampler2D u_v0;            /* D = V_env - hemisphere, grid, LINEAR */
 uniform highp sampler2D u_v1;

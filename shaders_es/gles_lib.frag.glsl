@@ -82,6 +82,24 @@ float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, 
     return mix(mix(r.x, r.y, f.x), mix(r.z, r.w, f.x), f.y);
 }
 
+/* The heights' layer of the level array (its last: the finest level, R_{N-1};
+ * DESIGN.md "Heights"), set with the array wherever a pass reads heights as
+ * u_height (pass_common.c hfs_gles_bind_ray, hfs_gles_bind_normals; 0 for
+ * the GIS horizons' own one-layer array). */
+uniform highp int u_hlayer;
+
+/* The normalized height (hi, lo) at texel p. */
+vec2 hfs_height_at(highp sampler2DArray h, ivec2 p)
+{
+    return texelFetch(h, ivec3(p, u_hlayer), 0).xy;
+}
+
+/* ... read bilinearly at uv, texel position p (hfs_pair_tex4_layer_at). */
+vec2 hfs_height_bilinear(highp sampler2DArray h, vec2 uv, ivec2 size, vec2 p)
+{
+    return hfs_pair_tex4_layer_at(h, vec3(uv, float(u_hlayer)), size, p).xy;
+}
+
 /* The unit normal at texel p of the heights h (RG hi+lo, size W x H):
  * SPEC's central differences of world z, one-sided at the border, as
  * runtime/core/field_geom.c hfs_field_normal, its overflow-safe scaling
@@ -90,13 +108,13 @@ float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, 
  * (2 MiB at 512^2; DESIGN.md "Normals where they are read").  N is
  * proportional to (-gx, -gy, 1) scaled by 1 / max(1, |gx|, |gy|): every
  * component in [-1, 1], N_z > 0 even on a wall of slope 1e30. */
-vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf)
+vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf)
 {
     ivec2 lo = max(p - 1, ivec2(0)), hi = min(p + 1, size - 1);
-    vec2 hx0 = texelFetch(h, ivec2(lo.x, p.y), 0).xy;
-    vec2 hx1 = texelFetch(h, ivec2(hi.x, p.y), 0).xy;
-    vec2 hy0 = texelFetch(h, ivec2(p.x, lo.y), 0).xy;
-    vec2 hy1 = texelFetch(h, ivec2(p.x, hi.y), 0).xy;
+    vec2 hx0 = hfs_height_at(h, ivec2(lo.x, p.y));
+    vec2 hx1 = hfs_height_at(h, ivec2(hi.x, p.y));
+    vec2 hy0 = hfs_height_at(h, ivec2(p.x, lo.y));
+    vec2 hy1 = hfs_height_at(h, ivec2(p.x, hi.y));
     vec2 span = vec2(max(hi - lo, ivec2(1)));
     float gx = hfs_hdiff(hx1, hx0) * zf / span.x;
     float gy = hfs_hdiff(hy1, hy0) * zf / span.y;

@@ -22,6 +22,7 @@ precision highp sampler2D;
 float hfs_h(vec2 t);
 float hfs_hdiff(vec2 a, vec2 b);
 bool hfs_scale_takes_over(float sl, float ref, float tie);
+vec2 hfs_height_at(highp sampler2DArray h, ivec2 p);
 
 /* ---- the gap search (runtime/core/ray_bound.h hfs_ray_bound_search) ----- */
 
@@ -97,7 +98,7 @@ float hfs_ray_crossing_from(float y, int nq, vec3 c, int v0)
  * needs reads (2-3 a segment where segments run on): a SIMD device that
  * runs a loop body for its slowest lane then reads no more (issue 37:
  * a read per row of each column cost llvmpipe twice the time). */
-void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a0, float a1)
+void hfs_ray_segment(highp sampler2DArray heights, inout hfs_ray R, int m, float a0, float a1)
 {
     bool lone = !(a1 > 0.0);
     float fm = float(m);
@@ -127,7 +128,7 @@ void hfs_ray_segment(highp sampler2D heights, inout hfs_ray R, int m, float a0, 
         bool near = i < miss;
         int k = near ? k0 + i : i - miss;
         int u = near ? u0 : u1, v = min(v_lo + k, R.nq - 1);
-        float h = hfs_hdiff(texelFetch(heights, R.xm ? ivec2(u, v) : ivec2(v, u), 0).xy, R.h0);
+        float h = hfs_hdiff(hfs_height_at(heights, R.xm ? ivec2(u, v) : ivec2(v, u)), R.h0);
         if (near)
             c0[k] = h;
         else
@@ -261,7 +262,7 @@ float hfs_ray_end(hfs_ray R, ivec2 size, float t_last)
 #else
 /* Crossing m alone (the crossings' search): one pair of heights, the
  * minor axis' linear interpolation (ray_bound.c crossing). */
-void hfs_ray_crossing(highp sampler2D heights, inout hfs_ray R, int m)
+void hfs_ray_crossing(highp sampler2DArray heights, inout hfs_ray R, int m)
 {
     float y = clamp(float(R.q) + float(m) * R.r, 0.0, float(R.nq - 1));
     int y0 = min(int(floor(y)), max(R.nq - 2, 0));
@@ -269,8 +270,8 @@ void hfs_ray_crossing(highp sampler2D heights, inout hfs_ray R, int m)
     int x = R.p + R.step * m;
     ivec2 ia = R.xm ? ivec2(x, y0) : ivec2(y0, x);
     ivec2 ib = R.nq >= 2 ? ia + (R.xm ? ivec2(0, 1) : ivec2(1, 0)) : ia;
-    vec2 a = texelFetch(heights, ia, 0).xy;
-    vec2 b = texelFetch(heights, ib, 0).xy;
+    vec2 a = hfs_height_at(heights, ia);
+    vec2 b = hfs_height_at(heights, ib);
     R.fetches += 2;
     float t = float(m) * R.inv;
     hfs_ray_take(R, (hfs_hdiff(a, R.h0) + f * hfs_hdiff(b, a)) * R.zf / t, t);
@@ -291,10 +292,9 @@ void hfs_ray_crossing(highp sampler2D heights, inout hfs_ray R, int m)
  * hfs_ray_bound_search_cells; the key lights and the GIS horizons).  (A second walk from the
  * crossings' max, to solve only the cells that can beat it, was no faster
  * on llvmpipe: it reads more.) */
-float HFS_GAP_SEARCH(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
-                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
-                     float tie, vec2 h0, float best, float stop, inout float dist,
-                     inout int fetches)
+float HFS_GAP_SEARCH(highp sampler2DArray heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
+                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf, float tie,
+                     vec2 h0, float best, float stop, inout float dist, inout int fetches)
 {
     hfs_ray R = hfs_ray_make(size, g, cs, zf, tie, h0, best, dist, fetches);
     int last = hfs_ray_last(R, size, t_last);

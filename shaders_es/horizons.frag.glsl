@@ -21,14 +21,15 @@ precision highp sampler2D;
 
 vec2 hfs_split(float v);
 float hfs_hdiff(vec2 a, vec2 b);
+vec2 hfs_height_at(highp sampler2DArray h, ivec2 p);
 #define HFS_RAY_LEVELS 16
 /* gles_ray.frag, compiled with HFS_CELLS 1 (runtime/gles/horizons.c) */
-float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds,
+float hfs_gap_search_cells(highp sampler2DArray heights, highp sampler2D bounds,
                            ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
                            float t_last, float zf, float tie, vec2 h0, float best, float stop,
                            inout float dist, inout int fetches);
 
-uniform highp sampler2D u_height;        /* normalized heights (hi, lo) */
+uniform highp sampler2DArray u_height;   /* normalized heights (hi, lo) */
 uniform highp sampler2D u_bounds;        /* the max pyramid's atlas */
 uniform ivec2 u_rb_at[HFS_RAY_LEVELS];   /* level l's corner in the atlas */
 uniform ivec2 u_size;                    /* W, H */
@@ -50,8 +51,8 @@ float near_slope(ivec2 p, vec2 cs, vec2 h0)
     ivec2 q = p + ivec2(sign(cs));
     if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_size)))
         return -1e30;
-    float ax = hfs_hdiff(texelFetch(u_height, ivec2(q.x, p.y), 0).xy, h0) * abs(cs.x);
-    float ay = hfs_hdiff(texelFetch(u_height, ivec2(p.x, q.y), 0).xy, h0) * abs(cs.y);
+    float ax = hfs_hdiff(hfs_height_at(u_height, ivec2(q.x, p.y)), h0) * abs(cs.x);
+    float ay = hfs_hdiff(hfs_height_at(u_height, ivec2(p.x, q.y)), h0) * abs(cs.y);
     return (ax + ay) * u_zf;
 }
 
@@ -72,8 +73,8 @@ float exit_slope(ivec2 p, vec2 cs, vec2 h0)
         return -1e30;
     int a = min(int(floor(pm)), np - 2);
     float fr = pm - float(a);
-    vec2 za = texelFetch(u_height, xm ? ivec2(a, e) : ivec2(e, a), 0).xy;
-    vec2 zb = texelFetch(u_height, xm ? ivec2(a + 1, e) : ivec2(e, a + 1), 0).xy;
+    vec2 za = hfs_height_at(u_height, xm ? ivec2(a, e) : ivec2(e, a));
+    vec2 zb = hfs_height_at(u_height, xm ? ivec2(a + 1, e) : ivec2(e, a + 1));
     return (hfs_hdiff(za, h0) + fr * hfs_hdiff(zb, za)) * u_zf / t;
 }
 
@@ -87,10 +88,10 @@ float end_slope(ivec2 p, vec2 cs, vec2 h0)
         return -1e30;
     ivec2 c = min(ivec2(floor(e)), u_size - 2);
     vec2 f = e - vec2(c);
-    float d00 = hfs_hdiff(texelFetch(u_height, c, 0).xy, h0);
-    float d10 = hfs_hdiff(texelFetch(u_height, c + ivec2(1, 0), 0).xy, h0);
-    float d01 = hfs_hdiff(texelFetch(u_height, c + ivec2(0, 1), 0).xy, h0);
-    float d11 = hfs_hdiff(texelFetch(u_height, c + ivec2(1, 1), 0).xy, h0);
+    float d00 = hfs_hdiff(hfs_height_at(u_height, c), h0);
+    float d10 = hfs_hdiff(hfs_height_at(u_height, c + ivec2(1, 0)), h0);
+    float d01 = hfs_hdiff(hfs_height_at(u_height, c + ivec2(0, 1)), h0);
+    float d11 = hfs_hdiff(hfs_height_at(u_height, c + ivec2(1, 1)), h0);
     float d = mix(mix(d00, d10, f.x), mix(d01, d11, f.x), f.y);
     return d * u_zf / u_reach;
 }
@@ -112,7 +113,7 @@ float horizon(ivec2 p, vec2 cs, vec2 h0)
 void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec2 h0 = texelFetch(u_height, p, 0).xy;
+    vec2 h0 = hfs_height_at(u_height, p);
     float a = horizon(p, u_cs.xy, h0), b = u_pair != 0 ? horizon(p, u_cs.zw, h0) : a;
     o_h = vec4(hfs_split(a), hfs_split(b));
 }

@@ -59,7 +59,7 @@ precision highp int;
 precision highp sampler2D;
 precision highp sampler2DArray;
 
-vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
+vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
 vec2 hfs_split(float v);
 float hfs_half_nearest(float v);
 ivec2 hfs_receiver(ivec2 size, int sub);
@@ -74,10 +74,10 @@ bool hfs_scale_takes_over(float sl, float ref, float tie);
 float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs, vec4 sc,
                        vec2 h, int n, float k, float best, inout float dist, inout int fetches);
 #define HFS_RAY_LEVELS 16
-float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
-                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
-                     float tie, vec2 h0, float best, float stop, inout float dist,
-                     inout int fetches);
+float hfs_gap_search_cells(highp sampler2DArray heights, highp sampler2D bounds,
+                           ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
+                           float t_last, float zf, float tie, vec2 h0, float best, float stop,
+                           inout float dist, inout int fetches);
 
 uniform highp sampler2DArray u_levels;
 uniform ivec2 u_size;
@@ -92,7 +92,7 @@ uniform float u_tie;                     /* hfs_horizon_tie_slope */
  * max pyramid's atlas, its levels' corners, the slope per normalized
  * height and texel (hscale zscale / dx), and where the search starts
  * (where the grid's scales start: the near ones are the texels'). */
-uniform highp sampler2D u_height;        /* the input heights (hi, lo) */
+uniform highp sampler2DArray u_height;   /* the input heights (hi, lo) */
 uniform highp sampler2D u_bounds;
 uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
 uniform float u_zf;

@@ -39,7 +39,7 @@ precision highp int;
 precision highp sampler2D;
 precision highp sampler2DArray;
 
-vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
+vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
 vec4 hfs_visible(float omega, vec4 win, vec4 occ_top);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
@@ -48,7 +48,8 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
                    vec3 s, inout vec4 V[4]);
 float hfs_cap_irradiance(float cos_beta, float alpha);
 vec2 hfs_split(float v);
-vec4 hfs_pair_tex4_at(highp sampler2D t, vec2 uv, ivec2 size, vec2 p);
+vec2 hfs_height_bilinear(highp sampler2DArray h, vec2 uv, ivec2 size, vec2 p);
+vec2 hfs_height_at(highp sampler2DArray h, ivec2 p);
 float hfs_h(vec2 t);
 float hfs_hdiff(vec2 a, vec2 b);
 bool hfs_ray_box(vec2 p, vec2 cs, vec4 box, float t_max, out vec2 t);
@@ -57,14 +58,14 @@ void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
 float hfs_refine_factor(int q, int n, float k);
 #define HFS_RAY_LEVELS 16
-float hfs_gap_search_cells(highp sampler2D heights, highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS],
-                     ivec2 size, ivec2 g, vec2 cs, float t_first, float t_last, float zf,
-                     float tie, vec2 h0, float best, float stop, inout float dist,
-                     inout int fetches);
+float hfs_gap_search_cells(highp sampler2DArray heights, highp sampler2D bounds,
+                           ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
+                           float t_last, float zf, float tie, vec2 h0, float best, float stop,
+                           inout float dist, inout int fetches);
 
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform highp sampler2DArray u_keyhz;    /* key horizons (hi, lo, D, 0), a direction a layer */
-uniform highp sampler2D u_height;        /* normalized heights (hi, lo), full resolution, LINEAR */
+uniform highp sampler2DArray u_height;   /* normalized heights (hi, lo), full resolution, LINEAR */
 #ifdef HFS_TABLES
 uniform highp sampler2DArray u_ktab;     /* interior tables, 4 layers per set */
 uniform highp sampler2DArray u_ktabb;    /* boundary tables (n x 1), 4 per set */
@@ -142,7 +143,7 @@ float near_slope(ivec2 p, vec2 cs, float d, vec2 zp)
     vec2 o;
     if (!hfs_scale_offset(p, u_size, d, cs, o))
         return -1e30;
-    vec2 t = hfs_pair_tex4_at(u_height, (vec2(p) + 0.5 + o) / vec2(u_size), u_size, vec2(p) + o).xy;
+    vec2 t = hfs_height_bilinear(u_height, (vec2(p) + 0.5 + o) / vec2(u_size), u_size, vec2(p) + o);
     ++g_fetches;
     return u_rise * hfs_hdiff(t, zp) / d;
 }
@@ -226,7 +227,7 @@ Cell grid_cell(ivec2 p, vec2 zp)
          * end: 4 fetches a texel saved, issue 37) */
         c.rz[k] = 0.0;
         if (u_sub > 1 && u_whole == 0) {
-            c.rz[k] = u_rise * hfs_hdiff(texelFetch(u_height, g, 0).xy, zp);
+            c.rz[k] = u_rise * hfs_hdiff(hfs_height_at(u_height, g), zp);
             ++g_fetches;
         }
     }
@@ -421,7 +422,7 @@ bool edit_reaches(ivec2 p, vec2 zp)
 void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec2 zp = texelFetch(u_height, p, 0).xy;
+    vec2 zp = hfs_height_at(u_height, p);
     if (u_edit != 0 && !edit_reaches(p, zp))
         discard;
     vec3 n = hfs_normal_at(u_height, p, u_size, u_zf);
@@ -431,7 +432,7 @@ void main()
     for (int k = 0; k < 4; ++k) {
         ivec2 q = p + nb[k];
         g_ns[k] = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, u_size))
-                      ? u_rise * hfs_hdiff(texelFetch(u_height, q, 0).xy, zp)
+                      ? u_rise * hfs_hdiff(hfs_height_at(u_height, q), zp)
                       : -1e30;
     }
     g_fetches = 9; /* its height, the normal's 4 heights, the 4 neighbours' */

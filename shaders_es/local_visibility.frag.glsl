@@ -69,7 +69,7 @@ precision highp sampler2DArray;
 
 float hfs_h(vec2 t);
 vec2 hfs_split(float v);
-vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
+vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
 ivec2 hfs_receiver(ivec2 size, int sub);
 vec4 hfs_nlp_occ(float sigma);
 vec4 hfs_visible(float omega, vec4 win, vec4 occ_top);
@@ -91,7 +91,7 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
                    vec3 s, inout vec4 V[4]);
 
 uniform highp sampler2DArray u_levels;
-uniform highp sampler2D u_height;        /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals (hfs_normal_at) */
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform ivec2 u_size;
 uniform int u_sub;

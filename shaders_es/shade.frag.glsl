@@ -74,7 +74,7 @@ precision highp int;
 precision highp sampler2D;
 precision highp sampler2DArray;
 
-vec3 hfs_normal_at(highp sampler2D h, ivec2 p, ivec2 size, float zf);
+vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
 void hfs_env_occ(vec4 t[4], vec4 l[12], out vec4 a, out vec2 b);
@@ -85,7 +85,7 @@ vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 
-uniform highp sampler2D u_height;        /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals (hfs_normal_at) */
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 #ifdef HFS_ENV_OCC
 uniform highp sampler2D u_socc;          /* hfs_env_occ(T_occ, u_envo): (hi, lo_r), */

@@ -20,7 +20,8 @@ precision highp float;
 precision highp int;
 precision highp sampler2D;
 
-uniform highp sampler2D u_height;       /* normalized heights, W x H */
+uniform highp sampler2DArray u_height;  /* the level array: normalized heights, W x H */
+uniform highp int u_hlayer;             /* its layer of the heights (gles_lib.frag) */
 uniform int u_skirt;                    /* 1: the side walls, 0: the surface */
 
 layout(std140) uniform HfsView {
@@ -52,7 +53,7 @@ void main()
                               : ivec2(gl_InstanceID == 2 ? 0 : last.x, k);
         bottom = (gl_VertexID & 1) == 1;
     }
-    vec2 h = texelFetch(u_height, p, 0).rg;
+    vec2 h = texelFetch(u_height, ivec3(p, u_hlayer), 0).rg;
     float z = bottom ? u_fwd.w : u_zmap.y + u_zmap.x * (h.x + h.y);
     vec3 w = vec3(float(p.x) * u_zmap.z, float(p.y) * u_zmap.z, z);
     v_grid = vec2(p);

@@ -278,19 +278,21 @@ int hfs_gles_select_caps(hfs_gles *g, const hfs_quality *q, hfs_error *err);
  * line naming `what`). */
 int hfs_gles_begin_outside(hfs_gles *g, const hfs_field *f, const hfs_quality *q,
                            hfs_gles_layout *L, const char *what, hfs_error *err);
-/* Binds what hfs_normal_at reads (gles_lib.frag): the heights (u_height)
- * and their slope factor u_zf. */
+/* Binds what hfs_normal_at reads (gles_lib.frag): the heights (u_height:
+ * the level array, its layer u_hlayer the last) and their slope factor
+ * u_zf. */
 int hfs_gles_bind_normals(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
                           hfs_error *err);
 /* Binds the textures every grid pass reads (levels, the heights for the
  * normals) and the per-scale constants, and sets the grid uniforms. */
 int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
                               const hfs_gles_layout *L, hfs_error *err);
-/* Binds the gap search's heights and bounds textures (u_height, u_bounds;
- * bounds_texture.h) and sets its atlas offsets u_rb_at and slope factor
- * u_zf: for a program outside the frame (horizons.c) as for the frame's. */
+/* Binds the gap search's heights and bounds textures (u_height: layer
+ * `layer` of the array texture `heights`; u_bounds: bounds_texture.h) and
+ * sets the layer u_hlayer, its atlas offsets u_rb_at and slope factor u_zf:
+ * for a program outside the frame (horizons.c) as for the frame's. */
 int hfs_gles_bind_ray(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_gles_layout *L,
-                      GLuint heights, GLuint bounds, hfs_error *err);
+                      GLuint heights, int layer, GLuint bounds, hfs_error *err);
 /* The same with the frame's heights and bounds (g->r), and the search's
  * start u_gap_from (texels). */
 int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,

@@ -48,7 +48,8 @@ static int begin(hfs_gles *g, const hfs_field *f, const hfs_quality *q, hfs_gles
     if (rc)
         return rc;
     const hfs_gl_caps *c = &g->caps;
-    t->heights = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, L->w, L->h, 1, 0);
+    /* one layer of an array: the gap search reads the frame's level array */
+    t->heights = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rg, L->w, L->h, 1, 0);
     t->bounds = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_r, L->rb.aw, L->rb.ah, 1, 0);
     t->out = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rgba, L->w, L->h, 1, 0);
     if ((rc = hfs_gles_fbo_new(gl, &t->fbo, 1, &t->out, NULL, "horizons", err)))
@@ -61,9 +62,9 @@ static int begin(hfs_gles *g, const hfs_field *f, const hfs_quality *q, hfs_gles
                         L->h);
     hfs_gles_split_heights(L, f, c->fp32, buf, 0);
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    gl->BindTexture(GL_TEXTURE_2D, t->heights);
-    gl->TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, L->w, L->h, GL_RG, c->type_upload, buf);
-    gl->BindTexture(GL_TEXTURE_2D, 0);
+    gl->BindTexture(GL_TEXTURE_2D_ARRAY, t->heights);
+    gl->TexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, L->w, L->h, 1, GL_RG, c->type_upload, buf);
+    gl->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
     if ((rc = hfs_gles_bounds_upload(gl, c, t->bounds, L, f, buf, err)))
         return rc;
     return hfs_gl_check(gl, "horizons: upload", err);
@@ -86,7 +87,7 @@ static int draw_pair(hfs_gles *g, const hfs_gles_layout *L, const horizon_target
     const hfs_gles_variant v = {.fp32 = g->caps.fp32, .cells = 1};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_HORIZONS, &v, &prog, err);
-    if (rc || (rc = hfs_gles_bind_ray(gl, prog, L, t->heights, t->bounds, err)))
+    if (rc || (rc = hfs_gles_bind_ray(gl, prog, L, t->heights, 0, t->bounds, err)))
         return rc;
     const int two = a + 1 < d->n_azimuths;
     double cs[4];

@@ -72,10 +72,12 @@ static void set_slope_factor(const hfs_gl *gl, const hfs_gles_program *prog,
 int hfs_gles_bind_normals(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
                           hfs_error *err)
 {
-    const int rc = hfs_gles_program_texture(&g->gl, prog, "u_height", GL_TEXTURE_2D, g->r.input,
-                                             err);
-    if (!rc)
+    const int rc = hfs_gles_program_texture(&g->gl, prog, "u_height", GL_TEXTURE_2D_ARRAY,
+                                             g->r.arr, err);
+    if (!rc) {
+        hfs_gles_set_i1(&g->gl, prog, "u_hlayer", L->n_layers - 1);
         set_slope_factor(&g->gl, prog, L);
+    }
     return rc;
 }
 
@@ -94,10 +96,10 @@ int hfs_gles_bind_grid_inputs(hfs_gles *g, const hfs_gles_program *prog,
 }
 
 int hfs_gles_bind_ray(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_gles_layout *L,
-                      GLuint heights, GLuint bounds, hfs_error *err)
+                      GLuint heights, int layer, GLuint bounds, hfs_error *err)
 {
     int rc;
-    if ((rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, heights, err)) ||
+    if ((rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D_ARRAY, heights, err)) ||
         (rc = hfs_gles_program_texture(gl, prog, "u_bounds", GL_TEXTURE_2D, bounds, err)))
         return rc;
     GLint at[2 * HFS_RAY_BOUND_MAX_LEVELS] = {0};
@@ -106,6 +108,7 @@ int hfs_gles_bind_ray(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_
     const GLint loc = gl->GetUniformLocation(prog->name, "u_rb_at");
     if (loc >= 0)
         gl->Uniform2iv(loc, HFS_RAY_BOUND_MAX_LEVELS, at);
+    hfs_gles_set_i1(gl, prog, "u_hlayer", layer);
     set_slope_factor(gl, prog, L);
     return HFS_OK;
 }
@@ -113,7 +116,8 @@ int hfs_gles_bind_ray(const hfs_gl *gl, const hfs_gles_program *prog, const hfs_
 int hfs_gles_bind_bounds(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
                          float gap_from, hfs_error *err)
 {
-    const int rc = hfs_gles_bind_ray(&g->gl, prog, L, g->r.input, g->r.bounds, err);
+    const int rc = hfs_gles_bind_ray(&g->gl, prog, L, g->r.arr, L->n_layers - 1, g->r.bounds,
+                                     err);
     if (!rc)
         hfs_gles_set_f1(&g->gl, prog, "u_gap_from", gap_from);
     return rc;

@@ -1,11 +1,12 @@
 /*
  * pass_terrain.c — the terrain pass: the heights uploaded as fp16 hi+lo
- * pairs (layout.h) into the input texture and the last layer of the level
- * array, with the gap search's bounds (bounds_texture.h); the pyramid
- * decimated from level N-2 down to lmin (terrain_decimate.frag, bilinear) and reconstructed to the full grid
- * (terrain_reconstruct.frag: a B-spline, x passes then y passes with
- * HFS_GLES_RECON_MRT levels per draw).  Kept while the terrain and the
- * settings it reads do not change.
+ * pairs (layout.h) into the last layer of the level array (their only
+ * copy: every pass reads them there, u_height / u_hlayer), with the gap
+ * search's bounds (bounds_texture.h); the pyramid decimated from level N-2
+ * down to lmin (terrain_decimate.frag, bilinear) and reconstructed to the
+ * full grid (terrain_reconstruct.frag: a B-spline, x passes then y passes
+ * with HFS_GLES_RECON_MRT levels per draw).  Kept while the terrain and
+ * the settings it reads do not change.
  */
 #include "gles_backend.h"
 
@@ -73,9 +74,6 @@ static int upload(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     hfs_gles_split_heights(L, fr->f, fp32, buf, 0);
     g->stats.height_scale = L->hscale;
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    gl->BindTexture(GL_TEXTURE_2D, g->r.input);
-    gl->TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RG, g->caps.type_upload, buf);
-    gl->BindTexture(GL_TEXTURE_2D, 0);
     gl->BindTexture(GL_TEXTURE_2D_ARRAY, g->r.arr);
     gl->TexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, L->n_layers - 1, w, h, 1, GL_RG,
                       g->caps.type_upload, buf);
@@ -93,16 +91,20 @@ static int upload(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
 static int decimate(hfs_gles *g, const hfs_gles_layout *L, hfs_error *err)
 {
     const hfs_gl *gl = &g->gl;
-    const hfs_gles_variant v = {.fp32 = g->caps.fp32};
-    const hfs_gles_program *prog;
-    int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_TERRAIN_DECIMATE, &v, &prog, err);
-    if (rc)
-        return rc;
     hfs_gles_stage_begin(g, HFS_PASS_TERRAIN, 1);
     double fetches = 0.0;
     for (int l = L->n_levels - 2; l >= L->lmin; --l) {
-        const GLuint src = l == L->n_levels - 2 ? g->r.input : g->r.lev[l + 1];
-        if ((rc = hfs_gles_program_texture(gl, prog, "u_src", GL_TEXTURE_2D, src, err)))
+        /* the first from the heights: the array's last layer (HFS_SRC_LAYERS) */
+        const int first = l == L->n_levels - 2;
+        const hfs_gles_variant v = {.fp32 = g->caps.fp32, .src_layers = first ? L->n_layers : 0};
+        const hfs_gles_program *prog;
+        int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_TERRAIN_DECIMATE, &v, &prog, err);
+        if (!rc)
+            rc = first ? hfs_gles_program_texture(gl, prog, "u_src", GL_TEXTURE_2D_ARRAY, g->r.arr,
+                                                  err)
+                       : hfs_gles_program_texture(gl, prog, "u_src", GL_TEXTURE_2D,
+                                                  g->r.lev[l + 1], err);
+        if (rc)
             return rc;
         hfs_gles_set_i2(gl, prog, "u_dsize", L->lw[l], L->lh[l]);
         hfs_gles_draw(gl, g->r.lev_fbo[l], L->lw[l], L->lh[l]);

@@ -10,7 +10,7 @@
  *          through the look's haze (gles_view.frag);
  *   mesh   view.vert + view.frag: W x H grid points, two triangles a cell
  *          (strips, one instance per row of cells: no vertex or index
- *          buffer), heights from the terrain pass's input texture, the lit
+ *          buffer), heights from the level array's last layer (u_hlayer), the lit
  *          exit radiance (hfs_gles_lit_targets) bilinear at each fragment's
  *          grid position; depth-tested; then the four side walls down to
  *          the field's lowest height (the truth's rays start testing where
@@ -350,7 +350,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double scale, hfs_error *
     GLuint lit[2];
     hfs_gles_lit_targets(g, fr, lit);
     if ((rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_VIEW, &var, &prog, err)) ||
-        (rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D, g->r.input, err)) ||
+        (rc = hfs_gles_program_texture(gl, prog, "u_height", GL_TEXTURE_2D_ARRAY, g->r.arr, err)) ||
         (rc = hfs_gles_program_texture(gl, prog, "u_lit_hi", GL_TEXTURE_2D, lit[0], err)) ||
         (rc = hfs_gles_program_texture(gl, prog, "u_lit_lo", GL_TEXTURE_2D, lit[1], err)))
         return rc;
@@ -358,6 +358,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double scale, hfs_error *
     gl->ClearBufferfv(GL_DEPTH, 0, &far_depth);
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LESS);
+    hfs_gles_set_i1(gl, prog, "u_hlayer", fr->L.n_layers - 1);
     hfs_gles_set_i1(gl, prog, "u_skirt", 0);
     gl->DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 2 * fr->L.w, fr->L.h - 1);
     hfs_gles_set_i1(gl, prog, "u_skirt", 1); /* the four walls, an instance each */

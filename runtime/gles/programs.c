@@ -69,6 +69,7 @@ void hfs_gles_variant_defines(const hfs_gles_variant *v, int pair_fetch, char bu
         {"HFS_PAIRS", v->pairs},       {"HFS_FARK", v->far_k},
         {"HFS_FAR_ATLAS", v->far_atlas}, {"HFS_GLOSS_MAP", v->gloss_map},
         {"HFS_NEAR", v->near},         {"HFS_CELLS", v->cells},
+        {"HFS_SRC_LAYERS", v->src_layers},
         {"HFS_PAIR_FETCH", pair_fetch}};
     _Static_assert(sizeof all / sizeof all[0] <= HFS_GLES_MAX_DEFINES, "defines");
     int n = 0;

@@ -69,6 +69,8 @@ typedef struct hfs_gles_variant {
                        (bounce_gather.frag) and its use (bounce_light.frag)  */
     int cells;      /* HFS_CELLS 1: gles_ray.frag's search of every cell,
                        hfs_gap_search_cells (key lights, GIS horizons)       */
+    int src_layers; /* HFS_SRC_LAYERS N: terrain_decimate.frag reads the level
+                       array of N layers, its last (the heights)             */
 } hfs_gles_variant;
 
 #define HFS_GLES_MAX_PROGRAMS 64
@@ -112,7 +114,7 @@ void hfs_gles_set_f4(const hfs_gl *gl, const hfs_gles_program *p, const char *na
 /* The "#define NAME VALUE" strings of variant v, and HFS_PAIR_FETCH when
  * pair_fetch (the cache's, a property of the driver: gl_probe.h)
  * (NULL-terminated; bufs holds their text).  Exposed for tests. */
-#define HFS_GLES_MAX_DEFINES 32
+#define HFS_GLES_MAX_DEFINES 40
 void hfs_gles_variant_defines(const hfs_gles_variant *v, int pair_fetch, char bufs[][32],
                               const char *defs[HFS_GLES_MAX_DEFINES + 1]);
 

@@ -140,7 +140,6 @@ static void grid_free(hfs_gles_resources *r, const hfs_gl *gl)
 void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl)
 {
     grid_free(r, gl);
-    hfs_gles_tex_delete(gl, &r->input);
     hfs_gles_tex_delete(gl, &r->bounds);
     hfs_gles_pyramid_build_free(r, gl);
     for (int i = 0; i < HFS_GLES_MAX_LEVELS; ++i) {
@@ -197,15 +196,13 @@ void hfs_gles_pyramid_build_free(hfs_gles_resources *r, const hfs_gl *gl)
     r->build_bytes = 0;
 }
 
-/* The pyramid: input, bounds, the layer array and its single- and
+/* The pyramid: bounds, the layer array (the heights its last layer) and its single- and
  * multi-target framebuffers (the build's own targets: hfs_gles_pyramid_build_ensure). */
 static int pyramid_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
                          const hfs_gles_layout *L, hfs_error *err)
 {
     const int w = L->w, h = L->h;
     int rc;
-    r->input = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_rg, w, h, 1, 1);
-    r->bytes += (size_t)w * h * c->bytes_rg;
     r->bounds = hfs_gles_tex_new(gl, GL_TEXTURE_2D, c->fmt_r, L->rb.aw, L->rb.ah, 1, 0);
     r->bytes += (size_t)L->rb.aw * L->rb.ah * c->bytes_r;
     r->arr = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rg, w, h, L->n_layers, 1);

@@ -25,11 +25,11 @@
 typedef struct hfs_gles_resources {
     int valid;
     int w, h, n_levels, lmin, n_layers, vw, vh, fp32;
-    GLuint input;                                                       /* heights, hi+lo */
     GLuint bounds;                        /* the gap search's max pyramid (bounds_texture.h) */
     GLuint lev[HFS_GLES_MAX_LEVELS], lev_fbo[HFS_GLES_MAX_LEVELS];      /* decimated levels */
     GLuint half[HFS_GLES_MAX_LEVELS], half_fbo[HFS_GLES_MAX_LEVELS];    /* W x lh: x pass */
-    GLuint arr, arr_fbo[HFS_GLES_MAX_LEVELS];   /* reconstructed levels, one layer each */
+    GLuint arr, arr_fbo[HFS_GLES_MAX_LEVELS];   /* reconstructed levels, one layer each; the
+                                                   last: the heights (hi, lo), uploaded */
     GLuint arr_mrt_fbo[HFS_GLES_MAX_LEVELS];    /* layers 4g..4g+3 as 4 targets */
     GLuint venv[4], venv_fbo;                   /* SH visibility on the grid */
     GLuint hor, hor_fbo;                        /* slice path: horizons, 4 directions a layer */
