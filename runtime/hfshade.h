@@ -522,7 +522,7 @@ HFS_API int hfs_renderer_set_timing(hfs_renderer *r, int level);
 HFS_API int hfs_renderer_set_timing_finish(hfs_renderer *r, int finish);
 /* Timings of the last frame rendered with timing on (zeroed if none). */
 HFS_API int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out);
-/* Forget results cached from earlier frames (GLES: the pyramid, normals and
+/* Forget results cached from earlier frames (GLES: the pyramid and the
  * environment visibility are reused while the terrain and settings do not
  * change) and which heights were found finite; the next frame recomputes
  * and checks everything.  For benchmarks.
@@ -531,8 +531,13 @@ HFS_API int hfs_renderer_timings(const hfs_renderer *r, hfs_timings *out);
  * its rotation and tint) stays the same from frame to frame, each texel's
  * occluded sky light (12 bytes a texel at fp16); from the first frame whose
  * sky differs from the last one's, the sky's transfer (32 bytes a texel),
- * so that every later turn or tint costs the shading alone.  Both give the
- * same image, bit for bit. */
+ * so that every later turn or tint costs the shading alone.  Until the sky
+ * or an environment map first turns or the heights first change (and
+ * without bounces), it also frees the grid's horizons that product is made
+ * from (3.4 MiB at 512²): that first turn reruns the environment pass
+ * once, that first change of the heights recomputes the frame whole (later
+ * edits cost their own region).  Every choice gives the same image, bit
+ * for bit. */
 HFS_API void hfs_renderer_invalidate(hfs_renderer *r);
 
 /* What the last frame ran and what it skipped, and why (the GLES renderer's

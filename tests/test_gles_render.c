@@ -260,7 +260,12 @@ static double frame_bytes(hfs_renderer *r, const scene *s, const hfs_lighting *l
     return (double)t.texture_bytes;
 }
 
-#define HELD_64 328896 /* mode_memory: measured */
+#define HELD_64 248832 /* mode_memory: measured */
+/* the grid's horizons and far grid at 64², 2x2, 16 directions: 33² receivers x 8
+ * layers (2 directions a layer, each a horizon and its distance) x 8 bytes,
+ * and the far grid, 9² receivers (step 8) x 16 tiles (32 sub-directions, 2 a
+ * tile) x 8 bytes */
+#define GRID_64 (33 * 33 * 8 * 8 + 9 * 9 * 16 * 8)
 static int mode_memory(void)
 {
     scene s;
@@ -291,12 +296,21 @@ static int mode_memory(void)
      * still (with it, 20 bytes a texel more: 459968, 2d49db2), nor normals
      * (computed where they are read; with them, 8 bytes a texel more:
      * 378048, b217fe9), nor a second copy of the heights (4 bytes a texel
-     * more: 345280, ab315dc) */
+     * more: 345280, ab315dc), nor the grid's horizons and far grid once
+     * the sky occlusion is made (GRID_64 more: 328896, 98e33cc) */
     const double held = frame_bytes(b, &s, &both, &q, &x);
     CHECK(held == HELD_64, "the sky + sun frame holds %.0f texture bytes, want %.0f", held,
           (double)HELD_64);
-    printf("memory: key light +%.0f bytes, V_env +%.0f bytes, sky + sun frame %.0f bytes\n", key,
-           venv, held);
+    /* the sky turned: the transfer (20 bytes a texel more than the sky
+     * occlusion), and the grid's horizons made anew and kept from now on */
+    hfs_lighting turned = both;
+    turned.env_rotate += 0.5;
+    const double held_t = frame_bytes(b, &s, &turned, &q, &x);
+    CHECK(held_t == HELD_64 + 20.0 * texels + GRID_64,
+          "the turned frame holds %.0f texture bytes, want %.0f", held_t,
+          HELD_64 + 20.0 * texels + GRID_64);
+    printf("memory: key light +%.0f bytes, V_env +%.0f bytes, sky + sun frame %.0f bytes "
+           "(turned %.0f)\n", key, venv, held, held_t);
     hfs_image_free(&x);
     hfs_image_free(&y);
     hfs_renderer_destroy(a);

@@ -102,11 +102,14 @@ static void one_setting(int sub, hfs_precision prec)
     const size_t kept_t = render(kept, &l, &q, &a, ran, sizeof ran);
     CHECK(has(ran, "transfer") && !has(ran, "sky occlusion"),
           "sub %d %s: the first turn ran '%s'", sub, name, ran);
-    /* 4 RGBA targets instead of an RGBA and an RG one */
+    /* 4 RGBA targets instead of an RGBA and an RG one, and the grid's
+     * horizons, which the sky occlusion's renderer frees after its frames
+     * and a turned one keeps (gles_frame.c grid_release; their bytes are
+     * pinned in test_gles_render.c mode_memory) */
     const size_t more = (size_t)W * H * (4 * rgba - rgba - rgba / 2);
-    CHECK(kept_t == folded + more,
-          "sub %d %s: the transfer holds %zu bytes more than the sky occlusion, want %zu", sub,
-          name, kept_t - folded, more);
+    CHECK(kept_t > folded + more,
+          "sub %d %s: the transfer holds %zu bytes more than the sky occlusion, want %zu and "
+          "the grid's horizons", sub, name, kept_t - folded, more);
     const size_t fresh_b = render(fresh, &l, &q, &b, ran, sizeof ran);
     CHECK(has(ran, "sky occlusion"), "sub %d %s: a new renderer ran '%s'", sub, name, ran);
     CHECK(fresh_b == folded, "sub %d %s: %zu texture bytes, the first frame %zu", sub, name,

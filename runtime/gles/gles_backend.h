@@ -175,6 +175,7 @@ struct hfs_gles {
      * before it only the sky occlusion (gles_frame.c env_fold). */
     double env_seen[3][HFS_SH_N];         /* the last frame's sky */
     int env_seen_valid, env_turned;
+    int heights_edited;                   /* a frame's heights changed (gles_frame.c grid_release) */
     double lit_scale;                     /* out_scale of the last shaded frame */
     hfs_gles_view_state *view;            /* the 3-D view's targets (pass_view.c) */
     int shared;                           /* ctx shares the application's objects */

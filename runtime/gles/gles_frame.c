@@ -175,7 +175,8 @@ static void frame_signature(const hfs_gles_frame *fr, hfs_gles_frame_sig *s)
 static int edit_path(hfs_gles *g, const hfs_gles_frame_sig *sig, int kept)
 {
     g->plan_dry = g->plan;
-    return kept && hfs_gles_plan_frame(&g->plan_dry, sig, NULL) == 0;
+    return kept && !hfs_gles_grid_horizons_freed(&g->r) &&
+           hfs_gles_plan_frame(&g->plan_dry, sig, NULL) == 0;
 }
 
 /* Plans the frame; 0 when no pass needs to run (the kept image holds). */
@@ -184,6 +185,8 @@ static int plan(hfs_gles *g, hfs_gles_frame *fr)
     const char *terrain_why = hfs_gles_terrain_change(g, fr->f, fr->q);
     const char *edit_why =
         terrain_why == hfs_gles_heights_changed ? hfs_gles_edit_begin(g, fr) : NULL;
+    if (terrain_why == hfs_gles_heights_changed)
+        g->heights_edited = 1; /* later edits find the grid's horizons kept */
     if (terrain_why) {
         g->terrain_valid = 0;
         g->extent_valid = 0;
@@ -227,6 +230,42 @@ static int plan(hfs_gles *g, hfs_gles_frame *fr)
     for (int p = 0; p < HFS_PASS_COUNT; ++p)
         fr->run[p] = g->plan.run[p];
     return 1;
+}
+
+/* The grid's horizons and far grid (the slice path's environment
+ * visibility) are read again only when the environment's product is made
+ * anew: by the first turn of the sky or the map, by an edit of the
+ * heights, by bounces.  So after a frame that made the sky occlusion or
+ * the map's occluded light from them, and while this renderer has seen
+ * neither a turn nor an edit, they are freed (3.4 MiB of a 512² frame's
+ * 14.6, issue 37); the planner still holds them valid, and grid_restore
+ * makes them anew the first time a pass reads them.  A renderer that has
+ * seen a turn or an edit keeps them, so that its later turns cost the
+ * shading and its later edits their own region (issue 38). */
+static void grid_release(hfs_gles *g, const hfs_gles_frame *fr)
+{
+    if (fr->slice && fr->has_env && (fr->env_fold || fr->env_map == 2) && fr->bounces == 0 &&
+        !g->env_turned && !g->heights_edited)
+        hfs_gles_grid_horizons_free(&g->r, &g->gl);
+}
+
+/* Before the passes: the grid's horizons, freed after an earlier frame,
+ * made anew and filled again by the environment pass when this frame
+ * reads them (the same values: the pass's inputs have not changed, or the
+ * plan runs it anyway; what read them before need not run again). */
+static void grid_restore(hfs_gles *g, hfs_gles_frame *fr)
+{
+    if (!hfs_gles_grid_horizons_freed(&g->r))
+        return;
+    const int reads = fr->run[HFS_PASS_ENV_HORIZONS][0] || fr->run[HFS_PASS_ENV_TRANSFER][0] ||
+                      fr->run[HFS_PASS_ENV_MAP_SLICES][0] ||
+                      fr->run[HFS_PASS_ENV_SKY_OCCLUSION][0] ||
+                      (fr->run[HFS_PASS_BOUNCE][0] && fr->capped) || g->timing.level >= 2;
+    if (!reads)
+        return;
+    hfs_gles_grid_horizons_remake(&g->r, &g->gl, &g->caps);
+    hfs_gles_plan_force(&g->plan, HFS_PASS_ENV_HORIZONS,
+                        "env visibility made anew (freed after an earlier frame)");
 }
 
 static void mark_cached(hfs_gles *g, const hfs_gles_frame *fr, int p)
@@ -313,6 +352,7 @@ int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
         return HFS_OK; /* plan() copied the kept view */
     }
     g->stats.offset_mismatches = 0;
+    grid_restore(g, fr);
     for (int p = 0; p < HFS_PASS_COUNT; ++p) {
         if (p == HFS_PASS_SHADE && !fr->run[p][0]) {
             /* No shading: the kept image holds (a frame with an image
@@ -331,5 +371,7 @@ int hfs_gles_frame_render(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
         if (p == HFS_PASS_SHADE) /* what the lit targets hold, for later views */
             g->lit_scale = fr->out_scale;
     }
-    return count_fetches(g, fr, err);
+    if (!(rc = count_fetches(g, fr, err)))
+        grid_release(g, fr);
+    return rc;
 }

@@ -314,6 +314,17 @@ int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now, const 
     return gp->n_run;
 }
 
+void hfs_gles_plan_force(hfs_gles_plan *gp, hfs_gles_pass_id p, const char *reason)
+{
+    const int s = gp->pass[p][0];
+    if (s < 0 || gp->run[p][0])
+        return;
+    gp->run[p][0] = 1;
+    gp->steps[s].run = 1;
+    snprintf(gp->steps[s].reason, sizeof gp->steps[s].reason, "%s", reason);
+    ++gp->n_run;
+}
+
 void hfs_gles_plan_done(hfs_gles_plan *gp, hfs_gles_pass_id p, int i)
 {
     hfs_plan_done(&gp->p, gp->pass[p][i]);

@@ -151,6 +151,12 @@ int hfs_gles_plan_init(hfs_gles_plan *gp, hfs_error *err);
 int hfs_gles_plan_frame(hfs_gles_plan *gp, const hfs_gles_frame_sig *now,
                         const char *terrain_why);
 
+/* Pass p (one instance) runs this frame after all, for `reason` (the
+ * report's): its products are kept valid but their storage was freed
+ * (gles_frame.c grid_restore).  What reads them need not follow: the pass
+ * makes the same values from the same inputs. */
+void hfs_gles_plan_force(hfs_gles_plan *gp, hfs_gles_pass_id p, const char *reason);
+
 /* Instance i of pass p ran: its products are valid. */
 void hfs_gles_plan_done(hfs_gles_plan *gp, hfs_gles_pass_id p, int i);
 

@@ -375,6 +375,35 @@ int hfs_gles_resources_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs
     return hfs_gl_check(gl, "backend gles: allocating textures", err);
 }
 
+int hfs_gles_grid_horizons_free(hfs_gles_resources *r, const hfs_gl *gl)
+{
+    const int had = r->hor || r->far;
+    hfs_gles_tex_delete(gl, &r->hor);
+    hfs_gles_tex_delete(gl, &r->far);
+    r->hor_bytes = r->far_bytes = 0;
+    return had;
+}
+
+int hfs_gles_grid_horizons_freed(const hfs_gles_resources *r)
+{
+    return (r->hor_layers > 0 && !r->hor) || (r->far_layers > 0 && !r->far);
+}
+
+void hfs_gles_grid_horizons_remake(hfs_gles_resources *r, const hfs_gl *gl,
+                                   const hfs_gl_caps *c)
+{
+    if (r->hor_layers > 0 && !r->hor) {
+        r->hor = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, r->vw, r->vh,
+                                  r->hor_layers, 1);
+        r->hor_bytes = (size_t)r->vw * r->vh * r->hor_layers * c->bytes_rgba;
+    }
+    if (r->far_layers > 0 && !r->far) {
+        r->far = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, r->far_w, r->far_h,
+                                  r->far_layers, 1);
+        r->far_bytes = (size_t)r->far_w * r->far_h * r->far_layers * c->bytes_rgba;
+    }
+}
+
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r)
 {
     return r->bytes + r->build_bytes + r->transfer_bytes + r->skyocc_bytes + r->venv_bytes +

@@ -89,6 +89,16 @@ int hfs_gles_skyocc_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl
  * a frame keeps one of the two (gles_frame.c). */
 int hfs_gles_transfer_free(hfs_gles_resources *r, const hfs_gl *gl);
 int hfs_gles_skyocc_free(hfs_gles_resources *r, const hfs_gl *gl);
+/* The grid's horizons and the far grid (the slice path's environment
+ * visibility) deleted while their sizes stay: a frame that reads them
+ * again makes them anew (hfs_gles_grid_horizons_remake) and reruns the
+ * pass that fills them (gles_frame.c grid_release, grid_restore; 3.4 MiB
+ * at 512², issue 37).  _free returns 1 when it deleted something;
+ * _freed says whether they are deleted now. */
+int hfs_gles_grid_horizons_free(hfs_gles_resources *r, const hfs_gl *gl);
+int hfs_gles_grid_horizons_freed(const hfs_gles_resources *r);
+void hfs_gles_grid_horizons_remake(hfs_gles_resources *r, const hfs_gl *gl,
+                                   const hfs_gl_caps *c);
 /* Deletes everything; the generations move on. */
 void hfs_gles_resources_free(hfs_gles_resources *r, const hfs_gl *gl);
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r);
