@@ -101,7 +101,7 @@ void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror,
                    vec3 s, inout vec4 V[4]);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
-uniform highp sampler2DArray u_height;   /* the input heights (hi, lo): normals, the gap search */
+uniform highp sampler2DArray u_height;   /* heights (hi, lo), layer u_hlayer: normals, gap search */
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 #ifdef HFS_TABLES
 uniform highp sampler2DArray u_tab;      /* interior table, 4 layers (k/4) */

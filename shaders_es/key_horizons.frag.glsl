@@ -92,7 +92,7 @@ uniform float u_tie;                     /* hfs_horizon_tie_slope */
  * max pyramid's atlas, its levels' corners, the slope per normalized
  * height and texel (hscale zscale / dx), and where the search starts
  * (where the grid's scales start: the near ones are the texels'). */
-uniform highp sampler2DArray u_height;   /* the input heights (hi, lo) */
+uniform highp sampler2DArray u_height;   /* the heights (hi, lo), layer u_hlayer */
 uniform highp sampler2D u_bounds;
 uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
 uniform float u_zf;

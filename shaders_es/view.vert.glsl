@@ -10,7 +10,7 @@
  * truth's rays test the terrain from where they enter the grid, so a ray
  * entering below the surface hits at the edge, and the field looks like a
  * solid block; a wall shows its edge point's radiance all the way down.
- * Heights come from the terrain pass's input texture (normalized, as an
+ * Heights come from the level array's last layer (u_hlayer; normalized, as an
  * fp16 (hi, lo) pair, or fp32 (v, 0)): world z = zscale exaggeration
  * (base + hscale v), folded into u_zmap.  Positions are taken relative to
  * the eye before the projection, so a large dx loses no float precision
