@@ -125,14 +125,14 @@ static double direct_horizons(const bounce_ctx *b, double *omega, int d, int i, 
                               const double n[3], double c, double s, double first_cell,
                               const hfs_cpu_far_place *pl, double top0, slice_sums *ss)
 {
-    const double fl = hfs_horizon_floor(n, c, s);
+    const double fl = hfs_horizon_floor(n, c, s), fls = hfs_horizon_floor_slope(n, c, s);
     hfs_horizon_point(b->plan, d, i, j, fl, NULL, NULL, omega);
     const double e =
         b->far ? hfs_horizon_refined_within(b->plan, d, i, j, omega, 1, fl, b->split.near_refine,
-                                            b->tie, 1, b->n_levels > 1,
+                                            b->tie, &fls, b->n_levels > 1,
                                             hfs_cpu_far_coarsest_near(b->far))
-               : hfs_horizon_refined(b->plan, d, i, j, omega, 1, fl, b->direct_refine, b->tie, 1,
-                                     b->n_levels > 1);
+               : hfs_horizon_refined(b->plan, d, i, j, omega, 1, fl, b->direct_refine, b->tie,
+                                     &fls, b->n_levels > 1);
     const double om = fmax(e, atan(first_cell));
     double fs[HFS_SPLIT_MAX_K] = {-1e30};
     ss->k = b->far ? b->split.k : 1;

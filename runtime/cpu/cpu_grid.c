@@ -122,10 +122,10 @@ static void env_receiver(const render_ctx *c, int x, int y, const double n[3], d
     for (int d = 0; d < job->swath.n; ++d) {
         double cs, sn, env;
         hfs_horizon_plan_dir(job->plan, d, &cs, &sn);
-        const double fl = hfs_horizon_floor(n, cs, sn);
+        const double fl = hfs_horizon_floor(n, cs, sn), fls = hfs_horizon_floor_slope(n, cs, sn);
         hfs_horizon_point(job->plan, d, x, y, fl, &env, NULL, omega);
         om[d] = c->refine > 0 ? hfs_horizon_refined_within(job->plan, d, x, y, omega, 1, fl,
-                                                           c->refine, c->tie, 1, 0, 0)
+                                                           c->refine, c->tie, &fls, 0, 0)
                               : env;
     }
     double hemi[HFS_SH_N];

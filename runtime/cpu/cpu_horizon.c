@@ -119,6 +119,11 @@ double hfs_horizon_floor(const double n[3], double c, double s)
     return atan2(-a, n[2]);
 }
 
+double hfs_horizon_floor_slope(const double n[3], double c, double s)
+{
+    return -(n[0] * c + n[1] * s) / n[2];
+}
+
 /* ---- in-grid ranges and the bilinear read ----------------------------------- */
 
 /* Receivers x in [*lo, *hi] whose sample x + io + fo lies in [0, n-1]. */
@@ -282,24 +287,55 @@ static double refine_about(const hfs_horizon_plan *hp, int dir, int i, int j, in
     return best;
 }
 
+/* The slope of scale s's sample of receiver (i, j) in direction dir, whose
+ * angle is o: tan(o), or, where tan(o) no longer holds the slope to the
+ * horizons' tie (|slope| > 1e9: near +-pi/2 a double angle resolves
+ * 2.2e-16, a relative 2.2e-16 |slope| of the slope; HFS_HORIZON_TIE is
+ * 1e-5), the slope read again as hfs_horizon_point computed it.  The
+ * scales are then told apart on fields of any relief, as the GLES passes
+ * compare slopes (issue 36: at slopes beyond ~1e16 every near-vertical
+ * scale tied, the finest won and the refinement went about the wrong
+ * one; the sky broke the field's scale invariance). */
+static double scale_slope(const hfs_horizon_plan *hp, int dir, int i, int j, int s, double o,
+                          const double *floor_slope)
+{
+    const double sl = tan(o);
+    if (!(fabs(sl) > 1e9))
+        return sl;
+    const hfs_horizon_tap *t = hfs_horizon_plan_taps(hp, dir) + s;
+    int xlo, xhi, ylo, yhi;
+    ingrid_range(t->ix, t->fx, hp->w, &xlo, &xhi);
+    ingrid_range(t->iy, t->fy, hp->h, &ylo, &yhi);
+    if (i < xlo || i > xhi || j < ylo || j > yhi)
+        return floor_slope ? *floor_slope : sl; /* no sample: the floor stands for it */
+    const double *r = hfs_cpu_pyramid_full(hp->p, t->read);
+    const double v = tap_read(r + (size_t)(j + t->iy) * hp->stride + (size_t)(i + t->ix),
+                              hp->stride, t->fx, t->fy);
+    return (v - r[(size_t)j * hp->stride + (size_t)i]) * t->inv_run;
+}
+
 double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
                            const double *omega, size_t stride, double floor, int refine,
-                           double tie, int seeded, int skip)
+                           double tie, const double *seed, int skip)
 {
-    return hfs_horizon_refined_within(hp, dir, i, j, omega, stride, floor, refine, tie, seeded,
+    return hfs_horizon_refined_within(hp, dir, i, j, omega, stride, floor, refine, tie, seed,
                                       skip, 0);
 }
 
 double hfs_horizon_refined_within(const hfs_horizon_plan *hp, int dir, int i, int j,
                                   const double *omega, size_t stride, double floor, int refine,
-                                  double tie, int seeded, int skip, int coarsest)
+                                  double tie, const double *seed, int skip, int coarsest)
 {
     const int n = hp->n_levels - skip;
-    int best_s = seeded ? n - 1 : -1;
-    double best = -HALF_PI, best_slope = seeded ? tan(floor) : 0.0;
+    int best_s = seed ? n - 1 : -1;
+    /* the floor's slope, from the angle where its tan holds it (the same
+     * bits as ever), else the plane's own (issue 36: at slopes ~1e20 the
+     * saturated tan(floor) stood above every scale, and the seed led) */
+    const double tfl = tan(floor);
+    double best = -HALF_PI, best_slope = seed ? (fabs(tfl) > 1e9 ? *seed : tfl) : 0.0;
     for (int s = n - 1; s >= coarsest; --s) { /* fine to coarse; near-ties: the finest */
         const double o = omega[(size_t)s * stride];
-        const double sl = tan(o);
+        const double sl = scale_slope(hp, dir, i, j, s, o, seed);
         if (best_s < 0 || sl > best_slope + HFS_HORIZON_TIE * fabs(best_slope) + tie) {
             best_s = s;
             best_slope = sl;
@@ -326,7 +362,7 @@ int hfs_horizon_occluder(const hfs_horizon_plan *hp, int dir, int i, int j,
         const double o = omega[(size_t)s * stride];
         if (!(o > -HALF_PI))
             break; /* off the grid: so is every farther scale */
-        const double sl = tan(o);
+        const double sl = scale_slope(hp, dir, i, j, s, o, NULL);
         if (sl > ref + HFS_HORIZON_TIE * fabs(ref) + tie) {
             ref = sl;
             bi = s;
@@ -355,7 +391,7 @@ double hfs_horizon_key_grid(const hfs_horizon_plan *hp, int dir, int i, int j,
     *dist = 0.0;
     for (int s = hp->n_levels - 1 - skip; s >= 0; --s) { /* fine to coarse */
         const int in_grid = omega[s] > HFS_HORIZON_OFF;
-        const double sl = in_grid ? tan(omega[s]) : tfl;
+        const double sl = in_grid ? scale_slope(hp, dir, i, j, s, omega[s], NULL) : tfl;
         *seen |= in_grid;
         if (bi < 0 || sl > ref + HFS_HORIZON_TIE * fabs(ref) + tie) {
             ref = sl;

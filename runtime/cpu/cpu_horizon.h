@@ -74,6 +74,10 @@ const hfs_horizon_tap *hfs_horizon_plan_taps(const hfs_horizon_plan *hp, int dir
 
 /* Floor -asin(N . (c, s, 0)) for unit normal n, argument clamped to [-1, 1]. */
 double hfs_horizon_floor(const double n[3], double c, double s);
+/* The same plane's slope, -N.u / N_z: exact at any steepness, where the
+ * angle's tan is not (beyond |slope| ~1e9, a double angle near +-pi/2
+ * resolves too little: hfs_horizon_refined's seed). */
+double hfs_horizon_floor_slope(const double n[3], double c, double s);
 
 /* Horizons of receiver (i, j) along direction dir with the given floor.
  * env (fast path) and key (B-spline max) may each be NULL; omega_levels, if
@@ -101,17 +105,20 @@ double hfs_horizon_env_from_maxd(double maxd, double floor);
  * (off-grid ones skipped); then max(floor, that), clamped to [-pi/2,
  * pi/2].  t*: going fine to coarse, a scale takes over when its slope
  * exceeds the current one's by more than HFS_HORIZON_TIE of it plus tie
- * (absolute; pyramid_layout.h), so near-ties go to the finer; `seeded`
- * (the environment) starts from the floor's slope at the finest scale, so
- * that a scale below the tangent plane never leads (the GLES pass skips
- * what cannot beat it), otherwise (key lights) from the finest scale's own.
+ * (absolute; pyramid_layout.h), so near-ties go to the finer; a `seed`
+ * (the environment: the floor's slope, hfs_horizon_floor_slope) starts
+ * the choice from it at the finest scale, so that a scale below the
+ * tangent plane never leads (the GLES pass skips what cannot beat it);
+ * NULL (key lights) from the finest scale's own.  Slopes beyond 1e9 are
+ * taken from the pyramid and the seed, not from the angles' tan (issue
+ * 36: scale invariance at any relief).
  * The `skip` finest scales are left out (the caller searches them; 0 or 1,
  * and 0 unless the plan has more scales).  Receiver (i, j), direction dir of hp.  Refining finds the peaks the
  * sparse scales miss between them (SN08's B-spline max for key lights
  * smooths over scale and lowers them further). */
 double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
                            const double *omega, size_t stride, double floor, int refine,
-                           double tie, int seeded, int skip);
+                           double tie, const double *seed, int skip);
 
 /* The distance factor 2^(u/k), u = -1 + 2 (q + 1) / (refine + 1), of
  * refining sample q of `refine` (k levels per octave): strictly between
@@ -122,7 +129,7 @@ double hfs_horizon_refine_factor(int q, int refine, int k);
  * part of split horizons, split_horizon.h; coarsest = 0: all). */
 double hfs_horizon_refined_within(const hfs_horizon_plan *hp, int dir, int i, int j,
                                   const double *omega, size_t stride, double floor, int refine,
-                                  double tie, int seeded, int skip, int coarsest);
+                                  double tie, const double *seed, int skip, int coarsest);
 
 /* The gap search (ray_bound.h) of receiver (i, j) in direction dir over
  * the pyramid's input heights: the largest of `best` and the slope of

@@ -133,7 +133,7 @@ static double key_horizon(const render_ctx *c, const hfs_horizon_plan *plan, int
     if (c->refine <= 0)
         return fmax(own, hfs_horizon_bspline_max(levels + i, c->n_levels, (size_t)c->w, floor));
     const double o = hfs_horizon_refined(plan, d, i, j, levels + i, (size_t)c->w, floor,
-                                         c->refine, c->tie, 0, 0);
+                                         c->refine, c->tie, NULL, 0);
     /* and every band between the scales (issue 36: no narrow occluder's
      * long shadow is lost) */
     double dist = 0.0;
@@ -278,12 +278,14 @@ static void trace_row(const render_ctx *c, worker_scratch *s, int j)
             const int own_cell = c->slices.p != NULL;
             const int coarsest = c->far ? hfs_cpu_far_coarsest_near(c->far) : 0;
             const int refine = c->far ? c->split.near_refine : c->refine;
-            for (int i = 0; i < w; ++i)
+            for (int i = 0; i < w; ++i) {
+                const double fls = hfs_horizon_floor_slope(s->normals + 3 * i, cs, sn);
                 om[i] = env_refined
                             ? hfs_horizon_refined_within(job->plan, d, i, j, s->levels + i,
-                                                         (size_t)w, fl[i], refine, c->tie, 1,
+                                                         (size_t)w, fl[i], refine, c->tie, &fls,
                                                          own_cell, coarsest)
                             : hfs_horizon_env_from_maxd(s->maxd[i], fl[i]);
+            }
             if (own_cell)
                 for (int i = 0; i < w; ++i)
                     om[i] = fmax(om[i], atan(hfs_field_first_cell_slope(c->f, i, j, cs, sn)));
