@@ -27,6 +27,7 @@ precision highp sampler2DArray;
 
 float hfs_hdiff(vec2 a, vec2 b);                          /* gles_pairs.frag */
 vec4 hfs_pair_tex4_layer_at(highp sampler2DArray t, vec3 uvl, ivec2 size, vec2 p);
+vec3 hfs_normal_from(vec2 hx0, vec2 hx1, vec2 hy0, vec2 hy1, ivec2 span_i, float zf);
 
 /* Texture coordinate of full-resolution texel p on the visibility grid
  * (vsize receivers, one every sub texels, the last at W-1/H-1): between
@@ -111,11 +112,17 @@ vec2 hfs_height_bilinear(highp sampler2DArray h, vec2 uv, ivec2 size, vec2 p)
 vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf)
 {
     ivec2 lo = max(p - 1, ivec2(0)), hi = min(p + 1, size - 1);
-    vec2 hx0 = hfs_height_at(h, ivec2(lo.x, p.y));
-    vec2 hx1 = hfs_height_at(h, ivec2(hi.x, p.y));
-    vec2 hy0 = hfs_height_at(h, ivec2(p.x, lo.y));
-    vec2 hy1 = hfs_height_at(h, ivec2(p.x, hi.y));
-    vec2 span = vec2(max(hi - lo, ivec2(1)));
+    return hfs_normal_from(hfs_height_at(h, ivec2(lo.x, p.y)), hfs_height_at(h, ivec2(hi.x, p.y)),
+                           hfs_height_at(h, ivec2(p.x, lo.y)), hfs_height_at(h, ivec2(p.x, hi.y)),
+                           hi - lo, zf);
+}
+
+/* The same from the heights already read at (lo.x, p.y), (hi.x, p.y),
+ * (p.x, lo.y), (p.x, hi.y), span = hi - lo (a pass that reads them for
+ * its own use: key_visibility.frag). */
+vec3 hfs_normal_from(vec2 hx0, vec2 hx1, vec2 hy0, vec2 hy1, ivec2 span_i, float zf)
+{
+    vec2 span = vec2(max(span_i, ivec2(1)));
     float gx = hfs_hdiff(hx1, hx0) * zf / span.x;
     float gy = hfs_hdiff(hy1, hy0) * zf / span.y;
     float m = max(1.0, max(abs(gx), abs(gy)));
