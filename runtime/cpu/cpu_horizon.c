@@ -146,6 +146,23 @@ static inline double tap_read(const double *r, size_t stride, double fx, double 
 
 /* ---- evaluation --------------------------------------------------------------- */
 
+/* Tap t's slope seen from receiver (i, j) into *d; 0 (nothing written)
+ * where its sample lies off the grid. */
+static int tap_slope(const hfs_horizon_plan *hp, const hfs_horizon_tap *t, int i, int j,
+                     double *d)
+{
+    int xlo, xhi, ylo, yhi;
+    ingrid_range(t->ix, t->fx, hp->w, &xlo, &xhi);
+    ingrid_range(t->iy, t->fy, hp->h, &ylo, &yhi);
+    if (i < xlo || i > xhi || j < ylo || j > yhi)
+        return 0;
+    const double *r = hfs_cpu_pyramid_full(hp->p, t->read);
+    const double v = tap_read(r + (size_t)(j + t->iy) * hp->stride + (size_t)(i + t->ix),
+                              hp->stride, t->fx, t->fy);
+    *d = (v - r[(size_t)j * hp->stride + (size_t)i]) * t->inv_run;
+    return 1;
+}
+
 void hfs_horizon_point(const hfs_horizon_plan *hp, int dir, int i, int j,
                        double floor, double *env, double *key,
                        double *omega_levels)
@@ -156,17 +173,8 @@ void hfs_horizon_point(const hfs_horizon_plan *hp, int dir, int i, int j,
     double local[128];
     double *omega = omega_levels ? omega_levels : (n <= 128 ? local : NULL);
     for (int s = 0; s < n; ++s) {
-        const hfs_horizon_tap *t = &taps[s];
-        int xlo, xhi, ylo, yhi;
-        ingrid_range(t->ix, t->fx, hp->w, &xlo, &xhi);
-        ingrid_range(t->iy, t->fy, hp->h, &ylo, &yhi);
-        const int in = i >= xlo && i <= xhi && j >= ylo && j <= yhi;
-        double o = floor;
-        if (in) {
-            const double *r = hfs_cpu_pyramid_full(hp->p, t->read);
-            const double v = tap_read(r + (size_t)(j + t->iy) * hp->stride + (size_t)(i + t->ix),
-                                      hp->stride, t->fx, t->fy);
-            const double d = (v - r[(size_t)j * hp->stride + (size_t)i]) * t->inv_run;
+        double o = floor, d;
+        if (tap_slope(hp, &taps[s], i, j, &d)) {
             if (d > maxd)
                 maxd = d;
             o = atan(d);
@@ -300,18 +308,12 @@ static double scale_slope(const hfs_horizon_plan *hp, int dir, int i, int j, int
                           const double *floor_slope)
 {
     const double sl = tan(o);
+    double d;
     if (!(fabs(sl) > 1e9))
         return sl;
-    const hfs_horizon_tap *t = hfs_horizon_plan_taps(hp, dir) + s;
-    int xlo, xhi, ylo, yhi;
-    ingrid_range(t->ix, t->fx, hp->w, &xlo, &xhi);
-    ingrid_range(t->iy, t->fy, hp->h, &ylo, &yhi);
-    if (i < xlo || i > xhi || j < ylo || j > yhi)
+    if (!tap_slope(hp, hfs_horizon_plan_taps(hp, dir) + s, i, j, &d))
         return floor_slope ? *floor_slope : sl; /* no sample: the floor stands for it */
-    const double *r = hfs_cpu_pyramid_full(hp->p, t->read);
-    const double v = tap_read(r + (size_t)(j + t->iy) * hp->stride + (size_t)(i + t->ix),
-                              hp->stride, t->fx, t->fy);
-    return (v - r[(size_t)j * hp->stride + (size_t)i]) * t->inv_run;
+    return d;
 }
 
 double hfs_horizon_refined(const hfs_horizon_plan *hp, int dir, int i, int j,
