@@ -30,6 +30,9 @@
 #ifndef HFS_TABLE_N
 #define HFS_TABLE_N 257
 #endif
+#ifndef HFS_WEDGE_TOL
+#define HFS_WEDGE_TOL 1e-3 /* gles_ray.frag HFS_RAY_EDGE_TOL: a row this near counts */
+#endif
 #ifndef HFS_HALF_PI
 #define HFS_HALF_PI 1.5707963267948966
 #endif
@@ -58,6 +61,7 @@ void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
 float hfs_refine_factor(int q, int n, float k);
 #define HFS_RAY_LEVELS 16
+int hfs_ray_level(ivec2 lo, ivec2 hi);
 float hfs_gap_search_cells(highp sampler2DArray heights, highp sampler2D bounds,
                            ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
                            float t_last, float zf, float tie, vec2 h0, float best, float stop,
@@ -243,11 +247,12 @@ Cell grid_cell(ivec2 p, vec2 zp)
  * (one that ends up less than u_reach ahead of p, which the near search
  * covers, or a neighbour with no sample on the grid, lends p's floor); the
  * four slopes are blended with the bilinear weights, and p's own near
- * horizon (slope `near`, and its own ray's crossings from u_near_to to
+ * horizon (slope `near`, and its own ray's crossings from t_from, u_near_to
+ * or further where the swath's rays are clear that far (wedge_clear), to
  * u_edge, searched until the slope reaches `stop`) can only raise the
  * result: one atan. */
 float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, float stop,
-                  ivec2 p, vec2 zp)
+                  float t_from, ivec2 p, vec2 zp)
 {
     float own = own_cell_slope(p, cs, zp);
     if (u_sub == 1) {
@@ -275,12 +280,56 @@ float key_horizon(Cell c, vec3 n, vec2 cs, float fl, float layer, float near, fl
     near = max(near, own);
     for (int m = 0; u_near_dir > 0 && m < u_near; ++m)
         near = max(near, near_slope(p, cs, exp2(float(m) / u_lk), zp));
-    if (u_near_dir == 0 && u_edge > u_near_to) {
+    if (u_near_dir == 0 && u_edge > t_from) {
         float dist = 0.0;
-        near = hfs_gap_search_cells(u_height, u_bounds, u_rb_at, u_size, p, cs, u_near_to, u_edge,
+        near = hfs_gap_search_cells(u_height, u_bounds, u_rb_at, u_size, p, cs, t_from, u_edge,
                               u_rise, 0.0, zp, near, stop, dist, g_fetches);
     }
     return max(fl, atan(max(s, near)));
+}
+
+/* How far every direction of the swath is clear (issue 37; DESIGN.md
+ * "Sharp edges on the grid", "the swath's rays at once"): the distance t
+ * such that no direction's ray, from t0 to t, passes over a grid point
+ * (crossing or cell corner) whose slope can beat `best`, the lowest of the
+ * directions' starts; 1e30 where that holds to the field's end.  cr: the
+ * directions' (min cos, max cos, min sin, max sin).  A run of distances
+ * [ta, tb] is bounded by one read of the max pyramid over the box of every
+ * direction's points in it (each ray's stretch is the segment between its
+ * points at ta and tb, so the box of the 4 extreme products bounds all of
+ * them), skipped when its bound cannot beat best, as the gap search skips
+ * runs of crossings: a clear texel then pays one search of about two reads
+ * an octave for all its directions, not one each.  The directions' own
+ * searches start where this one stops, and find exactly what they would
+ * from t0: what lies before it cannot raise their max. */
+float wedge_clear(ivec2 p, vec2 zp, float best, float t0, vec4 cr)
+{
+    float v0 = hfs_h(zp);
+    vec2 fp = vec2(p);
+    ivec2 top = u_size - 1;
+    float t = t0, len = 1.0;
+    for (int i = 0; i < 256; ++i) {
+        float tb = t + len;
+        vec2 lo = fp + vec2(min(t * cr.x, tb * cr.x), min(t * cr.z, tb * cr.z));
+        vec2 hi = fp + vec2(max(t * cr.y, tb * cr.y), max(t * cr.w, tb * cr.w));
+        ivec2 il = ivec2(floor(lo - HFS_WEDGE_TOL)), ih = ivec2(ceil(hi + HFS_WEDGE_TOL));
+        if (any(lessThan(ih, ivec2(0))) || any(greaterThan(il, top)))
+            return 1e30; /* every ray has left the field (a convex one) */
+        il = clamp(il, ivec2(0), top);
+        ih = clamp(ih, ivec2(0), top);
+        int lv = hfs_ray_level(il, ih);
+        ++g_fetches;
+        float rise = texelFetch(u_bounds, u_rb_at[lv] + (il >> lv), 0).x - v0;
+        if (!(rise * u_rise / (rise >= 0.0 ? t : tb) > best)) {
+            t = tb;
+            len *= 2.0;
+        } else if (len > 1.0) {
+            len *= 0.5;
+        } else {
+            return t;
+        }
+    }
+    return t;
 }
 
 /* E_cap * ratio for the key light whose record starts at b. */
@@ -316,6 +365,17 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
 #endif
     float near = near_horizon(p, zp, win_t);
     int dirs = sw + 2, cm = sw + 2 + nd, rot = sw + 2 + 17 * nd;
+    /* the swath's rays searched at once as far as they are clear: each
+     * direction's own search starts there (its start is near or above) */
+    float t_from = u_near_to;
+    if (u_sub > 1 && u_whole != 0 && u_near_dir == 0 && nd > 1 && near < win_t.y) {
+        vec4 cr = vec4(1.0, -1.0, 1.0, -1.0);
+        for (int j = 0; j < nd; ++j) {
+            vec2 cs = KREC(dirs + j).xy;
+            cr = vec4(min(cr.x, cs.x), max(cr.y, cs.x), min(cr.z, cs.y), max(cr.w, cs.y));
+        }
+        t_from = wedge_clear(p, zp, near, u_near_to, cr);
+    }
 #ifdef HFS_TABLES
     vec4 Vk[4], Vo[4];
     for (int g = 0; g < 4; ++g) {
@@ -335,7 +395,8 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
     for (int j = 0; j < nd; ++j) {
         vec4 dj = KREC(dirs + j);
         float fl = atan(-(n.x * dj.x + n.y * dj.y), n.z);
-        float om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), near, win_t.y, p, zp),
+        float om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), near, win_t.y, t_from,
+                                   p, zp),
                        HFS_HALF_PI);
 #ifdef HFS_TABLES
         if (j == 0) {
