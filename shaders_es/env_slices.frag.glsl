@@ -79,6 +79,8 @@ precision highp sampler2D;
 precision highp sampler2DArray;
 
 vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
+vec3 hfs_normal_from(vec2 hx0, vec2 hx1, vec2 hy0, vec2 hy1, ivec2 span_i, float zf);
+vec2 hfs_height_at(highp sampler2DArray h, ivec2 p);
 vec4 hfs_f16v(vec4 v);
 void hfs_env_occ(vec4 t[4], vec4 l[12], out vec4 a, out vec2 b);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
@@ -88,7 +90,7 @@ float hfs_hdiff(vec2 a, vec2 b);
 float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
-uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals, near slopes */
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform highp sampler2DArray u_hor;      /* grid horizons, tan(x / 2), 4 a layer, LINEAR */
 uniform ivec2 u_size;                    /* W, H */
@@ -288,22 +290,30 @@ void contract(Sums S, out vec4 T[4])
 
 /* The slopes to the 3 x 3 neighbours over 1 texel (row-major from
  * (-1, -1)), -1e30 off the field: a sample that needs one never wins,
- * as hfs_scale_offset would skip it. */
-void near_slopes(ivec2 p, out vec4 s0, out vec4 s1, out float s8)
+ * as hfs_scale_offset would skip it; and the normal from the same reads
+ * (hfs_normal_from: its central differences' 4 heights are among them,
+ * clamped to the field as hfs_normal_at clamps them), 9 fetches for both.
+ * The finest scale reads the heights themselves (pyramid_layout.c
+ * hfs_pyramid_read_level: level N-1 reads the input at any offset), so
+ * u_height's layer holds the values u_levels does there. */
+vec3 near_slopes(ivec2 p, out vec4 s0, out vec4 s1, out float s8)
 {
-    vec4 sc = u_scale[HFS_NLEV - 1];
-    int layer = int(sc.z);
-    vec2 h = texelFetch(u_levels, ivec3(p, layer), 0).xy;
+    float rise = u_scale[HFS_NLEV - 1].y;
+    vec2 hq[9];
+    for (int i = 0; i < 9; ++i)
+        hq[i] = hfs_height_at(u_height, clamp(p + ivec2(i % 3 - 1, i / 3 - 1), ivec2(0),
+                                              u_size - 1));
     float s[9];
     for (int i = 0; i < 9; ++i) {
         ivec2 q = p + ivec2(i % 3 - 1, i / 3 - 1);
         bool in_field = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, u_size));
-        s[i] = in_field ? hfs_hdiff(texelFetch(u_levels, ivec3(q, layer), 0).xy, h) * sc.y
-                        : -1e30;
+        s[i] = in_field ? hfs_hdiff(hq[i], hq[4]) * rise : -1e30;
     }
     s0 = vec4(s[0], s[1], s[2], s[3]);
     s1 = vec4(s[4], s[5], s[6], s[7]);
     s8 = s[8];
+    ivec2 lo = max(p - 1, ivec2(0)), hi = min(p + 1, u_size - 1);
+    return hfs_normal_from(hq[3], hq[5], hq[1], hq[7], hi - lo, u_zf);
 }
 
 /* One of the 3 x 3 neighbours' height differences (near_slopes; i
@@ -394,12 +404,10 @@ void dir_step(int j, float farj, float fsub[HFS_NSUB], vec3 n, vec4 s0, vec4 s1,
 void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec3 n = hfs_normal_at(u_height, p, u_size, u_zf);
     vec2 uv = hfs_grid_uv(p, u_sub, u_size, u_vsize);
     vec4 s0 = vec4(-1e30), s1 = vec4(-1e30);
     float s8 = -1e30;
-    if (u_near > 0)
-        near_slopes(p, s0, s1, s8);
+    vec3 n = u_near > 0 ? near_slopes(p, s0, s1, s8) : hfs_normal_at(u_height, p, u_size, u_zf);
     Sums S = Sums(vec4(0.0), vec4(0.0), vec4(0.0), vec3(0.0), vec3(0.0), vec2(0.0), vec2(0.0));
     vec3 occ = vec3(0.0);
     /* Up to HFS_DIR_UNROLLED directions are written out one by one, so

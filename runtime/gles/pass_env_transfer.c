@@ -61,13 +61,13 @@ int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_gles_slices_ou
 
 double hfs_gles_env_slices_fetches(const hfs_gles *g, const hfs_gles_frame *fr)
 {
-    /* Per texel: the normal's 4 heights, a horizon layer per 4 directions,
-     * and with the near scale its own height and 9 neighbours; split
-     * horizons: a far texel per 2 sub-directions and the 4 far receivers'
-     * heights. */
+    /* Per texel: the normal's 4 heights, or with the near scale the 3 x 3
+     * heights about it, which hold the normal's 4 (env_slices.frag
+     * near_slopes); a horizon layer per 4 directions; split horizons: a
+     * far texel per 2 sub-directions and the 4 far receivers' heights. */
     const double per_layer = fr->hor_pairs ? 2.0 : 4.0;
     const double far = fr->split.on ? ceil(g->env_vis_n * fr->split.k / 2.0) + 4.0 : 0.0;
-    return 4.0 + ceil(g->env_vis_n / per_layer) + 10.0 * fr->env_near + far;
+    return (fr->env_near ? 9.0 : 4.0) + ceil(g->env_vis_n / per_layer) + far;
 }
 
 /* The slice path: env_slices.frag from the grid's horizons. */
