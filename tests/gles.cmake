@@ -7,7 +7,8 @@
 #     sub2_/sub4_SCENE       subsample 2/4 against subsample 1 on the GPU
 #                            (fp16, Legendre): grid texels equal, the rest
 #                            within the interpolation error
-#     determinism, cache, flat, memory, errors, variants, steep  (test_gles_render.c)
+#     determinism, cache, flat, memory, variants  (test_gles_render.c)
+#     errors, steep          refusals, extreme relief (test_gles_limits.c)
 #     timing                 the fetch counts (test_gles_fetch.c)
 #     sub*, slice            the visibility grid, the slice path (test_gles_grid.c)
 #   *_es30   MESA_GLES_VERSION_OVERRIDE=3.0 (an ES 3.0 context, as on boards)
@@ -26,9 +27,9 @@ add_library(hfs_test_gles_scenes STATIC ${CMAKE_CURRENT_LIST_DIR}/test_gles_scen
 target_include_directories(hfs_test_gles_scenes PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(hfs_test_gles_scenes PUBLIC hfshade_lib hfshade_io hfs_terrain_gen m)
 
-# Three programs share tests/gles_render_util.h; hfs_gles_test picks the
+# Four programs share tests/gles_render_util.h; hfs_gles_test picks the
 # program by the mode (its first argument).
-foreach(prog test_gles_render test_gles_fetch test_gles_grid)
+foreach(prog test_gles_render test_gles_fetch test_gles_grid test_gles_limits)
   add_executable(${prog} ${CMAKE_CURRENT_LIST_DIR}/${prog}.c)
   target_link_libraries(${prog} PRIVATE hfs_test_gles_scenes)
   target_compile_definitions(${prog} PRIVATE HFS_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
@@ -48,6 +49,8 @@ function(hfs_gles_test name mode)
     set(prog test_gles_fetch)
   elseif(mode STREQUAL "sub" OR mode STREQUAL "slice")
     set(prog test_gles_grid)
+  elseif(mode STREQUAL "errors" OR mode STREQUAL "steep")
+    set(prog test_gles_limits)
   else()
     set(prog test_gles_render)
   endif()

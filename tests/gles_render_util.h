@@ -1,8 +1,8 @@
 /*
  * gles_render_util.h — what the GLES renderer's test programs share
- * (test_gles_render.c, test_gles_fetch.c, test_gles_grid.c): the pinned
- * quality, the renderer on the test's context, rendering and comparing
- * with SPEC's metrics.  Header-only and static, so each program's CHECKs
+ * (test_gles_render.c, test_gles_fetch.c, test_gles_grid.c,
+ * test_gles_limits.c): the pinned quality, the renderer on the test's
+ * context, rendering and comparing with SPEC's metrics.  Header-only and static, so each program's CHECKs
  * count into its own check.h counters (include once per program, after
  * check.h's users' includes).
  */

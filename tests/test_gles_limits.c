@@ -1,0 +1,212 @@
+/*
+ * test_gles_limits.c — the GLES renderer at the edges of what it takes
+ * (label "gl"; split from test_gles_render.c, whose modes are the
+ * renderer against its oracle in the usual ranges).  One executable, one
+ * mode per ctest entry:
+ *
+ *   errors        refusals: local lights on the wedge-table path, an unknown
+ *       profile, fp32 under es30-half, a field beyond the es30 texture size;
+ *       nphi-env beyond the es30 uniform-block size is carried by a texture
+ *       and renders as the uniform-block path does, bit for bit.
+ *   steep         walls of slope ~1e21 (zscale 1e12, dx 1e-9): a key
+ *       light's frame is the CPU's within 1.2x of the measurement, every
+ *       frame is finite, and the CPU reference's sky at subsample 1 does
+ *       not depend on the relief's scale.
+ *
+ * No GLES context of any kind: exit 77 (gl_test.h).  The data directory
+ * comes from HFS_DATA_DIR (compile definition).
+ */
+#include "gles_render_util.h"
+
+#include <stdlib.h>
+
+/* Refusals: one line, the right code, nothing rendered. */
+static int mode_errors(void)
+{
+    scene s;
+    if (scene_make("cones", 32, HFS_DATA_DIR, &s))
+        return 1;
+    /* Strict limits: the ES 3.0 minimums, which every device has. */
+    const hfs_renderer_desc strict = {.backend = HFS_BACKEND_GLES, .context = test_context,
+                                      .gl_strict_limits = 1};
+    hfs_renderer *r = gl_test_renderer(&strict);
+    hfs_lighting l = scene_lighting(1, 0);
+    hfs_quality q = quality("fp16", "legendre", 1);
+    hfs_image img = {0};
+    hfs_error err;
+    if (hfs_image_alloc(&img, 32, 32, &err))
+        return 1;
+
+    /* A swath too long for ES 3.0's 16 KiB uniform blocks (nphi-env 128:
+     * 2 + 17*128 + 258 vec4 = 39 KB) is carried by a texture instead of
+     * refused (issue 13); below it is compared with the uniform-block path. */
+    q.nphi_env = 128;
+    int rc = hfs_renderer_render(r, &s.f, &l, &q, &img, NULL, NULL, &err);
+    printf("nphi-env 128, strict limits: %s\n", rc ? err.msg : "ok (swath in a texture)");
+    CHECK(rc == 0, "nphi-env 128 under es30-half, strict limits: %d %s", rc, err.msg);
+    /* A field wider than ES 3.0's 2048 texels renders in tiles (issue 39,
+     * test_tiled_render.c pins the result); one whose lights see terrain
+     * at any distance (a local light) cannot, and is refused in one line
+     * naming the limit, the size and the way out. */
+    float *wide_z = calloc((size_t)2049 * 4, sizeof *wide_z);
+    const hfs_field wide = {.width = 2049, .height = 4, .z = wide_z, .dx = 1.0, .zscale = 1.0};
+    hfs_image wide_img = {0};
+    if (!wide_z || hfs_image_alloc(&wide_img, 2049, 4, &err))
+        return 1;
+    q.nphi_env = 32;
+    rc = hfs_renderer_render(r, &wide, &l, &q, &wide_img, NULL, NULL, &err);
+    CHECK(rc == 0, "field 2049x4 under es30-half, in tiles: %d %s", rc, err.msg);
+    hfs_lighting lit_locally = l;
+    lit_locally.n_local = 1;
+    lit_locally.local[0] = (hfs_local_light){.pos = {10, 1, 5}, .radius = 0.5,
+                                             .radiance = {100, 100, 100}};
+    rc = hfs_renderer_render(r, &wide, &lit_locally, &q, &wide_img, NULL, NULL, &err);
+    printf("field 2049x4 with a local light, strict limits: %s\n", err.msg);
+    CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "2048") && strstr(err.msg, "2049") &&
+              strstr(err.msg, "the cpu backend"),
+          "field 2049x4 with a local light under es30-half: %d %s", rc, err.msg);
+    CHECK(strchr(err.msg, '\n') == NULL, "message not one line");
+    hfs_image_free(&wide_img);
+    free(wide_z);
+    CHECK(hfs_renderer_render(r, &s.f, &l, &q, &img, NULL, NULL, &err) == 0,
+          "renderer unusable after a refusal: %s", err.msg);
+
+    hfs_renderer_desc d = {.backend = HFS_BACKEND_GLES, .gl_profile = "es29"};
+    hfs_renderer *bad = NULL;
+    rc = hfs_renderer_create(&d, &bad, &err);
+    printf("profile es29: %s\n", err.msg);
+    CHECK(rc == HFS_E_INVALID && bad == NULL && strstr(err.msg, "es30-half"), "profile es29: %d %s",
+          rc, err.msg);
+
+    d.gl_profile = "es30-half";
+    bad = gl_test_renderer(&d);
+    /* Without strict limits the driver's own: nphi-env 128 fits llvmpipe's
+     * 64 KiB blocks under es30-half (issue 13), and the frame is the strict
+     * renderer's (swath in a texture) bit for bit. */
+    q.nphi_env = 128;
+    hfs_image ubo_img = {0};
+    if (hfs_image_alloc(&ubo_img, 32, 32, &err) ||
+        hfs_renderer_render(r, &s.f, &l, &q, &img, NULL, NULL, &err))
+        return 1;
+    rc = hfs_renderer_render(bad, &s.f, &l, &q, &ubo_img, NULL, NULL, &err);
+    printf("nphi-env 128 under es30-half, driver limits: %s\n", rc ? err.msg : "ok");
+    CHECK(rc == 0, "nphi-env 128, driver limits: %s", err.msg);
+    CHECK(rc || !memcmp(img.rgb, ubo_img.rgb, (size_t)32 * 32 * 3 * sizeof *img.rgb),
+          "nphi-env 128: the swath in a texture and in a uniform block differ");
+    hfs_image_free(&ubo_img);
+    q.nphi_env = 32;
+    q.precision = HFS_PRECISION_FP32;
+    rc = hfs_renderer_render(bad, &s.f, &l, &q, &img, NULL, NULL, &err);
+    printf("fp32 under es30-half: %s\n", err.msg);
+    CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "es30-half"), "fp32 under es30-half: %d %s",
+          rc, err.msg);
+    hfs_renderer_destroy(bad);
+    /* es32 relaxes the limits: nphi-env 128 fits the driver's uniform blocks.
+     * A driver below ES 3.2 (MESA_GLES_VERSION_OVERRIDE=3.0) refuses the
+     * profile, and only with the capability layer's one line. */
+    d.gl_profile = "es32";
+    rc = hfs_renderer_create(&d, &bad, &err);
+    if (rc == 0) {
+        q.precision = HFS_PRECISION_FP16;
+        q.nphi_env = 128;
+        rc = hfs_renderer_render(bad, &s.f, &l, &q, &img, NULL, NULL, &err);
+        printf("nphi-env 128 under es32: %s\n", rc ? err.msg : "ok");
+        CHECK(rc == 0, "nphi-env 128 under es32: %s", err.msg);
+        hfs_renderer_destroy(bad);
+    } else {
+        printf("es32 not available here: %s\n", err.msg);
+        CHECK(rc == HFS_E_UNSUPPORTED && strstr(err.msg, "profile es32: this driver offers"),
+              "es32 refused for another reason: %d %s", rc, err.msg);
+    }
+    hfs_image_free(&img);
+    hfs_renderer_destroy(r);
+    scene_free(&s);
+    return failures ? 1 : 0;
+}
+
+
+/* Walls of slope ~1e21 (zscale 1e12, dx 1e-9: the validated ranges'
+ * corner): the normals computed where they are read (hfs_normal_at) must
+ * not overflow (|g| ~ 1e21 squared is beyond float), so a key light's frame
+ * stays the CPU's (measured max 1.43e-5, mean 3.58e-7 of the unshadowed
+ * maximum; bounds 1.2x) and every frame stays finite.  The
+ * environment's part is not compared: at such slopes GLES and the CPU
+ * differ by up to 0.35 of the maximum (at b217fe9 and before), which this
+ * test does not pin. */
+static int mode_steep(void)
+{
+    scene s;
+    if (scene_make("fractal", 32, HFS_DATA_DIR, &s))
+        return 1;
+    s.f.dx = 1e-9;
+    s.f.zscale = 1e12;
+    hfs_lighting l;
+    hfs_lighting_defaults(&l);
+    l.albedo = 0.8;
+    l.n_key = 1;
+    l.key[0] = (hfs_key_light){.phi = 336.0 * PI / 180.0, .elev = 15.0 * PI / 180.0,
+                               .alpha = PI / 180.0, .radiance = {1500, 1500, 1500}};
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    hfs_renderer *r = gles_or_skip(NULL);
+    hfs_image a = {0}, b = {0};
+    if (!render(r, &s, &l, &q, &a) && !cpu_render(&s, &l, &q, &b)) {
+        const hfs_metrics m = compare(&s, &l, &q, &a, &b);
+        printf("steep, key light: max %.3e mean %.3e of the maximum, non-finite %ld\n", m.max_abs,
+               m.mean_abs, m.nonfinite);
+        CHECK(m.nonfinite == 0 && m.max_abs <= 1.75e-5 && m.mean_abs <= 4.3e-7,
+              "steep key light: max %.3e (bound 1.75e-5), mean %.3e (bound 4.3e-7)", m.max_abs,
+              m.mean_abs);
+    }
+    l.has_env = 1; /* and with a sky: finite */
+    for (int c = 0; c < 3; ++c)
+        l.env_sh[c][0] = 3.5449077;
+    if (!render(r, &s, &l, &q, &a)) {
+        size_t bad = 0;
+        for (size_t i = 0; i < (size_t)a.width * a.height * 3; ++i)
+            bad += !isfinite(a.rgb[i]);
+        CHECK(bad == 0, "steep sky + sun: %zu non-finite values", bad);
+    }
+    /* The CPU reference's sky at subsample 1 does not depend on the
+     * relief's scale: zscale 1e6 and 1e12 (slopes ~1e15 and ~1e21), as
+     * GLES's (issue 36: the refinement chose its scale by the tan of
+     * angles that saturate near +-pi/2, cpu_horizon.c scale_slope).  One
+     * horizon a direction: the same bits; split horizons: as measured. */
+    l.n_key = 0;
+    for (int split = 0; split < 2; ++split) {
+        hfs_quality q1 = q;
+        q1.subsample = 1;
+        q1.split = split;
+        s.f.zscale = 1e6;
+        const int rc = cpu_render(&s, &l, &q1, &a);
+        s.f.zscale = 1e12;
+        if (!rc && !cpu_render(&s, &l, &q1, &b)) {
+            const hfs_metrics m = compare(&s, &l, &q1, &b, &a);
+            printf("steep sky, CPU, split %d: zscale 1e12 against 1e6 max %.3e mean %.3e\n",
+                   split, m.max_abs, m.mean_abs);
+            CHECK(split ? m.max_abs <= 0.105 && m.mean_abs <= 2.3e-4 : bitequal(&a, &b),
+                  "steep sky, CPU, split %d: zscale 1e12 against 1e6 max %.3e mean %.3e", split,
+                  m.max_abs, m.mean_abs);
+        }
+    }
+    hfs_image_free(&a);
+    hfs_image_free(&b);
+    hfs_renderer_destroy(r);
+    scene_free(&s);
+    return failures ? 1 : 0;
+}
+
+int main(int argc, char **argv)
+{
+    setvbuf(stdout, NULL, _IONBF, 0);
+    if (argc < 2) {
+        fprintf(stderr, "usage: test_gles_limits errors|steep\n");
+        return 2;
+    }
+    if (!strcmp(argv[1], "errors"))
+        return mode_errors();
+    if (!strcmp(argv[1], "steep"))
+        return mode_steep();
+    fprintf(stderr, "unknown mode %s\n", argv[1]);
+    return 2;
+}
