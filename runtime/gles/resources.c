@@ -248,6 +248,16 @@ static int terrain_alloc(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_c
     return HFS_OK;
 }
 
+/* A layered RGBA texture of w x h x layers (fp16 or fp32 as the frame
+ * runs, LINEAR) in place of *tex, and its size in *bytes. */
+static void layered_rgba(const hfs_gl *gl, const hfs_gl_caps *c, GLuint *tex, size_t *bytes,
+                         int w, int h, int layers)
+{
+    hfs_gles_tex_delete(gl, tex);
+    *tex = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, w, h, layers, 1);
+    *bytes = (size_t)w * h * layers * c->bytes_rgba;
+}
+
 /* Grows the layered textures that follow the light counts and the
  * environment's directions. */
 static void layers_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_caps *c,
@@ -255,28 +265,20 @@ static void layers_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_
 {
     const int key_layers = n->key, local_layers = n->local, n_keys = n->n_keys;
     if (r->hor_layers < n->hor) { /* the environment's visibility: lost with it */
-        hfs_gles_tex_delete(gl, &r->hor);
-        r->hor = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh, n->hor, 1);
+        layered_rgba(gl, c, &r->hor, &r->hor_bytes, L->vw, L->vh, n->hor);
         r->hor_layers = n->hor;
         ++r->grid_gen;
-        r->hor_bytes = (size_t)L->vw * L->vh * n->hor * c->bytes_rgba;
     }
     if (n->far > 0 && (r->far_layers < n->far || r->far_w != n->far_w || r->far_h != n->far_h)) {
         /* split horizons' far grid: part of the environment's visibility */
-        hfs_gles_tex_delete(gl, &r->far);
-        r->far = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, n->far_w, n->far_h,
-                                  n->far, 1);
+        layered_rgba(gl, c, &r->far, &r->far_bytes, n->far_w, n->far_h, n->far);
         r->far_layers = n->far, r->far_w = n->far_w, r->far_h = n->far_h;
         ++r->grid_gen;
-        r->far_bytes = (size_t)n->far_w * n->far_h * n->far * c->bytes_rgba;
     }
     if (key_layers > 0 && r->keyhz_layers < key_layers) {
-        hfs_gles_tex_delete(gl, &r->keyhz);
-        r->keyhz = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh,
-                                    key_layers, 1);
+        layered_rgba(gl, c, &r->keyhz, &r->keyhz_bytes, L->vw, L->vh, key_layers);
         r->keyhz_layers = key_layers;
         ++r->keyhz_gen;
-        r->keyhz_bytes = (size_t)L->vw * L->vh * key_layers * c->bytes_rgba;
     }
     if (n_keys > 0 && r->kf_layers < n_keys) {
         hfs_gles_tex_delete(gl, &r->kf);
@@ -286,12 +288,9 @@ static void layers_ensure(hfs_gles_resources *r, const hfs_gl *gl, const hfs_gl_
         r->kf_bytes = (size_t)L->w * L->h * n_keys * c->bytes_rg;
     }
     if (local_layers > 0 && r->localv_layers < local_layers) {
-        hfs_gles_tex_delete(gl, &r->localv);
-        r->localv = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, L->vw, L->vh,
-                                     local_layers, 1);
+        layered_rgba(gl, c, &r->localv, &r->localv_bytes, L->vw, L->vh, local_layers);
         r->localv_layers = local_layers;
         ++r->localv_gen;
-        r->localv_bytes = (size_t)L->vw * L->vh * local_layers * c->bytes_rgba;
     }
 }
 
@@ -392,16 +391,10 @@ int hfs_gles_grid_horizons_freed(const hfs_gles_resources *r)
 void hfs_gles_grid_horizons_remake(hfs_gles_resources *r, const hfs_gl *gl,
                                    const hfs_gl_caps *c)
 {
-    if (r->hor_layers > 0 && !r->hor) {
-        r->hor = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, r->vw, r->vh,
-                                  r->hor_layers, 1);
-        r->hor_bytes = (size_t)r->vw * r->vh * r->hor_layers * c->bytes_rgba;
-    }
-    if (r->far_layers > 0 && !r->far) {
-        r->far = hfs_gles_tex_new(gl, GL_TEXTURE_2D_ARRAY, c->fmt_rgba, r->far_w, r->far_h,
-                                  r->far_layers, 1);
-        r->far_bytes = (size_t)r->far_w * r->far_h * r->far_layers * c->bytes_rgba;
-    }
+    if (r->hor_layers > 0 && !r->hor)
+        layered_rgba(gl, c, &r->hor, &r->hor_bytes, r->vw, r->vh, r->hor_layers);
+    if (r->far_layers > 0 && !r->far)
+        layered_rgba(gl, c, &r->far, &r->far_bytes, r->far_w, r->far_h, r->far_layers);
 }
 
 size_t hfs_gles_resources_bytes(const hfs_gles_resources *r)
