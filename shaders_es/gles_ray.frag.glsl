@@ -193,6 +193,14 @@ void hfs_ray_segment(highp sampler2DArray heights, inout hfs_ray R, int m, float
 #define HFS_GAP_SEARCH hfs_gap_search
 #endif
 
+/* The bound of the grid points in [lo, hi] (inclusive, on the grid): one
+ * read of the max pyramid's atlas at the level hfs_ray_level picks. */
+float hfs_ray_bound(highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS], ivec2 lo, ivec2 hi)
+{
+    int lv = hfs_ray_level(lo, hi);
+    return texelFetch(bounds, at[lv] + (lo >> lv), 0).x;
+}
+
 /* The bound of the grid points of the ray's stretch from ua to ub
  * crossings, its columns ma .. mb (ray_bound.c box_rise): one read. */
 float hfs_ray_box_rise(highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS], inout hfs_ray R,
@@ -204,9 +212,8 @@ float hfs_ray_box_rise(highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS], inout h
     int pa = R.p + R.step * ma, pb = R.p + R.step * mb;
     ivec2 lo = R.xm ? ivec2(min(pa, pb), q0) : ivec2(q0, min(pa, pb));
     ivec2 hi = R.xm ? ivec2(max(pa, pb), q1) : ivec2(q1, max(pa, pb));
-    int lv = hfs_ray_level(lo, hi);
     ++R.fetches;
-    return texelFetch(bounds, at[lv] + (lo >> lv), 0).x;
+    return hfs_ray_bound(bounds, at, lo, hi);
 }
 
 /* The ray from grid point g (height h0) in direction cs: its axes and

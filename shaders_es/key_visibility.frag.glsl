@@ -61,7 +61,7 @@ void hfs_sh_product(in vec4 a[4], in vec4 b[4], out vec4 c[4]);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
 float hfs_refine_factor(int q, int n, float k);
 #define HFS_RAY_LEVELS 16
-int hfs_ray_level(ivec2 lo, ivec2 hi);
+float hfs_ray_bound(highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS], ivec2 lo, ivec2 hi);
 float hfs_gap_search_cells(highp sampler2DArray heights, highp sampler2D bounds,
                            ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
                            float t_last, float zf, float tie, vec2 h0, float best, float stop,
@@ -317,9 +317,8 @@ float wedge_clear(ivec2 p, vec2 zp, float best, float t0, vec4 cr)
             return 1e30; /* every ray has left the field (a convex one) */
         il = clamp(il, ivec2(0), top);
         ih = clamp(ih, ivec2(0), top);
-        int lv = hfs_ray_level(il, ih);
         ++g_fetches;
-        float rise = texelFetch(u_bounds, u_rb_at[lv] + (il >> lv), 0).x - v0;
+        float rise = hfs_ray_bound(u_bounds, u_rb_at, il, ih) - v0;
         if (!(rise * u_rise / (rise >= 0.0 ? t : tb) > best)) {
             t = tb;
             len *= 2.0;

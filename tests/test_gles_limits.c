@@ -124,7 +124,6 @@ static int mode_errors(void)
     return failures ? 1 : 0;
 }
 
-
 /* Walls of slope ~1e21 (zscale 1e12, dx 1e-9: the validated ranges'
  * corner): the normals computed where they are read (hfs_normal_at) must
  * not overflow (|g| ~ 1e21 squared is beyond float), so a key light's frame
