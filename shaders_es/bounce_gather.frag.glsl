@@ -88,8 +88,8 @@ precision highp sampler2DArray;
 
 float hfs_h(vec2 t);
 float hfs_hdiff(vec2 a, vec2 b);
-vec3 hfs_normal_from(vec2 hx0, vec2 hx1, vec2 hy0, vec2 hy1, ivec2 span_i, float zf);
-vec2 hfs_height_at(highp sampler2DArray h, ivec2 p);
+vec3 hfs_normal_sides(highp sampler2DArray h, ivec2 p, ivec2 size, float zf, vec2 zp,
+                      out vec4 d, out bvec4 on);
 ivec2 hfs_receiver(ivec2 size, int sub);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
@@ -436,14 +436,6 @@ float skipped_occluded(ivec2 g, vec3 n, vec4 ns, vec4 fine, vec2 h0)
 void main()
 {
     ivec2 g = hfs_receiver(u_size, u_sub);
-    /* the 4 neighbours' heights (clamped to the field), read once: the
-     * normal's central differences and the own cell's one-sided slopes */
-    ivec2 lo = max(g - 1, ivec2(0)), hi = min(g + 1, u_size - 1);
-    vec2 zx1 = hfs_height_at(u_height, ivec2(hi.x, g.y));
-    vec2 zx0 = hfs_height_at(u_height, ivec2(lo.x, g.y));
-    vec2 zy1 = hfs_height_at(u_height, ivec2(g.x, hi.y));
-    vec2 zy0 = hfs_height_at(u_height, ivec2(g.x, lo.y));
-    vec3 n = hfs_normal_from(zx0, zx1, zy0, zy1, hi - lo, u_zf);
     vec2 hx[HFS_NLAYERS];
     vec4 fine = u_scale[HFS_NLEV - 1];
 #ifdef HFS_NEAR
@@ -465,12 +457,13 @@ void main()
     g_vdz = hfs_grid_rise(u_levels, g, u_vsub, u_size, fine);
 #endif
 #endif
-    /* one-sided slopes to (+x, -x, +y, -y), -1e30 off the field (the
-     * finest scale reads the heights' layer, u_height's) */
-    vec4 ns = vec4(hi.x > g.x ? hfs_hdiff(zx1, h0) * fine.y * fine.x : -1e30,
-                   lo.x < g.x ? hfs_hdiff(zx0, h0) * fine.y * fine.x : -1e30,
-                   hi.y > g.y ? hfs_hdiff(zy1, h0) * fine.y * fine.x : -1e30,
-                   lo.y < g.y ? hfs_hdiff(zy0, h0) * fine.y * fine.x : -1e30);
+    /* the normal and the one-sided slopes to (+x, -x, +y, -y), -1e30 off
+     * the field, from the 4 neighbours' heights read once (the finest
+     * scale reads the heights' layer, u_height's) */
+    vec4 side;
+    bvec4 side_on;
+    vec3 n = hfs_normal_sides(u_height, g, u_size, u_zf, h0, side, side_on);
+    vec4 ns = mix(vec4(-1e30), side * fine.y * fine.x, side_on);
     vec3 acc = vec3(0.0), acc_near = vec3(0.0);
     float w_occ = 0.0; /* slice_occluded summed over the environment's directions */
     float w_near = 0.0; /* the near bands' weights */

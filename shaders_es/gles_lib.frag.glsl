@@ -28,6 +28,8 @@ precision highp sampler2DArray;
 float hfs_hdiff(vec2 a, vec2 b);                          /* gles_pairs.frag */
 vec4 hfs_pair_tex4_layer_at(highp sampler2DArray t, vec3 uvl, ivec2 size, vec2 p);
 vec3 hfs_normal_from(vec2 hx0, vec2 hx1, vec2 hy0, vec2 hy1, ivec2 span_i, float zf);
+vec3 hfs_normal_sides(highp sampler2DArray h, ivec2 p, ivec2 size, float zf, vec2 zp,
+                      out vec4 d, out bvec4 on);
 
 /* Texture coordinate of full-resolution texel p on the visibility grid
  * (vsize receivers, one every sub texels, the last at W-1/H-1): between
@@ -111,15 +113,30 @@ vec2 hfs_height_bilinear(highp sampler2DArray h, vec2 uv, ivec2 size, vec2 p)
  * component in [-1, 1], N_z > 0 even on a wall of slope 1e30. */
 vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf)
 {
-    ivec2 lo = max(p - 1, ivec2(0)), hi = min(p + 1, size - 1);
-    return hfs_normal_from(hfs_height_at(h, ivec2(lo.x, p.y)), hfs_height_at(h, ivec2(hi.x, p.y)),
-                           hfs_height_at(h, ivec2(p.x, lo.y)), hfs_height_at(h, ivec2(p.x, hi.y)),
-                           hi - lo, zf);
+    vec4 d; /* unused: the compiler drops its arithmetic */
+    bvec4 on;
+    return hfs_normal_sides(h, p, size, zf, vec2(0.0), d, on);
 }
 
-/* The same from the heights already read at (lo.x, p.y), (hi.x, p.y),
- * (p.x, lo.y), (p.x, hi.y), span = hi - lo (a pass that reads them for
- * its own use: key_visibility.frag). */
+/* Texel p's normal (hfs_normal_at) and, from the same 4
+ * reads, its height differences (hfs_hdiff) over zp to the neighbours at
+ * (+x, -x, +y, -y), with which of them lie on the field (off it the read
+ * is p's own): a pass that needs its own cell's one-sided slopes as well
+ * reads the neighbours once (key_visibility.frag, bounce_gather.frag). */
+vec3 hfs_normal_sides(highp sampler2DArray h, ivec2 p, ivec2 size, float zf, vec2 zp,
+                      out vec4 d, out bvec4 on)
+{
+    ivec2 lo = max(p - 1, ivec2(0)), hi = min(p + 1, size - 1);
+    vec2 x1 = hfs_height_at(h, ivec2(hi.x, p.y)), x0 = hfs_height_at(h, ivec2(lo.x, p.y));
+    vec2 y1 = hfs_height_at(h, ivec2(p.x, hi.y)), y0 = hfs_height_at(h, ivec2(p.x, lo.y));
+    d = vec4(hfs_hdiff(x1, zp), hfs_hdiff(x0, zp), hfs_hdiff(y1, zp), hfs_hdiff(y0, zp));
+    on = bvec4(hi.x > p.x, lo.x < p.x, hi.y > p.y, lo.y < p.y);
+    return hfs_normal_from(x0, x1, y0, y1, hi - lo, zf);
+}
+
+/* The normal from the heights already read at (lo.x, p.y), (hi.x, p.y),
+ * (p.x, lo.y), (p.x, hi.y), span = hi - lo (hfs_normal_sides, and
+ * env_slices.frag's 3 x 3 reads). */
 vec3 hfs_normal_from(vec2 hx0, vec2 hx1, vec2 hy0, vec2 hy1, ivec2 span_i, float zf)
 {
     vec2 span = vec2(max(span_i, ivec2(1)));

@@ -42,7 +42,8 @@ precision highp int;
 precision highp sampler2D;
 precision highp sampler2DArray;
 
-vec3 hfs_normal_from(vec2 hx0, vec2 hx1, vec2 hy0, vec2 hy1, ivec2 span_i, float zf);
+vec3 hfs_normal_sides(highp sampler2DArray h, ivec2 p, ivec2 size, float zf, vec2 zp,
+                      out vec4 d, out bvec4 on);
 vec4 hfs_visible(float omega, vec4 win, vec4 occ_top);
 void hfs_sh_cosine(vec3 n, out vec4 h[4]);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
@@ -485,21 +486,14 @@ void main()
     vec2 zp = hfs_height_at(u_height, p);
     if (u_edit != 0 && !edit_reaches(p, zp))
         discard;
-    /* the 4 neighbours' heights (clamped to the field), read once: the
-     * normal's central differences and the one-sided slopes (g_ns, -1e30
-     * off the field) */
-    ivec2 lo = max(p - 1, ivec2(0)), hi = min(p + 1, u_size - 1);
-    vec2 hx1 = hfs_height_at(u_height, ivec2(hi.x, p.y));
-    vec2 hx0 = hfs_height_at(u_height, ivec2(lo.x, p.y));
-    vec2 hy1 = hfs_height_at(u_height, ivec2(p.x, hi.y));
-    vec2 hy0 = hfs_height_at(u_height, ivec2(p.x, lo.y));
-    vec3 n = hfs_normal_from(hx0, hx1, hy0, hy1, hi - lo, u_zf);
+    /* the normal and the one-sided slopes (g_ns, -1e30 off the field)
+     * from the 4 neighbours' heights, read once */
+    vec4 side;
+    bvec4 side_on;
+    vec3 n = hfs_normal_sides(u_height, p, u_size, u_zf, zp, side, side_on);
     vec4 H[4];
     hfs_sh_cosine(n, H);
-    g_ns = vec4(hi.x > p.x ? u_rise * hfs_hdiff(hx1, zp) : -1e30,
-                lo.x < p.x ? u_rise * hfs_hdiff(hx0, zp) : -1e30,
-                hi.y > p.y ? u_rise * hfs_hdiff(hy1, zp) : -1e30,
-                lo.y < p.y ? u_rise * hfs_hdiff(hy0, zp) : -1e30);
+    g_ns = mix(vec4(-1e30), u_rise * side, side_on);
     g_fetches = 5; /* its height and the 4 neighbours' */
     float f = clamp(key_factor(u_kb, n, H, grid_cell(p, zp), p, zp) / u_emax, 0.0, 1.0);
 #ifdef HFS_COUNT
