@@ -15,7 +15,8 @@
  * renderer is safe at fp16 arithmetic except colour output.
  *
  * Variant defines: HFS_FP32 (textures are 32F: heights stored as (v, 0)).
- * The (hi, lo) pairs' functions are gles_pairs.frag's, composed before.
+ * The (hi, lo) pairs' functions, and the heights' reads and normals
+ * (hfs_height_at, hfs_normal_at), are gles_pairs.frag's, composed before.
  */
 precision highp float;
 precision highp int;
@@ -27,9 +28,6 @@ precision highp sampler2DArray;
 
 float hfs_hdiff(vec2 a, vec2 b);                          /* gles_pairs.frag */
 vec4 hfs_pair_tex4_layer_at(highp sampler2DArray t, vec3 uvl, ivec2 size, vec2 p);
-vec3 hfs_normal_from(vec2 hx0, vec2 hx1, vec2 hy0, vec2 hy1, ivec2 span_i, float zf);
-vec3 hfs_normal_sides(highp sampler2DArray h, ivec2 p, ivec2 size, float zf, vec2 zp,
-                      out vec4 d, out bvec4 on);
 
 /* Texture coordinate of full-resolution texel p on the visibility grid
  * (vsize receivers, one every sub texels, the last at W-1/H-1): between
@@ -83,67 +81,6 @@ float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, 
                          hfs_hdiff(texelFetch(levels, ivec3(x0.x, x1.y, layer), 0).xy, h),
                          hfs_hdiff(texelFetch(levels, ivec3(x1, layer), 0).xy, h));
     return mix(mix(r.x, r.y, f.x), mix(r.z, r.w, f.x), f.y);
-}
-
-/* The heights' layer of the level array (its last: the finest level, R_{N-1};
- * DESIGN.md "Heights"), set with the array wherever a pass reads heights as
- * u_height (pass_common.c hfs_gles_bind_ray, hfs_gles_bind_normals; 0 for
- * the GIS horizons' own one-layer array). */
-uniform highp int u_hlayer;
-
-/* The normalized height (hi, lo) at texel p. */
-vec2 hfs_height_at(highp sampler2DArray h, ivec2 p)
-{
-    return texelFetch(h, ivec3(p, u_hlayer), 0).xy;
-}
-
-/* ... read bilinearly at uv, texel position p (hfs_pair_tex4_layer_at). */
-vec2 hfs_height_bilinear(highp sampler2DArray h, vec2 uv, ivec2 size, vec2 p)
-{
-    return hfs_pair_tex4_layer_at(h, vec3(uv, float(u_hlayer)), size, p).xy;
-}
-
-/* The unit normal at texel p of the heights h (RG hi+lo, size W x H):
- * SPEC's central differences of world z, one-sided at the border, as
- * runtime/core/field_geom.c hfs_field_normal, its overflow-safe scaling
- * included (zf = hscale zscale / dx, clamped to 1e30).  Computed where it
- * is read, from 4 fetches, instead of a full-resolution texture of normals
- * (2 MiB at 512^2; DESIGN.md "Normals where they are read").  N is
- * proportional to (-gx, -gy, 1) scaled by 1 / max(1, |gx|, |gy|): every
- * component in [-1, 1], N_z > 0 even on a wall of slope 1e30. */
-vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf)
-{
-    vec4 d; /* unused: the compiler drops its arithmetic */
-    bvec4 on;
-    return hfs_normal_sides(h, p, size, zf, vec2(0.0), d, on);
-}
-
-/* Texel p's normal (hfs_normal_at) and, from the same 4
- * reads, its height differences (hfs_hdiff) over zp to the neighbours at
- * (+x, -x, +y, -y), with which of them lie on the field (off it the read
- * is p's own): a pass that needs its own cell's one-sided slopes as well
- * reads the neighbours once (key_visibility.frag, bounce_gather.frag). */
-vec3 hfs_normal_sides(highp sampler2DArray h, ivec2 p, ivec2 size, float zf, vec2 zp,
-                      out vec4 d, out bvec4 on)
-{
-    ivec2 lo = max(p - 1, ivec2(0)), hi = min(p + 1, size - 1);
-    vec2 x1 = hfs_height_at(h, ivec2(hi.x, p.y)), x0 = hfs_height_at(h, ivec2(lo.x, p.y));
-    vec2 y1 = hfs_height_at(h, ivec2(p.x, hi.y)), y0 = hfs_height_at(h, ivec2(p.x, lo.y));
-    d = vec4(hfs_hdiff(x1, zp), hfs_hdiff(x0, zp), hfs_hdiff(y1, zp), hfs_hdiff(y0, zp));
-    on = bvec4(hi.x > p.x, lo.x < p.x, hi.y > p.y, lo.y < p.y);
-    return hfs_normal_from(x0, x1, y0, y1, hi - lo, zf);
-}
-
-/* The normal from the heights already read at (lo.x, p.y), (hi.x, p.y),
- * (p.x, lo.y), (p.x, hi.y), span = hi - lo (hfs_normal_sides, and
- * env_slices.frag's 3 x 3 reads). */
-vec3 hfs_normal_from(vec2 hx0, vec2 hx1, vec2 hy0, vec2 hy1, ivec2 span_i, float zf)
-{
-    vec2 span = vec2(max(span_i, ivec2(1)));
-    float gx = hfs_hdiff(hx1, hx0) * zf / span.x;
-    float gy = hfs_hdiff(hy1, hy0) * zf / span.y;
-    float m = max(1.0, max(abs(gx), abs(gy)));
-    return normalize(vec3(-gx / m, -gy / m, 1.0 / m));
 }
 
 /* ---- sample offsets (DESIGN.md "Horizons", float-sized snapping) --------- */

@@ -2,8 +2,10 @@
  * gles_pairs.frag - the (hi, lo) pairs of the GLES renderer's shader
  * library: heights, normals and light ratios stored as two halves whose
  * sum keeps ~22 bits (hfs_split), read back (hfs_h, hfs_hdiff), rounded to
- * halves in integer arithmetic (hfs_half_nearest) and blended as texture()
- * blends them (hfs_pair_tex).  Every pass is compiled as
+ * halves in integer arithmetic (hfs_half_nearest), blended as texture()
+ * blends them (hfs_pair_tex), and the heights read from the level array's
+ * layer u_hlayer with the normals made from them (hfs_height_at,
+ * hfs_normal_at, hfs_normal_sides).  Every pass is compiled as
  *     "#version 300 es" + variant defines + gles_pairs.frag + gles_lib.frag
  *     + gles_ray.frag + gles_view.frag + [sh_product.glsl.inc] + the pass
  * (runtime/gles/programs.c; source string 5 in driver messages).  Kept
@@ -175,4 +177,67 @@ vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl)
 #else
     return texture(t, uvl);
 #endif
+}
+
+/* ---- the heights' layer: reads and normals ------------------------------ */
+
+/* The heights' layer of the level array (its last: the finest level, R_{N-1};
+ * DESIGN.md "Heights"), set with the array wherever a pass reads heights as
+ * u_height (pass_common.c hfs_gles_bind_ray, hfs_gles_bind_normals; 0 for
+ * the GIS horizons' own one-layer array). */
+uniform highp int u_hlayer;
+
+/* The normalized height (hi, lo) at texel p. */
+vec2 hfs_height_at(highp sampler2DArray h, ivec2 p)
+{
+    return texelFetch(h, ivec3(p, u_hlayer), 0).xy;
+}
+
+/* ... read bilinearly at uv, texel position p (hfs_pair_tex4_layer_at). */
+vec2 hfs_height_bilinear(highp sampler2DArray h, vec2 uv, ivec2 size, vec2 p)
+{
+    return hfs_pair_tex4_layer_at(h, vec3(uv, float(u_hlayer)), size, p).xy;
+}
+
+/* The normal from the heights already read at (lo.x, p.y), (hi.x, p.y),
+ * (p.x, lo.y), (p.x, hi.y), span = hi - lo (hfs_normal_sides, and
+ * env_slices.frag's 3 x 3 reads). */
+vec3 hfs_normal_from(vec2 hx0, vec2 hx1, vec2 hy0, vec2 hy1, ivec2 span_i, float zf)
+{
+    vec2 span = vec2(max(span_i, ivec2(1)));
+    float gx = hfs_hdiff(hx1, hx0) * zf / span.x;
+    float gy = hfs_hdiff(hy1, hy0) * zf / span.y;
+    float m = max(1.0, max(abs(gx), abs(gy)));
+    return normalize(vec3(-gx / m, -gy / m, 1.0 / m));
+}
+
+/* Texel p's normal (hfs_normal_at) and, from the same 4
+ * reads, its height differences (hfs_hdiff) over zp to the neighbours at
+ * (+x, -x, +y, -y), with which of them lie on the field (off it the read
+ * is p's own): a pass that needs its own cell's one-sided slopes as well
+ * reads the neighbours once (key_visibility.frag, bounce_gather.frag). */
+vec3 hfs_normal_sides(highp sampler2DArray h, ivec2 p, ivec2 size, float zf, vec2 zp,
+                      out vec4 d, out bvec4 on)
+{
+    ivec2 lo = max(p - 1, ivec2(0)), hi = min(p + 1, size - 1);
+    vec2 x1 = hfs_height_at(h, ivec2(hi.x, p.y)), x0 = hfs_height_at(h, ivec2(lo.x, p.y));
+    vec2 y1 = hfs_height_at(h, ivec2(p.x, hi.y)), y0 = hfs_height_at(h, ivec2(p.x, lo.y));
+    d = vec4(hfs_hdiff(x1, zp), hfs_hdiff(x0, zp), hfs_hdiff(y1, zp), hfs_hdiff(y0, zp));
+    on = bvec4(hi.x > p.x, lo.x < p.x, hi.y > p.y, lo.y < p.y);
+    return hfs_normal_from(x0, x1, y0, y1, hi - lo, zf);
+}
+
+/* The unit normal at texel p of the heights h (RG hi+lo, size W x H):
+ * SPEC's central differences of world z, one-sided at the border, as
+ * runtime/core/field_geom.c hfs_field_normal, its overflow-safe scaling
+ * included (zf = hscale zscale / dx, clamped to 1e30).  Computed where it
+ * is read, from 4 fetches, instead of a full-resolution texture of normals
+ * (2 MiB at 512^2; DESIGN.md "Normals where they are read").  N is
+ * proportional to (-gx, -gy, 1) scaled by 1 / max(1, |gx|, |gy|): every
+ * component in [-1, 1], N_z > 0 even on a wall of slope 1e30. */
+vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf)
+{
+    vec4 d; /* unused: the compiler drops its arithmetic */
+    bvec4 on;
+    return hfs_normal_sides(h, p, size, zf, vec2(0.0), d, on);
 }

@@ -21,7 +21,7 @@ precision highp int;
 precision highp sampler2D;
 
 uniform highp sampler2DArray u_height;  /* the level array: normalized heights, W x H */
-uniform highp int u_hlayer;             /* its layer of the heights (gles_lib.frag) */
+uniform highp int u_hlayer;             /* its layer of the heights (gles_pairs.frag) */
 uniform int u_skirt;                    /* 1: the side walls, 0: the surface */
 
 layout(std140) uniform HfsView {
