@@ -27,9 +27,13 @@
  *            S the isotropic sky's share (band 2 of the run without a map
  *            over its diffuse), with the map too; --albedo 0 the run
  *            without it, bit for bit;
+ *   beam     --beam-only: one band, the full run's band 1 bit for bit (the
+ *            CPU reference and the sweep), HFS_BANDS=beam and no sky's
+ *            metadata;
  *   bad      --sky-north without --sky-map, a missing map, a negative sky,
- *            a black sky, --sky-map on `sun`, an albedo out of [0, 1]: one
- *            line, non-zero, no file.
+ *            a black sky, --sky-map on `sun`, an albedo out of [0, 1],
+ *            --beam-only with a sky's option or on `sun`: one line,
+ *            non-zero, no file.
  * Without a GL context (and HFS_REQUIRE_GL unset) the GLES parts are
  * skipped and the test exits 77 at the end.
  *
@@ -322,6 +326,29 @@ static void test_albedo(void)
     free_raster(&iso);
 }
 
+/* --beam-only: the beam alone, the full run's band 1 bit for bit, with
+ * and without the sweep (the sky's horizons are not searched). */
+static void test_beam_only(void)
+{
+    static const char *const how[] = {"--backend cpu", "--backend cpu --method sweep"};
+    for (int k = 0; k < 2; ++k) {
+        char full[16], beam[16];
+        snprintf(full, sizeof full, "full%d.tif", k);
+        snprintf(beam, sizeof beam, "beam%d.tif", k);
+        REQUIRE(run("insolation ridge.tif %s -o %s %s", day, full, how[k]) == 0 &&
+                    run("insolation ridge.tif %s -o %s %s --beam-only", day, beam, how[k]) == 0,
+                "insolation %s", how[k]);
+        raster f, b;
+        REQUIRE(read_raster(full, &f) == 0 && read_raster(beam, &b) == 0, "%s, %s", full, beam);
+        printf("%s --beam-only: %d band(s), band 1 %s the full run's\n", how[k], b.bands,
+               b.bands >= 1 && !memcmp(f.v, b.v, sizeof(float) * W * H) ? "equal to" : "not");
+        CHECK(f.bands == 3 && b.bands == 1 && !memcmp(f.v, b.v, sizeof(float) * W * H));
+        CHECK(!strcmp(meta(&b, "HFS_BANDS"), "beam") && !*meta(&b, "HFS_DIFFUSE_MODEL") &&
+              !*meta(&b, "HFS_DIRECTIONS") && *meta(&f, "HFS_DIFFUSE_MODEL"));
+        free_raster(&f), free_raster(&b);
+    }
+}
+
 /* A bad command or input: non-zero, one line on stderr, x.tif not there. */
 static void bad(const char *args, const char *says)
 {
@@ -359,6 +386,13 @@ static void test_bad(void)
     bad(cmd, "--albedo");
     snprintf(cmd, sizeof cmd, "%s %s --albedo -0.1", base, day);
     bad(cmd, "--albedo");
+    snprintf(cmd, sizeof cmd, "%s %s --beam-only --albedo 0.2", base, day);
+    bad(cmd, "--albedo: not with --beam-only");
+    snprintf(cmd, sizeof cmd, "%s %s --directions 8 --beam-only", base, day);
+    bad(cmd, "--directions: not with --beam-only");
+    snprintf(cmd, sizeof cmd, "%s %s --beam-only --sky-map north.pfm", base, day);
+    bad(cmd, "--sky-map: not with --beam-only");
+    bad("sun ridge.tif -o x.tif --datetime 2026-06-21T08:00Z --beam-only", "--beam-only");
 }
 
 int main(int argc, char **argv)
@@ -380,6 +414,7 @@ int main(int argc, char **argv)
     test_truth();
     test_convergence();
     test_albedo();
+    test_beam_only();
     test_bad();
     return gis_cli_end("test_gis_sky_cli");
 }

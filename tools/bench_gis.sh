@@ -29,6 +29,9 @@
 #     --backend truth`'s (the same ESRA beam, exact shadows).  Only the
 #     beam: r.sun's diffuse is Muneer's anisotropic model, hfshade's an
 #     isotropic sky over exact horizons (docs/GIS.md), not one quantity.
+#     r.sun computes the beam alone here (beam_rad only); so does
+#     `hfshade insolation --beam-only` (its time is the like-for-like one;
+#     the plain command also searches the sky's 16 azimuths).
 #     hfshade's day runs in local time (-05:00, about the DEM's solar time)
 #     so that the daylight falls in one period as r.sun's does.
 #   - DEM fractal:N instead: an `hfgen fractal` field of N x N as a UTM 16N
@@ -141,6 +144,9 @@ for r in $(seq "$ROUNDS"); do
     time_of hf_ins_gles "$H" insolation utm.tif $DAY --quiet -o gles_ins.tif
     # shellcheck disable=SC2086
     time_of hf_ins_sweep "$H" insolation utm.tif $DAY --method sweep --quiet -o sweep_ins.tif
+    # shellcheck disable=SC2086
+    time_of hf_ins_beam "$H" insolation utm.tif $DAY --method sweep --beam-only --quiet \
+        -o beam_ins.tif
     time_of r_sun grass gdb/jb/PERMANENT --exec bash rsun.sh
 done
 cat >rout.sh <<'EOF'
@@ -154,12 +160,13 @@ median() { sort -n "$1.t" | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}';
 
 $PY - "$(median hf_horizon_gles)" "$(median hf_horizon_cpu)" "$(median hf_horizon_sweep)" \
     "$(median r_horizon)" "$(median hf_svf_gles)" "$(median hf_svf_sweep)" "$(median saga_svf)" \
-    "$(median hf_ins_gles)" "$(median hf_ins_sweep)" "$(median r_sun)" <<'EOF'
+    "$(median hf_ins_gles)" "$(median hf_ins_sweep)" "$(median r_sun)" "$(median hf_ins_beam)" \
+    <<'EOF'
 import glob, os, sys
 import numpy as np
 from osgeo import gdal
 gdal.UseExceptions()
-t_hg, t_hc, t_hs, t_rh, t_sg, t_ss, t_sa, t_ig, t_is, t_rs = (float(v) for v in sys.argv[1:11])
+t_hg, t_hc, t_hs, t_rh, t_sg, t_ss, t_sa, t_ig, t_is, t_rs, t_ib = (float(v) for v in sys.argv[1:12])
 def rd(p):
     if not os.path.exists(p):  # a run that refused (the sweep with a radius): n/a
         return rd(p.replace("sweep", "tru", 1)) * np.nan
@@ -204,7 +211,9 @@ rows.append(("hfshade insolation --method sweep", "beam irradiation of a day, Wh
              inner(np.abs(rd("sweep_ins.tif") - tb)).ravel()))
 rows.append(("GRASS r.sun (mode 2)", "beam irradiation of a day, Wh/m^2",
              inner(np.abs(rd("rsun_beam.tif") - tb)).ravel()))
-times = [t_hg, t_hc, t_hs, t_rh, t_sg, t_ss, t_sa, t_ig, t_is, t_rs]
+rows.append(("hfshade insolation --method sweep --beam-only", "the same (band 1 alone, as r.sun's "
+             "beam_rad)", inner(np.abs(rd("beam_ins.tif") - tb)).ravel()))
+times = [t_hg, t_hc, t_hs, t_rh, t_sg, t_ss, t_sa, t_ig, t_is, t_rs, t_ib]
 print("| tool | quantity | time (s, median) | mean error | p99 | max |")
 print("|---|---|---|---|---|---|")
 for (name, what, d), t in zip(rows, times):
@@ -212,5 +221,6 @@ for (name, what, d), t in zip(rows, times):
 print("\nspeed: r.horizon / hfshade horizon (gles) %.2fx; SAGA / hfshade svf (gles) %.2fx; "
       "r.sun / hfshade insolation (gles) %.2fx" % (t_rh / t_hg, t_sa / t_sg, t_rs / t_ig))
 print("with --method sweep: r.horizon / horizon %.2fx; SAGA / svf %.2fx; r.sun / insolation "
-      "%.2fx" % (t_rh / t_hs, t_sa / t_ss, t_rs / t_is))
+      "%.2fx; r.sun / insolation --beam-only (the same quantity) %.2fx"
+      % (t_rh / t_hs, t_sa / t_ss, t_rs / t_is, t_rs / t_ib))
 EOF

@@ -58,6 +58,8 @@ static const gis_opt opts[] = {
      "north; 90: east)"},
     {"--albedo", "A", INS, "the ground's albedo, 0..1: band 3 adds the light the terrain and "
      "the ground reflect onto the texel (r.sun's refl_rad; default 0: none)"},
+    {"--beam-only", NULL, INS, "band 1 alone, the beam: the sky's horizons are not searched "
+     "(r.sun with beam_rad alone); not with --sky-map, --albedo, --directions"},
     {"--lambertian", NULL, SVF, "the Lambertian-weighted variant, mean cos^2 (SAGA's)"},
     {"--azimuths", "A,B,...", HOR, "these azimuths, degrees (or --step)"},
     {"--step", "DEG", HOR, "every DEG degrees around the circle, in (0, 360]"},
@@ -100,7 +102,8 @@ static const char *const what[] = {
     "surface (W/m^2), band 2 the visible fraction of the sun's disk (0..1).",
     "Clear-sky irradiation over a period (GRASS r.sun's mode 2), Wh/m^2: band 1\n"
     "beam (the sun's renders, one a step), band 2 sky-diffuse (isotropic sky over\n"
-    "the terrain's horizons), band 3 global (beam + diffuse)."};
+    "the terrain's horizons), band 3 global (beam + diffuse); band 1 alone with\n"
+    "--beam-only."};
 
 /* The options a command cannot go without: no brackets in its synopsis. */
 static int required(const gis_opt *o, gis_product p)
@@ -202,6 +205,9 @@ typedef struct pending {
     const char *datetime, *from, *to; /* sun, insolation: parsed at the end */
     const char *tz;
     const char *sky_north;            /* insolation: --sky-north as given   */
+    const char *sky_opt;              /* insolation: the last of the sky's
+                                       * options given (--sky-map, --albedo,
+                                       * --directions); NULL: none          */
 } pending;
 
 /* The sun's options' values; 0, or the usage error's exit status. */
@@ -390,6 +396,9 @@ static int check_args(gis_args *a, const char *prog, const pending *st)
                                ? " (openness searches 10 cells unless told)" : "");
     if (st->sky_north && !a->sky_map)
         return hfs_usage_error(prog, "--sky-north: only with --sky-map");
+    if (a->beam_only && st->sky_opt)
+        return hfs_usage_error(prog, "%s: not with --beam-only (the beam alone has no sky)",
+                               st->sky_opt);
     if (a->product == GIS_SUN || a->product == GIS_INSOLATION)
         return check_sun(a, prog, st);
     if (a->product != GIS_HORIZON)
@@ -434,8 +443,12 @@ static int parse(int argc, char **argv, gis_args *a)
             a->svf = !strcmp(s, "--lambertian") ? GIS_SVF_LAMBERTIAN : a->svf;
             a->cog |= !strcmp(s, "--cog");
             a->quiet |= !strcmp(s, "--quiet");
+            a->beam_only |= !strcmp(s, "--beam-only");
             continue;
         }
+        if (a->product == GIS_INSOLATION && (!strcmp(s, "--sky-map") || !strcmp(s, "--albedo") ||
+                                             !strcmp(s, "--directions")))
+            st.sky_opt = s;
         if (i + 1 >= argc)
             return hfs_usage_error(prog, "%s: missing value", s);
         const int rc = set_value(a, prog, s, argv[++i], &st);

@@ -396,8 +396,13 @@ int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gi
     gis_period p = {0};
     gis_period_stats st;
     gis_sky_map sky = {0};
-    int rc = beam && diffuse && global ? HFS_OK
-                                       : hfs_fail(err, HFS_E_INVALID, "out: no output given");
+    const int beam_only = beam && !diffuse && !global; /* the sky not searched */
+    int rc = beam && (beam_only || (diffuse && global))
+                 ? HFS_OK
+                 : hfs_fail(err, HFS_E_INVALID, "out: %s", beam ? "diffuse and global: give both "
+                            "or neither (the beam alone)" : "no output given");
+    if (!rc && beam_only && (sky_rgb || albedo != 0.0))
+        rc = hfs_fail(err, HFS_E_INVALID, "out: the beam alone takes no sky map and no albedo");
     if (!rc)
         rc = period_of(from_unix_utc, to_unix_utc, step_min, &p, err);
     if (!rc)
@@ -413,6 +418,7 @@ int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_gi
         p.linke = linke_of(site);
         p.sky_directions = directions;
         p.albedo = albedo;
+        p.beam_only = beam_only;
         rc = gis_product_insolation(&c, &p, beam, diffuse, global, &st, err);
     }
     gis_sky_map_free(&sky);

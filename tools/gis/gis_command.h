@@ -72,6 +72,8 @@ typedef struct gis_args {
                                   * degrees                               */
     double albedo;               /* insolation --albedo: the ground's, for the
                                   * reflected part of band 3; 0: none      */
+    int beam_only;               /* insolation --beam-only: band 1 alone, no
+                                  * sky's horizons searched                */
 } gis_args;
 
 struct gis_dem;

@@ -29,6 +29,14 @@ gis_raster gis_run_raster(const gis_run *r, const char *extra)
     return g;
 }
 
+int gis_run_bands(const gis_run *r)
+{
+    const gis_product p = r->a->product;
+    if (p == GIS_INSOLATION)
+        return r->a->beam_only ? 1 : 3;
+    return p == GIS_OPENNESS || p == GIS_SUN ? 2 : 1;
+}
+
 gis_raster gis_run_product_raster(const gis_run *r, const float *v, size_t n)
 {
     gis_raster g = gis_run_raster(r, NULL);
@@ -42,7 +50,7 @@ gis_raster gis_run_product_raster(const gis_run *r, const float *v, size_t n)
                                "(clear sky)", "W/m^2"};
         g.band[1] = (gis_band){v ? v + n : NULL, "visible fraction of the sun's disk", ""};
     } else if (r->a->product == GIS_INSOLATION) {
-        g.n_bands = 3;
+        g.n_bands = gis_run_bands(r);
         g.band[0] = (gis_band){v, "beam irradiation (clear sky)", "Wh/m^2"};
         g.band[1] = (gis_band){v ? v + n : NULL, r->a->sky_map
                                ? "sky-diffuse irradiation (clear sky, the sky map's shape)"

@@ -125,7 +125,9 @@ static int compute(stream *s, float *z, unsigned char *hole, float *v, hfs_error
         return gis_product_sun(&c, &r->sun, v, v + n, err);
     if (a->product == GIS_INSOLATION) {
         gis_period_stats st;
-        return gis_product_insolation(&c, &r->period, v, v + n, v + 2 * n, &st, err);
+        const int all = s->n_bands > 1;
+        return gis_product_insolation(&c, &r->period, v, all ? v + n : NULL,
+                                      all ? v + 2 * n : NULL, &st, err);
     }
     return gis_product_openness(&c, a->directions, v, v + n, err);
 }
@@ -173,9 +175,7 @@ static int open_files(stream *s, hfs_error *err)
     const gis_args *a = r->a;
     const int horizon = a->product == GIS_HORIZON;
     s->n_out = horizon ? a->n_azimuths : 1;
-    s->n_bands = a->product == GIS_INSOLATION                             ? 3
-                 : a->product == GIS_OPENNESS || a->product == GIS_SUN ? 2
-                                                                         : 1;
+    s->n_bands = gis_run_bands(r);
     s->out = calloc((size_t)s->n_out, sizeof *s->out);
     s->phi = horizon ? malloc((size_t)a->n_azimuths * sizeof *s->phi) : NULL;
     if (!s->out || (horizon && !s->phi))

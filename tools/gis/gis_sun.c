@@ -419,24 +419,26 @@ int gis_product_insolation(const gis_compute *c, const gis_period *p, float *bea
 {
     const gis_dem *d = c->dem;
     const size_t n = (size_t)d->sw * (size_t)d->sh;
-    const int reflect = p->albedo > 0.0;
+    const int with_sky = !p->beam_only, reflect = with_sky && p->albedo > 0.0;
     double *acc = calloc(n, sizeof *acc);
-    float *f = calloc(n, sizeof *f), *sky = calloc(n, sizeof *sky);
+    float *f = calloc(n, sizeof *f), *sky = with_sky ? calloc(n, sizeof *sky) : NULL;
     float *ground = reflect ? calloc(n, sizeof *ground) : NULL;
-    int rc = acc && f && sky && (ground || !reflect)
+    int rc = acc && f && (sky || !with_sky) && (ground || !reflect)
                  ? HFS_OK : hfs_fail(err, HFS_E_NOMEM, "insolation: out of memory");
     if (!rc && gis_period_scan(p, st))
         rc = hfs_fail(err, HFS_E_INVALID, "insolation: the site or period is out of range");
-    if (!rc && st->steps_sun > 0)
+    if (!rc && with_sky && st->steps_sun > 0)
         rc = sky_share(c, p->sky_directions, p->sky, sky, ground, err);
     if (!rc)
         rc = beam_sum(c, p, acc, f, err);
     if (!rc) {
-        for (size_t q = 0; q < n; ++q) {
+        for (size_t q = 0; q < n; ++q)
             f[q] = (float)acc[q];
-            sky[q] = (float)(st->diffuse_wh * sky[q]);
-        }
         back(c, f, beam);
+    }
+    if (!rc && with_sky) {
+        for (size_t q = 0; q < n; ++q)
+            sky[q] = (float)(st->diffuse_wh * sky[q]);
         back(c, sky, diffuse);
         for (size_t q = 0; q < n; ++q) {
             double g = acc[q] + sky[q];

@@ -97,6 +97,9 @@ typedef struct gis_period {
                                  * of gis_product_directions); NULL: isotropic */
     double albedo;              /* the ground's, [0, 1]: band 3 adds the
                                  * ground-reflected part; 0: none            */
+    int beam_only;              /* the beam alone (--beam-only): no sky's
+                                 * horizons searched, diffuse and global
+                                 * not written (sky and albedo unused)       */
 } gis_period;
 
 /* The period [jd_from, jd_to) in steps of step_min minutes, as the
@@ -139,7 +142,9 @@ int gis_period_scan(const gis_period *p, gis_period_stats *st);
  * on an open plane of slope s (r.sun's refl_rad; the terrain taken as lit
  * as open flat ground: the terrain configuration factor of Dozier & Frew
  * 1990, "Rapid calculation of terrain parameters for radiation modeling
- * from digital elevation data", IEEE TGRS 28(5):963-969). */
+ * from digital elevation data", IEEE TGRS 28(5):963-969).  With
+ * p->beam_only only beam[] is written (diffuse and global may be NULL)
+ * and the sky's horizons are not searched: the same beam, bit for bit. */
 int gis_product_insolation(const gis_compute *c, const gis_period *p, float *beam,
                            float *diffuse, float *global, gis_period_stats *st, hfs_error *err);
 

@@ -99,7 +99,8 @@ static int describe_period(gis_run *r, hfs_error *err)
     const gis_args *a = r->a;
     r->period = (gis_period){.jd_from = a->jd_from, .jd_to = a->jd_to, .step_min = a->step_min,
                              .n_steps = a->n_steps, .site = r->site, .linke = a->linke,
-                             .sky_directions = a->directions, .albedo = a->albedo};
+                             .sky_directions = a->directions, .albedo = a->albedo,
+                             .beam_only = a->beam_only};
     if (a->sky_map) {
         const int rc = load_sky(r, err);
         if (rc)
@@ -118,6 +119,10 @@ static int describe_period(gis_run *r, hfs_error *err)
     gis_run_meta(r, "HFS_STEPS_SUN=%ld", r->stats.steps_sun);
     gis_run_meta(r, "HFS_BEAM_NORMAL_WH=%.3f", r->stats.beam_normal_wh);
     gis_run_meta(r, "HFS_DIFFUSE_HORIZONTAL_WH=%.3f", r->stats.diffuse_wh);
+    if (a->beam_only) {
+        gis_run_meta(r, "HFS_BANDS=beam");
+        return HFS_OK;
+    }
     if (!a->sky_map)
         gis_run_meta(r, "HFS_DIFFUSE_MODEL=isotropic sky (upper hemisphere) over the "
                      "terrain's horizons");
@@ -165,14 +170,14 @@ gis_stream_mode gis_sun_choose(gis_run *r)
 int gis_sun_write(gis_run *r, hfs_error *err)
 {
     const gis_args *a = r->a;
-    const int sun = a->product == GIS_SUN;
+    const int sun = a->product == GIS_SUN, bands = gis_run_bands(r);
     const size_t n = (size_t)r->dem.width * (size_t)r->dem.height;
-    float *v = malloc((sun ? 2 : 3) * n * sizeof *v);
+    float *v = malloc((size_t)bands * n * sizeof *v);
     if (!v)
         return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", a->out);
     int rc = sun ? gis_product_sun(&r->c, &r->sun, v, v + n, err)
-                 : gis_product_insolation(&r->c, &r->period, v, v + n, v + 2 * n, &r->stats,
-                                          err);
+                 : gis_product_insolation(&r->c, &r->period, v, bands > 1 ? v + n : NULL,
+                                          bands > 1 ? v + 2 * n : NULL, &r->stats, err);
     if (!rc) {
         const gis_raster g = gis_run_product_raster(r, v, n);
         rc = gis_raster_write(gis_outputs_set(r->outs, a->out), a->out, &g, err);

@@ -159,8 +159,9 @@ HFS_GIS_API int hfs_gis_sun(hfs_renderer *r, const hfs_gis_dem *dem, const hfs_g
  * `directions` azimuths (1..1024; the command's default 16) times the
  * diffuse horizontal irradiation; global their sum (the command's bands
  * 1, 2, 3).  radius as hfs_gis_sun's, and the sky's horizons are searched
- * within it (0: to the DEM's edge).  Nodata: hfs_gis_nodata(dem,
- * HFS_GIS_INSOLATION). */
+ * within it (0: to the DEM's edge).  diffuse and global both NULL: the
+ * beam alone (`--beam-only`), no sky's horizons searched, the same beam
+ * bit for bit.  Nodata: hfs_gis_nodata(dem, HFS_GIS_INSOLATION). */
 HFS_GIS_API int hfs_gis_insolation(hfs_renderer *r, const hfs_gis_dem *dem,
                                    const hfs_gis_site *site, double from_unix_utc,
                                    double to_unix_utc, double step_min, int directions,
@@ -178,7 +179,8 @@ HFS_GIS_API int hfs_gis_insolation(hfs_renderer *r, const hfs_gis_dem *dem,
  * ground's, global then adds albedo times the clear sky's global
  * horizontal irradiation times the part of the texel's view that is
  * ground or terrain (1 - the isotropic sky's share); 0: none, as
- * hfs_gis_insolation. */
+ * hfs_gis_insolation (which the beam alone requires: sky_rgb NULL, albedo
+ * 0). */
 HFS_GIS_API int hfs_gis_insolation_sky(hfs_renderer *r, const hfs_gis_dem *dem,
                                        const hfs_gis_site *site, double from_unix_utc,
                                        double to_unix_utc, double step_min, int directions,
