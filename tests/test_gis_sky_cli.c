@@ -369,29 +369,26 @@ static void bad(const char *args, const char *says)
 
 static void test_bad(void)
 {
-    char cmd[512];
-    const char *base = "insolation ridge.tif -o x.tif --backend cpu";
-    snprintf(cmd, sizeof cmd, "%s %s --sky-north 10", base, day);
-    bad(cmd, "only with --sky-map");
-    snprintf(cmd, sizeof cmd, "%s %s --sky-map missing.exr", base, day);
-    bad(cmd, "missing.exr");
-    snprintf(cmd, sizeof cmd, "%s %s --sky-map negative.pfm", base, day);
-    bad(cmd, "negative.pfm");
-    snprintf(cmd, sizeof cmd, "%s %s --sky-map black.pfm", base, day);
-    bad(cmd, "black");
-    snprintf(cmd, sizeof cmd, "%s %s --sky-map north.pfm --sky-north 400", base, day);
-    bad(cmd, "--sky-north");
+    /* insolation on the ridge with these options, and what its line says */
+    static const char *const ins[][2] = {
+        {"--sky-north 10", "only with --sky-map"},
+        {"--sky-map missing.exr", "missing.exr"},
+        {"--sky-map negative.pfm", "negative.pfm"},
+        {"--sky-map black.pfm", "black"},
+        {"--sky-map north.pfm --sky-north 400", "--sky-north"},
+        {"--albedo 1.5", "--albedo"},
+        {"--albedo -0.1", "--albedo"},
+        {"--beam-only --albedo 0.2", "--albedo: not with --beam-only"},
+        {"--directions 8 --beam-only", "--directions: not with --beam-only"},
+        {"--beam-only --sky-map north.pfm", "--sky-map: not with --beam-only"},
+    };
+    for (size_t k = 0; k < sizeof ins / sizeof ins[0]; ++k) {
+        char cmd[512];
+        snprintf(cmd, sizeof cmd, "insolation ridge.tif -o x.tif --backend cpu %s %s", day,
+                 ins[k][0]);
+        bad(cmd, ins[k][1]);
+    }
     bad("sun ridge.tif -o x.tif --datetime 2026-06-21T08:00Z --sky-map north.pfm", "--sky-map");
-    snprintf(cmd, sizeof cmd, "%s %s --albedo 1.5", base, day);
-    bad(cmd, "--albedo");
-    snprintf(cmd, sizeof cmd, "%s %s --albedo -0.1", base, day);
-    bad(cmd, "--albedo");
-    snprintf(cmd, sizeof cmd, "%s %s --beam-only --albedo 0.2", base, day);
-    bad(cmd, "--albedo: not with --beam-only");
-    snprintf(cmd, sizeof cmd, "%s %s --directions 8 --beam-only", base, day);
-    bad(cmd, "--directions: not with --beam-only");
-    snprintf(cmd, sizeof cmd, "%s %s --beam-only --sky-map north.pfm", base, day);
-    bad(cmd, "--sky-map: not with --beam-only");
     bad("sun ridge.tif -o x.tif --datetime 2026-06-21T08:00Z --beam-only", "--beam-only");
 }
 
