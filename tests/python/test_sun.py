@@ -233,6 +233,25 @@ class Sun(util.TempDir):
             hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, backend="cpu",
                                sky_map=sky[:, :, :2])
 
+    def test_insolation_beam_only(self):
+        # --beam-only: one band, the full run's band 1 bit for bit
+        out = self.path("ins_beam.tif")
+        util.run_cli("insolation", self.dem, "-o", out, "--from", HOURS[0], "--to", HOURS[1],
+                     "--step", 60, "--backend", "cpu", "--quiet", "--beam-only")
+        beam, diffuse, total = hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon,
+                                                  step=60, nodata=NODATA, backend="cpu",
+                                                  convergence=self.conv, beam_only=True)
+        self.assertIsNone(diffuse)
+        self.assertIsNone(total)
+        meta = self.same(beam, out, 1)
+        self.assertEqual(meta["HFS_BANDS"], "beam")
+        full = hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, step=60,
+                                  nodata=NODATA, backend="cpu", convergence=self.conv)
+        self.assertEqual(full[0].tobytes(), beam.tobytes())
+        with self.assertRaisesRegex(hfshade.Error, "beam alone takes no sky map and no albedo"):
+            hfshade.insolation(self.z, CELL, *HOURS, self.lat, self.lon, backend="cpu",
+                               albedo=0.2, beam_only=True)
+
     def test_julian_day_is_the_commands(self):
         instants = ["2026-06-21T06:30-05:00", "2026-12-31T23:59:59-03:30", "2024-02-29T12:00Z",
                     "2000-01-01T12:00:00Z", "1969-12-31T23:59:59+00:00", "1900-03-01T00:30+01:00",

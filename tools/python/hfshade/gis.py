@@ -273,10 +273,11 @@ def sun(dem, cell_size, when, lat, lon, *, elevation=None, linke=3.0, radius=0.0
 def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16, radius=0.0,
                elevation=None, linke=3.0, zscale=1.0, nodata=None, backend="gles",
                renderer=None, sky_map=None, sky_north=0.0, albedo=0.0, method="exact",
-               convergence=0.0):
+               convergence=0.0, beam_only=False):
     """Clear-sky irradiation over [start, end), Wh/m^2, as `hfshade
     insolation --from START --to END`'s bands 1, 2, 3: returns
-    (beam, diffuse, global_).
+    (beam, diffuse, global_); with beam_only (`--beam-only`) (beam, None,
+    None), the sky's horizons not searched (no sky_map, albedo 0).
 
     Steps of `step` minutes (default 15; the last one shortened to end at
     `end`; at most 100000), each step's sun at its middle.  beam: the
@@ -309,17 +310,17 @@ def insolation(dem, cell_size, start, end, lat, lon, *, step=15.0, directions=16
     if sky_map is not None:
         sky_map = env_map_array(sky_map, "sky_map")
         sky = ffi.from_buffer("float[]", sky_map)
-    out = [np.empty(d.shape, dtype=np.float32) for _ in range(3)]
+    out = [np.empty(d.shape, dtype=np.float32) for _ in range(1 if beam_only else 3)]
 
     def go(r):
         err = new_error()
         h, w = (sky_map.shape[0], sky_map.shape[1]) if sky_map is not None else (0, 0)
+        bufs = [ffi.from_buffer("float[]", o) for o in out] + [ffi.NULL] * (3 - len(out))
         check(gis_lib().hfs_gis_insolation_sky(r, d.c, site, t0, t1, minutes, n, rad, sky, w,
-                                               h, north, rho,
-                                               *(ffi.from_buffer("float[]", o) for o in out),
-                                               err), err)
+                                               h, north, rho, *bufs, err), err)
     _run(renderer, backend, go, method)
-    return tuple(d.masked(o, _INSOLATION) for o in out)
+    bands = [d.masked(o, _INSOLATION) for o in out]
+    return tuple(bands + [None] * (3 - len(bands)))
 
 
 __all__ = ["svf", "horizon", "openness", "sun", "insolation"]
