@@ -130,7 +130,7 @@ if [ "$DEM" = jacksboro ]; then
     # shellcheck disable=SC2086 # DAY's flags are words
     "$H" insolation utm.tif $DAY --backend truth --quiet -o tru_ins.tif
 fi
-for r in $(seq "$ROUNDS"); do
+for _ in $(seq "$ROUNDS"); do
     time_of hf_horizon_gles "$H" horizon utm.tif --step 22.5 "${HR[@]}" --quiet -o gles/hor
     time_of hf_horizon_cpu "$H" horizon utm.tif --step 22.5 "${HR[@]}" --backend cpu --quiet \
         -o cpu/hor
