@@ -30,11 +30,14 @@ if(TARGET hfshade_gdal)
   # run: the same bits on the CPU, fp16's level on GLES, computed whole when
   # it cannot stream, bad --tile (test_gis_stream.c).
   hfs_gis_cli_test(test_gis_stream)
-  # sun | insolation: a flat DEM against the library's sun (beam sin(e),
-  # V = 1), a wall's shadow on the truth and GLES, GLES against the truth
-  # on hills, a day's irradiation against the hand sum, a night, bad
-  # inputs (test_gis_sun.c).
+  # sun: a flat DEM against the library's sun (beam sin(e), V = 1), a
+  # wall's shadow on the truth and GLES, GLES against the truth on hills, a
+  # night, bad inputs of sun and insolation (test_gis_sun.c).
   hfs_gis_cli_test(test_gis_sun hfs_solar)
+  # insolation: a day's irradiation on a flat DEM against the hand sum, the
+  # sky's share on an open slope and against the truth on hills
+  # (test_gis_insolation.c).
+  hfs_gis_cli_test(test_gis_insolation hfs_solar)
   # insolation --sky-map: a uniform map is the isotropic sky, a sky bright
   # in the north lights north faces, the map's north, GLES against the
   # truth with the map, bad maps (test_gis_sky_cli.c).
