@@ -1,6 +1,10 @@
 # Local lights in the CPU reference (runtime/cpu/cpu_local.c, issue 4).
 hfs_add_test(test_cpu_local SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_local.c
              LIBS hfshade_lib m LABEL unit TIMEOUT 300)
+# Their building blocks: the Legendre fold, point slopes, cap window, entry
+# distance, partial swath against closed forms and brute force.
+hfs_add_test(test_cpu_local_parts SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_local_parts.c
+             LIBS hfshade_lib m LABEL unit TIMEOUT 120)
 # Timing / swath-mode driver (not a test): see the header of test_cpu_local_bench.c.
 add_executable(bench_cpu_local ${CMAKE_CURRENT_SOURCE_DIR}/test_cpu_local_bench.c)
 target_link_libraries(bench_cpu_local PRIVATE hfshade_lib hfshade_io hfshade_scene)
