@@ -16,9 +16,9 @@
  *            descriptions; the summary line counts the windows and the
  *            holes; --cog streamed is a COG of the same values;
  *   sun      sun (its halo the reach of the hills' shadows from the whole
- *            DEM's relief) and insolation (--radius 600) on the CPU
- *            reference: the whole run's bits; insolation without a radius
- *            is computed whole and says why;
+ *            DEM's relief) and insolation (--radius 600, and with
+ *            --beam-only) on the CPU reference: the whole run's bits;
+ *            insolation without a radius is computed whole and says why;
  *   gles     svf, openness and sun on GLES within the bounds below of the
  *            whole run (each window's heights normalized for the GPU by
  *            their own range: fp16's level, no seam larger);
@@ -209,6 +209,14 @@ static void test_sun_cpu(void)
             "insolation failed");
     CHECK(said("6 windows of at most 64 texels a side (halo 22)"));
     CHECK(compare("ins_s.tif", "ins_w.tif") == 0.0);
+    /* the beam alone streams too: one band a window, the whole run's bits */
+    REQUIRE(run("insolation utm.tif -o insb_w.tif " INS_PERIOD " --radius 600 --tile 0 "
+                "--beam-only --backend cpu") == 0 &&
+                run("insolation utm.tif -o insb_s.tif " INS_PERIOD " --radius 600 --tile 64 "
+                    "--beam-only --backend cpu") == 0,
+            "insolation --beam-only failed");
+    CHECK(said("6 windows of at most 64 texels a side (halo 22)"));
+    CHECK(compare("insb_s.tif", "insb_w.tif") == 0.0);
     REQUIRE(run("insolation utm.tif -o ins_all.tif " INS_PERIOD " --tile 64 --backend cpu") == 0,
             "insolation without a radius");
     CHECK(said("whole (over --tile 64, but no --radius"));
