@@ -59,8 +59,8 @@ gis_raster gis_run_raster(const gis_run *r, const char *extra);
 
 /* The product's raster (bands' descriptions and units) with the values
  * v, n a band: svf one band, openness and sun two (v, v + n), insolation
- * three (one with --beam-only); v NULL for a file written window by window.  Not horizon's
- * (gis_run_horizon_raster). */
+ * three (one with --beam-only); v NULL for a file written window by
+ * window.  Not horizon's (gis_run_horizon_raster). */
 gis_raster gis_run_product_raster(const gis_run *r, const float *v, size_t n);
 
 /* The bands of r's product (svf 1, openness and sun 2, insolation 3, or 1
