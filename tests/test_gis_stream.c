@@ -195,6 +195,22 @@ static void test_cpu(void)
  * relief; insolation's its --radius). */
 #define SUN_AT "--datetime 2026-06-21T06:50-04:00"
 #define INS_PERIOD "--from 2026-06-21T07:00-04:00 --to 2026-06-21T11:00-04:00 --step 60"
+/* insolation with --radius 600 (and extra) on the CPU, whole (NAME_w.tif)
+ * and in 64-texel windows (NAME_s.tif): 6 windows, the same bits. */
+static void insolation_streamed(const char *name, const char *extra)
+{
+    REQUIRE(run("insolation utm.tif -o %s_w.tif " INS_PERIOD " --radius 600 --tile 0 %s "
+                "--backend cpu", name, extra) == 0 &&
+                run("insolation utm.tif -o %s_s.tif " INS_PERIOD " --radius 600 --tile 64 %s "
+                    "--backend cpu", name, extra) == 0,
+            "insolation %s failed", extra);
+    CHECK(said("6 windows of at most 64 texels a side (halo 22)"));
+    char s[32], w[32];
+    snprintf(s, sizeof s, "%s_s.tif", name);
+    snprintf(w, sizeof w, "%s_w.tif", name);
+    CHECK(compare(s, w) == 0.0);
+}
+
 static void test_sun_cpu(void)
 {
     REQUIRE(run("sun utm.tif -o sun_w.tif " SUN_AT " --tile 0 --backend cpu") == 0 &&
@@ -202,21 +218,9 @@ static void test_sun_cpu(void)
             "sun failed");
     CHECK(said("sun of 150x110, 6 windows of at most 64 texels a side (halo "));
     CHECK(compare("sun_s.tif", "sun_w.tif") == 0.0);
-    REQUIRE(run("insolation utm.tif -o ins_w.tif " INS_PERIOD " --radius 600 --tile 0 --backend "
-                "cpu") == 0 &&
-                run("insolation utm.tif -o ins_s.tif " INS_PERIOD " --radius 600 --tile 64 "
-                    "--backend cpu") == 0,
-            "insolation failed");
-    CHECK(said("6 windows of at most 64 texels a side (halo 22)"));
-    CHECK(compare("ins_s.tif", "ins_w.tif") == 0.0);
+    insolation_streamed("ins", "");
     /* the beam alone streams too: one band a window, the whole run's bits */
-    REQUIRE(run("insolation utm.tif -o insb_w.tif " INS_PERIOD " --radius 600 --tile 0 "
-                "--beam-only --backend cpu") == 0 &&
-                run("insolation utm.tif -o insb_s.tif " INS_PERIOD " --radius 600 --tile 64 "
-                    "--beam-only --backend cpu") == 0,
-            "insolation --beam-only failed");
-    CHECK(said("6 windows of at most 64 texels a side (halo 22)"));
-    CHECK(compare("insb_s.tif", "insb_w.tif") == 0.0);
+    insolation_streamed("insb", "--beam-only");
     REQUIRE(run("insolation utm.tif -o ins_all.tif " INS_PERIOD " --tile 64 --backend cpu") == 0,
             "insolation without a radius");
     CHECK(said("whole (over --tile 64, but no --radius"));
