@@ -12,6 +12,10 @@
 #                             16N with 83 m cells (its 3 arc-second grid
 #                             taken as square: the DEM the GIS benchmarks
 #                             compare on), nodata -32768
+#   bench_fractal_utm REPO BUILD N OUT.tif
+#                             an `hfgen fractal` field of N x N (BUILD's
+#                             hfgen) as a UTM 16N Float32 GeoTIFF with 30 m
+#                             cells (SRTM's; tools/bench_dem.py)
 
 bench_gdal_need() {
     local need=() p
@@ -38,4 +42,12 @@ bench_jacksboro_workdir() {
 bench_jacksboro_utm() {
     gdal_translate -q -ot Float32 -a_srs EPSG:32616 -a_ullr 733000 4029000 766449 4000448 \
         -a_nodata -32768 "$1/data/jacksboro.png" "$2"
+}
+
+bench_fractal_utm() {
+    local pfm
+    pfm=$(mktemp --suffix=.pfm)
+    "$1/$2/tools/hfgen" fractal --size "${3}x$3" -o "$pfm" >/dev/null
+    /usr/bin/python3 "$1/tools/bench_dem.py" "$pfm" "$4" 30
+    rm -f "$pfm"
 }

@@ -50,15 +50,8 @@ DEM=${3:-jacksboro}
 RADIUS=${4:-0}
 H="$(pwd)/$B/tools/hfshade"
 PY=/usr/bin/python3
-need=()
-command -v gdalinfo >/dev/null || need+=(gdal-bin)
-command -v grass >/dev/null || need+=(grass-core)
-command -v saga_cmd >/dev/null || need+=(saga)
-$PY -c "from osgeo import gdal; import numpy" 2>/dev/null || need+=(python3-gdal python3-numpy)
-if [ ${#need[@]} -gt 0 ]; then
-    echo "installing the peers: ${need[*]}" >&2
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${need[@]}" >&2
-fi
+. tools/bench_gdal.sh
+bench_gdal_need grass-core saga # the peers (with gdal-bin, python3-gdal, numpy)
 C=$(mktemp -d)
 trap 'rm -rf "$C"' EXIT
 cd "$C"
@@ -68,7 +61,6 @@ if [ "$DEM" = jacksboro ]; then
         x = -84.25 - 0.5 * w * d; y = 36.25 + 0.5 * h * d; printf "%.10f %.10f %.10f %.10f\n", x, y, x + w * d, y - h * d}')
     gdal_translate -q -ot Int16 -a_srs EPSG:4326 -a_ullr "$ULX" "$ULY" "$LRX" "$LRY" -a_nodata -32768 \
         "$OLDPWD/data/jacksboro.png" geo.tif
-    . "$OLDPWD/tools/bench_gdal.sh"
     bench_jacksboro_utm "$OLDPWD" utm.tif
     echo "## Outputs on the input's grid (the geographic 3 arc-second DEM)"
     "$H" svf geo.tif --quiet -o geo_svf.tif
@@ -77,8 +69,7 @@ if [ "$DEM" = jacksboro ]; then
     done
 elif [[ "$DEM" =~ ^fractal:([0-9]+)$ ]]; then
     N=${BASH_REMATCH[1]}
-    "$OLDPWD/$B/tools/hfgen" fractal --size "${N}x$N" -o f.pfm
-    $PY "$OLDPWD/tools/bench_dem.py" f.pfm utm.tif 30
+    bench_fractal_utm "$OLDPWD" "$B" "$N" utm.tif
     echo "## $DEM: ${N}x$N, 30 m cells, $(gdalinfo -stats utm.tif | grep -oE 'Minimum=[^,]*, Maximum=[^,]*' | head -1) m"
 else
     echo "bench_gis.sh: DEM '$DEM' is not jacksboro or fractal:N" >&2

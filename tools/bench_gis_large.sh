@@ -46,22 +46,13 @@ SVF_DIRS=${LARGE_SVF_DIRS:-5}
 SUN_STEP_H=${LARGE_SUN_STEP_H:-2}
 H="$(pwd)/$B/tools/hfshade"
 PY=/usr/bin/python3
-need=()
-command -v gdalinfo >/dev/null || need+=(gdal-bin)
-command -v grass >/dev/null || need+=(grass-core)
-command -v saga_cmd >/dev/null || need+=(saga)
-$PY -c "from osgeo import gdal; import numpy" 2>/dev/null || need+=(python3-gdal python3-numpy)
-if [ ${#need[@]} -gt 0 ]; then
-    echo "installing the peers: ${need[*]}" >&2
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${need[@]}" >&2
-fi
+. tools/bench_gdal.sh
+bench_gdal_need grass-core saga # the peers (with gdal-bin, python3-gdal, numpy)
 R=$(pwd)
 C=$(mktemp -d)
 trap 'rm -rf "$C"' EXIT
 cd "$C"
-"$R/$B/tools/hfgen" fractal --size "${N}x$N" -o f.pfm
-$PY "$R/tools/bench_dem.py" f.pfm utm.tif 30
-rm f.pfm
+bench_fractal_utm "$R" "$B" "$N" utm.tif
 echo "## fractal:$N: ${N}x$N, 30 m cells, whole DEM, products: $PRODUCTS"
 now() { date +%s.%N; }
 secs() { awk -v a="$1" -v b="$(now)" 'BEGIN {printf "%.3f\n", b - a}'; }
