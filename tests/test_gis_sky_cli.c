@@ -332,7 +332,7 @@ static void test_beam_only(void)
 {
     static const char *const how[] = {"--backend cpu", "--backend cpu --method sweep"};
     for (int k = 0; k < 2; ++k) {
-        char full[16], beam[16];
+        char full[32], beam[32];
         snprintf(full, sizeof full, "full%d.tif", k);
         snprintf(beam, sizeof beam, "beam%d.tif", k);
         REQUIRE(run("insolation ridge.tif %s -o %s %s", day, full, how[k]) == 0 &&
