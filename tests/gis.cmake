@@ -14,3 +14,6 @@ hfs_add_test(test_gis_sky_map SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_sky_m
 # CPU backend's exact horizons on oblique azimuths, turns, threads.
 hfs_add_test(test_gis_sweep SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_sweep.c
              LIBS hfs_gis_core m LABEL unit TIMEOUT 60)
+# the windowed sweep's block bounds: never below a line's own bands.
+hfs_add_test(test_gis_sweep_blocks SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gis_sweep_blocks.c
+             LIBS hfs_gis_core m LABEL unit TIMEOUT 60)

@@ -126,11 +126,26 @@ static void test_disk(void)
     CHECK(gis_disk_visible(s, phi, e, a, (float)(e - a - 1e-4)) == 1.0, "below the disk");
     CHECK(gis_disk_visible(s, phi, e, a, (float)(e + a + 1e-4)) == 0.0, "above the disk");
     CHECK(gis_disk_visible(s, phi, e, a, HFS_HORIZON_NONE) == 1.0, "no terrain");
-    const double half = gis_disk_visible(s, phi, e, a, (float)e);
-    CHECK(fabs(half - 0.5) < 1e-3, "a chord through the centre: %.6f", half);
-    const double d = 0.5, seg = 1.0 - (acos(d) - d * sqrt(1.0 - d * d)) / PI;
-    const double v = gis_disk_visible(s, phi, e, a, (float)(e - d * a));
-    CHECK(fabs(v - seg) < 0.01, "a chord half a radius below: %.4f, area %.4f", v, seg);
+    /* the disk's share above a chord b0 radii above its centre, exactly
+     * (the closed form; b0 from the horizon as a float) */
+    const float chords[3] = {(float)e, (float)(e - 0.5 * a), (float)(e + 0.9 * a)};
+    for (int c = 0; c < 3; ++c) {
+        const double b0 = ((double)chords[c] - e) / a;
+        const double seg = (acos(b0) - b0 * sqrt(1.0 - b0 * b0)) / PI;
+        const double v = gis_disk_visible(s, phi, e, a, chords[c]);
+        CHECK(fabs(v - seg) < 1e-12, "a chord %.3f radii up: %.9f, area %.9f", b0, v, seg);
+    }
+    /* tilted towards the disk's top (the weight rising with b): more of
+     * it above a chord through the centre than its area, as the closed
+     * form's moment says: 1/2 + (4/3) alpha n.t_v / (pi n.s) */
+    const double tilt[3] = {s[0] * cos(0.3) - cos(phi) * sin(e) * sin(0.3),
+                            s[1] * cos(0.3) - sin(phi) * sin(e) * sin(0.3),
+                            s[2] * cos(0.3) + cos(e) * sin(0.3)};
+    const double b0 = ((double)(float)e - e) / a, ns = cos(0.3), nv = sin(0.3);
+    const double want = (ns * (acos(b0) - b0 * sqrt(1.0 - b0 * b0)) +
+                         a * nv * (2.0 / 3.0) * pow(1.0 - b0 * b0, 1.5)) / (PI * ns);
+    const double tv = gis_disk_visible(tilt, phi, e, a, (float)e);
+    CHECK(tv > 0.5 && fabs(tv - want) < 1e-12, "tilted up: %.9f, want %.9f", tv, want);
     /* the tangent plane through the centre, the disk's upper half above
      * it: a horizon through the centre hides none of what lights it */
     const double up[3] = {-sin(e) * cos(phi), -sin(e) * sin(phi), cos(e)};

@@ -9,7 +9,8 @@ add_library(hfs_gis_core STATIC ${CMAKE_CURRENT_LIST_DIR}/gis/gis_math.c
             ${CMAKE_CURRENT_LIST_DIR}/gis/gis_resample.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_horizons.c
             ${CMAKE_CURRENT_LIST_DIR}/gis/gis_products.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_outputs.c
             ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sun.c ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sky_map.c
-            ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sweep.c)
+            ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sweep.c
+            ${CMAKE_CURRENT_LIST_DIR}/gis/gis_sweep_blocks.c)
 target_include_directories(hfs_gis_core PUBLIC ${CMAKE_CURRENT_LIST_DIR}/gis)
 target_link_libraries(hfs_gis_core PUBLIC hfshade_lib hfshade_io hfs_solar m)
 if(TARGET hfshade_gdal)

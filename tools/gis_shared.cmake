@@ -14,7 +14,8 @@ set(HFS_GIS_DIR ${CMAKE_CURRENT_LIST_DIR}/gis)
 add_library(hfshade_gis_shared SHARED
   ${HFS_GIS_DIR}/gis_api.c ${HFS_GIS_DIR}/gis_math.c ${HFS_GIS_DIR}/gis_resample.c
   ${HFS_GIS_DIR}/gis_horizons.c ${HFS_GIS_DIR}/gis_products.c ${HFS_GIS_DIR}/gis_sun.c
-  ${HFS_GIS_DIR}/gis_sky_map.c ${HFS_GIS_DIR}/gis_sweep.c ${HFS_GIS_DIR}/solar_position.c
+  ${HFS_GIS_DIR}/gis_sky_map.c ${HFS_GIS_DIR}/gis_sweep.c
+  ${HFS_GIS_DIR}/gis_sweep_blocks.c ${HFS_GIS_DIR}/solar_position.c
   ${HFS_GIS_DIR}/clear_sky.c
   ${PROJECT_SOURCE_DIR}/runtime/io/hole_fill.c ${PROJECT_SOURCE_DIR}/runtime/core/field_geom.c
   ${PROJECT_SOURCE_DIR}/runtime/core/parallel.c ${PROJECT_SOURCE_DIR}/runtime/core/lights.c)

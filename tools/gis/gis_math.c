@@ -132,6 +132,21 @@ double gis_disk_visible(const double n[3], double phi, double elev, double alpha
     const double ns = n[0] * cp * ce + n[1] * sp * ce + n[2] * se;
     const double nu = -n[0] * sp + n[1] * cp;
     const double nv = -n[0] * se * cp - n[1] * se * sp + n[2] * ce;
+    if (ns - alpha * sqrt(nu * nu + nv * nv) > 0.0) {
+        /* the whole disk in front of the plane: both integrals in closed
+         * form.  Over the unit disk the weight's a and b terms vanish (all
+         * = pi ns); above the chord b > b0 the a term still does, and the
+         * segment's area is acos b0 - b0 sqrt(1 - b0^2), its moment in b
+         * the integral of 2 b sqrt(1 - b^2) from b0 to 1. */
+        double b0 = ((double)gamma - elev) / alpha;
+        b0 = b0 < -1.0 ? -1.0 : b0 > 1.0 ? 1.0 : b0;
+        const double c2 = 1.0 - b0 * b0, c = sqrt(c2);
+        const double lit = ns * (acos(b0) - b0 * c) + alpha * nv * (2.0 / 3.0) * c2 * c;
+        const double v = lit / (PI * ns);
+        return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
+    }
+    /* a disk across the plane (a sun grazing the surface): the midpoint
+     * grid, its part behind the plane left out */
     double lit = 0.0, all = 0.0;
     for (int y = 0; y < GIS_DISK_GRID; ++y) {
         const double b = (2.0 * y + 1.0) / GIS_DISK_GRID - 1.0;

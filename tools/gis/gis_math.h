@@ -84,9 +84,12 @@ float gis_nodata_for(int has_nodata, double nodata, double lo, double hi);
  * the truth's shadowed over unshadowed render defines it.  1 for a ray
  * that meets no terrain (gis_horizon_none) or gamma <= elev - alpha, 0 for
  * gamma >= elev + alpha; between them the disk is taken as flat and the
- * horizon as straight across it (it spans 0.53 degrees of azimuth) and
- * both integrals are summed over a GIS_DISK_GRID^2 midpoint grid of the
- * disk; 0 when no part of it lies above the tangent plane. */
+ * horizon as straight across it (it spans 0.53 degrees of azimuth).  With
+ * the whole disk above the tangent plane both integrals are exact (closed
+ * form: a chord's segment of a disk under a linear weight); with the plane
+ * across the disk (a sun grazing the surface) they are summed over a
+ * GIS_DISK_GRID^2 midpoint grid of it; 0 when no part of it lies above
+ * the tangent plane. */
 #define GIS_DISK_GRID 32
 /* 1 when the horizon gamma crosses the disk: strictly between its lowest
  * and highest elevations as floats (a horizon window's ends, clamped to

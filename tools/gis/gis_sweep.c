@@ -3,6 +3,7 @@
  */
 #include "gis_sweep.h"
 
+#include "gis_sweep_blocks.h"
 #include "parallel.h"
 
 #include <math.h>
@@ -23,6 +24,7 @@ typedef struct sweep_dir {
     ptrdiff_t off, du, dv;
     double r;        /* v gained per column, |minor / major|, in [0, 1] */
     double unit;     /* horizontal world distance of one column: dx / |major| */
+    gis_sweep_frame frame; /* the same frame by axes and signs (the blocks') */
 } sweep_dir;
 
 static void dir_make(sweep_dir *d, const hfs_field *f, double phi)
@@ -41,6 +43,7 @@ static void dir_make(sweep_dir *d, const hfs_field *f, double phi)
     d->dv = xm ? sv * w : sv;
     d->r = fabs(mi) / fabs(ma);
     d->unit = f->dx / fabs(ma);
+    d->frame = (gis_sweep_frame){xm, su > 0, sv > 0, d->nu, d->nv, d->r};
 }
 
 /* The field's index of (u, v). */
@@ -62,12 +65,16 @@ static double crossing(const hfs_field *f, const sweep_dir *d, int u, double y)
     return f->zscale * (a + (y - y0) * (b - a));
 }
 
-/* The last crossing of the ray from (u, v) inside the field. */
-static int last_crossing(const sweep_dir *d, int u, int v)
+/* The last crossing of the ray from (u, v) inside the field, or where the
+ * ray stays in the field for more than cap + 1 columns any number above
+ * cap + 1 (its callers compare it with cap; most texels need no division:
+ * the margin of 2 columns covers its rounding). */
+static int last_crossing(const sweep_dir *d, int u, int v, int cap)
 {
     int last = d->nu - 1 - u;
-    if (d->r > 0.0) {
-        const double lim = (d->nv - 1 - v + EDGE_TOL) / d->r;
+    const double room = d->nv - 1 - v + EDGE_TOL;
+    if (d->r > 0.0 && room < (cap + 3.0) * d->r) {
+        const double lim = room / d->r;
         if (lim < last)
             last = (int)floor(lim);
     }
@@ -79,6 +86,7 @@ static int last_crossing(const sweep_dir *d, int u, int v)
 typedef struct hull {
     double *x, *z;
     int n;
+    double ztop;  /* the highest z added since the line began (a vertex) */
     double *rise; /* a worker's scratch for line_bounds, a column each */
 } hull;
 
@@ -90,6 +98,7 @@ static inline void hull_add(hull *h, double x, double z)
            (h->z[h->n - 1] - z) * (h->x[h->n - 2] - x) <= (h->z[h->n - 2] - z) * (h->x[h->n - 1] - x))
         --h->n;
     h->x[h->n] = x, h->z[h->n] = z, ++h->n;
+    h->ztop = z > h->ztop ? z : h->ztop;
 }
 
 /* A slope as a fraction, rise num (world units) over den columns: the
@@ -219,13 +228,21 @@ typedef struct sweep_window {
 static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h, int near,
                            const double *rise, int u, int v, const sweep_window *w)
 {
-    const int last = last_crossing(d, u, v);
+    const int last = last_crossing(d, u, v, near);
     if (last < 1)
         return (float)w->lo;
     const double zp = f->zscale * f->z[texel_of(d, u, v)];
     /* the hull first: a steep far horizon leaves the near candidates
-     * fewer wins */
-    slope best = h->n > 0 && last > near ? hull_tangent(h, u, zp) : (slope){-1.0, 0.0};
+     * fewer wins.  Not searched where no slope to it reaches the window
+     * (a sun above a ridge's texels): its highest point as if at its
+     * nearest (or, below the texel, at its farthest); then its tangent
+     * could only lose to the bottom or to a near candidate. */
+    slope best = {-1.0, 0.0};
+    if (h->n > 0 && last > near) {
+        const double top = h->ztop - zp, span = (top >= 0.0 ? h->x[h->n - 1] : h->x[0]) - u;
+        if (!(top + w->eps < w->rlo * span))
+            best = hull_tangent(h, u, zp);
+    }
     if (best.den > 0.0 && best.num >= w->rhi * best.den)
         return (float)w->hi;
     int own = last < near ? last : near;
@@ -295,7 +312,8 @@ static band band_column(const hfs_field *f, const sweep_dir *d, long k, int u)
     band b = {HUGE_VAL, -HUGE_VAL, 0.0, 0.0, 0.0};
     if (y < -1.5 || y > d->nv + 0.5)
         return b;
-    const int j0 = (int)fmax(floor(y) - 2.0, 0.0), j1 = (int)fmin(floor(y) + 3.0, d->nv - 1);
+    const int fy = (int)floor(y); /* y is within the field's rows, give or take 2 */
+    const int j0 = fy - 2 > 0 ? fy - 2 : 0, j1 = fy + 3 < d->nv - 1 ? fy + 3 : d->nv - 1;
     double prev = 0.0;
     for (int j = j0; j <= j1; ++j) {
         const double z = zs * f->z[texel_of(d, u, j)];
@@ -333,25 +351,32 @@ static band band_column(const hfs_field *f, const sweep_dir *d, long k, int u)
  * lines skip both, and the result is the same as the whole search's.
  * rise[u] is g for the cells from column u to u + 1 alone: a texel's own
  * columns u .. u + m rise at most the largest of theirs. */
+static void extent_decide(const gis_sweep_extent *e, double r, const sweep_window *w, int near,
+                          int *use_hull, int *own)
+{
+    const double g = e->du + r * e->dv;
+    *use_hull = !(e->zmax - e->zmin + w->eps < w->rlo * near ||
+                  g + 0.5 * e->dv_abs / near + w->eps < w->rlo);
+    *own = !(g + w->eps < w->rlo);
+}
+
+/* The decision above from line k's own bands, and each column's rise. */
 static void line_bounds(const hfs_field *f, const sweep_dir *d, long k, const sweep_window *w,
                         int near, double *rise, int *use_hull, int *own)
 {
-    double zmin = HUGE_VAL, zmax = -HUGE_VAL, du = 0.0, dv = 0.0, dv_abs = 0.0;
+    gis_sweep_extent e = {HUGE_VAL, -HUGE_VAL, 0.0, 0.0, 0.0};
     band b = band_column(f, d, k, 0);
     for (int u = 0; u < d->nu; ++u) {
         const band next = u + 1 < d->nu ? band_column(f, d, k, u + 1) : b;
         rise[u] = b.du + d->r * (next.dv > b.dv ? next.dv : b.dv);
-        zmin = b.zmin < zmin ? b.zmin : zmin;
-        zmax = b.zmax > zmax ? b.zmax : zmax;
-        du = b.du > du ? b.du : du;
-        dv = b.dv > dv ? b.dv : dv;
-        dv_abs = b.dv_abs > dv_abs ? b.dv_abs : dv_abs;
+        e.zmin = b.zmin < e.zmin ? b.zmin : e.zmin;
+        e.zmax = b.zmax > e.zmax ? b.zmax : e.zmax;
+        e.du = b.du > e.du ? b.du : e.du;
+        e.dv = b.dv > e.dv ? b.dv : e.dv;
+        e.dv_abs = b.dv_abs > e.dv_abs ? b.dv_abs : e.dv_abs;
         b = next;
     }
-    const double g = du + d->r * dv;
-    *use_hull = !(zmax - zmin + w->eps < w->rlo * near ||
-                  g + 0.5 * dv_abs / near + w->eps < w->rlo);
-    *own = !(g + w->eps < w->rlo);
+    extent_decide(&e, d->r, w, near, use_hull, own);
 }
 
 /* The lines of an azimuth's sweep: k0..k1 (v = k + r u), each walked from
@@ -364,9 +389,14 @@ static void sweep_lines(const sweep_dir *d, long *k0, long *k1)
 
 /* One azimuth's lines k in [ka, kb): each walked from the field's end.
  * Each texel is written by exactly one line (the one nearest its own),
- * so any split of the lines gives the same values.  eps: line_bounds'. */
+ * so any split of the lines gives the same values.  eps: line_bounds'.
+ * With blocks (a window above the horizontal) a line is first decided
+ * from them, and only where they leave it open from its own bands: the
+ * blocks' extent is never below the bands', so the two agree wherever
+ * the blocks clear a line (gis_sweep_blocks.h). */
 static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, double hi,
-                          double eps, long ka, long kb, hull *h, float *out)
+                          double eps, const gis_sweep_blocks *blocks, long ka, long kb, hull *h,
+                          float *out)
 {
     sweep_dir d;
     dir_make(&d, f, phi);
@@ -375,11 +405,16 @@ static void sweep_azimuth(const hfs_field *f, double phi, int near, double lo, d
     for (long k = ka; k < kb; ++k) {
         int use_hull = 1, own = 1;
         const double *rise = NULL;
-        if (w.rlo > 0.0) {
+        if (w.rlo > 0.0 && blocks) {
+            const gis_sweep_extent e = gis_sweep_blocks_line(blocks, &d.frame, k);
+            extent_decide(&e, r, &w, near, &use_hull, &own);
+        }
+        if (w.rlo > 0.0 && (use_hull || own)) {
             line_bounds(f, &d, k, &w, near, h->rise, &use_hull, &own);
             rise = own ? h->rise : NULL; /* not the whole line's columns: maybe a texel's */
         }
         h->n = 0;
+        h->ztop = -HUGE_VAL;
         for (int u = d.nu - 1; u >= 0; --u) {
             const int ui = u + near; /* the column that joins the hull now */
             if (use_hull && ui <= d.nu - 1) {
@@ -402,6 +437,7 @@ typedef struct sweep_run {
     const double *phi;
     double lo, hi, eps;
     int bands;   /* each azimuth's lines in this many parts */
+    const gis_sweep_blocks *blocks; /* with a window above the horizontal, else NULL */
     float *out;
     hull *hulls; /* one per worker */
 } sweep_run;
@@ -418,8 +454,9 @@ static void sweep_row(void *ctx, int row, int worker)
     long k0, k1;
     sweep_lines(&d, &k0, &k1);
     const long n = k1 + 1 - k0;
-    sweep_azimuth(s->f, s->phi[k], GIS_SWEEP_NEAR, s->lo, s->hi, s->eps, k0 + n * b / s->bands,
-                  k0 + n * (b + 1) / s->bands, &s->hulls[worker], s->out + (size_t)k * texels);
+    sweep_azimuth(s->f, s->phi[k], GIS_SWEEP_NEAR, s->lo, s->hi, s->eps, s->blocks,
+                  k0 + n * b / s->bands, k0 + n * (b + 1) / s->bands, &s->hulls[worker],
+                  s->out + (size_t)k * texels);
 }
 
 int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads, float *out,
@@ -455,14 +492,16 @@ int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int thre
         hulls[w].rise = malloc(side * sizeof *hulls[w].rise);
         rc = hulls[w].x && hulls[w].z && hulls[w].rise ? HFS_OK : HFS_E_NOMEM;
     }
+    /* a window above the horizontal: the lines decided from blocks first */
+    gis_sweep_blocks blocks = {0};
+    if (!rc && lo > 0.0)
+        rc = gis_sweep_blocks_make(&blocks, f, workers);
     if (!rc) {
         /* a candidate's rise is a difference of heights over at least a
          * column, rounded: far less than this on any field */
-        double zabs = 0.0;
-        for (size_t p = 0; lo > 0.0 && p < (size_t)f->width * (size_t)f->height; ++p)
-            zabs = fabs(f->zscale * f->z[p]) > zabs ? fabs(f->zscale * f->z[p]) : zabs;
+        const double zabs = lo > 0.0 ? gis_sweep_blocks_zabs(&blocks) : 0.0;
         sweep_run run = {.f = f, .phi = phi, .lo = lo, .hi = hi, .eps = 1e-9 * (1.0 + zabs),
-                         .bands = bands, .out = out,
+                         .bands = bands, .blocks = lo > 0.0 ? &blocks : NULL, .out = out,
                          .hulls = hulls};
         hfs_parallel_rows(n * bands, workers, sweep_row, &run, NULL, NULL);
     } else {
@@ -471,5 +510,6 @@ int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int thre
     for (int w = 0; hulls && w < workers; ++w)
         free(hulls[w].x), free(hulls[w].z), free(hulls[w].rise);
     free(hulls);
+    gis_sweep_blocks_free(&blocks);
     return rc;
 }
