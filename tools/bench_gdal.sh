@@ -14,8 +14,9 @@
 #                             compare on), nodata -32768
 #   bench_fractal_utm REPO BUILD N OUT.tif
 #                             an `hfgen fractal` field of N x N (BUILD's
-#                             hfgen) as a UTM 16N Float32 GeoTIFF with 30 m
-#                             cells (SRTM's; tools/bench_dem.py)
+#                             hfgen; BUILD under REPO unless absolute) as a
+#                             UTM 16N Float32 GeoTIFF with 30 m cells
+#                             (SRTM's; tools/bench_dem.py)
 
 bench_gdal_need() {
     local need=() p
@@ -47,7 +48,9 @@ bench_jacksboro_utm() {
 bench_fractal_utm() {
     local pfm
     pfm=$(mktemp --suffix=.pfm)
-    "$1/$2/tools/hfgen" fractal --size "${3}x$3" -o "$pfm" >/dev/null
+    local b="$1/$2"
+    [[ "$2" = /* ]] && b=$2 # an absolute BUILD as it is
+    "$b/tools/hfgen" fractal --size "${3}x$3" -o "$pfm" >/dev/null
     /usr/bin/python3 "$1/tools/bench_dem.py" "$pfm" "$4" 30
     rm -f "$pfm"
 }

@@ -55,7 +55,8 @@ int gis_sweep_horizons(const hfs_field *f, const double *phi, int n, int threads
  * lo skips its hull, or its texels' own columns, or both (a high sun's
  * lines do), and a texel whose own columns cannot rise to lo skips them:
  * the same values, from bounds that cannot miss (gis_sweep.c's
- * line_bounds).  [-pi/2, pi/2] is gis_sweep_horizons. */
+ * line_bounds, after the field's blocks: gis_sweep_blocks.h).  [-pi/2,
+ * pi/2] is gis_sweep_horizons. */
 int gis_sweep_horizons_in(const hfs_field *f, const double *phi, int n, int threads, double lo,
                           double hi, float *out, hfs_error *err);
 
