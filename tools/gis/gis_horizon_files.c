@@ -37,9 +37,7 @@ int gis_horizon_files_create(gis_horizon_files **out, const gis_run *r, hfs_erro
     f->r = r;
     f->texels = (size_t)r->dem.width * (size_t)r->dem.height;
     f->workers = hfs_parallel_default_threads();
-    size_t slots = 2 * (size_t)f->workers;
-    const size_t fit = GIS_HORIZON_FILES_FLOATS / (f->texels ? f->texels : 1);
-    slots = slots > fit ? fit : slots;
+    size_t slots = GIS_HORIZON_FILES_FLOATS / (f->texels ? f->texels : 1);
     slots = slots > (size_t)r->a->n_azimuths ? (size_t)r->a->n_azimuths : slots;
     f->slots = slots < 1 ? 1 : (int)slots;
     f->q = calloc((size_t)f->slots, sizeof *f->q);
