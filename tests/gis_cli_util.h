@@ -145,6 +145,21 @@ static const char *meta(const raster *r, const char *key)
     return v ? v : "";
 }
 
+/* Whether r is encoded as gis_raster.h writes a GTiff: Float32 in 256 x
+ * 256 tiles, DEFLATE, with the floating-point predictor (predictor "3")
+ * or none (NULL: a plain raster, horizon angles). */
+static inline int encoded_as(const raster *r, const char *predictor)
+{
+    GDALRasterBandH b = GDALGetRasterBand(r->ds, 1);
+    int bx = 0, by = 0;
+    GDALGetBlockSize(b, &bx, &by);
+    const char *c = GDALGetMetadataItem(r->ds, "COMPRESSION", "IMAGE_STRUCTURE");
+    const char *p = GDALGetMetadataItem(r->ds, "PREDICTOR", "IMAGE_STRUCTURE");
+    const int pred_ok = predictor ? p && !strcmp(p, predictor) : !p || !strcmp(p, "1");
+    return GDALGetRasterDataType(b) == GDT_Float32 && bx == 256 && by == 256 && c &&
+           !strcmp(c, "DEFLATE") && pred_ok;
+}
+
 /* The same as a number (NaN when absent). */
 static inline double meta_num(const raster *r, const char *key)
 {

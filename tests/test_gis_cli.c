@@ -160,6 +160,7 @@ static void test_products(const raster *in, const float *z)
     CHECK(!strcmp(meta(&r, "HFS_DIRECTIONS"), "16") && !strcmp(meta(&r, "HFS_RADIUS_M"), "0"));
     CHECK(!strcmp(meta(&r, "HFS_AZIMUTH_CONVENTION"), "ccw-east"));
     CHECK(!strcmp(meta(&r, "HFS_BACKEND"), "cpu"));
+    CHECK(encoded_as(&r, "3")); /* smooth values: the floating-point predictor */
     free_raster(&r);
 
     REQUIRE(run("openness geo.tif -o open.tif --backend cpu --directions 8") == 0,
@@ -176,6 +177,9 @@ static void test_products(const raster *in, const float *z)
                                         "hor_337_5.tif"};
     for (int k = 0; k < 4; ++k)
         check_grid(names[k], in, z, ND, 0.0, 90.0);
+    REQUIRE(read_raster(names[1], &r) == 0, "%s", names[1]);
+    CHECK(encoded_as(&r, NULL)); /* angles in runs of 0: no predictor */
+    free_raster(&r);
     CHECK(access(tpath("hor_360_0.tif"), F_OK) != 0 && lines_of("err.txt") == 1);
 }
 

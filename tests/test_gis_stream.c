@@ -187,6 +187,10 @@ static void test_cpu(void)
             "horizon failed");
     CHECK(compare("hs_030.tif", "hw_030.tif") == 0.0);
     CHECK(compare("hs_200.tif", "hw_200.tif") == 0.0);
+    raster hs;
+    REQUIRE(read_raster("hs_030.tif", &hs) == 0, "hs_030.tif");
+    CHECK(encoded_as(&hs, NULL)); /* streamed horizons plain too (gis_raster.h) */
+    free_raster(&hs);
     CHECK(left_over(NULL) == 0);
 }
 

@@ -203,6 +203,15 @@ static void check_closed_forms(void)
     const double want = atan(top / (7.5 * dx * sqrt(1.0 + 0.16)));
     CHECK(fabs(out[2 * W] - want) <= 1e-6, "ridge: %.7f rad, the closed form %.7f",
           (double)out[2 * W], want);
+    /* the same ridge within the near columns, its top where the ray
+     * crosses the row: from (0, 3) at 0.8 rows a column, row 4 at column
+     * 1.25 and row 5 at column 2.5, the chord's slope rising to the
+     * crossing (top / 2.5 a column) and falling after it */
+    const double steep = atan(0.8);
+    CHECK(gis_sweep_horizons(&f, &steep, 1, 1, out, &err) == HFS_OK, "near ridge: %s", err.msg);
+    const double near_want = atan(top / (2.5 * dx * sqrt(1.0 + 0.64)));
+    CHECK(fabs(out[3 * W] - near_want) <= 1e-6, "near ridge: %.7f rad, the closed form %.7f",
+          (double)out[3 * W], near_want);
 }
 
 /* A dome (z = -(i - W/2)^2 / 100 - j^2 / 20), concave along every line:

@@ -184,6 +184,7 @@ static void test_horizon(void)
         const char *a = k ? "hm_135.tif" : "hm_000.tif", *b = k ? "hs_135.tif" : "hs_000.tif";
         EXPECT(read_raster(a, &m) == 0 && read_raster(b, &s) == 0, "%s", a);
         EXPECT(m.v && s.v && !memcmp(m.v, s.v, sizeof(float) * W * H), "%s differs from %s", a, b);
+        EXPECT(encoded_as(&m, NULL), "%s: not plain DEFLATE tiles of 256", a); /* as the tiles */
         free_raster(&m), free_raster(&s);
     }
 }

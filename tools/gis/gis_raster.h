@@ -7,9 +7,9 @@
  *   - dataset metadata items NAME=VALUE naming the product and how it was
  *     made (HFS_PRODUCT, HFS_DIRECTIONS, ...; docs/GIS.md lists them);
  *   - GTiff: TILED=YES, 256 x 256 blocks, COMPRESS=DEFLATE, PREDICTOR=3
- *     (floating-point prediction); with cog set, GDAL's COG driver instead
- *     (a Cloud Optimized GeoTIFF: COMPRESS=DEFLATE, PREDICTOR=YES,
- *     OVERVIEWS=AUTO).
+ *     (floating-point prediction; none for a plain raster); with cog set,
+ *     GDAL's COG driver instead (a Cloud Optimized GeoTIFF:
+ *     COMPRESS=DEFLATE, PREDICTOR=YES or NO, OVERVIEWS=AUTO).
  * Encoded in a GDAL memory file and written through the run's output set
  * (hfs_gdal_write_copy): nothing is left behind on failure.  A value that
  * is neither finite nor the nodata value is refused (SPEC: no NaN or Inf
@@ -40,6 +40,9 @@ typedef struct gis_raster {
     double nodata;
     const char *meta[GIS_RASTER_MAX_META]; /* "NAME=VALUE", NULL-terminated */
     int cog;
+    int plain; /* no predictor: values in long runs (horizon angles, 0
+                  wherever the sky is open) shrink more, and faster,
+                  without one */
 } gis_raster;
 
 int gis_raster_write(hfs_outputs *o, const char *path, const gis_raster *r, hfs_error *err);
@@ -51,9 +54,9 @@ int gis_raster_encode(const char *path, const gis_raster *r, void **bytes, size_
 
 /* What a file written window by window (gis_raster_stream.h) shares with
  * gis_raster_write's: */
-/* the creation options, GTiff's and the COG driver's (NULL-terminated); */
-extern const char *const gis_raster_gtiff_options[];
-extern const char *const gis_raster_cog_options[];
+/* the creation options, GTiff's or the COG driver's, with the predictor
+ * or plain (a list to CSLDestroy); */
+char **gis_raster_options(int cog, int plain);
 
 /* r's georeferencing, bands' descriptions, units and nodata value, and
  * metadata items set on ds (r's band values are not read); */

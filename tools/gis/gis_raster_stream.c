@@ -19,6 +19,7 @@ struct gis_raster_stream {
     char *part;      /* --cog: the GTiff, FILE.part; NULL: the GTiff is FILE */
     int n_bands;
     double nodata;
+    int plain; /* no predictor (gis_raster.h) */
 };
 
 /* The last GDAL error after a call that reports none itself (GDALClose
@@ -58,12 +59,13 @@ int gis_raster_stream_open(gis_raster_stream **out, const char *path, const char
     if (!s)
         return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", path);
     s->path = path, s->file = file, s->n_bands = r->n_bands, s->nodata = r->nodata;
+    s->plain = r->plain;
     int rc = r->cog ? make_part(s, err) : HFS_OK;
     if (rc) {
         free(s);
         return rc;
     }
-    char **opts = CSLDuplicate((char **)gis_raster_gtiff_options);
+    char **opts = gis_raster_options(0, r->plain);
     opts = CSLSetNameValue(opts, "BIGTIFF", "IF_SAFER");
     CPLPushErrorHandler(CPLQuietErrorHandler);
     CPLErrorReset();
@@ -122,7 +124,7 @@ static int make_cog(gis_raster_stream *s, hfs_error *err)
 {
     GDALDatasetH src = GDALOpenEx(s->part, GDAL_OF_RASTER | GDAL_OF_READONLY, NULL, NULL, NULL);
     GDALDriverH cog = GDALGetDriverByName("COG");
-    char **opts = CSLDuplicate((char **)gis_raster_cog_options);
+    char **opts = gis_raster_options(1, s->plain);
     CPLErrorReset();
     GDALDatasetH out = src && cog ? GDALCreateCopy(cog, s->file, src, FALSE, opts, NULL, NULL)
                                   : NULL;

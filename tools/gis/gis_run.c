@@ -78,5 +78,6 @@ gis_raster gis_run_horizon_raster(const gis_run *r, int k, const float *deg,
              t->value, r->a->convention == GIS_COMPASS ? "clockwise from north"
                                                        : "counter-clockwise from east");
     g.band[0] = (gis_band){deg, t->what, "degrees"};
+    g.plain = 1; /* angles in runs of 0: no predictor (gis_raster.h) */
     return g;
 }

@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define BLOCK 256 /* the files' blocks (gis_raster_gtiff_options) */
+#define BLOCK 256 /* the files' blocks (gis_raster_options) */
 
 /* One window: the texels read (x0, y0, w, h) and the output's texels it
  * computes (ix, iy, iw, ih), both in the DEM's grid: the tiles' own

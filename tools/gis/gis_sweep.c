@@ -181,6 +181,21 @@ static inline int pieces_of(const hfs_field *f, const sweep_dir *d, int u, doubl
     return 1;
 }
 
+/* best raised by a concave piece's (C < 0) interior: where the slope of
+ * (z(a) - zp) / (m + a) turns, C a^2 + 2 C m a + (B m - A + zp) = 0, the
+ * root past -m, if it lies inside the piece. */
+static inline slope piece_root(const piece *p, double m, double zp, slope best)
+{
+    const double q = m * m - (p->B * m - p->A + zp) / p->C;
+    if (q >= 0.0) {
+        const double a = -m + sqrt(q), den = m + a;
+        const double num = p->A + (p->B + p->C * a) * a - zp;
+        if (a > p->lo && a < p->hi && den > 0.0 && steeper(num, den, best))
+            best = (slope){num, den};
+    }
+    return best;
+}
+
 /* best raised to the steepest slope (rise per column) from height zp at
  * column distance m before the piece's a = 0: its ends, and inside it
  * where the slope of (z(a) - zp) / (m + a) turns (a concave piece, C < 0:
@@ -198,16 +213,57 @@ static inline slope piece_max(const piece *p, double m, double zp, slope best)
         if (den > 0.0 && steeper(num, den, best))
             best = (slope){num, den};
     }
-    if (p->C < 0.0) { /* C a^2 + 2 C m a + (B m - A + zp) = 0, the root past -m */
-        const double q = m * m - (p->B * m - p->A + zp) / p->C;
-        if (q >= 0.0) {
-            const double a = -m + sqrt(q), den = m + a;
-            const double num = p->A + (p->B + p->C * a) * a - zp;
-            if (a > p->lo && a < p->hi && den > 0.0 && steeper(num, den, best))
-                best = (slope){num, den};
+    return p->C < 0.0 ? piece_root(p, m, zp, best) : best;
+}
+
+/* best raised by texel (u, v)'s own ray over its first `own` columns
+ * (own >= 1), the ray within the field's rows there (v + own r <= nv - 1,
+ * nv >= 2): pieces_of's pieces and piece_max's candidates with each
+ * surface point read once.  A column's crossing is taken as the next
+ * column's start (A: the same bits as piece_max's a = 0 end), a row's
+ * crossing along its row, the last column's end as a crossing too; a
+ * piece's coefficients are made only for the slope leaving the texel and
+ * where the piece bulges (the same arithmetic as piece_make and
+ * piece_max there).  The ends piece_max also takes at a = 1 and at a
+ * row's crossing are those same points by another rounding. */
+static slope own_inside(const hfs_field *f, const sweep_dir *d, int u, int v, int own, double zp,
+                        slope best)
+{
+    const double r = d->r, zs = f->zscale;
+    const ptrdiff_t su = d->du, sv = d->dv;
+    for (int m = 0;; ++m) {
+        const double y = v + m * r;
+        int y0 = (int)y;
+        y0 = y0 > d->nv - 2 ? d->nv - 2 : y0;
+        const double b0 = y - y0;
+        const ptrdiff_t t = (ptrdiff_t)texel_of(d, u + m, y0);
+        const double z00 = zs * f->z[t], z01 = zs * f->z[t + sv];
+        const double A = z00 + (z01 - z00) * b0; /* column u + m's crossing */
+        if (m > 0 && steeper(A - zp, m, best))
+            best = (slope){A - zp, m};
+        if (m == own)
+            return best;
+        const double z10 = zs * f->z[t + su], z11 = zs * f->z[t + su + sv];
+        const double e = z11 - z10 - z01 + z00;
+        const int cross = y0 + 1 < y + r && y0 + 1 < d->nv - 1;
+        const double cut = cross ? (y0 + 1 - y) / r : 1.0;
+        if (m == 0 || e * r < 0.0) {
+            const piece p = {0.0, cut, A, z10 - z00 + (z01 - z00) * r + e * b0, e * r};
+            if (m == 0 && steeper(p.B, 1.0, best)) /* the slope leaving the texel */
+                best = (slope){p.B, 1.0};
+            best = p.C < 0.0 ? piece_root(&p, m, zp, best) : best;
+        }
+        if (cross) { /* row y0 + 1's crossing, then the cell above it */
+            const double zr = z01 + (z11 - z01) * cut - zp;
+            if (steeper(zr, m + cut, best))
+                best = (slope){zr, m + cut};
+            const double z02 = zs * f->z[t + 2 * sv], z12 = zs * f->z[t + su + 2 * sv];
+            if ((z12 - z11 - z02 + z01) * r < 0.0) {
+                const piece q = piece_make(f, d, u + m, y0 + 1, cut, 1.0, b0 - 1.0, r);
+                best = piece_root(&q, m, zp, best);
+            }
         }
     }
-    return best;
 }
 
 /* The angles wanted, [lo, hi] radians (hfs_horizon_desc's window; the
@@ -252,12 +308,15 @@ static float texel_horizon(const hfs_field *f, const sweep_dir *d, const hull *h
             g = rise[u + m] > g ? rise[u + m] : g;
         own = g + w->eps < w->rlo ? 0 : own;
     }
-    for (int m = 0; m < own; ++m) { /* the cells from column u + m to u + m + 1 */
-        piece p[2];
-        const int n = pieces_of(f, d, u + m, v + m * d->r, p);
-        for (int k = 0; k < n; ++k)
-            best = piece_max(&p[k], m, zp, best);
-    }
+    if (own > 0 && d->nv >= 2 && v + own * d->r <= d->nv - 1)
+        best = own_inside(f, d, u, v, own, zp, best);
+    else
+        for (int m = 0; m < own; ++m) { /* the cells from column u + m to u + m + 1 */
+            piece p[2];
+            const int n = pieces_of(f, d, u + m, v + m * d->r, p);
+            for (int k = 0; k < n; ++k)
+                best = piece_max(&p[k], m, zp, best);
+        }
     if (!(best.den > 0.0) || best.num <= w->rlo * best.den)
         return (float)w->lo;
     if (best.num >= w->rhi * best.den)

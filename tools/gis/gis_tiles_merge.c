@@ -82,8 +82,9 @@ static int merge_one(const gis_tiles_plan_t *m, int s, const char *path, const c
     }
     if (!rc) {
         describe_like(v, names[0]);
-        char **opts = CSLDuplicate((char **)(cog ? gis_raster_cog_options
-                                                 : gis_raster_gtiff_options));
+        /* the tiles' own choice of predictor (gis_raster.h: horizons plain) */
+        const char *product = GDALGetMetadataItem(v, "HFS_PRODUCT", NULL);
+        char **opts = gis_raster_options(cog, product && !strcmp(product, "horizon"));
         o = GDALCreateCopy(GDALGetDriverByName(cog ? "COG" : "GTiff"), tmp, v, FALSE, opts,
                            NULL, NULL);
         CSLDestroy(opts);
