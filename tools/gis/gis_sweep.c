@@ -65,10 +65,11 @@ static double crossing(const hfs_field *f, const sweep_dir *d, int u, double y)
     return f->zscale * (a + (y - y0) * (b - a));
 }
 
-/* The last crossing of the ray from (u, v) inside the field, or where the
- * ray stays in the field for more than cap + 1 columns any number above
- * cap + 1 (its callers compare it with cap; most texels need no division:
- * the margin of 2 columns covers its rounding). */
+/* The last crossing of the ray from (u, v) inside the field; where the
+ * ray stays within the rows for more than cap + 2 columns, possibly a
+ * larger number (the field's end along u).  Its callers only compare it
+ * with cap, and most texels are spared the division (the margin covers
+ * its rounding). */
 static int last_crossing(const sweep_dir *d, int u, int v, int cap)
 {
     int last = d->nu - 1 - u;
