@@ -3,6 +3,9 @@ hfs_add_test(test_truth_geom SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_geom
              LIBS hfs_truth LABEL unit TIMEOUT 120)
 hfs_add_test(test_truth_render SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_render.c
              LIBS hfs_truth LABEL unit TIMEOUT 300)
+# The same with local (sphere) lights: over a plane, beside a wall.
+hfs_add_test(test_truth_local SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_truth_local.c
+             LIBS hfs_truth LABEL unit TIMEOUT 300)
 # Timing of the ground truth (not a test): see the header of bench_truth.c.
 add_executable(bench_truth ${CMAKE_CURRENT_SOURCE_DIR}/bench_truth.c)
 target_link_libraries(bench_truth PRIVATE hfs_truth)
