@@ -169,6 +169,7 @@ static void test_run_merge(void)
         off += memcmp(&m.v[p], &s.v[p], sizeof(float)) != 0;
     EXPECT(off == 0, "%ld texels of the mosaic differ from the streamed run", off);
     EXPECT(!strcmp(meta(&m, "HFS_PRODUCT"), "svf"), "metadata: %s", meta(&m, "HFS_PRODUCT"));
+    EXPECT(encoded_as(&m, "3"), "a.tif: not DEFLATE tiles of 256 with the predictor, as its tiles");
     free_raster(&m), free_raster(&s);
 }
 

@@ -43,12 +43,17 @@ static int check_tiles(const gis_tiles_plan_t *m, int s, hfs_error *err)
 }
 
 /* The first tile's metadata and band descriptions, units and nodata onto
- * the VRT (GDALBuildVRT keeps only the nodata). */
-static void describe_like(GDALDatasetH vrt, const char *tile)
+ * the VRT (GDALBuildVRT keeps only the nodata); 1 when the tile is plain
+ * (no predictor: gis_raster.h), so that the mosaic is written as its
+ * tiles were. */
+static int describe_like(GDALDatasetH vrt, const char *tile)
 {
     GDALDatasetH t = GDALOpen(tile, GA_ReadOnly);
     if (!t)
-        return;
+        return 0;
+    /* the tiles' own encoding: plain where they have no predictor */
+    const char *pred = GDALGetMetadataItem(t, "PREDICTOR", "IMAGE_STRUCTURE");
+    const int plain = !pred || !strcmp(pred, "1");
     GDALSetMetadata(vrt, GDALGetMetadata(t, NULL), NULL);
     for (int b = 1; b <= GDALGetRasterCount(t) && b <= GDALGetRasterCount(vrt); ++b) {
         GDALRasterBandH from = GDALGetRasterBand(t, b), to = GDALGetRasterBand(vrt, b);
@@ -56,6 +61,7 @@ static void describe_like(GDALDatasetH vrt, const char *tile)
         GDALSetRasterUnitType(to, GDALGetRasterUnitType(from));
     }
     GDALClose(t);
+    return plain;
 }
 
 /* Output s: the VRT of its tiles in the plan's directory, copied to tmp
@@ -81,10 +87,8 @@ static int merge_one(const gis_tiles_plan_t *m, int s, const char *path, const c
                           CPLGetLastErrorMsg());
     }
     if (!rc) {
-        describe_like(v, names[0]);
-        /* the tiles' own choice of predictor (gis_raster.h: horizons plain) */
-        const char *product = GDALGetMetadataItem(v, "HFS_PRODUCT", NULL);
-        char **opts = gis_raster_options(cog, product && !strcmp(product, "horizon"));
+        const int plain = describe_like(v, names[0]); /* as the tiles were written */
+        char **opts = gis_raster_options(cog, plain);
         o = GDALCreateCopy(GDALGetDriverByName(cog ? "COG" : "GTiff"), tmp, v, FALSE, opts,
                            NULL, NULL);
         CSLDestroy(opts);
