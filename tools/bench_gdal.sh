@@ -17,6 +17,9 @@
 #                             hfgen; BUILD under REPO unless absolute) as a
 #                             UTM 16N Float32 GeoTIFF with 30 m cells
 #                             (SRTM's; tools/bench_dem.py)
+#   bench_dem_utm REPO BUILD DEM OUT.tif
+#                             DEM by name: jacksboro or fractal:N (the
+#                             two above); 2 and a line for another name
 
 bench_gdal_need() {
     local need=() p
@@ -53,4 +56,15 @@ bench_fractal_utm() {
     "$b/tools/hfgen" fractal --size "${3}x$3" -o "$pfm" >/dev/null
     /usr/bin/python3 "$1/tools/bench_dem.py" "$pfm" "$4" 30
     rm -f "$pfm"
+}
+
+bench_dem_utm() {
+    if [ "$3" = jacksboro ]; then
+        bench_jacksboro_utm "$1" "$4"
+    elif [[ "$3" =~ ^fractal:([0-9]+)$ ]]; then
+        bench_fractal_utm "$1" "$2" "${BASH_REMATCH[1]}" "$4"
+    else
+        echo "$(basename "$0"): DEM '$3' is not jacksboro or fractal:N" >&2
+        return 2
+    fi
 }

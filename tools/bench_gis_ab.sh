@@ -20,14 +20,7 @@ DEM=${4:-jacksboro}
 C=$(mktemp -d)
 trap 'rm -rf "$C"' EXIT
 . tools/bench_gdal.sh
-if [ "$DEM" = jacksboro ]; then
-    bench_jacksboro_utm "$(pwd)" "$C/utm.tif"
-elif [[ "$DEM" =~ ^fractal:([0-9]+)$ ]]; then
-    bench_fractal_utm "$(pwd)" "$B" "${BASH_REMATCH[1]}" "$C/utm.tif"
-else
-    echo "bench_gis_ab.sh: DEM '$DEM' is not jacksboro or fractal:N" >&2
-    exit 2
-fi
+bench_dem_utm "$(pwd)" "$B" "$DEM" "$C/utm.tif" || exit 2
 DAY="--from 2026-06-21T00:00 --to 2026-06-22T00:00 --timezone -05:00 --step 30 --linke 3"
 now() { date +%s.%N; }
 # run NAME BUILD ARGS...: appends the wall seconds of one run to NAME.t

@@ -18,7 +18,7 @@
  * (the Jacksboro DEM's 16 horizon files 1.75% larger), and libdeflate's
  * share of the horizon command's CPU falls from 18% to 10%
  * (BENCHMARKS.md "GIS rasters").  The predictor helps smooth values (the
- * sky-view factor, irradiation: 12-14% smaller files) and hurts values in
+ * sky-view factor, irradiation: smaller files) and hurts values in
  * runs: horizon angles, 0 wherever the sky is open, are 13.9% smaller
  * without it (the Jacksboro DEM's 16 files) and cheaper to encode
  * (BENCHMARKS.md "Each point once, and plain horizon files"). */
