@@ -2,8 +2,8 @@
 # components, one Debian package each (cmake/package.cmake):
 #   runtime  libhfshade.so.MAJOR.MINOR.PATCH and its SONAME link,
 #            libhfshade_gis.so.* likewise (the GIS products)       libhfshade0
-#   dev      include/hfshade/{hfshade.h,hfshade_inputs.h,hfshade_envmap.h,
-#            hfshade_version.h,hfshade_gis.h}, the .so links,
+#   dev      include/hfshade/{hfshade.h,hfshade_inputs.h,hfshade_horizons.h,
+#            hfshade_envmap.h,hfshade_version.h,hfshade_gis.h}, the .so links,
 #            lib/pkgconfig/hfshade.pc, lib/cmake/hfshade/          libhfshade-dev
 #   python   lib/python3/dist-packages/hfshade/ (Debian's path for
 #            modules of every Python 3), docs/PYTHON.md's example   python3-hfshade

@@ -44,5 +44,5 @@ target_include_directories(hfshade_shared INTERFACE
   $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 # The public headers, installed to include/hfshade/ (cmake/install.cmake).
 set(HFS_PUBLIC_HEADERS ${CMAKE_CURRENT_SOURCE_DIR}/hfshade.h ${CMAKE_CURRENT_SOURCE_DIR}/hfshade_inputs.h
-    ${CMAKE_CURRENT_SOURCE_DIR}/hfshade_envmap.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/hfshade_horizons.h ${CMAKE_CURRENT_SOURCE_DIR}/hfshade_envmap.h
     ${HFS_GENERATED_INCLUDE}/hfshade_version.h CACHE INTERNAL "Installed headers")

@@ -39,6 +39,7 @@ libdir=$(sed -n 's/^libdir=${prefix}\///p' "$pc")   # lib or lib/<triplet>
 # 1. places
 for f in "$libdir/libhfshade.so.$version" "$libdir/libhfshade.so.$major" "$libdir/libhfshade.so" \
          include/hfshade/hfshade.h include/hfshade/hfshade_inputs.h include/hfshade/hfshade_version.h \
+         include/hfshade/hfshade_horizons.h \
          include/hfshade/hfshade_envmap.h include/hfshade/hfshade_gis.h \
          "$libdir/libhfshade_gis.so.$version" "$libdir/libhfshade_gis.so.$major" "$libdir/libhfshade_gis.so" \
          lib/python3/dist-packages/hfshade/__init__.py lib/python3/dist-packages/hfshade/_ffi.py \

@@ -50,6 +50,7 @@ case $libdir in /usr/lib|/usr/lib/*-linux-*) ;; *) bad "libdir '$libdir' is not 
 expect_files "libhfshade$major" "$libdir/libhfshade.so.$major" "$libdir/libhfshade.so.$version" \
     "$libdir/libhfshade_gis.so.$major" "$libdir/libhfshade_gis.so.$version"
 expect_files libhfshade-dev /usr/include/hfshade/hfshade.h /usr/include/hfshade/hfshade_inputs.h \
+    /usr/include/hfshade/hfshade_horizons.h \
     /usr/include/hfshade/hfshade_version.h /usr/include/hfshade/hfshade_envmap.h \
     /usr/include/hfshade/hfshade_gis.h "$libdir/libhfshade_gis.so" \
     "$libdir/libhfshade.so" "$libdir/pkgconfig/hfshade.pc" \

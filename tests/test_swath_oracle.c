@@ -49,12 +49,7 @@
  * n = 1..1024.  Bounds are stated at each check (exact where the definition
  * is exact arithmetic, ~10x the measurement where it is not).
  *
- * GLES side (runtime/gles/uniform_blocks.c, no driver): hfs_gles_pack_swath / pack_key of the
- * same swaths against the same closed form: header (elev_lo, elev_hi, n,
- * full) as the float of the closed-form window, the occlusion vector of
- * elev_hi, the sample directions (cos, sin)(k 2 pi / N) within the 64 float
- * ulps uniform_blocks.h allows for its nudge, the wedge placements (cos m a,
- * sin m a, mirror) at the closed-form wedge starts, the key record header.
+ * GLES side: tests/swath_oracle_gles.h.
  *
  * Modes nk1, tiny-alpha, black-sun (tests/oracle.cmake) each guard a defect
  * this oracle found (all fixed):
@@ -68,11 +63,9 @@
  *   black-sun   alpha < ulp(elev)/2 rendered black on the CPU backend (the
  *               window rounded to a point); CPU and truth must agree.
  */
-#include "lights.h"
-#include "test_sh_util.h" /* ref_legendre */
-#include "visibility.h"
-#include "uniform_blocks.h"
 #include "hfshade.h"
+#include "lights.h"
+#include "visibility.h"
 
 #include <float.h>
 #include <math.h>
@@ -82,97 +75,13 @@
 #include <string.h>
 #include <time.h>
 
-#define PI 3.14159265358979323846
-#define HALF_PI 1.57079632679489661923
-#define TWO_PI 6.28318530717958647692
-
 #define CHECK_MAX_MESSAGES 25
 #include "check.h"
 #define TEST_RNG_SEED 0x9e3779b97f4a7c15ull
 #include "test_rng.h"
 
-
-/* ---- the definition, written out ------------------------------------------------ */
-
-/* Round counts: 1, 2, 3, then m * 2^p for m = 4..7, p >= 0, ascending. */
-#define N_ROUND 256
-static double round_count[N_ROUND];
-static int n_round;
-
-static void init_round_counts(void)
-{
-    double r[N_ROUND];
-    int n = 0;
-    r[n++] = 1, r[n++] = 2, r[n++] = 3;
-    for (int p = 0; p < 60; ++p)
-        for (int m = 4; m <= 7; ++m)
-            r[n++] = m * ldexp(1.0, p);
-    /* already ascending: 4..7 * 2^p < 8 * 2^p = 4 * 2^(p+1) */
-    for (int i = 1; i < n; ++i)
-        if (!(r[i] > r[i - 1]))
-            abort();
-    memcpy(round_count, r, sizeof r);
-    n_round = n;
-}
-
-/* Index of N among the round counts, or -1. */
-static int round_index(double N)
-{
-    for (int i = 0; i < n_round; ++i)
-        if (round_count[i] == N)
-            return i;
-    return -1;
-}
-
-/* x reduced to [0, 2 pi). */
-static double wrap_2pi(double x)
-{
-    double r = fmod(x, TWO_PI);
-    if (r < 0)
-        r += TWO_PI;
-    return r;
-}
-
-/* Distance of x from the nearest integer. */
-static double frac_dist(double x) { return fabs(x - nearbyint(x)); }
-
-/* The NLP occlusion vector occ_l(sigma) = integral_{-1}^{sin sigma} P^_l,
- * P^_l = sqrt((2l+1)/2) P_l, from int P_l = (P_{l+1} - P_{l-1}) / (2l+1). */
-static void occ_closed(double sigma, double out[4])
-{
-    if (sigma < -HALF_PI)
-        sigma = -HALF_PI;
-    if (sigma > HALF_PI)
-        sigma = HALF_PI;
-    const double t = sin(sigma);
-    out[0] = sqrt(0.5) * (t + 1.0);
-    for (int l = 1; l < 4; ++l)
-        out[l] = sqrt((2 * l + 1) / 2.0) * (ref_legendre(l + 1, t) - ref_legendre(l - 1, t)) / (2 * l + 1);
-}
-
-/* What the definition fixes for a light; "ambiguous" marks the measure-zero
- * ties (|e| + alpha within 1e-12 of pi/2; n_max within 1e-12 of a round
- * count) where either choice is accepted. */
-typedef struct expect {
-    int full, full_ambiguous;
-    double h;           /* partial only */
-    double n_max;       /* pi nphi_key / h: 2 pi over the disk's own spacing */
-    double lo, hi;
-} expect;
-
-static void closed_form(double phi, double elev, double alpha, int nk, expect *x)
-{
-    (void)phi;
-    if (alpha < HFS_MIN_VIS_ALPHA) /* the documented floor (lights.h) */
-        alpha = HFS_MIN_VIS_ALPHA;
-    const double margin = fabs(elev) + alpha - HALF_PI;
-    x->full = margin >= 0.0;
-    x->full_ambiguous = fabs(margin) < 1e-12;
-    x->h = x->full ? NAN : asin(sin(alpha) / cos(elev));
-    x->n_max = x->full ? NAN : PI * (nk < 1 ? 1 : nk) / x->h;
-    x->lo = elev - alpha < -HALF_PI ? -HALF_PI : elev - alpha;
-    x->hi = elev + alpha > HALF_PI ? HALF_PI : elev + alpha;
-}
+#include "swath_oracle_def.h"  /* the definition, written out */
+#include "swath_oracle_gles.h" /* the GLES blocks against it */
 
 /* ---- measurements (printed) ------------------------------------------------------ */
 
@@ -180,8 +89,8 @@ static double worst_spacing_ratio;   /* max dphi / (2h / nphi_key) */
 static double worst_spacing_ratio_nk1;
 static int min_count_excess = 1000, max_count_excess = -1000; /* n - ceil(0.8 nk), n - (nk+1) */
 static double worst_h_gap, worst_window_clamp;
-static double worst_dir_ulps, worst_place_err, worst_occ_err, worst_window_use;
-static long n_partial, n_full, n_gles;
+static double worst_window_use;
+static long n_partial, n_full;
 
 /* ---- the swath checks --------------------------------------------------------------- */
 
@@ -393,150 +302,6 @@ static void check_window_use(const hfs_swath *s, const char *id)
           "window: horizons below elev_lo change V by %.3g, above elev_hi leave %.3g (%s)", e_lo, e_hi, id);
     free(om);
     free(at);
-    hfs_visibility_destroy(v);
-}
-
-static double ulpf(float f)
-{
-    const float a = fabsf(f);
-    return (double)nextafterf(a, INFINITY) - (double)a;
-}
-
-/* The GLES std140 swath block of s against the closed form (k0, N). */
-/* A key record's swath block (hfs_gles_pack_key) against the light's own
- * (b, hfs_gles_pack_swath): the same but for the direction matrices, which
- * come folded with the light and the clamped cosine (uniform_blocks.c
- * fold_key_matrices): for normals N, sum_i Y_i(N) A_j[i] must equal
- * C_j^T (H(N) * L), H(N) the clamped cosine about N, as the CPU forms it. */
-static void check_key_swath(const float *kb, const float *b, int n, const hfs_gles_key *k,
-                            const char *id)
-{
-    const size_t head = 2 + (size_t)n, mat = 16 * (size_t)n, all = hfs_gles_swath_vec4(n);
-    CHECK(!memcmp(kb, b, head * 4 * sizeof *b) &&
-              !memcmp(kb + (head + mat) * 4, b + (head + mat) * 4,
-                      (all - head - mat) * 4 * sizeof *b),
-          "gles: key record's swath block outside its matrices (%s)", id);
-    static const double normals[3][3] = {{0.0, 0.0, 1.0}, {0.6, -0.3, 0.74}, {-0.9, 0.1, 0.42}};
-    double zc[HFS_ZH_N], worst = 0.0, scale = 0.0;
-    hfs_zh_clamped_cosine(zc);
-    for (int t = 0; t < 3; ++t) {
-        const double *nv = normals[t], len = sqrt(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
-        double h[HFS_SH_N], m[HFS_SH_N], y[HFS_SH_N];
-        hfs_sh_rotate_zonal(zc, nv[0] / len, nv[1] / len, nv[2] / len, h);
-        hfs_sh_product(h, k->l_sh, m);
-        hfs_sh_eval(nv[0] / len, nv[1] / len, nv[2] / len, y);
-        for (int j = 0; j < n; ++j)
-            for (int q = 0; q < 4; ++q) {
-                double want = 0.0, got = 0.0;
-                for (int r = 0; r < HFS_SH_N; ++r) {
-                    want += b[(head + 16 * j + r) * 4 + q] * m[r];
-                    got += kb[(head + 16 * j + r) * 4 + q] * y[r];
-                    scale = fmax(scale, fabs(b[(head + 16 * j + r) * 4 + q] * m[r]));
-                }
-                worst = fmax(worst, fabs(got - want));
-            }
-    }
-    /* float storage of both matrices (2^-24 relative) over 16-term sums */
-    CHECK(worst <= 1e-5 * fmax(scale, 1e-30), "gles: key record's folded matrices off by %.3g "
-          "(of terms up to %.3g) (%s)", worst, scale, id);
-}
-
-static void check_gles_block(const hfs_gles_layout *L, const hfs_swath *s, long long k0, double N,
-                             const expect *x_or_null, int is_env, const char *id)
-{
-    hfs_visibility *v = NULL;
-    hfs_error err;
-    if (hfs_visibility_create(s, HFS_VIS_LEGENDRE, &v, &err)) {
-        CHECK(0, "gles: visibility_create: %s (%s)", err.msg, id);
-        return;
-    }
-    ++n_gles;
-    const int n = s->n;
-    float *b = calloc(hfs_gles_swath_vec4(n) * 4, sizeof *b);
-    hfs_gles_pack_swath(L, v, b);
-    const double lo = is_env ? -HALF_PI : x_or_null->lo, hi = is_env ? HALF_PI : x_or_null->hi;
-    const int full = is_env ? 1 : x_or_null->full;
-    CHECK(b[0] == (float)lo && b[1] == (float)hi, "gles: window (%.9g, %.9g), want (%.9g, %.9g) (%s)", b[0], b[1],
-          (float)lo, (float)hi, id);
-    CHECK(b[2] == (float)n && (x_or_null && x_or_null->full_ambiguous ? 1 : b[3] == (float)full),
-          "gles: header n %g full %g (%s)", b[2], b[3], id);
-    double occ[4];
-    occ_closed(hi, occ);
-    for (int c = 0; c < 4; ++c) {
-        const double e = fabs(b[4 + c] - occ[c]);
-        worst_occ_err = fmax(worst_occ_err, e);
-        /* float rounding of values <= sqrt(2): 1.2e-7; measured 6e-8 */
-        CHECK(e <= 3e-7, "gles: occlusion(elev_hi)[%d] = %.9g, closed form %.9g (%s)", c, b[4 + c], occ[c], id);
-    }
-    /* directions: sample j at lattice point k0 + j */
-    for (int j = 0; j < n; ++j) {
-        const double m = fmod((double)(k0 + j), N);
-        const double ang = TWO_PI * (m < 0 ? m + N : m) / N;
-        const double c = cos(ang), sn = sin(ang);
-        const float fc = b[(2 + j) * 4], fs = b[(2 + j) * 4 + 1];
-        const double uc = (fabs(fc - c) - 0.5 * ulpf((float)c)) / ulpf((float)c);
-        const double us = (fabs(fs - sn) - 0.5 * ulpf((float)sn)) / ulpf((float)sn);
-        if (fabs(c) >= 1e-12)
-            worst_dir_ulps = fmax(worst_dir_ulps, uc);
-        if (fabs(sn) >= 1e-12)
-            worst_dir_ulps = fmax(worst_dir_ulps, us);
-        /* uniform_blocks.h: the float nearest to (cos, sin), or a neighbour
-         * within 64 ulps; |c| < 1e-12 is snapped to 0 */
-        CHECK((uc <= 64.5 || fabs(c) < 1e-12) && (us <= 64.5 || fabs(sn) < 1e-12),
-              "gles: direction %d = (%.9g, %.9g), lattice point %lld of %.0f gives (%.9g, %.9g) (%s)", j, fc, fs,
-              (long long)(k0 + j), N, c, sn, id);
-    }
-    /* wedge placements */
-    const float *rot = b + (2 + 17 * (size_t)n) * 4;
-    const int n_wedges = full ? n : n + 1;
-    for (int w = 0; w < n_wedges; ++w) {
-        double kk;
-        int mirror = 0;
-        if (full)
-            kk = w;
-        else if (w == 0)
-            kk = (double)k0, mirror = 1; /* start boundary: mirrored, placed at its inner end */
-        else if (w == n)
-            kk = (double)(k0 + n - 1);
-        else
-            kk = (double)(k0 + w - 1);
-        double mm = fmod(kk, N);
-        const double a = TWO_PI * (mm < 0 ? mm + N : mm) / N;
-        const float *r = rot + 8 * (size_t)w;
-        double e = 0.0;
-        for (int m = 1; m <= 3; ++m)
-            e = fmax(e, fmax(fabs(r[m - 1] - cos(m * a)), fabs(r[4 + m - 1] - sin(m * a))));
-        worst_place_err = fmax(worst_place_err, e);
-        /* float rounding (6e-8) of cos/sin of an angle computed in double
-         * from phi0 + j dphi; measured 6e-8 */
-        CHECK(e <= 6e-7 && r[3] == (float)mirror, "gles: wedge %d placement off by %.3g (mirror %g, want %d) (%s)",
-              w, e, r[3], mirror, id);
-    }
-    /* the key record around it */
-    if (!is_env) {
-        hfs_gles_key k;
-        memset(&k, 0, sizeof k);
-        k.swath = *s;
-        k.alpha = 0.01;
-        k.dir[0] = 0.25, k.dir[1] = -0.5, k.dir[2] = 0.75;
-        k.le[0] = 1, k.le[1] = 2, k.le[2] = 3;
-        for (int i = 0; i < 16; ++i)
-            k.l_sh[i] = i - 7.5;
-        k.l_norm = 4.5;
-        k.hz_layer = 6;
-        k.table_set = 2;
-        float *kr = calloc(hfs_gles_key_vec4(n) * 4, sizeof *kr);
-        hfs_gles_pack_key(L, &k, v, kr);
-        CHECK(kr[0] == (float)n && kr[2] == 6.0f && kr[3] == 2.0f &&
-                  (x_or_null->full_ambiguous || kr[1] == (float)x_or_null->full),
-              "gles: key record header (%g %g %g %g) (%s)", kr[0], kr[1], kr[2], kr[3], id);
-        CHECK(kr[4] == 0.25f && kr[5] == -0.5f && kr[6] == 0.75f && kr[7] == 0.01f && kr[8] == 1.0f &&
-                  kr[10] == 3.0f && kr[11] == 4.5f && kr[12] == -7.5f && kr[27] == 7.5f,
-              "gles: key record body (%s)", id);
-        check_key_swath(kr + 7 * 4, b, n, &k, id);
-        free(kr);
-    }
-    free(b);
     hfs_visibility_destroy(v);
 }
 
