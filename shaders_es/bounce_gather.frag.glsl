@@ -99,7 +99,11 @@ bool hfs_scale_takes_over(float sl, float ref, float tie);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
 float hfs_far_slope(float h, float d, float dz, float inv_step);
-float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc);
+float hfs_far_d(float d, float shift);
+float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc,
+                    out vec2 t, out vec2 off);
+vec2 hfs_grid_uv_at(ivec2 p, int sub, vec2 t, ivec2 vsize);
+vec2 hfs_grid_pix_at(ivec2 p, int sub, vec2 t);
 #endif
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
@@ -124,14 +128,14 @@ uniform int u_fstep;                     /* and step */
 uniform int u_fcols;                     /* tiles a row */
 uniform vec2 u_fatlas;                   /* the atlas' size */
 uniform vec2 u_fsub[HFS_FARK];           /* sub-direction h's turn: (cos, sin) */
-vec2 g_fpix;                             /* the receiver's place in a far tile */
+vec2 g_fpix, g_fo;                       /* the receiver's place in a far tile, less its own */
 float g_fdz;                             /* and how far the far receivers stand above it */
 #endif
 uniform float u_vmax;                    /* largest normalized height, a hair up */
 uniform int u_refine;                    /* samples per scale besides the scale's own */
 uniform float u_near_d;                  /* the near part's reach, texels (0: none) */
 #ifdef HFS_NEAR
-vec2 g_vuv;                              /* the texel's place on the visibility grid */
+vec2 g_vuv, g_vo;                        /* the texel's place on the visibility grid, less its own */
 float g_vdz;                             /* and how far its receivers stand above it */
 #endif
 uniform float u_tie;                     /* hfs_horizon_tie_slope */
@@ -343,14 +347,15 @@ void walk_scales(inout Walk w, ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS])
 /* The direct horizon's slope along environment direction je: the grid's
  * far horizon (tan(x / 2) in u_hor) or the own cell's slope t1, whichever
  * is higher. */
-float direct_horizon(ivec2 g, int je, float t1)
+float direct_horizon(ivec2 g, int je, vec2 cs, float t1)
 {
 #ifdef HFS_NEAR
     /* Any texel: the grid's horizons blended at its place (env_slices.frag
      * reads them so), HFS_PAIRS the occluders moved to its height. */
 #ifdef HFS_PAIRS
     vec4 o = texture(u_hor, vec3(g_vuv, float(je / 2)));
-    float fs = hfs_far_slope(o[2 * (je % 2)], o[2 * (je % 2) + 1], g_vdz, 1.0 / float(u_vsub));
+    float fs = hfs_far_slope(o[2 * (je % 2)], hfs_far_d(o[2 * (je % 2) + 1], dot(g_vo, cs)), g_vdz,
+                             1.0 / float(u_vsub));
     return max(fs, t1);
 #else
     float u = texture(u_hor, vec3(g_vuv, float(je / 4)))[je % 4];
@@ -397,7 +402,10 @@ float sub_horizons(int je, vec2 cs, vec3 n, float tn, out float t[HFS_NSUB])
         if (h == 0 || e % 2 == 0)
             fv = texture(u_far, vec3(hfs_far_tile_uv(g_fpix, float(e / 2), u_fcols, u_fsize,
                                                      u_fatlas), 0.0));
-        float fs = hfs_far_slope(fv[2 * (e % 2)], fv[2 * (e % 2) + 1], g_fdz,
+        float fs = hfs_far_slope(fv[2 * (e % 2)],
+                                 hfs_far_d(fv[2 * (e % 2) + 1],
+                                           dot(g_fo, cs * u_fsub[h].x + vec2(-cs.y, cs.x) * u_fsub[h].y)),
+                                 g_fdz,
                                  1.0 / float(u_fstep));
         float plane = -(a * u_fsub[h].x + ap * u_fsub[h].y) / n.z;
         t[h] = clamp(max(tn, fs > plane + 1e-3 * (1.0 + abs(plane)) ? fs : -1e30), -1e18, 1e18);
@@ -427,7 +435,7 @@ float skipped_occluded(ivec2 g, vec3 n, vec4 ns, vec4 fine, vec2 h0)
         vec2 o1, nf;
         own_cell(g, cs, ns, fine, h0, t1, o1, nf);
         float t[HFS_NSUB];
-        w += sub_horizons(je, cs, n, direct_horizon(g, je, t1), t);
+        w += sub_horizons(je, cs, n, direct_horizon(g, je, cs, t1), t);
     }
     return w;
 }
@@ -448,13 +456,16 @@ void main()
 #endif
     vec2 h0 = hx[int(fine.z)];
 #ifdef HFS_FARK
-    g_fpix = hfs_grid_uv(g, u_fstep, u_size, u_fsize) * vec2(u_fsize);
-    g_fdz = hfs_grid_rise(u_levels, g, u_fstep, u_size, fine);
+    vec2 tf; /* where the receiver reads the grids (off a wall: hfs_grid_snap) */
+    g_fdz = hfs_grid_rise(u_levels, g, u_fstep, u_size, fine, tf, g_fo);
+    g_fpix = hfs_grid_pix_at(g, u_fstep, tf);
 #endif
 #ifdef HFS_NEAR
     g_vuv = hfs_grid_uv(g, u_vsub, u_size, u_vsize);
 #ifdef HFS_PAIRS
-    g_vdz = hfs_grid_rise(u_levels, g, u_vsub, u_size, fine);
+    vec2 tv;
+    g_vdz = hfs_grid_rise(u_levels, g, u_vsub, u_size, fine, tv, g_vo);
+    g_vuv = hfs_grid_uv_at(g, u_vsub, tv, u_vsize);
 #endif
 #endif
     /* the normal and the one-sided slopes to (+x, -x, +y, -y), -1e30 off
@@ -510,7 +521,7 @@ void main()
         bool cell = own_cell(g, cs, ns, fine, h0, t1, o1, nf);
 #ifdef HFS_SLICE
         float tc[HFS_NSUB];
-        float occ = sub_horizons(je, cs, n, direct_horizon(g, je, t1), tc);
+        float occ = sub_horizons(je, cs, n, direct_horizon(g, je, cs, t1), tc);
         w.t_cap = w.t_top;
         for (int h = 0; h < HFS_NSUB; ++h) {
             bool above = tc[h] > w.t_top; /* the tangent plane */

@@ -86,8 +86,13 @@ void hfs_env_occ(vec4 t[4], vec4 l[12], out vec4 a, out vec2 b);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
 float hfs_far_slope(float h, float d, float dz, float inv_step);
+float hfs_far_d(float d, float shift);
 float hfs_hdiff(vec2 a, vec2 b);
-float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc);
+float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc,
+                    out vec2 t, out vec2 off);
+vec2 hfs_grid_snap(ivec2 p, ivec2 x0, ivec2 x1, vec2 f, vec4 r);
+vec2 hfs_grid_uv_at(ivec2 p, int sub, vec2 t, ivec2 vsize);
+vec2 hfs_grid_pix_at(ivec2 p, int sub, vec2 t);
 
 uniform highp sampler2DArray u_levels;   /* R_L, layer L - lmin, RG hi+lo, LINEAR */
 uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals, near slopes */
@@ -329,18 +334,22 @@ float near_rise(int i, vec4 s0, vec4 s1, float s8)
  * receiver, so above p it is this much higher.  On a 2-step grid the
  * receivers are among p's 3 x 3 neighbours, whose differences near_slopes
  * already holds (a receiver 2 away has weight 0); on a coarser grid four
- * fetches. */
-float grid_rise(ivec2 p, int step, vec4 s0, vec4 s1, float s8)
+ * fetches.  t: where p reads the grid (hfs_grid_snap: off a receiver
+ * across a wall), the place the blend is taken at; off, that place less
+ * p's (hfs_grid_rise). */
+float grid_rise(ivec2 p, int step, vec4 s0, vec4 s1, float s8, out vec2 t, out vec2 off)
 {
     if (step != 2 || u_near == 0)
-        return hfs_grid_rise(u_levels, p, step, u_size, u_scale[HFS_NLEV - 1]);
+        return hfs_grid_rise(u_levels, p, step, u_size, u_scale[HFS_NLEV - 1], t, off);
     ivec2 x0 = (p / step) * step;
     ivec2 x1 = min(x0 + step, u_size - 1);
     vec2 f = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
     ivec2 o0 = x0 - p + 1, o1 = x1 - p + 1; /* 0..2 */
     vec4 r = vec4(near_rise(3 * o0.y + o0.x, s0, s1, s8), near_rise(3 * o0.y + o1.x, s0, s1, s8),
                   near_rise(3 * o1.y + o0.x, s0, s1, s8), near_rise(3 * o1.y + o1.x, s0, s1, s8));
-    return mix(mix(r.x, r.y, f.x), mix(r.z, r.w, f.x), f.y);
+    t = hfs_grid_snap(p, x0, x1, f, r);
+    off = vec2(x0 - p) + t * vec2(x1 - x0);
+    return mix(mix(r.x, r.y, t.x), mix(r.z, r.w, t.x), t.y);
 }
 
 
@@ -415,19 +424,26 @@ void main()
      * array at a loop-dependent index lane by lane (a gather), which made
      * this pass 1.7x slower (BENCHMARKS.md "Uniform indices"). */
     vec4 far = vec4(0.0);
+    /* direction J's index where the unrolled code reads it (only J <
+     * HFS_NDIR runs, but every constant index must be in range) */
+#define HFS_DIR_AT(J) ((J) < HFS_NDIR ? (J) : HFS_NDIR - 1)
     float fsub[HFS_NSUB];
     fsub[0] = -1e30;
 #ifdef HFS_FARK
     /* Split horizons: the far grid's occluders, moved to this texel. */
-    vec2 fpix = hfs_grid_uv(p, u_fstep, u_size, u_fsize) * vec2(u_fsize); /* in a tile */
-    float dzf = grid_rise(p, u_fstep, s0, s1, s8), inv_fstep = 1.0 / float(u_fstep);
+    vec2 tf, of; /* where it reads them, and that less its place */
+    float dzf = grid_rise(p, u_fstep, s0, s1, s8, tf, of), inv_fstep = 1.0 / float(u_fstep);
+    vec2 fpix = hfs_grid_pix_at(p, u_fstep, tf); /* in a tile */
     vec4 fv = vec4(0.0);
 #define HFS_SUBS(J)                                                         \
+    vec2 dj = SW_DIR(HFS_DIR_AT(J)).xy;                                     \
+    vec2 ofj = vec2(dot(of, dj), dot(of, vec2(-dj.y, dj.x)));               \
     for (int h = 0; h < HFS_FARK; ++h) {                                    \
         int e = (J) * HFS_FARK + h;                                         \
         if (e % 2 == 0)                                                     \
             fv = texture(u_far, vec3(hfs_far_tile_uv(fpix, float(e / 2), u_fcols, u_fsize, u_fatlas), 0.0)); \
-        fsub[h] = hfs_far_slope(fv[2 * (e % 2)], fv[2 * (e % 2) + 1], dzf, inv_fstep); \
+        fsub[h] = hfs_far_slope(fv[2 * (e % 2)],                            \
+                                hfs_far_d(fv[2 * (e % 2) + 1], dot(ofj, u_fsub[h])), dzf, inv_fstep); \
     }
 #else
 #define HFS_SUBS(J)
@@ -444,11 +460,15 @@ void main()
      * moved to each texel"). */
 #ifdef HFS_PAIRS
     /* On a sub-sampled grid its horizons move to this texel's height. */
-    float dz = grid_rise(p, u_sub, s0, s1, s8), inv_sub = 1.0 / float(u_sub);
+    vec2 tv, ov;
+    float dz = grid_rise(p, u_sub, s0, s1, s8, tv, ov), inv_sub = 1.0 / float(u_sub);
+    uv = hfs_grid_uv_at(p, u_sub, tv, u_vsize);
 #define HFS_FAR(J)                                                          \
     if ((J) % 2 == 0)                                                       \
         far = texture(u_hor, vec3(uv, float((J) / 2)));                     \
-    float fu = hfs_far_slope(far[2 * ((J) % 2)], far[2 * ((J) % 2) + 1], dz, inv_sub);
+    float fu = hfs_far_slope(far[2 * ((J) % 2)],                            \
+                             hfs_far_d(far[2 * ((J) % 2) + 1], dot(ov, SW_DIR(HFS_DIR_AT(J)).xy)), dz, \
+                             inv_sub);
 #else
 #define HFS_FAR(J)                                                          \
     if ((J) % 4 == 0)                                                       \

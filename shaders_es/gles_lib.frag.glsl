@@ -42,6 +42,22 @@ vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize)
     return (vec2(a) + t + 0.5) / vec2(vsize);
 }
 
+/* The place t between the receivers (hfs_grid_rise's, which moves it off
+ * a receiver across a wall) in the grid's texels, and as a texture
+ * coordinate.  The far atlas takes the texels: a coordinate divided by
+ * the tile's size and multiplied back lands a rounding error off a
+ * receiver's centre, where the sampler's quantized weights then give the
+ * neighbour a share (test_metamorphic_turn). */
+vec2 hfs_grid_pix_at(ivec2 p, int sub, vec2 t)
+{
+    return vec2(p / sub) + t + 0.5;
+}
+
+vec2 hfs_grid_uv_at(ivec2 p, int sub, vec2 t, ivec2 vsize)
+{
+    return hfs_grid_pix_at(p, sub, t) / vec2(vsize);
+}
+
 /* Split horizons' far atlas (env_horizons.frag HFS_FAR_ATLAS; runtime/
  * split_horizon.h): where tile i (sub-directions 2i, 2i + 1; cols tiles a
  * row, each fsize texels, the atlas atlas texels) holds the place fpix of
@@ -64,23 +80,11 @@ float hfs_far_slope(float h, float d, float dz, float inv_step)
     return (h + dz * min(d * inv_step, 1.0)) / d;
 }
 
-/* How far the receivers of the grid of step `step` around texel p stand
- * above it, in texels: their heights (on layer sc.z, scaled by sc.y: the
- * finest scale's (d, inv_run, layer)) blended with p's bilinear weights,
- * minus p's; 4 fetches (env_slices.frag grid_rise; bounce_gather.frag's
- * far occluders). */
-float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc)
+/* An occluder's distance d (0: none) read at a place `shift` texels
+ * behind the texel along its direction (hfs_grid_rise's off, dotted). */
+float hfs_far_d(float d, float shift)
 {
-    ivec2 x0 = (p / step) * step;
-    ivec2 x1 = min(x0 + step, size - 1);
-    vec2 f = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
-    int layer = int(sc.z);
-    vec2 h = texelFetch(levels, ivec3(p, layer), 0).xy;
-    vec4 r = sc.y * vec4(hfs_hdiff(texelFetch(levels, ivec3(x0, layer), 0).xy, h),
-                         hfs_hdiff(texelFetch(levels, ivec3(x1.x, x0.y, layer), 0).xy, h),
-                         hfs_hdiff(texelFetch(levels, ivec3(x0.x, x1.y, layer), 0).xy, h),
-                         hfs_hdiff(texelFetch(levels, ivec3(x1, layer), 0).xy, h));
-    return mix(mix(r.x, r.y, f.x), mix(r.z, r.w, f.x), f.y);
+    return d > 0.0 ? d + shift : d;
 }
 
 /* ---- sample offsets (DESIGN.md "Horizons", float-sized snapping) --------- */

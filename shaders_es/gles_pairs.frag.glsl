@@ -5,7 +5,9 @@
  * halves in integer arithmetic (hfs_half_nearest), blended as texture()
  * blends them (hfs_pair_tex), and the heights read from the level array's
  * layer u_hlayer with the normals made from them (hfs_height_at,
- * hfs_normal_at, hfs_normal_sides).  Every pass is compiled as
+ * hfs_normal_at, hfs_normal_sides), and where a texel reads a grid's
+ * receivers from their heights (hfs_grid_snap, hfs_grid_rise).  Every
+ * pass is compiled as
  *     "#version 300 es" + variant defines + gles_pairs.frag + gles_lib.frag
  *     + gles_ray.frag + gles_view.frag + [sh_product.glsl.inc] + the pass
  * (runtime/gles/programs.c; source string 5 in driver messages).  Kept
@@ -240,4 +242,96 @@ vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf)
     vec4 d; /* unused: the compiler drops its arithmetic */
     bvec4 on;
     return hfs_normal_sides(h, p, size, zf, vec2(0.0), d, on);
+}
+
+/* ---- the grids: where a texel reads its receivers ------------------------ */
+
+/* runtime/core/split_horizon.h HFS_SPLIT_STEEP, which runtime/gles/
+ * programs.c defines for every program; this default serves the build's
+ * checks of the files alone. */
+#ifndef HFS_FAR_STEEP
+#define HFS_FAR_STEEP 6
+#endif
+
+/* Where texel p reads a grid of occluders (runtime/core/split_horizon.h
+ * hfs_split_far_snap: the same rule): f, its bilinear place between the
+ * receivers (0 = x0, 1 = (x1.x, x0.y), 2 = (x0.x, x1.y), 3 = x1), kept
+ * where no receiver that weighs rises above p steeper than HFS_FAR_STEEP
+ * (r: the receivers' heights above p, texels, over their distances);
+ * else moved to the heavier edge whose two receivers pass (two as heavy:
+ * the receiver they share), else to the one receiver that passes and
+ * weighs most (none passing: the least steep; a tie: f itself).  A receiver on a roof sees over the building across the street
+ * that hides the sky from a texel at the wall's foot: its occluders are
+ * not the texel's at any blend. */
+vec2 hfs_grid_snap(ivec2 p, ivec2 x0, ivec2 x1, vec2 f, vec4 r)
+{
+    float steep = float(HFS_FAR_STEEP);
+    vec4 w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+    vec2 d0 = vec2(x0 - p), d1 = vec2(x1 - p);
+    vec4 dist = vec4(length(d0), length(vec2(d1.x, d0.y)), length(vec2(d0.x, d1.y)), length(d1));
+    vec4 rise = mix(max(r, vec4(0.0)) / max(dist, vec4(1e-30)), vec4(0.0),
+                    lessThanEqual(dist, vec4(0.0)));
+    vec4 ok = max(vec4(lessThanEqual(w, vec4(0.0))), vec4(lessThanEqual(rise, vec4(steep))));
+    if (ok.x * ok.y * ok.z * ok.w > 0.5)
+        return f;
+    vec4 pass = vec4(ok.x * ok.y, ok.z * ok.w, ok.x * ok.z, ok.y * ok.w);
+    vec4 ew = vec4(w.x + w.y, w.z + w.w, w.x + w.z, w.y + w.w);
+    int best = -1, tie = -1;
+    float bw = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        if (!(pass[k] > 0.5) || !(ew[k] > 0.0))
+            continue;
+        if (ew[k] > bw) {
+            best = k;
+            tie = -1;
+            bw = ew[k];
+        } else if (ew[k] == bw) {
+            tie = k;
+        }
+    }
+    if (best >= 0 && tie < 0)
+        return best < 2 ? vec2(f.x, float(best)) : vec2(float(best - 2), f.y);
+    if (best >= 0) /* two edges as heavy: the receiver they share */
+        return vec2(float(tie - 2), float(best));
+    int one = -1;
+    bool tied = false;
+    for (int k = 0; k < 4; ++k) {
+        if (!(w[k] > 0.0))
+            continue;
+        bool ok_k = ok[k] > 0.5;
+        bool same = one >= 0 && ok_k == (ok[max(one, 0)] > 0.5);
+        if (one < 0 || (ok_k && !(ok[max(one, 0)] > 0.5)) ||
+            (same && (ok_k ? w[k] > w[max(one, 0)] : rise[k] < rise[max(one, 0)]))) {
+            one = k;
+            tied = false;
+        } else if (same && (ok_k ? w[k] == w[max(one, 0)] : rise[k] == rise[max(one, 0)])) {
+            tied = true;
+        }
+    }
+    return tied ? f : vec2(float(one % 2), float(one / 2));
+}
+
+/* How far the receivers of the grid of step `step` around texel p stand
+ * above it, in texels: their heights (on layer sc.z, scaled by sc.y: the
+ * finest scale's (d, inv_run, layer)) blended at p's place t on the grid
+ * (its bilinear weights, or hfs_grid_snap's place off a wall), minus p's;
+ * 4 fetches (env_slices.frag grid_rise; bounce_gather.frag's far
+ * occluders).  t is where p reads the grid's occluders (hfs_grid_uv_at),
+ * off that place less p's, texels (0 but off a wall: an occluder read
+ * there lies dot(off, u) farther along its direction u). */
+float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc,
+                    out vec2 t, out vec2 off)
+{
+    ivec2 x0 = (p / step) * step;
+    ivec2 x1 = min(x0 + step, size - 1);
+    vec2 f = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
+    int layer = int(sc.z);
+    vec2 h = texelFetch(levels, ivec3(p, layer), 0).xy;
+    vec4 r = sc.y * vec4(hfs_hdiff(texelFetch(levels, ivec3(x0, layer), 0).xy, h),
+                         hfs_hdiff(texelFetch(levels, ivec3(x1.x, x0.y, layer), 0).xy, h),
+                         hfs_hdiff(texelFetch(levels, ivec3(x0.x, x1.y, layer), 0).xy, h),
+                         hfs_hdiff(texelFetch(levels, ivec3(x1, layer), 0).xy, h));
+    t = hfs_grid_snap(p, x0, x1, f, r);
+    off = vec2(x0 - p) + t * vec2(x1 - x0);
+    return mix(mix(r.x, r.y, t.x), mix(r.z, r.w, t.x), t.y);
 }

@@ -425,6 +425,14 @@ add_test(NAME test_long_shadow_gles_sub4 COMMAND test_long_shadow gles 4)
 set_tests_properties(test_long_shadow_gles_sub4 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
                      TIMEOUT 120)
 list(APPEND hfs_gles_tests test_long_shadow_gles_sub4)
+# test_wall_foot: a texel at a wall's foot reads the grids' occluders on
+# its own side of the wall, a roof's edge keeps its street's (issue 36,
+# against the truth), the same backends and subsamples, and fp32.
+hfs_metamorphic_test(test_wall_foot)
+add_test(NAME test_wall_foot_gles_sub2_fp32 COMMAND test_wall_foot gles 2 fp32)
+set_tests_properties(test_wall_foot_gles_sub2_fp32 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
+                     TIMEOUT 120)
+list(APPEND hfs_gles_tests test_wall_foot_gles_sub2_fp32)
 
 if(HFS_SANITIZE)
   foreach(t IN LISTS hfs_gles_tests)

@@ -28,6 +28,8 @@
  *     far       hfs_split_far_slope (an occluder moved in proportion within
  *               a grid step), hfs_split_above_plane's tie, and hfs_split_band
  *               (bounce bands clipped per sub-horizon tile the occluded part);
+ *     snap      hfs_split_far_snap: where a texel reads a grid beside a
+ *               wall's top, case by case;
  *   map_slices  (runtime/core/env_map_slices.h) a map lit in one sector of
  *               azimuths: each slice's occluded part under a flat receiver
  *               fully blocked is -dphi/2 times the map's mean over exactly
@@ -307,6 +309,75 @@ static void check_map_slices(void)
     free(map);
 }
 
+/* hfs_split_far_snap's cases, written out: a texel at (tx, ty) between
+ * receivers 0..3 with their rises above it (steep 6). */
+static void check_snap(void)
+{
+    static const struct {
+        double tx, ty, rise[4], sx, sy;
+        const char *what;
+    } c[] = {
+        {0.25, 0.5, {5.9, 6.0, 0.0, 3.0}, 0.25, 0.5, "none steeper: the texel's own place"},
+        {0.5, 0.5, {0.0, 9.0, 0.0, 9.0}, 0.0, 0.5, "a wall's top at x1: edge x0"},
+        {0.5, 0.25, {9.0, 9.0, 0.0, 0.0}, 0.5, 1.0, "a wall's top at y0: edge y1"},
+        {0.25, 0.5, {0.0, 0.0, 0.0, 9.0}, 0.0, 0.5, "one corner steep: the heavier edge x0"},
+        {0.25, 0.25, {0.0, 0.0, 0.0, 9.0}, 0.0, 0.0, "two edges as heavy: their receiver"},
+        {0.75, 0.25, {9.0, 0.0, 9.0, 9.0}, 1.0, 0.0, "one receiver passes: it alone"},
+        {0.5, 0.5, {9.0, 8.0, 7.0, 10.0}, 0.0, 1.0, "none passes: the least steep"},
+        {0.0, 0.5, {0.0, 50.0, 9.0, 50.0}, 0.0, 0.0, "weightless receivers never count"},
+        {0.0, 0.0, {0.0, 50.0, 50.0, 50.0}, 0.0, 0.0, "on a receiver: itself"},
+    };
+    for (size_t k = 0; k < sizeof c / sizeof c[0]; ++k) {
+        double sx = -1.0, sy = -1.0;
+        hfs_split_far_snap(c[k].tx, c[k].ty, c[k].rise, HFS_SPLIT_STEEP, &sx, &sy);
+        CHECK(sx == c[k].sx && sy == c[k].sy, "snap, %s: (%g, %g), want (%g, %g)", c[k].what,
+              sx, sy, c[k].sx, c[k].sy);
+    }
+    CHECK(HFS_SPLIT_STEEP == 6, "the wall's slope %d (DESIGN.md says 6)", HFS_SPLIT_STEEP);
+    /* the cell's 8 symmetries (x -> 1 - x, y -> 1 - y, x <-> y) carry the
+     * place and the receivers along: a turned or mirrored field reads the
+     * turned place (test_metamorphic_turn's relation, cell by cell); places
+     * on eighths and integer rises, so that every kind of tie occurs */
+    unsigned seed = 12345u;
+    for (int n = 0; n < 20000; ++n) {
+        double tx, ty, rise[4], sx, sy;
+        seed = seed * 1664525u + 1013904223u;
+        tx = (seed >> 8) % 9 / 8.0;
+        seed = seed * 1664525u + 1013904223u;
+        ty = (seed >> 8) % 9 / 8.0;
+        for (int r = 0; r < 4; ++r) {
+            seed = seed * 1664525u + 1013904223u;
+            rise[r] = (double)((seed >> 8) % 10);
+        }
+        hfs_split_far_snap(tx, ty, rise, HFS_SPLIT_STEEP, &sx, &sy);
+        for (int m = 1; m < 8; ++m) {
+            const int fx = m & 1, fy = (m >> 1) & 1, sw = m >> 2;
+            double u = fx ? 1.0 - tx : tx, v = fy ? 1.0 - ty : ty, r2[4], ux, uy;
+            for (int r = 0; r < 4; ++r) {
+                int x = (r & 1) ^ fx, y = (r >> 1) ^ fy;
+                if (sw) {
+                    const int t = x;
+                    x = y, y = t;
+                }
+                r2[x + 2 * y] = rise[r];
+            }
+            if (sw) {
+                const double t = u;
+                u = v, v = t;
+            }
+            hfs_split_far_snap(u, v, r2, HFS_SPLIT_STEEP, &ux, &uy);
+            double wx = fx ? 1.0 - sx : sx, wy = fy ? 1.0 - sy : sy;
+            if (sw) {
+                const double t = wx;
+                wx = wy, wy = t;
+            }
+            CHECK(ux == wx && uy == wy, "snap under symmetry %d of (%g, %g) rises %g %g %g %g: "
+                  "(%g, %g), want (%g, %g)", m, tx, ty, rise[0], rise[1], rise[2], rise[3], ux,
+                  uy, wx, wy);
+        }
+    }
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 2 && !strcmp(argv[1], "split")) {
@@ -315,6 +386,7 @@ int main(int argc, char **argv)
         check_boundary();
         check_make();
         check_far();
+        check_snap();
     } else if (argc == 2 && !strcmp(argv[1], "map_slices")) {
         check_map_slices();
     } else {

@@ -8,8 +8,11 @@
 #   boxes   random boxes 2-40 texels wide, 5-40 tall on a flat 256x256
 #           field (hfgen boxes), suns at 3, 5, 10 and 20 degrees;
 #   city    hfgen city at 256x256 against the terrain scenes (cones, the
-#           fractal, the DEM window) under the courtyard sky's order-4
-#           projection and a 2-degree sun 5 degrees up.
+#           fractal, the DEM window, and the rough ones: the relief-1
+#           fractal, the Hurst-0.25 and Hurst-0.8 fields at 64x64) under
+#           the courtyard sky's order-4 projection and a 2-degree sun 5
+#           degrees up.
+# UMBRA_GROUPS (default "towers boxes city") runs only the groups named.
 # Columns: `hfshade compare`'s umbra_lit (texels of the truth's umbra, below
 # 1% of their unshadowed value, rendered at half of it or more), its mean
 # and p99 error (fractions of the unshadowed maximum), and the render's
@@ -47,18 +50,22 @@ row() {
     done
 }
 
+WANT=" ${UMBRA_GROUPS:-towers boxes city} "
 echo "| scene | build | backend | umbra lit / umbra | mean abs | p99 abs | frame ms |"
 echo "|---|---|---|---|---|---|---|"
 for t in "40,30,4" "10,20,8" "4,10,10" "2,6,15"; do
+    [[ $WANT == *" towers "* ]] || break
     IFS=, read -r bw bh el <<<"$t"
     "$GEN" tower --size 1024x256 --block "$bw,$bh" -o "$C/tower-$bw-$bh.pfm"
     row "tower${bw}x${bh}-sun$el" "$C/tower-$bw-$bh.pfm" --key "180,$el,0.25,1"
 done
-"$GEN" boxes --size 256x256 -o "$C/boxes256.pfm"
+[[ $WANT == *" boxes "* ]] && "$GEN" boxes --size 256x256 -o "$C/boxes256.pfm"
 for el in 3 5 10 20; do
+    [[ $WANT == *" boxes "* ]] || break
     row "boxes-sun$el" "$C/boxes256.pfm" --key "$((40 + 7 * el)),$el,0.25,1"
 done
-bench_scenes "$GEN" "$C" 256
+[[ $WANT == *" city "* ]] || exit 0
+bench_rough_scenes "$GEN" "$C" 256
 "$GEN" city --size 256x256 -o "$C/city256.pfm"
 scenes+=("city|$C/city256.pfm|--dx 1")
 for sc in "${scenes[@]}"; do

@@ -51,6 +51,63 @@ int hfs_split_first_far(int n_levels, int k, double from)
     return n_levels - 1 - hfs_split_near_count(n_levels, k, from);
 }
 
+void hfs_split_far_snap(double tx, double ty, const double rise[4], double steep, double *sx,
+                        double *sy)
+{
+    const double w[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
+    int ok[4], all = 1;
+    for (int r = 0; r < 4; ++r) {
+        ok[r] = !(w[r] > 0.0) || !(rise[r] > steep);
+        all &= ok[r];
+    }
+    *sx = tx, *sy = ty;
+    if (all)
+        return;
+    /* the heaviest (nearest) edge of the cell whose two receivers pass:
+     * the blend along it; two edges as heavy (adjacent: opposite ones
+     * passing would pass all four) meet at a receiver, which alone keeps
+     * the choice the same under the field's turns and mirrors */
+    static const int edge[4][2] = {{0, 1}, {2, 3}, {0, 2}, {1, 3}};
+    int best = -1, tie = -1;
+    double bw = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        const int a = edge[k][0], b = edge[k][1];
+        const double ew = w[a] + w[b];
+        if (!ok[a] || !ok[b] || !(ew > 0.0))
+            continue;
+        if (ew > bw)
+            best = k, tie = -1, bw = ew;
+        else if (ew == bw)
+            tie = k;
+    }
+    if (best >= 0 && tie < 0) {
+        if (best < 2)
+            *sy = best;
+        else
+            *sx = best - 2;
+        return;
+    }
+    if (best >= 0) { /* y0 or y1 (best) with x0 or x1 (tie) */
+        *sx = tie - 2, *sy = best;
+        return;
+    }
+    /* else one receiver: the heaviest that passes, or the least steep; a
+     * tie keeps the texel's own place (again the same under turns) */
+    int one = -1, tied = 0;
+    for (int r = 0; r < 4; ++r) {
+        if (!(w[r] > 0.0))
+            continue;
+        const int same = one >= 0 && ok[r] == ok[one];
+        if (one < 0 || (ok[r] && !ok[one]) ||
+            (same && (ok[r] ? w[r] > w[one] : rise[r] < rise[one])))
+            one = r, tied = 0;
+        else if (same && (ok[r] ? w[r] == w[one] : rise[r] == rise[one]))
+            tied = 1;
+    }
+    if (!tied)
+        *sx = one & 1, *sy = one >> 1;
+}
+
 double hfs_split_far_slope(double h, double d, double dz, int g)
 {
     if (!(d > 0.0))

@@ -11,7 +11,8 @@
  *         distance, in texels (heights as world z / dx).
  *
  * A texel blends each far occluder bilinearly between the grid receivers
- * around it (hfs_grid_axis, the GLES path's texture filtering) and moves it
+ * around it (hfs_grid_axis, the GLES path's texture filtering; beside a
+ * wall's top, on its own side of the wall: hfs_split_far_snap) and moves it
  * to its own height (hfs_split_far_slope), where it rises above its own
  * sub-direction's tangent plane (hfs_split_above_plane); each
  * sub-direction's horizon is max(tangent plane, near, far), and slice j's
@@ -41,6 +42,10 @@
  * GLES pass writes this pair, and the blend takes it as it is. */
 #define HFS_SPLIT_NONE_H (-3e4)
 #define HFS_SPLIT_MAX_H 3e4 /* |height| stored, within fp16 */
+/* A receiver that rises above a texel steeper than this (a slope: height
+ * difference over distance, 80.5 degrees) is on a wall's top above it
+ * (hfs_split_far_snap); the GLES passes get it as HFS_FAR_STEEP. */
+#define HFS_SPLIT_STEEP 6
 
 typedef struct hfs_split {
     int on;       /* split on the slice path */
@@ -99,6 +104,25 @@ int hfs_split_first_far(int n_levels, int k, double from);
  * blended height: the slope (h + dz min(d / g, 1)) / d, or -1e30 where
  * there is none (d <= 0). */
 double hfs_split_far_slope(double h, double d, double dz, int g);
+
+/* Where a texel reads a grid of occluders (sx, sy: its bilinear position
+ * between receivers 0 = (a0, b0), 1 = (a1, b0), 2 = (a0, b1), 3 = (a1,
+ * b1)), from its own position (tx, ty) and each receiver's rise above it
+ * (its height less the texel's where it is higher, over its distance: a
+ * slope; 0 at no distance): where every receiver that weighs rises at
+ * most `steep`, (tx, ty) itself; else along the cell's edge whose two
+ * receivers pass (the heavier edge; two as heavy: the receiver they
+ * share), else at the one receiver that passes and weighs most (or, none
+ * passing, the least steep; a tie: (tx, ty)).  The ties are so broken
+ * that a turned or mirrored field reads the turned place.  A receiver on a
+ * roof sees over the building across the street that hides the sky from
+ * a texel at the wall's foot: its occluders are not the texel's at any
+ * blend.  (A receiver below the texel, in the street under a roof's edge,
+ * is kept: what it sees is there, and moved up it stays below the edge.)
+ * The caller moves each occluder by the place's offset from the texel
+ * (DESIGN.md "Split horizons"). */
+void hfs_split_far_snap(double tx, double ty, const double rise[4], double steep, double *sx,
+                        double *sy);
 
 /* Whether a far sub-horizon of slope t rises above its own
  * sub-direction's tangent plane (a_h = N.d of the sub-direction) by more

@@ -141,13 +141,27 @@ void hfs_cpu_far_place_of(const hfs_cpu_far *g, int i, int j, hfs_cpu_far_place 
     hfs_grid_axis(j, s, g->f->height, &b0, &ty);
     const int a1 = a0 + 1 < g->gw ? a0 + 1 : a0, b1 = b0 + 1 < g->gh ? b0 + 1 : b0;
     const int ra[4] = {a0, a1, a0, a1}, rb[4] = {b0, b0, b1, b1};
-    const double wt[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
     const double zp = height_texels(g->f, i, j);
-    pl->dz = 0.0;
+    double zr[4], rise[4];
     for (int r = 0; r < 4; ++r) {
         const int x = ra[r] * s < g->f->width - 1 ? ra[r] * s : g->f->width - 1;
         const int y = rb[r] * s < g->f->height - 1 ? rb[r] * s : g->f->height - 1;
-        pl->dz += wt[r] * (height_texels(g->f, x, y) - zp);
+        zr[r] = height_texels(g->f, x, y);
+        const double dist = hypot(x - i, y - j);
+        rise[r] = dist > 0.0 ? fmax(zr[r] - zp, 0.0) / dist : 0.0;
+    }
+    hfs_split_far_snap(tx, ty, rise, HFS_SPLIT_STEEP, &tx, &ty);
+    /* where the texel reads the grid, less its own place (0 but off a wall) */
+    const int xa = a0 * s < g->f->width - 1 ? a0 * s : g->f->width - 1;
+    const int xb = a1 * s < g->f->width - 1 ? a1 * s : g->f->width - 1;
+    const int ya = b0 * s < g->f->height - 1 ? b0 * s : g->f->height - 1;
+    const int yb = b1 * s < g->f->height - 1 ? b1 * s : g->f->height - 1;
+    pl->off[0] = xa + tx * (xb - xa) - i;
+    pl->off[1] = ya + ty * (yb - ya) - j;
+    const double wt[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
+    pl->dz = 0.0;
+    for (int r = 0; r < 4; ++r) {
+        pl->dz += wt[r] * (zr[r] - zp);
         pl->at[r] = ((size_t)rb[r] * (size_t)g->gw + (size_t)ra[r]) * (size_t)g->n_sub * 2;
         pl->wt[r] = wt[r];
     }
@@ -164,11 +178,13 @@ void hfs_cpu_far_slopes(const hfs_cpu_far *g, const hfs_cpu_far_place *pl, int d
             hb += pl->wt[r] * p[0];
             db += pl->wt[r] * p[1];
         }
-        slope[h] = hfs_split_far_slope(hb, db, pl->dz, g->d.step);
-        if (!g->d.plane)
-            continue;
         double cs, sn;
         hfs_horizon_plan_dir(g->plan, e, &cs, &sn);
+        /* read off the texel's place: the occluder that much nearer or farther */
+        const double shift = pl->off[0] * cs + pl->off[1] * sn;
+        slope[h] = hfs_split_far_slope(hb, db > 0.0 ? db + shift : db, pl->dz, g->d.step);
+        if (!g->d.plane)
+            continue;
         if (!hfs_split_above_plane(slope[h], n[0] * cs + n[1] * sn, n))
             slope[h] = -1e30;
     }

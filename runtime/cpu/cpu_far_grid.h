@@ -51,13 +51,17 @@ void hfs_cpu_far_destroy(hfs_cpu_far *g);
 int hfs_cpu_far_coarsest_near(const hfs_cpu_far *g);
 
 /* Where a texel lies on the far grid, the same for every direction: its
- * four receivers' pairs (offsets into the grid), their bilinear weights,
- * and how far the receivers' blended height stands above the texel
- * (texels). */
+ * four receivers' pairs (offsets into the grid), their weights (bilinear,
+ * or along an edge or at one receiver where the others stand across a
+ * wall: hfs_split_far_snap), how far the receivers' blended height
+ * stands above the texel, and the place the weights blend, less the
+ * texel's (off: 0 but across a wall; each occluder is then that much
+ * nearer or farther along its direction).  Texels. */
 typedef struct hfs_cpu_far_place {
     size_t at[4];
     double wt[4];
     double dz;
+    double off[2];
 } hfs_cpu_far_place;
 void hfs_cpu_far_place_of(const hfs_cpu_far *g, int i, int j, hfs_cpu_far_place *pl);
 

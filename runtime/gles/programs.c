@@ -5,6 +5,7 @@
 
 #include "gl_shaders.h"
 #include "gl_util.h"
+#include "split_horizon.h"
 #include "visibility.h"
 
 #include <stdio.h>
@@ -70,7 +71,7 @@ void hfs_gles_variant_defines(const hfs_gles_variant *v, int pair_fetch, char bu
         {"HFS_FAR_ATLAS", v->far_atlas}, {"HFS_GLOSS_MAP", v->gloss_map},
         {"HFS_NEAR", v->near},         {"HFS_CELLS", v->cells},
         {"HFS_SRC_LAYERS", v->src_layers},
-        {"HFS_PAIR_FETCH", pair_fetch}};
+        {"HFS_PAIR_FETCH", pair_fetch}, {"HFS_FAR_STEEP", HFS_SPLIT_STEEP}};
     _Static_assert(sizeof all / sizeof all[0] <= HFS_GLES_MAX_DEFINES, "defines");
     int n = 0;
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
