@@ -90,7 +90,7 @@ float hfs_far_d(float d, float shift);
 float hfs_hdiff(vec2 a, vec2 b);
 float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc,
                     out vec2 t, out vec2 off);
-vec2 hfs_grid_snap(ivec2 p, ivec2 x0, ivec2 x1, vec2 f, vec4 r);
+float hfs_grid_blend(ivec2 p, ivec2 x0, ivec2 x1, vec4 r, out vec2 t, out vec2 off);
 vec2 hfs_grid_uv_at(ivec2 p, int sub, vec2 t, ivec2 vsize);
 vec2 hfs_grid_pix_at(ivec2 p, int sub, vec2 t);
 
@@ -334,22 +334,18 @@ float near_rise(int i, vec4 s0, vec4 s1, float s8)
  * receiver, so above p it is this much higher.  On a 2-step grid the
  * receivers are among p's 3 x 3 neighbours, whose differences near_slopes
  * already holds (a receiver 2 away has weight 0); on a coarser grid four
- * fetches.  t: where p reads the grid (hfs_grid_snap: off a receiver
- * across a wall), the place the blend is taken at; off, that place less
- * p's (hfs_grid_rise). */
+ * fetches.  t and off: where p reads the grid (off a receiver across a
+ * wall), and that place less p's (hfs_grid_blend). */
 float grid_rise(ivec2 p, int step, vec4 s0, vec4 s1, float s8, out vec2 t, out vec2 off)
 {
     if (step != 2 || u_near == 0)
         return hfs_grid_rise(u_levels, p, step, u_size, u_scale[HFS_NLEV - 1], t, off);
     ivec2 x0 = (p / step) * step;
     ivec2 x1 = min(x0 + step, u_size - 1);
-    vec2 f = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
     ivec2 o0 = x0 - p + 1, o1 = x1 - p + 1; /* 0..2 */
     vec4 r = vec4(near_rise(3 * o0.y + o0.x, s0, s1, s8), near_rise(3 * o0.y + o1.x, s0, s1, s8),
                   near_rise(3 * o1.y + o0.x, s0, s1, s8), near_rise(3 * o1.y + o1.x, s0, s1, s8));
-    t = hfs_grid_snap(p, x0, x1, f, r);
-    off = vec2(x0 - p) + t * vec2(x1 - x0);
-    return mix(mix(r.x, r.y, t.x), mix(r.z, r.w, t.x), t.y);
+    return hfs_grid_blend(p, x0, x1, r, t, off);
 }
 
 

@@ -311,27 +311,34 @@ vec2 hfs_grid_snap(ivec2 p, ivec2 x0, ivec2 x1, vec2 f, vec4 r)
     return tied ? f : vec2(float(one % 2), float(one / 2));
 }
 
+/* The receivers' heights above texel p (r, texels; x0 and x1 as in
+ * hfs_grid_snap) blended at the place t where p reads the grid (its
+ * bilinear place, or hfs_grid_snap's off a wall); off, that place less
+ * p's (0 but off a wall: an occluder read there lies dot(off, u) farther
+ * along its direction u).  hfs_grid_rise's and env_slices.frag's. */
+float hfs_grid_blend(ivec2 p, ivec2 x0, ivec2 x1, vec4 r, out vec2 t, out vec2 off)
+{
+    t = hfs_grid_snap(p, x0, x1, vec2(p - x0) / vec2(max(x1 - x0, ivec2(1))), r);
+    off = vec2(x0 - p) + t * vec2(x1 - x0);
+    return mix(mix(r.x, r.y, t.x), mix(r.z, r.w, t.x), t.y);
+}
+
 /* How far the receivers of the grid of step `step` around texel p stand
  * above it, in texels: their heights (on layer sc.z, scaled by sc.y: the
  * finest scale's (d, inv_run, layer)) blended at p's place t on the grid
  * (its bilinear weights, or hfs_grid_snap's place off a wall), minus p's;
  * 4 fetches (env_slices.frag grid_rise; bounce_gather.frag's far
- * occluders).  t is where p reads the grid's occluders (hfs_grid_uv_at),
- * off that place less p's, texels (0 but off a wall: an occluder read
- * there lies dot(off, u) farther along its direction u). */
+ * occluders).  t and off: hfs_grid_blend's (t for hfs_grid_uv_at). */
 float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc,
                     out vec2 t, out vec2 off)
 {
     ivec2 x0 = (p / step) * step;
     ivec2 x1 = min(x0 + step, size - 1);
-    vec2 f = vec2(p - x0) / vec2(max(x1 - x0, ivec2(1)));
     int layer = int(sc.z);
     vec2 h = texelFetch(levels, ivec3(p, layer), 0).xy;
     vec4 r = sc.y * vec4(hfs_hdiff(texelFetch(levels, ivec3(x0, layer), 0).xy, h),
                          hfs_hdiff(texelFetch(levels, ivec3(x1.x, x0.y, layer), 0).xy, h),
                          hfs_hdiff(texelFetch(levels, ivec3(x0.x, x1.y, layer), 0).xy, h),
                          hfs_hdiff(texelFetch(levels, ivec3(x1, layer), 0).xy, h));
-    t = hfs_grid_snap(p, x0, x1, f, r);
-    off = vec2(x0 - p) + t * vec2(x1 - x0);
-    return mix(mix(r.x, r.y, t.x), mix(r.z, r.w, t.x), t.y);
+    return hfs_grid_blend(p, x0, x1, r, t, off);
 }

@@ -143,9 +143,10 @@ static double compare_moved(const turn *t, const hfs_image *a, const hfs_image *
  *     neighbour has no occluder (HFS_SPLIT_NONE_H, -3e4) that lost this
  *     texel's occluder, at texels that followed the coordinates'
  *     rounding, which no turn keeps.  Texels beside a wall's top read the
- *     grid on a receiver or an edge (hfs_grid_snap), which made it 8.1e-3
- *     (one bounce, turned 180); since the coordinate is taken in the
- *     tile's texels (hfs_grid_pix_at), 2.1e-3 and 1.6e-3 (one bounce).
+ *     grid on a receiver or an edge (hfs_grid_snap), which made it
+ *     larger (over the bound: one bounce, turned 180); since the
+ *     coordinate is taken in the tile's texels (hfs_grid_pix_at), 2.1e-3
+ *     and 1.6e-3 (one bounce).
  *     The four receivers read with texelFetch and blended exactly gave
  *     1.4e-5 by hand (the fp16 level; the CPU blends exactly: 0).
  * Points: the shadow height maps in float, 1.2e-6 (10 ulps of 1). */

@@ -132,6 +132,12 @@ int hfs_cpu_far_coarsest_near(const hfs_cpu_far *g)
     return g->d.first + 1;
 }
 
+/* Grid index a's texel along an axis of n texels: a s, the last at n - 1. */
+static int receiver_at(int a, int s, int n)
+{
+    return a * s < n - 1 ? a * s : n - 1;
+}
+
 void hfs_cpu_far_place_of(const hfs_cpu_far *g, int i, int j, hfs_cpu_far_place *pl)
 {
     const int s = g->d.step;
@@ -144,18 +150,15 @@ void hfs_cpu_far_place_of(const hfs_cpu_far *g, int i, int j, hfs_cpu_far_place 
     const double zp = height_texels(g->f, i, j);
     double zr[4], rise[4];
     for (int r = 0; r < 4; ++r) {
-        const int x = ra[r] * s < g->f->width - 1 ? ra[r] * s : g->f->width - 1;
-        const int y = rb[r] * s < g->f->height - 1 ? rb[r] * s : g->f->height - 1;
+        const int x = receiver_at(ra[r], s, g->f->width), y = receiver_at(rb[r], s, g->f->height);
         zr[r] = height_texels(g->f, x, y);
         const double dist = hypot(x - i, y - j);
         rise[r] = dist > 0.0 ? fmax(zr[r] - zp, 0.0) / dist : 0.0;
     }
     hfs_split_far_snap(tx, ty, rise, HFS_SPLIT_STEEP, &tx, &ty);
     /* where the texel reads the grid, less its own place (0 but off a wall) */
-    const int xa = a0 * s < g->f->width - 1 ? a0 * s : g->f->width - 1;
-    const int xb = a1 * s < g->f->width - 1 ? a1 * s : g->f->width - 1;
-    const int ya = b0 * s < g->f->height - 1 ? b0 * s : g->f->height - 1;
-    const int yb = b1 * s < g->f->height - 1 ? b1 * s : g->f->height - 1;
+    const int xa = receiver_at(a0, s, g->f->width), xb = receiver_at(a1, s, g->f->width);
+    const int ya = receiver_at(b0, s, g->f->height), yb = receiver_at(b1, s, g->f->height);
     pl->off[0] = xa + tx * (xb - xa) - i;
     pl->off[1] = ya + ty * (yb - ya) - j;
     const double wt[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
