@@ -84,6 +84,7 @@ vec2 hfs_split(float v);
 vec4 hfs_pair_tex4_layer(highp sampler2DArray t, vec3 uvl);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
+vec2 hfs_height_at(highp sampler2DArray h, ivec2 p);
 
 uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals (hfs_normal_at) */
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
@@ -127,11 +128,10 @@ uniform highp sampler2D u_egloss;        /* D_g(R) / D_g max, 129 x 65, LINEAR *
 #endif
 #endif
 #if defined(HFS_LOCAL) || defined(HFS_GLOSS_EYE)
-#ifndef HFS_NLAYERS
-#define HFS_NLAYERS 25
-#endif
+/* A texel's own height: u_height's layer u_hlayer (hfs_height_at), a
+ * uniform and not the level count compiled in, so that a field of another
+ * size or pyramid reuses this program. */
 float hfs_h(vec2 t);
-uniform highp sampler2DArray u_levels;   /* the heights, full resolution in the last layer */
 #endif
 
 layout(std140) uniform HfsShade {
@@ -231,8 +231,7 @@ layout(std140) uniform HfsLocal {
 vec3 local_lights(ivec2 p, vec3 n, vec2 uv)
 {
     float dx = u_lg.x;
-    float z = u_lg.w * (u_lg.y + u_lg.z * hfs_h(texelFetch(u_levels,
-                                                           ivec3(p, HFS_NLAYERS - 1), 0).xy));
+    float z = u_lg.w * (u_lg.y + u_lg.z * hfs_h(hfs_height_at(u_height, p)));
     vec3 pw = vec3(vec2(p) * dx, z + 1e-4 * dx);
     vec3 sum = vec3(0.0);
     vec4 rv = vec4(0.0);
@@ -277,8 +276,7 @@ void main()
 #ifdef HFS_GLOSS_EYE
         /* gloss.h hfs_gloss_view_at, in texel units (the texel's point as
          * the heights give it; straight up at the eye itself). */
-        float z = u_ghgt.z * (u_ghgt.x + u_ghgt.y * hfs_h(texelFetch(u_levels,
-                                                              ivec3(p, HFS_NLAYERS - 1), 0).xy));
+        float z = u_ghgt.z * (u_ghgt.x + u_ghgt.y * hfs_h(hfs_height_at(u_height, p)));
         vec3 d = u_geye.xyz - vec3(vec2(p), z);
         float len = length(d);
         view = len > 0.0 ? d / len : vec3(0.0, 0.0, 1.0);

@@ -170,9 +170,6 @@ static int bind_inputs(hfs_gles *g, const hfs_gles_frame *fr, const hfs_gles_pro
     }
     if ((rc = hfs_gles_program_texture(gl, prog, "u_kf", GL_TEXTURE_2D_ARRAY, r->kf, err)))
         return rc;
-    if ((fr->n_local > 0 || fr->gloss.at_eye) && /* the texels' heights */
-        (rc = hfs_gles_program_texture(gl, prog, "u_levels", GL_TEXTURE_2D_ARRAY, r->arr, err)))
-        return rc;
     if (fr->n_local > 0) {
         if ((rc = hfs_gles_program_texture(gl, prog, "u_localv", GL_TEXTURE_2D_ARRAY, r->localv,
                                            err)))
@@ -215,7 +212,6 @@ static int run(hfs_gles *g, hfs_gles_frame *fr, const int *which, hfs_error *err
 
     const int local = fr->n_local > 0;
     const hfs_gles_variant v = {.n_keys = fr->n_keys, .env = fr->has_env, .local = local,
-                                .n_layers = local || fr->gloss.at_eye ? L->n_layers : 0,
                                 .local_dirs = local ? fr->q->nphi_local : 0,
                                 .n_local = fr->n_local, .fp32 = g->caps.fp32,
                                 .albedo_map = fr->albedo != NULL, .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0,
