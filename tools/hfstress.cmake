@@ -24,9 +24,9 @@ set_tests_properties(stress_fast_cpu stress_fast_gles stress_fast_slice stress_f
                      PROPERTIES LABELS stress TIMEOUT 600 SKIP_RETURN_CODE 77)
 set_property(TEST stress_fast_pair_fetch APPEND PROPERTY ENVIRONMENT HFS_GL_PAIR_FETCH=1)
 # the longest tests start first (tests/CMakeLists.txt "COST")
-set_tests_properties(stress_fast_gles PROPERTIES COST 33)
-set_tests_properties(stress_fast_slice PROPERTIES COST 31)
-set_tests_properties(stress_fast_pair_fetch PROPERTIES COST 30)
+set_tests_properties(stress_fast_gles PROPERTIES COST 90)
+set_tests_properties(stress_fast_slice PROPERTIES COST 23)
+set_tests_properties(stress_fast_pair_fetch PROPERTIES COST 102)
 if(HFS_SANITIZE)
   # Mesa/LLVM allocations LSan reports at exit (tests/lsan.supp, as tests/gles.cmake).
   set_property(TEST stress_fast_gles stress_fast_slice stress_fast_pair_fetch APPEND PROPERTY ENVIRONMENT
