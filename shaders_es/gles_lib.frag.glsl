@@ -81,7 +81,8 @@ float hfs_far_slope(float h, float d, float dz, float inv_step)
 }
 
 /* An occluder's distance d (0: none) read at a place `shift` texels
- * behind the texel along its direction (hfs_grid_rise's off, dotted). */
+ * behind the texel along its direction (hfs_grid_rise's off, dotted);
+ * runtime/core/split_horizon.h hfs_split_far_d. */
 float hfs_far_d(float d, float shift)
 {
     return d > 0.0 ? d + shift : d;

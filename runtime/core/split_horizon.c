@@ -108,6 +108,11 @@ void hfs_split_far_snap(double tx, double ty, const double rise[4], double steep
         *sx = one & 1, *sy = one >> 1;
 }
 
+double hfs_split_far_d(double d, double shift)
+{
+    return d > 0.0 ? d + shift : d;
+}
+
 double hfs_split_far_slope(double h, double d, double dz, int g)
 {
     if (!(d > 0.0))

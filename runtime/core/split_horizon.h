@@ -105,6 +105,12 @@ int hfs_split_first_far(int n_levels, int k, double from);
  * there is none (d <= 0). */
 double hfs_split_far_slope(double h, double d, double dz, int g);
 
+/* An occluder's distance d (0: none) read at a place `shift` texels behind
+ * the texel along its direction (hfs_split_far_snap's offset, dotted with
+ * the direction): d + shift, none staying none.  GLSL twin: gles_lib.frag
+ * hfs_far_d. */
+double hfs_split_far_d(double d, double shift);
+
 /* Where a texel reads a grid of occluders (sx, sy: its bilinear position
  * between receivers 0 = (a0, b0), 1 = (a1, b0), 2 = (a0, b1), 3 = (a1,
  * b1)), from its own position (tx, ty) and each receiver's rise above it

@@ -185,7 +185,7 @@ void hfs_cpu_far_slopes(const hfs_cpu_far *g, const hfs_cpu_far_place *pl, int d
         hfs_horizon_plan_dir(g->plan, e, &cs, &sn);
         /* read off the texel's place: the occluder that much nearer or farther */
         const double shift = pl->off[0] * cs + pl->off[1] * sn;
-        slope[h] = hfs_split_far_slope(hb, db > 0.0 ? db + shift : db, pl->dz, g->d.step);
+        slope[h] = hfs_split_far_slope(hb, hfs_split_far_d(db, shift), pl->dz, g->d.step);
         if (!g->d.plane)
             continue;
         if (!hfs_split_above_plane(slope[h], n[0] * cs + n[1] * sn, n))
