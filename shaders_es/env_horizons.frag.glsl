@@ -97,6 +97,7 @@ vec4 hfs_nlp_occ_tan(float t);
 vec4 hfs_f16v(vec4 v);
 void hfs_sh_hemisphere(vec3 n, out vec4 h[4]);
 float hfs_table_coord(float omega, float n);
+float hfs_pair_h(float h);
 void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror, vec3 c,
                    vec3 s, inout vec4 V[4]);
 
@@ -308,8 +309,9 @@ vec4 target(int t, vec2 om[HFS_PER_DRAW])
 /* Slice path: HFS_NOUT x 4 horizons as tan(omega / 2) (bounded,
  * monotonic in omega, and rational in cos, sin omega; -1 where nothing
  * rises, and past the swath's last direction), or (HFS_PAIRS) HFS_NOUT x 2
- * occluders, each as its height over the receiver and its distance, in
- * texels (-3e4 and 0 where there is none): env_slices.frag blends them
+ * occluders, each as its height over the receiver (in u_hunit texels,
+ * gles_lib.frag hfs_pair_h) and its distance, in texels (-3e4 and 0 where there is
+ * none): env_slices.frag blends them
  * and moves them to each texel's height. */
 void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
 {
@@ -328,7 +330,7 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
                      1e18);
 #ifdef HFS_PAIRS
         /* the occluder's height over the receiver, and its distance */
-        om[q] = dist > 0.0 ? vec2(clamp(best * dist, -3e4, 3e4), dist) : vec2(-3e4, 0.0);
+        om[q] = dist > 0.0 ? vec2(hfs_pair_h(best * dist), dist) : vec2(-3e4, 0.0);
 #else
         om[q].x = best / (1.0 + sqrt(1.0 + best * best)); /* tan(omega / 2) */
 #endif
@@ -442,7 +444,7 @@ void main()
                               dist, fetches);
         best = clamp(best, -1e18, 1e18);
         if (dist > 0.0) {
-            res[2 * h] = clamp(best * dist, -3e4, 3e4);
+            res[2 * h] = hfs_pair_h(best * dist);
             res[2 * h + 1] = dist;
         }
     }

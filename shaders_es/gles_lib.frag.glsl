@@ -69,15 +69,27 @@ vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas)
     return (fpix + vec2(i - row * float(cols), row) * vec2(fsize)) / atlas;
 }
 
-/* A blended far occluder (height h over its receivers, distance d, texels)
- * seen from a texel dz below the receivers (a grid of step 1 / inv_step):
- * its slope, -1e30 where there is none (runtime/core/split_horizon.h
- * hfs_split_far_slope). */
+/* The unit of the occluder heights the grids store, texels: 1 up to 2^14
+ * texels of relief, a power of two beyond (runtime/core/split_horizon.h
+ * hfs_split_h_unit), so that fp16 holds them at any relief. */
+uniform float u_hunit;
+
+/* An occluder's height over its receiver, h texels, as a grid stores it:
+ * in u_hunit texels, within fp16 (runtime/cpu/cpu_far_grid.c far_row). */
+float hfs_pair_h(float h)
+{
+    return clamp(h / u_hunit, -3e4, 3e4);
+}
+
+/* A blended far occluder (height h over its receivers in u_hunit texels,
+ * distance d in texels) seen from a texel dz texels below the receivers
+ * (a grid of step 1 / inv_step): its slope, -1e30 where there is none
+ * (runtime/core/split_horizon.h hfs_split_far_slope). */
 float hfs_far_slope(float h, float d, float dz, float inv_step)
 {
     if (!(d > 0.0))
         return -1e30;
-    return (h + dz * min(d * inv_step, 1.0)) / d;
+    return (h * u_hunit + dz * min(d * inv_step, 1.0)) / d;
 }
 
 /* An occluder's distance d (0: none) read at a place `shift` texels

@@ -8,7 +8,7 @@
 #                            (fp16, Legendre): grid texels equal, the rest
 #                            within the interpolation error
 #     determinism, cache, flat, memory, variants  (test_gles_render.c)
-#     errors, steep          refusals, extreme relief (test_gles_limits.c)
+#     errors, steep, relief  refusals, extreme relief (test_gles_limits.c)
 #     timing                 the fetch counts (test_gles_fetch.c)
 #     sub*, slice            the visibility grid, the slice path (test_gles_grid.c)
 #   *_es30   MESA_GLES_VERSION_OVERRIDE=3.0 (an ES 3.0 context, as on boards)
@@ -49,7 +49,7 @@ function(hfs_gles_test name mode)
     set(prog test_gles_fetch)
   elseif(mode STREQUAL "sub" OR mode STREQUAL "slice")
     set(prog test_gles_grid)
-  elseif(mode STREQUAL "errors" OR mode STREQUAL "steep")
+  elseif(mode STREQUAL "errors" OR mode STREQUAL "steep" OR mode STREQUAL "relief")
     set(prog test_gles_limits)
   else()
     set(prog test_gles_render)
@@ -221,7 +221,7 @@ hfs_gles_test(test_gles_sub2_cones_split sub cones 2 9.5e-5 4.44e-4 1.05e-2 env 
 hfs_gles_test(test_gles_sub2_fractal_split sub fractal 2 1.72e-3 5.55e-3 0.122 env slice split)
 hfs_gles_test(test_gles_sub4_fractal_split sub fractal 4 1.29e-3 1.47e-2 0.314 env slice split)
 hfs_gles_test(test_gles_sub2_dem_split sub dem 2 2.48e-4 1.15e-3 3.08e-2 env slice split)
-foreach(mode determinism cache flat memory timing errors variants slice steep)
+foreach(mode determinism cache flat memory timing errors variants slice steep relief)
   hfs_gles_test(test_gles_${mode} ${mode})
 endforeach()
 # The same backend on the OSMesa fallback context (where it is built).

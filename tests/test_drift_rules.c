@@ -203,6 +203,21 @@ static void check_far(void)
           hfs_split_far_slope(2.0, 16.0, 1.0, 8));
     CHECK(hfs_split_far_slope(2.0, 0.0, 1.0, 8) <= -1e29, "no occluder: %g",
           hfs_split_far_slope(2.0, 0.0, 1.0, 8));
+    /* the stored heights' unit: 1 up to 2^14 texels of relief, then the
+     * power of two that brings the relief to 2^14 or below, at most 2^64 */
+    static const struct {
+        double lo, hi, zscale, dx, unit;
+    } units[] = {{0.0, 16384.0, 1.0, 1.0, 1.0},     {-1.0, 1.0, 8192.0, 1.0, 1.0},
+                 {0.0, 16385.0, 1.0, 1.0, 2.0},     {0.0, 32768.0, 1.0, 1.0, 2.0},
+                 {0.0, 32769.0, 1.0, 1.0, 4.0},     {0.0, 1.0, 1e6, 1.0, 64.0},
+                 {0.0, 1.0, 1e12, 1e-9, 0x1p56},    {0.0, 3e38, 1e12, 1e-9, 0x1p64},
+                 {0.0, 1.0, 0.0, 1.0, 1.0},         {0.0, 1.0, HUGE_VAL, 1.0, 0x1p64},
+                 {0.0, 1.0, NAN, 1.0, 1.0},         {5.0, 5.0, 1e12, 1e-9, 1.0}};
+    for (size_t i = 0; i < sizeof units / sizeof units[0]; ++i) {
+        const double u = hfs_split_h_unit(units[i].lo, units[i].hi, units[i].zscale, units[i].dx);
+        CHECK(u == units[i].unit, "height unit %zu: relief (%g - %g) %g / %g: %g, want %g", i,
+              units[i].hi, units[i].lo, units[i].zscale, units[i].dx, u, units[i].unit);
+    }
     /* above its own sub-direction's tangent plane by more than the tie,
      * 1e-3 (the far pairs' fp16) relative to 1 + |the plane's slope|: on
      * a plane as steep as 1.6 the tie is 2.6e-3 */

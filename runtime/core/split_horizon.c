@@ -113,6 +113,19 @@ double hfs_split_far_d(double d, double shift)
     return d > 0.0 ? d + shift : d;
 }
 
+double hfs_split_h_unit(double lo, double hi, double zscale, double dx)
+{
+    const double relief = (hi - lo) * zscale / dx;
+    if (!(relief > HFS_SPLIT_H_PLAIN)) /* and NaN: nothing to scale */
+        return 1.0;
+    if (!(relief < HUGE_VAL))
+        return ldexp(1.0, 64);
+    int e;
+    const double m = frexp(relief / HFS_SPLIT_H_PLAIN, &e); /* in [0.5, 1) x 2^e */
+    e = m == 0.5 ? e - 1 : e; /* an exact power of two is its own unit */
+    return ldexp(1.0, e < 64 ? e : 64);
+}
+
 double hfs_split_far_slope(double h, double d, double dz, int g)
 {
     if (!(d > 0.0))

@@ -42,6 +42,10 @@
  * GLES pass writes this pair, and the blend takes it as it is. */
 #define HFS_SPLIT_NONE_H (-3e4)
 #define HFS_SPLIT_MAX_H 3e4 /* |height| stored, within fp16 */
+/* The largest relief (texels) whose occluder heights are stored as they
+ * are: 2^14, within HFS_SPLIT_MAX_H with room for a bilinear sample's
+ * rounding. */
+#define HFS_SPLIT_H_PLAIN 16384.0
 /* A receiver that rises above a texel steeper than this (a slope: height
  * difference over distance, 80.5 degrees) is on a wall's top above it
  * (hfs_split_far_snap); the GLES passes get it as HFS_FAR_STEEP. */
@@ -104,6 +108,20 @@ int hfs_split_first_far(int n_levels, int k, double from);
  * blended height: the slope (h + dz min(d / g, 1)) / d, or -1e30 where
  * there is none (d <= 0). */
 double hfs_split_far_slope(double h, double d, double dz, int g);
+
+/* The unit of the occluder heights a grid stores (the pairs' h, in units
+ * of this many texels): 1 where the field's relief (hi - lo) zscale / dx
+ * is at most HFS_SPLIT_H_PLAIN texels, else the power of two that brings
+ * it there, at most 2^64.  An occluder's height over its receiver is
+ * within the relief, so a stored height never reaches HFS_SPLIT_MAX_H,
+ * fp16's range, at any relief: without the unit a field of 1e5 texels'
+ * relief had its occluders cut to 3e4 and the texels below a receiver
+ * lost them (the sky at subsample 2 off by up to the whole of the
+ * maximum; the image changed with zscale where slopes are 1e15 and 1e21).
+ * A power of two: h / unit * unit is h, and fields within 2^14 texels
+ * store what they stored before.  The CPU's grids and the GLES passes
+ * (u_hunit, gles_lib.frag hfs_far_slope) both take it from here. */
+double hfs_split_h_unit(double lo, double hi, double zscale, double dx);
 
 /* An occluder's distance d (0: none) read at a place `shift` texels behind
  * the texel along its direction (hfs_split_far_snap's offset, dotted with

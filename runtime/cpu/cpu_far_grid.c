@@ -3,13 +3,12 @@
  */
 #include "cpu_far_grid.h"
 
+#include "field_geom.h"
 #include "parallel.h"
 #include "pyramid_layout.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-#define HALF_PI 1.57079632679489661923
 
 struct hfs_cpu_far {
     const hfs_field *f;
@@ -17,12 +16,13 @@ struct hfs_cpu_far {
     int n_env, n_sub;           /* directions, sub-directions (k n_env)      */
     int gw, gh;                 /* grid receivers                            */
     double tie;
+    double hunit;               /* the pairs' height unit (hfs_split_h_unit) */
     hfs_horizon_plan *plan;     /* the sub-directions                        */
     double *omega;              /* per worker: n_levels angles               */
     int n_levels;
     float *pairs;               /* gh x gw x n_sub x 2: height over the
-                                   receiver and distance, texels (as the
-                                   GLES pass stores them)                    */
+                                   receiver (in hunit texels) and distance
+                                   (texels), as the GLES pass stores them    */
 };
 
 /* Heights in texels of the horizontal: world z / dx. */
@@ -43,7 +43,7 @@ static void far_row(void *ctx, int b, int worker)
         float *out = g->pairs + ((size_t)b * (size_t)g->gw + (size_t)a) * (size_t)g->n_sub * 2;
         for (int e = 0; e < g->n_sub; ++e) {
             double slope, dist;
-            hfs_horizon_point(g->plan, e, x, y, -HALF_PI, NULL, NULL, omega);
+            hfs_horizon_point(g->plan, e, x, y, HFS_HORIZON_OFF, NULL, NULL, omega);
             const int has = hfs_horizon_occluder(g->plan, e, x, y, omega, 1, g->d.first,
                                                  g->d.coarsest, g->d.refine, g->tie, &slope,
                                                  &dist);
@@ -52,7 +52,7 @@ static void far_row(void *ctx, int b, int worker)
                 slope = hfs_horizon_gap(g->plan, e, x, y, g->d.gap_from, g->tie,
                                         has ? slope : -1e30, 0, &dist, NULL);
             if (dist > 0.0) {
-                double h = slope * dist;
+                double h = slope * dist / g->hunit;
                 h = h > HFS_SPLIT_MAX_H ? HFS_SPLIT_MAX_H : (h < -HFS_SPLIT_MAX_H ? -HFS_SPLIT_MAX_H : h);
                 out[2 * e] = (float)h;
                 out[2 * e + 1] = (float)dist;
@@ -80,6 +80,9 @@ int hfs_cpu_occ_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, int offse
     g->gh = hfs_grid_count(f->height, desc->step);
     g->n_levels = hfs_cpu_pyramid_count(pyr);
     g->tie = tie;
+    double lo, hi;
+    hfs_field_range(f, &lo, &hi);
+    g->hunit = hfs_split_h_unit(lo, hi, f->zscale, f->dx);
     double *phi = malloc((size_t)g->n_sub * sizeof *phi);
     const int workers = threads < 1 ? 1 : threads;
     g->omega = malloc((size_t)workers * (size_t)g->n_levels * sizeof *g->omega);
@@ -178,7 +181,7 @@ void hfs_cpu_far_slopes(const hfs_cpu_far *g, const hfs_cpu_far_place *pl, int d
         double hb = 0.0, db = 0.0;
         for (int r = 0; r < 4; ++r) {
             const float *p = g->pairs + pl->at[r] + 2 * (size_t)e;
-            hb += pl->wt[r] * p[0];
+            hb += pl->wt[r] * p[0] * g->hunit;
             db += pl->wt[r] * p[1];
         }
         double cs, sn;

@@ -362,7 +362,7 @@ int hfs_horizon_occluder(const hfs_horizon_plan *hp, int dir, int i, int j,
     *dist = 0.0;
     for (int s = first; s >= coarsest; --s) { /* fine to coarse, as env_horizons.frag */
         const double o = omega[(size_t)s * stride];
-        if (!(o > -HALF_PI))
+        if (!(o > HFS_HORIZON_OFF))
             break; /* off the grid: so is every farther scale */
         const double sl = scale_slope(hp, dir, i, j, s, o, NULL);
         if (sl > ref + HFS_HORIZON_TIE * fabs(ref) + tie) {

@@ -156,7 +156,10 @@ double hfs_horizon_gap_along(const hfs_horizon_plan *hp, double c, double s, int
  * in direction dir, as env_horizons.frag's far pass finds it (and, with
  * `coarsest` > 0, its near pass on a sub-sampled grid): going from
  * scale `first` (the finest far one) to coarser ones, at most to
- * `coarsest`, until one is off the grid (omega[s * stride] = -pi/2: the row form's angles with floor -pi/2),
+ * `coarsest`, until one is off the grid (omega[s * stride] at most
+ * HFS_HORIZON_OFF: the point form's angles with that floor; not -pi/2,
+ * which a slope below -6e15 also rounds to, so that on a field of such
+ * relief every falling scale ended the search),
  * the largest slope, then `refine` samples about the scale that leads (a
  * scale takes over when it beats the leader by more than the tie, as in
  * hfs_horizon_refined, unseeded).  *slope: the largest slope (-1e30 if

@@ -7,6 +7,7 @@
 #include "gl_util.h"
 #include "parallel.h"
 #include "pyramid_layout.h"
+#include "split_horizon.h"
 
 #include <math.h>
 #include <string.h>
@@ -42,6 +43,7 @@ int hfs_gles_layout_init(hfs_gles_layout *L, const hfs_field *f, const hfs_quali
     hfs_field_range(f, &lo, &hi);
     L->base = 0.5 * lo + 0.5 * hi; /* no overflow for any float range */
     L->hscale = 0.5 * hi - 0.5 * lo;
+    L->hunit = hfs_split_h_unit(lo, hi, L->zscale, L->dx);
     L->vmax = 1.0;
     if (!(L->hscale > 0.0)) {
         L->hscale = 1.0; /* flat: every v is 0 */

@@ -31,6 +31,8 @@ typedef struct hfs_gles_layout {
     double spacing[HFS_GLES_MAX_LEVELS];   /* s_i = d_i                       */
     int read_layer[HFS_GLES_MAX_LEVELS];   /* read level of scale i, - lmin   */
     double base, hscale;      /* v = (z - base) / hscale, v in [-1, 1]        */
+    double hunit;             /* the grids' occluder heights' unit, texels
+                                 (split_horizon.h hfs_split_h_unit)           */
     double vmax;              /* max v (1, or 0 for a flat field)            */
     double dx, zscale;
     hfs_ray_bound_layout rb;  /* the gap search's bounds (bounds_texture.h)   */

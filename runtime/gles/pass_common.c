@@ -61,12 +61,15 @@ int hfs_gles_begin_outside(hfs_gles *g, const hfs_field *f, const hfs_quality *q
 }
 
 /* u_zf: a normalized height difference a texel apart as a world slope,
- * hscale zscale / dx, clamped to 1e30 (the normals and the gap search). */
+ * hscale zscale / dx, clamped to 1e30 (the normals and the gap search);
+ * u_hunit: the unit of the grids' occluder heights (gles_lib.frag
+ * hfs_far_slope). */
 static void set_slope_factor(const hfs_gl *gl, const hfs_gles_program *prog,
                              const hfs_gles_layout *L)
 {
     const double zf = L->hscale * L->zscale / L->dx;
     hfs_gles_set_f1(gl, prog, "u_zf", (float)(zf < 1e30 ? zf : 1e30));
+    hfs_gles_set_f1(gl, prog, "u_hunit", (float)L->hunit);
 }
 
 int hfs_gles_bind_normals(hfs_gles *g, const hfs_gles_program *prog, const hfs_gles_layout *L,
