@@ -34,6 +34,13 @@ trap 'rm -f "$owners"' EXIT
     done
 } | sort -k2 >"$owners"
 
+# owner_of[HEADER]: its folder, the first line of $owners that names it
+# (read once: a lookup per #include was a process per #include).
+declare -A owner_of
+while read -r folder header; do
+    [ -n "${owner_of[$header]+x}" ] || owner_of[$header]=$folder
+done <"$owners"
+
 rt_real=$(realpath "$rt")
 src_real=$(realpath "$src")
 fail=0
@@ -85,7 +92,7 @@ for dir in . $(cd "$rt" && find . -mindepth 1 -maxdepth 1 -type d | sed 's|^\./|
                     break
                 done
             else
-                owner=$(awk -v h="$name" '$2 == h { print $1; exit }' "$owners")
+                owner=${owner_of[$name]:-}
             fi
             if [ -z "$owner" ] || [ "$owner" = "?" ]; then
                 [ "$quote" = '"' ] || continue # a system header
