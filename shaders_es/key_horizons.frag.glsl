@@ -180,10 +180,14 @@ float bspline_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
  * gap search from u_gap_from (hfs_gap_search_cells: every crossing of the
  * ray with the grid's lines, and every cell between, that could beat it).  Slopes, not angles, are
  * compared: one atan. */
-float refined_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout int fetches,
-                      out float dist, out bool seen)
+float refined_horizon(ivec2 g, vec2 cs, vec3 n, float fl, vec2 hx[HFS_NLAYERS],
+                      inout int fetches, out float dist, out bool seen)
 {
-    float tfl = clamp(tan(fl), -1e30, 1e30);
+    /* The floor's slope from the normal, not tan(fl): past slopes of ~1e7
+     * fl rounds to float's +-pi/2, which lies beyond +-pi/2, and its tan
+     * has the other sign (a plane falling steeply away from the light
+     * became a wall towards it: the texel dark at subsample 1). */
+    float tfl = clamp(-(n.x * cs.x + n.y * cs.y) / n.z, -1e30, 1e30);
     float best = -3e38, ref = 0.0;       /* the max; the slope at bi */
     int bi = -1;
     seen = false;
@@ -235,7 +239,7 @@ void main()
         vec2 cs = SW_DIR(u_dir0 + q).xy;
         float fl = hfs_floor(n, cs), dist;
         bool seen;
-        float best = u_refine > 0 ? refined_horizon(g, cs, fl, hx, fetches, dist, seen)
+        float best = u_refine > 0 ? refined_horizon(g, cs, n, fl, hx, fetches, dist, seen)
                                   : bspline_horizon(g, cs, fl, hx, fetches, dist, seen);
         best = clamp(best, -HFS_HALF_PI, HFS_HALF_PI);
         float stored = u_near > 0 ? tan(clamp(best, -HFS_KEY_TAN_ANGLE, HFS_KEY_TAN_ANGLE)) : best;

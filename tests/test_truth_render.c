@@ -6,6 +6,9 @@
  *   env_flat_vs_unsh   non-uniform SH, flat and tilted planes: truth == exact
  *   key_flat           key light on a plane = rho/pi Le E_cap (sampling tol.)
  *   key_wall           key light behind a tall wall: 0 behind, full in front
+ *   key_lift           key light on a flat plane 1e6 up with dx 1e-9, where
+ *                      SPEC's 1e-4 dx lift is below the height's resolution:
+ *                      the flat-plane value, not a self-hit's 0
  *   env_wall           uniform sky beside a plateau vs an independent horizon
  *   determinism        bit-identical across runs and thread counts; progress
  *   degenerate         zscale 0, 2x2, light at the horizon, radius 0: finite
@@ -170,6 +173,42 @@ static void test_key_flat(void)
     free(z);
     printf("key_flat: 6 lights, worst error %.2e relative (above the horizon), %.2e of the "
            "full cap (straddling)\n", worst, worst_s);
+}
+
+static void test_key_lift(void)
+{
+    /* The plane at world height 1e6 (z 1e6, zscale 1; and z 1, zscale 1e6)
+     * with dx 1e-9: 1e-4 dx is 1e-13, below the double resolution of 1e6
+     * (1.2e-10), so the ray would start on the surface and hit it there
+     * (every texel 0 before field_geom.h's hfs_field_lifted_z).  Tolerance
+     * as key_flat's above the horizon (1e-3 relative). */
+    const int w = 12, h = 9;
+    float *z = malloc((size_t)w * h * sizeof *z);
+    const double zs[2] = {1.0, 1e6};
+    double worst = 0.0;
+    for (int c = 0; c < 2; ++c) {
+        for (int k = 0; k < w * h; ++k)
+            z[k] = (float)(1e6 / zs[c]);
+        const hfs_field f = {w, h, z, 1e-9, zs[c]};
+        hfs_lighting l = no_lights();
+        l.n_key = 1;
+        l.key[0] = (hfs_key_light){.phi = 0.4, .elev = 0.7, .alpha = 0.1,
+                                   .radiance = {1.0f, 1.0f, 1.0f}};
+        const hfs_quality q = default_quality(0);
+        hfs_image t = {0}, u = {0};
+        REQUIRE(render_both(&f, &l, &q, &t, &u) == 0, "render zscale %g", zs[c]);
+        const double want = 1.0 / PI * hfs_cap_irradiance(sin(0.7), 0.1);
+        for (int k = 0; k < w * h; ++k) {
+            const double err = fabs(t.rgb[3 * k] - want) / want;
+            worst = err > worst ? err : worst;
+            REQUIRE(err <= 1e-3, "zscale %g texel %d: truth %.8g want %.8g", zs[c], k,
+                    t.rgb[3 * k], want);
+        }
+        hfs_image_free(&t);
+        hfs_image_free(&u);
+    }
+    free(z);
+    printf("key_lift: a plane 1e6 up at dx 1e-9, worst error %.2e relative\n", worst);
 }
 
 static void test_key_wall(void)
@@ -437,6 +476,7 @@ int main(void)
     test_flat_uniform_sky();
     test_env_flat_vs_unshadowed();
     test_key_flat();
+    test_key_lift();
     test_key_wall();
     test_env_wall();
     test_determinism();

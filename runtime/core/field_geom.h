@@ -8,10 +8,27 @@
 
 #include "hfshade.h"
 
+#include <math.h>
+
 /* World height zscale*H at grid point (i, j); no bounds check. */
 static inline double hfs_field_z(const hfs_field *f, int i, int j)
 {
     return f->zscale * (double)f->z[(size_t)j * (size_t)f->width + (size_t)i];
+}
+
+/* The receiver's lift (SPEC): a ray from grid point (i, j) starts 1e-4 dx
+ * above it (no self-hits). */
+#define HFS_FIELD_LIFT 1e-4
+
+/* World height of grid point (i, j) lifted by HFS_FIELD_LIFT dx, or, where
+ * that lift is below the height's resolution (dx 1e-9 under heights of
+ * 1e6: the lift would round away and every ray would start on the
+ * surface, a hit at its first point), the next double above the height:
+ * the least lift there is.  Usual fields keep the SPEC's lift exactly. */
+static inline double hfs_field_lifted_z(const hfs_field *f, int i, int j)
+{
+    const double z = hfs_field_z(f, i, j), z0 = z + HFS_FIELD_LIFT * f->dx;
+    return z0 > z ? z0 : nextafter(z, HUGE_VAL);
 }
 
 /* Bilinear world height at grid coordinates (gx, gy) (texel units, grid point

@@ -531,7 +531,7 @@ void hfs_cpu_local_row(const hfs_cpu_local *lc, int worker, int j, const double 
         row_pass(lc, s, j, normals);
     for (int i = 0; i < lc->w; ++i) {
         const double *n = normals + 3 * i;
-        const double p[3] = {i * f->dx, j * f->dx, hfs_field_z(f, i, j) + LIFT * f->dx};
+        const double p[3] = {i * f->dx, j * f->dx, hfs_field_lifted_z(f, i, j)};
         double hn[HFS_SH_N];
         hfs_sh_rotate_zonal(lc->h_zonal, n[0], n[1], n[2], hn);
         double r[3];

@@ -26,7 +26,7 @@ static double grid_ratio(const hfs_cpu_local *lc, local_scratch *s, const local_
                          int y, const double n[3])
 {
     const hfs_field *f = lc->f;
-    const double p[3] = {x * f->dx, y * f->dx, hfs_field_z(f, x, y) + LIFT * f->dx};
+    const double p[3] = {x * f->dx, y * f->dx, hfs_field_lifted_z(f, x, y)};
     hfs_local_view lv;
     hfs_local_view_make(&src->light, p, &lv);
     if (lv.inside || src->open)

@@ -14,8 +14,6 @@
 #include "local_geometry.h"
 #include "visibility.h"
 
-#define LIFT 1e-4 /* receiver lift, units of dx (SPEC; truth.c, unshadowed.c) */
-
 typedef struct local_src {
     hfs_local_light light;
     double le[3];

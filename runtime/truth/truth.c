@@ -38,7 +38,6 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
-#define LIFT 1e-4          /* receiver lift, in units of dx (SPEC)          */
 #define TRIG_N 7           /* L along a vertical great circle: degree-3 trig */
 #define LOCAL_SLOT0 64     /* RNG stream ids of local lights start here     */
 #define GLOSS_SLOT 4096    /* RNG stream id of the glossy environment term  */
@@ -216,7 +215,7 @@ static void truth_row(void *vctx, int j, int worker)
         const uint64_t rid = (uint64_t)j * (uint64_t)f->width + (uint64_t)i;
         double n[3];
         hfs_field_normal(f, i, j, n);
-        const double z0 = hfs_field_z(f, i, j) + LIFT * f->dx;
+        const double z0 = hfs_field_lifted_z(f, i, j);
         const double o[3] = {(double)i, (double)j, z0};        /* grid xy, world z */
         const double pw[3] = {i * f->dx, j * f->dx, z0};       /* world */
         double lo[3] = {0.0, 0.0, 0.0};

@@ -10,7 +10,6 @@
 #include <math.h>
 
 #define PI 3.14159265358979323846
-#define LIFT 1e-4           /* receiver lift, in units of dx (SPEC) */
 #define BOUNCE_SLOT0 4096   /* RNG slots of bounces: apart from the lights' */
 
 typedef struct bounce_ctx {
@@ -36,7 +35,7 @@ static void gather(const hfs_truth_bounce_in *in, int i, int j, double mean[3])
     double n[3], t1[3], t2[3];
     hfs_field_normal(f, i, j, n);
     frame_around(n, t1, t2);
-    const double o[3] = {i, j, hfs_field_z(f, i, j) + LIFT * f->dx};
+    const double o[3] = {i, j, hfs_field_lifted_z(f, i, j)};
     uint64_t rng = rng_seed((uint64_t)j * (uint64_t)f->width + (uint64_t)i,
                             BOUNCE_SLOT0 + in->bounce);
     const int k = strata(in->samples);
@@ -75,7 +74,7 @@ static void gather_lobe(const hfs_truth_bounce_in *in, int i, int j, double out[
     if (!(hfs_gloss_reflect(gl, pw, n, r) > 0.0))
         return;
     frame_around(r, t1, t2);
-    const double o[3] = {i, j, hfs_field_z(f, i, j) + LIFT * f->dx};
+    const double o[3] = {i, j, hfs_field_lifted_z(f, i, j)};
     uint64_t rng = rng_seed((uint64_t)j * (uint64_t)f->width + (uint64_t)i,
                             BOUNCE_SLOT0 + 16 + in->bounce);
     const int k = strata(in->samples);

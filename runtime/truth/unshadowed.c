@@ -21,7 +21,6 @@
 #include <math.h>
 
 #define PI 3.14159265358979323846
-#define LIFT 1e-4
 
 /* The glossy term of texel (i, j) with V = 1 (gloss.h): the environment's
  * ks (N.R) L*lobe(R) (visible fraction 1), each light's lobe at its centre
@@ -32,7 +31,7 @@ static void gloss_unshadowed(const hfs_field *f, const hfs_lighting *l, const hf
 {
     double n[3], r[3];
     hfs_field_normal(f, i, j, n);
-    const double pw[3] = {i * f->dx, j * f->dx, hfs_field_z(f, i, j) + LIFT * f->dx};
+    const double pw[3] = {i * f->dx, j * f->dx, hfs_field_lifted_z(f, i, j)};
     const double nr = hfs_gloss_reflect(g, pw, n, r);
     if (!(nr > 0.0))
         return;
@@ -86,7 +85,7 @@ int hfs_unshadowed_render(const hfs_field *f, const hfs_lighting *l,
         for (int i = 0; i < f->width; ++i) {
             double n[3];
             hfs_field_normal(f, i, j, n);
-            const double pw[3] = {i * f->dx, j * f->dx, hfs_field_z(f, i, j) + LIFT * f->dx};
+            const double pw[3] = {i * f->dx, j * f->dx, hfs_field_lifted_z(f, i, j)};
             double lo[3] = {0.0, 0.0, 0.0};
             if (has_env) {
                 double h[HFS_SH_N];
