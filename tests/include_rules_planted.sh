@@ -11,7 +11,7 @@ trap 'rm -rf "$w"' EXIT
 cp -r "$src/runtime" "$w/runtime"
 for other in board tools; do
     mkdir -p "$w/$other"
-    (cd "$src/$other" && find . -name '*.h' -exec cp --parents {} "$w/$other/" \;)
+    (cd "$src/$other" && find . -name '*.h' -exec cp --parents -t "$w/$other/" {} +)
 done
 if ! out=$(bash "$here/include_rules.sh" "$w"); then
     echo "include_rules_planted: the unplanted copy fails:"
