@@ -3,9 +3,11 @@
 #   libhfshade0     the shared libraries (libhfshade, libhfshade_gis)
 #                                                   Depends: from dpkg-shlibdeps
 #   libhfshade-dev  headers, .pc, CMake package     Depends: libhfshade0 (= version)
-#   hfshade-tools   hfshade, hfgen, hfbench         Depends: from dpkg-shlibdeps
+#   hfshade-tools   hfshade, hfgen, hfbench         Depends: from dpkg-shlibdeps,
+#                                                   libgdal (loaded, not linked)
 #   hfshade-kiosk   the kiosk, its unit, /etc/hfshade/ (conffiles), demo data
-#                                                   Depends: dpkg-shlibdeps, adduser
+#                                                   Depends: dpkg-shlibdeps, adduser,
+#                                                   libgdal
 #   python3-hfshade the Python module               Depends: libhfshade0 (= version),
 #                                                   python3-numpy, python3-cffi
 # The tools and the kiosk link the core statically (runtime/shared.cmake), so
@@ -81,6 +83,18 @@ set(CPACK_COMPONENT_TOOLS_DESCRIPTION
 
 set(CPACK_DEBIAN_KIOSK_PACKAGE_NAME hfshade-kiosk)
 set(CPACK_DEBIAN_KIOSK_PACKAGE_DEPENDS "adduser")
+# The tools and the kiosk load GDAL when they first need it
+# (tools/gdal/gdal_lazy.h), so dpkg-shlibdeps does not see it: its
+# package, by the file the build found, at least the version built on.
+if(HFS_GDAL_FILE)
+  execute_process(COMMAND dpkg-query -S ${HFS_GDAL_FILE} OUTPUT_VARIABLE hfs_gdal_owner
+                  RESULT_VARIABLE hfs_gdal_rc ERROR_QUIET)
+  if(hfs_gdal_rc EQUAL 0 AND hfs_gdal_owner MATCHES "^([^:, ]+)")
+    set(hfs_gdal_dep "${CMAKE_MATCH_1} (>= ${HFS_GDAL_VERSION})")
+    set(CPACK_DEBIAN_TOOLS_PACKAGE_DEPENDS "${hfs_gdal_dep}")
+    set(CPACK_DEBIAN_KIOSK_PACKAGE_DEPENDS "adduser, ${hfs_gdal_dep}")
+  endif()
+endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/deb/kiosk-postinst ${PROJECT_BINARY_DIR}/deb/kiosk/postinst COPYONLY)
 configure_file(${PROJECT_SOURCE_DIR}/cmake/deb/kiosk-conffiles ${PROJECT_BINARY_DIR}/deb/kiosk/conffiles COPYONLY)
 set(CPACK_DEBIAN_KIOSK_PACKAGE_CONTROL_EXTRA

@@ -9,6 +9,14 @@ if(TARGET hfshade_gdal)
   hfs_add_test(test_gdal_jacksboro SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_gdal_jacksboro.c
                LIBS hfshade_gdal hfshade_lib ARGS ${PROJECT_SOURCE_DIR}/data LABEL io TIMEOUT 300)
 endif()
+# GDAL loaded when first needed (tools/gdal/gdal_lazy.h): the tools do not
+# link it, our formats never load it, a library that cannot be loaded is
+# one line naming the input (tests/gdal_lazy.sh).
+if(TARGET hfshade_gdal AND TARGET hfshade-kiosk)
+  add_test(NAME gdal_lazy COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/gdal_lazy.sh
+           $<TARGET_FILE:hfshade> $<TARGET_FILE:hfshade-kiosk> $<TARGET_FILE:hfgen>)
+  set_tests_properties(gdal_lazy PROPERTIES LABELS io TIMEOUT 120)
+endif()
 # Issue 39's GIS commands end to end: each test runs `hfshade` on DEMs it
 # writes with GDAL and reads the rasters back (tests/gis_cli_util.h); GL:
 # exit 77 only when no GL context can be made.  Only where GDAL is.

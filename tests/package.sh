@@ -87,6 +87,11 @@ for need in libpng16-16 libopenexr libinih1 libegl1 libc6; do
     depends hfshade-tools | grep -q "$need" || bad "hfshade-tools does not depend on $need"
     depends hfshade-kiosk | grep -q "$need" || bad "hfshade-kiosk does not depend on $need"
 done
+# GDAL is loaded at run time (tools/gdal/gdal_lazy.h): named by hand.
+if grep -q '^HFS_GDAL_FILE:INTERNAL=.' "$build/CMakeCache.txt"; then
+    depends hfshade-tools | grep -q "libgdal[0-9]* (>=" || bad "hfshade-tools does not depend on libgdal"
+    depends hfshade-kiosk | grep -q "libgdal[0-9]* (>=" || bad "hfshade-kiosk does not depend on libgdal"
+fi
 for need in adduser libgpiod libevdev libdrm libgbm libx11; do
     depends hfshade-kiosk | grep -q "$need" || bad "hfshade-kiosk does not depend on $need"
 done

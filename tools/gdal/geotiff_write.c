@@ -3,6 +3,8 @@
  */
 #include "geotiff_write.h"
 
+#include "gdal_lazy.h"
+
 #include <cpl_conv.h>
 #include <cpl_error.h>
 #include <cpl_string.h>
@@ -88,10 +90,13 @@ int hfs_gdal_write_geotiff(hfs_outputs *o, const char *path, const hfs_image *im
         if (!isfinite(img->rgb[k]))
             return hfs_fail(err, HFS_E_INVALID, "%s: refusing to write a non-finite value",
                             path);
+    int rc = hfs_gdal_need(path, err);
+    if (rc)
+        return rc;
     CPLPushErrorHandler(CPLQuietErrorHandler);
     GDALDatasetH mem = mem_dataset(img, hm);
     char **opts = CSLSetNameValue(NULL, "COMPRESS", "DEFLATE");
-    const int rc = hfs_gdal_write_copy(o, path, mem, "GTiff", opts, err);
+    rc = hfs_gdal_write_copy(o, path, mem, "GTiff", opts, err);
     CSLDestroy(opts);
     if (mem)
         GDALClose(mem);

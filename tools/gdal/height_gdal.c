@@ -3,6 +3,8 @@
  */
 #include "height_gdal.h"
 
+#include "gdal_lazy.h"
+
 #include <cpl_error.h>
 #include <gdal.h>
 #include <ogr_srs_api.h>
@@ -151,6 +153,9 @@ int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
                          hfs_heightmap *out, hfs_error *err)
 {
     memset(out, 0, sizeof *out);
+    int rc = hfs_gdal_need(path, err); /* not HFS_E_UNSUPPORTED: the file may be GDAL's */
+    if (rc)
+        return rc;
     CPLPushErrorHandler(CPLQuietErrorHandler);
     GDALDatasetH ds = GDALOpenEx(path, GDAL_OF_RASTER | GDAL_OF_READONLY, NULL, NULL, NULL);
     if (!ds) {
@@ -160,7 +165,7 @@ int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
     double gt[6];
     float *z = NULL;
     int w = GDALGetRasterXSize(ds), h = GDALGetRasterYSize(ds);
-    int rc = hfs_gdal_check_dataset(ds, path, opts, gt, err);
+    rc = hfs_gdal_check_dataset(ds, path, opts, gt, err);
     if (!rc && !(rc = hfs_gdal_read_heights(ds, path, opts, &z, err)) && gt[5] > 0.0)
         flip_rows(z, w, h);
     /* Holes filled on the file's own grid, before any resampling spreads them. */
@@ -201,6 +206,7 @@ int hfs_gdal_height_load(const char *path, const hfs_height_load_opts *opts,
 
 void hfs_gdal_register(void)
 {
-    GDALAllRegister();
+    /* GDAL itself is loaded by the first file only the extra loader reads
+     * (gdal_lazy.h), and registers its drivers then. */
     hfs_height_set_extra_loader(hfs_gdal_height_load);
 }

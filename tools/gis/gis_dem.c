@@ -3,6 +3,7 @@
  */
 #include "gis_dem.h"
 
+#include "gdal_lazy.h"
 #include "height_gdal.h"
 
 #include <cpl_error.h>
@@ -94,7 +95,7 @@ int gis_dem_open(const char *path, const hfs_height_load_opts *opts, gis_dem *de
 {
     memset(dem, 0, sizeof *dem);
     int rc = check_path(path, err);
-    if (rc)
+    if (rc || (rc = hfs_gdal_need(path, err)))
         return rc;
     CPLPushErrorHandler(CPLQuietErrorHandler);
     GDALDatasetH ds = GDALOpenEx(path, GDAL_OF_RASTER | GDAL_OF_READONLY, NULL, NULL, NULL);

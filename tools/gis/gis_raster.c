@@ -3,6 +3,7 @@
  */
 #include "gis_raster.h"
 
+#include "gdal_lazy.h"
 #include "geotiff_write.h"
 
 #include <cpl_error.h>
@@ -101,11 +102,13 @@ int gis_raster_encode(const char *path, const gis_raster *r, void **bytes, size_
     if (p >= 0)
         return hfs_fail(err, HFS_E_INVALID, "%s: refusing to write a non-finite value (band "
                         "%d, texel %ld, %ld)", path, band, p % r->width, p / r->width);
+    int rc = hfs_gdal_need(path, err);
+    if (rc)
+        return rc;
     char **opts = gis_raster_options(r->cog, r->plain);
     CPLPushErrorHandler(CPLQuietErrorHandler);
     GDALDatasetH mem = mem_dataset(r);
-    const int rc = hfs_gdal_encode_copy(path, mem, r->cog ? "COG" : "GTiff", opts, bytes, len,
-                                        err);
+    rc = hfs_gdal_encode_copy(path, mem, r->cog ? "COG" : "GTiff", opts, bytes, len, err);
     if (mem)
         GDALClose(mem);
     CPLPopErrorHandler();

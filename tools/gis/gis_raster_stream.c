@@ -3,6 +3,8 @@
  */
 #include "gis_raster_stream.h"
 
+#include "gdal_lazy.h"
+
 #include <cpl_error.h>
 #include <cpl_string.h>
 #include <gdal.h>
@@ -54,13 +56,16 @@ static int make_part(gis_raster_stream *s, hfs_error *err)
 int gis_raster_stream_open(gis_raster_stream **out, const char *path, const char *file,
                            const gis_raster *r, hfs_error *err)
 {
-    gis_raster_stream *s = calloc(1, sizeof *s);
     *out = NULL;
+    int rc = hfs_gdal_need(path, err);
+    if (rc)
+        return rc;
+    gis_raster_stream *s = calloc(1, sizeof *s);
     if (!s)
         return hfs_fail(err, HFS_E_NOMEM, "%s: out of memory", path);
     s->path = path, s->file = file, s->n_bands = r->n_bands, s->nodata = r->nodata;
     s->plain = r->plain;
-    int rc = r->cog ? make_part(s, err) : HFS_OK;
+    rc = r->cog ? make_part(s, err) : HFS_OK;
     if (rc) {
         free(s);
         return rc;

@@ -7,6 +7,7 @@
  */
 #include "gis_tiles.h"
 
+#include "gdal_lazy.h"
 #include "gis_outputs.h"
 #include "gis_raster.h"
 
@@ -116,7 +117,9 @@ int gis_tiles_merge(const gis_tiles_plan_t *m, const char *out, int cog, hfs_err
     const int horizon = !strcmp(m->product, "horizon");
     char **paths = calloc((size_t)m->n_suffix, sizeof *paths);
     gis_outputs *outs = NULL;
-    int rc = paths ? gis_outputs_create(&outs, m->dem, m->n_suffix, err)
+    int rc = hfs_gdal_need(out, err);
+    if (!rc)
+        rc = paths ? gis_outputs_create(&outs, m->dem, m->n_suffix, err)
                    : hfs_fail(err, HFS_E_NOMEM, "tiles merge: out of memory");
     /* horizon: out is a PREFIX, with or without .tif (as the command's -o) */
     const size_t len = strlen(out);
