@@ -72,33 +72,26 @@ static void load(void)
     gdal.GDALAllRegister();
 }
 
-int hfs_gdal_load(hfs_error *err)
+/* 1 once the library is loaded (loading it on the first call), else 0
+ * with the reason in load_error. */
+static int gdal_loaded(void)
 {
-    if (atomic_load_explicit(&loaded, memory_order_acquire))
-        return HFS_OK;
-    pthread_once(&load_once, load);
-    if (atomic_load_explicit(&loaded, memory_order_acquire))
-        return HFS_OK;
-    return hfs_fail(err, HFS_E_UNSUPPORTED, "%s", load_error);
+    if (!atomic_load_explicit(&loaded, memory_order_acquire))
+        pthread_once(&load_once, load);
+    return atomic_load_explicit(&loaded, memory_order_acquire);
 }
 
 int hfs_gdal_need(const char *path, hfs_error *err)
 {
-    hfs_error why;
-    if (!hfs_gdal_load(&why))
-        return HFS_OK;
-    return hfs_fail(err, HFS_E_IO, "%s: %s", path, why.msg);
+    return gdal_loaded() ? HFS_OK : hfs_fail(err, HFS_E_IO, "%s: %s", path, load_error);
 }
 
 /* A forwarder's way in: the library, or the one-line error and exit 1
- * (the doors call hfs_gdal_load first; this is for a call past them). */
+ * (the doors call hfs_gdal_need first; this is for a call past them). */
 static void need_gdal(void)
 {
-    if (atomic_load_explicit(&loaded, memory_order_acquire))
-        return;
-    hfs_error err;
-    if (hfs_gdal_load(&err)) {
-        fprintf(stderr, "%s: %s\n", program_invocation_short_name, err.msg);
+    if (!gdal_loaded()) {
+        fprintf(stderr, "%s: %s\n", program_invocation_short_name, load_error);
         exit(1);
     }
 }

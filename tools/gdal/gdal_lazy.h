@@ -23,13 +23,9 @@
 
 #include "hfshade.h"
 
-/* Loads libgdal and registers its drivers, once per process (thread-safe).
- * HFS_OK, or HFS_E_UNSUPPORTED with "GDAL (libgdal.so.N) cannot be
- * loaded: ..." in err. */
-int hfs_gdal_load(hfs_error *err);
-
-/* hfs_gdal_load for a door of the GDAL code: the error is HFS_E_IO and
- * names path ("PATH: GDAL (libgdal.so.N) cannot be loaded: ..."). */
+/* Loads libgdal and registers its drivers, once per process (thread-safe),
+ * for a door of the GDAL code: HFS_OK, or HFS_E_IO naming path
+ * ("PATH: GDAL (libgdal.so.N) cannot be loaded: ...") in err. */
 int hfs_gdal_need(const char *path, hfs_error *err);
 
 #endif

@@ -58,8 +58,9 @@ void hfs_gdal_cell_metres(const char *wkt, const double gt[6], int h, double *cx
  * replaced (the old *z freed), *cell = d.  0, or HFS_E_NOMEM (all kept). */
 int hfs_gdal_make_square(float **z, int *w, int *h, double cx, double cy, double *cell);
 
-/* Registers hfs_gdal_height_load with the height loader (and GDAL's
- * drivers): the tools call it once at start-up. */
+/* Registers hfs_gdal_height_load with the height loader: the tools call
+ * it once at start-up.  GDAL itself is loaded, and its drivers
+ * registered, by the first file only this loader reads (gdal_lazy.h). */
 void hfs_gdal_register(void);
 
 #endif /* HFS_HEIGHT_GDAL_H */
