@@ -27,10 +27,10 @@ declare -A n_class fail_class
 fails=0 cases=0
 HANG_S=60
 
-snapshot() { # every entry under $w: path, type, size, content hash
+snapshot() { # every entry under $w: path, type, size, content hash (one find:
+              # a snapshot runs twice per case, and processes are slow here)
     (cd "$w" && find . -mindepth 1 \( -type f -o -type l -o -type p -o -type d \) \
-        -printf '%p %y %s %l\n' | sort
-     cd "$w" && find . -type f -readable -exec md5sum {} + 2>/dev/null | sort)
+        -printf '%p %y %s %l\n' \( -type f -readable -exec md5sum {} + \) 2>/dev/null | sort)
 }
 
 # run CLASS NAME EXPECT NEEDLE OUTPUTS -- COMMAND...
