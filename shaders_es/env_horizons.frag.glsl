@@ -326,12 +326,15 @@ void write_horizons(ivec2 g, vec3 n, vec2 hx[HFS_NLAYERS], int fetches)
          * plane (a slope below it never wins); the others below any. */
         float best = u_sub == 1 ? -(n.x * cs.x + n.y * cs.y) / n.z : -1e30;
         float dist;
-        best = clamp(horizon_tan(g, cs, hx, best, HFS_NLEV - 1 - u_near, fetches, dist), -1e18,
-                     1e18);
+        best = horizon_tan(g, cs, hx, best, HFS_NLEV - 1 - u_near, fetches, dist);
 #ifdef HFS_PAIRS
-        /* the occluder's height over the receiver, and its distance */
+        /* the occluder's height over the receiver, and its distance: from
+         * the slope as found (at most u_zf, 1e30, times a height: finite),
+         * not clamped as a slope, which cut walls steeper than 1e18 down
+         * to 1e18 times their distance (as cpu_far_grid.c stores it) */
         om[q] = dist > 0.0 ? vec2(hfs_pair_h(best * dist), dist) : vec2(-3e4, 0.0);
 #else
+        best = clamp(best, -1e18, 1e18); /* 1 + best^2 finite */
         om[q].x = best / (1.0 + sqrt(1.0 + best * best)); /* tan(omega / 2) */
 #endif
     }
@@ -442,8 +445,7 @@ void main()
         best = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, 1e9,
                               u_zf, u_tie, hx[HFS_NLAYERS - 1], dist > 0.0 ? best : -1e30, 1e30,
                               dist, fetches);
-        best = clamp(best, -1e18, 1e18);
-        if (dist > 0.0) {
+        if (dist > 0.0) { /* the height from the slope as found (write_horizons) */
             res[2 * h] = hfs_pair_h(best * dist);
             res[2 * h + 1] = dist;
         }

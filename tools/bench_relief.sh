@@ -30,7 +30,7 @@ echo "${LIGHT%% *}:"
 echo
 echo "| dx | zscale | build | cpu sub 1 | cpu sub 2 | cpu sub 4 | gles sub 1 | gles sub 2 | gles sub 4 |"
 echo "|---|---|---|---|---|---|---|---|---|"
-for dz in "1 1e3" "1 1e4" "1 1e5" "1 1e6" "1e-9 1e6" "1e-9 1e8" "1e-9 1e9" "1e-9 1e12"; do
+for dz in "1 1e3" "1 1e4" "1 1e5" "1 1e6" "1e-9 1e6" "1e-9 1e8" "1e-9 1e9" "1e-9 1e10" "1e-9 1e11" "1e-9 1e12"; do
     read -r dx z <<<"$dz"
     # shellcheck disable=SC2086 # LIGHT's flags are words
     A=(--height "$W/f32.pfm" --dx "$dx" --zscale "$z" $LIGHT)
