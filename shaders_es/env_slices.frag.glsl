@@ -236,10 +236,19 @@ void slice_add_mean(int j, vec2 cs, float a, float b, float tf, float xf, float 
 #elif HFS_NSUB == 2
     /* Two elevations x0, x1 = m -+ D: the mean of e^{ikx} is e^{ikm}
      * cos(kD), and e^{im} cos D is the mean of the two unit vectors, so one
-     * set of multiples, cos kD by Chebyshev's recurrence, one atan. */
-    vec2 sum = slope_dir(t[0]) + slope_dir(t[1]);
-    float r = length(sum); /* 2 cos D > 0: both elevations in (-pi/2, pi/2] */
-    multiples(sum / r, cx, sx);
+     * set of multiples, cos kD by Chebyshev's recurrence, one atan.  The
+     * direction e^{im} is the sum's where the two lie within 120 degrees
+     * (r >= 1), else their difference's turned a quarter: u1 - u0 = 2 sin D
+     * (-sin m, cos m).  Near +-pi/2 at once (a wall's two sides, slopes
+     * past ~1e7) the sum's components are a few ulps of 1 each and its
+     * direction was rounding: at subsample 2 the sky moved by up to a tenth
+     * of the maximum from the CPU's (BENCHMARKS.md "Past slopes of 1e7 and of 1e18"). */
+    vec2 u0 = slope_dir(t[0]), u1 = slope_dir(t[1]);
+    vec2 sum = u0 + u1, dif = u1 - u0;
+    float r = length(sum); /* 2 cos D >= 0: both elevations in (-pi/2, pi/2] */
+    vec2 em = r >= 1.0 ? sum / r
+                       : vec2(dif.y, -dif.x) * ((t[1] >= t[0] ? 1.0 : -1.0) / length(dif));
+    multiples(em, cx, sx);
     float ck[5];
     ck[0] = 0.5 * r;
     ck[1] = 2.0 * ck[0] * ck[0] - 1.0;
@@ -249,7 +258,7 @@ void slice_add_mean(int j, vec2 cs, float a, float b, float tf, float xf, float 
         cx[k] *= ck[k];
         sx[k] *= ck[k];
     }
-    dj0 -= atan(sum.y / sum.x); /* sum.x > 0 */
+    dj0 -= atan(r >= 1.0 ? sum.y / sum.x : em.y / em.x); /* > 0 denominators: |m| < pi/2 */
 #else
     float c1[5], s1[5];
     for (int k = 0; k < 5; ++k) {
