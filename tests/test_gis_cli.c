@@ -366,6 +366,35 @@ static void bad(const char *out, const char *args)
     CHECK(rc != 0 && lines == 1 && access(tpath(out), F_OK) != 0);
 }
 
+/* A DEM over the GLES path's texture side, searched whole (no --radius):
+ * one line that names the DEM and the command's ways out.  Under the ES 3.0 minimum
+ * limits (HFS_GL_STRICT_LIMITS: 2048 texels) a 4 x 2100 DEM is enough. */
+static void test_over_limit(void)
+{
+    enum { LW = 4, LH = 2100 };
+    static float z[LW * LH];
+    for (int k = 0; k < LW * LH; ++k)
+        z[k] = (float)(k % 7);
+    const double gt[6] = {500000.0, 30.0, 0.0, 4000000.0, 0.0, -30.0};
+    CHECK(gdal_fixture_write("GTiff", tpath("long.tif"), LW, LH, z, gt, 32616, 0, ND,
+                             GDT_Float32) == 0);
+    const char *was = getenv("HFS_GL_STRICT_LIMITS");
+    char *keep = was ? strdup(was) : NULL;
+    setenv("HFS_GL_STRICT_LIMITS", "1", 1);
+    bad("long_svf.tif", "svf long.tif -o long_svf.tif");
+    size_t n = 0;
+    char *msg = (char *)read_all(tpath("err.txt"), &n);
+    if (!gles_failed("svf over the texture limit"))
+        CHECK(msg && strstr(msg, "long.tif: ") && strstr(msg, "texture limit") &&
+              strstr(msg, "--method sweep") && strstr(msg, "--radius"));
+    free(msg);
+    if (keep)
+        setenv("HFS_GL_STRICT_LIMITS", keep, 1);
+    else
+        unsetenv("HFS_GL_STRICT_LIMITS");
+    free(keep);
+}
+
 static void test_bad_inputs(void)
 {
     CHECK(run("svf --help") == 0 && lines_of("err.txt") == 0);
@@ -398,6 +427,7 @@ static void test_bad_inputs(void)
     bad("x.tif", "svf geo.tif -o x.tif --method sweep --radius 500");
     bad("x.tif", "svf geo.tif -o x.tif --method sweep --backend truth");
     bad("x.tif", "openness geo.tif -o x.tif --method sweep");
+    test_over_limit();
 }
 
 int main(int argc, char **argv)
