@@ -258,18 +258,20 @@ int gis_run_open(gis_run *r, int load, hfs_error *err)
     return rc;
 }
 
-/* A computation's error names the DEM unless it names a file already (the
- * DEM, or an output it could not write): the renderer's and the sweep's
- * messages speak of "horizons" and "the field". */
-static int name_the_dem(const gis_run *r, int rc, hfs_error *err)
+/* The products, their error naming the DEM unless it names a file already
+ * (the DEM, or an output it could not write): the renderer's and the
+ * sweep's messages speak of "horizons" and "the field". */
+static int compute_named(gis_run *r, hfs_error *err)
 {
+    hfs_error why = {""};
+    const int rc = compute_and_write(r, &why);
+    if (!rc)
+        return HFS_OK;
     const char *out = r->a->product == GIS_HORIZON ? r->prefix : r->a->out;
-    const char *m = err->msg;
+    const char *m = why.msg;
     if (!strncmp(m, r->a->dem, strlen(r->a->dem)) || (out && *out && !strncmp(m, out, strlen(out))))
-        return rc;
-    char why[sizeof err->msg];
-    snprintf(why, sizeof why, "%s", m);
-    return hfs_fail(err, rc, "%s: %s", r->a->dem, why);
+        return hfs_fail(err, rc, "%s", m);
+    return hfs_fail(err, rc, "%s: %s", r->a->dem, m);
 }
 
 int gis_command_run(const gis_args *a, hfs_error *err)
@@ -283,8 +285,8 @@ int gis_command_run(const gis_args *a, hfs_error *err)
         const hfs_renderer_desc desc = {.backend = a->backend};
         rc = hfs_renderer_create(&desc, &r.c.r, err);
     }
-    if (!rc && (rc = compute_and_write(&r, err)))
-        rc = name_the_dem(&r, rc, err);
+    if (!rc)
+        rc = compute_named(&r, err);
     if (!rc)
         rc = gis_outputs_commit(r.outs, err);
     if (!rc && !a->quiet)

@@ -5,7 +5,6 @@
 
 #include "gis_sweep.h"
 
-#include <stdio.h>
 #include <stdlib.h>
 
 #define HALF_PI 1.5707963267948966
@@ -14,17 +13,15 @@ int gis_horizons_get(hfs_renderer *r, int sweep, const hfs_field *field, const h
                      const hfs_horizon_desc *desc, float *out, hfs_error *err)
 {
     if (!sweep) {
-        const int rc = hfs_renderer_horizons(r, field, q, desc, out, err);
+        hfs_error why = {""};
+        const int rc = hfs_renderer_horizons(r, field, q, desc, out, &why);
         /* The renderer's refusal of a whole-field search over its texture
          * side (the only unsupported case without a radius), with the
          * commands' own ways out. */
-        if (rc == HFS_E_UNSUPPORTED && desc->radius == 0.0) {
-            char why[sizeof err->msg];
-            snprintf(why, sizeof why, "%s", err->msg);
+        if (rc == HFS_E_UNSUPPORTED && desc->radius == 0.0)
             return hfs_fail(err, rc, "%s (here: --radius METRES, --method sweep or --backend "
-                            "cpu)", why);
-        }
-        return rc;
+                            "cpu)", why.msg);
+        return rc ? hfs_fail(err, rc, "%s", why.msg) : HFS_OK;
     }
     if (desc->radius != 0.0)
         return hfs_fail(err, HFS_E_INVALID, "horizons: the sweep searches the whole field "
