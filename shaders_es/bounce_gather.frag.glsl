@@ -209,10 +209,10 @@ struct Walk {
     float x_cap[HFS_NSUB]; /* and its elevation (-1e30 below the plane) */
 #endif
 #endif
-    vec3 acc;        /* sum of Lo_{b-1} W */
+    vec3 acc;        /* sum of Lo_{b-1} W beyond the near part */
     vec3 last;       /* the last band's radiance */
     bool near;       /* the bands cast now are the near part's */
-    vec3 acc_near;   /* its sum of Lo_{b-1} W */
+    vec3 acc_near;   /* the near part's sum of Lo_{b-1} W */
     float w_near;    /* and of W */
 #ifdef HFS_GLOSSY
     vec4 l;          /* (R.d, R_z, N.d, N_z) */
@@ -261,10 +261,13 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
     float s = slice_cosine(w.a, w.b, x);
     float wl;
     float wgt = band_weight(w, s, x, wl);
-    w.acc += lo * wgt;
+    /* apart: the grid's rest is no difference of two sums, which a clamp
+     * at 0 cannot mend where lo < 0 (an SH sky ringing below zero) */
     if (w.near) {
         w.acc_near += lo * wgt;
         w.w_near += wgt;
+    } else {
+        w.acc += lo * wgt;
     }
 #ifdef HFS_GLOSSY
     w.gacc += lo * wl;
@@ -583,15 +586,18 @@ void main()
     w_occ = w_near * u_bhead.x;
 #elif defined(HFS_SLICE)
     w_occ = (w_occ + skipped_occluded(g, n, ns, fine, h0)) * (2.0 / float(HFS_NDIR));
-    /* With a near part the grid keeps the rest (0 without one). */
-    acc = max(acc - acc_near, vec3(0.0));
+    /* With a near part the grid keeps the rest (acc: no near band in it). */
     w_occ = max(w_occ - w_near * u_bhead.x, 0.0);
+#else
+    acc += acc_near;
 #endif
+    /* Not clamped at 0: Lo_{b-1} is gathered as it is (SPEC; the CPU, the
+     * truth), and every weight is >= 0 (DESIGN.md "Indirect light"). */
     vec3 e = acc * u_bhead.x;
-    e = clamp(e, vec3(0.0), vec3(65504.0));
+    e = clamp(e, vec3(-65504.0), vec3(65504.0));
     o_e = vec4(mix(vec3(0.0), e, equal(e, e)), clamp(w_occ, 0.0, 1.0));
 #ifdef HFS_GLOSSY
-    vec3 gs = clamp(gacc * u_gview.w, vec3(0.0), vec3(65504.0));
+    vec3 gs = clamp(gacc * u_gview.w, vec3(-65504.0), vec3(65504.0));
     o_g = vec4(mix(vec3(0.0), gs, equal(gs, gs)), 0.0);
 #endif
 }
