@@ -74,10 +74,11 @@ static double indirect_error(const hfs_image *a, const hfs_image *a0, const hfs_
  * by percents). */
 #define EQUAL_REL 2e-3
 /* Under the sky that rings below zero on texel-scale relief, measured 8.5e-5
- * / 8.0e-5 (fp16, 1 / 2 bounces) and 1.5e-5 / 1.3e-5 (fp32); GLES clamping
- * the gathered light at 0 (before session 41) gave 1.2e-3 to 1.6e-3. */
+ * / 8.0e-5 (fp16, 1 / 2 bounces; glossy 9.7e-5 / 9.9e-5) and 1.5e-5 /
+ * 1.3e-5 (fp32; glossy 2.8e-5 / 2.6e-5); GLES clamping the gathered light
+ * at 0 (before session 41) gave 1.2e-3 to 1.6e-3. */
 #define RING_REL16 1.2e-4
-#define RING_REL32 2.0e-5
+#define RING_REL32 3.3e-5
 
 /* A sky that rings below zero: a bright lobe 25 degrees up projected to
  * order 4 (its SH a scaled basis vector: the truncated delta) over a dim
@@ -297,6 +298,8 @@ int main(int argc, char **argv)
     rough.f.z = rough.z, rough.f.dx = 1.0, rough.f.zscale = 1.0;
     check_grid(&rough, "fBm Hurst 0.25", GRID_ROUGH_REL);
     check_equal(&rough, p, "fBm Hurst 0.25, a sky ringing below zero + sun", 2, NULL, 12, 0);
+    check_equal(&rough, p, "fBm Hurst 0.25, glossy, a sky ringing below zero + sun", 2, NULL, 12,
+                1);
     check_furnace("V-groove", NULL);
     check_furnace("fBm Hurst 0.25", rough.z);
     free(rough.z);
