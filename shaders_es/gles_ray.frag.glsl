@@ -23,6 +23,8 @@ float hfs_h(vec2 t);
 float hfs_hdiff(vec2 a, vec2 b);
 bool hfs_scale_takes_over(float sl, float ref, float tie);
 vec2 hfs_height_at(highp sampler2DArray h, ivec2 p);
+vec2 hfs_height_bilinear(highp sampler2DArray h, vec2 uv, ivec2 size, vec2 p);
+bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 
 /* ---- the gap search (runtime/core/ray_bound.h hfs_ray_bound_search) ----- */
 
@@ -393,3 +395,27 @@ float HFS_GAP_SEARCH(highp sampler2DArray heights, highp sampler2D bounds, ivec2
     return R.best;
 }
 
+/* Grid point p's own cell along cs (field_geom.h hfs_field_first_cell_slope),
+ * the stretch a gap search from t_first <= 1 leaves to its caller: the
+ * larger of its near end's slope (ns: the one-sided slopes to (+x, -x, +y,
+ * -y), -1e30 off the field, weighted by |cos|, |sin|) and its far edge's,
+ * read bilinearly from heights h (hfs_height_bilinear, one fetch, counted),
+ * slopes as rise (v - v_p) / t; -1e30 where the cell leaves the field.
+ * The key lights (key_visibility.frag) and the local lights
+ * (local_visibility.frag). */
+float hfs_own_cell_slope(highp sampler2DArray h, ivec2 p, ivec2 size, vec2 cs, vec2 zp, vec4 ns,
+                         float rise, inout int fetches)
+{
+    vec2 a = abs(cs);
+    float nx = cs.x > 0.0 ? ns.x : ns.y, ny = cs.y > 0.0 ? ns.z : ns.w;
+    if ((a.x > 0.0 && nx < -1e29) || (a.y > 0.0 && ny < -1e29))
+        return -1e30;
+    float near = (a.x > 0.0 ? a.x * nx : 0.0) + (a.y > 0.0 ? a.y * ny : 0.0);
+    float d = 1.0 / max(a.x, a.y);
+    vec2 o;
+    if (!hfs_scale_offset(p, size, d, cs, o))
+        return max(near, -1e30);
+    vec2 t = hfs_height_bilinear(h, (vec2(p) + 0.5 + o) / vec2(size), size, vec2(p) + o);
+    ++fetches;
+    return max(near, rise * hfs_hdiff(t, zp) / d);
+}

@@ -63,6 +63,8 @@ void hfs_sh_basis(vec3 d, out vec4 y[4]);
 float hfs_refine_factor(int q, int n, float k);
 #define HFS_RAY_LEVELS 16
 float hfs_ray_bound(highp sampler2D bounds, ivec2 at[HFS_RAY_LEVELS], ivec2 lo, ivec2 hi);
+float hfs_own_cell_slope(highp sampler2DArray h, ivec2 p, ivec2 size, vec2 cs, vec2 zp, vec4 ns,
+                         float rise, inout int fetches);
 float hfs_gap_search_cells(highp sampler2DArray heights, highp sampler2D bounds,
                            ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
                            float t_last, float zf, float tie, vec2 h0, float best, float stop,
@@ -162,12 +164,7 @@ vec4 g_ns; /* the texel's one-sided slopes to (+x, -x, +y, -y), -1e30 off the fi
  * through it). */
 float own_cell_slope(ivec2 p, vec2 cs, vec2 zp)
 {
-    vec2 a = abs(cs);
-    float nx = cs.x > 0.0 ? g_ns.x : g_ns.y, ny = cs.y > 0.0 ? g_ns.z : g_ns.w;
-    if ((a.x > 0.0 && nx < -1e29) || (a.y > 0.0 && ny < -1e29))
-        return -1e30;
-    float near = (a.x > 0.0 ? a.x * nx : 0.0) + (a.y > 0.0 ? a.y * ny : 0.0);
-    return max(near, near_slope(p, cs, 1.0 / max(a.x, a.y), zp));
+    return hfs_own_cell_slope(u_height, p, u_size, cs, zp, g_ns, u_rise, g_fetches);
 }
 
 /* Texel p's near horizon on a sub-sampled grid (DESIGN.md "Key lights on

@@ -31,6 +31,7 @@
  *
  * HFS_COUNT: writes the fetch count to o_r0 instead (see env_horizons.frag).
  */
+// hfs-base: HFS_CELLS 1
 // hfs-variant: HFS_NOUT 4
 // hfs-variant: HFS_TABLES 1
 // hfs-variant: HFS_FP32 1, HFS_COUNT 1
@@ -89,6 +90,16 @@ float hfs_table_coord(float omega, float n);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
 void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror, vec3 c,
                    vec3 s, inout vec4 V[4]);
+vec2 hfs_height_at(highp sampler2DArray h, ivec2 p);
+vec3 hfs_normal_sides(highp sampler2DArray h, ivec2 p, ivec2 size, float zf, vec2 zp,
+                      out vec4 d, out bvec4 on);
+float hfs_own_cell_slope(highp sampler2DArray h, ivec2 p, ivec2 size, vec2 cs, vec2 zp, vec4 ns,
+                         float rise, inout int fetches);
+#define HFS_RAY_LEVELS 16
+float hfs_gap_search_cells(highp sampler2DArray heights, highp sampler2D bounds,
+                           ivec2 at[HFS_RAY_LEVELS], ivec2 size, ivec2 g, vec2 cs, float t_first,
+                           float t_last, float zf, float tie, vec2 h0, float best, float stop,
+                           inout float dist, inout int fetches);
 
 uniform highp sampler2DArray u_levels;
 uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals (hfs_normal_at) */
@@ -99,6 +110,13 @@ uniform int u_light0;                    /* first light of this draw */
 uniform int u_nl;                        /* lights in this draw, <= 2 * HFS_NOUT */
 uniform int u_lmask;                     /* bit q: compute light u_light0 + q (the
                                             others are kept: masked from writes) */
+/* each sample's own ray (ray_horizon): the max pyramid's atlas
+ * (runtime/core/ray_bound.h) and the heights' rise, hscale zscale / dx */
+uniform highp sampler2D u_bounds;
+uniform ivec2 u_rb_at[HFS_RAY_LEVELS];
+uniform float u_rise;
+/* runtime/core/local_geometry.h HFS_LOCAL_RAY_FROM */
+#define HFS_LOCAL_RAY_FROM 1.5
 
 layout(std140) uniform HfsScales {
     vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, read layer, 0) */
@@ -149,6 +167,23 @@ layout(location = 3) out vec4 o_r3;
 
 vec2 g_hx[HFS_NLAYERS];                  /* the receiver's heights per layer */
 int g_fetches;
+vec2 g_zp;                               /* the receiver's height (hi, lo) */
+vec4 g_ns;                               /* its one-sided slopes, -1e30 off the field */
+
+/* Sample cs's own ray from receiver p (issue 36 item 1; cpu_local.c
+ * ray_horizon): its own cell and every crossing and cell of the bilinear
+ * surface out to t_last texels, where the sphere's section by the sample's
+ * half-plane can begin; the largest of `start` and their slopes, as an
+ * angle, the search ending once it reaches `stop` (the window's top: the
+ * sample is then dark whatever lies beyond). */
+float ray_horizon(ivec2 p, vec2 cs, float t_last, float start, float stop)
+{
+    float dist = 0.0;
+    float t = hfs_gap_search_cells(u_height, u_bounds, u_rb_at, u_size, p, cs, 0.0, t_last,
+                                   u_rise, 0.0, g_zp, start, stop, dist, g_fetches);
+    return atan(max(t, hfs_own_cell_slope(u_height, p, u_size, cs, g_zp, g_ns, u_rise,
+                                          g_fetches)));
+}
 
 /* integral_0^w (1 - u/w) cos(m u) du and ... sin(m u) du for m = 0..3
  * (cpu_local.c tri_cos / tri_sin; the sin series up to x = 0.5 in float). */
@@ -371,6 +406,17 @@ float local_ratio(ivec2 p, vec3 n, vec4 Hn[4], vec3 pw, int q)
         if (i < 0)
             best = hfs_bspline_close(best, w);
         float omega = clamp(best, -HFS_HALF_PI, HFS_HALF_PI);
+        /* the ray itself, where the light's section lies past the own cell,
+         * searched from what the scales found (tables count every
+         * elevation; the Legendre bands none below lo, none at all from hi) */
+#ifdef HFS_TABLES
+        if (exact && t_near >= HFS_LOCAL_RAY_FROM)
+            omega = max(omega, ray_horizon(p, cs, t_near, tan(omega), 1e30));
+#else
+        if (exact && t_near >= HFS_LOCAL_RAY_FROM && omega < hi)
+            omega = max(omega, ray_horizon(p, cs, t_near, tan(max(omega, lo)),
+                                           hi < HFS_HALF_PI ? tan(hi) : 1e30));
+#endif
 #ifdef HFS_TABLES
         if (k == 0) {
             om_first = omega;
@@ -430,9 +476,13 @@ float local_ratio(ivec2 p, vec3 n, vec4 Hn[4], vec3 pw, int q)
 void main()
 {
     ivec2 p = hfs_receiver(u_size, u_sub);
-    vec3 n = hfs_normal_at(u_height, p, u_size, u_zf);
+    g_zp = hfs_height_at(u_height, p);
+    vec4 side;
+    bvec4 side_on;
+    vec3 n = hfs_normal_sides(u_height, p, u_size, u_zf, g_zp, side, side_on);
+    g_ns = mix(vec4(-1e30), u_rise * side, side_on);
     hfs_receiver_heights(u_levels, p, g_hx);
-    g_fetches = 4 + HFS_NLAYERS; /* the normal's 4 heights, the receiver's layers */
+    g_fetches = 5 + HFS_NLAYERS; /* its height, the normal's 4, the receiver's layers */
     float z = u_lg.w * (u_lg.y + u_lg.z * hfs_h(g_hx[HFS_NLAYERS - 1]));
     vec3 pw = vec3(vec2(p) * u_lg.x, z + 1e-4 * u_lg.x);
 

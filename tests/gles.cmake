@@ -425,6 +425,12 @@ add_test(NAME test_long_shadow_gles_sub4 COMMAND test_long_shadow gles 4)
 set_tests_properties(test_long_shadow_gles_sub4 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
                      TIMEOUT 120)
 list(APPEND hfs_gles_tests test_long_shadow_gles_sub4)
+# test_local_shadow: a local light's shadow of a narrow post stays whole
+# (issue 36, session 41: each sample's own ray searched), the same backends
+# and subsamples, and the CPU's 2x2 grid.
+hfs_metamorphic_test(test_local_shadow)
+add_test(NAME test_local_shadow_cpu_sub2 COMMAND test_local_shadow cpu 2)
+set_tests_properties(test_local_shadow_cpu_sub2 PROPERTIES LABELS unit TIMEOUT 120)
 # test_wall_foot: a texel at a wall's foot reads the grids' occluders on
 # its own side of the wall, a roof's edge keeps its street's (issue 36,
 # against the truth), the same backends and subsamples, and fp32.

@@ -12,22 +12,27 @@
 # ASan/UBSan, MESA_GLES_VERSION_OVERRIDE=3.0 and GALLIUM_OVERRIDE_CPU_CAPS=
 # sse4.1 give the same 3 digits).  fp16 and fp32 alike: the float arithmetic
 # of the shader, not the storage, dominates.  The task's 1e-3 / 1e-2 is the
-# product requirement, far above.
+# product requirement, far above.  Since session 41 each sample also
+# searches its own ray through every crossing and cell (issue 36 item 1:
+# local_visibility.frag ray_horizon, cpu_local.c), which decides grazing
+# rays exactly, where the shader's float and the CPU's double part: the
+# partial-swath means rose from 3e-9..5e-8 to 2e-8..5.5e-7 (the truth's
+# error fell 20-50x: BENCHMARKS.md "Local lights through every cell").
 #                                    bound (mean max)   measured mean / max
-set(hfs_loc_cones_1                  1.1e-7 1.5e-4)   # 1.05e-8 / 1.49e-5
-set(hfs_loc_cones_8                  5e-7   8.8e-5)   # 5.04e-8 / 8.76e-6
-set(hfs_loc_panel_1                  2.9e-8 4e-6)     # 2.88e-9 / 3.93e-7
-set(hfs_loc_panel_8                  7.1e-8 1.6e-5)   # 7.12e-9 / 1.59e-6
+set(hfs_loc_cones_1                  8.2e-7 3.5e-5)   # 8.13e-8 / 3.41e-6
+set(hfs_loc_cones_8                  5.5e-6 5.7e-5)   # 5.50e-7 / 5.69e-6
+set(hfs_loc_panel_1                  2.3e-7 1.6e-5)   # 2.30e-8 / 1.55e-6
+set(hfs_loc_panel_8                  3.7e-7 2.8e-5)   # 3.70e-8 / 2.78e-6
 set(hfs_loc_cones_3_full             1.9e-7 4.1e-6)   # 1.92e-8 / 4.08e-7
 set(hfs_loc_cones_3_wedge            3.1e-5 4.1e-4)   # 3.09e-6 / 4.11e-5
-set(hfs_loc_panel_3_fp32             9.9e-8 6.5e-5)   # 9.93e-9 / 6.51e-6
+set(hfs_loc_panel_3_fp32             6.4e-7 1.2e-4)   # 6.41e-8 / 1.14e-5
 # Subsample 2: the CPU computes the same visibility grid (issue 36 item 5,
 # runtime/cpu/cpu_local_grid.c), so ~10x the measurement as above (before,
 # against the full-resolution CPU, the interpolation error: cones 1.454e-4
 # / 1.770e-2, panel 2.573e-4 / 1.545e-2); the grid texels' bit-equality
 # with subsample 1 is mode sub.
-set(hfs_loc_cones_8_sub2             4.6e-7 2.1e-5)   # 4.54e-8 / 2.03e-6
-set(hfs_loc_panel_8_sub2             6.4e-8 6.9e-6)   # 6.34e-9 / 6.80e-7
+set(hfs_loc_cones_8_sub2             5.5e-6 9.8e-5)   # 5.45e-7 / 9.76e-6
+set(hfs_loc_panel_8_sub2             3.6e-7 7.6e-6)   # 3.53e-8 / 7.57e-7
 add_executable(test_gles_local ${CMAKE_CURRENT_LIST_DIR}/test_gles_local.c)
 target_link_libraries(test_gles_local PRIVATE hfs_test_gles_scenes)
 target_compile_definitions(test_gles_local PRIVATE HFS_DATA_DIR="${PROJECT_SOURCE_DIR}/data")

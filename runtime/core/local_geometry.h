@@ -20,6 +20,12 @@ typedef enum hfs_local_swath_mode {
 /* Fewest samples of a partial swath. */
 #define HFS_LOCAL_PARTIAL_MIN 3
 
+/* A sample's own ray is searched (cpu_local.c ray_horizon, GLES
+ * local_visibility.frag) where the light's section begins at least this
+ * many texels out: past the receiver's own cell, whose far edge lies at
+ * most sqrt(2) away, so that nothing behind the light is taken. */
+#define HFS_LOCAL_RAY_FROM 1.5
+
 /* ---- geometry of one light seen from one receiver ---------------------------- */
 
 typedef struct hfs_local_view {

@@ -201,6 +201,9 @@ int hfs_cpu_local_create(const hfs_field *f, const hfs_lighting *l, const hfs_qu
     hfs_zh_clamped_cosine(lc->h_zonal);
     hfs_wedge_elevation_moments(lc->E);
     take_sources(lc, f, l);
+    lc->rb_atlas = hfs_cpu_pyramid_bounds(p, &lc->rb);
+    lc->rb_z = hfs_cpu_pyramid_full(p, hfs_cpu_pyramid_count(p) - 1);
+    lc->rb_stride = (size_t)hfs_cpu_pyramid_stride(p);
     int rc = make_directions(lc, f, q, p, err);
     if (!rc)
         rc = alloc_scratch(lc, err);
@@ -318,6 +321,24 @@ static void scale_angles(const hfs_cpu_local *lc, local_scratch *s, const hfs_lo
                                                                                      : floor;
         }
     }
+}
+
+/* Sample (c, sn)'s own ray from receiver (i, j) (issue 36 item 1, as the
+ * key lights search theirs): the receiver's own cell and every crossing and
+ * cell of the bilinear surface out to t_last texels, where the sphere's
+ * section by the sample's half-plane can begin, so every occluder searched
+ * lies in front of the light; the scales' samples alone step over a narrow
+ * one.  The largest of `start` and their slopes, as an angle.  GLES:
+ * local_visibility.frag ray_horizon. */
+static double ray_horizon(const hfs_cpu_local *lc, int i, int j, double c, double sn,
+                          double t_last, double start)
+{
+    double dist = 0.0;
+    const double t = hfs_ray_bound_search_cells(lc->rb, lc->rb_atlas, lc->rb_z, lc->rb_stride, i,
+                                                j, c, sn, 0.0, t_last,
+                                                lc->f->zscale / lc->f->dx, 0.0, start, &dist,
+                                                NULL);
+    return atan(fmax(t, hfs_field_first_cell_slope(lc->f, i, j, c, sn)));
 }
 
 /* Legendre path, sample k: g = sum_r m_r A_k[r] E[r], then 4-dots with the
@@ -446,7 +467,13 @@ double hfs_cpu_local_cap_ratio(const hfs_cpu_local *lc, local_scratch *s,
         }
         double *om = s->lv_omega;
         scale_angles(lc, s, lv, &ct, use_rows, i, j, k, c, sn, floor, t_near, k_lo, om);
-        const double omega = hfs_horizon_bspline_max(om, nl, 1, floor);
+        double omega = hfs_horizon_bspline_max(om, nl, 1, floor);
+        /* the ray itself, where the light's section lies past the own cell,
+         * searched from what the scales found (tables count every
+         * elevation; the Legendre bands none below lo, none at all from hi) */
+        if (exact_window && t_near >= HFS_LOCAL_RAY_FROM * lc->f->dx && (tables || omega < ct.hi))
+            omega = fmax(omega, ray_horizon(lc, i, j, c, sn, t_near / lc->f->dx,
+                                            tan(tables ? omega : fmax(omega, ct.lo))));
         if (tables) {
             s->om_k[k] = omega;
             s->fl_k[k] = floor;

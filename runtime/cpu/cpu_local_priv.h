@@ -9,6 +9,7 @@
 #define HFS_CPU_LOCAL_PRIV_H
 
 #include "cpu_horizon.h"
+#include "ray_bound.h"
 #include "cpu_local.h"
 #include "gloss.h"
 #include "local_geometry.h"
@@ -49,6 +50,12 @@ struct hfs_cpu_local {
     double *full_cs;           /* nphi x (c, s), snapped */
     double *full_A;            /* nphi x 16 */
     hfs_horizon_plan *plan;    /* row pass */
+    /* each sample's own ray (ray_bound.h, issue 36 item 1): the max
+     * pyramid's bounds and the heights they bound, borrowed from the
+     * pyramid */
+    const hfs_ray_bound_layout *rb;
+    const double *rb_atlas, *rb_z;
+    size_t rb_stride;
     hfs_visibility *tables;    /* wedge-table path */
     local_scratch *scratch;
     /* a sub-sampled visibility grid (subsample 2, 4; issue 36 item 5):

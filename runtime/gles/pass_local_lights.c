@@ -167,12 +167,15 @@ static int draw_layers(hfs_gles *g, const hfs_gles_frame *fr, int k, int layers,
     const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
                                 .n_out = layers, .local_dirs = fr->q->nphi_local,
                                 .tables = fr->tables, .fp32 = g->caps.fp32, .count = count,
-                                .local_tex = fr->local_tex};
+                                .local_tex = fr->local_tex, .cells = 1};
     const hfs_gles_program *prog;
     int rc;
     if ((rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_LOCAL_VISIBILITY, &v, &prog, err)) ||
-        (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)))
+        (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||
+        (rc = hfs_gles_bind_ray(gl, prog, L, g->r.arr, L->n_layers - 1, g->r.bounds, err)))
         return rc;
+    /* each sample's own ray (local_visibility.frag ray_horizon) */
+    hfs_gles_set_f1(gl, prog, "u_rise", (float)(L->hscale * L->zscale / L->dx));
     hfs_gles_set_i1(gl, prog, "u_light0", l0);
     hfs_gles_set_i1(gl, prog, "u_nl", cnt);
     hfs_gles_set_i1(gl, prog, "u_lmask", mask);
