@@ -90,7 +90,6 @@ float hfs_table_coord(float omega, float n);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
 void hfs_table_add(highp sampler2DArray tab, vec2 uv, float layer0, bool mirror, vec3 c,
                    vec3 s, inout vec4 V[4]);
-vec2 hfs_height_at(highp sampler2DArray h, ivec2 p);
 vec3 hfs_normal_sides(highp sampler2DArray h, ivec2 p, ivec2 size, float zf, vec2 zp,
                       out vec4 d, out bvec4 on);
 float hfs_own_cell_slope(highp sampler2DArray h, ivec2 p, ivec2 size, vec2 cs, vec2 zp, vec4 ns,
@@ -476,13 +475,13 @@ float local_ratio(ivec2 p, vec3 n, vec4 Hn[4], vec3 pw, int q)
 void main()
 {
     ivec2 p = hfs_receiver(u_size, u_sub);
-    g_zp = hfs_height_at(u_height, p);
+    hfs_receiver_heights(u_levels, p, g_hx);
+    g_zp = g_hx[HFS_NLAYERS - 1]; /* the heights' layer, u_height's (u_hlayer) */
     vec4 side;
     bvec4 side_on;
     vec3 n = hfs_normal_sides(u_height, p, u_size, u_zf, g_zp, side, side_on);
     g_ns = mix(vec4(-1e30), u_rise * side, side_on);
-    hfs_receiver_heights(u_levels, p, g_hx);
-    g_fetches = 5 + HFS_NLAYERS; /* its height, the normal's 4, the receiver's layers */
+    g_fetches = 4 + HFS_NLAYERS; /* the normal's 4 heights, the receiver's layers */
     float z = u_lg.w * (u_lg.y + u_lg.z * hfs_h(g_hx[HFS_NLAYERS - 1]));
     vec3 pw = vec3(vec2(p) * u_lg.x, z + 1e-4 * u_lg.x);
 
