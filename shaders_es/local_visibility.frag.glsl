@@ -70,7 +70,6 @@ precision highp sampler2DArray;
 
 float hfs_h(vec2 t);
 vec2 hfs_split(float v);
-vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
 ivec2 hfs_receiver(ivec2 size, int sub);
 vec4 hfs_nlp_occ(float sigma);
 vec4 hfs_visible(float omega, vec4 win, vec4 occ_top);
@@ -101,7 +100,7 @@ float hfs_gap_search_cells(highp sampler2DArray heights, highp sampler2D bounds,
                            inout float dist, inout int fetches);
 
 uniform highp sampler2DArray u_levels;
-uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals (hfs_normal_at) */
+uniform highp sampler2DArray u_height;   /* the heights (hi, lo): normals, the own rays */
 uniform float u_zf;                      /* hscale zscale / dx, clamped to 1e30 */
 uniform ivec2 u_size;
 uniform int u_sub;
@@ -168,6 +167,13 @@ vec2 g_hx[HFS_NLAYERS];                  /* the receiver's heights per layer */
 int g_fetches;
 vec2 g_zp;                               /* the receiver's height (hi, lo) */
 vec4 g_ns;                               /* its one-sided slopes, -1e30 off the field */
+
+/* tan(a) for a in [-pi/2, pi/2], whose ends in float lie past +-pi/2,
+ * where tan changes sign: the angle held inside them. */
+float local_tan(float a)
+{
+    return tan(clamp(a, -1.5707962, 1.5707962));
+}
 
 /* Sample cs's own ray from receiver p (issue 36 item 1; cpu_local.c
  * ray_horizon): its own cell and every crossing and cell of the bilinear
@@ -410,11 +416,11 @@ float local_ratio(ivec2 p, vec3 n, vec4 Hn[4], vec3 pw, int q)
          * elevation; the Legendre bands none below lo, none at all from hi) */
 #ifdef HFS_TABLES
         if (exact && t_near >= HFS_LOCAL_RAY_FROM)
-            omega = max(omega, ray_horizon(p, cs, t_near, tan(omega), 1e30));
+            omega = max(omega, ray_horizon(p, cs, t_near, local_tan(omega), 1e30));
 #else
         if (exact && t_near >= HFS_LOCAL_RAY_FROM && omega < hi)
-            omega = max(omega, ray_horizon(p, cs, t_near, tan(max(omega, lo)),
-                                           hi < HFS_HALF_PI ? tan(hi) : 1e30));
+            omega = max(omega, ray_horizon(p, cs, t_near, local_tan(max(omega, lo)),
+                                           hi < HFS_HALF_PI ? local_tan(hi) : 1e30));
 #endif
 #ifdef HFS_TABLES
         if (k == 0) {
