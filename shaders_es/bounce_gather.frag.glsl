@@ -261,8 +261,7 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
     float s = slice_cosine(w.a, w.b, x);
     float wl;
     float wgt = band_weight(w, s, x, wl);
-    /* apart: the grid's rest is no difference of two sums, which a clamp
-     * at 0 cannot mend where lo < 0 (an SH sky ringing below zero) */
+    /* apart: the grid's rest is no difference of two sums (lo may be < 0) */
     if (w.near) {
         w.acc_near += lo * wgt;
         w.w_near += wgt;
@@ -591,8 +590,7 @@ void main()
 #else
     acc += acc_near;
 #endif
-    /* Not clamped at 0: Lo_{b-1} is gathered as it is (SPEC; the CPU, the
-     * truth), and every weight is >= 0 (DESIGN.md "Indirect light"). */
+    /* not clamped at 0: Lo_{b-1} as it is (SPEC; DESIGN.md "Indirect light") */
     vec3 e = acc * u_bhead.x;
     e = clamp(e, vec3(-65504.0), vec3(65504.0));
     o_e = vec4(mix(vec3(0.0), e, equal(e, e)), clamp(w_occ, 0.0, 1.0));

@@ -202,10 +202,10 @@ static void frame_views(void)
  * size, one pixel at 0.52 measured 5.4e-4).  The aspect at subsample 1
  * measured 8.4e-5 since issue 36's gap search (the lit field's shadows
  * moved, and with them which pixel lands on a rounding boundary): its
- * bound is 1.2x that, 1.0e-4.  So does x 2.5 since the local light's own
- * rays (session 41: its shadow moved the same way; with them switched off
- * 2.1e-5 again; the lit grids themselves are the same bits at every scale,
- * test_metamorphic): the same bound. */
+ * bound is 1.2x that, 1.0e-4.  x 2.5 measures the same 8.4e-5 since the
+ * local light searches its own rays (session 41: its shadow moved; the lit
+ * grids themselves are the same bits at every scale, test_metamorphic):
+ * the same bound. */
 static void run(hfs_renderer *r, const char *backend, int sub)
 {
     view_sub = sub > 0 ? sub : 2;
