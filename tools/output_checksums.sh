@@ -11,7 +11,8 @@
 # gles fp16 at subsample 2 and 1 and on cpu at subsample 1 and 2; hfgen
 # cones, fractal and panel (96x96) with an environment, a key light and two
 # local lights on gles fp16 subsample 2 and 1, gles fp32, and cpu at
-# subsample 1 and 2; the same at 24x24 on truth.
+# subsample 1 and 2, gles with the wedge key visibility, and a wide key
+# near the pole on it at fp32; the same at 24x24 on truth.
 # GLES checksums hold for one machine and driver (llvmpipe's results depend
 # on the CPU's vector width): compare records made on the same machine.
 set -euo pipefail
@@ -43,6 +44,9 @@ for t in cones fractal panel; do
     one "$t-gles-fp32" --height "$w/$t.pfm" "${L[@]}" --backend gles --precision fp32
     one "$t-cpu" --height "$w/$t.pfm" "${L[@]}" --backend cpu --subsample 1
     one "$t-cpu-sub2" --height "$w/$t.pfm" "${L[@]}" --backend cpu
+    one "$t-gles-wedge" --height "$w/$t.pfm" "${L[@]}" --backend gles --visibility wedge
+    one "$t-gles-polekey" --height "$w/$t.pfm" --key 40,80,12,40 --backend gles --visibility wedge \
+        --precision fp32
     L24=(--env-sh "$sky" --key 40,25,2,40 --local 8,10,9,1,200)
     one "$t-truth" --height "$w/${t}24.pfm" "${L24[@]}" --backend truth --truth-azimuths 720
 done
