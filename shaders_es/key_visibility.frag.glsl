@@ -389,28 +389,43 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
      * test 1e-12 |L| |V_open| calls zero is zero here too. */
     float num = 0.0, den = 0.0, vo_norm = 0.0;
 #endif
+#ifdef HFS_TABLES
+    /* One table lookup per wedge between consecutive directions, with a
+     * closing step j = nd: from direction nd - 1 back to direction 0 on a
+     * full circle, or to the swath's boundary (a boundary table, as at
+     * j = 0) on a partial one.  One call site per sum keeps the program
+     * small (its compile took ~4 s on llvmpipe with the six inlined). */
+    for (int j = 0; j <= nd; ++j) {
+        float om = om_first, fl = fl_first;
+        if (j < nd) {
+            vec4 dj = KREC(dirs + j);
+            fl = atan(-(n.x * dj.x + n.y * dj.y), n.z);
+            om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), near, win_t.y, t_from,
+                                 p, zp),
+                     HFS_HALF_PI);
+        }
+        if (j == 0) {
+            om_first = om;
+            fl_first = fl;
+        }
+        bool edge = !full && (j == 0 || j == nd);
+        if (j > 0 || !full) {
+            int at = rot + 2 * (full ? j - 1 : j);
+            tab_add(Vk, j == 0 ? om : om_prev, edge ? 0.0 : om, edge, at, h0.w);
+            tab_add(Vo, j == 0 ? fl : fl_prev, edge ? 0.0 : fl, edge, at, h0.w);
+        }
+        om_prev = om;
+        fl_prev = fl;
+    }
+    float num = hfs_sh_dot(Vk, M), den = hfs_sh_dot(Vo, M);
+    float vo_norm = sqrt(hfs_sh_dot(Vo, Vo));
+#else
     for (int j = 0; j < nd; ++j) {
         vec4 dj = KREC(dirs + j);
         float fl = atan(-(n.x * dj.x + n.y * dj.y), n.z);
         float om = min(key_horizon(cell, n, dj.xy, fl, layer0 + float(j), near, win_t.y, t_from,
                                    p, zp),
                        HFS_HALF_PI);
-#ifdef HFS_TABLES
-        if (j == 0) {
-            om_first = om;
-            fl_first = fl;
-            if (!full) {
-                tab_add(Vk, om, 0.0, true, rot, h0.w);
-                tab_add(Vo, fl, 0.0, true, rot, h0.w);
-            }
-        } else {
-            int w = full ? j - 1 : j;
-            tab_add(Vk, om_prev, om, false, rot + 2 * w, h0.w);
-            tab_add(Vo, fl_prev, fl, false, rot + 2 * w, h0.w);
-        }
-        om_prev = om;
-        fl_prev = fl;
-#else
         int c = cm + 16 * j;
         vec4 w = y[0].x * KREC(c) + y[0].y * KREC(c + 1) + y[0].z * KREC(c + 2) +
                  y[0].w * KREC(c + 3) + y[1].x * KREC(c + 4) + y[1].y * KREC(c + 5) +
@@ -419,18 +434,7 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
         num += dot(hfs_visible(om, win, occtop), w);
         den += dot(vo, w);
         vo_norm += dj.z * length(vo);
-#endif
     }
-#ifdef HFS_TABLES
-    if (full) {
-        tab_add(Vk, om_prev, om_first, false, rot + 2 * (nd - 1), h0.w);
-        tab_add(Vo, fl_prev, fl_first, false, rot + 2 * (nd - 1), h0.w);
-    } else {
-        tab_add(Vk, om_prev, 0.0, true, rot + 2 * nd, h0.w);
-        tab_add(Vo, fl_prev, 0.0, true, rot + 2 * nd, h0.w);
-    }
-    float num = hfs_sh_dot(Vk, M), den = hfs_sh_dot(Vo, M);
-    float vo_norm = sqrt(hfs_sh_dot(Vo, Vo));
 #endif
     float ratio = 0.0;
     if (den > 1e-12 * h2.w * vo_norm)
