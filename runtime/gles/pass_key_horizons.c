@@ -85,9 +85,11 @@ static int layout(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     /* The records' declared size (HFS_KEY_VEC4) goes in size classes, so
      * that a swath gaining or losing a sample as its light moves does not
      * recompile the visibility pass (a 100-400 ms hitch on llvmpipe): the
-     * next power of two from 64 vec4, or the exact size where that would
-     * not fit the block limit.  The buffer is uploaded at that size. */
-    int rec_block = 64;
+     * next power of two from 1024 vec4 (16 KiB, ES 3.0's minimum block: one
+     * class, so one program, for any key set that fits it), or the exact
+     * size where that would not fit the block limit.  The buffer is
+     * uploaded at that size. */
+    int rec_block = 1024;
     while (rec_block < rec)
         rec_block *= 2;
     if ((size_t)rec_block * 16 > (size_t)caps->max_uniform_block_size)
@@ -173,7 +175,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, const int *which, int cou
         for (int d0 = 0; d0 < n; d0 += DIRS_PER_DRAW) {
             const int cnt = n - d0 < DIRS_PER_DRAW ? n - d0 : DIRS_PER_DRAW;
             const int outs = cnt;
-            const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
+            const hfs_gles_variant v = {.n_layers = L->n_layers,
                                         .n_out = outs, .n_dir = n, .fp32 = g->caps.fp32,
                                         .count = count, .swath_tex = fr->key_swath_tex,
                                         .cells = 1};
