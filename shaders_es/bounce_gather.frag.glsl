@@ -60,8 +60,8 @@
 // hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_FARK 2, HFS_NEAR 1
 // hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_NEAR 1, HFS_FP32 1
 
-#ifndef HFS_NLEV
-#define HFS_NLEV 33
+#ifndef HFS_SCALES_MAX
+#define HFS_SCALES_MAX 256
 #endif
 #ifndef HFS_NLAYERS
 #define HFS_NLAYERS 25
@@ -147,8 +147,10 @@ uniform vec4 u_ghgt;                     /* (base, hscale, zscale / dx, 0) */
 #endif
 
 layout(std140) uniform HfsScales {
-    vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
+    ivec4 u_nscales;                     /* (N: the scales, 0, 0, 0) */
+    vec4 u_scale[HFS_SCALES_MAX];              /* (d_i, inv_run_i, layer, 0) */
 };
+#define HFS_NLEV (u_nscales.x)
 layout(std140) uniform HfsBounce {
     vec4 u_bhead;                        /* (dphi / pi, levels per octave k, stride, 0) */
     vec4 u_edir[HFS_NDIR];               /* the environment's (cos, sin, 0, 0) */

@@ -58,8 +58,8 @@
 // hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 1, HFS_SWATH_TEX 1
 // hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 1, HFS_COUNT 1
 
-#ifndef HFS_NLEV
-#define HFS_NLEV 33
+#ifndef HFS_SCALES_MAX
+#define HFS_SCALES_MAX 256
 #endif
 #ifndef HFS_NLAYERS
 #define HFS_NLAYERS 25
@@ -112,8 +112,10 @@ uniform int u_sub;                       /* visibility grid step */
 uniform float u_vmax;                    /* largest normalized height, a hair up */
 
 layout(std140) uniform HfsScales {
-    vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
+    ivec4 u_nscales;                     /* (N: the scales, 0, 0, 0) */
+    vec4 u_scale[HFS_SCALES_MAX];              /* (d_i, inv_run_i, layer, 0) */
 };
+#define HFS_NLEV (u_nscales.x)
 uniform int u_refine;                    /* samples refining the max between scales */
 uniform float u_lk;                      /* the pyramid's levels per octave k */
 uniform float u_tie;                     /* hfs_horizon_tie_slope */

@@ -60,8 +60,8 @@
 // hfs-variant: HFS_ENV_DOT 1, HFS_FP32 1
 // hfs-variant: HFS_PAIRS 1, HFS_FARK 2, HFS_ENV_DOT 1
 
-#ifndef HFS_NLEV
-#define HFS_NLEV 33
+#ifndef HFS_SCALES_MAX
+#define HFS_SCALES_MAX 256
 #endif
 #ifndef HFS_NDIR
 #define HFS_NDIR 32
@@ -114,8 +114,10 @@ uniform vec2 u_fsub[HFS_FARK];           /* sub-direction h at phi + delta_h:
 #endif
 
 layout(std140) uniform HfsScales {
-    vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, layer, 0) */
+    ivec4 u_nscales;                     /* (N: the scales, 0, 0, 0) */
+    vec4 u_scale[HFS_SCALES_MAX];              /* (d_i, inv_run_i, layer, 0) */
 };
+#define HFS_NLEV (u_nscales.x)
 #ifdef HFS_SWATH_TEX
 vec4 hfs_block_vec4(highp usampler2D t, int i);
 uniform highp usampler2D u_swath_tex;

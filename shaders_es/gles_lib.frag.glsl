@@ -369,9 +369,6 @@ float hfs_cap_irradiance(float cos_beta, float alpha)
 /* ---- horizon sampling on the visibility grid (env_horizons, key_horizons, ------ */
 /* ---- shade's local lights; DESIGN.md "Horizons") ------------------- */
 
-#ifndef HFS_NLEV
-#define HFS_NLEV 33
-#endif
 #ifndef HFS_NLAYERS
 #define HFS_NLAYERS 25
 #endif
@@ -485,7 +482,7 @@ float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs
 }
 
 /* B-spline max over the scale index on the fly, fed per-scale angles from
- * fine (i = HFS_NLEV - 1) to coarse, indices clamped (runtime/cpu/cpu_horizon.c
+ * fine (i = n - 1, n scales) to coarse, indices clamped (runtime/cpu/cpu_horizon.c
  * hfs_horizon_bspline_max, same expressions): after om[i] = a arrives,
  * w = om[i..i+3] and knot i+1 and midpoint i+1 are complete. */
 float hfs_bspline_knot(vec4 w)
@@ -497,23 +494,23 @@ float hfs_bspline_mid(vec4 w)
     return w.y + ((w.x - w.y) + 23.0 * (w.z - w.y) + (w.w - w.y)) / 48.0;
 }
 
-void hfs_bspline_push(inout float best, inout vec4 w, float a, int i)
+void hfs_bspline_push(inout float best, inout vec4 w, float a, int i, int n)
 {
-    if (i == HFS_NLEV - 1) {
+    if (i == n - 1) {
         w = vec4(a);
         return;
     }
     w = vec4(a, w.xyz);
     best = max(best, hfs_bspline_knot(w));                               /* knot i+1 */
-    if (i + 2 < HFS_NLEV)
+    if (i + 2 < n)
         best = max(best, hfs_bspline_mid(w));
 }
 
 /* Knot 0 and midpoint 0 (om[-1] clamps to om[0]), once every scale came in. */
-float hfs_bspline_close(float best, vec4 w)
+float hfs_bspline_close(float best, vec4 w, int n)
 {
     best = max(best, hfs_bspline_knot(w.xxyz));
-    if (HFS_NLEV > 1)
+    if (n > 1)
         best = max(best, hfs_bspline_mid(w.xxyz));
     return best;
 }
@@ -523,9 +520,9 @@ float hfs_bspline_close(float best, vec4 w)
  * at the close, for knot 0 and midpoint 0), unchanged while the seed value
  * wins. */
 void hfs_bspline_push_at(inout float best, inout float bd, inout vec4 w, float a, int i,
-                         float dk, float dm)
+                         int n, float dk, float dm)
 {
-    if (i == HFS_NLEV - 1) {
+    if (i == n - 1) {
         w = vec4(a);
         return;
     }
@@ -535,7 +532,7 @@ void hfs_bspline_push_at(inout float best, inout float bd, inout vec4 w, float a
         best = k;
         bd = dk;
     }
-    if (i + 2 < HFS_NLEV) {
+    if (i + 2 < n) {
         float m = hfs_bspline_mid(w);
         if (m > best) {
             best = m;
@@ -544,14 +541,15 @@ void hfs_bspline_push_at(inout float best, inout float bd, inout vec4 w, float a
     }
 }
 
-void hfs_bspline_close_at(inout float best, inout float bd, vec4 w, float dk, float dm)
+void hfs_bspline_close_at(inout float best, inout float bd, vec4 w, int n, float dk,
+                          float dm)
 {
     float k = hfs_bspline_knot(w.xxyz);
     if (k > best) {
         best = k;
         bd = dk;
     }
-    if (HFS_NLEV > 1) {
+    if (n > 1) {
         float m = hfs_bspline_mid(w.xxyz);
         if (m > best) {
             best = m;

@@ -35,8 +35,8 @@
 // hfs-variant: HFS_FP32 1, HFS_COUNT 1
 // hfs-variant: HFS_SWATH_TEX 1
 
-#ifndef HFS_NLEV
-#define HFS_NLEV 33
+#ifndef HFS_SCALES_MAX
+#define HFS_SCALES_MAX 256
 #endif
 #ifndef HFS_NLAYERS
 #define HFS_NLAYERS 25
@@ -68,8 +68,9 @@ float hfs_floor(vec3 n, vec2 cs);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
 void hfs_bspline_push_at(inout float best, inout float bd, inout vec4 w, float a, int i,
-                         float dk, float dm);
-void hfs_bspline_close_at(inout float best, inout float bd, vec4 w, float dk, float dm);
+                         int n, float dk, float dm);
+void hfs_bspline_close_at(inout float best, inout float bd, vec4 w, int n, float dk,
+                          float dm);
 bool hfs_scale_takes_over(float sl, float ref, float tie);
 float hfs_refine_about(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 cs, vec4 sc,
                        vec2 h, int n, float k, float best, inout float dist, inout int fetches);
@@ -99,8 +100,10 @@ uniform float u_zf;
 uniform float u_gap_from;
 
 layout(std140) uniform HfsScales {
-    vec4 u_scale[HFS_NLEV];
+    ivec4 u_nscales;                     /* (N: the scales, 0, 0, 0) */
+    vec4 u_scale[HFS_SCALES_MAX];
 };
+#define HFS_NLEV (u_nscales.x)
 #ifdef HFS_SWATH_TEX
 /* The swath from a texture (too large for a uniform block): this light's
  * starts at vec4 u_swath_base. */
@@ -159,14 +162,14 @@ float bspline_horizon(ivec2 g, vec2 cs, float fl, vec2 hx[HFS_NLAYERS], inout in
         }
         if (i < top) {
             float c = float(2 * (HFS_NLEV - 2 - i));
-            hfs_bspline_push_at(best, bd, w, a, i, c + 1.0, c);
+            hfs_bspline_push_at(best, bd, w, a, i, HFS_NLEV, c + 1.0, c);
         } else {
             w = vec4(a);
         }
     }
     if (i < 0 && top >= 0) {
         float c = float(2 * (HFS_NLEV - 1));
-        hfs_bspline_close_at(best, bd, w, c + 1.0, c);
+        hfs_bspline_close_at(best, bd, w, HFS_NLEV, c + 1.0, c);
     }
     dist = exp2((bd - 1.0) / (2.0 * u_lk));
     return best;

@@ -38,8 +38,8 @@
 // hfs-variant: HFS_LOCAL_TEX 1
 // hfs-variant: HFS_LOCAL_TEX 1, HFS_TABLES 1
 
-#ifndef HFS_NLEV
-#define HFS_NLEV 33
+#ifndef HFS_SCALES_MAX
+#define HFS_SCALES_MAX 256
 #endif
 #ifndef HFS_NLAYERS
 #define HFS_NLAYERS 25
@@ -82,8 +82,8 @@ void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_
 float hfs_floor(vec3 n, vec2 cs);
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
-void hfs_bspline_push(inout float best, inout vec4 w, float a, int i);
-float hfs_bspline_close(float best, vec4 w);
+void hfs_bspline_push(inout float best, inout vec4 w, float a, int i, int n);
+float hfs_bspline_close(float best, vec4 w, int n);
 float hfs_sh_dot(vec4 a[4], vec4 b[4]);
 float hfs_table_coord(float omega, float n);
 void hfs_sh_basis(vec3 d, out vec4 y[4]);
@@ -117,8 +117,10 @@ uniform float u_rise;
 #define HFS_LOCAL_RAY_FROM 1.5
 
 layout(std140) uniform HfsScales {
-    vec4 u_scale[HFS_NLEV];              /* (d_i, inv_run_i, read layer, 0) */
+    ivec4 u_nscales;                     /* (N: the scales, 0, 0, 0) */
+    vec4 u_scale[HFS_SCALES_MAX];              /* (d_i, inv_run_i, read layer, 0) */
 };
+#define HFS_NLEV (u_nscales.x)
 layout(std140) uniform HfsLocal {
     vec4 u_lE[16];                       /* elevation moments, row r = E[r][0..3] */
     vec4 u_lg;                           /* (1, base, hscale, zscale/dx): texel units */
@@ -406,10 +408,10 @@ float local_ratio(ivec2 p, vec3 n, vec4 Hn[4], vec3 pw, int q)
             } else if (--tail < 0) {
                 break;
             }
-            hfs_bspline_push(best, w, a, i);
+            hfs_bspline_push(best, w, a, i, HFS_NLEV);
         }
         if (i < 0)
-            best = hfs_bspline_close(best, w);
+            best = hfs_bspline_close(best, w, HFS_NLEV);
         float omega = clamp(best, -HFS_HALF_PI, HFS_HALF_PI);
         /* the ray itself, where the light's section lies past the own cell,
          * searched from what the scales found (tables count every

@@ -355,12 +355,22 @@ static void test_blocks(void)
     hfs_quality_defaults(&q);
     hfs_gles_layout L;
     hfs_gles_layout_init(&L, &f, &q, &err);
-    float sc[4 * 8];
+    /* The head: N as an int; then the scales; zeros past N. */
+    CHECK(hfs_gles_scales_vec4(&L) == 1 + HFS_GLES_MAX_LEVELS, "scales block size");
+    float sc[4 * (1 + HFS_GLES_MAX_LEVELS)];
+    memset(sc, 0xff, sizeof sc);
     hfs_gles_pack_scales(&L, sc);
+    int32_t head[4];
+    memcpy(head, sc, sizeof head);
+    CHECK(head[0] == L.n_levels && L.n_levels >= 1 && !head[1] && !head[2] && !head[3],
+          "scales head: %d scales", head[0]);
     for (int i = 0; i < L.n_levels; ++i)
-        CHECK(sc[4 * i] == (float)L.spacing[i] &&
-                  fabs(sc[4 * i + 1] - L.hscale * 3.0 / (L.spacing[i] * 2.0)) < 1e-6 &&
-                  sc[4 * i + 2] == (float)L.read_layer[i], "scale %d", i);
+        CHECK(sc[4 + 4 * i] == (float)L.spacing[i] &&
+                  fabs(sc[4 + 4 * i + 1] - L.hscale * 3.0 / (L.spacing[i] * 2.0)) < 1e-6 &&
+                  sc[4 + 4 * i + 2] == (float)L.read_layer[i] && sc[4 + 4 * i + 3] == 0.0f,
+              "scale %d", i);
+    for (int i = 4 + 4 * L.n_levels; i < 4 * (1 + HFS_GLES_MAX_LEVELS); ++i)
+        CHECK(sc[i] == 0.0f, "scales: zero past N at float %d", i);
     CHECK(hfs_gles_output_scale(1.0) == 16384.0 && hfs_gles_output_scale(1e6) == 1.0 / 64.0 &&
               hfs_gles_output_scale(0.0) == 1.0, "output scale");
     /* A local light's largest irradiance over the field's box [0, 2]^2 x

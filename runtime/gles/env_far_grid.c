@@ -82,7 +82,7 @@ int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_s
         return HFS_OK;
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
-    const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
+    const hfs_gles_variant v = {.n_layers = L->n_layers,
                                 .n_dir = n_sub(fr), .fp32 = g->caps.fp32,
                                 .swath_tex = fr->far_swath_tex, .slice = 1, .n_out = 1,
                                 .far_atlas = 1, .count = fetch_sum != NULL};

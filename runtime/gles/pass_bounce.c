@@ -152,7 +152,7 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, int near, hf
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
     const int capped = fr->capped;
-    const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
+    const hfs_gles_variant v = {.n_layers = L->n_layers,
                                 .n_dir = fr->q->nphi_env, .n_bdir = hfs_bounce_dirs(fr->q),
                                 .fp32 = g->caps.fp32, .slice = capped,
                                 .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0,

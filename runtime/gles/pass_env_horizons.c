@@ -154,7 +154,7 @@ static int draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_sum, hfs_er
     const int count = fetch_sum != NULL;
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
-    const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
+    const hfs_gles_variant v = {.n_layers = L->n_layers,
                                 .n_dir = g->env_vis_n, .tables = fr->tables,
                                 .fp32 = g->caps.fp32, .count = count,
                                 .swath_tex = fr->env_swath_tex, .slice = fr->slice,

@@ -25,7 +25,7 @@ int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_gles_slices_ou
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
     const int env_map = what == HFS_SLICES_MAP;
-    const hfs_gles_variant v = {.n_levels = L->n_levels, .n_dir = g->env_vis_n,
+    const hfs_gles_variant v = {.n_dir = g->env_vis_n,
                                 .fp32 = g->caps.fp32, .swath_tex = fr->env_swath_tex,
                                 .env_map = env_map, .env_dot = what == HFS_SLICES_SKY,
                                 .pairs = fr->hor_pairs,

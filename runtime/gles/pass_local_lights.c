@@ -164,7 +164,7 @@ static int draw_layers(hfs_gles *g, const hfs_gles_frame *fr, int k, int layers,
     const hfs_gles_layout *L = &fr->L;
     const int n_local = fr->n_local, l0 = 2 * k;
     const int cnt = 2 * (k + layers) < n_local ? 2 * layers : n_local - l0;
-    const hfs_gles_variant v = {.n_levels = L->n_levels, .n_layers = L->n_layers,
+    const hfs_gles_variant v = {.n_layers = L->n_layers,
                                 .n_out = layers, .local_dirs = fr->q->nphi_local,
                                 .tables = fr->tables, .fp32 = g->caps.fp32, .count = count,
                                 .local_tex = fr->local_tex, .cells = 1};

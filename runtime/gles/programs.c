@@ -5,6 +5,7 @@
 
 #include "gl_shaders.h"
 #include "gl_util.h"
+#include "layout.h"
 #include "split_horizon.h"
 #include "visibility.h"
 
@@ -54,7 +55,7 @@ void hfs_gles_variant_defines(const hfs_gles_variant *v, int pair_fetch, char bu
                               const char *defs[HFS_GLES_MAX_DEFINES + 1])
 {
     const struct { const char *name; int value; } all[] = {
-        {"HFS_NLEV", v->n_levels},     {"HFS_NLAYERS", v->n_layers},
+        {"HFS_SCALES_MAX", HFS_GLES_MAX_LEVELS}, {"HFS_NLAYERS", v->n_layers},
         {"HFS_NOUT", v->n_out},        {"HFS_NDIR", v->n_dir},
         {"HFS_RECON_V", v->recon_v},   {"HFS_KEY_VEC4", v->key_vec4},
         {"HFS_NKEYS", v->n_keys},      {"HFS_ENV", v->env},

@@ -34,7 +34,6 @@ typedef struct hfs_gles_variant {
     int fp32;       /* HFS_FP32 1: fp32 targets instead of fp16 hi+lo pairs  */
     int count;      /* HFS_COUNT 1: the fetch-counting twin of a grid pass   */
     int tables;     /* HFS_TABLES 1 and HFS_TABLE_N: the wedge-table path    */
-    int n_levels;   /* HFS_NLEV: pyramid levels                              */
     int n_layers;   /* HFS_NLAYERS: reconstructed layers                     */
     int n_out;      /* HFS_NOUT: render targets of a grid pass               */
     int n_dir;      /* HFS_NDIR: directions of the swath                     */

@@ -32,7 +32,15 @@
 
 /* ---- std140 blocks ---------------------------------------------------------- */
 
-/* HfsScales (u_scale[HFS_NLEV]): one vec4 per scale i. */
+/* HfsScales: a head holding the scale count N (u_nscales.x: the shaders
+ * loop to it, so one program serves fields of any N), then u_scale[i], one
+ * vec4 per scale i, declared HFS_SCALES_MAX (= HFS_GLES_MAX_LEVELS) long;
+ * zeros past N. */
+typedef struct hfs_gles_scales_head {
+    int32_t n_scales; /* N                                                     */
+    int32_t pad[3];
+} hfs_gles_scales_head;
+_Static_assert(sizeof(hfs_gles_scales_head) == 16, "HfsScales: u_nscales is an ivec4");
 typedef struct hfs_gles_scale {
     float spacing;    /* d_i                                                  */
     float inv_run;    /* hscale * zscale / (d_i * dx), clamped to 1e30         */
@@ -41,6 +49,8 @@ typedef struct hfs_gles_scale {
 } hfs_gles_scale;
 _Static_assert(sizeof(hfs_gles_scale) == 16, "HfsScales: a vec4 per scale");
 
+/* The block's size in vec4 (the head and HFS_GLES_MAX_LEVELS scales, for
+ * any layout), and its packing into dst (that many vec4). */
 size_t hfs_gles_scales_vec4(const hfs_gles_layout *L);
 void hfs_gles_pack_scales(const hfs_gles_layout *L, float *dst);
 
