@@ -10,8 +10,8 @@
  * everything nearer, casts the band of elevations between the old top and
  * its highest sample's, lit by the previous bounce's exit radiance at the
  * first sample that rose (u_rad, bilinear) and weighted by
- * the clamped cosine's exact integral over the band (slice_cosine, as
- * slice_light.c hfs_slice_cosine).  HFS_SLICE: the bands stop at the
+ * the clamped cosine's exact integral over the band (hfs_slice_cosine,
+ * as slice_light.c's).  HFS_SLICE: the bands stop at the
  * direct light's horizon of the slice (the grid's horizons of
  * env_horizons.frag, and the own cell), so what a receiver gathers and the
  * sky it sees never overlap (lights.h hfs_bounce_capped).
@@ -95,6 +95,7 @@ void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_
 bool hfs_scale_offset(ivec2 g, ivec2 size, float d, vec2 cs, out vec2 o);
 float hfs_scale_slope(highp sampler2DArray levels, ivec2 g, ivec2 size, vec2 o, vec4 sc, vec2 h);
 bool hfs_scale_takes_over(float sl, float ref, float tie);
+float hfs_slice_cosine(float a, float b, float x);
 #if defined(HFS_FARK) || defined(HFS_NEAR)
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
@@ -148,9 +149,9 @@ uniform vec4 u_ghgt;                     /* (base, hscale, zscale / dx, 0) */
 
 layout(std140) uniform HfsScales {
     ivec4 u_nscales;                     /* (N: the scales, 0, 0, 0) */
-    vec4 u_scale[HFS_SCALES_MAX];              /* (d_i, inv_run_i, layer, 0) */
+    vec4 u_scale[HFS_SCALES_MAX];        /* (d_i, inv_run_i, layer, 0) */
 };
-#define HFS_NLEV (u_nscales.x)
+#define HFS_NLEV (u_nscales.x)           /* the scale count: a uniform */
 layout(std140) uniform HfsBounce {
     vec4 u_bhead;                        /* (dphi / pi, levels per octave k, stride, 0) */
     vec4 u_edir[HFS_NDIR];               /* the environment's (cos, sin, 0, 0) */
@@ -160,12 +161,6 @@ layout(location = 0) out vec4 o_e;
 #ifdef HFS_GLOSSY
 layout(location = 1) out vec4 o_g;       /* G (RGB) */
 #endif
-
-/* Int_x^{pi/2} (a cos e + b sin e) cos e de (slice_light.h). */
-float slice_cosine(float a, float b, float x)
-{
-    return 0.5 * a * (HFS_HALF_PI - x - 0.5 * sin(2.0 * x)) + 0.25 * b * (1.0 + cos(2.0 * x));
-}
 
 #ifdef HFS_GLOSSY
 #ifndef HFS_LOBE_STEPS
@@ -199,14 +194,14 @@ float lobe_band(vec4 l, vec2 sup, float x1, float x2)
 
 /* The walk's state along one slice.  The top is kept as a slope (samples
  * compare slopes: no atan per sample) and as its elevation's cosine
- * integral (one slice_cosine per band). */
+ * integral (one hfs_slice_cosine per band). */
 struct Walk {
     float a, b;      /* N.d, N_z */
     float t_top;     /* slope of the highest sample so far */
-    float s_top;     /* slice_cosine at its elevation */
+    float s_top;     /* hfs_slice_cosine at its elevation */
     float t_cap;     /* the slope where the bands stop: the highest sub-horizon */
 #ifdef HFS_SLICE
-    float s_cap[HFS_NSUB]; /* slice_cosine at each sub-horizon (at least the plane) */
+    float s_cap[HFS_NSUB]; /* hfs_slice_cosine at each sub-horizon (at least the plane) */
 #ifdef HFS_GLOSSY
     float x_cap[HFS_NSUB]; /* and its elevation (-1e30 below the plane) */
 #endif
@@ -223,7 +218,7 @@ struct Walk {
 #endif
 };
 
-/* The band from the top to elevation x (slice_cosine s there; s = -1e30,
+/* The band from the top to elevation x (hfs_slice_cosine s there; s = -1e30,
  * x = 1e30: up to each sub-horizon), HFS_SLICE: clipped to each
  * sub-horizon, the mean of the parts (split_horizon.h hfs_split_band).
  * Its cosine weight, and HFS_GLOSSY its lobe's into *wl. */
@@ -260,7 +255,7 @@ void cast_band(inout Walk w, float t, ivec2 g, vec2 o)
         return;
     vec3 lo = texture(u_rad, (vec2(g) + o + 0.5) / vec2(u_size)).rgb;
     float x = atan(t);
-    float s = slice_cosine(w.a, w.b, x);
+    float s = hfs_slice_cosine(w.a, w.b, x);
     float wl;
     float wgt = band_weight(w, s, x, wl);
     /* apart: the grid's rest is no difference of two sums (lo may be < 0) */
@@ -384,8 +379,9 @@ float direct_horizon(ivec2 g, int je, vec2 cs, float t1)
  * horizon t_cap of one slice (a = N.d), 0 where the horizon is below it. */
 float slice_occluded(float a, float nz, float t_cap)
 {
-    return t_cap > -a / nz ? slice_cosine(a, nz, atan(-a, nz)) - slice_cosine(a, nz, atan(t_cap))
-                           : 0.0;
+    return t_cap > -a / nz
+               ? hfs_slice_cosine(a, nz, atan(-a, nz)) - hfs_slice_cosine(a, nz, atan(t_cap))
+               : 0.0;
 }
 
 /* The direct light's sub-horizons of environment direction je (cs) at
@@ -500,7 +496,7 @@ void main()
         w.a = n.x * cs.x + n.y * cs.y;
         w.b = n.z;
         w.t_top = -w.a / n.z; /* the tangent plane */
-        w.s_top = slice_cosine(w.a, w.b, atan(-w.a, n.z));
+        w.s_top = hfs_slice_cosine(w.a, w.b, atan(-w.a, n.z));
         w.t_cap = 1e30;
         w.acc = vec3(0.0);
         w.last = vec3(0.0);
@@ -529,7 +525,7 @@ void main()
         w.t_cap = w.t_top;
         for (int h = 0; h < HFS_NSUB; ++h) {
             bool above = tc[h] > w.t_top; /* the tangent plane */
-            w.s_cap[h] = above ? slice_cosine(w.a, w.b, atan(tc[h])) : s0;
+            w.s_cap[h] = above ? hfs_slice_cosine(w.a, w.b, atan(tc[h])) : s0;
 #ifdef HFS_GLOSSY
             w.x_cap[h] = above ? atan(tc[h]) : -1e30;
 #endif

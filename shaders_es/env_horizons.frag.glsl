@@ -113,9 +113,9 @@ uniform float u_vmax;                    /* largest normalized height, a hair up
 
 layout(std140) uniform HfsScales {
     ivec4 u_nscales;                     /* (N: the scales, 0, 0, 0) */
-    vec4 u_scale[HFS_SCALES_MAX];              /* (d_i, inv_run_i, layer, 0) */
+    vec4 u_scale[HFS_SCALES_MAX];        /* (d_i, inv_run_i, layer, 0) */
 };
-#define HFS_NLEV (u_nscales.x)
+#define HFS_NLEV (u_nscales.x)           /* the scale count: a uniform */
 uniform int u_refine;                    /* samples refining the max between scales */
 uniform float u_lk;                      /* the pyramid's levels per octave k */
 uniform float u_tie;                     /* hfs_horizon_tie_slope */

@@ -115,9 +115,9 @@ uniform vec2 u_fsub[HFS_FARK];           /* sub-direction h at phi + delta_h:
 
 layout(std140) uniform HfsScales {
     ivec4 u_nscales;                     /* (N: the scales, 0, 0, 0) */
-    vec4 u_scale[HFS_SCALES_MAX];              /* (d_i, inv_run_i, layer, 0) */
+    vec4 u_scale[HFS_SCALES_MAX];        /* (d_i, inv_run_i, layer, 0) */
 };
-#define HFS_NLEV (u_nscales.x)
+#define HFS_NLEV (u_nscales.x)           /* the scale count: a uniform */
 #ifdef HFS_SWATH_TEX
 vec4 hfs_block_vec4(highp usampler2D t, int i);
 uniform highp usampler2D u_swath_tex;

@@ -366,6 +366,13 @@ float hfs_cap_irradiance(float cos_beta, float alpha)
     return hfs_cap_irradiance_sc(cos_beta, hfs_sin_acc(alpha), cos(alpha));
 }
 
+/* Int_x^{pi/2} (a cos e + b sin e) cos e de: the clamped cosine over a
+ * slice's elevations from x up (slice_light.c hfs_slice_cosine). */
+float hfs_slice_cosine(float a, float b, float x)
+{
+    return 0.5 * a * (HFS_HALF_PI - x - 0.5 * sin(2.0 * x)) + 0.25 * b * (1.0 + cos(2.0 * x));
+}
+
 /* ---- horizon sampling on the visibility grid (env_horizons, key_horizons, ------ */
 /* ---- shade's local lights; DESIGN.md "Horizons") ------------------- */
 

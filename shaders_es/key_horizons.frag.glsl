@@ -103,7 +103,7 @@ layout(std140) uniform HfsScales {
     ivec4 u_nscales;                     /* (N: the scales, 0, 0, 0) */
     vec4 u_scale[HFS_SCALES_MAX];
 };
-#define HFS_NLEV (u_nscales.x)
+#define HFS_NLEV (u_nscales.x)           /* the scale count: a uniform */
 #ifdef HFS_SWATH_TEX
 /* The swath from a texture (too large for a uniform block): this light's
  * starts at vec4 u_swath_base. */

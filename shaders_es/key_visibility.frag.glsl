@@ -380,21 +380,11 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
         Vo[g] = vec4(0.0);
     }
     float om_prev = 0.0, fl_prev = 0.0, om_first = 0.0, fl_first = 0.0;
-#else
-    /* V.M = sum_j v_j . w_j, w_j = C_j^T M = A_j Y(N) (the swath's
-     * matrices come folded with the light and the clamped cosine,
-     * uniform_blocks.c fold_key_matrices: no SH product per texel, 9 terms
-     * a direction), serves num and den.  |V_open| (the threshold's scale) is bounded by
-     * sum_j |C_j|_F |v_open_j| (KREC(dirs + j).z), so a den that the CPU's
-     * test 1e-12 |L| |V_open| calls zero is zero here too. */
-    float num = 0.0, den = 0.0, vo_norm = 0.0;
-#endif
-#ifdef HFS_TABLES
     /* One table lookup per wedge between consecutive directions, with a
      * closing step j = nd: from direction nd - 1 back to direction 0 on a
      * full circle, or to the swath's boundary (a boundary table, as at
      * j = 0) on a partial one.  One call site per sum keeps the program
-     * small (its compile took ~4 s on llvmpipe with the six inlined). */
+     * the program quick to compile (BENCHMARKS.md "The CI's time", session 43). */
     for (int j = 0; j <= nd; ++j) {
         float om = om_first, fl = fl_first;
         if (j < nd) {
@@ -420,6 +410,13 @@ float key_factor(int b, vec3 n, vec4 H[4], Cell cell, ivec2 p, vec2 zp)
     float num = hfs_sh_dot(Vk, M), den = hfs_sh_dot(Vo, M);
     float vo_norm = sqrt(hfs_sh_dot(Vo, Vo));
 #else
+    /* V.M = sum_j v_j . w_j, w_j = C_j^T M = A_j Y(N) (the swath's
+     * matrices come folded with the light and the clamped cosine,
+     * uniform_blocks.c fold_key_matrices: no SH product per texel, 9 terms
+     * a direction), serves num and den.  |V_open| (the threshold's scale) is bounded by
+     * sum_j |C_j|_F |v_open_j| (KREC(dirs + j).z), so a den that the CPU's
+     * test 1e-12 |L| |V_open| calls zero is zero here too. */
+    float num = 0.0, den = 0.0, vo_norm = 0.0;
     for (int j = 0; j < nd; ++j) {
         vec4 dj = KREC(dirs + j);
         float fl = atan(-(n.x * dj.x + n.y * dj.y), n.z);

@@ -118,9 +118,9 @@ uniform float u_rise;
 
 layout(std140) uniform HfsScales {
     ivec4 u_nscales;                     /* (N: the scales, 0, 0, 0) */
-    vec4 u_scale[HFS_SCALES_MAX];              /* (d_i, inv_run_i, read layer, 0) */
+    vec4 u_scale[HFS_SCALES_MAX];        /* (d_i, inv_run_i, read layer, 0) */
 };
-#define HFS_NLEV (u_nscales.x)
+#define HFS_NLEV (u_nscales.x)           /* the scale count: a uniform */
 layout(std140) uniform HfsLocal {
     vec4 u_lE[16];                       /* elevation moments, row r = E[r][0..3] */
     vec4 u_lg;                           /* (1, base, hscale, zscale/dx): texel units */

@@ -356,7 +356,7 @@ static void test_blocks(void)
     hfs_gles_layout L;
     hfs_gles_layout_init(&L, &f, &q, &err);
     /* The head: N as an int; then the scales; zeros past N. */
-    CHECK(hfs_gles_scales_vec4(&L) == 1 + HFS_GLES_MAX_LEVELS, "scales block size");
+    CHECK(hfs_gles_scales_vec4() == 1 + HFS_GLES_MAX_LEVELS, "scales block size");
     float sc[4 * (1 + HFS_GLES_MAX_LEVELS)];
     memset(sc, 0xff, sizeof sc);
     hfs_gles_pack_scales(&L, sc);

@@ -23,7 +23,7 @@ static int check_limits(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
                                         4 * (HFS_MAX_KEY_LIGHTS + 1), "wedge tables", err)) ||
         (rc = hfs_gl_caps_check_draw_buffers(caps, 4, "SH visibility (16 coefficients)", err)) ||
         (rc = hfs_gl_caps_check_samplers(caps, 10, "shading pass", err)) ||
-        (rc = hfs_gl_caps_check_uniform_block(caps, hfs_gles_scales_vec4(L) * 16,
+        (rc = hfs_gl_caps_check_uniform_block(caps, hfs_gles_scales_vec4() * 16,
                                               "per-scale constants", err)))
         return rc;
     for (int p = 0; p < HFS_PASS_COUNT; ++p) {

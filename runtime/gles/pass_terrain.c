@@ -62,11 +62,11 @@ static int upload(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
     const hfs_gl *gl = &g->gl;
     const hfs_gles_layout *L = &fr->L;
     const int w = L->w, h = L->h, fp32 = g->caps.fp32;
-    float *sc = hfs_gles_scratch(g, hfs_gles_scales_vec4(L) * 16);
+    float *sc = hfs_gles_scratch(g, hfs_gles_scales_vec4() * 16);
     if (!sc)
         return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory");
     hfs_gles_pack_scales(L, sc);
-    hfs_gles_ubo_upload(gl, g->ubo[HFS_UBO_SCALES], sc, hfs_gles_scales_vec4(L) * 16);
+    hfs_gles_ubo_upload(gl, g->ubo[HFS_UBO_SCALES], sc, hfs_gles_scales_vec4() * 16);
     hfs_gles_stage_begin(g, HFS_PASS_TERRAIN, 0);
     void *buf = hfs_gles_scratch(g, (size_t)w * h * 2 * (fp32 ? 4 : 2));
     if (!buf)

@@ -14,15 +14,14 @@
 
 /* ---- blocks -------------------------------------------------------------------- */
 
-size_t hfs_gles_scales_vec4(const hfs_gles_layout *L)
+size_t hfs_gles_scales_vec4(void)
 {
-    (void)L; /* one size for every field: the program does not depend on N */
     return 1 + HFS_GLES_MAX_LEVELS;
 }
 
 void hfs_gles_pack_scales(const hfs_gles_layout *L, float *dst)
 {
-    memset(dst, 0, hfs_gles_scales_vec4(L) * 16);
+    memset(dst, 0, hfs_gles_scales_vec4() * 16);
     *(hfs_gles_scales_head *)dst = (hfs_gles_scales_head){.n_scales = L->n_levels};
     hfs_gles_scale *scale = (hfs_gles_scale *)(dst + 4);
     for (int i = 0; i < L->n_levels; ++i) {

@@ -49,9 +49,10 @@ typedef struct hfs_gles_scale {
 } hfs_gles_scale;
 _Static_assert(sizeof(hfs_gles_scale) == 16, "HfsScales: a vec4 per scale");
 
-/* The block's size in vec4 (the head and HFS_GLES_MAX_LEVELS scales, for
- * any layout), and its packing into dst (that many vec4). */
-size_t hfs_gles_scales_vec4(const hfs_gles_layout *L);
+/* The block's size in vec4, one for every field (the head and
+ * HFS_GLES_MAX_LEVELS scales), and L's scales packed into dst (that many
+ * vec4). */
+size_t hfs_gles_scales_vec4(void);
 void hfs_gles_pack_scales(const hfs_gles_layout *L, float *dst);
 
 /* HfsSwath for a swath of n samples (env_horizons.frag declares it whole;
