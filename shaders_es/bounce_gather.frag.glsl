@@ -25,11 +25,10 @@
  * cast a band.
  * HFS_FARK K (HFS_SLICE with split horizons, split_horizon.h): the direct
  * light's horizon of a slice is K sub-horizons, max(the grid's near part,
- * each sub-direction's far occluder from u_far moved to the receiver, as
- * env_slices.frag), and each band is clipped to each of them, the slice
- * taking the mean of the parts (hfs_split_band), as W takes the mean of
- * the occluded parts: turning bounces on leaves the direct light as it is
- * (issue 36).
+ * each sub-direction's far occluders (HFS_FARH heights) from u_far moved
+ * to the receiver, as env_slices.frag), each band clipped to each of them
+ * (hfs_split_band, the mean of the parts, as W): bounces leave the direct
+ * light as it is (issue 36).
  * The near part (HFS_SLICE, u_near_d > 0; issue 36 "the gather sees what
  * a point sees"): the bands cast by the own cell and the scales within
  * u_near_d texels are what changes from texel to texel on rough relief
@@ -59,7 +58,7 @@
 // hfs-variant: HFS_SLICE 1, HFS_NEAR 1
 // hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_FARK 2, HFS_NEAR 1
 // hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_NEAR 1, HFS_FP32 1
-
+// hfs-variant: HFS_SLICE 1, HFS_PAIRS 1, HFS_FARK 2, HFS_FARH 3
 #ifndef HFS_SCALES_MAX
 #define HFS_SCALES_MAX 256
 #endif
@@ -79,6 +78,9 @@
 #define HFS_NSUB 1                       /* the direct light's horizons per slice */
 #else
 #define HFS_NSUB HFS_FARK
+#endif
+#ifndef HFS_FARH
+#define HFS_FARH 1                       /* far occluders' heights: u_far's layers */
 #endif
 
 precision highp float;
@@ -394,19 +396,18 @@ float sub_horizons(int je, vec2 cs, vec3 n, float tn, out float t[HFS_NSUB])
     float a = n.x * cs.x + n.y * cs.y, occ = 0.0;
 #ifdef HFS_FARK
     float ap = n.y * cs.x - n.x * cs.y; /* N.d rotated a quarter turn */
-    vec4 fv = vec4(0.0);
+    vec4 fv[HFS_FARH];
 #endif
     for (int h = 0; h < HFS_NSUB; ++h) {
 #ifdef HFS_FARK
         int e = je * HFS_FARK + h;
-        if (h == 0 || e % 2 == 0)
-            fv = texture(u_far, vec3(hfs_far_tile_uv(g_fpix, float(e / 2), u_fcols, u_fsize,
-                                                     u_fatlas), 0.0));
-        float fs = hfs_far_slope(fv[2 * (e % 2)],
-                                 hfs_far_d(fv[2 * (e % 2) + 1],
-                                           dot(g_fo, cs * u_fsub[h].x + vec2(-cs.y, cs.x) * u_fsub[h].y)),
-                                 g_fdz,
-                                 1.0 / float(u_fstep));
+        vec2 fuv = hfs_far_tile_uv(g_fpix, float(e / 2), u_fcols, u_fsize, u_fatlas);
+        for (int c = 0; c < HFS_FARH && (h == 0 || e % 2 == 0); ++c)
+            fv[c] = texture(u_far, vec3(fuv, float(c)));
+        float fs = -1e30, shift = dot(g_fo, cs * u_fsub[h].x + vec2(-cs.y, cs.x) * u_fsub[h].y);
+        for (int c = 0; c < HFS_FARH; ++c) /* the largest of the heights' (split_horizon.h) */
+            fs = max(fs, hfs_far_slope(fv[c][2 * (e % 2)], hfs_far_d(fv[c][2 * (e % 2) + 1], shift),
+                                       g_fdz, 1.0 / float(u_fstep)));
         float plane = -(a * u_fsub[h].x + ap * u_fsub[h].y) / n.z;
         t[h] = clamp(max(tn, fs > plane + 1e-3 * (1.0 + abs(plane)) ? fs : -1e30), -1e18, 1e18);
 #else

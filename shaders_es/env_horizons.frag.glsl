@@ -57,6 +57,7 @@
 // hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 1
 // hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 1, HFS_SWATH_TEX 1
 // hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 1, HFS_COUNT 1
+// hfs-variant: HFS_SLICE 1, HFS_FAR_ATLAS 1, HFS_NOUT 3
 
 #ifndef HFS_SCALES_MAX
 #define HFS_SCALES_MAX 256
@@ -84,6 +85,7 @@ precision highp sampler2D;
 precision highp sampler2DArray;
 
 float hfs_h(vec2 t);
+float hfs_hdiff(vec2 a, vec2 b);
 vec3 hfs_normal_at(highp sampler2DArray h, ivec2 p, ivec2 size, float zf);
 ivec2 hfs_receiver(ivec2 size, int sub);
 void hfs_receiver_heights(highp sampler2DArray levels, ivec2 g, out vec2 hx[HFS_NLAYERS]);
@@ -401,20 +403,48 @@ bool far_edit_changes(ivec2 g, vec2 cs, vec2 hx[HFS_NLAYERS], int first)
            lb - 1e-4 * (1.0 + abs(lb));
 }
 
+#if HFS_NOUT > 1
+/* The finest heights (pairs) of the lowest and the highest of the 3 x 3
+ * far receivers around grid point a (itself included; the first met of
+ * equal heights, rows then columns: cpu_far_grid.c receivers_around). */
+void far_around(ivec2 a, out vec2 lo, out vec2 hi)
+{
+    float zlo = 1e30, zhi = -1e30;
+    for (int v = -1; v <= 1; ++v)
+        for (int u = -1; u <= 1; ++u) {
+            ivec2 r = min(clamp(a + ivec2(u, v), ivec2(0), u_fgrid - 1) * u_sub, u_size - 1);
+            vec2 h = texelFetch(u_levels, ivec3(r, HFS_NLAYERS - 1), 0).xy;
+            if (hfs_h(h) < zlo) {
+                zlo = hfs_h(h);
+                lo = h;
+            }
+            if (hfs_h(h) > zhi) {
+                zhi = hfs_h(h);
+                hi = h;
+            }
+        }
+}
+#endif
+
 /* Split horizons' far pass: this texel's tile, its receiver, and the
  * occluders of its two sub-directions beyond the u_near near scales, each
  * search starting below any tangent plane (cpu_horizon.h
  * hfs_horizon_occluder), then searched in every gap from far-from on
- * (hfs_gap_search; cpu_far_grid.c). */
+ * (hfs_gap_search; cpu_far_grid.c); with HFS_NOUT 3 (split_horizon.h
+ * HFS_SPLIT_HEIGHTS) also seen from the lowest and the highest receivers
+ * around, each from the receiver's own occluder on (hfs_horizon_gap_from),
+ * into layers 1 and 2. */
 void main()
 {
     ivec2 q = ivec2(gl_FragCoord.xy);
     ivec2 tile = q / u_fgrid;
-    ivec2 g = min((q - tile * u_fgrid) * u_sub, u_size - 1);
+    ivec2 a = q - tile * u_fgrid;
+    ivec2 g = min(a * u_sub, u_size - 1);
     int j0 = 2 * (tile.y * u_fcols + tile.x);
     /* After an edit: a receiver none of whose rays meets the box grown by
-     * the largest reach reads nothing that changed (before any fetch) */
-    bool edit_far = u_edit != 0 && !edit_near(vec2(g), u_edit_reach_max);
+     * the largest reach reads nothing that changed (before any fetch); with
+     * the heights around, none of those receivers may lie in it either */
+    bool edit_far = u_edit != 0 && !edit_near(vec2(g), u_edit_reach_max + float(HFS_NOUT > 1 ? u_sub : 0));
     if (edit_far) {
         bool meets = false;
         for (int h = 0; h < 2; ++h)
@@ -426,7 +456,7 @@ void main()
     }
     vec2 hx[HFS_NLAYERS];
     hfs_receiver_heights(u_levels, g, hx);
-    if (edit_far) {
+    if (edit_far && HFS_NOUT == 1) { /* the heights around: each ray that meets it */
         bool changes = false;
         for (int h = 0; h < 2; ++h)
             if (j0 + h < HFS_NDIR)
@@ -436,7 +466,14 @@ void main()
             discard;
     }
     int fetches = 1 + HFS_NLAYERS;
-    vec4 res = vec4(-3e4, 0.0, -3e4, 0.0);
+    vec4 res[HFS_NOUT];
+    for (int c = 0; c < HFS_NOUT; ++c)
+        res[c] = vec4(-3e4, 0.0, -3e4, 0.0);
+#if HFS_NOUT > 1
+    vec2 around[2];
+    far_around(a, around[0], around[1]);
+    fetches += 9;
+#endif
     for (int h = 0; h < 2; ++h) {
         int j = j0 + h;
         if (j >= HFS_NDIR)
@@ -448,14 +485,33 @@ void main()
                               u_zf, u_tie, hx[HFS_NLAYERS - 1], dist > 0.0 ? best : -1e30, 1e30,
                               dist, fetches);
         if (dist > 0.0) { /* the height from the slope as found (write_horizons) */
-            res[2 * h] = hfs_pair_h(best * dist);
-            res[2 * h + 1] = dist;
+            res[0][2 * h] = hfs_pair_h(best * dist);
+            res[0][2 * h + 1] = dist;
         }
+#if HFS_NOUT > 1
+        for (int c = 1; c < HFS_NOUT; ++c) { /* stored over this receiver */
+            float rise = hfs_hdiff(around[c - 1], hx[HFS_NLAYERS - 1]) * u_zf, d = dist;
+            if (rise == 0.0) { /* its own height: its own occluder */
+                res[c].xy = h == 0 ? res[0].xy : res[c].xy;
+                res[c].zw = h == 1 ? res[0].zw : res[c].zw;
+                continue;
+            }
+            float t = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, 1e9,
+                                     u_zf, u_tie, around[c - 1],
+                                     dist > 0.0 ? best - rise / dist : -1e30, 1e30, d, fetches);
+            if (d > 0.0) {
+                res[c][2 * h] = hfs_pair_h(t * d + rise);
+                res[c][2 * h + 1] = d;
+            }
+        }
+#endif
     }
 #ifdef HFS_COUNT
     write_count(fetches);
 #else
-    o_v0 = hfs_f16v(res);
+    for (int c = 0; c < HFS_NOUT; ++c)
+        res[c] = hfs_f16v(res[c]);
+    write_outputs(res);
 #endif
 }
 #else

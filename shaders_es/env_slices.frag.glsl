@@ -59,6 +59,7 @@
 // hfs-variant: HFS_ENV_DOT 1
 // hfs-variant: HFS_ENV_DOT 1, HFS_FP32 1
 // hfs-variant: HFS_PAIRS 1, HFS_FARK 2, HFS_ENV_DOT 1
+// hfs-variant: HFS_PAIRS 1, HFS_FARK 2, HFS_FARH 3
 
 #ifndef HFS_SCALES_MAX
 #define HFS_SCALES_MAX 256
@@ -71,6 +72,9 @@
 #define HFS_NSUB 1                       /* horizons per slice */
 #else
 #define HFS_NSUB HFS_FARK
+#endif
+#ifndef HFS_FARH
+#define HFS_FARH 1                       /* far occluders' heights (layers of u_far) */
 #endif
 
 precision highp float;
@@ -441,16 +445,20 @@ void main()
     vec2 tf, of; /* where it reads them, and that less its place */
     float dzf = grid_rise(p, u_fstep, s0, s1, s8, tf, of), inv_fstep = 1.0 / float(u_fstep);
     vec2 fpix = hfs_grid_pix_at(p, u_fstep, tf); /* in a tile */
-    vec4 fv = vec4(0.0);
+    vec4 fv[HFS_FARH];
+    /* the largest of the heights' occluders (split_horizon.h) */
 #define HFS_SUBS(J)                                                         \
     vec2 dj = SW_DIR(HFS_DIR_AT(J)).xy;                                     \
     vec2 ofj = vec2(dot(of, dj), dot(of, vec2(-dj.y, dj.x)));               \
     for (int h = 0; h < HFS_FARK; ++h) {                                    \
         int e = (J) * HFS_FARK + h;                                         \
-        if (e % 2 == 0)                                                     \
-            fv = texture(u_far, vec3(hfs_far_tile_uv(fpix, float(e / 2), u_fcols, u_fsize, u_fatlas), 0.0)); \
-        fsub[h] = hfs_far_slope(fv[2 * (e % 2)],                            \
-                                hfs_far_d(fv[2 * (e % 2) + 1], dot(ofj, u_fsub[h])), dzf, inv_fstep); \
+        vec2 fuv = hfs_far_tile_uv(fpix, float(e / 2), u_fcols, u_fsize, u_fatlas); \
+        for (int c = 0; c < HFS_FARH && e % 2 == 0; ++c)                    \
+            fv[c] = texture(u_far, vec3(fuv, float(c)));                    \
+        fsub[h] = -1e30;                                                    \
+        for (int c = 0; c < HFS_FARH; ++c)                                  \
+            fsub[h] = max(fsub[h], hfs_far_slope(fv[c][2 * (e % 2)],        \
+                                   hfs_far_d(fv[c][2 * (e % 2) + 1], dot(ofj, u_fsub[h])), dzf, inv_fstep)); \
     }
 #else
 #define HFS_SUBS(J)

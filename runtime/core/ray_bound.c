@@ -318,7 +318,7 @@ static double box_rise(ray_search *S, double ua, double ub)
 static double search(const hfs_ray_bound_layout *L, const double *atlas, const double *z,
                      size_t stride, int i, int j, double c, double s, double t_first,
                      double t_last, double zs, double tie, double best, double *dist,
-                     long *reads, int cells)
+                     long *reads, int cells, const double *z0)
 {
     ray_search S = {.L = L, .atlas = atlas, .z = z, .stride = stride, .zs = zs, .tie = tie,
                     .best = best, .lead = best, .dist = dist, .col_u = -1};
@@ -329,7 +329,7 @@ static double search(const hfs_ray_bound_layout *L, const double *atlas, const d
         k->last = m_last < 0.0 ? 0 : (int)m_last;
     S.p = k->x_major ? i : j, S.q = k->x_major ? j : i, S.nq = k->x_major ? L->h : L->w;
     const int p = S.p, q = S.q, nq = S.nq;
-    S.z0 = z[(size_t)j * stride + (size_t)i];
+    S.z0 = z0 ? *z0 : z[(size_t)j * stride + (size_t)i];
     cells = cells && nq >= 2; /* one row: the surface is linear between crossings */
     const double u0 = t_first / k->inv; /* in crossings */
     int m = (int)ceil(u0 - 1e-4);        /* as in float */
@@ -397,7 +397,17 @@ double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, 
                             double t_last, double zs, double tie, double best, double *dist,
                             long *reads)
 {
-    return search(L, atlas, z, stride, i, j, c, s, t_first, t_last, zs, tie, best, dist, reads, 0);
+    return search(L, atlas, z, stride, i, j, c, s, t_first, t_last, zs, tie, best, dist, reads, 0,
+                  NULL);
+}
+
+double hfs_ray_bound_search_from(const hfs_ray_bound_layout *L, const double *atlas,
+                                 const double *z, size_t stride, int i, int j, double z0,
+                                 double c, double s, double t_first, double zs, double tie,
+                                 double best, double *dist)
+{
+    return search(L, atlas, z, stride, i, j, c, s, t_first, HUGE_VAL, zs, tie, best, dist, NULL,
+                  0, &z0);
 }
 
 double hfs_ray_bound_search_cells(const hfs_ray_bound_layout *L, const double *atlas,
@@ -405,5 +415,6 @@ double hfs_ray_bound_search_cells(const hfs_ray_bound_layout *L, const double *a
                                   double s, double t_first, double t_last, double zs, double tie,
                                   double best, double *dist, long *reads)
 {
-    return search(L, atlas, z, stride, i, j, c, s, t_first, t_last, zs, tie, best, dist, reads, 1);
+    return search(L, atlas, z, stride, i, j, c, s, t_first, t_last, zs, tie, best, dist, reads, 1,
+                  NULL);
 }

@@ -128,6 +128,15 @@ double hfs_ray_bound_search(const hfs_ray_bound_layout *L, const double *atlas, 
                             double t_last, double zs, double tie, double best, double *dist,
                             long *reads);
 
+/* hfs_ray_bound_search to the grid's edge as seen from height z0 (in z's
+ * units) at (i, j) instead of the grid point's own: split horizons' far
+ * occluders from the heights of the receivers around (split_horizon.h
+ * `heights`; GLES: env_horizons.frag's far pass, the same steps). */
+double hfs_ray_bound_search_from(const hfs_ray_bound_layout *L, const double *atlas,
+                                 const double *z, size_t stride, int i, int j, double z0,
+                                 double c, double s, double t_first, double zs, double tie,
+                                 double best, double *dist);
+
 /* The same over the whole ray from t_first (from crossing 1 where t_first
  * <= 1) to t_last or the grid's edge: the supremum of the bilinear
  * surface's slopes there, each cell between crossings in closed form

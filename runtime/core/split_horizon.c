@@ -24,6 +24,7 @@ void hfs_split_make(const hfs_quality *q, hfs_split *s)
     s->step = q->far_step > 0 ? q->far_step : by_subsample[i].step;
     s->near_refine = i == 0 || q->refine < 2 ? q->refine : 2;
     s->far_refine = q->refine;
+    s->heights = s->step > 2 ? HFS_SPLIT_HEIGHTS : 1;
 }
 
 void hfs_split_swath(const hfs_swath *env, int k, hfs_swath *far)

@@ -60,7 +60,26 @@ typedef struct hfs_split {
     int far_refine;  /* samples refining the far part: q->refine at every
                         subsample (the far grid is cheap; the CPU's far
                         grid and the GLES far pass both read it here)     */
+    int heights;     /* far occluders a receiver keeps per sub-direction:
+                        1, or HFS_SPLIT_HEIGHTS (below)                   */
 } hfs_split;
+
+/* Far occluders seen from three heights (issue 36, city blocks): a far
+ * receiver keeps, per sub-direction, the occluder seen from its own
+ * height and those seen from the lowest and the highest of the 3 x 3
+ * far receivers around it (itself included), each stored as its height
+ * over the receiver and its distance; a texel takes the largest of the
+ * three's slopes, each blended and moved to it as one occluder is.  Why:
+ * the far horizon seen from a height z is the tangent from z to the
+ * terrain's upper hull beyond far-from, and a lower point's tangent
+ * touches it nearer: a texel in a street between receivers on roofs (or
+ * on a roof between receivers in the street) read occluders found from
+ * the wrong height, which no move to its own height can make right.
+ * Each is a real occluder of the ray, so the largest never rises above
+ * the horizon beyond far-from but by the move's error (a texel's place
+ * and the receivers' differ).  On a far grid of step 2 (subsample 1) the
+ * receivers around lie within 2 texels: 1 height there. */
+#define HFS_SPLIT_HEIGHTS 3
 
 /* The split of a frame with quality q: on where q->split is and
  * q->visibility is the slice path, with or without bounces (their bands

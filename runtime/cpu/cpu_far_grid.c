@@ -20,15 +20,64 @@ struct hfs_cpu_far {
     hfs_horizon_plan *plan;     /* the sub-directions                        */
     double *omega;              /* per worker: n_levels angles               */
     int n_levels;
-    float *pairs;               /* gh x gw x n_sub x 2: height over the
-                                   receiver (in hunit texels) and distance
-                                   (texels), as the GLES pass stores them    */
+    int heights;                /* occluders a sub-direction (desc.heights)  */
+    size_t layer;               /* floats a height's layer holds             */
+    float *pairs;               /* heights x gh x gw x n_sub x 2: height over
+                                   the receiver (in hunit texels) and
+                                   distance (texels), as the GLES pass stores
+                                   them (a layer per height)                 */
 };
 
 /* Heights in texels of the horizontal: world z / dx. */
 static double height_texels(const hfs_field *f, int i, int j)
 {
     return f->zscale * (double)f->z[(size_t)j * (size_t)f->width + (size_t)i] / f->dx;
+}
+
+/* Grid index a's texel along an axis of n texels: a s, the last at n - 1. */
+static int receiver_at(int a, int s, int n)
+{
+    return a * s < n - 1 ? a * s : n - 1;
+}
+
+/* The stored pair of an occluder of height h over its receiver (texels)
+ * at distance dist (0: none). */
+static void store_pair(const hfs_cpu_far *g, double h, double dist, float *out)
+{
+    if (dist > 0.0) {
+        h /= g->hunit;
+        h = h > HFS_SPLIT_MAX_H ? HFS_SPLIT_MAX_H : (h < -HFS_SPLIT_MAX_H ? -HFS_SPLIT_MAX_H : h);
+        out[0] = (float)h;
+        out[1] = (float)dist;
+    } else {
+        out[0] = (float)HFS_SPLIT_NONE_H;
+        out[1] = 0.0f;
+    }
+}
+
+/* The lowest and highest of the 3 x 3 far receivers around grid point
+ * (a, b), as grid points (lo[0], lo[1]), (hi[0], hi[1]); the first met of
+ * equal heights, rows then columns (env_horizons.frag far_around). */
+static void receivers_around(const hfs_cpu_far *g, int a, int b, int lo[2], int hi[2])
+{
+    const int st = g->d.step;
+    double zlo = HUGE_VAL, zhi = -HUGE_VAL;
+    for (int v = -1; v <= 1; ++v) {
+        const int bb = b + v < 0 ? 0 : (b + v >= g->gh ? g->gh - 1 : b + v);
+        for (int u = -1; u <= 1; ++u) {
+            const int aa = a + u < 0 ? 0 : (a + u >= g->gw ? g->gw - 1 : a + u);
+            const int x = receiver_at(aa, st, g->f->width), y = receiver_at(bb, st, g->f->height);
+            const double z = g->f->z[(size_t)y * (size_t)g->f->width + (size_t)x];
+            if (z < zlo) {
+                zlo = z;
+                lo[0] = x, lo[1] = y;
+            }
+            if (z > zhi) {
+                zhi = z;
+                hi[0] = x, hi[1] = y;
+            }
+        }
+    }
 }
 
 /* Grid row b: every receiver's occluder in every sub-direction. */
@@ -41,6 +90,9 @@ static void far_row(void *ctx, int b, int worker)
     for (int a = 0; a < g->gw; ++a) {
         const int x = a * st < g->f->width - 1 ? a * st : g->f->width - 1;
         float *out = g->pairs + ((size_t)b * (size_t)g->gw + (size_t)a) * (size_t)g->n_sub * 2;
+        int around[2][2] = {{x, y}, {x, y}};
+        if (g->heights > 1)
+            receivers_around(g, a, b, around[0], around[1]);
         for (int e = 0; e < g->n_sub; ++e) {
             double slope, dist;
             hfs_horizon_point(g->plan, e, x, y, HFS_HORIZON_OFF, NULL, NULL, omega);
@@ -51,14 +103,19 @@ static void far_row(void *ctx, int b, int worker)
             if (g->d.gap_from >= 0.0)
                 slope = hfs_horizon_gap(g->plan, e, x, y, g->d.gap_from, g->tie,
                                         has ? slope : -1e30, 0, &dist, NULL);
-            if (dist > 0.0) {
-                double h = slope * dist / g->hunit;
-                h = h > HFS_SPLIT_MAX_H ? HFS_SPLIT_MAX_H : (h < -HFS_SPLIT_MAX_H ? -HFS_SPLIT_MAX_H : h);
-                out[2 * e] = (float)h;
-                out[2 * e + 1] = (float)dist;
-            } else {
-                out[2 * e] = (float)HFS_SPLIT_NONE_H;
-                out[2 * e + 1] = 0.0f;
+            store_pair(g, slope * dist, dist, out + 2 * e);
+            /* seen from the lowest and the highest receivers around
+             * (split_horizon.h HFS_SPLIT_HEIGHTS), stored over this one */
+            for (int c = 1; c < g->heights; ++c) {
+                if (around[c - 1][0] == x && around[c - 1][1] == y) { /* itself */
+                    store_pair(g, slope * dist, dist, out + (size_t)c * g->layer + 2 * e);
+                    continue;
+                }
+                double d = dist, rise;
+                const double t = hfs_horizon_gap_from(g->plan, e, x, y, around[c - 1][0],
+                                                      around[c - 1][1], g->d.gap_from, g->tie,
+                                                      slope, &d, &rise);
+                store_pair(g, t * d + rise, d, out + (size_t)c * g->layer + 2 * e);
             }
         }
     }
@@ -86,7 +143,9 @@ int hfs_cpu_occ_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, int offse
     double *phi = malloc((size_t)g->n_sub * sizeof *phi);
     const int workers = threads < 1 ? 1 : threads;
     g->omega = malloc((size_t)workers * (size_t)g->n_levels * sizeof *g->omega);
-    g->pairs = malloc((size_t)g->gw * (size_t)g->gh * (size_t)g->n_sub * 2 * sizeof *g->pairs);
+    g->heights = desc->heights > 1 && desc->gap_from >= 0.0 ? desc->heights : 1;
+    g->layer = (size_t)g->gw * (size_t)g->gh * (size_t)g->n_sub * 2;
+    g->pairs = malloc(g->layer * (size_t)g->heights * sizeof *g->pairs);
     int rc = !phi || !g->omega || !g->pairs
                  ? hfs_fail(err, HFS_E_NOMEM, "backend cpu: out of memory for an occluder grid")
                  : HFS_OK;
@@ -116,7 +175,8 @@ int hfs_cpu_far_create(const hfs_field *f, const hfs_cpu_pyramid *pyr, const hfs
     const hfs_cpu_occ_desc d = {
         .step = split->step, .k = split->k,
         .first = hfs_split_first_far(n_levels, hfs_cpu_pyramid_k(pyr), split->from),
-        .coarsest = 0, .refine = split->far_refine, .gap_from = split->from, .plane = 1};
+        .coarsest = 0, .refine = split->far_refine, .gap_from = split->from, .plane = 1,
+        .heights = split->heights};
     return hfs_cpu_occ_create(f, pyr, q->offset, &d, env, tie, threads, out, err);
 }
 
@@ -133,12 +193,6 @@ void hfs_cpu_far_destroy(hfs_cpu_far *g)
 int hfs_cpu_far_coarsest_near(const hfs_cpu_far *g)
 {
     return g->d.first + 1;
-}
-
-/* Grid index a's texel along an axis of n texels: a s, the last at n - 1. */
-static int receiver_at(int a, int s, int n)
-{
-    return a * s < n - 1 ? a * s : n - 1;
 }
 
 void hfs_cpu_far_place_of(const hfs_cpu_far *g, int i, int j, hfs_cpu_far_place *pl)
@@ -178,17 +232,22 @@ void hfs_cpu_far_slopes(const hfs_cpu_far *g, const hfs_cpu_far_place *pl, int d
 {
     for (int h = 0; h < g->d.k; ++h) {
         const int e = d * g->d.k + h;
-        double hb = 0.0, db = 0.0;
-        for (int r = 0; r < 4; ++r) {
-            const float *p = g->pairs + pl->at[r] + 2 * (size_t)e;
-            hb += pl->wt[r] * p[0] * g->hunit;
-            db += pl->wt[r] * p[1];
-        }
         double cs, sn;
         hfs_horizon_plan_dir(g->plan, e, &cs, &sn);
         /* read off the texel's place: the occluder that much nearer or farther */
         const double shift = pl->off[0] * cs + pl->off[1] * sn;
-        slope[h] = hfs_split_far_slope(hb, hfs_split_far_d(db, shift), pl->dz, g->d.step);
+        slope[h] = -1e30;
+        for (int c = 0; c < g->heights; ++c) { /* the largest of the heights' */
+            double hb = 0.0, db = 0.0;
+            for (int r = 0; r < 4; ++r) {
+                const float *p = g->pairs + (size_t)c * g->layer + pl->at[r] + 2 * (size_t)e;
+                hb += pl->wt[r] * p[0] * g->hunit;
+                db += pl->wt[r] * p[1];
+            }
+            const double t =
+                hfs_split_far_slope(hb, hfs_split_far_d(db, shift), pl->dz, g->d.step);
+            slope[h] = t > slope[h] ? t : slope[h];
+        }
         if (!g->d.plane)
             continue;
         if (!hfs_split_above_plane(slope[h], n[0] * cs + n[1] * sn, n))

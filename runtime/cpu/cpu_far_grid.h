@@ -29,6 +29,9 @@ typedef struct hfs_cpu_occ_desc {
     double gap_from; /* then the gap search from this distance; < 0: none */
     int plane;       /* a texel counts a slope only where it rises above its
                         sub-direction's tangent plane (hfs_split_above_plane) */
+    int heights;     /* occluders a receiver keeps per sub-direction: 1 (from
+                        its own height) or HFS_SPLIT_HEIGHTS (split_horizon.h;
+                        needs gap_from >= 0); 0 reads as 1 */
 } hfs_cpu_occ_desc;
 
 /* The grid desc of field f over pyramid pyr (level offset `offset`) for

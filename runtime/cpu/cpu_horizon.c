@@ -429,6 +429,21 @@ double hfs_horizon_gap_along(const hfs_horizon_plan *hp, double c, double s, int
         L, atlas, z, hp->stride, i, j, c, s, t_first, t_last, hp->zs, tie, best, dist, reads);
 }
 
+double hfs_horizon_gap_from(const hfs_horizon_plan *hp, int dir, int i, int j, int ci, int cj,
+                            double t_first, double tie, double slope, double *dist, double *rise)
+{
+    const hfs_ray_bound_layout *L;
+    const double *atlas = hfs_cpu_pyramid_bounds(hp->p, &L);
+    const double *z = hfs_cpu_pyramid_full(hp->p, hp->n_levels - 1);
+    const double z0 = z[(size_t)cj * hp->stride + (size_t)ci];
+    *rise = (z0 - z[(size_t)j * hp->stride + (size_t)i]) * hp->zs;
+    /* the receiver's own occluder, seen from z0: a start no farther
+     * crossing must beat by less than the tie */
+    const double best = *dist > 0.0 ? slope - *rise / *dist : -1e30;
+    return hfs_ray_bound_search_from(L, atlas, z, hp->stride, i, j, z0, hp->cs[2 * dir],
+                                     hp->cs[2 * dir + 1], t_first, hp->zs, tie, best, dist);
+}
+
 double hfs_horizon_bspline_max(const double *omega, int n, size_t stride,
                                double floor)
 {

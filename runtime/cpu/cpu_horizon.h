@@ -152,6 +152,16 @@ double hfs_horizon_gap_along(const hfs_horizon_plan *hp, double c, double s, int
                              double t_first, double t_last, double tie, double best, int cells,
                              double *dist, long *reads);
 
+/* Split horizons' far occluder at receiver (i, j) in direction dir seen
+ * from the height of grid point (ci, cj) (split_horizon.h `heights`): the
+ * gap search from t_first (hfs_ray_bound_search_from) started from the
+ * receiver's own occluder (slope, *dist from its own height; *dist 0:
+ * none) seen from there.  Returns the slope from that height; *dist
+ * becomes its distance (0: none), *rise that height less the receiver's,
+ * texels. */
+double hfs_horizon_gap_from(const hfs_horizon_plan *hp, int dir, int i, int j, int ci, int cj,
+                            double t_first, double tie, double slope, double *dist, double *rise);
+
 /* The far occluder of split horizons (split_horizon.h) at receiver (i, j)
  * in direction dir, as env_horizons.frag's far pass finds it (and, with
  * `coarsest` > 0, its near pass on a sub-sampled grid): going from

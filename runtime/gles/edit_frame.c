@@ -116,20 +116,35 @@ void hfs_gles_edit_draw(hfs_gles *g, GLuint fbo, int w, int h, int step, const h
     gl->Disable(GL_SCISSOR_TEST);
 }
 
-/* The far atlas read into buf (floats or halves, *half says which). */
+/* Bytes a layer of the far atlas takes in far_old and far_now (as floats,
+ * the larger of the read-back's forms). */
+static size_t far_layer_bytes(const hfs_gles_frame *fr)
+{
+    return (size_t)fr->far_aw * fr->far_ah * 4 * sizeof(float);
+}
+
+/* The far atlas, each of its layers (the occluders' heights,
+ * split_horizon.h) far_layer_bytes apart, read into buf (floats or halves,
+ * *half says which). */
 static int far_read(hfs_gles *g, const hfs_gles_frame *fr, void *buf, int *half, hfs_error *err)
 {
-    hfs_gl_read_path used;
-    int rc = hfs_gl_read_rgba_raw(&g->gl, g->r.far_fbo, 0, 0, fr->far_aw, fr->far_ah,
-                                  HFS_GL_READ_AUTO, buf, &used, err);
-    *half = used == HFS_GL_READ_HALF;
+    int rc = HFS_OK;
+    for (int c = 0; !rc && c < fr->split.heights; ++c) {
+        hfs_gl_read_path used;
+        rc = hfs_gles_fbo_layers(&g->gl, g->r.far_fbo, g->r.far, c, 1, "far horizons", err);
+        if (!rc)
+            rc = hfs_gl_read_rgba_raw(&g->gl, g->r.far_fbo, 0, 0, fr->far_aw, fr->far_ah,
+                                      HFS_GL_READ_AUTO, (char *)buf + c * far_layer_bytes(fr),
+                                      &used, err);
+        *half = used == HFS_GL_READ_HALF; /* one path a context */
+    }
     return rc;
 }
 
 int hfs_gles_edit_far_before(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *err)
 {
     hfs_gles_edit *e = &g->edit;
-    const size_t bytes = (size_t)fr->far_aw * fr->far_ah * 4 * sizeof(float);
+    const size_t bytes = far_layer_bytes(fr) * (size_t)fr->split.heights;
     if (bytes > e->far_cap) {
         void *b = realloc(e->far_old, bytes), *c = b ? realloc(e->far_now, bytes) : NULL;
         if (b)
@@ -140,8 +155,6 @@ int hfs_gles_edit_far_before(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *e
             return hfs_fail(err, HFS_E_NOMEM, "backend gles: out of memory for the far grid");
         e->far_cap = bytes;
     }
-    if (hfs_gles_fbo_layers(&g->gl, g->r.far_fbo, g->r.far, 0, 1, "far horizons", err))
-        return HFS_E_GL;
     return far_read(g, fr, e->far_old, &e->far_half, err);
 }
 
@@ -164,7 +177,12 @@ int hfs_gles_edit_far_after(hfs_gles *g, const hfs_gles_frame *fr, hfs_error *er
     for (int y = 0; y < fr->far_ah; ++y)
         for (int x = 0; x < fr->far_aw; ++x) {
             const size_t i = (size_t)y * fr->far_aw + x;
-            if (!memcmp((char *)e->far_old + i * each, (char *)now + i * each, each))
+            int same = 1;
+            for (int c = 0; c < fr->split.heights; ++c) {
+                const size_t at = c * far_layer_bytes(fr) + i * each;
+                same = same && !memcmp((char *)e->far_old + at, (char *)now + at, each);
+            }
+            if (same)
                 continue;
             /* the receiver's texel, as the far pass places it */
             int gx = (x % fr->far_w) * step, gy = (y % fr->far_h) * step;

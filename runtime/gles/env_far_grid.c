@@ -84,7 +84,8 @@ int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_s
     const hfs_gles_layout *L = &fr->L;
     const hfs_gles_variant v = {.n_layers = L->n_layers,
                                 .n_dir = n_sub(fr), .fp32 = g->caps.fp32,
-                                .swath_tex = fr->far_swath_tex, .slice = 1, .n_out = 1,
+                                .swath_tex = fr->far_swath_tex, .slice = 1,
+                                .n_out = fr->split.heights, /* a layer each */
                                 .far_atlas = 1, .count = fetch_sum != NULL};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_HORIZONS, &v, &prog, err);
@@ -111,7 +112,8 @@ int hfs_gles_env_far_draw(hfs_gles *g, const hfs_gles_frame *fr, double *fetch_s
                                       g->far_swath_tex.tex, err);
     else
         gl->BindBufferBase(GL_UNIFORM_BUFFER, HFS_BLOCK_SWATH, g->ubo[HFS_UBO_FAR_SWATH]);
-    if (!rc && !(rc = hfs_gles_fbo_layers(gl, g->r.far_fbo, g->r.far, 0, 1, "far horizons", err)))
+    if (!rc && !(rc = hfs_gles_fbo_layers(gl, g->r.far_fbo, g->r.far, 0, fr->split.heights,
+                                                    "far horizons", err)))
         hfs_gles_draw(gl, g->r.far_fbo, fr->far_aw, fr->far_ah);
     if (!rc && fetch_sum)
         rc = hfs_gles_sum_counts_rect(g, g->r.far_fbo, fr->far_aw, fr->far_ah, fetch_sum, err);

@@ -42,7 +42,7 @@ static int fit_resources(hfs_gles *g, hfs_gles_frame *fr, hfs_error *err)
     const hfs_gles_resources *r = &g->r;
     const unsigned gens[5] = {r->terrain_gen, r->grid_gen, r->keyhz_gen, r->localv_gen,
                               r->kf_gen};
-    const hfs_gles_layers n = {.hor = fr->hor_layers, .far = fr->split.on,
+    const hfs_gles_layers n = {.hor = fr->hor_layers, .far = fr->split.on ? fr->split.heights : 0,
                                .far_w = fr->far_aw, .far_h = fr->far_ah, .key = fr->key_layers,
                                .local = (fr->n_local + 1) / 2, .n_keys = fr->n_keys,
                                .venv = fr->has_env && !fr->slice};

@@ -158,6 +158,7 @@ static int gather(hfs_gles *g, const hfs_gles_frame *fr, int layer, int near, hf
                                 .glossy = fr->gloss.on ? 1 + fr->gloss.at_eye : 0,
                                 .pairs = capped && fr->hor_pairs,
                                 .far_k = capped && fr->split.on ? fr->split.k : 0,
+                                .far_h = capped && fr->split.on ? fr->split.heights : 0,
                                 .near = near};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_BOUNCE_GATHER, &v, &prog, err);

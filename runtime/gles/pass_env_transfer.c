@@ -29,7 +29,8 @@ int hfs_gles_draw_env_slices(hfs_gles *g, hfs_gles_frame *fr, hfs_gles_slices_ou
                                 .fp32 = g->caps.fp32, .swath_tex = fr->env_swath_tex,
                                 .env_map = env_map, .env_dot = what == HFS_SLICES_SKY,
                                 .pairs = fr->hor_pairs,
-                                .far_k = fr->split.on ? fr->split.k : 0};
+                                .far_k = fr->split.on ? fr->split.k : 0,
+                                .far_h = fr->split.on ? fr->split.heights : 0};
     const hfs_gles_program *prog;
     int rc = hfs_gles_program_use(&g->programs, gl, HFS_PROG_ENV_SLICES, &v, &prog, err);
     if (rc || (rc = hfs_gles_bind_grid_inputs(g, prog, L, err)) ||

@@ -69,6 +69,7 @@ void hfs_gles_variant_defines(const hfs_gles_variant *v, int pair_fetch, char bu
         {"HFS_GLOSSY", v->glossy},     {"HFS_ENV_MAP", v->env_map},
         {"HFS_ENV_DOT", v->env_dot},   {"HFS_ENV_OCC", v->env_occ},
         {"HFS_PAIRS", v->pairs},       {"HFS_FARK", v->far_k},
+        {"HFS_FARH", v->far_h > 1 ? v->far_h : 0},
         {"HFS_FAR_ATLAS", v->far_atlas}, {"HFS_GLOSS_MAP", v->gloss_map},
         {"HFS_NEAR", v->near},         {"HFS_CELLS", v->cells},
         {"HFS_SRC_LAYERS", v->src_layers},

@@ -61,6 +61,8 @@ typedef struct hfs_gles_variant {
     int pairs;      /* HFS_PAIRS 1: the slice path's grid horizons come with
                        their occluders' distances (hor_pairs)                */
     int far_k;      /* HFS_FARK K: split horizons' sub-directions a slice    */
+    int far_h;      /* HFS_FARH: the far occluders' heights (split_horizon.h
+                       HFS_SPLIT_HEIGHTS; 0 or 1: one), layers of u_far       */
     int far_atlas;  /* HFS_FAR_ATLAS 1: env_horizons.frag's far pass          */
     int gloss_map;  /* HFS_GLOSS_MAP 1: shade.frag's glossy lobe adds the map's
                        beyond order 4 (u_egloss, env_gloss.h)                */
