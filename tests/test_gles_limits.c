@@ -294,7 +294,12 @@ static int mode_steep(void)
  * of the vertical in both, so the two skies agree as closely as these
  * measured means (bounds 1.2x; with the unit held at 1, the heights cut
  * to fp16's 3e4 as before it: 4.9e-3, 2.7e-2 and 2.9e-2 at subsample 1, 2
- * and 4, GLES 2.7e-2), and the renders stay finite. */
+ * and 4, GLES 2.7e-2), and the renders stay finite.  Not exact: a zscale
+ * is no similarity, and the grids' wall rule (a receiver rising steeper
+ * than HFS_SPLIT_STEEP) reads some texels' far occluders at another place
+ * at 1e5 than at 1e6.  At subsample 4 that moved nothing visible (8.7e-10)
+ * until the far occluders came from three heights (session 44), which
+ * differ more between receivers: 3.19e-5, still below subsample 2's. */
 static int mode_relief(void)
 {
     scene s;
@@ -313,7 +318,7 @@ static int mode_relief(void)
     static const struct {
         int gles, sub;
         double mean;
-    } runs[] = {{0, 1, 5.1e-8}, {0, 2, 3.05e-4}, {0, 4, 1.05e-9}, {1, 2, 3.05e-4}};
+    } runs[] = {{0, 1, 5.1e-8}, {0, 2, 3.05e-4}, {0, 4, 3.83e-5}, {1, 2, 3.05e-4}};
     hfs_image a = {0}, b = {0};
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; ++i) {
         q.subsample = runs[i].sub;

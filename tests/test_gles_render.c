@@ -261,8 +261,9 @@ static double frame_bytes(hfs_renderer *r, const scene *s, const hfs_lighting *l
 /* the grid's horizons and far grid at 64², 2x2, 16 directions: 33² receivers x 8
  * layers (2 directions a layer, each a horizon and its distance) x 8 bytes,
  * and the far grid, 9² receivers (step 8) x 16 tiles (32 sub-directions, 2 a
- * tile) x 8 bytes */
-#define GRID_64 (33 * 33 * 8 * 8 + 9 * 9 * 16 * 8)
+ * tile) x 8 bytes x 3 layers (the occluders seen from three heights,
+ * split_horizon.h HFS_SPLIT_HEIGHTS; one layer before session 44) */
+#define GRID_64 (33 * 33 * 8 * 8 + 9 * 9 * 16 * 8 * 3)
 static int mode_memory(void)
 {
     scene s;

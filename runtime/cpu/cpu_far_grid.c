@@ -56,8 +56,9 @@ static void store_pair(const hfs_cpu_far *g, double h, double dist, float *out)
 }
 
 /* The lowest and highest of the 3 x 3 far receivers around grid point
- * (a, b), as grid points (lo[0], lo[1]), (hi[0], hi[1]); the first met of
- * equal heights, rows then columns (env_horizons.frag far_around). */
+ * (a, b) (itself included), as grid points (lo[0], lo[1]), (hi[0], hi[1]);
+ * the first met of equal heights, rows then columns (env_horizons.frag
+ * far_around). */
 static void receivers_around(const hfs_cpu_far *g, int a, int b, int lo[2], int hi[2])
 {
     const int st = g->d.step;
@@ -78,6 +79,29 @@ static void receivers_around(const hfs_cpu_far *g, int a, int b, int lo[2], int 
             }
         }
     }
+}
+
+/* Receiver (x, y)'s occluder in sub-direction e seen from the height of
+ * grid point at (split_horizon.h HFS_SPLIT_HEIGHTS), stored over the
+ * receiver into out, from its own occluder (slope, dist) on; at its own
+ * height, that occluder.  The lead is taken past the relative tie alone:
+ * the absolute one grows with the field's height range, so a border far
+ * below would move the lead between two crossings of nearly one slope
+ * from that height, which a texel far below or above it sees apart
+ * (test_metamorphic_pad; env_horizons.frag's far pass alike). */
+static void far_from_height(const hfs_cpu_far *g, int e, int x, int y, const int at[2],
+                            double slope, double dist, float *out)
+{
+    const float *z = g->f->z;
+    const size_t w = (size_t)g->f->width;
+    if (z[(size_t)at[1] * w + (size_t)at[0]] == z[(size_t)y * w + (size_t)x]) {
+        store_pair(g, slope * dist, dist, out);
+        return;
+    }
+    double d = dist, rise;
+    const double t =
+        hfs_horizon_gap_from(g->plan, e, x, y, at[0], at[1], g->d.gap_from, 0.0, slope, &d, &rise);
+    store_pair(g, t * d + rise, d, out);
 }
 
 /* Grid row b: every receiver's occluder in every sub-direction. */
@@ -104,19 +128,9 @@ static void far_row(void *ctx, int b, int worker)
                 slope = hfs_horizon_gap(g->plan, e, x, y, g->d.gap_from, g->tie,
                                         has ? slope : -1e30, 0, &dist, NULL);
             store_pair(g, slope * dist, dist, out + 2 * e);
-            /* seen from the lowest and the highest receivers around
-             * (split_horizon.h HFS_SPLIT_HEIGHTS), stored over this one */
-            for (int c = 1; c < g->heights; ++c) {
-                if (around[c - 1][0] == x && around[c - 1][1] == y) { /* itself */
-                    store_pair(g, slope * dist, dist, out + (size_t)c * g->layer + 2 * e);
-                    continue;
-                }
-                double d = dist, rise;
-                const double t = hfs_horizon_gap_from(g->plan, e, x, y, around[c - 1][0],
-                                                      around[c - 1][1], g->d.gap_from, g->tie,
-                                                      slope, &d, &rise);
-                store_pair(g, t * d + rise, d, out + (size_t)c * g->layer + 2 * e);
-            }
+            for (int c = 1; c < g->heights; ++c)
+                far_from_height(g, e, x, y, around[c - 1], slope, dist,
+                                out + (size_t)c * g->layer + 2 * e);
         }
     }
 }
