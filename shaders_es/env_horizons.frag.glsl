@@ -496,9 +496,8 @@ void main()
                 res[c].zw = h == 1 ? res[0].zw : res[c].zw;
                 continue;
             }
-            /* the lead past the relative tie alone (cpu_far_grid.c far_row) */
             float t = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, 1e9,
-                                     u_zf, 0.0, around[c - 1],
+                                     u_zf, u_tie, around[c - 1],
                                      dist > 0.0 ? best - rise / dist : -1e30, 1e30, d, fetches);
             if (d > 0.0) {
                 res[c][2 * h] = hfs_pair_h(t * d + rise);

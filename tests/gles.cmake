@@ -439,6 +439,15 @@ add_test(NAME test_wall_foot_gles_sub2_fp32 COMMAND test_wall_foot gles 2 fp32)
 set_tests_properties(test_wall_foot_gles_sub2_fp32 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
                      TIMEOUT 120)
 list(APPEND hfs_gles_tests test_wall_foot_gles_sub2_fp32)
+# test_far_heights: the far grid's occluders seen from three heights keep
+# streets between blocks of many heights near the truth (issue 36, city
+# blocks), the same backends and subsamples, and subsample 4 on GLES.
+hfs_metamorphic_test(test_far_heights)
+target_link_libraries(test_far_heights PRIVATE hfs_terrain_gen)
+add_test(NAME test_far_heights_gles_sub4 COMMAND test_far_heights gles 4)
+set_tests_properties(test_far_heights_gles_sub4 PROPERTIES SKIP_RETURN_CODE 77 LABELS gl
+                     TIMEOUT 120)
+list(APPEND hfs_gles_tests test_far_heights_gles_sub4)
 
 if(HFS_SANITIZE)
   foreach(t IN LISTS hfs_gles_tests)

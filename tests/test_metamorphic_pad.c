@@ -35,13 +35,14 @@
  *     field's height range, which the border changes, so every height
  *     rounds differently: 4.6e-4 at subsample 1 without split horizons
  *     (fp32: 9e-6), 4.0e-3 with them (the CPU's 4.1e-3).  At subsample 2
- *     without key lights (1.0e-3, the sky): there the 2x2 grid's key-light
- *     search reads the heights with a LINEAR fetch in coordinates over the
- *     field's size, whose rounding (and the sampler's quantized weights)
- *     moves with the size; a single column added at the moat's height
- *     moves a shadow edge by a texel (0.16 of the key light's maximum,
- *     0.77 with the whole border).  The points (shadow height maps,
- *     normalized heights in float): 1.2e-5.
+ *     without key lights (1.0e-3, the sky; 1.884e-3 since the far grid
+ *     came from three heights, the CPU's 1.875e-3, run()): there the 2x2
+ *     grid's key-light search reads the heights with a LINEAR fetch in
+ *     coordinates over the field's size, whose rounding (and the
+ *     sampler's quantized weights) moves with the size; a single column
+ *     added at the moat's height moves a shadow edge by a texel (0.16 of
+ *     the key light's maximum, 0.77 with the whole border).  The points
+ *     (shadow height maps, normalized heights in float): 1.2e-5.
  *
  *   test_metamorphic_pad cpu | gles SUBSAMPLE   (gles: 77 without a context)
  */
@@ -128,7 +129,7 @@ static void pad_invariance(hfs_renderer *r, const char *name, int sub, const mm_
 static const mm_setting gles_settings[2][2] = {
     {{HFS_PRECISION_FP16, 1, 0, 1, 4.8e-3, 1.45e-5},
      {HFS_PRECISION_FP16, 0, 0, 1, 5.6e-4, 1.45e-5}},
-    {{HFS_PRECISION_FP16, 1, 0, 0, 1.2e-3, 1.45e-5},
+    {{HFS_PRECISION_FP16, 1, 0, 0, 2.26e-3, 1.45e-5}, /* the CPU's 1.875e-3 (run) */
      {HFS_PRECISION_FP16, 0, 0, 0, 1.25e-3, 1.45e-5}},
 };
 
@@ -147,10 +148,20 @@ static void run(hfs_renderer *r, const char *backend, int sub)
      * texels around it borrow; padded, that sample lies in the border
      * and gives the border's own, far lower slope: 2.8e-2 of the image's
      * maximum (0 with the floor left out there, a temporary edit).  The
-     * sky alone: 0. */
+     * sky alone: 0 until the far grid's occluders came from three heights
+     * (split_horizon.h HFS_SPLIT_HEIGHTS, session 44): since then
+     * 1.875e-3, at one corner receiver, where an occluder seen from the
+     * highest receiver around, along a long slope that its sight line
+     * grazes, has two crossings of nearly one slope; which of the two
+     * leads is decided by the horizons' tie, which the border (the field's
+     * height range) makes 13x wider, and the texels below see the two
+     * apart.  The tie is what keeps GLES and the CPU on one crossing on
+     * flat roofs (cpu_far_grid.c far_from_height); a read past the edge
+     * as if the edge went on, which this test is for, moves the image by
+     * 1e-2 to 1e-1. */
     const mm_setting settings[2][2] = {
         {{HFS_PRECISION_FP32, 0, 0, 1, 1e-6, 1e-6}, {HFS_PRECISION_FP32, 1, 0, 1, 4.9e-3, 1e-6}},
-        {{HFS_PRECISION_FP32, 0, 0, 0, 1e-6, 1e-6}, {HFS_PRECISION_FP32, 1, 0, 0, 2.7e-6, 1e-6}},
+        {{HFS_PRECISION_FP32, 0, 0, 0, 1e-6, 1e-6}, {HFS_PRECISION_FP32, 1, 0, 0, 2.25e-3, 1e-6}},
     };
     for (sub = 1; sub <= 2; ++sub)
         for (int i = 0; i < 2; ++i)

@@ -84,11 +84,11 @@ static void receivers_around(const hfs_cpu_far *g, int a, int b, int lo[2], int 
 /* Receiver (x, y)'s occluder in sub-direction e seen from the height of
  * grid point at (split_horizon.h HFS_SPLIT_HEIGHTS), stored over the
  * receiver into out, from its own occluder (slope, dist) on; at its own
- * height, that occluder.  The lead is taken past the relative tie alone:
- * the absolute one grows with the field's height range, so a border far
- * below would move the lead between two crossings of nearly one slope
- * from that height, which a texel far below or above it sees apart
- * (test_metamorphic_pad; env_horizons.frag's far pass alike). */
+ * height, that occluder (env_horizons.frag's far pass alike).  The lead
+ * moves past the horizons' tie, as in every search: on flat roofs, where
+ * crossings tie exactly, float and double then name the same one (the
+ * relative tie alone left GLES 3e-3 off the CPU on test_far_heights'
+ * streets, a trial). */
 static void far_from_height(const hfs_cpu_far *g, int e, int x, int y, const int at[2],
                             double slope, double dist, float *out)
 {
@@ -100,7 +100,7 @@ static void far_from_height(const hfs_cpu_far *g, int e, int x, int y, const int
     }
     double d = dist, rise;
     const double t =
-        hfs_horizon_gap_from(g->plan, e, x, y, at[0], at[1], g->d.gap_from, 0.0, slope, &d, &rise);
+        hfs_horizon_gap_from(g->plan, e, x, y, at[0], at[1], g->d.gap_from, g->tie, slope, &d, &rise);
     store_pair(g, t * d + rise, d, out);
 }
 

@@ -65,9 +65,11 @@ double hfs_gles_env_slices_fetches(const hfs_gles *g, const hfs_gles_frame *fr)
     /* Per texel: the normal's 4 heights, or with the near scale the 3 x 3
      * heights about it, which hold the normal's 4 (env_slices.frag
      * near_slopes); a horizon layer per 4 directions; split horizons: a
-     * far texel per 2 sub-directions and the 4 far receivers' heights. */
+     * far texel per 2 sub-directions and height (split_horizon.h) and the 4
+     * far receivers' heights. */
     const double per_layer = fr->hor_pairs ? 2.0 : 4.0;
-    const double far = fr->split.on ? ceil(g->env_vis_n * fr->split.k / 2.0) + 4.0 : 0.0;
+    const double far = fr->split.on ? ceil(g->env_vis_n * fr->split.k / 2.0) * fr->split.heights + 4.0
+                                    : 0.0;
     return (fr->env_near ? 9.0 : 4.0) + ceil(g->env_vis_n / per_layer) + far;
 }
 
