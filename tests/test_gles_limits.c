@@ -297,9 +297,10 @@ static int mode_steep(void)
  * and 4, GLES 2.7e-2), and the renders stay finite.  Not exact: a zscale
  * is no similarity, and the grids' wall rule (a receiver rising steeper
  * than HFS_SPLIT_STEEP) reads some texels' far occluders at another place
- * at 1e5 than at 1e6.  At subsample 4 that moved nothing visible (8.7e-10)
- * until the far occluders came from three heights (session 44), which
- * differ more between receivers: 3.19e-5, still below subsample 2's. */
+ * at 1e5 than at 1e6.  At subsample 4 that moved nothing visible (bound
+ * 1.05e-9) until the far occluders came from three heights (session 44),
+ * which differ more between receivers: 3.19e-5, still below subsample
+ * 2's. */
 static int mode_relief(void)
 {
     scene s;
