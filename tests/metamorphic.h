@@ -153,6 +153,97 @@ static inline void mm_report(const char *name, int sub, const mm_setting *st, co
     }
 }
 
+/* One frame of r (field f's size, allocated here: hfs_image_free it); 0,
+ * or -1 after a failed check (the error on stderr). */
+static inline int mm_frame(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
+                           const hfs_quality *q, hfs_image *img)
+{
+    hfs_error err = {""};
+    if (hfs_image_alloc(img, f->width, f->height, &err) ||
+        hfs_renderer_render(r, f, l, q, img, NULL, NULL, &err)) {
+        fprintf(stderr, "frame: %s\n", err.msg);
+        ++failures;
+        return -1;
+    }
+    return 0;
+}
+
+/* img against the CPU reference's frame at quality q: the largest and the
+ * mean difference over every value; 0, or -1 after a failed check. */
+static inline int mm_against_cpu(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
+                                 const hfs_image *img, double *max, double *mean)
+{
+    hfs_renderer *c = NULL;
+    hfs_error err = {""};
+    const hfs_renderer_desc cd = {.backend = HFS_BACKEND_CPU};
+    hfs_image ref = {0};
+    if (hfs_renderer_create(&cd, &c, &err) || mm_frame(c, f, l, q, &ref)) {
+        fprintf(stderr, "cpu: %s\n", err.msg);
+        ++failures;
+        hfs_renderer_destroy(c);
+        hfs_image_free(&ref);
+        return -1;
+    }
+    const size_t n = 3 * (size_t)f->width * (size_t)f->height;
+    *max = *mean = 0.0;
+    for (size_t k = 0; k < n; ++k) {
+        const double e = fabs((double)img->rgb[k] - ref.rgb[k]);
+        *max = fmax(*max, e);
+        *mean += e / (double)n;
+    }
+    hfs_renderer_destroy(c);
+    hfs_image_free(&ref);
+    return 0;
+}
+
+/* A uniform sky of radiance 1 (the SH's constant term sqrt(4 pi)) into l,
+ * and the truth backend's frame of field f under it at the default
+ * quality into truth (allocated here: hfs_image_free it); 0, or -1 after
+ * a failed check (test_wall_foot, test_far_heights). */
+static inline int mm_uniform_sky_truth(const hfs_field *f, hfs_lighting *l, hfs_image *truth)
+{
+    hfs_lighting_defaults(l);
+    l->has_env = 1;
+    for (int c = 0; c < 3; ++c)
+        l->env_sh[c][0] = 3.5449077018110318;
+    hfs_renderer *t = NULL;
+    hfs_error err = {""};
+    const hfs_renderer_desc td = {.backend = HFS_BACKEND_TRUTH};
+    hfs_quality q;
+    hfs_quality_defaults(&q);
+    int rc = hfs_renderer_create(&td, &t, &err) || hfs_image_alloc(truth, f->width, f->height, &err) ||
+             hfs_renderer_render(t, f, l, &q, truth, NULL, NULL, &err);
+    hfs_renderer_destroy(t);
+    if (rc) {
+        fprintf(stderr, "truth: %s\n", err.msg);
+        ++failures;
+        return -1;
+    }
+    return 0;
+}
+
+/* One subsample's checks of field f under lighting l against its truth. */
+typedef void (*mm_sub_fn)(hfs_renderer *r, const char *backend, int sub, const hfs_field *f,
+                          const hfs_lighting *l, const hfs_image *truth);
+
+/* Field f under a uniform sky (mm_uniform_sky_truth): fn at subsample sub
+ * where it is 1, 2 or 4, else at 1 and 2 (the CPU's run). */
+static inline void mm_sky_subsamples(hfs_renderer *r, const char *backend, int sub,
+                                     const hfs_field *f, mm_sub_fn fn)
+{
+    hfs_lighting l;
+    hfs_image truth = {0};
+    if (!mm_uniform_sky_truth(f, &l, &truth)) {
+        if (sub == 1 || sub == 2 || sub == 4) {
+            fn(r, backend, sub, f, &l, &truth);
+        } else {
+            fn(r, backend, 1, f, &l, &truth);
+            fn(r, backend, 2, f, &l, &truth);
+        }
+    }
+    hfs_image_free(&truth);
+}
+
 /* A test program's main: `TEST cpu` runs run(cpu renderer, "cpu", 0),
  * `TEST gles SUBSAMPLE` run(gles renderer, "gles", SUBSAMPLE) (77 without
  * a context, gl_test.h); the exit status of the checks. */

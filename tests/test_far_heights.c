@@ -48,20 +48,6 @@ static double mean_err(const hfs_image *a, const hfs_image *b, const float *z, f
     return n ? s / n : 0.0;
 }
 
-/* One frame of r into img (allocated here: hfs_image_free it); 0, or -1
- * after a failed check. */
-static int frame(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
-                 hfs_image *img)
-{
-    hfs_error err = {""};
-    if (hfs_image_alloc(img, W, H, &err) || hfs_renderer_render(r, f, l, q, img, NULL, NULL, &err)) {
-        fprintf(stderr, "test_far_heights: %s\n", err.msg);
-        ++failures;
-        return -1;
-    }
-    return 0;
-}
-
 /* GLES img at quality q against the CPU reference's frame: the largest and
  * the mean difference. */
 static void against_cpu(const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
@@ -71,34 +57,24 @@ static void against_cpu(const hfs_field *f, const hfs_lighting *l, const hfs_qua
      * (subsample 1, 2, 4) */
     static const double max_lim[5] = {0, 9.7e-4, 4.8e-4, 0, 3.95e-4};
     static const double mean_lim[5] = {0, 6.9e-5, 6.8e-5, 0, 6.8e-5};
-    hfs_renderer *c = NULL;
-    hfs_error err = {""};
-    const hfs_renderer_desc cd = {.backend = HFS_BACKEND_CPU};
-    REQUIRE(hfs_renderer_create(&cd, &c, &err) == HFS_OK, "cpu: %s", err.msg);
-    hfs_image ref = {0};
-    if (!frame(c, f, l, q, &ref)) {
-        double d = 0.0, s = 0.0;
-        for (int k = 0; k < 3 * W * H; ++k) {
-            const double e = fabs((double)img->rgb[k] - ref.rgb[k]);
-            d = fmax(d, e);
-            s += e;
-        }
-        s /= 3.0 * W * H;
-        const int sub = q->subsample;
-        printf("  GLES against the CPU reference: %.2e at most (bound %.2e), mean %.2e (%.2e)\n",
-               d, max_lim[sub], s, mean_lim[sub]);
-        CHECK(d <= max_lim[sub]);
-        CHECK(s <= mean_lim[sub]);
-        hfs_image_free(&ref);
-    }
-    hfs_renderer_destroy(c);
+    double d, s;
+    if (mm_against_cpu(f, l, q, img, &d, &s))
+        return;
+    const int sub = q->subsample;
+    printf("  GLES against the CPU reference: %.2e at most (bound %.2e), mean %.2e (%.2e)\n", d,
+           max_lim[sub], s, mean_lim[sub]);
+    CHECK(d <= max_lim[sub]);
+    CHECK(s <= mean_lim[sub]);
 }
 
 /* One subsample's render against the truth (the sky's unshadowed maximum
  * is 1: a flat open texel). */
 static void run_sub(hfs_renderer *r, const char *backend, int sub, const hfs_field *f,
-                    const hfs_lighting *l, const hfs_image *truth, float lo)
+                    const hfs_lighting *l, const hfs_image *truth)
 {
+    float lo = f->z[0]; /* the streets' height */
+    for (int k = 1; k < W * H; ++k)
+        lo = fminf(lo, f->z[k]);
     /* bounds by subsample: the roofs, the streets, the field (measured:
      * 0.00432, 0.01048, 0.00702 at subsample 1; 0.00497, 0.02234, 0.01257
      * at 2; 0.02694, 0.05292, 0.03831 at 4) */
@@ -109,7 +85,7 @@ static void run_sub(hfs_renderer *r, const char *backend, int sub, const hfs_fie
     hfs_quality_defaults(&q);
     q.subsample = sub;
     hfs_image img;
-    if (frame(r, f, l, &q, &img))
+    if (mm_frame(r, f, l, &q, &img))
         return;
     const double roof = mean_err(&img, truth, f->z, lo, 0);
     const double street = mean_err(&img, truth, f->z, lo, 1);
@@ -129,33 +105,8 @@ static void run(hfs_renderer *r, const char *backend, int sub)
 {
     static float z[W * H];
     hfs_terrain_city(z, W, H, 1u);
-    float lo = z[0];
-    for (int k = 1; k < W * H; ++k)
-        lo = fminf(lo, z[k]);
     const hfs_field f = {.width = W, .height = H, .z = z, .dx = 1.0, .zscale = 1.0};
-    hfs_lighting l;
-    hfs_lighting_defaults(&l);
-    l.has_env = 1;
-    for (int c = 0; c < 3; ++c)
-        l.env_sh[c][0] = 3.5449077018110318; /* sqrt(4 pi): radiance 1 */
-    hfs_renderer *t = NULL;
-    hfs_error err = {""};
-    const hfs_renderer_desc td = {.backend = HFS_BACKEND_TRUTH};
-    REQUIRE(hfs_renderer_create(&td, &t, &err) == HFS_OK, "truth: %s", err.msg);
-    hfs_quality q;
-    hfs_quality_defaults(&q);
-    hfs_image truth;
-    const int rc = frame(t, &f, &l, &q, &truth);
-    hfs_renderer_destroy(t);
-    if (rc)
-        return;
-    if (sub == 1 || sub == 2 || sub == 4) {
-        run_sub(r, backend, sub, &f, &l, &truth, lo);
-    } else {
-        run_sub(r, backend, 1, &f, &l, &truth, lo);
-        run_sub(r, backend, 2, &f, &l, &truth, lo);
-    }
-    hfs_image_free(&truth);
+    mm_sky_subsamples(r, backend, sub, &f, run_sub);
 }
 
 int main(int argc, char **argv)

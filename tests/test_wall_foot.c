@@ -62,20 +62,6 @@ static double mean_err(const hfs_image *a, const hfs_image *b, int i0, int i1, i
 
 static int fp32;
 
-/* One frame of r (allocated here: hfs_image_free it); 0, or -1 after a
- * failed check. */
-static int frame(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l, const hfs_quality *q,
-                 hfs_image *img)
-{
-    hfs_error err = {""};
-    if (hfs_image_alloc(img, W, H, &err) || hfs_renderer_render(r, f, l, q, img, NULL, NULL, &err)) {
-        fprintf(stderr, "test_wall_foot: %s\n", err.msg);
-        ++failures;
-        return -1;
-    }
-    return 0;
-}
-
 /* GLES at subsample q->subsample against the CPU reference's frame, and
  * its frame with one bounce against its frame without. */
 static void gles_checks(hfs_renderer *r, const hfs_field *f, const hfs_lighting *l,
@@ -84,26 +70,17 @@ static void gles_checks(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
     /* fp16: 3.1e-4, 2.7e-4, 2.6e-4 measured (subsample 1, 2, 4), fp32 1.0e-6 */
     static const double cpu_lim[5] = {0, 3.8e-4, 3.3e-4, 0, 3.1e-4};
     const double lim = fp32 ? 1.3e-6 : cpu_lim[q->subsample];
-    hfs_renderer *c = NULL;
-    hfs_error err = {""};
-    const hfs_renderer_desc cd = {.backend = HFS_BACKEND_CPU};
-    REQUIRE(hfs_renderer_create(&cd, &c, &err) == HFS_OK, "cpu: %s", err.msg);
-    hfs_image ref = {0};
-    if (!frame(c, f, l, q, &ref)) {
-        double d = 0.0;
-        for (int k = 0; k < 3 * W * H; ++k)
-            d = fmax(d, fabs((double)img->rgb[k] - ref.rgb[k]));
+    double d, mean;
+    if (!mm_against_cpu(f, l, q, img, &d, &mean)) {
         printf("  GLES against the CPU reference: %.2e at most (bound %.1e)\n", d, lim);
         CHECK(d <= lim);
-        hfs_image_free(&ref);
     }
-    hfs_renderer_destroy(c);
     hfs_lighting lb = *l;
     lb.albedo = 0.8, lb.bounces = 1;
     hfs_lighting ld = lb;
     ld.bounces = 0;
     hfs_image b = {0}, d0 = {0};
-    if (!frame(r, f, &lb, q, &b) && !frame(r, f, &ld, q, &d0)) {
+    if (!mm_frame(r, f, &lb, q, &b) && !mm_frame(r, f, &ld, q, &d0)) {
         int lower = 0;
         for (int k = 0; k < 3 * W * H; ++k)
             lower += b.rgb[k] < d0.rgb[k];
@@ -113,20 +90,14 @@ static void gles_checks(hfs_renderer *r, const hfs_field *f, const hfs_lighting 
     if (q->subsample == 1) { /* every texel gathers: the CPU reference's bounces */
         hfs_quality qb = *q;
         qb.bounce_subsample = 1;
-        hfs_image g = {0}, cb = {0};
-        hfs_renderer *c2 = NULL;
-        if (hfs_renderer_create(&cd, &c2, &err) == HFS_OK && !frame(r, f, &lb, &qb, &g) &&
-            !frame(c2, f, &lb, &qb, &cb)) {
-            double d = 0.0;
-            for (int k = 0; k < 3 * W * H; ++k)
-                d = fmax(d, fabs((double)g.rgb[k] - cb.rgb[k]));
+        hfs_image g = {0};
+        double db;
+        if (!mm_frame(r, f, &lb, &qb, &g) && !mm_against_cpu(f, &lb, &qb, &g, &db, &mean)) {
             printf("  one bounce, every texel gathering, against the CPU reference: %.2e at most "
-                   "(bound %.1e)\n", d, lim);
-            CHECK(d <= lim);
+                   "(bound %.1e)\n", db, lim);
+            CHECK(db <= lim);
         }
-        hfs_renderer_destroy(c2);
         hfs_image_free(&g);
-        hfs_image_free(&cb);
     }
     hfs_image_free(&b);
     hfs_image_free(&d0);
@@ -173,30 +144,7 @@ static void run(hfs_renderer *r, const char *backend, int sub)
     static float z[W * H];
     wall_field(z);
     const hfs_field f = {.width = W, .height = H, .z = z, .dx = 1.0, .zscale = 1.0};
-    hfs_lighting l;
-    hfs_lighting_defaults(&l);
-    l.has_env = 1;
-    for (int c = 0; c < 3; ++c)
-        l.env_sh[c][0] = 3.5449077018110318; /* sqrt(4 pi): radiance 1 */
-    hfs_renderer *t = NULL;
-    hfs_error err = {""};
-    const hfs_renderer_desc td = {.backend = HFS_BACKEND_TRUTH};
-    REQUIRE(hfs_renderer_create(&td, &t, &err) == HFS_OK, "truth: %s", err.msg);
-    hfs_quality q;
-    hfs_quality_defaults(&q);
-    hfs_image truth;
-    if (hfs_image_alloc(&truth, W, H, &err) || hfs_renderer_render(t, &f, &l, &q, &truth, NULL, NULL, &err)) {
-        hfs_renderer_destroy(t);
-        REQUIRE(0, "truth: %s", err.msg);
-    }
-    hfs_renderer_destroy(t);
-    if (sub == 1 || sub == 2 || sub == 4) {
-        run_sub(r, backend, sub, &f, &l, &truth);
-    } else {
-        run_sub(r, backend, 1, &f, &l, &truth);
-        run_sub(r, backend, 2, &f, &l, &truth);
-    }
-    hfs_image_free(&truth);
+    mm_sky_subsamples(r, backend, sub, &f, run_sub);
 }
 
 int main(int argc, char **argv)
