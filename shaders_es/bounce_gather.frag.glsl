@@ -101,8 +101,7 @@ float hfs_slice_cosine(float a, float b, float x);
 #if defined(HFS_FARK) || defined(HFS_NEAR)
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
-float hfs_far_slope(float h, float d, float dz, float inv_step);
-float hfs_far_d(float d, float shift);
+float hfs_far_pair_slope(vec4 v, int k, float shift, float dz, float inv_step);
 float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc,
                     out vec2 t, out vec2 off);
 vec2 hfs_grid_uv_at(ivec2 p, int sub, vec2 t, ivec2 vsize);
@@ -355,8 +354,7 @@ float direct_horizon(ivec2 g, int je, vec2 cs, float t1)
      * reads them so), HFS_PAIRS the occluders moved to its height. */
 #ifdef HFS_PAIRS
     vec4 o = texture(u_hor, vec3(g_vuv, float(je / 2)));
-    float fs = hfs_far_slope(o[2 * (je % 2)], hfs_far_d(o[2 * (je % 2) + 1], dot(g_vo, cs)), g_vdz,
-                             1.0 / float(u_vsub));
+    float fs = hfs_far_pair_slope(o, je % 2, dot(g_vo, cs), g_vdz, 1.0 / float(u_vsub));
     return max(fs, t1);
 #else
     float u = texture(u_hor, vec3(g_vuv, float(je / 4)))[je % 4];
@@ -406,8 +404,7 @@ float sub_horizons(int je, vec2 cs, vec3 n, float tn, out float t[HFS_NSUB])
             fv[c] = texture(u_far, vec3(fuv, float(c)));
         float fs = -1e30, shift = dot(g_fo, cs * u_fsub[h].x + vec2(-cs.y, cs.x) * u_fsub[h].y);
         for (int c = 0; c < HFS_FARH; ++c) /* the largest of the heights' (split_horizon.h) */
-            fs = max(fs, hfs_far_slope(fv[c][2 * (e % 2)], hfs_far_d(fv[c][2 * (e % 2) + 1], shift),
-                                       g_fdz, 1.0 / float(u_fstep)));
+            fs = max(fs, hfs_far_pair_slope(fv[c], e % 2, shift, g_fdz, 1.0 / float(u_fstep)));
         float plane = -(a * u_fsub[h].x + ap * u_fsub[h].y) / n.z;
         t[h] = clamp(max(tn, fs > plane + 1e-3 * (1.0 + abs(plane)) ? fs : -1e30), -1e18, 1e18);
 #else

@@ -444,7 +444,8 @@ void main()
     /* After an edit: a receiver none of whose rays meets the box grown by
      * the largest reach reads nothing that changed (before any fetch); with
      * the heights around, none of those receivers may lie in it either */
-    bool edit_far = u_edit != 0 && !edit_near(vec2(g), u_edit_reach_max + float(HFS_NOUT > 1 ? u_sub : 0));
+    float reach = u_edit_reach_max + float(HFS_NOUT > 1 ? u_sub : 0);
+    bool edit_far = u_edit != 0 && !edit_near(vec2(g), reach);
     if (edit_far) {
         bool meets = false;
         for (int h = 0; h < 2; ++h)
@@ -492,8 +493,7 @@ void main()
         for (int c = 1; c < HFS_NOUT; ++c) { /* stored over this receiver */
             float rise = hfs_hdiff(around[c - 1], hx[HFS_NLAYERS - 1]) * u_zf, d = dist;
             if (rise == 0.0) { /* its own height: its own occluder */
-                res[c].xy = h == 0 ? res[0].xy : res[c].xy;
-                res[c].zw = h == 1 ? res[0].zw : res[c].zw;
+                res[c] = h == 0 ? vec4(res[0].xy, res[c].zw) : vec4(res[c].xy, res[0].zw);
                 continue;
             }
             float t = hfs_gap_search(u_height, u_bounds, u_rb_at, u_size, g, cs, u_gap_from, 1e9,

@@ -89,8 +89,7 @@ vec4 hfs_f16v(vec4 v);
 void hfs_env_occ(vec4 t[4], vec4 l[12], out vec4 a, out vec2 b);
 vec2 hfs_grid_uv(ivec2 p, int sub, ivec2 size, ivec2 vsize);
 vec2 hfs_far_tile_uv(vec2 fpix, float i, int cols, ivec2 fsize, vec2 atlas);
-float hfs_far_slope(float h, float d, float dz, float inv_step);
-float hfs_far_d(float d, float shift);
+float hfs_far_pair_slope(vec4 v, int k, float shift, float dz, float inv_step);
 float hfs_hdiff(vec2 a, vec2 b);
 float hfs_grid_rise(highp sampler2DArray levels, ivec2 p, int step, ivec2 size, vec4 sc,
                     out vec2 t, out vec2 off);
@@ -457,8 +456,8 @@ void main()
             fv[c] = texture(u_far, vec3(fuv, float(c)));                    \
         fsub[h] = -1e30;                                                    \
         for (int c = 0; c < HFS_FARH; ++c)                                  \
-            fsub[h] = max(fsub[h], hfs_far_slope(fv[c][2 * (e % 2)],        \
-                                   hfs_far_d(fv[c][2 * (e % 2) + 1], dot(ofj, u_fsub[h])), dzf, inv_fstep)); \
+            fsub[h] = max(fsub[h], hfs_far_pair_slope(fv[c], e % 2, dot(ofj, u_fsub[h]), dzf, \
+                                                      inv_fstep));          \
     }
 #else
 #define HFS_SUBS(J)
@@ -481,9 +480,7 @@ void main()
 #define HFS_FAR(J)                                                          \
     if ((J) % 2 == 0)                                                       \
         far = texture(u_hor, vec3(uv, float((J) / 2)));                     \
-    float fu = hfs_far_slope(far[2 * ((J) % 2)],                            \
-                             hfs_far_d(far[2 * ((J) % 2) + 1], dot(ov, SW_DIR(HFS_DIR_AT(J)).xy)), dz, \
-                             inv_sub);
+    float fu = hfs_far_pair_slope(far, (J) % 2, dot(ov, SW_DIR(HFS_DIR_AT(J)).xy), dz, inv_sub);
 #else
 #define HFS_FAR(J)                                                          \
     if ((J) % 4 == 0)                                                       \

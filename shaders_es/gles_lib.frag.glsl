@@ -100,6 +100,15 @@ float hfs_far_d(float d, float shift)
     return d > 0.0 ? d + shift : d;
 }
 
+/* Occluder k (0 or 1) of a texel of pairs v (height, distance; two a
+ * texel) read `shift` texels behind the texel and seen dz below the
+ * receivers: hfs_far_slope(h, hfs_far_d(d, shift), ...), the grids'
+ * occluders' one read (env_slices.frag, bounce_gather.frag). */
+float hfs_far_pair_slope(vec4 v, int k, float shift, float dz, float inv_step)
+{
+    return hfs_far_slope(v[2 * k], hfs_far_d(v[2 * k + 1], shift), dz, inv_step);
+}
+
 /* ---- sample offsets (DESIGN.md "Horizons", float-sized snapping) --------- */
 
 /* Snaps each component within a float tolerance of an integer to it

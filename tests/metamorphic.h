@@ -211,7 +211,8 @@ static inline int mm_uniform_sky_truth(const hfs_field *f, hfs_lighting *l, hfs_
     const hfs_renderer_desc td = {.backend = HFS_BACKEND_TRUTH};
     hfs_quality q;
     hfs_quality_defaults(&q);
-    int rc = hfs_renderer_create(&td, &t, &err) || hfs_image_alloc(truth, f->width, f->height, &err) ||
+    int rc = hfs_renderer_create(&td, &t, &err) ||
+             hfs_image_alloc(truth, f->width, f->height, &err) ||
              hfs_renderer_render(t, f, l, &q, truth, NULL, NULL, &err);
     hfs_renderer_destroy(t);
     if (rc) {

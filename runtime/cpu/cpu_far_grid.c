@@ -86,9 +86,8 @@ static void receivers_around(const hfs_cpu_far *g, int a, int b, int lo[2], int 
  * receiver into out, from its own occluder (slope, dist) on; at its own
  * height, that occluder (env_horizons.frag's far pass alike).  The lead
  * moves past the horizons' tie, as in every search: on flat roofs, where
- * crossings tie exactly, float and double then name the same one (the
- * relative tie alone left GLES 3e-3 off the CPU on test_far_heights'
- * streets, a trial). */
+ * crossings tie exactly, float and double then name the same one (with
+ * the relative tie alone they did not, a trial). */
 static void far_from_height(const hfs_cpu_far *g, int e, int x, int y, const int at[2],
                             double slope, double dist, float *out)
 {
@@ -99,8 +98,8 @@ static void far_from_height(const hfs_cpu_far *g, int e, int x, int y, const int
         return;
     }
     double d = dist, rise;
-    const double t =
-        hfs_horizon_gap_from(g->plan, e, x, y, at[0], at[1], g->d.gap_from, g->tie, slope, &d, &rise);
+    const double t = hfs_horizon_gap_from(g->plan, e, x, y, at[0], at[1], g->d.gap_from, g->tie,
+                                          slope, &d, &rise);
     store_pair(g, t * d + rise, d, out);
 }
 
@@ -109,10 +108,10 @@ static void far_row(void *ctx, int b, int worker)
 {
     const hfs_cpu_far *g = ctx;
     const int st = g->d.step;
-    const int y = b * st < g->f->height - 1 ? b * st : g->f->height - 1;
+    const int y = receiver_at(b, st, g->f->height);
     double *omega = g->omega + (size_t)worker * (size_t)g->n_levels;
     for (int a = 0; a < g->gw; ++a) {
-        const int x = a * st < g->f->width - 1 ? a * st : g->f->width - 1;
+        const int x = receiver_at(a, st, g->f->width);
         float *out = g->pairs + ((size_t)b * (size_t)g->gw + (size_t)a) * (size_t)g->n_sub * 2;
         int around[2][2] = {{x, y}, {x, y}};
         if (g->heights > 1)

@@ -68,8 +68,8 @@ double hfs_gles_env_slices_fetches(const hfs_gles *g, const hfs_gles_frame *fr)
      * far texel per 2 sub-directions and height (split_horizon.h) and the 4
      * far receivers' heights. */
     const double per_layer = fr->hor_pairs ? 2.0 : 4.0;
-    const double far = fr->split.on ? ceil(g->env_vis_n * fr->split.k / 2.0) * fr->split.heights + 4.0
-                                    : 0.0;
+    const double far_texels = ceil(g->env_vis_n * fr->split.k / 2.0) * fr->split.heights;
+    const double far = fr->split.on ? far_texels + 4.0 : 0.0;
     return (fr->env_near ? 9.0 : 4.0) + ceil(g->env_vis_n / per_layer) + far;
 }
 
