@@ -130,13 +130,14 @@ static int far_read(hfs_gles *g, const hfs_gles_frame *fr, void *buf, int *half,
 {
     int rc = HFS_OK;
     for (int c = 0; !rc && c < fr->split.heights; ++c) {
-        hfs_gl_read_path used;
+        hfs_gl_read_path used = HFS_GL_READ_FLOAT;
         rc = hfs_gles_fbo_layers(&g->gl, g->r.far_fbo, g->r.far, c, 1, "far horizons", err);
         if (!rc)
             rc = hfs_gl_read_rgba_raw(&g->gl, g->r.far_fbo, 0, 0, fr->far_aw, fr->far_ah,
                                       HFS_GL_READ_AUTO, (char *)buf + c * far_layer_bytes(fr),
                                       &used, err);
-        *half = used == HFS_GL_READ_HALF; /* one path a context */
+        if (!rc)
+            *half = used == HFS_GL_READ_HALF; /* one path a context */
     }
     return rc;
 }
